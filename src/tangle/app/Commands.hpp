@@ -1,0 +1,28 @@
+#pragma once
+/// @file Commands.hpp
+/// The CLI subcommands. Each returns the process exit code (see main.cpp).
+
+#include <string>
+
+namespace tangle::app {
+
+/// Options of `tangle check`.
+struct CheckOptions {
+  std::string modelPath;
+};
+
+/// Options of `tangle run`.
+struct RunOptions {
+  std::string modelPath;
+  std::string outputDir;  ///< empty: <model stem>_results beside the model file
+  bool staticsOnly = false;
+  bool noPlots = false;
+  bool quiet = false;
+};
+
+/// Validates a model and prints a summary (lines, elements, DOFs, masses, lengths).
+int runCheck(const CheckOptions& options);
+/// Runs the analysis and writes results.
+int runAnalysis(const RunOptions& options);
+
+}  // namespace tangle::app

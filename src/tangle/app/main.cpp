@@ -1,0 +1,53 @@
+/// @file main.cpp
+/// The `tangle` command line.
+///
+/// Exit codes: 0 success; 1 bad input (model file or command line); 2 the analysis did not
+/// converge (results computed until then are kept); 3 any other error (I/O, internal).
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <iostream>
+
+#include "tangle/app/Commands.hpp"
+#include "tangle/core/Error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tangle: nonlinear static and dynamic analysis of offshore lines with line-to-line contact"};
+  app.set_version_flag("--version", std::string("tangle ") + TANGLE_VERSION);
+  app.require_subcommand(1);
+  app.footer("Exit codes: 0 ok, 1 bad input, 2 analysis did not converge, 3 other error.");
+
+  tangle::app::CheckOptions checkOptions;
+  CLI::App* check = app.add_subcommand("check", "Validate a model file and print a summary of its mesh");
+  check->add_option("model", checkOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
+
+  tangle::app::RunOptions runOptions;
+  CLI::App* run = app.add_subcommand("run", "Run the analysis of a model (statics, then dynamics if requested)");
+  run->add_option("model", runOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
+  run->add_option("-o,--output", runOptions.outputDir, "Output directory (default: <model name>_results next to it)");
+  run->add_flag("--statics-only", runOptions.staticsOnly, "Stop after the static analysis");
+  run->add_flag("--no-plots", runOptions.noPlots, "Do not write PNG plots");
+  run->add_flag("-q,--quiet", runOptions.quiet, "Print only errors");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 1;
+  }
+  try {
+    if (*check) return tangle::app::runCheck(checkOptions);
+    if (*run) return tangle::app::runAnalysis(runOptions);
+  } catch (const tangle::InputError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  } catch (const tangle::ConvergenceError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 3;
+  }
+  return 0;
+}

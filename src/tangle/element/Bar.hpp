@@ -1,0 +1,36 @@
+#pragma once
+/// @file Bar.hpp
+/// Two-node bar (truss) element for lines without bending stiffness (chain, wire rope).
+/// 3 translational DOF per node; exact large-displacement kinematics, linear axial law on
+/// engineering strain (Crisfield 1991, vol. 1, sec. 3.3).
+
+#include "tangle/core/Types.hpp"
+
+namespace tangle::element {
+
+/// A straight two-node bar. Stateless apart from its constants; thread-safe.
+class Bar {
+ public:
+  /// @param axialStiffness EA [N], > 0
+  /// @param restLength unstretched length L0 [m], > 0
+  Bar(double axialStiffness, double restLength);
+
+  /// Internal (elastic) nodal forces and their tangent.
+  /// @param x1,x2 current node positions, global axes [m]
+  /// @param[out] internalForce forces the element exerts *on its nodes' equations* ordered
+  ///        [node1 (3), node2 (3)] [N]; the equilibrium residual is internalForce - externalForce
+  /// @param[out] tangent d(internalForce)/d(x1,x2) [N/m], symmetric (material + geometric part)
+  void compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent) const;
+
+  /// Axial force N = EA (l - L0) / L0 [N], positive in tension.
+  double axialForce(const Vec3& x1, const Vec3& x2) const;
+
+  double axialStiffness() const { return m_ea; }  ///< EA [N]
+  double restLength() const { return m_l0; }      ///< L0 [m]
+
+ private:
+  double m_ea;
+  double m_l0;
+};
+
+}  // namespace tangle::element

@@ -1,0 +1,94 @@
+/// @file CurrentProfile.cpp
+/// Piecewise-linear current profile (see CurrentProfile.hpp).
+
+#include "tangle/hydro/CurrentProfile.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <utility>
+
+#include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+
+namespace tangle::hydro {
+
+namespace {
+
+[[noreturn]] void fail(std::size_t index, const std::string& what, double value) {
+  std::ostringstream os;
+  os.precision(17);
+  os << "CurrentProfile: level " << index << ": " << what << " (got " << value << ")";
+  throw Error(os.str());
+}
+
+/// Angle difference b - a wrapped to (-pi, pi] [rad].
+double shorterArc(double a, double b) {
+  double d = std::remainder(b - a, 2.0 * kPi);  // in [-pi, pi]
+  if (d <= -kPi) d += 2.0 * kPi;
+  return d;
+}
+
+}  // namespace
+
+CurrentProfile::CurrentProfile(std::vector<CurrentLevel> levels) : m_levels(std::move(levels)) {
+  if (m_levels.empty()) throw Error("CurrentProfile: at least one level is required");
+  for (std::size_t i = 0; i < m_levels.size(); ++i) {
+    const CurrentLevel& level = m_levels[i];
+    if (!std::isfinite(level.z)) fail(i, "z [m] must be finite", level.z);
+    if (level.z > 0.0)
+      fail(i, "z [m] must be <= 0 (z is the global level, 0 at still water, negative below)", level.z);
+    if (!std::isfinite(level.speed) || level.speed < 0.0)
+      fail(i, "speed [m/s] must be finite and >= 0", level.speed);
+    if (!std::isfinite(level.azimuth)) fail(i, "azimuth [rad] must be finite", level.azimuth);
+  }
+  std::stable_sort(m_levels.begin(), m_levels.end(),
+                   [](const CurrentLevel& a, const CurrentLevel& b) { return a.z < b.z; });
+  for (std::size_t i = 1; i < m_levels.size(); ++i) {
+    if (m_levels[i].z == m_levels[i - 1].z) {
+      fail(i, "two levels share the same z [m] (after sorting by z)", m_levels[i].z);
+    }
+  }
+  m_unwrappedAzimuth.resize(m_levels.size());
+  m_unwrappedAzimuth[0] = m_levels[0].azimuth;
+  for (std::size_t i = 1; i < m_levels.size(); ++i) {
+    m_unwrappedAzimuth[i] =
+        m_unwrappedAzimuth[i - 1] + shorterArc(m_unwrappedAzimuth[i - 1], m_levels[i].azimuth);
+  }
+}
+
+CurrentProfile CurrentProfile::uniform(double speed, double azimuth) {
+  return CurrentProfile({CurrentLevel{0.0, speed, azimuth}});
+}
+
+Vec3 CurrentProfile::velocity(double z) const {
+  if (m_levels.empty()) return Vec3::Zero();
+  double speed = 0.0;
+  double azimuth = 0.0;
+  if (z <= m_levels.front().z) {
+    speed = m_levels.front().speed;
+    azimuth = m_levels.front().azimuth;
+  } else if (z >= m_levels.back().z) {
+    speed = m_levels.back().speed;
+    azimuth = m_levels.back().azimuth;
+  } else {
+    // First level strictly above z; its predecessor is at or below z.
+    const auto above =
+        std::upper_bound(m_levels.begin(), m_levels.end(), z,
+                         [](double value, const CurrentLevel& level) { return value < level.z; });
+    const auto i = static_cast<std::size_t>(above - m_levels.begin());
+    const CurrentLevel& lo = m_levels[i - 1];
+    const CurrentLevel& hi = m_levels[i];
+    const double s = (z - lo.z) / (hi.z - lo.z);
+    speed = lo.speed + s * (hi.speed - lo.speed);
+    azimuth = m_unwrappedAzimuth[i - 1] + s * (m_unwrappedAzimuth[i] - m_unwrappedAzimuth[i - 1]);
+  }
+  return Vec3(speed * std::cos(azimuth), speed * std::sin(azimuth), 0.0);
+}
+
+bool CurrentProfile::isZero() const {
+  return std::all_of(m_levels.begin(), m_levels.end(), [](const CurrentLevel& l) { return l.speed == 0.0; });
+}
+
+}  // namespace tangle::hydro

@@ -1,0 +1,54 @@
+#pragma once
+/// @file CurrentProfile.hpp
+/// Steady current: horizontal velocity varying piecewise-linearly with the vertical coordinate.
+
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+
+namespace tangle::hydro {
+
+/// One level of a current profile.
+struct CurrentLevel {
+  double z = 0.0;        ///< level [m], global z (0 = still water level, negative below), <= 0
+  double speed = 0.0;    ///< current speed [m/s], >= 0
+  double azimuth = 0.0;  ///< direction the current flows towards, anticlockwise from +x [rad]
+};
+
+/// Piecewise-linear current profile in the global z coordinate (not depth below the surface: a caller
+/// reading depths d converts with z = -d).
+/// Between two levels the speed is interpolated linearly in z, and so is the azimuth, along the shorter
+/// arc between the two level azimuths (exactly opposite directions turn anticlockwise). Beyond the end
+/// levels the profile is constant: below the deepest level it keeps the deepest value and above the
+/// highest level, including z > 0 (wave crests), it keeps the highest value. The current is NOT set to
+/// zero above z = 0 and is not stretched to the instantaneous surface: whether a point is wet is
+/// decided by the caller (e.g. with WaveField::elevation). Immutable, thread-safe.
+class CurrentProfile {
+ public:
+  /// No current (velocity() is zero everywhere).
+  CurrentProfile() = default;
+
+  /// @param levels at least one level, in any order (sorted by z here); z <= 0 and distinct,
+  ///        speed >= 0, all values finite
+  /// @throws tangle::Error with the offending level and value otherwise
+  explicit CurrentProfile(std::vector<CurrentLevel> levels);
+
+  /// Uniform current of speed [m/s] towards azimuth [rad] over the whole water column.
+  static CurrentProfile uniform(double speed, double azimuth);
+
+  /// Horizontal current velocity [m/s] at global level z [m] (see the class comment for z outside the
+  /// levels).
+  Vec3 velocity(double z) const;
+
+  /// The levels, sorted by increasing z (deepest first); empty for no current.
+  const std::vector<CurrentLevel>& levels() const { return m_levels; }
+
+  /// True when every speed is zero (or there are no levels).
+  bool isZero() const;
+
+ private:
+  std::vector<CurrentLevel> m_levels;
+  std::vector<double> m_unwrappedAzimuth;  // level azimuths made continuous along the shorter arcs [rad]
+};
+
+}  // namespace tangle::hydro

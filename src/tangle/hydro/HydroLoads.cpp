@@ -1,0 +1,136 @@
+#include "tangle/hydro/HydroLoads.hpp"
+
+#include "tangle/hydro/AiryWave.hpp"
+#include "tangle/hydro/JonswapSea.hpp"
+#include "tangle/hydro/Morison.hpp"
+#include "tangle/time/Ramp.hpp"
+
+namespace tangle::hydro {
+
+std::unique_ptr<WaveField> makeWaveField(const model::EnvironmentSpec& env) {
+  const model::WaveSpec& w = env.waves;
+  switch (w.kind) {
+    case model::WaveKind::None:
+      return nullptr;
+    case model::WaveKind::Airy:
+      return std::make_unique<AiryWave>(w.height, w.period, w.azimuth, env.waterDepth, env.gravity, w.phase);
+    case model::WaveKind::Jonswap: {
+      JonswapSea::Parameters p;
+      p.significantHeight = w.significantHeight;
+      p.peakPeriod = w.peakPeriod;
+      p.gamma = w.gamma;
+      p.azimuth = w.azimuth;
+      p.waterDepth = env.waterDepth;
+      p.gravity = env.gravity;
+      p.componentCount = w.components;
+      p.seed = w.seed;
+      return std::make_unique<JonswapSea>(p);
+    }
+  }
+  return nullptr;
+}
+
+CurrentProfile makeCurrentProfile(const model::EnvironmentSpec& env) {
+  if (env.current.empty()) return CurrentProfile();
+  std::vector<CurrentLevel> levels;
+  for (const model::CurrentLevel& c : env.current) levels.push_back({c.z, c.speed, c.azimuth});
+  return CurrentProfile(levels);
+}
+
+HydroLoads::HydroLoads(const model::Model& model)
+    : m_model(&model),
+      m_current(makeCurrentProfile(model.environment())),
+      m_waves(makeWaveField(model.environment())),
+      m_rampTime(model.spec().dynamics.rampTime) {
+  const std::size_t n = model.elements().size();
+  m_fluid.resize(n);
+  m_surface.assign(n, 0.0);
+  m_addedMass.assign(n, Mat3::Zero());
+}
+
+double HydroLoads::surfaceAt(double x, double y, double t, bool dynamic) const {
+  if (!dynamic || !m_waves) return 0.0;
+  return time::ramp(t, m_rampTime).value * m_waves->elevation(x, y, t);
+}
+
+FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const {
+  FluidKinematics k;
+  k.velocity = m_current.velocity(p.z());
+  if (dynamic && m_waves) {
+    const double r = time::ramp(t, m_rampTime).value;
+    if (r > 0.0) {
+      const FluidKinematics w = m_waves->kinematics(p, t);
+      k.velocity += r * w.velocity;
+      k.acceleration += r * w.acceleration;
+    }
+  }
+  return k;
+}
+
+void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                           solver::SystemMatrix* matrix) {
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  const double rho = m_model->environment().waterDensity;
+  const bool waves = request.dynamic && m_waves && time::ramp(request.time, m_rampTime).value > 0.0;
+  if (waves && (request.time != m_cacheTime || !m_cacheDynamic)) {
+    // Wave kinematics (the costly part) once per time value; the current is cheap and is evaluated
+    // at the current midpoint every call.
+    const double r = time::ramp(request.time, m_rampTime).value;
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      const Vec3 mid = 0.5 * (state.position[elements[e].node1] + state.position[elements[e].node2]);
+      m_surface[e] = r * m_waves->elevation(mid.x(), mid.y(), request.time);
+      const FluidKinematics w = m_waves->kinematics(mid, request.time);
+      m_fluid[e].velocity = r * w.velocity;
+      m_fluid[e].acceleration = r * w.acceleration;
+    }
+    m_cacheTime = request.time;
+    m_cacheDynamic = true;
+  }
+  const Vec3 zero = Vec3::Zero();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const model::LineElement& el = elements[e];
+    const Vec3& x1 = state.position[el.node1];
+    const Vec3& x2 = state.position[el.node2];
+    const double wet = submergedFraction(x1.z(), x2.z(), waves ? m_surface[e] : 0.0);
+    if (wet <= 0.0) {
+      m_addedMass[e].setZero();
+      continue;
+    }
+    const int d1 = dofs.firstDof(el.node1);
+    const int d2 = dofs.firstDof(el.node2);
+    const Vec3 v1 = request.dynamic ? Vec3(state.velocity.segment<3>(d1)) : zero;
+    const Vec3 v2 = request.dynamic ? Vec3(state.velocity.segment<3>(d2)) : zero;
+    FluidKinematics fluid;
+    fluid.velocity = m_current.velocity(0.5 * (x1.z() + x2.z()));
+    if (waves) {
+      fluid.velocity += m_fluid[e].velocity;
+      fluid.acceleration = m_fluid[e].acceleration;
+    }
+    const MorisonElementLoad load = morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet);
+    // Out-of-balance convention: external loads are subtracted.
+    force.segment<3>(d1) -= load.force1;
+    force.segment<3>(d2) -= load.force2;
+    m_addedMass[e] = load.addedMassPerNode;
+    if (matrix && request.dynamic && request.cf != 0.0) {
+      matrix->add3x3(d1, d1, load.damping1, request.cf);
+      matrix->add3x3(d2, d2, load.damping2, request.cf);
+    }
+  }
+}
+
+void HydroLoads::addMass(const model::State&, double mf, solver::SystemMatrix* matrix,
+                         const VecX* acceleration, VecX* out) {
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Mat3& ma = m_addedMass[e];
+    for (int node : {elements[e].node1, elements[e].node2}) {
+      const int d = dofs.firstDof(node);
+      if (matrix) matrix->add3x3(d, d, ma, mf);
+      if (out) out->segment<3>(d) += ma * acceleration->segment<3>(d);
+    }
+  }
+}
+
+}  // namespace tangle::hydro

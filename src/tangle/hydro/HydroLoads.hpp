@@ -1,0 +1,54 @@
+#pragma once
+/// @file HydroLoads.hpp
+/// Hydrodynamic loads on every line element: Morison drag, fluid inertia and added mass from the
+/// current profile and the wave field (relative-velocity form). In statics only the current acts
+/// (structure at rest); in dynamics waves are ramped in over the ramp time.
+
+#include <memory>
+#include <vector>
+
+#include "tangle/hydro/CurrentProfile.hpp"
+#include "tangle/hydro/WaveField.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/Assembler.hpp"
+
+namespace tangle::hydro {
+
+/// Builds the wave field of a model (nullptr when there are no waves).
+std::unique_ptr<WaveField> makeWaveField(const model::EnvironmentSpec& environment);
+/// Builds the current profile of a model.
+CurrentProfile makeCurrentProfile(const model::EnvironmentSpec& environment);
+
+/// Morison loads of all elements, as a LoadContributor.
+/// Wave kinematics are evaluated once per time value at the element midpoints (re-used by the
+/// Newton iterations of a step: the lines move by much less than a wavelength within one step).
+/// Contract: addMass() uses the added mass computed by the last addForces() call (the integrator
+/// always calls them in that order at the same state).
+class HydroLoads final : public solver::LoadContributor {
+ public:
+  explicit HydroLoads(const model::Model& model);
+
+  void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                 solver::SystemMatrix* matrix) override;
+  void addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
+               VecX* out) override;
+
+  /// Total fluid kinematics (current + ramped waves) at a point [m] and time [s].
+  FluidKinematics fluidAt(const Vec3& p, double t, bool dynamic) const;
+  /// Surface elevation (ramped) at (x, y) [m] and time [s].
+  double surfaceAt(double x, double y, double t, bool dynamic) const;
+  const WaveField* waves() const { return m_waves.get(); }  ///< nullptr without waves
+
+ private:
+  const model::Model* m_model;
+  CurrentProfile m_current;
+  std::unique_ptr<WaveField> m_waves;
+  double m_rampTime;
+  double m_cacheTime = -1e300;
+  bool m_cacheDynamic = false;
+  std::vector<FluidKinematics> m_fluid;  // per element, at the cached time
+  std::vector<double> m_surface;         // per element
+  std::vector<Mat3> m_addedMass;         // per element, per node
+};
+
+}  // namespace tangle::hydro

@@ -1,0 +1,93 @@
+/// @file Morison.cpp
+/// Relative-velocity Morison loads on a line element (formulas in Morison.hpp).
+
+#include "tangle/hydro/Morison.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+
+namespace tangle::hydro {
+
+namespace {
+
+void require(bool ok, const char* what, const char* requirement, double value) {
+  if (ok) return;
+  std::ostringstream os;
+  os.precision(17);
+  os << "morisonElementLoad: " << what << " must be " << requirement << " (got " << value << ")";
+  throw Error(os.str());
+}
+
+/// Drag per unit length q(v_r) = kn |v_rn| v_rn + ka |v_ra| v_ra and its Jacobian J = dq/dv_r:
+/// J = kn (|v_rn| (I - t t^T) + v_rn v_rn^T / |v_rn|) + 2 ka |t.v_r| t t^T; the normal part tends to 0 as
+/// v_rn -> 0 (|x| x is continuously differentiable), so J = 2 ka |t.v_r| t t^T there.
+void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, Mat3& jacobian) {
+  const double va = t.dot(vr);
+  const Vec3 vn = vr - va * t;
+  const double vnNorm = vn.norm();
+  const Mat3 ttT = t * t.transpose();
+  q = kn * vnNorm * vn + ka * std::abs(va) * va * t;
+  jacobian = kn * vnNorm * (Mat3::Identity() - ttT) + 2.0 * ka * std::abs(va) * ttT;
+  if (vnNorm > 0.0) jacobian += (kn / vnNorm) * (vn * vn.transpose());
+}
+
+}  // namespace
+
+MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
+                                      const FluidKinematics& fluid, const section::LineType& type, double rho,
+                                      double wettedFraction) {
+  require(wettedFraction >= 0.0 && wettedFraction <= 1.0, "submerged fraction [-]", "in [0, 1]",
+          wettedFraction);
+  require(std::isfinite(rho) && rho >= 0.0, "fluid density [kg/m^3]", "finite and >= 0", rho);
+  require(std::isfinite(type.outerDiameter) && type.outerDiameter >= 0.0, "outerDiameter [m] of line type",
+          "finite and >= 0", type.outerDiameter);
+  require(std::isfinite(type.buoyancyDiameter) && type.buoyancyDiameter >= 0.0,
+          "buoyancyDiameter [m] of line type", "finite and >= 0", type.buoyancyDiameter);
+  const Vec3 axis = x2 - x1;
+  const double length = axis.norm();
+  require(std::isfinite(length) && length > 0.0, "element length [m]", "finite and > 0 (distinct nodes)",
+          length);
+
+  MorisonElementLoad load;
+  if (wettedFraction == 0.0 || rho == 0.0) return load;
+
+  const Vec3 t = axis / length;
+  const double halfLength = 0.5 * wettedFraction * length;  // wetted length lumped on each node [m]
+  const double d = type.outerDiameter;
+  const double area = 0.25 * kPi * d * d;                                                           // A [m^2]
+  const double displacedArea = type.buoyancyDiameter > 0.0 ? type.displacedAreaPerLength() : area;  // A_b
+  const double kn = 0.5 * rho * type.dragNormal * d;       // [kg/m^2]
+  const double ka = 0.5 * rho * type.dragAxial * kPi * d;  // [kg/m^2]
+  const Mat3 ttT = t * t.transpose();
+  const Mat3 addedMassPerLength =
+      rho * area * (type.addedMassNormal * (Mat3::Identity() - ttT) + type.addedMassAxial * ttT);  // [kg/m]
+
+  // Fluid inertia per unit length: Froude-Krylov + added-mass part of the fluid acceleration.
+  const Vec3 inertia = rho * displacedArea * fluid.acceleration + addedMassPerLength * fluid.acceleration;
+
+  Vec3 q1, q2;
+  Mat3 j1, j2;
+  drag(fluid.velocity - v1, t, kn, ka, q1, j1);
+  drag(fluid.velocity - v2, t, kn, ka, q2, j2);
+  load.force1 = halfLength * (q1 + inertia);
+  load.force2 = halfLength * (q2 + inertia);
+  load.damping1 = halfLength * j1;  // d force1/d v1 = -halfLength * j1
+  load.damping2 = halfLength * j2;
+  load.addedMassPerNode = halfLength * addedMassPerLength;
+  return load;
+}
+
+double submergedFraction(double z1, double z2, double surfaceElevation) {
+  const double lo = std::min(z1, z2);
+  const double hi = std::max(z1, z2);
+  if (hi <= surfaceElevation) return 1.0;
+  if (lo >= surfaceElevation) return 0.0;
+  return (surfaceElevation - lo) / (hi - lo);
+}
+
+}  // namespace tangle::hydro

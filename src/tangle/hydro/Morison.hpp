@@ -1,0 +1,66 @@
+#pragma once
+/// @file Morison.hpp
+/// Hydrodynamic loads on one straight line element from the relative-velocity Morison equation
+/// (Morison, O'Brien, Johnson & Schaaf 1950, "The force exerted by surface waves on piles", Petroleum
+/// Transactions AIME 189:149-154; DNV-RP-C205 2010, sec. 6.2-6.3), split into normal and axial parts
+/// relative to the element tangent (slender-body "independence principle", as in OrcaFlex).
+///
+/// Per unit length, with t the unit tangent, u and a_f the fluid velocity and acceleration, v the
+/// structure velocity, v_r = u - v, and (.)_a = t t^T (.), (.)_n = (I - t t^T)(.):
+///   drag, normal:  q_dn = 1/2 rho Cdn D |v_rn| v_rn
+///   drag, axial:   q_da = 1/2 rho Cda (pi D) |v_ra| v_ra          (OrcaFlex axial-drag convention:
+///                  Cda refers to the wetted perimeter pi D, not to the projected width D)
+///   fluid inertia: q_i  = rho A_b a_f + rho A (Can a_fn + Caa a_fa)
+///                  (Froude-Krylov on the displaced area in every direction, plus the added-mass part
+///                  of the fluid acceleration; i.e. rho A_b (1 + Can) a_fn + rho A_b (1 + Caa) a_fa when
+///                  A_b = A)
+///   added mass:    m_a  = rho A (Can (I - t t^T) + Caa t t^T)     (multiplies the structure acceleration)
+/// with D = LineType::outerDiameter (hydrodynamic diameter), A = pi D^2 / 4, A_b =
+/// LineType::displacedAreaPerLength() (buoyancyDiameter; A when buoyancyDiameter <= 0). Buoyancy
+/// (hydrostatic) and weight are NOT included here.
+
+#include "tangle/core/Types.hpp"
+#include "tangle/hydro/WaveField.hpp"
+#include "tangle/section/LineType.hpp"
+
+namespace tangle::hydro {
+
+/// Morison loads of one element, lumped on its two nodes.
+/// The total hydrodynamic force on node i is force_i - addedMassPerNode * (acceleration of node i).
+struct MorisonElementLoad {
+  Vec3 force1 = Vec3::Zero();  ///< drag + fluid inertia on node 1 [N] (without the added-mass term)
+  Vec3 force2 = Vec3::Zero();  ///< drag + fluid inertia on node 2 [N] (without the added-mass term)
+  /// Drag linearisation of node 1, C_1 = -d(force1)/d(v1) [N s/m], symmetric positive semi-definite.
+  /// force1 does not depend on v2 and force2 not on v1 (nodal lumping, see morisonElementLoad).
+  Mat3 damping1 = Mat3::Zero();
+  Mat3 damping2 = Mat3::Zero();  ///< C_2 = -d(force2)/d(v2) [N s/m], symmetric positive semi-definite
+  /// Added mass of each node (the same for both) [kg]: f L/2 rho A (Can (I - t t^T) + Caa t t^T).
+  Mat3 addedMassPerNode = Mat3::Zero();
+};
+
+/// Morison loads on the element x1-x2 (formulas in the file comment), lumped per node: node i receives
+/// the load of half the wetted length, f L / 2, evaluated with the element tangent t, the fluid
+/// kinematics given (one point per element) and the node's own velocity v_i. Hence
+///   force_i = f L/2 [q_dn(u - v_i) + q_da(u - v_i) + q_i],  C_i = f L/2 d(q_dn + q_da)/d(v_r) at u - v_i,
+/// which is the exact derivative of force_i with respect to v_i (d force_i / d v_j = 0 for j != i).
+/// The derivatives with respect to the node positions (through t and L) are not returned.
+/// @param x1,x2 node positions [m], distinct
+/// @param v1,v2 node velocities [m/s]
+/// @param fluid total fluid kinematics (current + waves) for the element, usually at its midpoint, or
+///        at the centroid of its wetted part when partly submerged [m/s], [m/s^2]
+/// @param type line type (outerDiameter, buoyancyDiameter, dragNormal, dragAxial, addedMassNormal,
+///        addedMassAxial are used)
+/// @param rho fluid density [kg/m^3], >= 0
+/// @param wettedFraction submerged fraction f of the element length in [0, 1] (see submergedFraction);
+///        every load, damping and added mass is proportional to it
+/// @throws tangle::Error for coincident nodes, f outside [0, 1], rho < 0 or negative diameters
+MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
+                                      const FluidKinematics& fluid, const section::LineType& type, double rho,
+                                      double wettedFraction);
+
+/// Fraction [-] of the segment z1-z2 [m] lying below the surface level surfaceElevation [m], assuming a
+/// straight segment and a locally flat surface: 1 if both ends are at or below it, 0 if both are at or
+/// above it (a horizontal segment exactly on the surface counts as submerged), linear in between.
+double submergedFraction(double z1, double z2, double surfaceElevation);
+
+}  // namespace tangle::hydro

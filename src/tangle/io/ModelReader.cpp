@@ -1,0 +1,811 @@
+/// @file ModelReader.cpp
+/// YAML model reader. Two layers:
+///  - a small checked-access layer (Range, Value, Map) that knows about key paths, line numbers,
+///    unknown/duplicate/missing keys and value checks, so every error message is uniform;
+///  - one reader function per block of the format, registered in kTopLevelBlocks. Adding a top-level
+///    block (e.g. `contact:` or `vessels:`) is one function plus one row of that table.
+
+#include "tangle/io/ModelReader.hpp"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+
+namespace tangle::io {
+
+namespace {
+
+using model::ModelSpec;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// Tolerance of the "end below the seabed" check [m].
+constexpr double kSeabedTolerance = 1.0e-9;
+/// Largest accepted ratio of the end-to-end distance to the unstretched line length [-]: beyond it the
+/// geometry is taken as a mistake (a taut line stretched by a few percent is fine).
+constexpr double kMaxEndSpanOverLength = 1.2;
+
+// =====================================================================================================
+// Checked access layer
+// =====================================================================================================
+
+/// A number as written in messages: shortest form that reads back exactly (fmt's default).
+std::string numberText(double v) { return fmt::format("{}", v); }
+
+/// A computed number as written in messages (6 significant digits).
+std::string roundedText(double v) { return fmt::format("{:.6g}", v); }
+
+std::string join(const std::vector<std::string>& items, std::string_view separator = ", ") {
+  std::string out;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) out += separator;
+    out += items[i];
+  }
+  return out;
+}
+
+std::string toLower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+/// Levenshtein distance, for "did you mean" suggestions on misspelt keys.
+std::size_t editDistance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+/// 1-based line of a node, or `fallback` when yaml-cpp has no position for it.
+int lineOf(const YAML::Node& node, int fallback) {
+  const YAML::Mark mark = node.Mark();
+  return mark.is_null() ? fallback : mark.line + 1;
+}
+
+/// Allowed interval of a number read from the file, with its wording in messages.
+struct Range {
+  double lo = -kInfinity;
+  double hi = kInfinity;
+  bool loOpen = false;  ///< lo itself is excluded
+  bool hiOpen = false;  ///< hi itself is excluded
+  std::string hint;     ///< extra explanation appended to messages, e.g. "at least time_step"
+
+  bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
+
+  /// " > 0", " >= 0", " in [0, 1]", " <= 0", or "" for any finite number.
+  std::string describe() const {
+    const bool hasLo = lo > -kInfinity;
+    const bool hasHi = hi < kInfinity;
+    if (hasLo && hasHi)
+      return fmt::format(" in {}{}, {}{}", loOpen ? "(" : "[", numberText(lo), numberText(hi),
+                         hiOpen ? ")" : "]");
+    if (hasLo) return fmt::format(" {} {}", loOpen ? ">" : ">=", numberText(lo));
+    if (hasHi) return fmt::format(" {} {}", hiOpen ? "<" : "<=", numberText(hi));
+    return "";
+  }
+
+  Range withHint(std::string text) const {
+    Range r = *this;
+    r.hint = std::move(text);
+    return r;
+  }
+};
+
+Range anyNumber() { return {}; }
+Range positive() { return {0.0, kInfinity, true, false, {}}; }
+Range nonNegative() { return {0.0, kInfinity, false, false, {}}; }
+Range atLeast(double lo) { return {lo, kInfinity, false, false, {}}; }
+Range atMost(double hi) { return {-kInfinity, hi, false, false, {}}; }
+Range closed(double lo, double hi) { return {lo, hi, false, false, {}}; }
+
+/// What a number must be, for messages: "a number > 0 (at least time_step)".
+std::string numberExpectation(std::string_view noun, const Range& range) {
+  std::string s = std::string(noun) + range.describe();
+  if (!range.hint.empty()) s += " (" + range.hint + ")";
+  return s;
+}
+
+/// How to label the items of a list in key paths.
+enum class ItemLabel {
+  Index,  ///< lines[0]
+  Name    ///< lines[mooring1] when the item has a `name`, else the index
+};
+
+/// A YAML node with its key path and line, and checked conversions that throw InputError.
+class Value {
+ public:
+  Value(const std::string& source, YAML::Node node, std::string path, int line)
+      : m_source(&source), m_node(std::move(node)), m_path(std::move(path)), m_line(line) {}
+
+  const YAML::Node& node() const { return m_node; }
+  const std::string& path() const { return m_path; }  ///< key path, e.g. "lines[mooring1].end_a"
+  int line() const { return m_line; }                 ///< 1-based line of the key (or list item)
+  const std::string& source() const { return *m_source; }
+
+  /// Throws an InputError at this value.
+  [[noreturn]] void fail(const std::string& message) const {
+    throw InputError(*m_source, m_line, m_path, message);
+  }
+  /// Throws "expected <what>, got <this value>".
+  [[noreturn]] void expected(const std::string& what) const {
+    fail("expected " + what + ", got " + describe());
+  }
+
+  /// How the value appears in the file, for "got ..." in messages.
+  std::string describe() const {
+    switch (m_node.Type()) {
+      case YAML::NodeType::Null:
+      case YAML::NodeType::Undefined:
+        return "nothing (empty value)";
+      case YAML::NodeType::Sequence:
+        return fmt::format("a list of {} item{}", m_node.size(), m_node.size() == 1 ? "" : "s");
+      case YAML::NodeType::Map:
+        return "a map";
+      case YAML::NodeType::Scalar:
+        break;
+    }
+    std::string text = m_node.Scalar();
+    if (text.size() > 40) text = text.substr(0, 37) + "...";
+    if (isPlain()) return text;
+    return "\"" + text + "\" (a quoted string)";
+  }
+
+  /// A plain (unquoted, untagged) scalar: the only kind read as a number or a boolean.
+  bool isPlain() const {
+    if (!m_node.IsScalar()) return false;
+    const std::string& tag = m_node.Tag();
+    return tag == "?" || tag == "tag:yaml.org,2002:float" || tag == "tag:yaml.org,2002:int";
+  }
+
+  /// A finite number in `range`.
+  double number(const Range& range = {}) const {
+    const std::optional<double> v = parsedNumber();
+    if (!v || !range.contains(*v)) expected(numberExpectation("a number", range));
+    return *v;
+  }
+
+  /// An integer in `range` that fits an int.
+  int integer(const Range& range) const {
+    const long long v = integer64(range);
+    if (v < INT_MIN || v > INT_MAX)
+      expected(numberExpectation("an integer", range) + " that fits in 32 bits");
+    return static_cast<int>(v);
+  }
+
+  /// An integer in `range` (exactly representable: |v| <= 2^53).
+  long long integer64(const Range& range) const {
+    const std::optional<double> v = parsedNumber();
+    if (!v || std::floor(*v) != *v || std::abs(*v) > 9007199254740992.0 || !range.contains(*v))
+      expected(numberExpectation("an integer", range));
+    return static_cast<long long>(*v);
+  }
+
+  /// true/false (yes/no accepted too, any letter case). Numbers and quoted strings are refused.
+  bool boolean() const {
+    if (isPlain()) {
+      const std::string s = toLower(m_node.Scalar());
+      if (s == "true" || s == "yes") return true;
+      if (s == "false" || s == "no") return false;
+    }
+    expected("true or false");
+  }
+
+  /// A non-empty scalar (names, titles); `what` describes it in messages, e.g. "a name".
+  std::string text(std::string_view what) const {
+    if (!m_node.IsScalar() || m_node.Scalar().empty()) expected(std::string(what));
+    return m_node.Scalar();
+  }
+
+  /// One of a fixed set of words (compared case-insensitively).
+  template <typename E>
+  E choice(std::initializer_list<std::pair<std::string_view, E>> options) const {
+    std::vector<std::string> words;
+    for (const auto& [word, value] : options) words.emplace_back(word);
+    if (m_node.IsScalar()) {
+      const std::string s = toLower(m_node.Scalar());
+      for (const auto& [word, value] : options)
+        if (s == word) return value;
+    }
+    expected("one of: " + join(words));
+  }
+
+  /// The items of a list, with at least `minCount` items.
+  std::vector<Value> items(std::size_t minCount, ItemLabel label = ItemLabel::Index) const {
+    if (!m_node.IsSequence()) expected(minCount > 0 ? "a list (at least one item)" : "a list");
+    if (m_node.size() < minCount)
+      fail(fmt::format("expected a list of at least {} item{}, got {}", minCount, minCount == 1 ? "" : "s",
+                       describe()));
+    std::vector<Value> out;
+    out.reserve(m_node.size());
+    for (std::size_t i = 0; i < m_node.size(); ++i) {
+      const YAML::Node item = m_node[i];
+      std::string tag = std::to_string(i);
+      if (label == ItemLabel::Name && item.IsMap()) {
+        const YAML::Node name = item["name"];
+        if (name && name.IsScalar() && !name.Scalar().empty()) tag = name.Scalar();
+      }
+      out.emplace_back(*m_source, item, fmt::format("{}[{}]", m_path, tag), lineOf(item, m_line));
+    }
+    return out;
+  }
+
+  /// A list of exactly `count` numbers; `shape` names them in messages, e.g. "[x, y, z]".
+  std::vector<double> numbers(std::size_t count, std::string_view shape) const {
+    const std::string what = fmt::format("a list of {} numbers {}", count, shape);
+    if (!m_node.IsSequence() || m_node.size() != count) expected(what);
+    std::vector<double> out;
+    for (std::size_t i = 0; i < count; ++i) {
+      const Value item(*m_source, m_node[i], fmt::format("{}[{}]", m_path, i), lineOf(m_node[i], m_line));
+      const std::optional<double> v = item.parsedNumber();
+      if (!v) item.fail(fmt::format("expected {}; item {} is {}", what, i, item.describe()));
+      out.push_back(*v);
+    }
+    return out;
+  }
+
+  /// A position or vector [x, y, z].
+  Vec3 vec3() const {
+    const std::vector<double> v = numbers(3, "[x, y, z]");
+    return Vec3(v[0], v[1], v[2]);
+  }
+
+ private:
+  /// The number a plain scalar spells, if it spells a finite one (strict: the whole text must be a number).
+  std::optional<double> parsedNumber() const {
+    if (!isPlain()) return std::nullopt;
+    std::string_view s = m_node.Scalar();
+    if (!s.empty() && s.front() == '+') {
+      s.remove_prefix(1);
+      if (!s.empty() && (s.front() == '+' || s.front() == '-')) return std::nullopt;
+    }
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+  }
+
+  const std::string* m_source;
+  YAML::Node m_node;
+  std::string m_path;
+  int m_line;
+};
+
+/// A YAML map whose keys have been checked: every key is one of `allowed` and appears once. A missing
+/// or empty block (`seabed:` with nothing after it) reads as an empty map, so all its defaults apply.
+class Map {
+ public:
+  Map(const Value& value, std::vector<std::string> allowed) : m_value(value), m_allowed(std::move(allowed)) {
+    const YAML::Node& node = value.node();
+    if (node.IsNull()) return;
+    if (!node.IsMap()) value.expected("a map with keys: " + join(m_allowed));
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const int line = lineOf(it->first, value.line());
+      if (!it->first.IsScalar())
+        throw InputError(value.source(), line, value.path(), "expected a plain key here");
+      const std::string key = it->first.Scalar();
+      const std::string path = childPath(key);
+      if (std::find(m_allowed.begin(), m_allowed.end(), key) == m_allowed.end()) {
+        std::string message = fmt::format("unknown key '{}'; expected one of: {}", key, join(m_allowed));
+        if (const std::optional<std::string> guess = closest(key))
+          message += "; did you mean '" + *guess + "'?";
+        throw InputError(value.source(), line, path, message);
+      }
+      for (const Entry& e : m_entries)
+        if (e.key == key)
+          throw InputError(value.source(), line, path,
+                           fmt::format("key '{}' is given twice (first at line {})", key, e.line));
+      m_entries.push_back({key, it->second, line});
+    }
+  }
+
+  const Value& value() const { return m_value; }
+
+  /// The value of `key`, if given.
+  std::optional<Value> find(std::string_view key) const {
+    for (const Entry& e : m_entries)
+      if (e.key == key) return Value(m_value.source(), e.node, childPath(e.key), e.line);
+    return std::nullopt;
+  }
+
+  /// The value of a required key; `expectation` says what it should be, for the "missing" message.
+  Value get(std::string_view key, std::string_view expectation) const {
+    if (std::optional<Value> v = find(key)) return *v;
+    missing(key, expectation);
+  }
+
+  [[noreturn]] void missing(std::string_view key, std::string_view expectation) const {
+    throw InputError(m_value.source(), m_value.line(), childPath(key),
+                     fmt::format("missing required key '{}'; expected {}", key, expectation));
+  }
+
+  /// Required number in `range`.
+  double number(std::string_view key, const Range& range) const {
+    return get(key, numberExpectation("a number", range)).number(range);
+  }
+  /// Optional number in `range`, `fallback` when absent.
+  double number(std::string_view key, double fallback, const Range& range) const {
+    const std::optional<Value> v = find(key);
+    return v ? v->number(range) : fallback;
+  }
+  /// Optional angle given in degrees, returned in radians.
+  double angle(std::string_view key, double fallbackRadians) const {
+    const std::optional<Value> v = find(key);
+    return v ? degToRad(v->number(anyNumber())) : fallbackRadians;
+  }
+  /// Optional integer in `range`, `fallback` when absent.
+  int integer(std::string_view key, int fallback, const Range& range) const {
+    const std::optional<Value> v = find(key);
+    return v ? v->integer(range) : fallback;
+  }
+  /// Optional boolean, `fallback` when absent.
+  bool boolean(std::string_view key, bool fallback) const {
+    const std::optional<Value> v = find(key);
+    return v ? v->boolean() : fallback;
+  }
+
+ private:
+  struct Entry {
+    std::string key;
+    YAML::Node node;
+    int line;
+  };
+
+  std::string childPath(std::string_view key) const {
+    return m_value.path().empty() ? std::string(key) : m_value.path() + "." + std::string(key);
+  }
+
+  /// The allowed key closest to a misspelt one, when close enough to be a likely typo.
+  std::optional<std::string> closest(const std::string& key) const {
+    std::optional<std::string> best;
+    std::size_t bestDistance = std::max<std::size_t>(2, key.size() / 3) + 1;
+    for (const std::string& candidate : m_allowed) {
+      const std::size_t d = editDistance(toLower(key), candidate);
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = candidate;
+      }
+    }
+    return best;
+  }
+
+  Value m_value;
+  std::vector<std::string> m_allowed;
+  std::vector<Entry> m_entries;
+};
+
+/// Remembers the names given in a list, to report duplicates with the line of the first one.
+class NameRegistry {
+ public:
+  explicit NameRegistry(std::string what) : m_what(std::move(what)) {}
+  /// Reads the `name` key of `m` and checks it is new.
+  std::string add(const Map& m) {
+    const Value v = m.get("name", "a name (unique among the " + m_what + "s)");
+    std::string name = v.text("a name");
+    const auto [it, inserted] = m_lines.emplace(name, v.line());
+    if (!inserted)
+      v.fail(fmt::format("duplicate {} name '{}' (first defined at line {}); names must be unique", m_what,
+                         name, it->second));
+    return name;
+  }
+
+ private:
+  std::string m_what;
+  std::map<std::string, int> m_lines;
+};
+
+// =====================================================================================================
+// Block readers
+// =====================================================================================================
+
+void readTitle(const Value& v, ModelSpec& spec) { spec.title = v.text("a title (text)"); }
+
+void readSeabed(const Value& v, model::SeabedSpec& seabed) {
+  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity"});
+  const model::SeabedSpec d;
+  seabed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positive());
+  seabed.damping = m.number("damping", d.damping, nonNegative());
+  seabed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
+  seabed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
+}
+
+/// A list of levels {z, speed, azimuth}, or one map {speed, azimuth} for a uniform current (stored as a
+/// single level at z = 0: the profile is constant beyond its end levels).
+std::vector<model::CurrentLevel> readCurrent(const Value& v) {
+  if (v.node().IsMap()) {
+    const Map m(v, {"speed", "azimuth"});
+    return {{0.0, m.number("speed", nonNegative()), degToRad(m.number("azimuth", anyNumber()))}};
+  }
+  if (!v.node().IsSequence())
+    v.expected("a list of levels {z, speed, azimuth} or a single map {speed, azimuth} (uniform current)");
+  std::vector<model::CurrentLevel> levels;
+  std::vector<std::pair<double, int>> seen;  // z and line of each level
+  for (const Value& item : v.items(1)) {
+    const Map m(item, {"z", "speed", "azimuth"});
+    model::CurrentLevel level;
+    const Value z = m.get("z", "a number <= 0");
+    level.z = z.number(atMost(0.0).withHint("z = 0 at the still water level, negative below"));
+    for (const auto& [zOther, lineOther] : seen)
+      if (zOther == level.z)
+        z.fail(fmt::format("current level z = {} is given twice (first at line {}); levels must be distinct",
+                           numberText(level.z), lineOther));
+    seen.emplace_back(level.z, z.line());
+    level.speed = m.number("speed", nonNegative());
+    level.azimuth = degToRad(m.number("azimuth", anyNumber()));
+    levels.push_back(level);
+  }
+  return levels;
+}
+
+model::WaveSpec readWaves(const Value& v) {
+  using model::WaveKind;
+  static const std::vector<std::string> kAiryKeys{"height", "period", "phase"};
+  static const std::vector<std::string> kJonswapKeys{"significant_height", "peak_period", "gamma",
+                                                     "components", "seed"};
+  std::vector<std::string> allowed{"type"};
+  allowed.insert(allowed.end(), kAiryKeys.begin(), kAiryKeys.end());
+  allowed.insert(allowed.end(), kJonswapKeys.begin(), kJonswapKeys.end());
+  allowed.emplace_back("azimuth");
+  const Map m(v, allowed);
+
+  model::WaveSpec w;
+  w.kind = m.get("type", "one of: none, airy, jonswap")
+               .choice<WaveKind>(
+                   {{"none", WaveKind::None}, {"airy", WaveKind::Airy}, {"jonswap", WaveKind::Jonswap}});
+  if (w.kind == WaveKind::None)
+    return w;  // the other keys are ignored: waves can be switched off in one place
+
+  const bool airy = w.kind == WaveKind::Airy;
+  const std::string typeName = airy ? "airy" : "jonswap";
+  for (const std::string& key : airy ? kJonswapKeys : kAiryKeys)
+    if (const std::optional<Value> foreign = m.find(key))
+      foreign->fail(
+          fmt::format("key '{}' does not apply to waves of type {}; their keys are: type, {}, azimuth", key,
+                      typeName, join(airy ? kAiryKeys : kJonswapKeys)));
+
+  const std::string required = "required for waves of type " + typeName;
+  const model::WaveSpec d;
+  if (airy) {
+    w.height = m.number("height", positive().withHint(required));
+    w.period = m.number("period", positive().withHint(required));
+    w.phase = m.angle("phase", d.phase);
+  } else {
+    w.significantHeight = m.number("significant_height", positive().withHint(required));
+    w.peakPeriod = m.number("peak_period", positive().withHint(required));
+    w.gamma = m.number("gamma", d.gamma, atLeast(1.0).withHint("1 gives a Pierson-Moskowitz spectrum"));
+    w.components = m.integer("components", d.components, atLeast(1.0));
+    const std::optional<Value> seed = m.find("seed");
+    w.seed = seed ? static_cast<unsigned>(seed->integer64(closed(0.0, 4294967295.0))) : d.seed;
+  }
+  w.azimuth = m.angle("azimuth", d.azimuth);
+  return w;
+}
+
+void readEnvironment(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"water_depth", "water_density", "gravity", "seabed", "current", "waves"});
+  model::EnvironmentSpec& env = spec.environment;
+  const model::EnvironmentSpec d;
+  env.waterDepth = m.number("water_depth", positive().withHint("seabed at z = -water_depth"));
+  env.waterDensity = m.number("water_density", d.waterDensity, positive());
+  env.gravity = m.number("gravity", d.gravity, positive());
+  if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env.seabed);
+  if (const std::optional<Value> current = m.find("current")) env.current = readCurrent(*current);
+  if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves);
+}
+
+void readLineTypes(const Value& v, ModelSpec& spec) {
+  NameRegistry names("line type");
+  for (const Value& item : v.items(1, ItemLabel::Name)) {
+    const Map m(item, {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
+                       "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal",
+                       "drag_axial", "added_mass_normal", "added_mass_axial", "axial_damping"});
+    const section::LineType d;
+    section::LineType t;
+    t.name = names.add(m);
+    t.outerDiameter = m.number("outer_diameter", positive());
+    t.buoyancyDiameter = m.number("buoyancy_diameter", t.outerDiameter, positive());
+    t.contactDiameter = m.number("contact_diameter", t.outerDiameter, positive());
+    t.massPerLength = m.number("mass_per_length", positive());
+    t.axialStiffness = m.number("axial_stiffness", positive());
+    t.bendingStiffness = m.number("bending_stiffness", d.bendingStiffness, nonNegative());
+    t.torsionalStiffness = m.number("torsional_stiffness", d.torsionalStiffness, nonNegative());
+    t.dragNormal = m.number("drag_normal", d.dragNormal, nonNegative());
+    t.dragAxial = m.number("drag_axial", d.dragAxial, nonNegative());
+    t.addedMassNormal = m.number("added_mass_normal", d.addedMassNormal, nonNegative());
+    t.addedMassAxial = m.number("added_mass_axial", d.addedMassAxial, nonNegative());
+    t.axialDamping = m.number("axial_damping", d.axialDamping, nonNegative());
+    spec.lineTypes.emplace(t.name, t);
+  }
+}
+
+model::EndMotionSpec readMotion(const Value& v) {
+  const Map m(v, {"amplitude", "period", "phase", "table"});
+  model::EndMotionSpec motion;
+  motion.enabled = true;
+  if (const std::optional<Value> table = m.find("table")) {
+    for (const char* key : {"amplitude", "period", "phase"})
+      if (const std::optional<Value> harmonic = m.find(key))
+        harmonic->fail(
+            fmt::format("'{}' cannot be combined with 'table': give either amplitude, period and phase "
+                        "(harmonic motion) or table (time history)",
+                        key));
+    double previousTime = 0.0;
+    for (const Value& row : table->items(2)) {
+      const std::vector<double> r = row.numbers(4, "[t, dx, dy, dz] (s, m, m, m)");
+      if (r[0] < 0.0)
+        row.fail(fmt::format("expected a time t >= 0 s in the first column, got {}", numberText(r[0])));
+      if (!motion.table.empty() && r[0] <= previousTime)
+        row.fail(fmt::format("times must be strictly increasing: t = {} s comes after t = {} s",
+                             numberText(r[0]), numberText(previousTime)));
+      previousTime = r[0];
+      motion.table.push_back({r[0], r[1], r[2], r[3]});
+    }
+    return motion;
+  }
+  motion.amplitude = m.get("amplitude", "a list of 3 numbers [x, y, z] in m (or a 'table')").vec3();
+  motion.period = m.number("period", positive());
+  motion.phase = m.angle("phase", 0.0);
+  return motion;
+}
+
+model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
+  using model::EndKind;
+  const Map m(v, {"type", "position", "vessel", "motion"});
+  model::EndSpec end;
+  end.sourceLine = v.line();
+  const Value type = m.get("type", "one of: anchored, fixed, pinned, free, vessel");
+  end.kind = type.choice<EndKind>({{"anchored", EndKind::Anchored},
+                                   {"fixed", EndKind::Fixed},
+                                   {"pinned", EndKind::Pinned},
+                                   {"free", EndKind::Free},
+                                   {"vessel", EndKind::Vessel}});
+  const std::string typeName = toLower(type.node().Scalar());
+  const Value position = m.get("position", "a list of 3 numbers [x, y, z] in m");
+  end.position = position.vec3();
+
+  if (end.kind == EndKind::Vessel) {
+    end.vessel =
+        m.get("vessel", "the name of the vessel (required for ends of type vessel)").text("a vessel name");
+  } else {
+    if (const std::optional<Value> vessel = m.find("vessel"))
+      vessel->fail(
+          fmt::format("'vessel' applies only to ends of type vessel; this end is of type {}", typeName));
+    const double seabedZ = -env.waterDepth;
+    if (end.position.z() < seabedZ - kSeabedTolerance)
+      position.fail(
+          fmt::format("the end is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth); "
+                      "expected z >= {}",
+                      numberText(end.position.z()), numberText(seabedZ), numberText(seabedZ)));
+  }
+
+  if (const std::optional<Value> motion = m.find("motion")) {
+    if (end.kind == EndKind::Free || end.kind == EndKind::Vessel)
+      motion->fail(
+          fmt::format("a prescribed motion applies only to ends of type anchored, fixed or pinned; this end "
+                      "is of type {}",
+                      typeName));
+    end.motion = readMotion(*motion);
+  }
+  return end;
+}
+
+model::SectionSpec readSection(const Value& v, const ModelSpec& spec) {
+  const Map m(v, {"type", "length", "elements"});
+  model::SectionSpec section;
+  const Value type = m.get("type", "the name of a line type");
+  section.lineType = type.text("the name of a line type");
+  if (!spec.lineTypes.contains(section.lineType)) {
+    std::vector<std::string> known;
+    for (const auto& [name, lineType] : spec.lineTypes) known.push_back(name);
+    type.fail(fmt::format("unknown line type '{}'; line types defined under line_types: {}", section.lineType,
+                          join(known)));
+  }
+  section.length = m.number("length", positive().withHint("unstretched length in m"));
+  section.elements = m.get("elements", "an integer >= 1").integer(atLeast(1.0));
+  return section;
+}
+
+model::AttachmentSpec readAttachment(const Value& v, double lineLength) {
+  const Map m(v, {"arc_length", "mass", "volume", "drag_area", "added_mass"});
+  model::AttachmentSpec a;
+  a.arcLength =
+      m.number("arc_length", closed(0.0, lineLength).withHint("from end A, within the line's length"));
+  a.mass = m.number("mass", 0.0, nonNegative());
+  a.volume = m.number("volume", 0.0, nonNegative());
+  a.dragArea = m.number("drag_area", 0.0, nonNegative());
+  a.addedMass = m.number("added_mass", 0.0, nonNegative());
+  return a;
+}
+
+model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& names) {
+  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments"});
+  model::LineSpec line;
+  line.name = names.add(m);
+  line.contact = m.boolean("contact", line.contact);
+  const std::string endExpectation = "a map {type, position} describing the end";
+  line.endA = readEnd(m.get("end_a", endExpectation), spec.environment);
+  line.endB = readEnd(m.get("end_b", endExpectation), spec.environment);
+
+  double length = 0.0;
+  for (const Value& item :
+       m.get("sections", "a list of sections {type, length, elements} from end A to end B").items(1))
+    length += line.sections.emplace_back(readSection(item, spec)).length;
+
+  if (const std::optional<Value> attachments = m.find("attachments"))
+    for (const Value& item : attachments->items(0)) line.attachments.push_back(readAttachment(item, length));
+
+  // Ends clearly too far apart for the line's length (vessel ends are in vessel axes: not checked here).
+  using model::EndKind;
+  if (line.endA.kind != EndKind::Vessel && line.endB.kind != EndKind::Vessel) {
+    const double span = (line.endB.position - line.endA.position).norm();
+    if (span > kMaxEndSpanOverLength * length)
+      v.fail(fmt::format(
+          "line '{}': its ends are {} m apart but its unstretched length is only {} m (sum of the "
+          "sections); at most {} x the length ({} m) is accepted: check the end positions and "
+          "section lengths",
+          line.name, roundedText(span), roundedText(length), kMaxEndSpanOverLength,
+          roundedText(kMaxEndSpanOverLength * length)));
+  }
+  return line;
+}
+
+void readLines(const Value& v, ModelSpec& spec) {
+  NameRegistry names("line");
+  for (const Value& item : v.items(1, ItemLabel::Name)) spec.lines.push_back(readLine(item, spec, names));
+}
+
+void readStatics(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"max_iterations", "tolerance", "displacement_tolerance"});
+  const model::StaticSpec d;
+  model::StaticSpec& s = spec.statics;
+  s.maxIterations = m.integer("max_iterations", d.maxIterations, atLeast(1.0));
+  s.tolerance = m.number("tolerance", d.tolerance, positive());
+  s.displacementTolerance = m.number("displacement_tolerance", d.displacementTolerance, positive());
+}
+
+void readDynamics(const Value& v, ModelSpec& spec) {
+  using model::IntegratorKind;
+  const Map m(v, {"duration", "time_step", "min_time_step", "ramp_time", "output_interval", "integrator",
+                  "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance"});
+  const model::DynamicSpec d;
+  model::DynamicSpec& s = spec.dynamics;
+  s.duration = m.number("duration", nonNegative().withHint("0 switches dynamics off"));
+  s.enabled = s.duration > 0.0;
+  s.timeStep = m.number("time_step", d.timeStep, positive());
+  // Defaults that would contradict a user's time step follow it instead.
+  s.minTimeStep = m.number("min_time_step", std::min(d.minTimeStep, s.timeStep),
+                           Range{0.0, s.timeStep, true, false, "at most time_step"});
+  s.rampTime = m.number("ramp_time", d.rampTime, nonNegative());
+  s.outputInterval = m.number("output_interval", std::max(d.outputInterval, s.timeStep),
+                              atLeast(s.timeStep).withHint("at least time_step"));
+  if (const std::optional<Value> integrator = m.find("integrator"))
+    s.integrator =
+        integrator->choice<IntegratorKind>({{"generalized_alpha", IntegratorKind::GeneralizedAlpha},
+                                            {"hht", IntegratorKind::Hht},
+                                            {"newmark", IntegratorKind::Newmark}});
+  s.spectralRadius = m.number("spectral_radius", d.spectralRadius, closed(0.0, 1.0));
+  if (const std::optional<Value> mass = m.find("mass"))
+    s.lumpedMass = mass->choice<bool>({{"lumped", true}, {"consistent", false}});
+  if (const std::optional<Value> rayleigh = m.find("rayleigh")) {
+    const Map r(*rayleigh, {"alpha", "beta"});
+    s.rayleighAlpha = r.number("alpha", d.rayleighAlpha, nonNegative());
+    s.rayleighBeta = r.number("beta", d.rayleighBeta, nonNegative());
+  }
+  s.maxIterations = m.integer("max_iterations", d.maxIterations, atLeast(1.0));
+  s.tolerance = m.number("tolerance", d.tolerance, positive());
+}
+
+void readOutput(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"vtk", "plots"});
+  const model::OutputSpec d;
+  spec.output.vtk = m.boolean("vtk", d.vtk);
+  spec.output.plots = m.boolean("plots", d.plots);
+}
+
+/// A top-level block of the model file.
+struct TopLevelBlock {
+  std::string_view key;
+  bool required;
+  std::string_view expectation;  ///< what the block is, for the "missing" message
+  void (*read)(const Value&, ModelSpec&);
+};
+
+/// The top-level blocks, read in this order whatever their order in the file (a block may use the ones
+/// before it: lines need the environment and the line types).
+constexpr std::array kTopLevelBlocks{
+    TopLevelBlock{"title", false, "a title", readTitle},
+    TopLevelBlock{"environment", true, "a map {water_depth, ...}", readEnvironment},
+    TopLevelBlock{"line_types", true, "a list of line types {name, outer_diameter, ...}", readLineTypes},
+    TopLevelBlock{"lines", true, "a list of lines {name, end_a, end_b, sections, ...}", readLines},
+    TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
+    TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},
+    TopLevelBlock{"output", false, "a map of output settings", readOutput},
+};
+
+ModelSpec readDocument(const YAML::Node& root, const std::string& source) {
+  std::vector<std::string> keys;
+  for (const TopLevelBlock& block : kTopLevelBlocks) keys.emplace_back(block.key);
+  const Map m(Value(source, root, "", lineOf(root, 1)), keys);
+  ModelSpec spec;
+  spec.sourceFile = source;
+  for (const TopLevelBlock& block : kTopLevelBlocks) {
+    if (const std::optional<Value> v = m.find(block.key))
+      block.read(*v, spec);
+    else if (block.required)
+      m.missing(block.key, block.expectation);
+  }
+  return spec;
+}
+
+[[noreturn]] void rethrowYamlError(const YAML::Exception& e, const std::string& source) {
+  const int line = e.mark.is_null() ? 0 : e.mark.line + 1;
+  const std::string where = e.mark.is_null() ? "" : fmt::format(" (column {})", e.mark.column + 1);
+  throw InputError(source, line, "", "invalid YAML" + where + ": " + e.msg);
+}
+
+}  // namespace
+
+model::ModelSpec readModelString(const std::string& yaml, const std::string& sourceName) {
+  std::vector<YAML::Node> documents;
+  try {
+    documents = YAML::LoadAll(yaml);
+  } catch (const YAML::Exception& e) {
+    rethrowYamlError(e, sourceName);
+  }
+  if (documents.empty())
+    throw InputError(sourceName, 0, "",
+                     "the model is empty; expected at least the blocks environment, line_types and lines");
+  if (documents.size() > 1)
+    throw InputError(
+        sourceName, lineOf(documents[1], 0), "",
+        "expected a single YAML document, found a second one (after '---'); put one model per file");
+  try {
+    return readDocument(documents.front(), sourceName);
+  } catch (const YAML::Exception& e) {
+    rethrowYamlError(e, sourceName);
+  }
+}
+
+model::ModelSpec readModelFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError(path, 0, "", "cannot read the model file: it does not exist");
+  if (fs::is_directory(path, ec))
+    throw InputError(path, 0, "", "cannot read the model file: it is a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "", "cannot open the model file for reading");
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw InputError(path, 0, "", "error while reading the model file");
+  return readModelString(text.str(), path);
+}
+
+}  // namespace tangle::io

@@ -1,0 +1,28 @@
+#include "tangle/model/DofMap.hpp"
+
+#include "tangle/core/Error.hpp"
+
+namespace tangle::model {
+
+int DofMap::addNode(int dofCount) {
+  if (dofCount != 3 && dofCount != 6) throw Error("DofMap: a node has 3 or 6 DOFs");
+  const int first = fullDofCount();
+  m_firstDof.push_back(first);
+  m_dofCount.push_back(dofCount);
+  m_equation.insert(m_equation.end(), dofCount, -2);
+  return first;
+}
+
+void DofMap::constrain(int dof) { m_equation.at(dof) = -1; }
+
+void DofMap::finalize() {
+  m_equationCount = 0;
+  m_equationDof.clear();
+  for (int dof = 0; dof < fullDofCount(); ++dof) {
+    if (m_equation[dof] == -1) continue;
+    m_equation[dof] = m_equationCount++;
+    m_equationDof.push_back(dof);
+  }
+}
+
+}  // namespace tangle::model

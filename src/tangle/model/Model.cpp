@@ -1,0 +1,188 @@
+#include "tangle/model/Model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "tangle/core/Error.hpp"
+#include "tangle/geometry/Rotation.hpp"
+#include "tangle/solver/ElasticCatenary.hpp"
+
+namespace tangle::model {
+
+namespace {
+/// Default torsional stiffness when a beam type gives none: GJ = EI / (1 + nu) with nu = 0.3
+/// (solid or thin-walled circular section: J = 2I, G = E / (2 (1 + nu))).
+double torsionalStiffnessOf(const section::LineType& t) {
+  return t.torsionalStiffness > 0.0 ? t.torsionalStiffness : t.bendingStiffness / 1.3;
+}
+}  // namespace
+
+Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec))) {
+  for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
+  m_dofs.finalize();
+}
+
+void Model::buildLine(int lineIndex) {
+  const LineSpec& ls = m_spec->lines[lineIndex];
+  Line line;
+  line.name = ls.name;
+  line.spec = &ls;
+  line.firstNode = m_dofs.nodeCount();
+  line.firstElement = static_cast<int>(m_elements.size());
+
+  // Element list first, to know which nodes need rotations.
+  std::vector<LineElement> elements;
+  std::vector<double> arc{0.0};
+  for (const SectionSpec& sec : ls.sections) {
+    const auto it = m_spec->lineTypes.find(sec.lineType);
+    if (it == m_spec->lineTypes.end())
+      throw InputError(m_spec->sourceFile, 0, "lines." + ls.name + ".sections",
+                       "unknown line type '" + sec.lineType + "'");
+    const section::LineType& type = it->second;
+    const double le = sec.length / sec.elements;
+    for (int e = 0; e < sec.elements; ++e) {
+      LineElement el;
+      el.line = lineIndex;
+      el.type = &type;
+      el.restLength = le;
+      if (type.isBeam()) {
+        el.beam.emplace(element::BeamProperties{type.axialStiffness, type.bendingStiffness, torsionalStiffnessOf(type)},
+                        le);
+      } else {
+        el.bar.emplace(type.axialStiffness, le);
+      }
+      elements.push_back(std::move(el));
+      arc.push_back(arc.back() + le);
+    }
+  }
+  const int nodeCount = static_cast<int>(arc.size());
+  for (int n = 0; n < nodeCount; ++n) {
+    const bool beamLeft = n > 0 && elements[n - 1].isBeam();
+    const bool beamRight = n < nodeCount - 1 && elements[n].isBeam();
+    m_dofs.addNode(beamLeft || beamRight ? 6 : 3);
+    m_nodeLine.push_back(lineIndex);
+    m_tributaryLength.push_back(0.0);
+    m_nodeContactDiameter.push_back(0.0);
+    m_nodeMass.push_back(0.0);
+    m_nodeRotationalInertia.push_back(0.0);
+  }
+  for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
+    LineElement& el = elements[e];
+    el.node1 = line.firstNode + e;
+    el.node2 = line.firstNode + e + 1;
+    const double half = 0.5 * el.restLength;
+    const double d = el.type->contactDiameter;
+    // Rotational inertia of a solid circular section about a transverse axis per length is
+    // m * D^2 / 16; an isotropic approximation is enough for slender lines (it barely matters).
+    const double rot = el.type->massPerLength * half * el.type->outerDiameter * el.type->outerDiameter / 16.0;
+    for (int node : {el.node1, el.node2}) {
+      m_tributaryLength[node] += half;
+      m_nodeContactDiameter[node] = std::max(m_nodeContactDiameter[node], d);
+      m_nodeMass[node] += el.type->massPerLength * half;
+      m_nodeRotationalInertia[node] += rot;
+    }
+  }
+  line.nodeCount = nodeCount;
+  line.elementCount = static_cast<int>(elements.size());
+  line.arcLength = arc;
+  line.length = arc.back();
+  for (auto& el : elements) m_elements.push_back(std::move(el));
+
+  for (const AttachmentSpec& a : ls.attachments) {
+    const auto nearest = std::min_element(arc.begin(), arc.end(), [&](double x, double y) {
+      return std::abs(x - a.arcLength) < std::abs(y - a.arcLength);
+    });
+    const int node = line.firstNode + static_cast<int>(nearest - arc.begin());
+    m_attachments.push_back({node, a});
+    m_nodeMass[node] += a.mass;
+  }
+
+  constrainEnd(line.firstNode, ls.endA);
+  constrainEnd(line.lastNode(), ls.endB);
+  m_lines.push_back(std::move(line));
+}
+
+void Model::constrainEnd(int node, const EndSpec& end) {
+  const int first = m_dofs.firstDof(node);
+  switch (end.kind) {
+    case EndKind::Fixed:
+      for (int k = 0; k < m_dofs.dofCount(node); ++k) m_dofs.constrain(first + k);
+      break;
+    case EndKind::Anchored:
+    case EndKind::Pinned:
+      for (int k = 0; k < 3; ++k) m_dofs.constrain(first + k);
+      break;
+    case EndKind::Free:
+      break;
+    case EndKind::Vessel:
+      throw InputError(m_spec->sourceFile, end.sourceLine, "end.vessel",
+                       "vessel connections are not supported by this version");
+  }
+}
+
+State Model::initialState() const {
+  State s;
+  const int n = nodeCount();
+  s.position.assign(n, Vec3::Zero());
+  s.triad.assign(n, Mat3::Identity());
+  s.velocity = VecX::Zero(m_dofs.fullDofCount());
+  s.acceleration = VecX::Zero(m_dofs.fullDofCount());
+  const EnvironmentSpec& env = m_spec->environment;
+  for (const Line& line : m_lines) {
+    std::vector<solver::CatenarySection> sections;
+    for (const SectionSpec& sec : line.spec->sections) {
+      const section::LineType& t = m_spec->lineTypes.at(sec.lineType);
+      sections.push_back({sec.length, t.submergedWeight(env.waterDensity, env.gravity), t.axialStiffness});
+    }
+    // An end resting on the seabed sits one contact radius above it; the analytic shape then uses the
+    // level of that end as its seabed, so the grounded part starts where it rests (not squashed).
+    double radius = 0.0;
+    for (const SectionSpec& sec : line.spec->sections)
+      radius = std::max(radius, 0.5 * m_spec->lineTypes.at(sec.lineType).contactDiameter);
+    double shapeDepth = env.waterDepth;
+    for (const Vec3& end : {line.spec->endA.position, line.spec->endB.position})
+      if (end.z() <= -env.waterDepth + radius + 1e-6) shapeDepth = std::min(shapeDepth, -end.z());
+    const std::vector<Vec3> pts = solver::initialLineShape(line.spec->endA.position, line.spec->endB.position,
+                                                           sections, shapeDepth, line.arcLength)
+                                      .positions;
+    for (int i = 0; i < line.nodeCount; ++i) s.position[line.firstNode + i] = pts[i];
+    // Grounded nodes start at their static penetration w / k into the seabed, so the seabed springs are
+    // active in the first Newton tangent (otherwise a grounded stretch has no vertical stiffness).
+    for (int i = 1; i + 1 < line.nodeCount; ++i) {
+      Vec3& x = s.position[line.firstNode + i];
+      if (x.z() > -shapeDepth + 1e-6) continue;
+      const model::LineElement& el = m_elements[line.firstElement + i];
+      const double w = el.type->submergedWeight(env.waterDensity, env.gravity);
+      if (w > 0.0) x.z() -= w / env.seabed.normalStiffness;
+    }
+
+    // Triads: first one from the initial tangent, then parallel transport along the line so that
+    // the initial shape carries no twist (Bishop frame).
+    auto tangentAt = [&](int i) {
+      const int a = line.firstNode + std::max(i - 1, 0);
+      const int b = line.firstNode + std::min(i + 1, line.nodeCount - 1);
+      Vec3 t = s.position[b] - s.position[a];
+      if (t.norm() < 1e-12) t = Vec3::UnitX();
+      return Vec3(t.normalized());
+    };
+    Vec3 prev = tangentAt(0);
+    Mat3 q = geometry::frameFromTangent(prev, Vec3::UnitZ());
+    for (int i = 0; i < line.nodeCount; ++i) {
+      const Vec3 t = tangentAt(i);
+      q = geometry::rotationBetween(prev, t) * q;
+      s.triad[line.firstNode + i] = q;
+      prev = t;
+    }
+  }
+  return s;
+}
+
+double Model::lineMass(int lineIndex) const {
+  const Line& line = m_lines.at(lineIndex);
+  double m = 0.0;
+  for (int n = line.firstNode; n <= line.lastNode(); ++n) m += m_nodeMass[n];
+  return m;
+}
+
+}  // namespace tangle::model

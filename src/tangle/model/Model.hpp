@@ -1,0 +1,98 @@
+#pragma once
+/// @file Model.hpp
+/// The finite-element model built from a ModelSpec: nodes, elements, DOF numbering, and the
+/// initial state (analytic catenary or straight shapes) from which the static solve starts.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tangle/element/Bar.hpp"
+#include "tangle/element/CorotationalBeam.hpp"
+#include "tangle/model/DofMap.hpp"
+#include "tangle/model/ModelSpec.hpp"
+#include "tangle/model/State.hpp"
+
+namespace tangle::model {
+
+/// One element of a line: a bar (cable sections) or a co-rotational beam.
+struct LineElement {
+  int line = 0;        ///< index of the line
+  int node1 = 0;       ///< global node index at the end-A side
+  int node2 = 0;       ///< global node index at the end-B side
+  const section::LineType* type = nullptr;  ///< section properties (owned by the ModelSpec)
+  double restLength = 0.0;                  ///< unstretched length [m]
+  std::optional<element::Bar> bar;          ///< set for cable elements
+  std::optional<element::CorotationalBeam> beam;  ///< set for beam elements
+  bool isBeam() const { return beam.has_value(); }
+};
+
+/// A point mass / buoy at a node.
+struct NodeAttachment {
+  int node = 0;            ///< global node index
+  AttachmentSpec spec;     ///< mass, volume, drag, added mass
+};
+
+/// A line's mesh: a contiguous range of nodes and elements.
+struct Line {
+  std::string name;
+  const LineSpec* spec = nullptr;
+  int firstNode = 0;                 ///< global index of the node at end A
+  int nodeCount = 0;                 ///< nodes = elements + 1
+  int firstElement = 0;              ///< global index of the first element
+  int elementCount = 0;
+  std::vector<double> arcLength;     ///< unstretched arc length of each node from end A [m]
+  double length = 0.0;               ///< total unstretched length [m]
+  int lastNode() const { return firstNode + nodeCount - 1; }  ///< global index of the node at end B
+};
+
+/// The meshed model. Owns its ModelSpec; element line-type pointers point into it.
+class Model {
+ public:
+  /// Meshes the model. Throws InputError for inconsistencies the reader could not see.
+  explicit Model(ModelSpec spec);
+  Model(const Model&) = delete;
+  Model& operator=(const Model&) = delete;
+
+  const ModelSpec& spec() const { return *m_spec; }             ///< the input
+  const EnvironmentSpec& environment() const { return m_spec->environment; }
+  const std::vector<Line>& lines() const { return m_lines; }     ///< lines in input order
+  const std::vector<LineElement>& elements() const { return m_elements; }
+  const std::vector<NodeAttachment>& attachments() const { return m_attachments; }
+  const DofMap& dofs() const { return m_dofs; }                  ///< DOF numbering
+  int nodeCount() const { return m_dofs.nodeCount(); }
+  /// Line index owning a node.
+  int lineOfNode(int node) const { return m_nodeLine[node]; }
+  /// Tributary unstretched length of each node (half of each adjacent element) [m].
+  const std::vector<double>& tributaryLength() const { return m_tributaryLength; }
+  /// Contact diameter of each node (largest adjacent line type) [m].
+  const std::vector<double>& nodeContactDiameter() const { return m_nodeContactDiameter; }
+  /// Structural mass lumped to each node, including attachments [kg].
+  const std::vector<double>& nodeMass() const { return m_nodeMass; }
+  /// Rotational inertia lumped to each beam node (isotropic approximation) [kg m^2].
+  const std::vector<double>& nodeRotationalInertia() const { return m_nodeRotationalInertia; }
+
+  /// The initial state: catenary/straight shapes, triads by parallel transport, zero velocity.
+  State initialState() const;
+
+  /// Total structural mass [kg] and submerged weight [N] (if fully submerged) of a line.
+  double lineMass(int line) const;
+
+ private:
+  void buildLine(int lineIndex);
+  void constrainEnd(int node, const EndSpec& end);
+
+  std::unique_ptr<ModelSpec> m_spec;
+  std::vector<Line> m_lines;
+  std::vector<LineElement> m_elements;
+  std::vector<NodeAttachment> m_attachments;
+  std::vector<int> m_nodeLine;
+  std::vector<double> m_tributaryLength;
+  std::vector<double> m_nodeContactDiameter;
+  std::vector<double> m_nodeMass;
+  std::vector<double> m_nodeRotationalInertia;
+  DofMap m_dofs;
+};
+
+}  // namespace tangle::model

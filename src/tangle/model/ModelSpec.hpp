@@ -1,0 +1,159 @@
+#pragma once
+/// @file ModelSpec.hpp
+/// The model as the user wrote it (one struct per YAML block), before meshing. The reader
+/// (io::ModelReader) fills it and checks it; model::Model builds the finite-element mesh from it.
+/// Every field carries its unit; angles are stored in radians (input files give degrees).
+
+#include <array>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+#include "tangle/section/LineType.hpp"
+
+namespace tangle::model {
+
+/// Flat seabed at z = -waterDepth.
+struct SeabedSpec {
+  double normalStiffness = 1.0e5;  ///< penalty stiffness per unit length of line [N/m/m]
+  double damping = 0.0;            ///< normal damping per unit length of line [N s/m/m]
+  double frictionCoefficient = 0.0;  ///< Coulomb friction coefficient mu [-] (dynamics only)
+  double frictionVelocity = 0.01;  ///< regularisation velocity: full friction above it [m/s]
+};
+
+/// One level of a piecewise-linear current profile.
+struct CurrentLevel {
+  double z = 0.0;        ///< level [m], z = 0 at still water level, negative below
+  double speed = 0.0;    ///< current speed [m/s]
+  double azimuth = 0.0;  ///< direction the current flows towards, anticlockwise from +x [rad]
+};
+
+/// Kind of wave train.
+enum class WaveKind { None, Airy, Jonswap };
+
+/// Wave input.
+struct WaveSpec {
+  WaveKind kind = WaveKind::None;
+  double height = 0.0;          ///< regular wave height H [m] (Airy)
+  double period = 0.0;          ///< regular wave period T [s] (Airy)
+  double significantHeight = 0.0;  ///< Hs [m] (JONSWAP)
+  double peakPeriod = 0.0;      ///< Tp [s] (JONSWAP)
+  double gamma = 3.3;           ///< JONSWAP peak enhancement factor [-]
+  int components = 100;         ///< number of JONSWAP components [-]
+  unsigned seed = 1;            ///< random seed of the JONSWAP phases [-]
+  double azimuth = 0.0;         ///< direction of travel, anticlockwise from +x [rad]
+  double phase = 0.0;           ///< phase of the regular wave [rad]
+};
+
+/// Environment: water, gravity, seabed, current and waves.
+struct EnvironmentSpec {
+  double waterDepth = 100.0;      ///< depth of the flat seabed below still water level [m]
+  double waterDensity = 1025.0;   ///< sea water density [kg/m^3]
+  double gravity = 9.80665;       ///< gravitational acceleration [m/s^2]
+  SeabedSpec seabed;
+  std::vector<CurrentLevel> current;  ///< empty: no current
+  WaveSpec waves;
+};
+
+/// How a line end is held.
+enum class EndKind {
+  Anchored,  ///< position fixed (on or above the seabed); rotations free
+  Fixed,     ///< position and rotation fixed
+  Pinned,    ///< position fixed, rotations free (same as Anchored, not necessarily on the seabed)
+  Free,      ///< nothing fixed
+  Vessel     ///< attached to a vessel (see vessel)
+};
+
+/// Prescribed harmonic motion of a line end about its initial position (dynamics):
+/// x(t) = x0 + ramp(t) * amplitude * sin(2 pi t / period + phase).
+struct EndMotionSpec {
+  bool enabled = false;
+  Vec3 amplitude = Vec3::Zero();  ///< displacement amplitude along global x, y, z [m]
+  double period = 10.0;           ///< [s]
+  double phase = 0.0;             ///< [rad]
+  std::vector<std::array<double, 4>> table;  ///< optional time history rows (t [s], x, y, z [m] offsets)
+};
+
+/// A line end.
+struct EndSpec {
+  EndKind kind = EndKind::Anchored;
+  Vec3 position = Vec3::Zero();  ///< global position [m] (vessel axes [m] for kind Vessel)
+  std::string vessel;            ///< vessel name, for kind Vessel
+  EndMotionSpec motion;          ///< prescribed motion (dynamics), for Fixed/Pinned/Anchored ends
+  int sourceLine = 0;            ///< line of the input file that defined this end (for messages)
+};
+
+/// A section of a line: a length of one line type, meshed with equal elements.
+struct SectionSpec {
+  std::string lineType;  ///< name of a line type
+  double length = 0.0;   ///< unstretched length [m]
+  int elements = 1;      ///< number of elements [-]
+};
+
+/// A lumped mass or buoy attached at an arc length along a line.
+struct AttachmentSpec {
+  double arcLength = 0.0;  ///< unstretched arc length from end A [m]; snapped to the nearest node
+  double mass = 0.0;       ///< [kg]
+  double volume = 0.0;     ///< displaced volume [m^3]
+  double dragArea = 0.0;   ///< Cd * A for drag [m^2]
+  double addedMass = 0.0;  ///< added mass [kg]
+};
+
+/// A line: ends, sections from end A to end B, attachments.
+struct LineSpec {
+  std::string name;
+  EndSpec endA;
+  EndSpec endB;
+  std::vector<SectionSpec> sections;
+  std::vector<AttachmentSpec> attachments;
+  bool contact = true;  ///< takes part in line-to-line contact
+};
+
+/// Static solver settings.
+struct StaticSpec {
+  int maxIterations = 400;       ///< Newton iterations in all [-]
+  double tolerance = 1.0e-6;     ///< convergence: max out-of-balance force / reference force [-]
+  double displacementTolerance = 1.0e-7;  ///< convergence: max displacement increment / line length [-]
+};
+
+/// Time integration scheme.
+enum class IntegratorKind { GeneralizedAlpha, Hht, Newmark };
+
+/// Dynamic analysis settings.
+struct DynamicSpec {
+  bool enabled = false;
+  double duration = 0.0;        ///< simulated time [s]
+  double timeStep = 0.01;       ///< time step [s]
+  double minTimeStep = 1.0e-5;  ///< smallest step the step controller may cut to [s]
+  double rampTime = 5.0;        ///< smooth ramp of loads and motions at the start [s]
+  double outputInterval = 0.1;  ///< time between result records [s]
+  IntegratorKind integrator = IntegratorKind::GeneralizedAlpha;
+  double spectralRadius = 0.8;  ///< rho_infinity of generalized-alpha / HHT [-]
+  bool lumpedMass = true;       ///< lumped (true) or consistent (false) structural mass
+  double rayleighAlpha = 0.0;   ///< mass-proportional Rayleigh damping [1/s]
+  double rayleighBeta = 0.0;    ///< stiffness-proportional Rayleigh damping [s]
+  int maxIterations = 20;       ///< Newton iterations per step [-]
+  double tolerance = 1.0e-6;    ///< residual tolerance relative to the reference force [-]
+};
+
+/// Result output settings.
+struct OutputSpec {
+  bool vtk = true;   ///< write a ParaView .pvd/.vtu series
+  bool plots = true; ///< write PNG plots (needs python3 with matplotlib)
+};
+
+/// The whole model as read from the file.
+struct ModelSpec {
+  std::string sourceFile;  ///< path of the model file, for messages
+  std::string title;
+  EnvironmentSpec environment;
+  std::map<std::string, section::LineType> lineTypes;
+  std::vector<LineSpec> lines;
+  StaticSpec statics;
+  DynamicSpec dynamics;
+  OutputSpec output;
+};
+
+}  // namespace tangle::model

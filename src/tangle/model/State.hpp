@@ -1,0 +1,25 @@
+#pragma once
+/// @file State.hpp
+/// The kinematic state of the whole model at one instant.
+
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+#include "tangle/model/DofMap.hpp"
+
+namespace tangle::model {
+
+/// Positions and triads per node; velocities and accelerations per full DOF
+/// (translational [m/s], [m/s^2]; spatial angular [rad/s], [rad/s^2]).
+struct State {
+  double time = 0.0;              ///< [s]
+  std::vector<Vec3> position;     ///< node positions, global axes [m]
+  std::vector<Mat3> triad;        ///< node triads (beam nodes; identity for bar nodes)
+  VecX velocity;                  ///< per full DOF
+  VecX acceleration;              ///< per full DOF
+
+  /// Applies an increment given per full DOF: x += du, Q <- exp(dtheta) Q (multiplicative, spatial).
+  void applyIncrement(const DofMap& dofs, const VecX& fullIncrement);
+};
+
+}  // namespace tangle::model

@@ -1,0 +1,76 @@
+#pragma once
+/// @file Assembler.hpp
+/// Assembles the out-of-balance force F(q, v, t) = f_internal + f_damping - f_external of the whole
+/// model and, in one call, the iteration matrix H = kf dF/dq + cf dF/dv (Chrono-style: the caller
+/// picks the factors of its integrator; statics uses kf = 1, cf = 0). Inertia is kept apart
+/// (addMass) because integrators combine it differently. State gather/scatter is not done here.
+
+#include <memory>
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/model/State.hpp"
+#include "tangle/solver/SystemMatrix.hpp"
+
+namespace tangle::solver {
+
+/// What an assembly call should compute.
+struct AssemblyRequest {
+  double time = 0.0;        ///< time [s] (environment, prescribed motions)
+  double loadFactor = 1.0;  ///< multiplies weight, buoyancy and environmental loads [-] (statics ramp, dynamics start ramp)
+  bool dynamic = false;     ///< include velocity-dependent forces (drag with structure velocity, seabed damping and friction)
+  double kf = 1.0;          ///< factor on the stiffness dF/dq in H
+  double cf = 0.0;          ///< factor on the damping dF/dv in H
+  bool wantMatrix = true;   ///< assemble H
+};
+
+/// A source of forces that is not a structural element (hydrodynamics, contact, vessels...).
+class LoadContributor {
+ public:
+  virtual ~LoadContributor() = default;
+  /// Adds this contributor's part of F (full-DOF vector, out-of-balance sign convention: external
+  /// loads are subtracted) and, when matrix != nullptr, of H.
+  virtual void addForces(const model::State& state, const AssemblyRequest& request, VecX& force,
+                         SystemMatrix* matrix) = 0;
+  /// Adds mf * M_contributor to matrix (if not null) and M_contributor * acceleration to out (if not null).
+  virtual void addMass(const model::State& /*state*/, double /*mf*/, SystemMatrix* /*matrix*/,
+                       const VecX* /*acceleration*/, VecX* /*out*/) {}
+};
+
+/// Structural elements, weight and buoyancy, point attachments and the seabed; plus any number of
+/// LoadContributors.
+class Assembler {
+ public:
+  explicit Assembler(const model::Model& model);
+
+  /// Registers an additional force source (the Assembler keeps a non-owning pointer).
+  void addContributor(LoadContributor* contributor) { m_contributors.push_back(contributor); }
+
+  /// F (full DOFs) and, if requested, H (equations). `force` is resized and zeroed.
+  void assemble(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+
+  /// Adds mf * M to matrix and M * acceleration to out (full DOFs); M is the lumped structural mass
+  /// plus whatever mass the contributors add (added mass).
+  void addMass(const model::State& state, double mf, SystemMatrix* matrix, const VecX* acceleration, VecX* out);
+
+  /// Effective tension [N] of each element (axial force; with weight applied as submerged weight it is
+  /// the effective tension of Sparks 1984).
+  std::vector<double> elementTension(const model::State& state) const;
+
+  /// Reference force [N] for convergence tests: largest element weight magnitude or 1 N.
+  double referenceForce() const { return m_referenceForce; }
+
+  const model::Model& model() const { return *m_model; }
+
+ private:
+  void addElements(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+  void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force);
+  void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+
+  const model::Model* m_model;
+  std::vector<LoadContributor*> m_contributors;
+  double m_referenceForce = 1.0;
+};
+
+}  // namespace tangle::solver

@@ -1,0 +1,52 @@
+#pragma once
+/// @file SystemMatrix.hpp
+/// Collects matrix contributions given in full-DOF numbering into a sparse matrix over the
+/// equations (constrained DOFs dropped), and assembles residual vectors.
+
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+#include "tangle/model/DofMap.hpp"
+
+namespace tangle::solver {
+
+/// Triplet collector over equation numbers.
+class SystemMatrix {
+ public:
+  explicit SystemMatrix(const model::DofMap& dofs) : m_dofs(&dofs) {}
+  /// Removes all entries (keeps capacity).
+  void clear() { m_triplets.clear(); }
+  /// Adds v at (full DOF row, full DOF column); ignored when either DOF is constrained.
+  void add(int row, int col, double v) {
+    const int r = m_dofs->equation(row);
+    const int c = m_dofs->equation(col);
+    if (r >= 0 && c >= 0 && v != 0.0) m_triplets.emplace_back(r, c, v);
+  }
+  /// Adds a dense block: rows/cols are the full DOF indices of the block's rows/columns.
+  template <class Derived>
+  void addBlock(const int* dofs, int n, const Eigen::MatrixBase<Derived>& block, double scale = 1.0) {
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) add(dofs[i], dofs[j], scale * block(i, j));
+  }
+  /// Adds s * I (3x3) at the translational DOFs of a node starting at full DOF `first`.
+  void addDiagonal3(int first, double s) {
+    for (int k = 0; k < 3; ++k) add(first + k, first + k, s);
+  }
+  /// Adds a 3x3 block at (rowFirst.., colFirst..).
+  void add3x3(int rowFirst, int colFirst, const Mat3& m, double scale = 1.0) {
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) add(rowFirst + i, colFirst + j, scale * m(i, j));
+  }
+  /// Builds the compressed sparse matrix (duplicates summed).
+  void build(SparseMatrix& out) const {
+    out.resize(m_dofs->equationCount(), m_dofs->equationCount());
+    out.setFromTriplets(m_triplets.begin(), m_triplets.end());
+  }
+  const std::vector<Triplet>& triplets() const { return m_triplets; }
+
+ private:
+  const model::DofMap* m_dofs;
+  std::vector<Triplet> m_triplets;
+};
+
+}  // namespace tangle::solver

@@ -1,0 +1,108 @@
+#include "tangle/time/DynamicAnalysis.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fmt/format.h>
+#include <iostream>
+#include <limits>
+
+namespace tangle::time {
+
+std::vector<PrescribedNode> prescribedNodes(const model::Model& model) {
+  std::vector<PrescribedNode> out;
+  const double rampTime = model.spec().dynamics.rampTime;
+  for (const model::Line& line : model.lines()) {
+    for (int end = 0; end < 2; ++end) {
+      const model::EndSpec& e = end == 0 ? line.spec->endA : line.spec->endB;
+      if (!e.motion.enabled) continue;
+      if (e.kind == model::EndKind::Free) continue;
+      out.push_back({end == 0 ? line.firstNode : line.lastNode(), e.position, PrescribedMotion(e.motion, rampTime)});
+    }
+  }
+  return out;
+}
+
+DynamicAnalysis::DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings)
+    : m_assembler(&assembler), m_settings(settings) {}
+
+DynamicResult DynamicAnalysis::run(model::State& state) {
+  using Clock = std::chrono::steady_clock;
+  const auto wallStart = Clock::now();
+  auto lastPrint = wallStart;
+  const model::Model& model = m_assembler->model();
+  GeneralizedAlpha stepper(*m_assembler, m_settings, prescribedNodes(model));
+  DynamicResult result;
+  state.time = 0.0;
+  stepper.initialize(state);
+  if (m_observer) m_observer(state, stepper.lastForce());
+
+  const double duration = m_settings.duration;
+  const double nominal = m_settings.timeStep;
+  const double out = m_settings.outputInterval;
+  double nextOutput = out;
+  double dt = nominal;
+  int successes = 0;
+  const double eps = 1e-9 * nominal;
+  while (state.time < duration - eps) {
+    double h = std::min(dt, duration - state.time);
+    if (m_limiter) h = std::min(h, std::max(m_settings.minTimeStep, m_limiter(state)));
+    // Land exactly on output times.
+    if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
+    if (h <= eps) h = std::min(dt, duration - state.time);
+    const StepOutcome o = stepper.step(state, h);
+    result.newtonIterations += o.iterations;
+    if (!o.converged) {
+      ++result.cutbacks;
+      dt = 0.5 * h;
+      successes = 0;
+      if (dt < m_settings.minTimeStep) {
+        std::string where = "unknown node";
+        if (o.worstNode >= 0) {
+          const int line = model.lineOfNode(o.worstNode);
+          const int local = o.worstNode - model.lines()[line].firstNode;
+          where = fmt::format("line '{}' node {} (arc length {:.2f} m)", model.lines()[line].name, local,
+                              model.lines()[line].arcLength[local]);
+        }
+        result.message = fmt::format(
+            "dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the minimum time step "
+            "{:.3g} s; largest out-of-balance force {:.4g} N at {}",
+            state.time, m_settings.minTimeStep, o.residual, where);
+        break;
+      }
+      continue;
+    }
+    ++result.steps;
+    if (m_hook) m_hook(state, h);
+    if (++successes >= 4 && dt < nominal) {
+      dt = std::min(nominal, 2.0 * dt);
+      successes = 0;
+    }
+    if (state.time >= nextOutput - eps) {
+      if (m_observer) m_observer(state, stepper.lastForce());
+      nextOutput += out;
+    }
+    if (m_progress) {
+      const auto now = Clock::now();
+      if (std::chrono::duration<double>(now - lastPrint).count() > 2.0) {
+        const double wall = std::chrono::duration<double>(now - wallStart).count();
+        std::cerr << fmt::format("  t = {:8.2f} / {:.2f} s ({:3.0f} %), real-time factor {:.1f}\n", state.time,
+                                 duration, 100.0 * state.time / duration, state.time / wall);
+        lastPrint = now;
+      }
+    }
+  }
+  result.endTime = state.time;
+  result.completed = state.time >= duration - eps;
+  result.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
+  if (result.completed) {
+    result.message = fmt::format(
+        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back), {:.2f} s wall time, real-time "
+        "factor {:.1f}",
+        result.endTime, result.steps, result.cutbacks, result.wallSeconds,
+        result.endTime / std::max(result.wallSeconds, 1e-9));
+  }
+  return result;
+}
+
+}  // namespace tangle::time

@@ -1,0 +1,62 @@
+#pragma once
+/// @file DynamicAnalysis.hpp
+/// Time-domain run from the static equilibrium: generalized-alpha steps with automatic step cutting
+/// on Newton failure (halving down to the minimum step, then regrowing), output at a fixed interval
+/// through an observer, a progress line on the terminal, and a clean stop that keeps everything
+/// recorded so far when the run cannot go on.
+
+#include <functional>
+#include <string>
+
+#include "tangle/model/State.hpp"
+#include "tangle/solver/Assembler.hpp"
+#include "tangle/time/GeneralizedAlpha.hpp"
+
+namespace tangle::time {
+
+/// Outcome of a dynamic run.
+struct DynamicResult {
+  bool completed = false;  ///< reached the requested duration
+  double endTime = 0.0;    ///< last time reached [s]
+  int steps = 0;           ///< accepted steps
+  int cutbacks = 0;        ///< step cuts after Newton failures
+  long newtonIterations = 0;
+  double wallSeconds = 0.0;   ///< wall-clock time of the run [s]
+  std::string message;        ///< summary or the reason the run stopped (time, line, node)
+};
+
+/// Drives the time integration.
+class DynamicAnalysis {
+ public:
+  /// Called at t = 0 and at every output time with the state and the out-of-balance force (whose
+  /// values at constrained DOFs are the support reactions).
+  using Observer = std::function<void(const model::State&, const VecX& force)>;
+  /// Returns the largest step [s] allowed from this state (e.g. contact approach), or +inf.
+  using StepLimiter = std::function<double(const model::State&)>;
+  /// Called after each accepted step (path-dependent models commit their state here).
+  using StepHook = std::function<void(const model::State&, double dt)>;
+
+  DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings);
+
+  void setObserver(Observer observer) { m_observer = std::move(observer); }
+  void setStepLimiter(StepLimiter limiter) { m_limiter = std::move(limiter); }
+  void setStepHook(StepHook hook) { m_hook = std::move(hook); }
+  /// Print a progress line (simulated time, real-time factor) to stderr about every 2 s of wall time.
+  void setProgress(bool on) { m_progress = on; }
+
+  /// Runs from `state` (the static equilibrium at t = 0, velocities zero) to the requested duration.
+  DynamicResult run(model::State& state);
+
+ private:
+  solver::Assembler* m_assembler;
+  model::DynamicSpec m_settings;
+  Observer m_observer;
+  StepLimiter m_limiter;
+  StepHook m_hook;
+  bool m_progress = false;
+};
+
+/// The prescribed-motion nodes of a model (held ends with a motion).
+std::vector<PrescribedNode> prescribedNodes(const model::Model& model);
+
+}  // namespace tangle::time

@@ -1,0 +1,171 @@
+#include "tangle/time/GeneralizedAlpha.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tangle::time {
+
+AlphaParameters AlphaParameters::from(model::IntegratorKind kind, double rho) {
+  rho = std::clamp(rho, 0.0, 1.0);
+  AlphaParameters p;
+  switch (kind) {
+    case model::IntegratorKind::GeneralizedAlpha:
+      // Chung & Hulbert (1993), eq. (25) and (17)-(18), in the convention
+      // (1 - am) M a_{n+1} + am M a_n + (1 - af) F_{n+1} + af F_n = 0.
+      p.alphaM = (2.0 * rho - 1.0) / (rho + 1.0);
+      p.alphaF = rho / (rho + 1.0);
+      break;
+    case model::IntegratorKind::Hht:
+      // Hilber, Hughes & Taylor (1977): alpha_HHT = -af in [-1/3, 0].
+      p.alphaM = 0.0;
+      p.alphaF = std::clamp((1.0 - rho) / (1.0 + rho), 0.0, 1.0 / 3.0);
+      break;
+    case model::IntegratorKind::Newmark:
+      p.alphaM = 0.0;
+      p.alphaF = 0.0;
+      break;
+  }
+  // Second-order accuracy and unconditional stability (Chung & Hulbert 1993 eq. 17 and 20).
+  p.gamma = 0.5 - p.alphaM + p.alphaF;
+  p.beta = 0.25 * (1.0 - p.alphaM + p.alphaF) * (1.0 - p.alphaM + p.alphaF);
+  return p;
+}
+
+GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::DynamicSpec& settings,
+                                   std::vector<PrescribedNode> prescribed)
+    : m_assembler(&assembler),
+      m_settings(settings),
+      m_prescribed(std::move(prescribed)),
+      m_params(AlphaParameters::from(settings.integrator, settings.spectralRadius)),
+      m_matrix(assembler.model().dofs()) {
+  const model::DofMap& dofs = assembler.model().dofs();
+  m_prescribedDof.assign(dofs.fullDofCount(), false);
+  for (const PrescribedNode& p : m_prescribed)
+    for (int k = 0; k < 3; ++k) m_prescribedDof[dofs.firstDof(p.node) + k] = true;
+}
+
+void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
+  const model::DofMap& dofs = m_assembler->model().dofs();
+  for (const PrescribedNode& p : m_prescribed) {
+    const MotionValue m = p.motion.at(t);
+    const int d = dofs.firstDof(p.node);
+    state.position[p.node] = p.basePosition + m.displacement;
+    state.velocity.segment<3>(d) = m.velocity;
+    state.acceleration.segment<3>(d) = m.acceleration;
+  }
+}
+
+void GeneralizedAlpha::initialize(model::State& state) {
+  applyPrescribed(state, state.time);
+  solver::AssemblyRequest request;
+  request.time = state.time;
+  request.dynamic = true;
+  request.wantMatrix = false;
+  m_assembler->assemble(state, request, m_forceOld, nullptr);
+}
+
+double GeneralizedAlpha::residualNorm(const VecX& r, int* worstNode) const {
+  const model::Model& model = m_assembler->model();
+  const model::DofMap& dofs = model.dofs();
+  double worst = 0.0;
+  int node = -1;
+  for (int n = 0; n < dofs.nodeCount(); ++n) {
+    const int d = dofs.firstDof(n);
+    const double lref = std::max(model.tributaryLength()[n], 1e-6);
+    for (int k = 0; k < dofs.dofCount(n); ++k) {
+      const int eq = dofs.equation(d + k);
+      if (eq < 0) continue;
+      const double v = std::abs(r[eq]) / (k < 3 ? 1.0 : lref);
+      if (!(v <= worst)) {  // also catches NaN
+        worst = v;
+        node = n;
+      }
+    }
+  }
+  if (worstNode) *worstNode = node;
+  return worst;
+}
+
+StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
+  const model::Model& model = m_assembler->model();
+  const model::DofMap& dofs = model.dofs();
+  const int nfull = dofs.fullDofCount();
+  const int neq = dofs.equationCount();
+  const auto& eqDofs = dofs.equationDofs();
+  const AlphaParameters& p = m_params;
+  const double t1 = state.time + dt;
+  const double rayleighAlpha = m_settings.rayleighAlpha;
+
+  const model::State start = state;
+  const VecX& v0 = start.velocity;
+  const VecX& a0 = start.acceleration;
+
+  // Increment over the step per full DOF; predictor: constant acceleration.
+  VecX dq = dt * v0 + 0.5 * dt * dt * a0;
+  // Prescribed DOFs follow their motion exactly.
+  model::State target = start;
+  applyPrescribed(target, t1);
+  for (const PrescribedNode& pn : m_prescribed) {
+    const int d = dofs.firstDof(pn.node);
+    dq.segment<3>(d) = target.position[pn.node] - start.position[pn.node];
+  }
+  // Other constrained DOFs stay where they are.
+  for (int dof = 0; dof < nfull; ++dof)
+    if (dofs.equation(dof) < 0 && !m_prescribedDof[dof]) dq[dof] = 0.0;
+
+  const double mf = (1.0 - p.alphaM) / (p.beta * dt * dt) + rayleighAlpha * (1.0 - p.alphaF) * p.gamma / (p.beta * dt);
+  solver::AssemblyRequest request;
+  request.time = t1;
+  request.dynamic = true;
+  request.kf = 1.0 - p.alphaF;
+  request.cf = (1.0 - p.alphaF) * p.gamma / (p.beta * dt);
+  const double fref = m_assembler->referenceForce();
+
+  StepOutcome outcome;
+  VecX combo(nfull), inertia(nfull), r(neq);
+  for (int it = 0; it < m_settings.maxIterations; ++it) {
+    outcome.iterations = it + 1;
+    state = start;
+    state.time = t1;
+    state.applyIncrement(dofs, dq);
+    // Newmark relations for the free DOFs (and any unprescribed constrained DOF: zero motion).
+    state.acceleration = (dq - dt * v0 - dt * dt * (0.5 - p.beta) * a0) / (p.beta * dt * dt);
+    state.velocity = v0 + dt * ((1.0 - p.gamma) * a0 + p.gamma * state.acceleration);
+    for (int dof = 0; dof < nfull; ++dof) {
+      if (dofs.equation(dof) < 0) {
+        state.velocity[dof] = 0.0;
+        state.acceleration[dof] = 0.0;
+      }
+    }
+    applyPrescribed(state, t1);
+
+    m_assembler->assemble(state, request, m_force, &m_matrix);
+    // Every mass term is M times one combination of accelerations and velocities.
+    combo = (1.0 - p.alphaM) * state.acceleration + p.alphaM * a0;
+    if (rayleighAlpha > 0.0) combo += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity + p.alphaF * v0);
+    inertia.setZero();
+    m_assembler->addMass(state, mf, &m_matrix, &combo, &inertia);
+    for (int i = 0; i < neq; ++i) {
+      const int dof = eqDofs[i];
+      r[i] = inertia[dof] + (1.0 - p.alphaF) * m_force[dof] + p.alphaF * m_forceOld[dof];
+    }
+    outcome.residual = residualNorm(r, &outcome.worstNode);
+    if (!std::isfinite(outcome.residual)) break;
+    if (outcome.residual <= m_settings.tolerance * fref) {
+      outcome.converged = true;
+      break;
+    }
+    m_matrix.build(m_k);
+    if (!m_solver.factorize(m_k)) break;
+    const VecX delta = m_solver.solve(-r);
+    for (int i = 0; i < neq; ++i) dq[eqDofs[i]] += delta[i];
+  }
+  if (!outcome.converged) {
+    state = start;
+    return outcome;
+  }
+  m_forceOld = m_force;
+  return outcome;
+}
+
+}  // namespace tangle::time

@@ -1,0 +1,322 @@
+#!/usr/bin/python3
+"""Tests of python/tangle_plot.py. Run with Debian's Python:
+
+    /usr/bin/python3 tests/python/test_tangle_plot.py
+
+Fabricates a small `tangle run` results directory in a temporary folder, makes the plots and checks
+every PNG. Prints nothing unless a test fails; exits non-zero on failure.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import math
+import sys
+import tempfile
+import traceback
+import warnings
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "python"))
+
+import numpy as np  # noqa: E402
+
+import tangle_plot  # noqa: E402
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+MIN_PNG_BYTES = 10_000  # a real plot with axes, ticks and curves is well above this
+
+LINES = ("riser-1", "mooring_2")
+WATER_DEPTH = 100.0
+
+
+def write_csv(path: Path, header: list[str], rows) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    with path.open("w", encoding="utf-8") as f:
+        f.write(",".join(header) + "\n")
+        for row in rows:
+            f.write(",".join(v if isinstance(v, str) else f"{v:.6e}" for v in row) + "\n")
+
+
+def catenary(n: int, heading_deg: float):
+    """A hanging line from (0, 0, -WATER_DEPTH) to about 300 m away at z = -10, with its plane
+    rotated by `heading_deg` about z, plus a part lying on the seabed."""
+    s = np.linspace(0.0, 400.0, n)
+    a = 150.0
+    h = np.where(s < 100.0, s, 100.0 + a * np.arcsinh((s - 100.0) / a))
+    z = np.where(s < 100.0, -WATER_DEPTH, -WATER_DEPTH + a * (np.sqrt(1.0 + ((s - 100.0) / a) ** 2) - 1.0))
+    c, sn = math.cos(math.radians(heading_deg)), math.sin(math.radians(heading_deg))
+    return s, 50.0 + c * h, -20.0 + sn * h, z, h
+
+
+def make_results(root: Path) -> None:
+    """Writes every result file tangle_plot knows, in the exact formats of the C++ writers."""
+    root.mkdir(parents=True, exist_ok=True)
+    (root / "summary.json").write_text(
+        json.dumps({"title": "test", "environment": {"water_depth_m": WATER_DEPTH}, "lines": []}), encoding="utf-8"
+    )
+    for k, line in enumerate(LINES):
+        s, x, y, z, _ = catenary(41, 30.0 * k)
+        tension = 1.0e5 + 2.0e3 * (z + WATER_DEPTH)
+        moment = 1.0e3 * np.exp(-(((s - 100.0) / 20.0) ** 2))
+        curvature = moment / 1.0e7
+        write_csv(
+            root / "statics" / f"{line}.csv",
+            [
+                "arc_length_m",
+                "x_m",
+                "y_m",
+                "z_m",
+                "effective_tension_N",
+                "bending_moment_Nm",
+                "curvature_1_per_m",
+            ],
+            zip(s, x, y, z, tension, moment, curvature),
+        )
+        rows = []
+        for i in range(len(s)):
+            rows.append(
+                (
+                    s[i],
+                    0.8 * tension[i],
+                    1.3 * tension[i],
+                    tension[i],
+                    0.5 * moment[i],
+                    2.0 * moment[i],
+                    moment[i],
+                    0.5 * curvature[i],
+                    2.0 * curvature[i],
+                    curvature[i],
+                )
+            )
+        write_csv(
+            root / "dynamics" / line / "range.csv",
+            [
+                "arc_length_m",
+                "tension_min_N",
+                "tension_max_N",
+                "tension_mean_N",
+                "bending_moment_min_Nm",
+                "bending_moment_max_Nm",
+                "bending_moment_mean_Nm",
+                "curvature_min_1_per_m",
+                "curvature_max_1_per_m",
+                "curvature_mean_1_per_m",
+            ],
+            rows,
+        )
+    t = np.linspace(0.0, 60.0, 301)
+    header = ["time_s"]
+    columns = [t]
+    for k, line in enumerate(LINES):
+        for end, phase in (("a", 0.0), ("b", 1.0)):
+            header.append(f"{line}_end_{end}_tension_N")
+            columns.append(1.0e5 * (1.0 + k) + 2.0e4 * np.sin(2.0 * math.pi * t / 12.0 + phase))
+    write_csv(root / "dynamics" / "end_forces.csv", header, zip(*columns))
+
+    write_csv(
+        root / "contact" / "events.csv",
+        [
+            "event",
+            "start_time_s",
+            "end_time_s",
+            "line_1",
+            "line_2",
+            "arc_1_start_m",
+            "arc_2_start_m",
+            "peak_force_N",
+            "impulse_Ns",
+            "impact_velocity_m_per_s",
+            "impact_energy_J",
+        ],
+        [
+            ("1", 3.0, 3.4, LINES[0], LINES[1], 120.0, 80.0, 2.0e4, 3.0e3, 0.8, 150.0),
+            ("2", 15.1, 15.3, LINES[0], LINES[1], 121.0, 81.0, 3.5e4, 4.0e3, 1.1, 420.0),
+            ("3", 27.0, 27.9, LINES[1], "umbilical", 60.0, 10.0, 1.0e4, 2.0e3, 0.4, 35.0),
+        ],
+    )
+    rows = []
+    for pair, offset in ((f"{LINES[0]}/{LINES[1]}", 0.4), (f"{LINES[1]}/umbilical", 1.5)):
+        for ti in t[::5]:
+            rows.append((f"{ti:.6e}", pair, offset + math.cos(2.0 * math.pi * ti / 12.0), 120.0, 80.0))
+    write_csv(root / "contact" / "clearance.csv", ["time_s", "pair", "min_clearance_m", "arc_1_m", "arc_2_m"], rows)
+
+
+EXPECTED_PNGS = [f"statics_{line}.png" for line in LINES] + [f"range_{line}.png" for line in LINES] + [
+    "end_tensions.png",
+    "clash_events.png",
+    "clearance.png",
+]
+
+
+def assert_png(path: Path) -> None:
+    assert path.is_file(), f"missing {path}"
+    data = path.read_bytes()
+    assert data[:8] == PNG_MAGIC, f"{path} is not a PNG"
+    assert len(data) > MIN_PNG_BYTES, f"{path} is only {len(data)} bytes"
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def test_all_plots_from_a_full_results_directory(tmp: Path) -> None:
+    results = tmp / "run"
+    make_results(results)
+    errors: list = []
+    written = tangle_plot.plot_results(results, errors=errors)
+    assert not errors, f"unexpected errors: {errors}"
+    assert sorted(p.name for p in written) == sorted(EXPECTED_PNGS), written
+    for name in EXPECTED_PNGS:
+        assert_png(results / "plots" / name)
+
+
+def test_main_writes_to_out_dir_and_returns_zero(tmp: Path) -> None:
+    results = tmp / "run"
+    make_results(results)
+    out = tmp / "elsewhere" / "figs"
+    stdout, stderr = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+        status = tangle_plot.main([str(results), "--out", str(out)])
+    assert status == 0, f"status {status}, stderr: {stderr.getvalue()}"
+    assert stderr.getvalue() == "", stderr.getvalue()
+    for name in EXPECTED_PNGS:
+        assert_png(out / name)
+        assert str(out / name) in stdout.getvalue().splitlines()
+    assert not (results / "plots").exists()
+
+
+def test_missing_parts_are_skipped_silently(tmp: Path) -> None:
+    results = tmp / "run"
+    make_results(results)
+    for sub in ("dynamics", "contact"):
+        for p in sorted((results / sub).rglob("*"), reverse=True):
+            p.unlink() if p.is_file() else p.rmdir()
+        (results / sub).rmdir()
+    (results / "summary.json").unlink()
+    errors: list = []
+    written = tangle_plot.plot_results(results, errors=errors)
+    assert not errors, errors
+    assert sorted(p.name for p in written) == sorted(f"statics_{line}.png" for line in LINES)
+
+    empty = tmp / "empty"
+    empty.mkdir()
+    assert tangle_plot.plot_results(empty, errors=errors) == [] and not errors
+
+
+def test_bad_file_is_reported_and_others_still_plotted(tmp: Path) -> None:
+    results = tmp / "run"
+    make_results(results)
+    (results / "contact" / "clearance.csv").write_text("time_s,pair\n0.0,a/b\n", encoding="utf-8")
+    errors: list = []
+    written = tangle_plot.plot_results(results, errors=errors)
+    assert len(errors) == 1 and errors[0][0].name == "clearance.csv", errors
+    assert "min_clearance_m" in str(errors[0][1])
+    assert len(written) == len(EXPECTED_PNGS) - 1
+    stderr = io.StringIO()
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(stderr):
+        assert tangle_plot.main([str(results)]) == 1
+    assert "clearance.csv" in stderr.getvalue()
+    try:
+        tangle_plot.plot_results(results)
+    except RuntimeError as exc:
+        assert "clearance.csv" in str(exc)
+    else:
+        raise AssertionError("plot_results without an error list should raise")
+
+
+def test_empty_event_and_clearance_files_still_give_a_plot(tmp: Path) -> None:
+    write_csv(tmp / "events.csv", ["start_time_s", "end_time_s", "line_1", "line_2", "peak_force_N", "impact_energy_J"], [])
+    write_csv(tmp / "clearance.csv", ["time_s", "pair", "min_clearance_m", "arc_1_m", "arc_2_m"], [])
+    # A "no events" / "no data" message only: a valid but small PNG.
+    assert tangle_plot.plot_clash_events(tmp / "events.csv", tmp / "e.png") == tmp / "e.png"
+    assert tangle_plot.plot_clearance(tmp / "clearance.csv", tmp / "c.png") == tmp / "c.png"
+    for name in ("e.png", "c.png"):
+        data = (tmp / name).read_bytes()
+        assert data[:8] == PNG_MAGIC and len(data) > 1000, name
+
+
+def test_water_depth_is_found_anywhere_in_the_summary(tmp: Path) -> None:
+    assert tangle_plot.water_depth({"water_depth_m": 250}) == 250.0
+    assert tangle_plot.water_depth({"a": [{"b": {"water_depth_m": 1200.5}}]}) == 1200.5
+    assert tangle_plot.water_depth({"lines": []}) is None
+    assert tangle_plot.water_depth({"water_depth_m": None}) is None
+    assert tangle_plot.water_depth({"water_depth_m": True}) is None
+    make_results(tmp)
+    assert tangle_plot.water_depth(tangle_plot.read_summary(tmp)) == WATER_DEPTH
+    assert tangle_plot.read_summary(tmp / "nowhere") == {}
+
+
+def test_horizontal_distance_is_measured_in_the_line_plane(tmp: Path) -> None:
+    _, x, y, _, h = catenary(21, 37.0)
+    assert np.allclose(tangle_plot.horizontal_distance(x, y), h, atol=1e-9)
+    # Reversed line: still grows from its first node.
+    assert np.allclose(tangle_plot.horizontal_distance(x[::-1], y[::-1]), h[-1] - h[::-1], atol=1e-9)
+    # Vertical line.
+    assert np.all(tangle_plot.horizontal_distance(np.ones(4), np.ones(4)) == 0.0)
+
+
+def test_read_csv_types_and_errors(tmp: Path) -> None:
+    p = tmp / "t.csv"
+    p.write_text("time_s,pair,value\n0.5,a/b,1.5\n1.0,c/d,\n\n", encoding="utf-8")
+    t = tangle_plot.read_csv(p)
+    assert t["time_s"].dtype == float and list(t["time_s"]) == [0.5, 1.0]
+    assert list(t["pair"]) == ["a/b", "c/d"]
+    assert t["value"][0] == 1.5 and math.isnan(t["value"][1])
+    p.write_text("line_1,line_2\n1,2\n", encoding="utf-8")
+    t = tangle_plot.read_csv(p, text=("line_1",))
+    assert list(t["line_1"]) == ["1"] and list(t["line_2"]) == [2.0]
+    p.write_text("a,b\n1,2,3\n", encoding="utf-8")
+    try:
+        tangle_plot.read_csv(p)
+    except ValueError as exc:
+        assert "t.csv:2" in str(exc), exc
+    else:
+        raise AssertionError("row of wrong length accepted")
+
+
+def test_figures_have_the_expected_subplots(tmp: Path) -> None:
+    make_results(tmp)
+    fig = tangle_plot.statics_figure(tangle_plot.read_csv(tmp / "statics" / f"{LINES[0]}.csv"), LINES[0], WATER_DEPTH)
+    assert len(fig.axes) == 3
+    profile = fig.axes[0]
+    seabed = [ln for ln in profile.get_lines() if ln.get_label().startswith("seabed")]
+    assert len(seabed) == 1 and np.allclose(seabed[0].get_ydata(), -WATER_DEPTH)
+    fig = tangle_plot.statics_figure(tangle_plot.read_csv(tmp / "statics" / f"{LINES[0]}.csv"), LINES[0], None)
+    assert not [ln for ln in fig.axes[0].get_lines() if ln.get_label().startswith("seabed")]
+    fig = tangle_plot.range_figure(tangle_plot.read_csv(tmp / "dynamics" / LINES[1] / "range.csv"), LINES[1])
+    assert len(fig.axes) == 3 and all(ax.collections for ax in fig.axes)  # shaded min-max band
+    fig = tangle_plot.end_tensions_figure(tangle_plot.read_csv(tmp / "dynamics" / "end_forces.csv"))
+    labels = [ln.get_label() for ln in fig.axes[0].get_lines()]
+    assert labels == ["riser-1 end A", "riser-1 end B", "mooring_2 end A", "mooring_2 end B"], labels
+    fig = tangle_plot.clash_events_figure(tangle_plot.read_csv(tmp / "contact" / "events.csv"))
+    assert len(fig.axes) == 2
+    fig = tangle_plot.clearance_figure(tangle_plot.read_csv(tmp / "contact" / "clearance.csv"))
+    assert len([ln for ln in fig.axes[0].get_lines() if not ln.get_label().startswith("_")]) == 2
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def main() -> int:
+    tests = [(name, fn) for name, fn in globals().items() if name.startswith("test_") and callable(fn)]
+    failed = 0
+    for name, fn in tests:
+        with tempfile.TemporaryDirectory(prefix="tangle_plot_test_") as tmp, warnings.catch_warnings():
+            warnings.simplefilter("error")  # a matplotlib warning (e.g. empty legend) is a failure
+            warnings.simplefilter("ignore", DeprecationWarning)
+            warnings.simplefilter("ignore", PendingDeprecationWarning)
+            try:
+                fn(Path(tmp))
+            except Exception:  # noqa: BLE001 - report every failing test
+                failed += 1
+                print(f"FAIL {name}", file=sys.stderr)
+                traceback.print_exc()
+    if failed:
+        print(f"{failed} of {len(tests)} tests failed", file=sys.stderr)
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,926 @@
+/// @file ModelReaderTest.cpp
+/// Tests of io::ModelReader: a complete model read back field by field, defaults, and one test per
+/// kind of bad input checking the exception type, the file, the 1-based line and the key path.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "TestPaths.hpp"
+#include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+#include "tangle/io/ModelReader.hpp"
+
+namespace tangle::io {
+namespace {
+
+using model::EndKind;
+using model::IntegratorKind;
+using model::ModelSpec;
+using model::WaveKind;
+
+constexpr const char* kSource = "bad-model.yaml";
+
+/// A small valid model; bad-input tests edit one line of it. Every marker text used below is unique.
+const std::string kBaseModel = R"(title: Base test model
+environment:
+  water_depth: 100
+  water_density: 1025
+  seabed:
+    normal_stiffness: 2.0e5
+    friction_coefficient: 0.5
+  current:
+    - {z: 0, speed: 1.0, azimuth: 90}
+    - {z: -100, speed: 0.2, azimuth: 90}
+  waves:
+    type: airy
+    height: 2.0
+    period: 10.0
+    azimuth: 45
+line_types:
+  - name: chain
+    outer_diameter: 0.1368
+    mass_per_length: 115.5
+    axial_stiffness: 5.8e8
+  - name: pipe
+    outer_diameter: 0.3
+    mass_per_length: 100
+    axial_stiffness: 2.0e9
+    bending_stiffness: 1.0e7
+lines:
+  - name: moor
+    contact: true
+    end_a:
+      type: anchored
+      position: [400, 0, -100]
+    end_b:
+      type: fixed
+      position: [20, 0, -10]
+      motion:
+        amplitude: [5, 0, 0]
+        period: 10
+    sections:
+      - type: chain
+        length: 200
+        elements: 20
+      - type: pipe
+        length: 300
+        elements: 30
+    attachments:
+      - arc_length: 250
+        mass: 1000
+        volume: 2
+statics:
+  max_iterations: 100
+  tolerance: 1.0e-6
+dynamics:
+  duration: 100
+  time_step: 0.01
+  output_interval: 0.1
+  spectral_radius: 0.7
+output:
+  vtk: true
+  plots: false
+)";
+
+/// 1-based line of the first occurrence of `marker` in `text` (0 if absent).
+int lineOf(const std::string& text, const std::string& marker) {
+  const std::size_t pos = text.find(marker);
+  if (pos == std::string::npos) return 0;
+  int line = 1;
+  for (std::size_t i = 0; i < pos; ++i)
+    if (text[i] == '\n') ++line;
+  return line;
+}
+
+/// `text` with the first occurrence of `from` replaced by `to` (the test fails if `from` is absent).
+std::string edited(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << "edit target not found: " << from;
+  if (pos != std::string::npos) text.replace(pos, from.size(), to);
+  return text;
+}
+
+/// Reads `yaml` expecting an InputError at the line holding `marker`, with key path `key` and a message
+/// containing `fragment`; also checks that the message names the file, the line and the key.
+void expectInputError(const std::string& yaml, const std::string& marker, const std::string& key,
+                      const std::string& fragment) {
+  const int expectedLine = lineOf(yaml, marker);
+  ASSERT_GT(expectedLine, 0) << "marker not found: " << marker;
+  try {
+    readModelString(yaml, kSource);
+    FAIL() << "no InputError for key " << key;
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.file(), kSource) << what;
+    EXPECT_EQ(e.line(), expectedLine) << what;
+    EXPECT_EQ(e.key(), key) << what;
+    EXPECT_NE(what.find(std::string(kSource) + ":" + std::to_string(expectedLine) + ":"), std::string::npos)
+        << what;
+    if (!key.empty()) {
+      EXPECT_NE(what.find("key '" + key + "'"), std::string::npos) << what;
+    }
+    EXPECT_NE(what.find(fragment), std::string::npos) << "message lacks '" << fragment << "': " << what;
+  }
+}
+
+/// Edits the base model (replacing `from` by `to`) and expects an InputError at the line of `marker`.
+void expectEditError(const std::string& from, const std::string& to, const std::string& marker,
+                     const std::string& key, const std::string& fragment) {
+  expectInputError(edited(kBaseModel, from, to), marker, key, fragment);
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Valid input
+
+TEST(ModelReader, BaseModelIsValid) { EXPECT_NO_THROW(readModelString(kBaseModel, kSource)); }
+
+TEST(ModelReader, ReadsEveryFieldOfAFullModel) {
+  const std::string yaml = R"(title: Full model
+environment:
+  water_depth: 345
+  water_density: 1030
+  gravity: 9.81
+  seabed:
+    normal_stiffness: 3.0e5
+    damping: 100
+    friction_coefficient: 0.6
+    friction_velocity: 0.02
+  current:
+    - {z: 0, speed: 1.0, azimuth: 225}
+    - {z: -345, speed: 0.2, azimuth: 180}
+  waves:
+    type: airy
+    height: 2.5
+    period: 11
+    phase: 30
+    azimuth: 25
+line_types:
+  - name: chain76
+    outer_diameter: 0.1368
+    buoyancy_diameter: 0.13
+    contact_diameter: 0.25
+    mass_per_length: 115.5
+    axial_stiffness: 5.8e8
+    bending_stiffness: 10
+    torsional_stiffness: 20
+    drag_normal: 2.4
+    drag_axial: 1.15
+    added_mass_normal: 0.9
+    added_mass_axial: 0.5
+    axial_damping: 1000
+lines:
+  - name: mooring1
+    contact: false
+    end_a: {type: anchored, position: [1000, 0, -345]}
+    end_b:
+      type: pinned
+      position: [20, 0, -10]
+      motion: {amplitude: [5, 1, -2], period: 12, phase: 90}
+    sections:
+      - {type: chain76, length: 250, elements: 50}
+      - {type: chain76, length: 880, elements: 150}
+    attachments:
+      - {arc_length: 335, mass: 1.0e5, volume: 30, drag_area: 10, added_mass: 2.0e4}
+  - name: riser
+    end_a: {type: fixed, position: [0, 50, -345]}
+    end_b: {type: free, position: [0, 50, -45]}
+    sections:
+      - {type: chain76, length: 300, elements: 30}
+  - name: hose
+    end_a: {type: vessel, vessel: fpso, position: [10, 0, -5]}
+    end_b:
+      type: fixed
+      position: [60, 0, -200]
+      motion:
+        table: [[0, 0, 0, 0], [1, 0.1, 0.2, 0.3], [2.5, 0, 0, 0]]
+    sections:
+      - {type: chain76, length: 250, elements: 25}
+statics:
+  max_iterations: 50
+  tolerance: 1.0e-5
+  displacement_tolerance: 1.0e-8
+dynamics:
+  duration: 200
+  time_step: 0.02
+  min_time_step: 1.0e-4
+  ramp_time: 8
+  output_interval: 0.5
+  integrator: newmark
+  spectral_radius: 0.6
+  mass: consistent
+  rayleigh: {alpha: 0.01, beta: 0.002}
+  max_iterations: 15
+  tolerance: 1.0e-7
+output:
+  vtk: false
+  plots: false
+)";
+  const ModelSpec spec = readModelString(yaml, "full.yaml");
+  EXPECT_EQ(spec.sourceFile, "full.yaml");
+  EXPECT_EQ(spec.title, "Full model");
+
+  const model::EnvironmentSpec& env = spec.environment;
+  EXPECT_DOUBLE_EQ(env.waterDepth, 345.0);
+  EXPECT_DOUBLE_EQ(env.waterDensity, 1030.0);
+  EXPECT_DOUBLE_EQ(env.gravity, 9.81);
+  EXPECT_DOUBLE_EQ(env.seabed.normalStiffness, 3.0e5);
+  EXPECT_DOUBLE_EQ(env.seabed.damping, 100.0);
+  EXPECT_DOUBLE_EQ(env.seabed.frictionCoefficient, 0.6);
+  EXPECT_DOUBLE_EQ(env.seabed.frictionVelocity, 0.02);
+  ASSERT_EQ(env.current.size(), 2u);
+  EXPECT_DOUBLE_EQ(env.current[0].z, 0.0);
+  EXPECT_DOUBLE_EQ(env.current[0].speed, 1.0);
+  EXPECT_DOUBLE_EQ(env.current[0].azimuth, degToRad(225.0));
+  EXPECT_DOUBLE_EQ(env.current[1].z, -345.0);
+  EXPECT_DOUBLE_EQ(env.current[1].speed, 0.2);
+  EXPECT_DOUBLE_EQ(env.current[1].azimuth, degToRad(180.0));
+  EXPECT_EQ(env.waves.kind, WaveKind::Airy);
+  EXPECT_DOUBLE_EQ(env.waves.height, 2.5);
+  EXPECT_DOUBLE_EQ(env.waves.period, 11.0);
+  EXPECT_DOUBLE_EQ(env.waves.phase, degToRad(30.0));
+  EXPECT_DOUBLE_EQ(env.waves.azimuth, degToRad(25.0));
+
+  ASSERT_EQ(spec.lineTypes.size(), 1u);
+  const section::LineType& t = spec.lineTypes.at("chain76");
+  EXPECT_EQ(t.name, "chain76");
+  EXPECT_DOUBLE_EQ(t.outerDiameter, 0.1368);
+  EXPECT_DOUBLE_EQ(t.buoyancyDiameter, 0.13);
+  EXPECT_DOUBLE_EQ(t.contactDiameter, 0.25);
+  EXPECT_DOUBLE_EQ(t.massPerLength, 115.5);
+  EXPECT_DOUBLE_EQ(t.axialStiffness, 5.8e8);
+  EXPECT_DOUBLE_EQ(t.bendingStiffness, 10.0);
+  EXPECT_DOUBLE_EQ(t.torsionalStiffness, 20.0);
+  EXPECT_DOUBLE_EQ(t.dragNormal, 2.4);
+  EXPECT_DOUBLE_EQ(t.dragAxial, 1.15);
+  EXPECT_DOUBLE_EQ(t.addedMassNormal, 0.9);
+  EXPECT_DOUBLE_EQ(t.addedMassAxial, 0.5);
+  EXPECT_DOUBLE_EQ(t.axialDamping, 1000.0);
+
+  ASSERT_EQ(spec.lines.size(), 3u);
+  const model::LineSpec& l = spec.lines[0];
+  EXPECT_EQ(l.name, "mooring1");
+  EXPECT_FALSE(l.contact);
+  EXPECT_EQ(l.endA.kind, EndKind::Anchored);
+  EXPECT_EQ(l.endA.position, Vec3(1000.0, 0.0, -345.0));
+  EXPECT_FALSE(l.endA.motion.enabled);
+  EXPECT_EQ(l.endA.sourceLine, lineOf(yaml, "end_a: {type: anchored"));
+  EXPECT_EQ(l.endB.kind, EndKind::Pinned);
+  EXPECT_EQ(l.endB.position, Vec3(20.0, 0.0, -10.0));
+  EXPECT_EQ(l.endB.sourceLine, lineOf(yaml, "end_b:\n      type: pinned"));
+  EXPECT_TRUE(l.endB.motion.enabled);
+  EXPECT_EQ(l.endB.motion.amplitude, Vec3(5.0, 1.0, -2.0));
+  EXPECT_DOUBLE_EQ(l.endB.motion.period, 12.0);
+  EXPECT_DOUBLE_EQ(l.endB.motion.phase, degToRad(90.0));
+  EXPECT_TRUE(l.endB.motion.table.empty());
+  ASSERT_EQ(l.sections.size(), 2u);
+  EXPECT_EQ(l.sections[0].lineType, "chain76");
+  EXPECT_DOUBLE_EQ(l.sections[0].length, 250.0);
+  EXPECT_EQ(l.sections[0].elements, 50);
+  EXPECT_DOUBLE_EQ(l.sections[1].length, 880.0);
+  EXPECT_EQ(l.sections[1].elements, 150);
+  ASSERT_EQ(l.attachments.size(), 1u);
+  EXPECT_DOUBLE_EQ(l.attachments[0].arcLength, 335.0);
+  EXPECT_DOUBLE_EQ(l.attachments[0].mass, 1.0e5);
+  EXPECT_DOUBLE_EQ(l.attachments[0].volume, 30.0);
+  EXPECT_DOUBLE_EQ(l.attachments[0].dragArea, 10.0);
+  EXPECT_DOUBLE_EQ(l.attachments[0].addedMass, 2.0e4);
+
+  const model::LineSpec& riser = spec.lines[1];
+  EXPECT_TRUE(riser.contact);  // default
+  EXPECT_EQ(riser.endA.kind, EndKind::Fixed);
+  EXPECT_EQ(riser.endB.kind, EndKind::Free);
+  EXPECT_TRUE(riser.attachments.empty());
+
+  const model::LineSpec& hose = spec.lines[2];
+  EXPECT_EQ(hose.endA.kind, EndKind::Vessel);
+  EXPECT_EQ(hose.endA.vessel, "fpso");
+  EXPECT_EQ(hose.endA.position, Vec3(10.0, 0.0, -5.0));
+  EXPECT_TRUE(hose.endB.motion.enabled);
+  ASSERT_EQ(hose.endB.motion.table.size(), 3u);
+  EXPECT_DOUBLE_EQ(hose.endB.motion.table[1][0], 1.0);
+  EXPECT_DOUBLE_EQ(hose.endB.motion.table[1][1], 0.1);
+  EXPECT_DOUBLE_EQ(hose.endB.motion.table[1][2], 0.2);
+  EXPECT_DOUBLE_EQ(hose.endB.motion.table[1][3], 0.3);
+  EXPECT_DOUBLE_EQ(hose.endB.motion.table[2][0], 2.5);
+
+  EXPECT_EQ(spec.statics.maxIterations, 50);
+  EXPECT_DOUBLE_EQ(spec.statics.tolerance, 1.0e-5);
+  EXPECT_DOUBLE_EQ(spec.statics.displacementTolerance, 1.0e-8);
+
+  const model::DynamicSpec& dyn = spec.dynamics;
+  EXPECT_TRUE(dyn.enabled);
+  EXPECT_DOUBLE_EQ(dyn.duration, 200.0);
+  EXPECT_DOUBLE_EQ(dyn.timeStep, 0.02);
+  EXPECT_DOUBLE_EQ(dyn.minTimeStep, 1.0e-4);
+  EXPECT_DOUBLE_EQ(dyn.rampTime, 8.0);
+  EXPECT_DOUBLE_EQ(dyn.outputInterval, 0.5);
+  EXPECT_EQ(dyn.integrator, IntegratorKind::Newmark);
+  EXPECT_DOUBLE_EQ(dyn.spectralRadius, 0.6);
+  EXPECT_FALSE(dyn.lumpedMass);
+  EXPECT_DOUBLE_EQ(dyn.rayleighAlpha, 0.01);
+  EXPECT_DOUBLE_EQ(dyn.rayleighBeta, 0.002);
+  EXPECT_EQ(dyn.maxIterations, 15);
+  EXPECT_DOUBLE_EQ(dyn.tolerance, 1.0e-7);
+
+  EXPECT_FALSE(spec.output.vtk);
+  EXPECT_FALSE(spec.output.plots);
+}
+
+TEST(ModelReader, AppliesDefaults) {
+  const std::string yaml = R"(environment:
+  water_depth: 50
+line_types:
+  - {name: wire, outer_diameter: 0.05, mass_per_length: 10, axial_stiffness: 1.0e8}
+lines:
+  - name: l1
+    end_a: {type: anchored, position: [90, 0, -50]}
+    end_b: {type: fixed, position: [0, 0, 0]}
+    sections:
+      - {type: wire, length: 110, elements: 10}
+)";
+  const ModelSpec spec = readModelString(yaml, "minimal.yaml");
+  const model::EnvironmentSpec& env = spec.environment;
+  const model::EnvironmentSpec envDefault;
+  EXPECT_EQ(spec.title, "");
+  EXPECT_DOUBLE_EQ(env.waterDensity, envDefault.waterDensity);
+  EXPECT_DOUBLE_EQ(env.gravity, kStandardGravity);
+  EXPECT_DOUBLE_EQ(env.seabed.normalStiffness, 1.0e5);
+  EXPECT_DOUBLE_EQ(env.seabed.damping, 0.0);
+  EXPECT_DOUBLE_EQ(env.seabed.frictionCoefficient, 0.0);
+  EXPECT_DOUBLE_EQ(env.seabed.frictionVelocity, 0.01);
+  EXPECT_TRUE(env.current.empty());
+  EXPECT_EQ(env.waves.kind, WaveKind::None);
+
+  const section::LineType& t = spec.lineTypes.at("wire");
+  EXPECT_DOUBLE_EQ(t.buoyancyDiameter, 0.05);  // = outer_diameter
+  EXPECT_DOUBLE_EQ(t.contactDiameter, 0.05);   // = outer_diameter
+  EXPECT_DOUBLE_EQ(t.bendingStiffness, 0.0);
+  EXPECT_DOUBLE_EQ(t.torsionalStiffness, 0.0);
+  EXPECT_DOUBLE_EQ(t.dragNormal, 1.2);
+  EXPECT_DOUBLE_EQ(t.dragAxial, 0.008);
+  EXPECT_DOUBLE_EQ(t.addedMassNormal, 1.0);
+  EXPECT_DOUBLE_EQ(t.addedMassAxial, 0.0);
+  EXPECT_DOUBLE_EQ(t.axialDamping, 0.0);
+
+  ASSERT_EQ(spec.lines.size(), 1u);
+  EXPECT_TRUE(spec.lines[0].contact);
+  EXPECT_TRUE(spec.lines[0].attachments.empty());
+
+  EXPECT_EQ(spec.statics.maxIterations, 400);
+  EXPECT_DOUBLE_EQ(spec.statics.tolerance, 1.0e-6);
+  EXPECT_DOUBLE_EQ(spec.statics.displacementTolerance, 1.0e-7);
+  EXPECT_FALSE(spec.dynamics.enabled);
+  EXPECT_TRUE(spec.output.vtk);
+  EXPECT_TRUE(spec.output.plots);
+}
+
+TEST(ModelReader, ReadsUniformCurrentGivenAsOneMap) {
+  const std::string yaml = edited(kBaseModel,
+                                  "  current:\n    - {z: 0, speed: 1.0, azimuth: 90}\n"
+                                  "    - {z: -100, speed: 0.2, azimuth: 90}\n",
+                                  "  current: {speed: 0.5, azimuth: 30}\n");
+  const ModelSpec spec = readModelString(yaml, kSource);
+  ASSERT_EQ(spec.environment.current.size(), 1u);
+  EXPECT_DOUBLE_EQ(spec.environment.current[0].z, 0.0);
+  EXPECT_DOUBLE_EQ(spec.environment.current[0].speed, 0.5);
+  EXPECT_DOUBLE_EQ(spec.environment.current[0].azimuth, degToRad(30.0));
+}
+
+TEST(ModelReader, ReadsJonswapWaves) {
+  const std::string yaml = edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
+                                  "    type: JONSWAP\n    significant_height: 4.0\n    peak_period: 9\n"
+                                  "    gamma: 2.0\n    components: 64\n    seed: 42\n");
+  const model::WaveSpec w = readModelString(yaml, kSource).environment.waves;
+  EXPECT_EQ(w.kind, WaveKind::Jonswap);  // type names are case-insensitive
+  EXPECT_DOUBLE_EQ(w.significantHeight, 4.0);
+  EXPECT_DOUBLE_EQ(w.peakPeriod, 9.0);
+  EXPECT_DOUBLE_EQ(w.gamma, 2.0);
+  EXPECT_EQ(w.components, 64);
+  EXPECT_EQ(w.seed, 42u);
+  EXPECT_DOUBLE_EQ(w.azimuth, degToRad(45.0));
+}
+
+TEST(ModelReader, JonswapDefaults) {
+  const std::string yaml = edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
+                                  "    type: jonswap\n    significant_height: 4.0\n    peak_period: 9\n");
+  const model::WaveSpec w = readModelString(yaml, kSource).environment.waves;
+  EXPECT_DOUBLE_EQ(w.gamma, 3.3);
+  EXPECT_EQ(w.components, 100);
+  EXPECT_EQ(w.seed, 1u);
+}
+
+TEST(ModelReader, WaveTypeNoneIgnoresTheOtherWaveKeys) {
+  const ModelSpec spec = readModelString(edited(kBaseModel, "type: airy", "type: none"), kSource);
+  EXPECT_EQ(spec.environment.waves.kind, WaveKind::None);
+}
+
+TEST(ModelReader, ZeroDurationDisablesDynamics) {
+  const ModelSpec spec = readModelString(edited(kBaseModel, "duration: 100", "duration: 0"), kSource);
+  EXPECT_FALSE(spec.dynamics.enabled);
+}
+
+TEST(ModelReader, TimingDefaultsFollowALargeTimeStep) {
+  const ModelSpec spec = readModelString(
+      edited(kBaseModel, "  time_step: 0.01\n  output_interval: 0.1\n", "  time_step: 0.5\n"), kSource);
+  EXPECT_DOUBLE_EQ(spec.dynamics.timeStep, 0.5);
+  EXPECT_DOUBLE_EQ(spec.dynamics.outputInterval, 0.5);
+  EXPECT_DOUBLE_EQ(spec.dynamics.minTimeStep, 1.0e-5);
+}
+
+TEST(ModelReader, EmptyOptionalBlockTakesDefaults) {
+  const ModelSpec spec = readModelString(
+      edited(kBaseModel, "statics:\n  max_iterations: 100\n  tolerance: 1.0e-6\n", "statics:\n"), kSource);
+  EXPECT_EQ(spec.statics.maxIterations, 400);
+}
+
+TEST(ModelReader, AcceptsEndOnTheSeabedAndATautLine) {
+  // End A exactly on the seabed (z = -100); the ends 1.1 x the line length apart.
+  const std::string yaml = R"(environment: {water_depth: 100}
+line_types:
+  - {name: wire, outer_diameter: 0.05, mass_per_length: 10, axial_stiffness: 1.0e8}
+lines:
+  - name: taut
+    end_a: {type: anchored, position: [0, 0, -100]}
+    end_b: {type: fixed, position: [110, 0, -100]}
+    sections:
+      - {type: wire, length: 100, elements: 10}
+)";
+  EXPECT_NO_THROW(readModelString(yaml, kSource));
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Unknown keys
+
+TEST(ModelReaderErrors, UnknownKeyInSectionIsCaughtWithSuggestion) {
+  expectEditError("        length: 200", "        lenght: 200", "lenght: 200",
+                  "lines[moor].sections[0].lenght",
+                  "unknown key 'lenght'; expected one of: type, length, elements; did you mean 'length'?");
+}
+
+TEST(ModelReaderErrors, UnknownTopLevelKey) {
+  expectEditError("statics:", "static:", "static:", "static", "unknown key 'static'");
+}
+
+TEST(ModelReaderErrors, UnknownKeyInEnvironment) {
+  expectEditError("  water_density: 1025", "  water_densty: 1025", "water_densty", "environment.water_densty",
+                  "did you mean 'water_density'?");
+}
+
+TEST(ModelReaderErrors, UnknownKeyInEnd) {
+  expectEditError("      type: fixed", "      typ: fixed", "typ: fixed", "lines[moor].end_b.typ",
+                  "unknown key 'typ'");
+}
+
+TEST(ModelReaderErrors, UnknownKeyInLineType) {
+  expectEditError("    bending_stiffness: 1.0e7", "    EI: 1.0e7", "EI: 1.0e7", "line_types[pipe].EI",
+                  "unknown key 'EI'");
+}
+
+TEST(ModelReaderErrors, KeyGivenTwice) {
+  const std::string yaml =
+      edited(kBaseModel, "  water_depth: 100\n", "  water_depth: 100\n  water_depth: 120\n");
+  expectInputError(yaml, "water_depth: 120", "environment.water_depth",
+                   "key 'water_depth' is given twice (first at line 3)");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Missing required keys
+
+TEST(ModelReaderErrors, MissingWaterDepth) {
+  expectEditError("  water_depth: 100\n", "", "environment:", "environment.water_depth",
+                  "missing required key 'water_depth'");
+}
+
+TEST(ModelReaderErrors, MissingLinesBlock) {
+  const std::size_t begin = kBaseModel.find("lines:\n");
+  const std::size_t end = kBaseModel.find("statics:\n");
+  const std::string yaml = kBaseModel.substr(0, begin) + kBaseModel.substr(end);
+  expectInputError(yaml, "title:", "lines", "missing required key 'lines'");
+}
+
+TEST(ModelReaderErrors, MissingSectionLength) {
+  expectEditError("        length: 200\n", "", "- type: chain", "lines[moor].sections[0].length",
+                  "missing required key 'length'; expected a number > 0");
+}
+
+TEST(ModelReaderErrors, MissingEndPosition) {
+  expectEditError("      position: [400, 0, -100]\n", "", "end_a:", "lines[moor].end_a.position",
+                  "missing required key 'position'");
+}
+
+TEST(ModelReaderErrors, MissingLineTypeMass) {
+  expectEditError("    mass_per_length: 100\n", "", "- name: pipe", "line_types[pipe].mass_per_length",
+                  "missing required key 'mass_per_length'");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Wrong types
+
+TEST(ModelReaderErrors, StringWhereNumberExpected) {
+  expectEditError("length: 200", "length: long", "length: long", "lines[moor].sections[0].length",
+                  "expected a number > 0 (unstretched length in m), got long");
+}
+
+TEST(ModelReaderErrors, QuotedNumberIsAString) {
+  expectEditError("mass_per_length: 115.5", "mass_per_length: \"115.5\"", "mass_per_length: \"",
+                  "line_types[chain].mass_per_length", "got \"115.5\" (a quoted string)");
+}
+
+TEST(ModelReaderErrors, MapWhereNumberExpected) {
+  expectEditError("  water_depth: 100", "  water_depth: {value: 100}",
+                  "water_depth:", "environment.water_depth", "got a map");
+}
+
+TEST(ModelReaderErrors, ScalarWhereListExpected) {
+  expectEditError("    attachments:\n      - arc_length: 250\n        mass: 1000\n        volume: 2\n",
+                  "    attachments: none\n", "attachments: none", "lines[moor].attachments",
+                  "expected a list, got none");
+}
+
+TEST(ModelReaderErrors, EmptySectionList) {
+  const std::size_t begin = kBaseModel.find("    sections:\n");
+  const std::size_t end = kBaseModel.find("    attachments:\n");
+  const std::string yaml = kBaseModel.substr(0, begin) + "    sections: []\n" + kBaseModel.substr(end);
+  expectInputError(yaml, "sections: []", "lines[moor].sections", "expected a list of at least 1 item");
+}
+
+TEST(ModelReaderErrors, ScalarWhereMapExpected) {
+  expectEditError("    end_a:\n      type: anchored\n      position: [400, 0, -100]\n",
+                  "    end_a: anchored\n", "end_a: anchored", "lines[moor].end_a",
+                  "expected a map with keys: type, position, vessel, motion");
+}
+
+TEST(ModelReaderErrors, NotANumberIsRejected) {
+  expectEditError("water_depth: 100", "water_depth: .nan", "water_depth:", "environment.water_depth",
+                  "expected a number > 0");
+}
+
+TEST(ModelReaderErrors, BooleanGivenAsNumber) {
+  expectEditError("contact: true", "contact: 1", "contact: 1", "lines[moor].contact",
+                  "expected true or false, got 1");
+}
+
+TEST(ModelReaderErrors, BooleanGivenAsQuotedString) {
+  expectEditError("vtk: true", "vtk: \"true\"", "vtk:", "output.vtk", "expected true or false");
+}
+
+TEST(ModelReaderErrors, UnknownEndType) {
+  expectEditError("type: anchored", "type: welded", "type: welded", "lines[moor].end_a.type",
+                  "expected one of: anchored, fixed, pinned, free, vessel, got welded");
+}
+
+TEST(ModelReaderErrors, UnknownIntegrator) {
+  expectEditError("  spectral_radius: 0.7\n", "  spectral_radius: 0.7\n  integrator: euler\n",
+                  "integrator:", "dynamics.integrator", "expected one of: generalized_alpha, hht, newmark");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Impossible values
+
+TEST(ModelReaderErrors, NegativeLength) {
+  expectEditError("length: 200", "length: -5", "length: -5", "lines[moor].sections[0].length",
+                  "expected a number > 0 (unstretched length in m), got -5");
+}
+
+TEST(ModelReaderErrors, ZeroLength) {
+  expectEditError("length: 300", "length: 0", "length: 0", "lines[moor].sections[1].length", "got 0");
+}
+
+TEST(ModelReaderErrors, ZeroElements) {
+  expectEditError("elements: 20", "elements: 0", "elements: 0", "lines[moor].sections[0].elements",
+                  "expected an integer >= 1, got 0");
+}
+
+TEST(ModelReaderErrors, NegativeElements) {
+  expectEditError("elements: 30", "elements: -3", "elements: -3", "lines[moor].sections[1].elements",
+                  "expected an integer >= 1, got -3");
+}
+
+TEST(ModelReaderErrors, NonIntegerElements) {
+  expectEditError("elements: 20", "elements: 2.5", "elements: 2.5", "lines[moor].sections[0].elements",
+                  "expected an integer >= 1, got 2.5");
+}
+
+TEST(ModelReaderErrors, NegativeAttachmentMass) {
+  expectEditError("        mass: 1000", "        mass: -1000", "mass: -1000",
+                  "lines[moor].attachments[0].mass", "expected a number >= 0, got -1000");
+}
+
+TEST(ModelReaderErrors, ZeroDiameter) {
+  expectEditError("    outer_diameter: 0.3", "    outer_diameter: 0", "outer_diameter: 0\n",
+                  "line_types[pipe].outer_diameter", "expected a number > 0, got 0");
+}
+
+TEST(ModelReaderErrors, NegativeBendingStiffness) {
+  expectEditError("bending_stiffness: 1.0e7", "bending_stiffness: -1",
+                  "bending_stiffness:", "line_types[pipe].bending_stiffness",
+                  "expected a number >= 0, got -1");
+}
+
+TEST(ModelReaderErrors, SpectralRadiusOutsideZeroOne) {
+  expectEditError("spectral_radius: 0.7", "spectral_radius: 1.5",
+                  "spectral_radius:", "dynamics.spectral_radius", "expected a number in [0, 1], got 1.5");
+}
+
+TEST(ModelReaderErrors, ZeroTimeStep) {
+  expectEditError("time_step: 0.01", "time_step: 0", "time_step:", "dynamics.time_step",
+                  "expected a number > 0, got 0");
+}
+
+TEST(ModelReaderErrors, NegativeDuration) {
+  expectEditError("duration: 100", "duration: -1", "duration:", "dynamics.duration",
+                  "expected a number >= 0");
+}
+
+TEST(ModelReaderErrors, OutputIntervalBelowTimeStep) {
+  expectEditError("output_interval: 0.1", "output_interval: 0.001",
+                  "output_interval:", "dynamics.output_interval",
+                  "expected a number >= 0.01 (at least time_step), got 0.001");
+}
+
+TEST(ModelReaderErrors, MinTimeStepAboveTimeStep) {
+  expectEditError("  time_step: 0.01\n", "  time_step: 0.01\n  min_time_step: 0.1\n",
+                  "min_time_step:", "dynamics.min_time_step",
+                  "expected a number in (0, 0.01] (at most time_step), got 0.1");
+}
+
+TEST(ModelReaderErrors, NonPositiveWaterDepth) {
+  expectEditError("water_depth: 100", "water_depth: -100", "water_depth:", "environment.water_depth",
+                  "expected a number > 0");
+}
+
+TEST(ModelReaderErrors, AttachmentBeyondTheLineEnd) {
+  expectEditError("arc_length: 250", "arc_length: 600",
+                  "arc_length:", "lines[moor].attachments[0].arc_length", "expected a number in [0, 500]");
+}
+
+TEST(ModelReaderErrors, JonswapComponentsZero) {
+  const std::string yaml = edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
+                                  "    type: jonswap\n    significant_height: 4.0\n    peak_period: 9\n"
+                                  "    components: 0\n");
+  expectInputError(yaml, "components:", "environment.waves.components", "expected an integer >= 1");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Names and references
+
+TEST(ModelReaderErrors, DuplicateLineTypeName) {
+  const std::string yaml = edited(kBaseModel, "  - name: pipe", "  - name: chain");
+  expectInputError(yaml, "name: chain\n    outer_diameter: 0.3", "line_types[chain].name",
+                   "duplicate line type name 'chain' (first defined at line " +
+                       std::to_string(lineOf(kBaseModel, "- name: chain")) + ")");
+}
+
+TEST(ModelReaderErrors, DuplicateLineName) {
+  const std::string yaml = edited(kBaseModel, "statics:\n",
+                                  "  - name: moor\n"
+                                  "    end_a: {type: anchored, position: [0, 0, -100]}\n"
+                                  "    end_b: {type: free, position: [0, 0, -50]}\n"
+                                  "    sections:\n"
+                                  "      - {type: chain, length: 60, elements: 6}\n"
+                                  "statics:\n");
+  expectInputError(yaml, "name: moor\n    end_a: {", "lines[moor].name", "duplicate line name 'moor'");
+}
+
+TEST(ModelReaderErrors, SectionWithUnknownLineType) {
+  expectEditError("      - type: pipe", "      - type: pipes", "type: pipes", "lines[moor].sections[1].type",
+                  "unknown line type 'pipes'; line types defined under line_types: chain, pipe");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Ends
+
+TEST(ModelReaderErrors, AnchorBelowTheSeabed) {
+  expectEditError("position: [400, 0, -100]", "position: [400, 0, -100.5]", "position: [400",
+                  "lines[moor].end_a.position", "the end is below the seabed: z = -100.5 m");
+}
+
+TEST(ModelReaderErrors, FreeEndBelowTheSeabed) {
+  const std::string yaml = R"(environment: {water_depth: 100}
+line_types:
+  - {name: wire, outer_diameter: 0.05, mass_per_length: 10, axial_stiffness: 1.0e8}
+lines:
+  - name: hanging
+    end_a: {type: fixed, position: [0, 0, -10]}
+    end_b: {type: free, position: [0, 0, -120]}
+    sections:
+      - {type: wire, length: 110, elements: 10}
+)";
+  expectInputError(yaml, "type: free", "lines[hanging].end_b.position", "below the seabed");
+}
+
+TEST(ModelReaderErrors, VesselEndWithoutVessel) {
+  expectEditError("      type: anchored", "      type: vessel", "end_a:", "lines[moor].end_a.vessel",
+                  "missing required key 'vessel'");
+}
+
+TEST(ModelReaderErrors, VesselKeyOnAnchoredEnd) {
+  expectEditError("      type: anchored\n", "      type: anchored\n      vessel: fpso\n", "vessel: fpso",
+                  "lines[moor].end_a.vessel", "'vessel' applies only to ends of type vessel");
+}
+
+TEST(ModelReaderErrors, PositionWithTwoNumbers) {
+  expectEditError("[400, 0, -100]", "[400, 0]", "position: [400", "lines[moor].end_a.position",
+                  "expected a list of 3 numbers [x, y, z], got a list of 2 items");
+}
+
+TEST(ModelReaderErrors, PositionWithAString) {
+  expectEditError("[400, 0, -100]", "[400, zero, -100]", "position: [400", "lines[moor].end_a.position[1]",
+                  "item 1 is zero");
+}
+
+TEST(ModelReaderErrors, PositionGivenAsScalar) {
+  expectEditError("position: [20, 0, -10]", "position: 20", "position: 20", "lines[moor].end_b.position",
+                  "expected a list of 3 numbers [x, y, z], got 20");
+}
+
+TEST(ModelReaderErrors, EndsFartherApartThanTheLineLength) {
+  expectEditError("position: [400, 0, -100]", "position: [700, 0, -100]", "- name: moor", "lines[moor]",
+                  "line 'moor': its ends are 685.93 m apart but its unstretched length is only 500 m");
+}
+
+TEST(ModelReaderErrors, HarmonicMotionAndTableTogether) {
+  expectEditError("        period: 10\n", "        period: 10\n        table: [[0, 0, 0, 0], [1, 0, 0, 0]]\n",
+                  "amplitude: [5", "lines[moor].end_b.motion.amplitude", "cannot be combined with 'table'");
+}
+
+TEST(ModelReaderErrors, MotionTableTimesNotIncreasing) {
+  expectEditError(
+      "        amplitude: [5, 0, 0]\n        period: 10\n",
+      "        table:\n          - [0, 0, 0, 0]\n          - [2, 1, 0, 0]\n          - [2, 2, 0, 0]\n",
+      "- [2, 2", "lines[moor].end_b.motion.table[2]", "times must be strictly increasing");
+}
+
+TEST(ModelReaderErrors, MotionTableRowOfThreeNumbers) {
+  expectEditError("        amplitude: [5, 0, 0]\n        period: 10\n",
+                  "        table:\n          - [0, 0, 0, 0]\n          - [1, 1, 0]\n", "- [1, 1, 0]",
+                  "lines[moor].end_b.motion.table[1]", "expected a list of 4 numbers [t, dx, dy, dz]");
+}
+
+TEST(ModelReaderErrors, MotionOnAFreeEnd) {
+  expectEditError("      type: fixed", "      type: free", "motion:", "lines[moor].end_b.motion",
+                  "a prescribed motion applies only to ends of type anchored, fixed or pinned");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Current and waves
+
+TEST(ModelReaderErrors, CurrentLevelAboveTheSurface) {
+  expectEditError("{z: 0, speed: 1.0", "{z: 5, speed: 1.0", "{z: 5", "environment.current[0].z",
+                  "expected a number <= 0 (z = 0 at the still water level, negative below), got 5");
+}
+
+TEST(ModelReaderErrors, CurrentLevelGivenTwice) {
+  expectEditError("{z: -100,", "{z: 0,", "{z: 0, speed: 0.2", "environment.current[1].z",
+                  "current level z = 0 is given twice (first at line " +
+                      std::to_string(lineOf(kBaseModel, "{z: 0,")) + ")");
+}
+
+TEST(ModelReaderErrors, NegativeCurrentSpeed) {
+  expectEditError("speed: 0.2", "speed: -0.2", "speed: -0.2", "environment.current[1].speed",
+                  "expected a number >= 0");
+}
+
+TEST(ModelReaderErrors, AiryWaveWithoutPeriod) {
+  expectEditError("    period: 10.0\n", "", "  waves:", "environment.waves.period",
+                  "missing required key 'period'; expected a number > 0 (required for waves of type airy)");
+}
+
+TEST(ModelReaderErrors, JonswapWithoutPeakPeriod) {
+  const std::string yaml = edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
+                                  "    type: jonswap\n    significant_height: 4.0\n");
+  expectInputError(
+      yaml, "  waves:", "environment.waves.peak_period",
+      "missing required key 'peak_period'; expected a number > 0 (required for waves of type jonswap)");
+}
+
+TEST(ModelReaderErrors, WaveKeyOfAnotherWaveType) {
+  expectEditError("    period: 10.0\n", "    period: 10.0\n    gamma: 3.3\n",
+                  "gamma:", "environment.waves.gamma", "key 'gamma' does not apply to waves of type airy");
+}
+
+TEST(ModelReaderErrors, UnknownWaveType) {
+  expectEditError("type: airy", "type: stokes", "type: stokes", "environment.waves.type",
+                  "expected one of: none, airy, jonswap, got stokes");
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Whole-file problems
+
+TEST(ModelReaderErrors, YamlSyntaxErrorGivesTheLine) {
+  const std::string yaml = edited(kBaseModel, "  water_density: 1025", "  water_density: 1025: 3");
+  try {
+    readModelString(yaml, kSource);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    const int line = lineOf(yaml, "water_density: 1025: 3");
+    EXPECT_EQ(e.file(), kSource);
+    EXPECT_EQ(e.line(), line);
+    const std::string what = e.what();
+    EXPECT_NE(what.find(std::string(kSource) + ":" + std::to_string(line) + ":"), std::string::npos) << what;
+    EXPECT_NE(what.find("invalid YAML"), std::string::npos) << what;
+  }
+}
+
+TEST(ModelReaderErrors, TabIndentationIsASyntaxError) {
+  const std::string yaml = edited(kBaseModel, "  water_density: 1025", "\twater_density: 1025");
+  try {
+    readModelString(yaml, kSource);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), lineOf(yaml, "\twater_density"));
+  }
+}
+
+TEST(ModelReaderErrors, EmptyModel) {
+  EXPECT_THROW(readModelString("# nothing here\n", kSource), InputError);
+}
+
+TEST(ModelReaderErrors, RootIsAList) {
+  expectInputError("- environment\n- lines\n", "- environment", "",
+                   "expected a map with keys: title, environment");
+}
+
+TEST(ModelReaderErrors, TwoDocumentsInOneFile) {
+  const std::string yaml = kBaseModel + "---\ntitle: second\n";
+  try {
+    readModelString(yaml, kSource);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), lineOf(yaml, "title: second"));
+    EXPECT_NE(std::string(e.what()).find("single YAML document"), std::string::npos) << e.what();
+  }
+}
+
+TEST(ModelReaderErrors, MissingFile) {
+  const std::string path = std::string(test::kTestDataDir) + "/does-not-exist.yaml";
+  try {
+    readModelFile(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), 0);
+    const std::string what = e.what();
+    EXPECT_NE(what.find(path), std::string::npos) << what;
+    EXPECT_NE(what.find("does not exist"), std::string::npos) << what;
+  }
+}
+
+TEST(ModelReaderErrors, DirectoryInsteadOfFile) {
+  try {
+    readModelFile(test::kTestDataDir);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a directory"), std::string::npos) << e.what();
+  }
+}
+
+// ----------------------------------------------------------------------------------------------------
+// Files
+
+TEST(ModelReaderFiles, ReadsAFileAndRecordsWhereThingsCameFrom) {
+  const std::string path = std::string(test::kTestDataDir) + "/model-reader-good.yaml";
+  const ModelSpec spec = readModelFile(path);
+  EXPECT_EQ(spec.sourceFile, path);
+  ASSERT_EQ(spec.lines.size(), 1u);
+  EXPECT_EQ(spec.lines[0].endA.sourceLine, 13);
+  EXPECT_EQ(spec.lines[0].endB.sourceLine, 14);
+}
+
+TEST(ModelReaderFiles, ErrorInAFileNamesTheFileLineAndKey) {
+  const std::string path = std::string(test::kTestDataDir) + "/model-reader-bad-length.yaml";
+  try {
+    readModelFile(path);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), 16);
+    EXPECT_EQ(e.key(), "lines[short].sections[0].length");
+    EXPECT_NE(std::string(e.what()).find(path + ":16: key 'lines[short].sections[0].length'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ModelReaderFiles, EveryExampleModelIsAccepted) {
+  namespace fs = std::filesystem;
+  std::vector<std::string> files;
+  for (const fs::directory_entry& entry : fs::recursive_directory_iterator(test::kExamplesDir))
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml")
+      files.push_back(entry.path().string());
+  EXPECT_GE(files.size(), 4u);
+  for (const std::string& file : files) {
+    SCOPED_TRACE(file);
+    EXPECT_NO_THROW({
+      const ModelSpec spec = readModelFile(file);
+      EXPECT_FALSE(spec.lines.empty());
+    });
+  }
+}
+
+}  // namespace
+}  // namespace tangle::io

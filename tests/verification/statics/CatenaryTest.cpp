@@ -1,0 +1,84 @@
+// Static verification against the closed-form elastic catenary partly resting on a frictionless flat
+// seabed (Irvine 1981 "Cable Structures"; Jonkman 2007 NREL/TP-500-41958 eq. 2-1/2-2 with Cb = 0),
+// implemented in solver::solveAnchoredCatenary and verified there on its own.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "support/ModelFactory.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/Assembler.hpp"
+#include "tangle/solver/ElasticCatenary.hpp"
+#include "tangle/solver/LineResults.hpp"
+#include "tangle/solver/StaticSolver.hpp"
+
+namespace tangle {
+namespace {
+
+struct CatenaryCase {
+  double span;      // horizontal anchor-fairlead distance [m]
+  int elements;
+};
+
+class ElasticCatenaryWithSeabed : public ::testing::TestWithParam<CatenaryCase> {};
+
+TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
+  const CatenaryCase c = GetParam();
+  constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1;
+  model::ModelSpec spec;
+  spec.sourceFile = "catenary (test)";
+  spec.environment.waterDepth = kDepth;
+  // Stiff seabed: penetration w / k = 1e-4 m, negligible against the 0.5 % tolerance.
+  spec.environment.seabed.normalStiffness = 1.0e7;
+  const section::LineType chain = test::cableType("chain", kDiameter, 100.0, 5.0e8);
+  spec.lineTypes[chain.name] = chain;
+  const double rest = -kDepth + 0.5 * kDiameter;  // where a node rests on the seabed
+  const Vec3 anchor(0.0, 0.0, rest);
+  const Vec3 fairlead(c.span, 0.0, -10.0);
+  spec.lines.push_back(test::simpleLine("chain", "chain", kLength, c.elements, model::EndKind::Anchored, anchor,
+                                        model::EndKind::Fixed, fairlead));
+  const double w = chain.submergedWeight(spec.environment.waterDensity, spec.environment.gravity);
+
+  model::Model m(std::move(spec));
+  solver::Assembler assembler(m);
+  model::State s = m.initialState();
+  solver::StaticSolver solver(assembler, m.spec().statics);
+  const solver::StaticResult r = solver.solve(s);
+  ASSERT_TRUE(r.converged) << r.message;
+  VecX force;
+  solver::AssemblyRequest request;
+  request.wantMatrix = false;
+  assembler.assemble(s, request, force, nullptr);
+  const auto lines = solver::computeLineResults(m, assembler, s, force);
+
+  solver::CatenaryInput in;
+  in.span = c.span;
+  in.height = fairlead.z() - anchor.z();
+  in.length = kLength;
+  in.weight = w;
+  in.axialStiffness = chain.axialStiffness;
+  const solver::CatenarySolution exact = solver::solveAnchoredCatenary(in);
+  ASSERT_GT(exact.groundedLength, 20.0) << "test case must have a grounded part";
+
+  const Vec3 fb = lines[0].endForceB;
+  // Issue bound 0.5 %; the polyline with lumped weights differs from the continuous catenary by
+  // O((h w / H)^2) ~ 1e-5 here, so a failure means a real error.
+  EXPECT_NEAR(fb.norm(), exact.fairleadTension, 0.005 * exact.fairleadTension);
+  EXPECT_NEAR(std::hypot(fb.x(), fb.y()), exact.horizontalTension, 0.005 * exact.horizontalTension);
+  EXPECT_NEAR(-fb.z(), exact.verticalTension, 0.005 * exact.verticalTension);
+  // Touchdown within one element (the FE touchdown is a node).
+  const double element = kLength / c.elements;
+  EXPECT_NEAR(lines[0].touchdownArcLength, exact.groundedLength, element);
+}
+
+INSTANTIATE_TEST_SUITE_P(Spans, ElasticCatenaryWithSeabed,
+                         ::testing::Values(CatenaryCase{270.0, 60}, CatenaryCase{260.0, 150}),
+                         [](const ::testing::TestParamInfo<CatenaryCase>& info) {
+                           return "span" + std::to_string(static_cast<int>(info.param.span)) + "m_" +
+                                  std::to_string(info.param.elements) + "elements";
+                         });
+
+}  // namespace
+}  // namespace tangle
