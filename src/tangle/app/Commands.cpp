@@ -1,16 +1,19 @@
 #include "tangle/app/Commands.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fmt/format.h>
+#include <fstream>
 #include <iostream>
 
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/core/Error.hpp"
+#include "tangle/io/DynamicRecorder.hpp"
+#include "tangle/io/JsonWriter.hpp"
 #include "tangle/io/ModelReader.hpp"
 #include "tangle/io/ResultWriter.hpp"
-#include "tangle/model/Model.hpp"
-#include "tangle/solver/Assembler.hpp"
-#include "tangle/solver/LineResults.hpp"
-#include "tangle/solver/StaticSolver.hpp"
 
 namespace tangle::app {
 
@@ -52,6 +55,65 @@ void printSummary(const model::Model& m) {
                line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
                weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
   }
+  const auto& d = m.spec().dynamics;
+  if (d.enabled)
+    fmt::print("dynamics: {:.2f} s at dt = {:.4g} s, output every {:.4g} s\n", d.duration, d.timeStep,
+               d.outputInterval);
+}
+
+void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
+                         const std::vector<solver::LineSnapshot>& lines) {
+  std::ofstream out(dir / "dynamics" / "summary.json");
+  io::JsonWriter j(out);
+  j.beginObject();
+  j.key("completed");
+  j.value(r.completed);
+  j.key("end_time_s");
+  j.value(r.endTime);
+  j.key("steps");
+  j.value(r.steps);
+  j.key("step_cutbacks");
+  j.value(r.cutbacks);
+  j.key("newton_iterations");
+  j.value(static_cast<double>(r.newtonIterations));
+  j.key("wall_time_s");
+  j.value(r.wallSeconds);
+  j.key("real_time_factor");
+  j.value(r.endTime / std::max(r.wallSeconds, 1e-9));
+  j.key("message");
+  j.value(r.message);
+  j.key("lines");
+  j.beginArray();
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const auto& range = rec.ranges()[l];
+    j.beginObject();
+    j.key("name");
+    j.value(lines[l].name);
+    j.key("max_tension_N");
+    j.value(*std::max_element(range.tensionMax.begin(), range.tensionMax.end()));
+    j.key("min_tension_N");
+    j.value(*std::min_element(range.tensionMin.begin(), range.tensionMin.end()));
+    j.key("max_bending_moment_Nm");
+    j.value(*std::max_element(range.momentMax.begin(), range.momentMax.end()));
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+}
+
+void makePlots(const fs::path& outDir, bool quiet) {
+  const fs::path script = fs::path(TANGLE_PYTHON_DIR) / "tangle_plot.py";
+  if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) {
+    if (!quiet) fmt::print("plots skipped: /usr/bin/python3 or {} not found\n", script.string());
+    return;
+  }
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' > '{}' 2>&1", script.string(), outDir.string(),
+                                      (outDir / "plots.log").string());
+  if (std::system(cmd.c_str()) != 0) {
+    std::cerr << fmt::format("warning: plotting failed, see {}\n", (outDir / "plots.log").string());
+  } else if (!quiet) {
+    fmt::print("plots written to {}\n", (outDir / "plots").string());
+  }
 }
 
 }  // namespace
@@ -65,7 +127,8 @@ int runCheck(const CheckOptions& options) {
 
 int runAnalysis(const RunOptions& options) {
   const auto start = std::chrono::steady_clock::now();
-  model::Model m(io::readModelFile(options.modelPath));
+  analysis::Simulation sim(io::readModelFile(options.modelPath));
+  const model::Model& m = sim.model();
   fs::path outDir = options.outputDir;
   if (outDir.empty()) {
     const fs::path p(options.modelPath);
@@ -74,16 +137,8 @@ int runAnalysis(const RunOptions& options) {
   fs::create_directories(outDir);
   if (!options.quiet) printSummary(m);
 
-  solver::Assembler assembler(m);
-  model::State state = m.initialState();
-  solver::StaticSolver statics(assembler, m.spec().statics);
-  const solver::StaticResult result = statics.solve(state);
-  VecX force;
-  solver::AssemblyRequest request;
-  request.wantMatrix = false;
-  request.loadFactor = result.loadFraction;
-  assembler.assemble(state, request, force, nullptr);
-  const auto lines = solver::computeLineResults(m, assembler, state, force);
+  const solver::StaticResult result = sim.solveStatics();
+  const auto lines = sim.snapshot();
   io::writeStaticSummary(outDir, m, result, lines);
   if (!result.converged) {
     std::cerr << "error: " << result.message << "\n";
@@ -92,7 +147,6 @@ int runAnalysis(const RunOptions& options) {
     return 2;
   }
   io::writeStaticLineTables(outDir, lines);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!options.quiet) {
     fmt::print("{}\n", result.message);
     for (const auto& s : lines) {
@@ -102,9 +156,28 @@ int runAnalysis(const RunOptions& options) {
       if (s.touchdownArcLength >= 0.0) fmt::print(", touchdown at {:.1f} m from end A", s.touchdownArcLength);
       fmt::print("\n");
     }
-    fmt::print("results written to {} ({:.2f} s)\n", outDir.string(), seconds);
   }
-  return 0;
+
+  int code = 0;
+  if (m.spec().dynamics.enabled && !options.staticsOnly) {
+    io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0);
+    const time::DynamicResult dyn = sim.runDynamics(
+        [&](const model::State&, const VecX&) { recorder.record(sim.state().time, sim.snapshot(true)); },
+        !options.quiet);
+    recorder.writeRanges();
+    writeDynamicSummary(outDir, dyn, recorder, lines);
+    if (!dyn.completed) {
+      std::cerr << "error: " << dyn.message << "\n";
+      std::cerr << fmt::format("results up to t = {:.4g} s are in {}\n", dyn.endTime, outDir.string());
+      code = 2;
+    } else if (!options.quiet) {
+      fmt::print("{}\n", dyn.message);
+    }
+  }
+  if (m.spec().output.plots && !options.noPlots) makePlots(outDir, options.quiet);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!options.quiet) fmt::print("results written to {} ({:.2f} s)\n", outDir.string(), seconds);
+  return code;
 }
 
 }  // namespace tangle::app

@@ -158,23 +158,36 @@ void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector
   m_statistics.cellEntries = m_entries.size();
   m_statistics.oversizedProxies = m_oversized.size();
 
-  // 2. Sort by cell (then proxy, so i < j inside a cell).
-  std::sort(m_entries.begin(), m_entries.end(), [](const CellEntry& x, const CellEntry& y) {
-    return x.key != y.key ? x.key < y.key : x.proxy < y.proxy;
-  });
+  // 2. Counting sort of the entries into hash buckets of their cell (spatial hashing, Teschner et
+  //    al. 2003), O(m). The scatter keeps the insertion order, so inside a bucket the proxies are in
+  //    increasing order. Cells that collide in a bucket are told apart by their key.
+  const std::size_t m = m_entries.size();
+  int bucketBits = 1;
+  while ((std::size_t{1} << bucketBits) < 2 * m) ++bucketBits;
+  const std::size_t buckets = std::size_t{1} << bucketBits;
+  auto bucketOf = [bucketBits](std::uint64_t key) {  // Fibonacci hashing (Knuth, TAOCP vol. 3, 6.4)
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >> (64 - bucketBits));
+  };
+  m_bucketStart.assign(buckets + 1, 0);
+  for (const CellEntry& entry : m_entries) ++m_bucketStart[bucketOf(entry.key) + 1];
+  for (std::size_t b = 0; b < buckets; ++b) m_bucketStart[b + 1] += m_bucketStart[b];
+  m_bucketFill.assign(m_bucketStart.begin(), m_bucketStart.end() - 1);
+  m_sorted.resize(m);
+  for (const CellEntry& entry : m_entries) m_sorted[m_bucketFill[bucketOf(entry.key)]++] = entry;
 
   // 3. Pairs inside each cell, reported only from the cell of the intersection's lo corner:
   //    floor is monotonic, so that cell is the componentwise max of the two lo cells.
   std::size_t boxTests = 0;
-  for (std::size_t begin = 0; begin < m_entries.size();) {
-    const std::uint64_t key = m_entries[begin].key;
-    std::size_t end = begin + 1;
-    while (end < m_entries.size() && m_entries[end].key == key) ++end;
+  for (std::size_t b = 0; b < buckets; ++b) {
+    const std::size_t begin = m_bucketStart[b];
+    const std::size_t end = m_bucketStart[b + 1];
     for (std::size_t u = begin; u + 1 < end; ++u) {
-      const int i = m_entries[u].proxy;
+      const std::uint64_t key = m_sorted[u].key;
+      const int i = m_sorted[u].proxy;
       const std::array<std::int64_t, 3>& ci = m_cellLo[static_cast<std::size_t>(i)];
       for (std::size_t v = u + 1; v < end; ++v) {
-        const int j = m_entries[v].proxy;
+        if (m_sorted[v].key != key) continue;  // another cell hashed to the same bucket
+        const int j = m_sorted[v].proxy;
         if (!accept(proxies, i, j)) continue;
         ++boxTests;
         if (!overlap(i, j)) continue;
@@ -184,7 +197,6 @@ void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector
         out.push_back({i, j});
       }
     }
-    begin = end;
   }
 
   // Oversized boxes against every box (pairs of two oversized boxes once).

@@ -13,16 +13,19 @@ class Bar {
  public:
   /// @param axialStiffness EA [N], > 0
   /// @param restLength unstretched length L0 [m], > 0
+  /// @throws tangle::Error when EA <= 0 or L0 <= 0
   Bar(double axialStiffness, double restLength);
 
-  /// Internal (elastic) nodal forces and their tangent.
+  /// Internal (elastic) nodal forces and their tangent. The axial law is linear in tension *and*
+  /// compression (no slack cut-off here: a compressed bar pushes with N = EA (l - L0) / L0 < 0).
+  /// @throws tangle::Error when the two nodes coincide (direction undefined).
   /// @param x1,x2 current node positions, global axes [m]
   /// @param[out] internalForce forces the element exerts *on its nodes' equations* ordered
   ///        [node1 (3), node2 (3)] [N]; the equilibrium residual is internalForce - externalForce
   /// @param[out] tangent d(internalForce)/d(x1,x2) [N/m], symmetric (material + geometric part)
   void compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent) const;
 
-  /// Axial force N = EA (l - L0) / L0 [N], positive in tension.
+  /// Axial force N = EA (l - L0) / L0 [N], positive in tension, negative in compression.
   double axialForce(const Vec3& x1, const Vec3& x2) const;
 
   double axialStiffness() const { return m_ea; }  ///< EA [N]

@@ -131,10 +131,12 @@ V3<T> localRotation(const std::array<V3<T>, 3>& e, const Mat3& q, int offset) {
   const T c = (r(0, 0) + r(1, 1) + r(2, 2) - 1.0) * 0.5;
   const double cv = valueOf(c);
   if (!(cv > kMinCosine)) {
-    throw Error("CorotationalBeam: local (deformational) rotation reached pi; the element is folded back "
-                "on itself (mesh too coarse or load step too large)");
+    throw Error(
+        "CorotationalBeam: local (deformational) rotation reached pi; the element is folded back "
+        "on itself (mesh too coarse or load step too large)");
   }
-  const ThetaOverSin g = thetaOverSin(cv < 1.0 ? cv : 1.0);
+  // The series branch of thetaOverSin is also valid for c slightly above 1 (round-off), so no clamp.
+  const ThetaOverSin g = thetaOverSin(cv);
   const T half = chainRule(c, 0.5 * g.value, 0.5 * g.first, 0.5 * g.second);
   return scaled(v, half);
 }
@@ -157,8 +159,9 @@ Local<T> localDeformation(const V3<T>& d, const Mat3& q1, const Mat3& q2, double
   const V3<T> w = cross(e[0], q);
   const T wNorm = sqrt(dot(w, w));
   if (!(valueOf(wNorm) > kMinFrameSine)) {
-    throw Error("CorotationalBeam: the mean second triad axis is parallel to the chord; the co-rotated "
-                "frame is undefined (local rotation of 90 degrees about a transverse axis)");
+    throw Error(
+        "CorotationalBeam: the mean second triad axis is parallel to the chord; the co-rotated "
+        "frame is undefined (local rotation of 90 degrees about a transverse axis)");
   }
   e[2] = scaled(w, reciprocal(wNorm));
   e[1] = cross(e[2], e[0]);

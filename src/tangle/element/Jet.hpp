@@ -17,8 +17,8 @@ class Jet {
   static_assert(N > 0 && (Order == 1 || Order == 2), "Jet: N > 0 and Order 1 or 2");
 
  public:
-  static constexpr int kSize = N;                                        ///< number of variables
-  static constexpr int kPacked = Order == 2 ? N * (N + 1) / 2 : 0;       ///< stored Hessian entries
+  static constexpr int kSize = N;                                   ///< number of variables
+  static constexpr int kPacked = Order == 2 ? N * (N + 1) / 2 : 0;  ///< stored Hessian entries
 
   /// A constant (all derivatives zero).
   constexpr Jet(double value = 0.0) : m_value(value), m_grad{}, m_hess{} {}  // NOLINT: implicit on purpose
@@ -30,9 +30,9 @@ class Jet {
     return j;
   }
 
-  double value() const { return m_value; }                ///< function value
-  double grad(int i) const { return m_grad[i]; }          ///< d f / d x_i
-  double& grad(int i) { return m_grad[i]; }               ///< d f / d x_i (writable, to seed)
+  double value() const { return m_value; }        ///< function value
+  double grad(int i) const { return m_grad[i]; }  ///< d f / d x_i
+  double& grad(int i) { return m_grad[i]; }       ///< d f / d x_i (writable, to seed)
   /// d^2 f / (d x_i d x_j), symmetric; 0 for a first-order jet.
   double hess(int i, int j) const {
     if constexpr (Order == 2) {
@@ -42,12 +42,6 @@ class Jet {
       (void)j;
       return 0.0;
     }
-  }
-  /// Writable Hessian entry (i <= j), to seed second-order inputs.
-  double& hessUpper(int i, int j)
-    requires(Order == 2)
-  {
-    return m_hess[packedIndex(i, j)];
   }
 
   /// Chain rule for a scalar function f applied to this jet, given f(v), f'(v), f''(v).
@@ -93,9 +87,7 @@ class Jet {
   }
   /// Adds `a` to the symmetric Hessian pair (i, j) (i.e. to d^2f/dx_i dx_j and d^2f/dx_j dx_i; a
   /// diagonal entry i == j receives `a` once).
-  void addHess(int i, int j, double a)
-    requires(Order == 2)
-  {
+  void addHess(int i, int j, double a) requires(Order == 2) {
     m_hess[i <= j ? packedIndex(i, j) : packedIndex(j, i)] += a;
   }
 
@@ -118,7 +110,8 @@ class Jet {
         const double ai = a.m_grad[i];
         const double bi = b.m_grad[i];
         for (int j = i; j < N; ++j, ++k) {
-          r.m_hess[k] = a.m_value * b.m_hess[k] + b.m_value * a.m_hess[k] + ai * b.m_grad[j] + bi * a.m_grad[j];
+          r.m_hess[k] =
+              a.m_value * b.m_hess[k] + b.m_value * a.m_hess[k] + ai * b.m_grad[j] + bi * a.m_grad[j];
         }
       }
     }

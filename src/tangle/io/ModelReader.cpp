@@ -724,9 +724,10 @@ void readDynamics(const Value& v, ModelSpec& spec) {
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"vtk", "plots"});
+  const Map m(v, {"vtk", "vtk_interval", "plots"});
   const model::OutputSpec d;
   spec.output.vtk = m.boolean("vtk", d.vtk);
+  spec.output.vtkInterval = m.number("vtk_interval", d.vtkInterval, positive());
   spec.output.plots = m.boolean("plots", d.plots);
 }
 

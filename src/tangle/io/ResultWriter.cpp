@@ -57,6 +57,8 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
   j.value(model.spec().sourceFile);
   j.key("title");
   j.value(model.spec().title);
+  j.key("water_depth_m");
+  j.value(model.environment().waterDepth);
   j.key("units");
   j.value("SI: N, m, kg, s; angles in degrees");
   j.key("statics");

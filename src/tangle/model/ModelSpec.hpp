@@ -141,6 +141,7 @@ struct DynamicSpec {
 /// Result output settings.
 struct OutputSpec {
   bool vtk = true;   ///< write a ParaView .pvd/.vtu series
+  double vtkInterval = 1.0;  ///< time between ParaView frames in dynamics [s]
   bool plots = true; ///< write PNG plots (needs python3 with matplotlib)
 };
 

@@ -23,6 +23,7 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
     const double w = std::abs(el.type->submergedWeight(env.waterDensity, env.gravity)) * el.restLength;
     const double wAir = el.type->massPerLength * env.gravity * el.restLength;
     m_referenceForce = std::max({m_referenceForce, w, 0.1 * wAir});
+    m_roundoffForce = std::max(m_roundoffForce, 1e-14 * el.type->axialStiffness);
   }
 }
 

@@ -60,6 +60,9 @@ class Assembler {
 
   /// Reference force [N] for convergence tests: largest element weight magnitude or 1 N.
   double referenceForce() const { return m_referenceForce; }
+  /// Force resolution [N] set by round-off: out-of-balance forces below it are noise
+  /// (about 1e-14 * the largest axial stiffness EA; a residual cannot be driven lower).
+  double roundoffForce() const { return m_roundoffForce; }
 
   const model::Model& model() const { return *m_model; }
 
@@ -71,6 +74,7 @@ class Assembler {
   const model::Model* m_model;
   std::vector<LoadContributor*> m_contributors;
   double m_referenceForce = 1.0;
+  double m_roundoffForce = 0.0;
 };
 
 }  // namespace tangle::solver

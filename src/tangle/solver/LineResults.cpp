@@ -66,6 +66,11 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
       grounded[i] = s.position[i].z() - r <= -depth + 1e-6;
       if (grounded[i]) ++s.seabedNodes;
     }
+    // A held end on the seabed (an anchor) is not a grounded stretch by itself.
+    if (n >= 2) {
+      grounded[0] = grounded[0] && grounded[1];
+      grounded[n - 1] = grounded[n - 1] && grounded[n - 2];
+    }
     for (int i = 0; i + 1 < n; ++i) {
       if (grounded[i] != grounded[i + 1]) {
         s.touchdownArcLength = grounded[i] ? s.arcLength[i] : s.arcLength[i + 1];

@@ -151,7 +151,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     }
     outcome.residual = residualNorm(r, &outcome.worstNode);
     if (!std::isfinite(outcome.residual)) break;
-    if (outcome.residual <= m_settings.tolerance * fref) {
+    if (outcome.residual <= std::max(m_settings.tolerance * fref, 10.0 * m_assembler->roundoffForce())) {
       outcome.converged = true;
       break;
     }

@@ -1,13 +1,12 @@
 /// @file BarTest.cpp
 /// Element-level tests of the two-node bar (tangle::element::Bar).
 
-#include "tangle/element/Bar.hpp"
-
 #include <gtest/gtest.h>
 
 #include <random>
 
 #include "tangle/core/Error.hpp"
+#include "tangle/element/Bar.hpp"
 #include "tangle/geometry/Rotation.hpp"
 
 namespace tangle::element {

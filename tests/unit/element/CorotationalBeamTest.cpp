@@ -2,8 +2,6 @@
 /// Element-level tests of the 3D co-rotational beam (tangle::element::CorotationalBeam) and of its
 /// private helpers (the second-order jet and the smooth SO(3) log factor).
 
-#include "tangle/element/CorotationalBeam.hpp"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,6 +10,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/element/CorotationalBeam.hpp"
 #include "tangle/element/Jet.hpp"
 #include "tangle/element/RotationLogFactor.hpp"
 #include "tangle/geometry/Rotation.hpp"
@@ -196,7 +195,6 @@ TEST(CorotationalBeamTest, DegenerateStatesThrow) {
   EXPECT_THROW(beam.compute(Vec3::Zero(), yAlongChord, Vec3(kL0, 0.0, 0.0), yAlongChord, f, nullptr), Error);
 }
 
-
 // ---------------------------------------------------------------------------------------------
 // Consistency of force and tangent with the energy
 
@@ -224,7 +222,8 @@ TEST(CorotationalBeamTest, InternalForceIsGradientOfStrainEnergy) {
     Vec12 fFd;
     for (int j = 0; j < 12; ++j) {
       const State p = moved(s, unit12(j, h)), m = moved(s, unit12(j, -h));
-      fFd[j] = (beam.strainEnergy(p.x1, p.q1, p.x2, p.q2) - beam.strainEnergy(m.x1, m.q1, m.x2, m.q2)) / (2.0 * h);
+      fFd[j] =
+          (beam.strainEnergy(p.x1, p.q1, p.x2, p.q2) - beam.strainEnergy(m.x1, m.q1, m.x2, m.q2)) / (2.0 * h);
     }
     EXPECT_LE((f - fFd).cwiseAbs().maxCoeff(), 1e-8 * f.cwiseAbs().maxCoeff() + 1e-9);
     // The tangent path computes the same force.
@@ -274,7 +273,8 @@ TEST(CorotationalBeamTest, TangentMatchesFiniteDifferencesOfInternalForce) {
     const Mat12 k = tangentOf(beam, s, &f);
     Mat12 kFd;
     for (int j = 0; j < 12; ++j) {
-      kFd.col(j) = (forceOf(beam, moved(s, unit12(j, h))) - forceOf(beam, moved(s, unit12(j, -h)))) / (2.0 * h);
+      kFd.col(j) =
+          (forceOf(beam, moved(s, unit12(j, h))) - forceOf(beam, moved(s, unit12(j, -h)))) / (2.0 * h);
     }
     Mat12 expected = k;
     expected.block<3, 3>(3, 3) -= 0.5 * skew(f.segment<3>(3));

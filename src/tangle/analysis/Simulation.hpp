@@ -1,0 +1,46 @@
+#pragma once
+/// @file Simulation.hpp
+/// One analysis of one model: owns the mesh, the assembler and every load source, and runs the static
+/// solve and the dynamic run. The CLI and the tests both drive analyses through this class.
+
+#include <memory>
+#include <vector>
+
+#include "tangle/hydro/HydroLoads.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/Assembler.hpp"
+#include "tangle/solver/LineResults.hpp"
+#include "tangle/solver/StaticSolver.hpp"
+#include "tangle/time/DynamicAnalysis.hpp"
+
+namespace tangle::analysis {
+
+/// A model ready to analyse.
+class Simulation {
+ public:
+  /// Meshes the model and sets up loads. Throws InputError for inconsistent input.
+  explicit Simulation(model::ModelSpec spec);
+  ~Simulation();
+
+  model::Model& model() { return *m_model; }
+  solver::Assembler& assembler() { return *m_assembler; }
+  hydro::HydroLoads& hydro() { return *m_hydro; }
+  /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
+  model::State& state() { return m_state; }
+
+  /// Static equilibrium from the initial shape.
+  solver::StaticResult solveStatics();
+  /// Results along every line at the current state.
+  std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
+  /// Runs the dynamic analysis from the current state (the static equilibrium); `observer` gets every
+  /// output time. `progress` prints a progress line on stderr.
+  time::DynamicResult runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress = false);
+
+ private:
+  std::unique_ptr<model::Model> m_model;
+  std::unique_ptr<solver::Assembler> m_assembler;
+  std::unique_ptr<hydro::HydroLoads> m_hydro;
+  model::State m_state;
+};
+
+}  // namespace tangle::analysis
