@@ -1,11 +1,12 @@
 /// @file bench_contact_search.cpp
 /// Contact search alone: broad phase (contact::BroadPhase) plus narrow phase
-/// (geometry::segmentDistance on every candidate pair), on a synthetic but realistic field:
-/// 5 floating units in a ~2 km field in 345 m of water, each with 12 mooring lines (1130 m,
-/// anchor radius 1000 m, catenary with a grounded part; the seed paper's section 7.1 mooring) and
-/// 8 free-hanging risers (700 m, touchdown 450..590 m from the unit), 200 elements per line.
-/// Lines of neighbouring units cross in plan view; they meet in 3D where both lie on the seabed
-/// and where a riser passes close to a mooring line.
+/// (geometry::segmentDistance on every candidate pair), on a synthetic but realistic field in
+/// 345 m of water: 5 floating units within ~1.5 km of each other, each with 12 mooring lines
+/// (1130 m, anchor radius 1000 m, catenary with a grounded part: the seed paper's section 7.1
+/// mooring) and 8 free-hanging risers (700 m, ends 480..585 m from the unit), 200 elements per
+/// line; the lines cover about 3.3 km x 2.8 km. Lines of neighbouring units cross in plan view;
+/// in this layout they meet in 3D where both lie on the seabed (278 candidate pairs, 167 within
+/// the margin, for the 100 lines).
 ///
 /// Benchmarks:
 ///  - BM_ContactSearch/100: the 100 lines x 200 elements field, time per search (the broad phase
@@ -35,15 +36,15 @@ using tangle::contact::BroadPhaseOptions;
 using tangle::contact::CandidatePair;
 using tangle::contact::SegmentProxy;
 
-constexpr double kWaterDepth = 345.0;        // [m], seed paper section 7.1
-constexpr int kElementsPerLine = 200;        // [-], the paper's mooring mesh
-constexpr int kUnits = 5;                    // [-]
-constexpr int kMooringsPerUnit = 12;         // [-]
-constexpr int kRisersPerUnit = 8;            // [-]
+constexpr double kWaterDepth = 345.0;  // [m], seed paper section 7.1
+constexpr int kElementsPerLine = 200;  // [-], the paper's mooring mesh
+constexpr int kUnits = 5;              // [-]
+constexpr int kMooringsPerUnit = 12;   // [-]
+constexpr int kRisersPerUnit = 8;      // [-]
 constexpr int kLinesPerUnit = kMooringsPerUnit + kRisersPerUnit;
-constexpr double kMargin = 0.5;              // [m] broad-phase margin
-constexpr double kMooringRadius = 0.10;      // [m] contact radius of chain / wire
-constexpr double kRiserRadius = 0.15;        // [m] contact radius of a ~12 in riser
+constexpr double kMargin = 0.5;          // [m] broad-phase margin
+constexpr double kMooringRadius = 0.10;  // [m] contact radius of chain / wire
+constexpr double kRiserRadius = 0.15;    // [m] contact radius of a ~12 in riser
 
 /// Horizontal span [m] of a catenary line of length `length` [m] hanging from `drop` [m] above the
 /// seabed with catenary parameter lambda = H/w [m]: suspended part sqrt(drop (drop + 2 lambda))
@@ -93,8 +94,8 @@ std::vector<Vec3> catenaryNodes(const Vec3& anchor, const Vec3& top, double leng
 /// The full field: kUnits x kLinesPerUnit lines, ordered so that the first n lines are spread over
 /// all units (line i belongs to unit i % kUnits).
 std::vector<std::vector<Vec3>> fieldLines(std::vector<double>& radii) {
-  const std::array<Vec3, kUnits> units{Vec3(0, 0, 0), Vec3(750, 250, 0), Vec3(-650, 450, 0), Vec3(300, -750, 0),
-                                       Vec3(-500, -650, 0)};
+  const std::array<Vec3, kUnits> units{Vec3(0, 0, 0), Vec3(750, 250, 0), Vec3(-650, 450, 0),
+                                       Vec3(300, -750, 0), Vec3(-500, -650, 0)};
   std::vector<std::vector<Vec3>> lines;
   radii.clear();
   const double seabed = -kWaterDepth;
@@ -164,7 +165,12 @@ void BM_ContactSearch(benchmark::State& state) {
   state.counters["close"] = static_cast<double>(close);
   state.counters["boxTests"] = static_cast<double>(broadPhase.statistics().boxTests);
 }
-BENCHMARK(BM_ContactSearch)->Arg(10)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_ContactSearch)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity(benchmark::oNLogN);
 
 void BM_BroadPhase(benchmark::State& state) {
   const std::vector<SegmentProxy> proxies = fieldProxies(static_cast<int>(state.range(0)));
@@ -181,7 +187,12 @@ void BM_BroadPhase(benchmark::State& state) {
   state.counters["candidates"] = static_cast<double>(pairs.size());
   state.counters["cellEntries"] = static_cast<double>(broadPhase.statistics().cellEntries);
 }
-BENCHMARK(BM_BroadPhase)->Arg(10)->Arg(30)->Arg(100)->Unit(benchmark::kMillisecond)->Complexity(benchmark::oNLogN);
+BENCHMARK(BM_BroadPhase)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(100)
+    ->Unit(benchmark::kMillisecond)
+    ->Complexity(benchmark::oNLogN);
 
 }  // namespace
 

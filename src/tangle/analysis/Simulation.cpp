@@ -8,13 +8,21 @@ Simulation::Simulation(model::ModelSpec spec)
       m_hydro(std::make_unique<hydro::HydroLoads>(*m_model)),
       m_state(m_model->initialState()) {
   m_assembler->addContributor(m_hydro.get());
+  if (m_model->spec().contact.enabled) {
+    m_contact = std::make_unique<contact::LineContact>(*m_model, m_model->spec().contact,
+                                                       m_model->spec().dynamics.timeStep);
+    m_assembler->addContributor(m_contact.get());
+  }
 }
 
 Simulation::~Simulation() = default;
 
 solver::StaticResult Simulation::solveStatics() {
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
-  return solver.solve(m_state);
+  const solver::StaticResult result = solver.solve(m_state);
+  // Contacts at rest in the static equilibrium become the starting contacts of the dynamics.
+  if (m_contact && result.converged) m_contact->commitStep(m_state, 0.0);
+  return result;
 }
 
 std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
@@ -37,8 +45,16 @@ time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observe
   time::DynamicAnalysis dynamics(*m_assembler, m_model->spec().dynamics);
   dynamics.setProgress(progress);
   dynamics.setObserver(observer);
+  if (m_contact) {
+    dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });
+    dynamics.setStepValidator(
+        [this](const model::State& before, const model::State& after) { return m_contact->acceptStep(before, after); });
+    dynamics.setStepHook([this](model::State& s, double dt) { m_contact->commitStep(s, dt); });
+  }
   // The run advances m_state itself, so snapshot() inside the observer sees the output state.
-  return dynamics.run(m_state);
+  const time::DynamicResult result = dynamics.run(m_state);
+  if (m_contact) m_contact->finish(m_state.time);
+  return result;
 }
 
 }  // namespace tangle::analysis

@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "tangle/contact/LineContact.hpp"
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
@@ -25,6 +26,8 @@ class Simulation {
   model::Model& model() { return *m_model; }
   solver::Assembler& assembler() { return *m_assembler; }
   hydro::HydroLoads& hydro() { return *m_hydro; }
+  /// Line-to-line contact, or nullptr when the model has no contact block.
+  contact::LineContact* contact() { return m_contact.get(); }
   /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
   model::State& state() { return m_state; }
 
@@ -40,6 +43,7 @@ class Simulation {
   std::unique_ptr<model::Model> m_model;
   std::unique_ptr<solver::Assembler> m_assembler;
   std::unique_ptr<hydro::HydroLoads> m_hydro;
+  std::unique_ptr<contact::LineContact> m_contact;
   model::State m_state;
 };
 

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "tangle/analysis/Simulation.hpp"
+#include "tangle/contact/ClashReport.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/io/DynamicRecorder.hpp"
 #include "tangle/io/JsonWriter.hpp"
@@ -161,10 +162,19 @@ int runAnalysis(const RunOptions& options) {
   int code = 0;
   if (m.spec().dynamics.enabled && !options.staticsOnly) {
     io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0);
+    std::unique_ptr<contact::ClashReport> clash;
+    if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact());
     const time::DynamicResult dyn = sim.runDynamics(
-        [&](const model::State&, const VecX&) { recorder.record(sim.state().time, sim.snapshot(true)); },
+        [&](const model::State& s, const VecX&) {
+          recorder.record(s.time, sim.snapshot(true));
+          if (clash) clash->recordClearance(s);
+        },
         !options.quiet);
     recorder.writeRanges();
+    if (clash) {
+      clash->write(outDir);
+      if (!options.quiet) fmt::print("{}", clash->terminalSummary());
+    }
     writeDynamicSummary(outDir, dyn, recorder, lines);
     if (!dyn.completed) {
       std::cerr << "error: " << dyn.message << "\n";

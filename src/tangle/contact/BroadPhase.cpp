@@ -54,11 +54,14 @@ void BroadPhase::buildBoxes(const std::vector<SegmentProxy>& proxies) {
       throw Error("BroadPhase: " + describe(p, i) + " has a non-finite end point");
     }
     if (!(p.radius >= 0.0) || !std::isfinite(p.radius)) {
-      throw Error("BroadPhase: " + describe(p, i) + " has an invalid contact radius " + std::to_string(p.radius));
+      throw Error("BroadPhase: " + describe(p, i) + " has an invalid contact radius " +
+                  std::to_string(p.radius));
     }
     const double w = p.radius + halfMargin;
     m_boxes[i].lo = p.a.cwiseMin(p.b).array() - w;
     m_boxes[i].hi = p.a.cwiseMax(p.b).array() + w;
+    m_boxes[i].line = p.line;
+    m_boxes[i].element = p.element;
   }
 }
 
@@ -73,7 +76,8 @@ void BroadPhase::chooseGrid() {
     extentSum += (box.hi - box.lo).maxCoeff();
   }
   const double span = (hi - lo).maxCoeff();
-  double h = m_options.cellSize > 0.0 ? m_options.cellSize : kCellSizeFactor * extentSum / static_cast<double>(n);
+  double h =
+      m_options.cellSize > 0.0 ? m_options.cellSize : kCellSizeFactor * extentSum / static_cast<double>(n);
   if (!(h > 0.0) || !std::isfinite(h)) {  // all boxes are points
     h = span > 0.0 ? span / std::cbrt(static_cast<double>(n)) : 1.0;
   }
@@ -88,21 +92,20 @@ void BroadPhase::chooseGrid() {
   m_statistics.cellSize = h;
 }
 
-bool BroadPhase::accept(const std::vector<SegmentProxy>& proxies, int i, int j) const {
-  const SegmentProxy& pi = proxies[static_cast<std::size_t>(i)];
-  const SegmentProxy& pj = proxies[static_cast<std::size_t>(j)];
-  if (pi.line == pj.line) {
-    if (!m_options.selfContact) return false;
-    if (std::abs(static_cast<std::int64_t>(pi.element) - pj.element) <= m_options.selfContactSkip) return false;
-  }
-  return true;
+bool BroadPhase::accept(int i, int j) const {
+  const Box& bi = m_boxes[static_cast<std::size_t>(i)];
+  const Box& bj = m_boxes[static_cast<std::size_t>(j)];
+  if (bi.line != bj.line) return true;
+  return m_options.selfContact &&
+         std::abs(static_cast<std::int64_t>(bi.element) - bj.element) > m_options.selfContactSkip;
 }
 
 void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector<CandidatePair>& out) {
   out.clear();
   m_statistics = BroadPhaseStatistics{};
   m_statistics.proxies = proxies.size();
-  if (proxies.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+  // Entry counts are 32-bit: at most 2^25 proxies of at most kMaxCellsPerBox = 64 entries each.
+  if (proxies.size() > (std::size_t{1} << 25)) {
     throw Error("BroadPhase: too many proxies (" + std::to_string(proxies.size()) + ")");
   }
   buildBoxes(proxies);
@@ -113,19 +116,20 @@ void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector
   auto overlap = [this](int i, int j) {
     const Box& bi = m_boxes[static_cast<std::size_t>(i)];
     const Box& bj = m_boxes[static_cast<std::size_t>(j)];
-    return bi.lo.x() <= bj.hi.x() && bj.lo.x() <= bi.hi.x() && bi.lo.y() <= bj.hi.y() && bj.lo.y() <= bi.hi.y() &&
-           bi.lo.z() <= bj.hi.z() && bj.lo.z() <= bi.hi.z();
+    return bi.lo.x() <= bj.hi.x() && bj.lo.x() <= bi.hi.x() && bi.lo.y() <= bj.hi.y() &&
+           bj.lo.y() <= bi.hi.y() && bi.lo.z() <= bj.hi.z() && bj.lo.z() <= bi.hi.z();
   };
-  auto filterAccepts = [&](int i, int j) {
+  auto filterAccepts = [this](int i, int j) {
     if (!m_options.linePairFilter) return true;
-    const int lineI = proxies[static_cast<std::size_t>(i)].line;
-    const int lineJ = proxies[static_cast<std::size_t>(j)].line;
+    const int lineI = m_boxes[static_cast<std::size_t>(i)].line;
+    const int lineJ = m_boxes[static_cast<std::size_t>(j)].line;
     return m_options.linePairFilter(std::min(lineI, lineJ), std::max(lineI, lineJ));
   };
   auto cellOf = [this](const Vec3& x) {
     std::array<std::int64_t, 3> c{};
     for (int k = 0; k < 3; ++k) {
-      c[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(std::floor((x[k] - m_origin[k]) * m_invCell));
+      c[static_cast<std::size_t>(k)] =
+          static_cast<std::int64_t>(std::floor((x[k] - m_origin[k]) * m_invCell));
     }
     return c;
   };
@@ -188,7 +192,7 @@ void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector
       for (std::size_t v = u + 1; v < end; ++v) {
         if (m_sorted[v].key != key) continue;  // another cell hashed to the same bucket
         const int j = m_sorted[v].proxy;
-        if (!accept(proxies, i, j)) continue;
+        if (!accept(i, j)) continue;
         ++boxTests;
         if (!overlap(i, j)) continue;
         const std::array<std::int64_t, 3>& cj = m_cellLo[static_cast<std::size_t>(j)];
@@ -203,7 +207,7 @@ void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector
   for (const int o : m_oversized) {
     for (int j = 0; j < n; ++j) {
       if (j == o || (m_isOversized[static_cast<std::size_t>(j)] && j < o)) continue;
-      if (!accept(proxies, o, j)) continue;
+      if (!accept(o, j)) continue;
       ++boxTests;
       if (!overlap(o, j) || !filterAccepts(o, j)) continue;
       out.push_back({std::min(o, j), std::max(o, j)});

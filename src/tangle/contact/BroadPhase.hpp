@@ -4,7 +4,7 @@
 /// a contact radius) whose inflated axis-aligned bounding boxes overlap. Only these pairs go to
 /// the narrow phase (geometry::segmentDistance).
 ///
-/// Method: uniform grid (spatial hashing by sorting), chosen over sort-and-sweep on one axis.
+/// Method: uniform grid (spatial hashing), chosen over sort-and-sweep on one axis.
 /// Offshore lines are long and spread over the whole field: projected on any one axis (even the
 /// one of largest spread) the boxes of a 2 km field overlap in large numbers, so the sweep tests
 /// ~n^2 / (field size / element size) one-axis overlaps, quadratic in n for a given field. The grid
@@ -17,8 +17,8 @@
 ///     in the cell that holds the minimum corner of the intersection of the two boxes, so it is
 ///     reported once without a set of reported pairs;
 ///  4. the pairs are sorted (first, second) so the output does not depend on the grid.
-/// Cost O(n + k log k) for k reported pairs when the boxes are of similar size (O(n log n) is the
-/// bound asked for; the final sort of the k pairs is the only n log n-like term). The cell edge
+/// Cost O(n + k log k) for k reported pairs when the boxes are of similar size (the final sort of
+/// the pairs is the only super-linear term; measured growth in bench_contact_search). The cell edge
 /// h defaults to kCellSizeFactor times the mean of the largest extent of the boxes. Boxes touching
 /// more than kMaxCellsPerBox cells are kept out of the grid and tested against every box (O(n)
 /// each); a few very long elements are cheap, but many of them make the search quadratic.
@@ -42,8 +42,8 @@
 namespace tangle::contact {
 
 /// Default ratio of the grid cell edge to the mean of the largest box extent [-] (tuned on the
-/// benchmark bench_contact_search: 1 to 2 are within 15 %).
-inline constexpr double kCellSizeFactor = 1.5;
+/// benchmark bench_contact_search: 1.5 to 3 are within 20 % of each other, 1 is 1.6 times slower).
+inline constexpr double kCellSizeFactor = 2.0;
 /// Boxes that touch more cells than this are tested against every box instead of being put in
 /// the grid [-].
 inline constexpr std::int64_t kMaxCellsPerBox = 64;
@@ -96,6 +96,8 @@ struct BroadPhaseOptions {
   /// Optional filter on line pairs (empty: every pair of lines is considered).
   LinePairFilter linePairFilter;
   /// Grid cell edge [m] (> 0), or 0 for automatic (kCellSizeFactor x mean largest box extent).
+  /// Enlarged if needed so that the grid has at most 2^20 cells per axis. Affects the cost only,
+  /// never the pairs found.
   double cellSize = 0.0;
 };
 
@@ -107,7 +109,8 @@ struct BroadPhaseStatistics {
   std::size_t cellEntries = 0;
   /// Number of proxies too large for the grid, tested against all others [-].
   std::size_t oversizedProxies = 0;
-  /// Number of pairs of boxes tested for overlap [-].
+  /// Number of pairs of boxes tested for overlap, after the same-line rules; a pair sharing
+  /// several cells is counted once per cell [-].
   std::size_t boxTests = 0;
   /// Number of pairs reported [-].
   std::size_t pairs = 0;
@@ -136,8 +139,10 @@ class BroadPhase {
   const BroadPhaseStatistics& statistics() const { return m_statistics; }
 
  private:
+  // Inflated box of a proxy, with the proxy's line and element (kept together for locality).
   struct Box {
     Vec3 lo, hi;
+    int line, element;
   };
   struct CellEntry {
     std::uint64_t key;
@@ -146,7 +151,7 @@ class BroadPhase {
 
   void buildBoxes(const std::vector<SegmentProxy>& proxies);
   void chooseGrid();
-  bool accept(const std::vector<SegmentProxy>& proxies, int i, int j) const;
+  bool accept(int i, int j) const;
 
   BroadPhaseOptions m_options;
   BroadPhaseStatistics m_statistics;
@@ -155,8 +160,8 @@ class BroadPhase {
   std::vector<std::array<std::int64_t, 3>> m_cellLo;  // cell coordinates of each box's lo corner
   std::vector<CellEntry> m_entries;
   std::vector<CellEntry> m_sorted;           // m_entries grouped by hash bucket
-  std::vector<std::size_t> m_bucketStart;    // first entry of each bucket in m_sorted
-  std::vector<std::size_t> m_bucketFill;     // scatter cursor of each bucket
+  std::vector<std::uint32_t> m_bucketStart;  // first entry of each bucket in m_sorted
+  std::vector<std::uint32_t> m_bucketFill;   // scatter cursor of each bucket
   std::vector<int> m_oversized;
   std::vector<char> m_isOversized;
   // Grid of the current call.

@@ -97,12 +97,12 @@ Candidate boundaryMinimum(const Quadratic& q, const Evaluator& eval) {
 /// x = -d (t = 0) to x = -d - b (t = 1). The middle of the overlap of the two intervals is returned,
 /// or the nearest end points when they do not overlap.
 Candidate parallelMinimum(const Quadratic& q, const Evaluator& eval) {
-  if (q.a == 0.0 && q.c == 0.0) return eval(0.0, 0.0);             // point - point
-  if (q.a == 0.0) return eval(0.0, clampedRatio(-q.e, q.c));      // point - segment
-  if (q.c == 0.0) return eval(clampedRatio(-q.d, q.a), 0.0);      // segment - point
-  if (q.b == 0.0) return boundaryMinimum(q, eval);                // only on underflow of b^2 ~ a c
-  const double x0 = -q.d;        // x of q0
-  const double x1 = -q.d - q.b;  // x of q1
+  if (q.a == 0.0 && q.c == 0.0) return eval(0.0, 0.0);        // point - point
+  if (q.a == 0.0) return eval(0.0, clampedRatio(-q.e, q.c));  // point - segment
+  if (q.c == 0.0) return eval(clampedRatio(-q.d, q.a), 0.0);  // segment - point
+  if (q.b == 0.0) return boundaryMinimum(q, eval);            // only on underflow of b^2 ~ a c
+  const double x0 = -q.d;                                     // x of q0
+  const double x1 = -q.d - q.b;                               // x of q1
   const double lo = std::max(0.0, std::min(x0, x1));
   const double hi = std::min(q.a, std::max(x0, x1));
   double x;  // x of the chosen pair on segment 0
@@ -110,7 +110,7 @@ Candidate parallelMinimum(const Quadratic& q, const Evaluator& eval) {
     x = 0.5 * (lo + hi);
   } else if (lo > q.a) {  // segment 1 lies beyond the end p1 of segment 0
     x = q.a;
-  } else {                // segment 1 lies before the start p0 of segment 0
+  } else {  // segment 1 lies before the start p0 of segment 0
     x = 0.0;
   }
   const double xOnSegment1 = std::clamp(x, std::min(x0, x1), std::max(x0, x1));

@@ -578,7 +578,7 @@ model::EndMotionSpec readMotion(const Value& v) {
 
 model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
   using model::EndKind;
-  const Map m(v, {"type", "position", "vessel", "motion"});
+  const Map m(v, {"type", "position", "vessel", "motion", "release"});
   model::EndSpec end;
   end.sourceLine = v.line();
   const Value type = m.get("type", "one of: anchored, fixed, pinned, free, vessel");
@@ -604,6 +604,14 @@ model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
           fmt::format("the end is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth); "
                       "expected z >= {}",
                       numberText(end.position.z()), numberText(seabedZ), numberText(seabedZ)));
+  }
+
+  if (const std::optional<Value> release = m.find("release")) {
+    if (end.kind == EndKind::Free || end.kind == EndKind::Vessel)
+      release->fail(fmt::format("'release' applies only to held ends (anchored, fixed, pinned); this end is {}",
+                                typeName));
+    for (const Value& axis : release->items(1))
+      end.release[static_cast<std::size_t>(axis.choice<int>({{"x", 0}, {"y", 1}, {"z", 2}}))] = true;
   }
 
   if (const std::optional<Value> motion = m.find("motion")) {
@@ -731,6 +739,39 @@ void readOutput(const Value& v, ModelSpec& spec) {
   spec.output.plots = m.boolean("plots", d.plots);
 }
 
+void readContact(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"pairs", "self_contact", "stiffness", "restitution", "model", "friction_coefficient",
+                  "friction_velocity", "clearance_margin"});
+  const model::ContactSpec d;
+  model::ContactSpec& c = spec.contact;
+  c.enabled = true;
+  if (const std::optional<Value> pairs = m.find("pairs")) {
+    for (const Value& item : pairs->items(1)) {
+      const std::vector<Value> names = item.items(2);
+      if (names.size() != 2) item.expected("a pair of line names [line_a, line_b]");
+      std::pair<std::string, std::string> pair{names[0].text("a line name"), names[1].text("a line name")};
+      for (const Value& name : names) {
+        const std::string n = name.text("a line name");
+        const bool known = std::any_of(spec.lines.begin(), spec.lines.end(),
+                                       [&](const model::LineSpec& l) { return l.name == n; });
+        if (!known) name.fail("unknown line '" + n + "'");
+      }
+      if (pair.first == pair.second && !m.boolean("self_contact", d.selfContact))
+        item.fail("a line paired with itself needs self_contact: true");
+      c.pairs.push_back(pair);
+    }
+  }
+  c.selfContact = m.boolean("self_contact", d.selfContact);
+  c.stiffness = m.number("stiffness", d.stiffness, nonNegative().withHint("0 chooses it from the line properties"));
+  c.restitution = m.number("restitution", d.restitution, closed(0.0, 1.0));
+  if (const std::optional<Value> model = m.find("model"))
+    c.model = model->choice<model::ImpactModel>(
+        {{"penalty", model::ImpactModel::Penalty}, {"impulse", model::ImpactModel::Impulse}});
+  c.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
+  c.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
+  c.clearanceMargin = m.number("clearance_margin", d.clearanceMargin, positive());
+}
+
 /// A top-level block of the model file.
 struct TopLevelBlock {
   std::string_view key;
@@ -748,6 +789,7 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"lines", true, "a list of lines {name, end_a, end_b, sections, ...}", readLines},
     TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
     TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},
+    TopLevelBlock{"contact", false, "a map of line-to-line contact settings", readContact},
     TopLevelBlock{"output", false, "a map of output settings", readOutput},
 };
 

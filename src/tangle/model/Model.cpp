@@ -100,6 +100,23 @@ void Model::buildLine(int lineIndex) {
 
   constrainEnd(line.firstNode, ls.endA);
   constrainEnd(line.lastNode(), ls.endB);
+  // A beam line whose ends both leave rotations free (pinned, anchored or free ends) can twist as a
+  // rigid body about its own axis: a zero-stiffness mechanism. Restrain the rotation component along
+  // the global axis closest to the chord at a held end A (the "torsion lock" of 3D frame supports).
+  const auto heldInTranslation = [](EndKind k) { return k == EndKind::Anchored || k == EndKind::Pinned; };
+  const int nodeA = line.firstNode;
+  if (m_dofs.hasRotations(nodeA) && ls.endA.kind != EndKind::Fixed && ls.endB.kind != EndKind::Fixed &&
+      ls.endA.kind != EndKind::Vessel && ls.endB.kind != EndKind::Vessel) {
+    const int lockNode = heldInTranslation(ls.endA.kind) ? nodeA
+                         : heldInTranslation(ls.endB.kind) && m_dofs.hasRotations(line.lastNode()) ? line.lastNode()
+                                                                                                    : -1;
+    if (lockNode >= 0) {
+      const Vec3 chord = (ls.endB.position - ls.endA.position).cwiseAbs();
+      int axis = 0;
+      chord.maxCoeff(&axis);
+      m_dofs.constrain(m_dofs.firstDof(lockNode) + 3 + axis);
+    }
+  }
   m_lines.push_back(std::move(line));
 }
 
@@ -107,11 +124,13 @@ void Model::constrainEnd(int node, const EndSpec& end) {
   const int first = m_dofs.firstDof(node);
   switch (end.kind) {
     case EndKind::Fixed:
-      for (int k = 0; k < m_dofs.dofCount(node); ++k) m_dofs.constrain(first + k);
+      for (int k = 0; k < m_dofs.dofCount(node); ++k)
+        if (k >= 3 || !end.release[k]) m_dofs.constrain(first + k);
       break;
     case EndKind::Anchored:
     case EndKind::Pinned:
-      for (int k = 0; k < 3; ++k) m_dofs.constrain(first + k);
+      for (int k = 0; k < 3; ++k)
+        if (!end.release[k]) m_dofs.constrain(first + k);
       break;
     case EndKind::Free:
       break;

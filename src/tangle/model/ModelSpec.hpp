@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
@@ -82,6 +83,7 @@ struct EndSpec {
   Vec3 position = Vec3::Zero();  ///< global position [m] (vessel axes [m] for kind Vessel)
   std::string vessel;            ///< vessel name, for kind Vessel
   EndMotionSpec motion;          ///< prescribed motion (dynamics), for Fixed/Pinned/Anchored ends
+  std::array<bool, 3> release{false, false, false};  ///< global translations x, y, z left free at a held end (roller)
   int sourceLine = 0;            ///< line of the input file that defined this end (for messages)
 };
 
@@ -138,6 +140,26 @@ struct DynamicSpec {
   double tolerance = 1.0e-6;    ///< residual tolerance relative to the reference force [-]
 };
 
+/// How an impact between lines is resolved.
+enum class ImpactModel {
+  Penalty,  ///< penalty spring + dashpot tuned to the coefficient of restitution (default)
+  Impulse   ///< the seed paper's impulse model: velocity jump from momentum + restitution at impact,
+            ///< elastic penalty spring for sustained contact
+};
+
+/// Line-to-line contact settings.
+struct ContactSpec {
+  bool enabled = false;          ///< contact block present
+  std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs that may touch (empty: all pairs)
+  bool selfContact = false;      ///< a line may touch itself
+  double stiffness = 0.0;        ///< penalty stiffness per contact point [N/m]; 0: automatic from line properties
+  double restitution = 0.5;      ///< coefficient of restitution e in [0, 1] [-]
+  ImpactModel model = ImpactModel::Penalty;
+  double frictionCoefficient = 0.0;  ///< Coulomb friction between lines [-]
+  double frictionVelocity = 0.01;    ///< friction regularisation velocity [m/s]
+  double clearanceMargin = 50.0;     ///< clearances larger than this are reported as "> margin" [m]
+};
+
 /// Result output settings.
 struct OutputSpec {
   bool vtk = true;   ///< write a ParaView .pvd/.vtu series
@@ -154,6 +176,7 @@ struct ModelSpec {
   std::vector<LineSpec> lines;
   StaticSpec statics;
   DynamicSpec dynamics;
+  ContactSpec contact;
   OutputSpec output;
 };
 

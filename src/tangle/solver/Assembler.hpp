@@ -36,6 +36,11 @@ class LoadContributor {
   /// Adds mf * M_contributor to matrix (if not null) and M_contributor * acceleration to out (if not null).
   virtual void addMass(const model::State& /*state*/, double /*mf*/, SystemMatrix* /*matrix*/,
                        const VecX* /*acceleration*/, VecX* /*out*/) {}
+  /// A new step (or load increment, or retry of a step) starts: reset per-step active sets.
+  virtual void beginStep() {}
+  /// Newton has converged with the current active set; return true if the contributor changed it
+  /// (e.g. released a contact that carries tension), so the caller must iterate again.
+  virtual bool updateActiveSet() { return false; }
 };
 
 /// Structural elements, weight and buoyancy, point attachments and the seabed; plus any number of
@@ -49,6 +54,17 @@ class Assembler {
 
   /// F (full DOFs) and, if requested, H (equations). `force` is resized and zeroed.
   void assemble(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+
+  /// Forwards LoadContributor::beginStep to every contributor.
+  void beginStep() {
+    for (LoadContributor* c : m_contributors) c->beginStep();
+  }
+  /// Forwards LoadContributor::updateActiveSet; true if any contributor changed its active set.
+  bool updateActiveSet() {
+    bool changed = false;
+    for (LoadContributor* c : m_contributors) changed = c->updateActiveSet() || changed;
+    return changed;
+  }
 
   /// Adds mf * M to matrix and M * acceleration to out (full DOFs); M is the lumped structural mass
   /// plus whatever mass the contributors add (added mass).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "tangle/core/Error.hpp"
 #include "tangle/solver/LinearSolver.hpp"
 #include <cstdlib>
 #include <iostream>
@@ -53,7 +54,12 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     model::State trial = lastGood;
     StaticResult attempt;
     const int allowed = std::min(budget, target >= 1.0 && increment >= 1.0 ? budget / 2 : 60);
-    const bool ok = newton(trial, target, time, allowed, attempt);
+    bool ok = false;
+    try {
+      ok = newton(trial, target, time, allowed, attempt);
+    } catch (const Error&) {
+      ok = false;  // an element could not be evaluated at the start of this increment
+    }
     budget -= attempt.iterations;
     result.iterations += attempt.iterations;
     result.residual = attempt.residual;
@@ -121,6 +127,7 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
   LinearSolver solver;
   VecX force;
   VecX r(neq);
+  m_assembler->beginStep();
   m_assembler->assemble(state, request, force, &matrix);
   double norm = residualNorm(force, &result.worstNode);
   result.residual = norm;
@@ -159,7 +166,11 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
     VecX full = VecX::Zero(dofs.fullDofCount());
     for (int i = 0; i < neq; ++i) full[eqDofs[i]] = scale * dq[i];
     state.applyIncrement(dofs, full);
-    m_assembler->assemble(state, request, force, &matrix);
+    try {
+      m_assembler->assemble(state, request, force, &matrix);
+    } catch (const Error&) {
+      return false;  // an element folded on itself: this load increment is too large
+    }
     const double previous = norm;
     norm = residualNorm(force, &result.worstNode);
     result.residual = norm;
@@ -171,7 +182,13 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
     // reached round-off level (it no longer halves; stiff elements carry force noise ~ EA * 1e-16).
     if (norm <= std::max(m_settings.tolerance * fref, 10.0 * m_assembler->roundoffForce()) &&
         (step <= m_settings.displacementTolerance * lref || norm <= 1e-9 * fref || norm > 0.5 * previous)) {
-      return true;
+      if (!m_assembler->updateActiveSet()) return true;
+      // A contact was released: the residual changed, iterate on.
+      m_assembler->assemble(state, request, force, &matrix);
+      norm = residualNorm(force, &result.worstNode);
+      best = norm;
+      growing = 0;
+      continue;
     }
     // Divergence watch: Newton may be non-monotone at first, but a residual that keeps growing means
     // the load increment is too large.

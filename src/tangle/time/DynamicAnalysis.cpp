@@ -44,14 +44,25 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   double dt = nominal;
   int successes = 0;
   const double eps = 1e-9 * nominal;
+  model::State before;
+  double lastStep = nominal;  // the step grows at most twofold from one step to the next
   while (state.time < duration - eps) {
-    double h = std::min(dt, duration - state.time);
+    double h = std::min({dt, duration - state.time, 2.0 * lastStep});
     if (m_limiter) h = std::min(h, std::max(m_settings.minTimeStep, m_limiter(state)));
     // Land exactly on output times.
     if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
     if (h <= eps) h = std::min(dt, duration - state.time);
-    const StepOutcome o = stepper.step(state, h);
+    if (m_validator) before = state;
+    StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
+    bool rejected = false;
+    if (o.converged && m_validator && !m_validator(before, state)) {
+      // Converged but not acceptable (e.g. lines passed through each other): undo and cut.
+      stepper.restore(before);
+      state = before;
+      o.converged = false;
+      rejected = true;
+    }
     if (!o.converged) {
       ++result.cutbacks;
       dt = 0.5 * h;
@@ -64,15 +75,19 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
           where = fmt::format("line '{}' node {} (arc length {:.2f} m)", model.lines()[line].name, local,
                               model.lines()[line].arcLength[local]);
         }
-        result.message = fmt::format(
-            "dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the minimum time step "
-            "{:.3g} s; largest out-of-balance force {:.4g} N at {}",
-            state.time, m_settings.minTimeStep, o.residual, where);
+        result.message =
+            rejected ? fmt::format("dynamic analysis stopped at t = {:.6g} s: lines pass through each other even "
+                                   "with the minimum time step {:.3g} s",
+                                   state.time, m_settings.minTimeStep)
+                     : fmt::format("dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the "
+                                   "minimum time step {:.3g} s; largest out-of-balance force {:.4g} N at {}",
+                                   state.time, m_settings.minTimeStep, o.residual, where);
         break;
       }
       continue;
     }
     ++result.steps;
+    lastStep = h;
     if (m_hook) m_hook(state, h);
     if (++successes >= 4 && dt < nominal) {
       dt = std::min(nominal, 2.0 * dt);

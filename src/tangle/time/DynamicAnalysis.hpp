@@ -33,14 +33,19 @@ class DynamicAnalysis {
   using Observer = std::function<void(const model::State&, const VecX& force)>;
   /// Returns the largest step [s] allowed from this state (e.g. contact approach), or +inf.
   using StepLimiter = std::function<double(const model::State&)>;
-  /// Called after each accepted step (path-dependent models commit their state here).
-  using StepHook = std::function<void(const model::State&, double dt)>;
+  /// Called after each accepted step (path-dependent models commit their state here; an impact model
+  /// may change the velocities).
+  using StepHook = std::function<void(model::State&, double dt)>;
+  /// Returns false when a converged step must still be rejected (e.g. two lines passed through each
+  /// other); the step is then cut like a Newton failure.
+  using StepValidator = std::function<bool(const model::State& before, const model::State& after)>;
 
   DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings);
 
   void setObserver(Observer observer) { m_observer = std::move(observer); }
   void setStepLimiter(StepLimiter limiter) { m_limiter = std::move(limiter); }
   void setStepHook(StepHook hook) { m_hook = std::move(hook); }
+  void setStepValidator(StepValidator validator) { m_validator = std::move(validator); }
   /// Print a progress line (simulated time, real-time factor) to stderr about every 2 s of wall time.
   void setProgress(bool on) { m_progress = on; }
 
@@ -53,6 +58,7 @@ class DynamicAnalysis {
   Observer m_observer;
   StepLimiter m_limiter;
   StepHook m_hook;
+  StepValidator m_validator;
   bool m_progress = false;
 };
 

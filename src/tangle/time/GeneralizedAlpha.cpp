@@ -1,7 +1,12 @@
 #include "tangle/time/GeneralizedAlpha.hpp"
 
+#include "tangle/core/Error.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <iostream>
 
 namespace tangle::time {
 
@@ -37,11 +42,13 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_settings(settings),
       m_prescribed(std::move(prescribed)),
       m_params(AlphaParameters::from(settings.integrator, settings.spectralRadius)),
-      m_matrix(assembler.model().dofs()) {
+      m_matrix(assembler.model().dofs()),
+      m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr) {
   const model::DofMap& dofs = assembler.model().dofs();
   m_prescribedDof.assign(dofs.fullDofCount(), false);
   for (const PrescribedNode& p : m_prescribed)
-    for (int k = 0; k < 3; ++k) m_prescribedDof[dofs.firstDof(p.node) + k] = true;
+    for (int k = 0; k < 3; ++k)
+      if (dofs.equation(dofs.firstDof(p.node) + k) < 0) m_prescribedDof[dofs.firstDof(p.node) + k] = true;
 }
 
 void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
@@ -49,9 +56,12 @@ void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
   for (const PrescribedNode& p : m_prescribed) {
     const MotionValue m = p.motion.at(t);
     const int d = dofs.firstDof(p.node);
-    state.position[p.node] = p.basePosition + m.displacement;
-    state.velocity.segment<3>(d) = m.velocity;
-    state.acceleration.segment<3>(d) = m.acceleration;
+    for (int k = 0; k < 3; ++k) {
+      if (dofs.equation(d + k) >= 0) continue;  // a released direction (roller) moves freely
+      state.position[p.node][k] = p.basePosition[k] + m.displacement[k];
+      state.velocity[d + k] = m.velocity[k];
+      state.acceleration[d + k] = m.acceleration[k];
+    }
   }
 }
 
@@ -100,14 +110,17 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   const VecX& v0 = start.velocity;
   const VecX& a0 = start.acceleration;
 
-  // Increment over the step per full DOF; predictor: constant acceleration.
-  VecX dq = dt * v0 + 0.5 * dt * dt * a0;
+  // Increment over the step per full DOF; predictor: constant velocity. (A constant-acceleration
+  // predictor extrapolates the large accelerations of an impact resolved with tiny steps far beyond
+  // the next, longer step.)
+  VecX dq = dt * v0;
   // Prescribed DOFs follow their motion exactly.
   model::State target = start;
   applyPrescribed(target, t1);
   for (const PrescribedNode& pn : m_prescribed) {
     const int d = dofs.firstDof(pn.node);
-    dq.segment<3>(d) = target.position[pn.node] - start.position[pn.node];
+    for (int k = 0; k < 3; ++k)
+      if (m_prescribedDof[d + k]) dq[d + k] = target.position[pn.node][k] - start.position[pn.node][k];
   }
   // Other constrained DOFs stay where they are.
   for (int dof = 0; dof < nfull; ++dof)
@@ -123,6 +136,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
 
   StepOutcome outcome;
   VecX combo(nfull), inertia(nfull), r(neq);
+  m_assembler->beginStep();
   for (int it = 0; it < m_settings.maxIterations; ++it) {
     outcome.iterations = it + 1;
     state = start;
@@ -139,7 +153,14 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     }
     applyPrescribed(state, t1);
 
-    m_assembler->assemble(state, request, m_force, &m_matrix);
+    try {
+      m_assembler->assemble(state, request, m_force, &m_matrix);
+    } catch (const Error& e) {
+      // An element cannot be evaluated at this iterate (e.g. folded back on itself): the step is too
+      // long; report a failed step so the controller cuts it.
+      if (m_debug) std::cerr << "    assembly failed: " << e.what() << "\n";
+      break;
+    }
     // Every mass term is M times one combination of accelerations and velocities.
     combo = (1.0 - p.alphaM) * state.acceleration + p.alphaM * a0;
     if (rayleighAlpha > 0.0) combo += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity + p.alphaF * v0);
@@ -150,14 +171,27 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       r[i] = inertia[dof] + (1.0 - p.alphaF) * m_force[dof] + p.alphaF * m_forceOld[dof];
     }
     outcome.residual = residualNorm(r, &outcome.worstNode);
+    if (m_debug)
+      std::cerr << fmt::format("    t {:.6f} dt {:.3e} it {:2d} |r| {:.4e} worst node {}\n", t1, dt, it, outcome.residual,
+                               outcome.worstNode);
     if (!std::isfinite(outcome.residual)) break;
     if (outcome.residual <= std::max(m_settings.tolerance * fref, 10.0 * m_assembler->roundoffForce())) {
-      outcome.converged = true;
-      break;
+      // Converged for this active set; if a contact had to be released, iterate on.
+      if (!m_assembler->updateActiveSet()) {
+        outcome.converged = true;
+        break;
+      }
+      continue;
     }
     m_matrix.build(m_k);
     if (!m_solver.factorize(m_k)) break;
     const VecX delta = m_solver.solve(-r);
+    if (m_debug) {
+      Eigen::Index imax = 0;
+      r.cwiseAbs().maxCoeff(&imax);
+      std::cerr << fmt::format("      max |r| at eq {} (full dof {}), |delta| {:.3e}, relres {:.3e}\n", imax,
+                               eqDofs[imax], delta.cwiseAbs().maxCoeff(), (m_k * delta + r).norm() / r.norm());
+    }
     for (int i = 0; i < neq; ++i) dq[eqDofs[i]] += delta[i];
   }
   if (!outcome.converged) {

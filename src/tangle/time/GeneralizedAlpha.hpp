@@ -62,6 +62,8 @@ class GeneralizedAlpha {
   StepOutcome step(model::State& state, double dt);
 
   const AlphaParameters& parameters() const { return m_params; }
+  /// Undoes the last accepted step: `previous` is the state before it (F_n is re-evaluated there).
+  void restore(model::State& previous) { initialize(previous); }
   /// Out-of-balance force F at the last accepted state (full DOFs) [N]; its values at constrained
   /// DOFs are the support reactions.
   const VecX& lastForce() const { return m_forceOld; }
@@ -80,6 +82,7 @@ class GeneralizedAlpha {
   VecX m_forceOld;  // F(q_n, v_n, t_n)
   VecX m_force;
   std::vector<bool> m_prescribedDof;
+  bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
 };
 
 }  // namespace tangle::time

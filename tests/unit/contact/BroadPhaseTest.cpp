@@ -2,8 +2,6 @@
 /// random layouts (replayable), the exclusion rules, the line-pair filter, the margin, the input
 /// checks and the cost (box tests per proxy bounded at constant density).
 
-#include "tangle/contact/BroadPhase.hpp"
-
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tangle/contact/BroadPhase.hpp"
 #include "tangle/core/Error.hpp"
 
 namespace tangle::contact {
@@ -24,14 +23,16 @@ namespace {
 /// [min(a,b) - w, max(a,b) + w], w = radius + 0.5 margin, overlap with <= on all axes, then the
 /// exclusion rules and the filter. Same floating-point expressions as the specification, so the
 /// comparison is exact (no tolerance).
-std::vector<CandidatePair> bruteForcePairs(const std::vector<SegmentProxy>& proxies, const BroadPhaseOptions& o) {
+std::vector<CandidatePair> bruteForcePairs(const std::vector<SegmentProxy>& proxies,
+                                           const BroadPhaseOptions& o) {
   std::vector<CandidatePair> pairs;
   const int n = static_cast<int>(proxies.size());
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       const SegmentProxy& p = proxies[static_cast<std::size_t>(i)];
       const SegmentProxy& q = proxies[static_cast<std::size_t>(j)];
-      if (p.line == q.line && (!o.selfContact || std::abs(p.element - q.element) <= o.selfContactSkip)) continue;
+      if (p.line == q.line && (!o.selfContact || std::abs(p.element - q.element) <= o.selfContactSkip))
+        continue;
       const double wp = p.radius + 0.5 * o.margin;
       const double wq = q.radius + 0.5 * o.margin;
       bool overlap = true;
@@ -245,8 +246,8 @@ TEST(BroadPhase, LinePairFilterSelectsLines) {
     return lineA != 1 && lineB != 1;
   };
   BroadPhase no1(options);
-  const std::vector<SegmentProxy> reversedIds{{2, 0, p[0].a, p[0].b, 0.1}, {1, 0, p[1].a, p[1].b, 0.1},
-                                              {0, 0, p[2].a, p[2].b, 0.1}};
+  const std::vector<SegmentProxy> reversedIds{
+      {2, 0, p[0].a, p[0].b, 0.1}, {1, 0, p[1].a, p[1].b, 0.1}, {0, 0, p[2].a, p[2].b, 0.1}};
   no1.findPairs(reversedIds, pairs);
   EXPECT_TRUE(ordered);
   EXPECT_TRUE(pairs == (std::vector<CandidatePair>{{0, 2}}));
@@ -285,10 +286,14 @@ TEST(BroadPhase, InvalidOptionsAndProxiesThrow) {
   BroadPhase broadPhase;
   std::vector<CandidatePair> pairs;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  EXPECT_THROW(broadPhase.findPairs({{0, 0, Vec3(nan, 0, 0), Vec3(1, 0, 0), 0.1}, {1, 0, Vec3::Zero(), Vec3::UnitY(), 0.1}}, pairs),
-               Error);
-  EXPECT_THROW(broadPhase.findPairs({{0, 0, Vec3::Zero(), Vec3(1, 0, 0), -0.1}, {1, 0, Vec3::Zero(), Vec3::UnitY(), 0.1}}, pairs),
-               Error);
+  EXPECT_THROW(
+      broadPhase.findPairs(
+          {{0, 0, Vec3(nan, 0, 0), Vec3(1, 0, 0), 0.1}, {1, 0, Vec3::Zero(), Vec3::UnitY(), 0.1}}, pairs),
+      Error);
+  EXPECT_THROW(
+      broadPhase.findPairs(
+          {{0, 0, Vec3::Zero(), Vec3(1, 0, 0), -0.1}, {1, 0, Vec3::Zero(), Vec3::UnitY(), 0.1}}, pairs),
+      Error);
 }
 
 TEST(BroadPhase, BoxTestsPerProxyStayBoundedAtConstantDensity) {

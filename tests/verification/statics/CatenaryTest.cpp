@@ -75,9 +75,9 @@ TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
 
 INSTANTIATE_TEST_SUITE_P(Spans, ElasticCatenaryWithSeabed,
                          ::testing::Values(CatenaryCase{270.0, 60}, CatenaryCase{260.0, 150}),
-                         [](const ::testing::TestParamInfo<CatenaryCase>& info) {
-                           return "span" + std::to_string(static_cast<int>(info.param.span)) + "m_" +
-                                  std::to_string(info.param.elements) + "elements";
+                         [](const ::testing::TestParamInfo<CatenaryCase>& p) {
+                           return "span" + std::to_string(static_cast<int>(p.param.span)) + "m_" +
+                                  std::to_string(p.param.elements) + "elements";
                          });
 
 }  // namespace

@@ -1,0 +1,585 @@
+#include "tangle/contact/LineContact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <cstdlib>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "tangle/contact/ContactLaw.hpp"
+#include "tangle/geometry/SegmentDistance.hpp"
+
+namespace tangle::contact {
+
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Automatic contact stiffness: a tenth of the axial stiffness EA / L of the softest element of the
+/// line. Penetration under a force F is then F L / (0.1 EA), i.e. ten times the elastic stretch of one
+/// element under F: small against the diameters for any force the line itself can carry, while the
+/// contact period stays well above typical time steps for chain and wire (see docs/theory.md).
+constexpr double kAutoStiffnessFactor = 0.1;
+}  // namespace
+
+LineContact::LineContact(const model::Model& model, const model::ContactSpec& spec, double timeStep)
+    : m_model(&model),
+      m_spec(spec),
+      m_timeStep(timeStep),
+      m_zeta(dampingRatioForRestitution(spec.restitution)),
+      m_debug(std::getenv("TANGLE_DEBUG_CONTACT") != nullptr) {
+  const int nLines = static_cast<int>(model.lines().size());
+  m_lineEnabled.resize(nLines);
+  m_lineStiffness.assign(nLines, kInf);
+  for (int l = 0; l < nLines; ++l) {
+    const model::Line& line = model.lines()[l];
+    m_lineEnabled[l] = line.spec->contact;
+    for (int e = 0; e < line.elementCount; ++e) {
+      const model::LineElement& el = model.elements()[line.firstElement + e];
+      m_lineStiffness[l] =
+          std::min(m_lineStiffness[l], kAutoStiffnessFactor * el.type->axialStiffness / el.restLength);
+    }
+  }
+  m_allowed.assign(nLines, std::vector<bool>(nLines, false));
+  if (spec.pairs.empty()) {
+    for (int a = 0; a < nLines; ++a)
+      for (int b = 0; b < nLines; ++b)
+        m_allowed[a][b] = m_lineEnabled[a] && m_lineEnabled[b] && (a != b || spec.selfContact);
+  } else {
+    auto index = [&](const std::string& name) {
+      for (int l = 0; l < nLines; ++l)
+        if (model.lines()[l].name == name) return l;
+      return -1;
+    };
+    for (const auto& [first, second] : spec.pairs) {
+      const int a = index(first), b = index(second);
+      if (a < 0 || b < 0) continue;  // the reader has already rejected unknown names
+      m_allowed[a][b] = m_allowed[b][a] = true;
+    }
+  }
+  m_radius.reserve(model.elements().size());
+  for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
+
+  BroadPhaseOptions options;
+  options.selfContact = spec.selfContact;
+  options.selfContactSkip = 1;
+  options.linePairFilter = [this](int a, int b) { return pairAllowed(a, b); };
+  m_broadPhase = BroadPhase(options);
+}
+
+bool LineContact::pairAllowed(int a, int b) const { return m_allowed[a][b]; }
+
+double LineContact::stiffness(int a, int b) const {
+  return m_spec.stiffness > 0.0 ? m_spec.stiffness : std::min(m_lineStiffness[a], m_lineStiffness[b]);
+}
+
+double LineContact::nodeTransverseMass(int node) const {
+  const model::DofMap& dofs = m_model->dofs();
+  if (dofs.equation(dofs.firstDof(node)) < 0) return kInf;  // held node: immovable
+  return m_model->nodeMass()[node];
+}
+
+double LineContact::lumpedMass(int element, double w) const {
+  // Instantaneous effective mass of the point at parameter w of an element with lumped node masses:
+  // 1/m = (1-w)^2/M1 + w^2/M2 (the impulse I at the point changes the point's velocity by I/m).
+  const model::LineElement& el = m_model->elements()[element];
+  const double inv = (1.0 - w) * (1.0 - w) / nodeTransverseMass(el.node1) + w * w / nodeTransverseMass(el.node2);
+  return inv > 0.0 ? 1.0 / inv : kInf;
+}
+
+Vec3 LineContact::pointVelocity(const model::State& state, int element, double w) const {
+  const model::LineElement& el = m_model->elements()[element];
+  const model::DofMap& dofs = m_model->dofs();
+  return (1.0 - w) * state.velocity.segment<3>(dofs.firstDof(el.node1)) +
+         w * state.velocity.segment<3>(dofs.firstDof(el.node2));
+}
+
+Vec3 LineContact::smoothTangent(const model::State& state, int element, double w) const {
+  // Nodal tangent = direction between the neighbouring nodes (central difference), interpolated.
+  const model::LineElement& el = m_model->elements()[element];
+  const model::Line& line = m_model->lines()[el.line];
+  auto nodal = [&](int node) {
+    const int prev = std::max(node - 1, line.firstNode);
+    const int next = std::min(node + 1, line.lastNode());
+    return Vec3((state.position[next] - state.position[prev]).normalized());
+  };
+  const Vec3 t = (1.0 - w) * nodal(el.node1) + w * nodal(el.node2);
+  return t.norm() > 1e-12 ? Vec3(t.normalized()) : Vec3((state.position[el.node2] - state.position[el.node1]).normalized());
+}
+
+double LineContact::arcOf(int line, int element, double w) const {
+  const model::Line& l = m_model->lines()[line];
+  const int i = element - l.firstElement;
+  return l.arcLength[i] + w * (l.arcLength[i + 1] - l.arcLength[i]);
+}
+
+void LineContact::buildProxies(const model::State& state) {
+  m_proxies.clear();
+  for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
+    if (!m_lineEnabled[l]) continue;
+    const model::Line& line = m_model->lines()[l];
+    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e) {
+      const model::LineElement& el = m_model->elements()[e];
+      m_proxies.push_back({l, e, state.position[el.node1], state.position[el.node2], m_radius[e]});
+    }
+  }
+}
+
+void LineContact::findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial) {
+  if (refreshBroadPhase) {
+    buildProxies(state);
+    BroadPhaseOptions options = m_broadPhase.options();
+    options.margin = m_margin;
+    m_broadPhase = BroadPhase(options);
+    m_broadPhase.findPairs(m_proxies, m_candidates);
+  }
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  // Narrow phase on every candidate, at the current positions.
+  struct Raw {
+    int proxyA, proxyB;
+    geometry::SegmentDistanceResult d;
+  };
+  std::vector<Raw> raw;
+  for (const CandidatePair& c : m_candidates) {
+    int pa = c.first, pb = c.second;
+    if (m_proxies[pa].line > m_proxies[pb].line ||
+        (m_proxies[pa].line == m_proxies[pb].line && m_proxies[pa].element > m_proxies[pb].element))
+      std::swap(pa, pb);
+    const model::LineElement& ea = elements[m_proxies[pa].element];
+    const model::LineElement& eb = elements[m_proxies[pb].element];
+    const geometry::SegmentDistanceResult d =
+        geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2], state.position[eb.node1],
+                                  state.position[eb.node2]);
+    // Candidates a little beyond touching (the gap is measured along the smoothed normal below and can
+    // be slightly smaller than the distance) and every pair of the active set.
+    const double radii = m_proxies[pa].radius + m_proxies[pb].radius;
+    const bool sticky = inNeighbourhood({m_proxies[pa].element, m_proxies[pb].element}, m_sticky);
+    if (sticky || d.distance < (1.0 + 0.05) * radii) raw.push_back({pa, pb, d});
+  }
+  if (m_debug)
+    std::cerr << fmt::format("      findContacts: {} candidates, {} raw, trial {}, sticky {}\n", m_candidates.size(), raw.size(),
+                             trial, m_sticky.size());
+  // Keep local minima of the distance among neighbouring element pairs of the same two lines.
+  m_trial.clear();
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const SegmentProxy& a = m_proxies[raw[i].proxyA];
+    const SegmentProxy& b = m_proxies[raw[i].proxyB];
+    bool keep = true;
+    for (std::size_t j = 0; j < raw.size() && keep; ++j) {
+      if (j == i) continue;
+      const SegmentProxy& a2 = m_proxies[raw[j].proxyA];
+      const SegmentProxy& b2 = m_proxies[raw[j].proxyB];
+      if (a2.line != a.line || b2.line != b.line) continue;
+      if (std::abs(a2.element - a.element) > 1 || std::abs(b2.element - b.element) > 1) continue;
+      // A strict total order (distance, then element indices): a tolerance on "equal" distances would
+      // not be transitive and could drop every pair around a node.
+      if (std::make_tuple(raw[j].d.distance, a2.element, b2.element) <
+          std::make_tuple(raw[i].d.distance, a.element, b.element))
+        keep = false;
+    }
+    if (!keep) continue;
+    const geometry::SegmentDistanceResult& d = raw[i].d;
+    ContactPoint c;
+    c.lineA = a.line;
+    c.lineB = b.line;
+    c.elementA = a.element;
+    c.elementB = b.element;
+    c.s = d.s;
+    c.t = d.t;
+    c.pointA = d.closest0;
+    c.pointB = d.closest1;
+    // Normal. For lines crossing at an angle: n = tA x tB with tangents interpolated between nodal
+    // tangents, so n (and the force direction) stays continuous when the contact point passes a node,
+    // where the polylines have a kink; for nearly parallel lines the closest-point direction. The two
+    // are blended over crossing angles between ~3 and ~9 degrees. The sign follows the contact's
+    // previous normal (so it does not flip when centrelines cross), else points from B to A.
+    const Vec3 diff = c.pointA - c.pointB;
+    const Vec3 ta = smoothTangent(state, c.elementA, c.s);
+    const Vec3 tb = smoothTangent(state, c.elementB, c.t);
+    Vec3 cross = ta.cross(tb);
+    const double sinAngle = cross.norm();
+    const Vec3* previous = nullptr;
+    for (const TrackedContact& tr : m_tracked)
+      if (tr.lineA == a.line && tr.lineB == b.line && std::abs(tr.arcA - arcOf(c.lineA, c.elementA, c.s)) +
+                                                               std::abs(tr.arcB - arcOf(c.lineB, c.elementB, c.t)) <
+                                                           2.0 * (elements[c.elementA].restLength +
+                                                                  elements[c.elementB].restLength))
+        previous = &tr.normal;
+    const Vec3 reference = previous ? *previous : (diff.norm() > 1e-12 ? Vec3(diff) : Vec3(Vec3::UnitZ()));
+    Vec3 nDistance = diff.norm() > 1e-12 ? Vec3(diff.normalized()) : reference.normalized();
+    const double blend = std::clamp((sinAngle - 0.05) / 0.1, 0.0, 1.0);
+    Vec3 n = nDistance;
+    if (blend > 0.0) {
+      cross /= sinAngle;
+      if (cross.dot(reference) < 0.0) cross = -cross;
+      n = (blend * cross + (1.0 - blend) * nDistance).normalized();
+    }
+    c.normal = n;
+    // Gap measured along the normal: equal to distance - radii for crossing edges, continuous across
+    // nodes, and still meaningful (negative beyond -radii) if the centrelines pass each other.
+    c.gap = diff.dot(c.normal) - a.radius - b.radius;
+    const Vec3 va = pointVelocity(state, c.elementA, c.s);
+    const Vec3 vb = pointVelocity(state, c.elementB, c.t);
+    c.gapRate = c.normal.dot(va - vb);
+    c.arcA = arcOf(c.lineA, c.elementA, c.s);
+    c.arcB = arcOf(c.lineB, c.elementB, c.t);
+    c.lumpedMassA = lumpedMass(c.elementA, c.s);
+    c.lumpedMassB = lumpedMass(c.elementB, c.t);
+    // Match with a committed contact: same lines, close along both.
+    const double reach = 2.0 * (elements[c.elementA].restLength + elements[c.elementB].restLength);
+    double best = kInf;
+    for (int k = 0; k < static_cast<int>(m_tracked.size()); ++k) {
+      const TrackedContact& tr = m_tracked[k];
+      if (tr.lineA != c.lineA || tr.lineB != c.lineB) continue;
+      const double dist = std::abs(tr.arcA - c.arcA) + std::abs(tr.arcB - c.arcB);
+      if (dist < reach && dist < best) {
+        best = dist;
+        c.track = k;
+      }
+    }
+    if (c.track >= 0 && m_tracked[c.track].pairMass > 0.0) {
+      c.pairMass = m_tracked[c.track].pairMass;
+    } else if (std::isinf(c.lumpedMassA)) {
+      c.pairMass = c.lumpedMassB;
+    } else if (std::isinf(c.lumpedMassB)) {
+      c.pairMass = c.lumpedMassA;
+    } else {
+      c.pairMass = c.lumpedMassA * c.lumpedMassB / (c.lumpedMassA + c.lumpedMassB);
+    }
+    c.stiffness = stiffness(c.lineA, c.lineB);
+    const bool dashpot = dynamic && m_spec.model == model::ImpactModel::Penalty && std::isfinite(c.pairMass);
+    c.damping = dashpot ? 2.0 * m_zeta * std::sqrt(c.stiffness * c.pairMass) : 0.0;
+    // Active set (Wriggers 2006, sec. 6.1): a pair that touches becomes active and stays active for the
+    // rest of the step's Newton iterations, with a linear spring even if it pulls, so Newton does not
+    // cycle between "in contact" and "free"; at convergence, active pairs that pull are released
+    // (updateActiveSet) and the step iterates on. A released pair comes back only if it penetrates
+    // clearly (1 % of the radii).
+    // The point slides from pair to pair across nodes, so membership is by neighbourhood.
+    const std::pair<int, int> key{c.elementA, c.elementB};
+    const bool sticky = inNeighbourhood(key, m_sticky);
+    const bool released = inNeighbourhood(key, m_released);
+    const double radii = a.radius + b.radius;
+    const bool touching = c.gap < 0.0 && (!released || c.gap < -0.01 * radii);
+    if (m_debug)
+      std::cerr << fmt::format("        raw e{}-e{} s {:.6f} t {:.6f} dist-r {:.4e} gap {:.4e} sticky {} released {}\n", c.elementA,
+                               c.elementB, c.s, c.t, d.distance - radii, c.gap, sticky, released);
+    if (!sticky && !touching) continue;
+    if (trial) m_sticky.insert(key);
+    c.normalForce = c.stiffness * -c.gap + c.damping * -c.gapRate;  // may be < 0 until released
+    if (dynamic && m_spec.frictionCoefficient > 0.0 && c.normalForce > 0.0) {
+      const Vec3 vrel = va - vb;
+      const Vec3 vt = vrel - c.normal.dot(vrel) * c.normal;
+      const double speed = vt.norm();
+      c.frictionForce = -m_spec.frictionCoefficient * c.normalForce * vt / std::max(speed, m_spec.frictionVelocity);
+    }
+    (void)dofs;
+    m_trial.push_back(c);
+  }
+}
+
+void LineContact::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                            solver::SystemMatrix* matrix) {
+  const bool refresh = !request.dynamic || !(request.time == m_candidateTime);
+  if (refresh) {
+    // Margin: what any node can move within a couple of nominal steps, plus the largest radius.
+    double maxSpeed = 0.0;
+    const model::DofMap& dofs = m_model->dofs();
+    if (request.dynamic)
+      for (int n = 0; n < m_model->nodeCount(); ++n)
+        maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
+    double rmax = 0.0;
+    for (double r : m_radius) rmax = std::max(rmax, r);
+    m_margin = rmax + 4.0 * maxSpeed * m_timeStep;
+    m_candidateTime = request.dynamic ? request.time : std::numeric_limits<double>::quiet_NaN();
+  }
+  findContacts(state, request.dynamic, refresh, true);
+  if (m_debug)
+    for (const ContactPoint& c : m_trial)
+      std::cerr << fmt::format("      contact e{}-e{} s {:.6f} t {:.6f} gap {:.4e} rate {:.4e} F {:.6e} n ({:.3e},{:.3e},{:.3e})\n",
+                               c.elementA, c.elementB, c.s, c.t, c.gap, c.gapRate, c.normalForce, c.normal.x(),
+                               c.normal.y(), c.normal.z());
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  for (const ContactPoint& c : m_trial) {
+    const model::LineElement& ea = elements[c.elementA];
+    const model::LineElement& eb = elements[c.elementB];
+    const int node[4] = {ea.node1, ea.node2, eb.node1, eb.node2};
+    const double w[4] = {1.0 - c.s, c.s, -(1.0 - c.t), -c.t};  // shape weight times side sign
+    const Vec3 f = c.normalForce * c.normal + c.frictionForce;  // force on line A
+    for (int i = 0; i < 4; ++i) force.segment<3>(dofs.firstDof(node[i])) -= w[i] * f;
+    if (!matrix) continue;
+    // Tangent with the contact parameters held fixed: k n n^T from the spring, c n n^T from the
+    // dashpot, and the friction damping. The rotation of the normal is left out: for crossing lines
+    // it is cancelled by the sliding of the contact point, and elsewhere it is smaller than k by the
+    // ratio penetration / radius.
+    // Every active pair contributes its spring and dashpot (see the active set in findContacts).
+    const Mat3 nn = c.normal * c.normal.transpose();
+    Mat3 kBlock = request.kf * c.stiffness * nn;
+    Mat3 cBlock = request.cf * c.damping * nn;
+    if (c.frictionForce.squaredNorm() > 0.0 && request.cf != 0.0) {
+      cBlock += request.cf * m_spec.frictionCoefficient * c.normalForce / m_spec.frictionVelocity *
+                (Mat3::Identity() - nn);
+    }
+    const Mat3 block = kBlock + cBlock;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j) matrix->add3x3(dofs.firstDof(node[i]), dofs.firstDof(node[j]), block, w[i] * w[j]);
+  }
+}
+
+bool LineContact::neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const {
+  const auto& el = m_model->elements();
+  return el[a.first].line == el[b.first].line && el[a.second].line == el[b.second].line &&
+         std::abs(a.first - b.first) <= 1 && std::abs(a.second - b.second) <= 1;
+}
+
+bool LineContact::inNeighbourhood(const std::pair<int, int>& key, const std::set<std::pair<int, int>>& set) const {
+  for (const auto& k : set)
+    if (neighbours(k, key)) return true;
+  return false;
+}
+
+void LineContact::beginStep() {
+  m_sticky.clear();
+  m_released.clear();
+  m_releaseRounds = 0;
+}
+
+bool LineContact::updateActiveSet() {
+  // Release the active pairs that pull (the spring-dashpot never pulls lines together). After a few
+  // rounds in one step the set is accepted as it is (the remaining pulls are reported as zero force).
+  if (++m_releaseRounds > 8) return false;
+  bool changed = false;
+  for (const ContactPoint& c : m_trial) {
+    if (c.normalForce >= 0.0) continue;
+    const std::pair<int, int> key{c.elementA, c.elementB};
+    for (auto it = m_sticky.begin(); it != m_sticky.end();)
+      it = neighbours(*it, key) ? m_sticky.erase(it) : std::next(it);
+    m_released.insert(key);
+    changed = true;
+  }
+  return changed;
+}
+
+double LineContact::stepLimit(const model::State& state) {
+  double limit = kInf;
+  const auto& elements = m_model->elements();
+  // Look ahead: candidates within the motion of one nominal step.
+  double maxSpeed = 0.0;
+  const model::DofMap& dofs = m_model->dofs();
+  for (int n = 0; n < m_model->nodeCount(); ++n)
+    maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
+  double rmax = 0.0;
+  for (double r : m_radius) rmax = std::max(rmax, r);
+  m_margin = rmax + 4.0 * maxSpeed * m_timeStep;
+  buildProxies(state);
+  BroadPhaseOptions options = m_broadPhase.options();
+  options.margin = m_margin;
+  m_broadPhase = BroadPhase(options);
+  m_broadPhase.findPairs(m_proxies, m_candidates);
+  m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // force a refresh at the next assembly
+  for (const CandidatePair& cp : m_candidates) {
+    const SegmentProxy& a = m_proxies[cp.first];
+    const SegmentProxy& b = m_proxies[cp.second];
+    const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
+    const double radii = a.radius + b.radius;
+    const double gap = d.distance - radii;
+    Vec3 n = d.closest0 - d.closest1;
+    if (n.norm() < 1e-12) continue;
+    n.normalize();
+    const double rate = n.dot(pointVelocity(state, a.element, d.s) - pointVelocity(state, b.element, d.t));
+    if (rate < 0.0) limit = std::min(limit, (std::max(gap, 0.0) + 0.2 * radii) / -rate);
+  }
+  // Resolve every impact with at least 20 steps while it lasts. An impact is dynamic when the rigid
+  // impact penetration v0 sqrt(m / k) is not negligible (> 1e-3 of the contact radii); a quasi-static
+  // touch needs no resolution in time and keeps the nominal step.
+  for (const TrackedContact& tr : m_tracked) {
+    if (!(tr.pairMass > 0.0) || std::isinf(tr.pairMass)) continue;
+    const double k = stiffness(tr.lineA, tr.lineB);
+    const double duration = contactDuration(k, tr.pairMass, m_zeta);
+    const double radii = m_radius[m_model->lines()[tr.lineA].firstElement] + m_radius[m_model->lines()[tr.lineB].firstElement];
+    const bool dynamicImpact = tr.impactVelocity * std::sqrt(tr.pairMass / k) > 1e-3 * radii;
+    if (dynamicImpact && state.time - tr.startTime < 2.0 * duration) limit = std::min(limit, duration / 20.0);
+  }
+  (void)elements;
+  return limit;
+}
+
+void LineContact::applyImpulse(model::State& state, const ContactPoint& c, double impulse) const {
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  const model::LineElement& ea = elements[c.elementA];
+  const model::LineElement& eb = elements[c.elementB];
+  const int node[4] = {ea.node1, ea.node2, eb.node1, eb.node2};
+  const double w[4] = {1.0 - c.s, c.s, -(1.0 - c.t), -c.t};
+  for (int i = 0; i < 4; ++i) {
+    const double m = nodeTransverseMass(node[i]);
+    if (!std::isfinite(m)) continue;
+    state.velocity.segment<3>(dofs.firstDof(node[i])) += w[i] * impulse / m * c.normal;
+  }
+}
+
+bool LineContact::acceptStep(const model::State& before, const model::State& after) {
+  const auto& elements = m_model->elements();
+  for (const CandidatePair& cp : m_candidates) {
+    const SegmentProxy& a = m_proxies[cp.first];
+    const SegmentProxy& b = m_proxies[cp.second];
+    const model::LineElement& ea = elements[a.element];
+    const model::LineElement& eb = elements[b.element];
+    const geometry::SegmentDistanceResult d0 = geometry::segmentDistance(
+        before.position[ea.node1], before.position[ea.node2], before.position[eb.node1], before.position[eb.node2]);
+    const geometry::SegmentDistanceResult d1 = geometry::segmentDistance(
+        after.position[ea.node1], after.position[ea.node2], after.position[eb.node1], after.position[eb.node2]);
+    const double radii = a.radius + b.radius;
+    if (d1.distance - radii < -0.5 * radii) return false;  // far too deep: the step was too long
+    const Vec3 n0 = d0.closest0 - d0.closest1;
+    if (d0.distance - radii > 0.0 && n0.norm() > 1e-12) {
+      // Tunnelling: the centrelines crossed (the separation vector reversed) within both segments.
+      const Vec3 n1 = d1.closest0 - d1.closest1;
+      const bool interior = d1.s > 0.0 && d1.s < 1.0 && d1.t > 0.0 && d1.t < 1.0;
+      if (interior && n0.dot(n1) < 0.0) return false;
+    }
+  }
+  return true;
+}
+
+void LineContact::commitStep(model::State& state, double dt) {
+  m_time = state.time;
+  findContacts(state, dt > 0.0, false, false);
+  std::vector<bool> seen(m_tracked.size(), false);
+  std::vector<TrackedContact> next;
+  for (const ContactPoint& c : m_trial) {
+    if (c.normalForce <= 0.0) continue;
+    const Vec3 va = pointVelocity(state, c.elementA, c.s);
+    const Vec3 vb = pointVelocity(state, c.elementB, c.t);
+    if (c.track >= 0 && !seen[c.track]) {
+      seen[c.track] = true;
+      TrackedContact tr = m_tracked[c.track];
+      tr.impulse += 0.5 * (tr.lastForce + c.normalForce) * dt;
+      tr.peakForce = std::max(tr.peakForce, c.normalForce);
+      tr.lastForce = c.normalForce;
+      tr.lastGapRate = c.gapRate;
+      tr.arcA = c.arcA;
+      tr.arcB = c.arcB;
+      tr.lastVelocityA = va;
+      tr.lastVelocityB = vb;
+      tr.minGap = std::min(tr.minGap, c.gap);
+      tr.path.push_back({state.time, c.arcA, c.arcB});
+      // Paper Eq. 5: m_eff = integral F dt / change of the relative normal velocity; used for the
+      // dashpot once the impact has slowed the pair measurably (before, the lumped estimate holds).
+      const double dv = c.gapRate + tr.impactVelocity;
+      if (tr.impactVelocity > 0.0 && dv > 0.05 * tr.impactVelocity && tr.impulse + tr.jumpImpulse > 0.0)
+        tr.pairMass = (tr.impulse + tr.jumpImpulse) / dv;
+      next.push_back(std::move(tr));
+    } else {
+      TrackedContact tr;
+      tr.impactVelocity = std::max(0.0, -c.gapRate);
+      if (m_spec.model == model::ImpactModel::Impulse && dt > 0.0 && c.gapRate < 0.0 && std::isfinite(c.pairMass)) {
+        // The paper's impulse model (Eq. 6-7 with restitution): the relative normal velocity jumps from
+        // -v0 to e v0; the impulse I = (1 + e) v0 m_pair goes to the nodes through the shape functions,
+        // which conserves momentum exactly for the lumped masses.
+        const double impulse = (1.0 + m_spec.restitution) * tr.impactVelocity * c.pairMass;
+        applyImpulse(state, c, impulse);
+        tr.jumpImpulse = impulse;
+      }
+      const Vec3 va0 = pointVelocity(state, c.elementA, c.s);
+      const Vec3 vb0 = pointVelocity(state, c.elementB, c.t);
+      tr.lineA = c.lineA;
+      tr.lineB = c.lineB;
+      tr.arcA = c.arcA;
+      tr.arcB = c.arcB;
+      tr.startTime = state.time;
+      tr.impulse = 0.5 * c.normalForce * dt;
+      tr.pairMass = c.pairMass;
+      tr.peakForce = c.normalForce;
+      tr.lastForce = c.normalForce;
+      tr.lastGapRate = c.gapRate;
+      tr.startVelocityA = va;
+      tr.startVelocityB = vb;
+      tr.lastVelocityA = va0;
+      tr.lastVelocityB = vb0;
+      tr.normal = c.normal;
+      tr.lumpedMassA = c.lumpedMassA;
+      tr.lumpedMassB = c.lumpedMassB;
+      tr.minGap = c.gap;
+      tr.path.push_back({state.time, c.arcA, c.arcB});
+      next.push_back(std::move(tr));
+    }
+  }
+  // Contacts that ended: record their events.
+  for (std::size_t k = 0; k < m_tracked.size(); ++k)
+    if (!seen[k]) m_events.push_back(makeEvent(m_tracked[k], state.time, 0.5 * m_tracked[k].lastForce * dt, false));
+  m_tracked = std::move(next);
+}
+
+ContactEvent LineContact::makeEvent(const TrackedContact& tr, double endTime, double closingImpulse, bool open) {
+  ContactEvent ev;
+  ev.lineA = tr.lineA;
+  ev.lineB = tr.lineB;
+  ev.startTime = tr.startTime;
+  ev.endTime = endTime;
+  ev.path = tr.path;
+  ev.arcAStart = tr.path.front()[1];
+  ev.arcBStart = tr.path.front()[2];
+  ev.arcAMin = ev.arcAMax = ev.arcAStart;
+  ev.arcBMin = ev.arcBMax = ev.arcBStart;
+  for (const auto& p : tr.path) {
+    ev.arcAMin = std::min(ev.arcAMin, p[1]);
+    ev.arcAMax = std::max(ev.arcAMax, p[1]);
+    ev.arcBMin = std::min(ev.arcBMin, p[2]);
+    ev.arcBMax = std::max(ev.arcBMax, p[2]);
+  }
+  ev.peakForce = tr.peakForce;
+  ev.impulse = tr.impulse + closingImpulse + tr.jumpImpulse;
+  ev.impactVelocity = tr.impactVelocity;
+  ev.impactEnergy = std::isfinite(tr.pairMass) ? 0.5 * tr.pairMass * tr.impactVelocity * tr.impactVelocity : 0.0;
+  // Paper Eq. 5 per line: the impulse over the normal velocity change of the line's contact point.
+  const double dva = std::abs(tr.normal.dot(tr.lastVelocityA - tr.startVelocityA));
+  const double dvb = std::abs(tr.normal.dot(tr.lastVelocityB - tr.startVelocityB));
+  ev.effectiveMassA = dva > 1e-12 ? ev.impulse / dva : kInf;
+  ev.effectiveMassB = dvb > 1e-12 ? ev.impulse / dvb : kInf;
+  ev.lumpedMassA = tr.lumpedMassA;
+  ev.lumpedMassB = tr.lumpedMassB;
+  ev.maxPenetration = std::max(0.0, -tr.minGap);
+  ev.open = open;
+  return ev;
+}
+
+void LineContact::finish(double time) {
+  for (const TrackedContact& tr : m_tracked) m_events.push_back(makeEvent(tr, time, 0.0, true));
+  m_tracked.clear();
+}
+
+std::array<double, 3> LineContact::clearance(const model::State& state, int lineA, int lineB) const {
+  const model::Line& la = m_model->lines()[lineA];
+  const model::Line& lb = m_model->lines()[lineB];
+  const auto& elements = m_model->elements();
+  std::array<double, 3> best{kInf, 0.0, 0.0};
+  for (int i = 0; i < la.elementCount; ++i) {
+    const model::LineElement& ea = elements[la.firstElement + i];
+    const Vec3& a0 = state.position[ea.node1];
+    const Vec3& a1 = state.position[ea.node2];
+    const Vec3 lo = a0.cwiseMin(a1), hi = a0.cwiseMax(a1);
+    const double ra = m_radius[la.firstElement + i];
+    for (int j = 0; j < lb.elementCount; ++j) {
+      if (lineA == lineB && std::abs(i - j) <= 1) continue;
+      const model::LineElement& eb = elements[lb.firstElement + j];
+      const Vec3& b0 = state.position[eb.node1];
+      const Vec3& b1 = state.position[eb.node2];
+      const double rb = m_radius[lb.firstElement + j];
+      // Box distance lower bound: skip pairs that cannot beat the best (or the margin).
+      const Vec3 gapBox = (lo - b0.cwiseMax(b1)).cwiseMax(b0.cwiseMin(b1) - hi).cwiseMax(0.0);
+      const double bound = gapBox.norm() - ra - rb;
+      if (bound > std::min(best[0], m_spec.clearanceMargin)) continue;
+      const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
+      const double gap = d.distance - ra - rb;
+      if (gap < best[0]) {
+        best = {gap, la.arcLength[i] + d.s * (la.arcLength[i + 1] - la.arcLength[i]),
+                lb.arcLength[j] + d.t * (lb.arcLength[j + 1] - lb.arcLength[j])};
+      }
+    }
+  }
+  if (best[0] > m_spec.clearanceMargin) best[0] = kInf;
+  return best;
+}
+
+}  // namespace tangle::contact

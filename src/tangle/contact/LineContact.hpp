@@ -1,0 +1,176 @@
+#pragma once
+/// @file LineContact.hpp
+/// Line-to-line contact (the seed paper's contact model): any two contact-enabled lines (or the pairs
+/// the user lists) may touch anywhere along both; the contact point is found again at every Newton
+/// iteration from the closest points of element segments (Eberly's algorithm), so it slides freely
+/// along both lines and from element to element.
+///
+/// Per contact point: gap g = |pA - pB| - (rA + rB); normal force from a penalty spring and a dashpot
+/// (ContactLaw.hpp) calibrated to the coefficient of restitution with the effective mass of the pair,
+/// which is tracked during each impact with the paper's Eq. 5 (m_eff = integral of F dt / change of the
+/// relative normal velocity); optional regularised Coulomb friction; forces go to the element nodes
+/// through the linear shape functions. Path-dependent data (impact velocity, impulse, effective mass)
+/// follow a trial / commit protocol: addForces() only reads committed data, commitStep() updates it
+/// after an accepted step, and a rejected step needs no revert.
+///
+/// One physical contact is counted once: of the element pairs in contact between two lines, only local
+/// minima of the distance over neighbouring pairs are kept, so a contact point crossing a node (where
+/// two neighbouring pairs report the same point) gives one force, continuous across the node.
+
+#include <limits>
+#include <map>
+#include <memory>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "tangle/contact/BroadPhase.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/Assembler.hpp"
+
+namespace tangle::contact {
+
+/// One contact point at the current (trial) state.
+struct ContactPoint {
+  int lineA = 0, lineB = 0;        ///< line indices, lineA < lineB (or equal for self contact)
+  int elementA = 0, elementB = 0;  ///< global element indices
+  double s = 0.0, t = 0.0;         ///< segment parameters of the closest points [-]
+  Vec3 pointA, pointB;             ///< closest points on the centrelines [m]
+  Vec3 normal;                     ///< unit normal from B to A
+  double gap = 0.0;                ///< distance minus the contact radii [m] (< 0: penetration)
+  double gapRate = 0.0;            ///< d(gap)/dt: relative normal velocity [m/s] (< 0 approaching)
+  double normalForce = 0.0;        ///< [N], >= 0
+  Vec3 frictionForce = Vec3::Zero();  ///< friction force on A [N]
+  double arcA = 0.0, arcB = 0.0;   ///< arc length of the contact point along each line [m]
+  double lumpedMassA = 0.0, lumpedMassB = 0.0;  ///< instantaneous effective masses at the point [kg]
+  double pairMass = 0.0;           ///< effective mass used by the dashpot [kg]
+  double stiffness = 0.0;          ///< [N/m]
+  double damping = 0.0;            ///< [N s/m]
+  int track = -1;                  ///< index of the committed contact it continues, -1 if new
+};
+
+/// A contact followed through time (committed data).
+struct TrackedContact {
+  int lineA = 0, lineB = 0;
+  double arcA = 0.0, arcB = 0.0;     ///< last arc lengths [m]
+  double startTime = 0.0;            ///< [s]
+  double impactVelocity = 0.0;       ///< relative normal approach speed at first contact [m/s] (>= 0)
+  double impulse = 0.0;              ///< integral of the normal force over time so far [N s]
+  double pairMass = 0.0;             ///< effective pair mass used by the dashpot [kg]
+  double peakForce = 0.0;            ///< [N]
+  double lastForce = 0.0;            ///< force at the last committed state [N]
+  double lastGapRate = 0.0;          ///< [m/s]
+  Vec3 lastVelocityA = Vec3::Zero();  ///< velocity of the contact point on A at the last commit [m/s]
+  Vec3 lastVelocityB = Vec3::Zero();
+  Vec3 startVelocityA = Vec3::Zero();  ///< velocity of the point on A at impact [m/s]
+  Vec3 startVelocityB = Vec3::Zero();
+  Vec3 normal = Vec3::UnitZ();        ///< normal at impact
+  double lumpedMassA = 0.0, lumpedMassB = 0.0;
+  std::vector<std::array<double, 3>> path;  ///< (time, arcA, arcB) samples along the event
+  double minGap = 0.0;               ///< deepest penetration (most negative gap) [m]
+  double jumpImpulse = 0.0;          ///< impulse of the impulse-model velocity jump [N s]
+};
+
+/// A finished (or still open at the end of the run) contact event, for the clash report.
+struct ContactEvent {
+  int lineA = 0, lineB = 0;
+  double startTime = 0.0, endTime = 0.0;  ///< [s]
+  double arcAStart = 0.0, arcBStart = 0.0;  ///< where it began along each line [m]
+  double arcAMin = 0.0, arcAMax = 0.0, arcBMin = 0.0, arcBMax = 0.0;  ///< extent of the slide [m]
+  std::vector<std::array<double, 3>> path;  ///< (time, arcA, arcB) along the event
+  double peakForce = 0.0;       ///< [N]
+  double impulse = 0.0;         ///< integral of F dt [N s]
+  double impactVelocity = 0.0;  ///< relative normal velocity at impact [m/s]
+  double impactEnergy = 0.0;    ///< 1/2 m_pair v_n^2 [J]
+  double effectiveMassA = 0.0;  ///< Eq. 5: impulse / normal velocity change of line A at the point [kg]
+  double effectiveMassB = 0.0;  ///< Eq. 5 for line B [kg]
+  double lumpedMassA = 0.0, lumpedMassB = 0.0;  ///< instantaneous FE effective masses at impact [kg]
+  double maxPenetration = 0.0;  ///< [m]
+  bool open = false;            ///< still in contact when the run ended
+};
+
+/// The contact model, as a load contributor of the assembler.
+class LineContact final : public solver::LoadContributor {
+ public:
+  /// @param timeStep nominal time step [s] (sets the broad-phase margin)
+  LineContact(const model::Model& model, const model::ContactSpec& spec, double timeStep);
+
+  void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                 solver::SystemMatrix* matrix) override;
+  void beginStep() override;
+  bool updateActiveSet() override;
+
+  /// Contact points of the active set at the last addForces() call (the trial state). During Newton
+  /// iterations an active point may pull (normalForce < 0); at a converged state none does.
+  const std::vector<ContactPoint>& contacts() const { return m_trial; }
+  /// Contacts followed through time (committed).
+  const std::vector<TrackedContact>& tracked() const { return m_tracked; }
+  /// Finished events (and, after finish(), the open ones).
+  const std::vector<ContactEvent>& events() const { return m_events; }
+
+  /// Largest step [s] from this state so that no approaching pair closes by more than a fifth of its
+  /// contact radii (no tunnelling) and every active impact is resolved with at least 20 steps.
+  double stepLimit(const model::State& state);
+  /// True unless the step from `before` to `after` let a pair pass through each other (the normal of a
+  /// pair flipped while its closest points stayed inside both segments) or penetrate deeper than half
+  /// the contact radii: then the step must be cut.
+  bool acceptStep(const model::State& before, const model::State& after);
+  /// Commits the contacts of the accepted state `state` reached with step dt: updates impulses, Eq. 5
+  /// effective masses, events. Call after every accepted step (and once after the static solve with dt = 0).
+  /// With the impulse model, new impacts change the velocities of `state` (momentum-conserving jump).
+  void commitStep(model::State& state, double dt);
+  /// Closes the open events at the end of the run (time [s]).
+  void finish(double time);
+
+  /// Contact stiffness between two lines [N/m] (user value or automatic).
+  double stiffness(int lineA, int lineB) const;
+  /// Damping ratio of the dashpot [-] for the requested restitution.
+  double dampingRatio() const { return m_zeta; }
+  /// Whether two lines may touch.
+  bool pairAllowed(int lineA, int lineB) const;
+  /// Minimum clearance between two lines at a state: (clearance [m], arcA [m], arcB [m]). The clearance is
+  /// the gap between the surfaces (negative in contact); +inf when farther than the clearance margin.
+  std::array<double, 3> clearance(const model::State& state, int lineA, int lineB) const;
+  const model::ContactSpec& spec() const { return m_spec; }
+
+ private:
+  /// Finds the contact points at `state`; `trial` (Newton iterations) lets new contacts join the active set.
+  void findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial);
+  void buildProxies(const model::State& state);
+  void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;
+  static ContactEvent makeEvent(const TrackedContact& tr, double endTime, double closingImpulse, bool open);
+  double lumpedMass(int element, double w) const;
+  /// Element pairs (A, B) that are the same or adjacent along both lines.
+  bool neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const;
+  bool inNeighbourhood(const std::pair<int, int>& key, const std::set<std::pair<int, int>>& set) const;
+  double nodeTransverseMass(int node) const;
+  Vec3 pointVelocity(const model::State& state, int element, double w) const;
+  /// Unit tangent at parameter w of an element, interpolated between nodal tangents (continuous along the line).
+  Vec3 smoothTangent(const model::State& state, int element, double w) const;
+  /// Arc length [m] of the point at parameter w of an element of a line.
+  double arcOf(int line, int element, double w) const;
+
+  const model::Model* m_model;
+  model::ContactSpec m_spec;
+  double m_timeStep;
+  double m_zeta;
+  std::vector<bool> m_lineEnabled;
+  std::vector<std::vector<bool>> m_allowed;
+  std::vector<double> m_lineStiffness;  // automatic stiffness per line [N/m]
+  std::vector<double> m_radius;         // contact radius per element [m]
+  BroadPhase m_broadPhase;
+  std::vector<SegmentProxy> m_proxies;
+  std::vector<CandidatePair> m_candidates;
+  double m_candidateTime = std::numeric_limits<double>::quiet_NaN();
+  double m_margin = 0.0;
+  std::vector<ContactPoint> m_trial;
+  std::set<std::pair<int, int>> m_sticky;    // element pairs active in this step's iterations
+  std::set<std::pair<int, int>> m_released;  // element pairs released in this step (they pulled)
+  int m_releaseRounds = 0;
+  std::vector<TrackedContact> m_tracked;
+  std::vector<ContactEvent> m_events;
+  double m_time = 0.0;
+  bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
+};
+
+}  // namespace tangle::contact
