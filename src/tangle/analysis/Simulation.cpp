@@ -8,6 +8,10 @@ Simulation::Simulation(model::ModelSpec spec)
       m_hydro(std::make_unique<hydro::HydroLoads>(*m_model)),
       m_state(m_model->initialState()) {
   m_assembler->addContributor(m_hydro.get());
+  if (!m_model->vessels().empty()) {
+    m_vessels = std::make_unique<vessel::VesselSystem>(*m_model, *m_hydro);
+    m_assembler->addContributor(m_vessels.get());
+  }
   if (m_model->spec().contact.enabled) {
     m_contact = std::make_unique<contact::LineContact>(*m_model, m_model->spec().contact,
                                                        m_model->spec().dynamics.timeStep);
@@ -45,6 +49,7 @@ time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observe
   time::DynamicAnalysis dynamics(*m_assembler, m_model->spec().dynamics);
   dynamics.setProgress(progress);
   dynamics.setObserver(observer);
+  if (m_vessels) dynamics.addPrescribed(m_vessels->prescribedNodes());
   if (m_contact) {
     dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });
     dynamics.setStepValidator(

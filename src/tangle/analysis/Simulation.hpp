@@ -13,6 +13,7 @@
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
 #include "tangle/time/DynamicAnalysis.hpp"
+#include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle::analysis {
 
@@ -28,6 +29,8 @@ class Simulation {
   hydro::HydroLoads& hydro() { return *m_hydro; }
   /// Line-to-line contact, or nullptr when the model has no contact block.
   contact::LineContact* contact() { return m_contact.get(); }
+  /// The vessels, or nullptr when the model has none.
+  vessel::VesselSystem* vessels() { return m_vessels.get(); }
   /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
   model::State& state() { return m_state; }
 
@@ -44,6 +47,7 @@ class Simulation {
   std::unique_ptr<solver::Assembler> m_assembler;
   std::unique_ptr<hydro::HydroLoads> m_hydro;
   std::unique_ptr<contact::LineContact> m_contact;
+  std::unique_ptr<vessel::VesselSystem> m_vessels;
   model::State m_state;
 };
 

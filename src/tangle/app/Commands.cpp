@@ -11,6 +11,8 @@
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/ClashReport.hpp"
 #include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+#include "tangle/geometry/Rotation.hpp"
 #include "tangle/io/DynamicRecorder.hpp"
 #include "tangle/io/JsonWriter.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -152,7 +154,7 @@ int runAnalysis(const RunOptions& options) {
     fmt::print("{}\n", result.message);
     for (const auto& s : lines) {
       fmt::print("  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m",
-                 s.name, s.endForceA.norm() / 1000.0, s.endForceB.norm() / 1000.0,
+                 s.name, s.tension.front() / 1000.0, s.tension.back() / 1000.0,
                  *std::max_element(s.bendingMoment.begin(), s.bendingMoment.end()) / 1000.0);
       if (s.touchdownArcLength >= 0.0) fmt::print(", touchdown at {:.1f} m from end A", s.touchdownArcLength);
       fmt::print("\n");
@@ -164,10 +166,31 @@ int runAnalysis(const RunOptions& options) {
     io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0);
     std::unique_ptr<contact::ClashReport> clash;
     if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact());
+    // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
+    // vector relative to the initial heading) against time.
+    std::ofstream vesselFile;
+    if (!m.vessels().empty()) {
+      vesselFile.open(outDir / "dynamics" / "vessels.csv");
+      vesselFile << "time_s";
+      for (const auto& v : m.vessels())
+        vesselFile << fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", v.name);
+      vesselFile << "\n";
+    }
     const time::DynamicResult dyn = sim.runDynamics(
         [&](const model::State& s, const VecX&) {
           recorder.record(s.time, sim.snapshot(true));
           if (clash) clash->recordClearance(s);
+          if (vesselFile.is_open()) {
+            vesselFile << fmt::format("{:.4f}", s.time);
+            for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
+              const int node = m.vesselNode(v);
+              const Vec3 r = geometry::logMap(s.triad[node] * m.vesselRotation(v).transpose()) * 180.0 / kPi;
+              vesselFile << fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", s.position[node].x(),
+                                        s.position[node].y(), s.position[node].z(), r.x(), r.y(), r.z());
+            }
+            vesselFile << "\n";
+            vesselFile.flush();
+          }
         },
         !options.quiet);
     recorder.writeRanges();

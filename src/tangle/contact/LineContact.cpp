@@ -387,17 +387,31 @@ double LineContact::stepLimit(const model::State& state) {
     if (n.norm() < 1e-12) continue;
     n.normalize();
     const double rate = n.dot(pointVelocity(state, a.element, d.s) - pointVelocity(state, b.element, d.t));
-    if (rate < 0.0) limit = std::min(limit, (std::max(gap, 0.0) + 0.2 * radii) / -rate);
+    if (rate >= 0.0) continue;
+    limit = std::min(limit, (std::max(gap, 0.0) + 0.2 * radii) / -rate);
+    // A dynamic impact about to start (same criterion as below, with the lumped pair mass): the step
+    // that reaches it may overshoot the touching time by at most a twentieth of the impact duration,
+    // so the first contact step is as short as the ones that resolve the impact (a step of the
+    // nominal length would swallow an impact that lasts far less than a step).
+    if (gap > 0.0) {
+      const double ma = lumpedMass(a.element, d.s), mb = lumpedMass(b.element, d.t);
+      const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
+      const double k = stiffness(a.line, b.line);
+      if (std::isfinite(m) && -rate * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius))
+        limit = std::min(limit, gap / -rate + contactDuration(k, m, m_zeta) / 20.0);
+    }
   }
   // Resolve every impact with at least 20 steps while it lasts. An impact is dynamic when the rigid
-  // impact penetration v0 sqrt(m / k) is not negligible (> 1e-3 of the contact radii); a quasi-static
-  // touch needs no resolution in time and keeps the nominal step.
+  // impact penetration v0 sqrt(m / k) is not negligible (> 1e-3 of the smaller contact radius: a thin
+  // line hitting a thick one is judged by its own size); a quasi-static touch needs no resolution in
+  // time and keeps the nominal step.
   for (const TrackedContact& tr : m_tracked) {
     if (!(tr.pairMass > 0.0) || std::isinf(tr.pairMass)) continue;
     const double k = stiffness(tr.lineA, tr.lineB);
     const double duration = contactDuration(k, tr.pairMass, m_zeta);
-    const double radii = m_radius[m_model->lines()[tr.lineA].firstElement] + m_radius[m_model->lines()[tr.lineB].firstElement];
-    const bool dynamicImpact = tr.impactVelocity * std::sqrt(tr.pairMass / k) > 1e-3 * radii;
+    const double radius = std::min(m_radius[m_model->lines()[tr.lineA].firstElement],
+                                   m_radius[m_model->lines()[tr.lineB].firstElement]);
+    const bool dynamicImpact = tr.impactVelocity * std::sqrt(tr.pairMass / k) > 1e-3 * radius;
     if (dynamicImpact && state.time - tr.startTime < 2.0 * duration) limit = std::min(limit, duration / 20.0);
   }
   (void)elements;

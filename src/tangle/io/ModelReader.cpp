@@ -510,7 +510,7 @@ model::WaveSpec readWaves(const Value& v) {
 }
 
 void readEnvironment(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"water_depth", "water_density", "gravity", "seabed", "current", "waves"});
+  const Map m(v, {"water_depth", "water_density", "gravity", "seabed", "current", "waves", "wind"});
   model::EnvironmentSpec& env = spec.environment;
   const model::EnvironmentSpec d;
   env.waterDepth = m.number("water_depth", positive().withHint("seabed at z = -water_depth"));
@@ -519,6 +519,12 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
   if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env.seabed);
   if (const std::optional<Value> current = m.find("current")) env.current = readCurrent(*current);
   if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves);
+  if (const std::optional<Value> wind = m.find("wind")) {
+    const Map w(*wind, {"speed", "azimuth", "air_density"});
+    env.windSpeed = w.number("speed", nonNegative());
+    env.windAzimuth = degToRad(w.number("azimuth", 0.0, {}));
+    env.airDensity = w.number("air_density", d.airDensity, positive());
+  }
 }
 
 void readLineTypes(const Value& v, ModelSpec& spec) {
@@ -578,7 +584,7 @@ model::EndMotionSpec readMotion(const Value& v) {
 
 model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
   using model::EndKind;
-  const Map m(v, {"type", "position", "vessel", "motion", "release"});
+  const Map m(v, {"type", "position", "vessel", "motion", "release", "tensioner", "flex_joint"});
   model::EndSpec end;
   end.sourceLine = v.line();
   const Value type = m.get("type", "one of: anchored, fixed, pinned, free, vessel");
@@ -604,6 +610,21 @@ model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
           fmt::format("the end is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth); "
                       "expected z >= {}",
                       numberText(end.position.z()), numberText(seabedZ), numberText(seabedZ)));
+  }
+
+  if (const std::optional<Value> tensioner = m.find("tensioner")) {
+    if (end.kind != EndKind::Vessel) tensioner->fail("a tensioner applies only to ends of type vessel");
+    const Map t(*tensioner, {"tension", "stroke", "stop_stiffness"});
+    end.tensioner.enabled = true;
+    end.tensioner.tension = t.number("tension", positive());
+    end.tensioner.stroke = t.number("stroke", end.tensioner.stroke, positive());
+    end.tensioner.stopStiffness = t.number("stop_stiffness", end.tensioner.stopStiffness, positive());
+  }
+  if (const std::optional<Value> flex = m.find("flex_joint")) {
+    if (end.kind != EndKind::Vessel) flex->fail("a flex joint applies only to ends of type vessel");
+    const Map f(*flex, {"stiffness"});
+    end.flexJoint.enabled = true;
+    end.flexJoint.stiffness = f.number("stiffness", nonNegative());
   }
 
   if (const std::optional<Value> release = m.find("release")) {
@@ -772,6 +793,121 @@ void readContact(const Value& v, ModelSpec& spec) {
   c.clearanceMargin = m.number("clearance_margin", d.clearanceMargin, positive());
 }
 
+/// A heading table: list of [heading_deg, x, y, yaw] rows, headings ascending in [0, 360).
+model::HeadingTable readHeadingTable(const Value& v) {
+  model::HeadingTable t;
+  double previous = -1.0;
+  for (const Value& row : v.items(1)) {
+    const std::vector<double> r = row.numbers(4, "[heading_deg, x, y, yaw]");
+    if (r[0] < 0.0 || r[0] >= 360.0 || r[0] <= previous)
+      row.fail(fmt::format("headings must increase within [0, 360) degrees; got {}", numberText(r[0])));
+    previous = r[0];
+    t.heading.push_back(degToRad(r[0]));
+    t.values.emplace_back(r[1], r[2], r[3]);
+  }
+  return t;
+}
+
+std::array<double, 6> readSix(const Map& m, std::string_view key, const Range& range) {
+  std::array<double, 6> out{};
+  if (const std::optional<Value> v = m.find(key)) {
+    const std::vector<double> n = v->numbers(6, "[surge, sway, heave, roll, pitch, yaw]");
+    for (int i = 0; i < 6; ++i) {
+      if (!range.contains(n[i])) v->fail(fmt::format("item {} is {}; expected {}", i, numberText(n[i]), range.describe()));
+      out[i] = n[i];
+    }
+  }
+  return out;
+}
+
+model::RaoTable readRaos(const Value& v) {
+  // raos: {periods: [...], headings: [...deg], rows: [[period, heading, a1, p1, ..., a6, p6], ...]} with
+  // translations [m/m], rotations [deg/m], phases [deg] (lag).
+  const Map m(v, {"periods", "headings", "rows"});
+  model::RaoTable t;
+  const Value periods = m.get("periods", "a list of wave periods [s], ascending");
+  for (const Value& p : periods.items(1)) t.period.push_back(p.number(positive()));
+  const Value headings = m.get("headings", "a list of relative wave headings [deg], ascending in [0, 360)");
+  for (const Value& h : headings.items(1)) t.heading.push_back(degToRad(h.number(Range{0.0, 360.0, false, true, {}})));
+  if (!std::is_sorted(t.period.begin(), t.period.end())) periods.fail("periods must be ascending");
+  if (!std::is_sorted(t.heading.begin(), t.heading.end())) headings.fail("headings must be ascending");
+  t.amplitude.assign(t.period.size(), std::vector<std::array<double, 6>>(t.heading.size()));
+  t.phase = t.amplitude;
+  std::vector<std::vector<bool>> seen(t.period.size(), std::vector<bool>(t.heading.size(), false));
+  const Value rows = m.get("rows", "a list of rows [period, heading_deg, surge_amp, surge_phase, ..., yaw_amp, yaw_phase]");
+  for (const Value& row : rows.items(1)) {
+    const std::vector<double> r = row.numbers(14, "[period, heading, 6 x (amplitude, phase_deg)]");
+    const auto ip = std::find(t.period.begin(), t.period.end(), r[0]);
+    const auto ih = std::find(t.heading.begin(), t.heading.end(), degToRad(r[1]));
+    if (ip == t.period.end() || ih == t.heading.end())
+      row.fail("period and heading of a row must be listed in 'periods' and 'headings'");
+    const std::size_t a = static_cast<std::size_t>(ip - t.period.begin());
+    const std::size_t b = static_cast<std::size_t>(ih - t.heading.begin());
+    for (int k = 0; k < 6; ++k) {
+      t.amplitude[a][b][k] = k < 3 ? r[2 + 2 * k] : degToRad(r[2 + 2 * k]);
+      t.phase[a][b][k] = degToRad(r[3 + 2 * k]);
+    }
+    seen[a][b] = true;
+  }
+  for (std::size_t a = 0; a < seen.size(); ++a)
+    for (std::size_t b = 0; b < seen[a].size(); ++b)
+      if (!seen[a][b])
+        rows.fail(fmt::format("missing the row for period {} s, heading {} deg", numberText(t.period[a]),
+                              numberText(radToDeg(t.heading[b]))));
+  return t;
+}
+
+void readVessels(const Value& v, ModelSpec& spec) {
+  NameRegistry names("vessel");
+  for (const Value& item : v.items(1, ItemLabel::Name)) {
+    const Map m(item, {"name", "mode", "position", "heading", "mass", "inertia", "added_mass", "linear_damping",
+                       "quadratic_damping", "hydrostatic_stiffness", "current_coefficients", "current_areas",
+                       "wind_coefficients", "wind_areas", "wave_drift", "raos", "motion", "held_in_statics"});
+    model::VesselSpec vs;
+    vs.sourceLine = item.line();
+    vs.name = names.add(m);
+    if (const std::optional<Value> mode = m.find("mode"))
+      vs.mode = mode->choice<model::VesselMode>({{"fixed", model::VesselMode::Fixed},
+                                                 {"prescribed", model::VesselMode::Prescribed},
+                                                 {"free", model::VesselMode::Free}});
+    vs.position = m.get("position", "the reference point [x, y, z] in m").vec3();
+    vs.heading = degToRad(m.number("heading", 0.0, {}));
+    const bool free = vs.mode == model::VesselMode::Free;
+    vs.heldInStatics = m.boolean("held_in_statics", false);
+    if (vs.heldInStatics && !free) m.get("held_in_statics", "").fail("held_in_statics applies only to free vessels");
+    vs.mass = free ? m.number("mass", positive()) : m.number("mass", 0.0, nonNegative());
+    if (const std::optional<Value> inertia = m.find("inertia")) {
+      vs.inertia = inertia->vec3();
+      if ((vs.inertia.array() <= 0.0).any()) inertia->fail("expected three moments of inertia > 0 [kg m^2]");
+    } else if (free) {
+      m.get("inertia", "[Ixx, Iyy, Izz] about the reference point in kg m^2 (required for a free vessel)");
+    }
+    vs.addedMass = readSix(m, "added_mass", nonNegative());
+    vs.linearDamping = readSix(m, "linear_damping", nonNegative());
+    vs.quadraticDamping = readSix(m, "quadratic_damping", nonNegative());
+    vs.hydrostaticStiffness = readSix(m, "hydrostatic_stiffness", nonNegative());
+    if (const std::optional<Value> t = m.find("current_coefficients")) vs.currentCoefficients = readHeadingTable(*t);
+    if (const std::optional<Value> a = m.find("current_areas")) vs.currentAreas = a->vec3();
+    if (const std::optional<Value> t = m.find("wind_coefficients")) vs.windCoefficients = readHeadingTable(*t);
+    if (const std::optional<Value> a = m.find("wind_areas")) vs.windAreas = a->vec3();
+    if (const std::optional<Value> t = m.find("wave_drift")) vs.waveDrift = readHeadingTable(*t);
+    if (const std::optional<Value> r = m.find("raos")) vs.raos = readRaos(*r);
+    if (const std::optional<Value> motion = m.find("motion")) {
+      if (vs.mode != model::VesselMode::Prescribed) motion->fail("a motion applies only to vessels of mode prescribed");
+      const Map mm(*motion, {"amplitude", "phase", "period"});
+      const std::vector<double> a = mm.get("amplitude", "[x, y, z (m), roll, pitch, yaw (deg)]").numbers(6, "[x, y, z, roll, pitch, yaw]");
+      std::vector<double> ph(6, 0.0);
+      if (const std::optional<Value> p = mm.find("phase")) ph = p->numbers(6, "[x, y, z, roll, pitch, yaw] in deg");
+      for (int k = 0; k < 6; ++k) {
+        vs.motionAmplitude[k] = k < 3 ? a[k] : degToRad(a[k]);
+        vs.motionPhase[k] = degToRad(ph[k]);
+      }
+      vs.motionPeriod = mm.number("period", positive());
+    }
+    spec.vessels.push_back(std::move(vs));
+  }
+}
+
 /// A top-level block of the model file.
 struct TopLevelBlock {
   std::string_view key;
@@ -786,6 +922,7 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"title", false, "a title", readTitle},
     TopLevelBlock{"environment", true, "a map {water_depth, ...}", readEnvironment},
     TopLevelBlock{"line_types", true, "a list of line types {name, outer_diameter, ...}", readLineTypes},
+    TopLevelBlock{"vessels", false, "a list of vessels {name, mode, position, ...}", readVessels},
     TopLevelBlock{"lines", true, "a list of lines {name, end_a, end_b, sections, ...}", readLines},
     TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
     TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},

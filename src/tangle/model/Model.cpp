@@ -20,7 +20,51 @@ double torsionalStiffnessOf(const section::LineType& t) {
 
 Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec))) {
   for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
+  for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v) buildVessel(v);
   m_dofs.finalize();
+}
+
+void Model::buildVessel(int v) {
+  const VesselSpec& vs = m_spec->vessels[v];
+  const int node = m_dofs.nodeCount();
+  const int first = m_dofs.addNode(6);
+  m_vesselNode.push_back(node);
+  m_nodeLine.push_back(-1);
+  m_tributaryLength.push_back(0.0);
+  m_nodeContactDiameter.push_back(0.0);
+  m_nodeMass.push_back(0.0);  // the vessel contributor adds its 6x6 mass matrix
+  m_nodeRotationalInertia.push_back(0.0);
+  m_momentScale.push_back(10.0);  // moments on a hull compared with forces over a 10 m lever
+  if (vs.mode != VesselMode::Free)
+    for (int k = 0; k < 6; ++k) m_dofs.constrain(first + k);
+}
+
+Vec3 Model::endPosition(const EndSpec& end) const {
+  if (end.kind != EndKind::Vessel) return end.position;
+  const int v = vesselIndex(end.vessel);
+  return m_spec->vessels[v].position + vesselRotation(v) * end.position;
+}
+
+Mat3 Model::vesselRotation(int v) const {
+  return Eigen::AngleAxisd(m_spec->vessels[v].heading, Vec3::UnitZ()).toRotationMatrix();
+}
+
+int Model::vesselIndex(const std::string& name) const {
+  for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v)
+    if (m_spec->vessels[v].name == name) return v;
+  return -1;
+}
+
+std::string Model::describeNode(int node) const {
+  if (node < 0) return "unknown node";
+  const int line = m_nodeLine[node];
+  if (line < 0) {
+    for (int v = 0; v < static_cast<int>(m_vesselNode.size()); ++v)
+      if (m_vesselNode[v] == node) return fmt::format("vessel '{}'", m_spec->vessels[v].name);
+    return "unknown node";
+  }
+  const int local = node - m_lines[line].firstNode;
+  return fmt::format("line '{}' node {} (arc length {:.2f} m)", m_lines[line].name, local, m_lines[line].arcLength[local]);
 }
 
 void Model::buildLine(int lineIndex) {
@@ -66,6 +110,7 @@ void Model::buildLine(int lineIndex) {
     m_nodeContactDiameter.push_back(0.0);
     m_nodeMass.push_back(0.0);
     m_nodeRotationalInertia.push_back(0.0);
+    m_momentScale.push_back(0.0);
   }
   for (int e = 0; e < static_cast<int>(elements.size()); ++e) {
     LineElement& el = elements[e];
@@ -78,6 +123,7 @@ void Model::buildLine(int lineIndex) {
     const double rot = el.type->massPerLength * half * el.type->outerDiameter * el.type->outerDiameter / 16.0;
     for (int node : {el.node1, el.node2}) {
       m_tributaryLength[node] += half;
+      m_momentScale[node] += half;
       m_nodeContactDiameter[node] = std::max(m_nodeContactDiameter[node], d);
       m_nodeMass[node] += el.type->massPerLength * half;
       m_nodeRotationalInertia[node] += rot;
@@ -111,7 +157,7 @@ void Model::buildLine(int lineIndex) {
                          : heldInTranslation(ls.endB.kind) && m_dofs.hasRotations(line.lastNode()) ? line.lastNode()
                                                                                                     : -1;
     if (lockNode >= 0) {
-      const Vec3 chord = (ls.endB.position - ls.endA.position).cwiseAbs();
+      const Vec3 chord = (endPosition(ls.endB) - endPosition(ls.endA)).cwiseAbs();
       int axis = 0;
       chord.maxCoeff(&axis);
       m_dofs.constrain(m_dofs.firstDof(lockNode) + 3 + axis);
@@ -134,9 +180,18 @@ void Model::constrainEnd(int node, const EndSpec& end) {
       break;
     case EndKind::Free:
       break;
-    case EndKind::Vessel:
-      throw InputError(m_spec->sourceFile, end.sourceLine, "end.vessel",
-                       "vessel connections are not supported by this version");
+    case EndKind::Vessel: {
+      const int v = vesselIndex(end.vessel);
+      if (v < 0)
+        throw InputError(m_spec->sourceFile, end.sourceLine, "end.vessel", "unknown vessel '" + end.vessel + "'");
+      // On a fixed or prescribed vessel the end follows the vessel's point: held (prescribed). On a free
+      // vessel it is tied to the vessel node by the vessel contributor's link.
+      if (m_spec->vessels[v].mode != VesselMode::Free) {
+        for (int k = 0; k < 3; ++k)
+          if (!(k == 2 && end.tensioner.enabled)) m_dofs.constrain(first + k);
+      }
+      break;
+    }
   }
 }
 
@@ -160,11 +215,11 @@ State Model::initialState() const {
     for (const SectionSpec& sec : line.spec->sections)
       radius = std::max(radius, 0.5 * m_spec->lineTypes.at(sec.lineType).contactDiameter);
     double shapeDepth = env.waterDepth;
-    for (const Vec3& end : {line.spec->endA.position, line.spec->endB.position})
+    const Vec3 endA = endPosition(line.spec->endA);
+    const Vec3 endB = endPosition(line.spec->endB);
+    for (const Vec3& end : {endA, endB})
       if (end.z() <= -env.waterDepth + radius + 1e-6) shapeDepth = std::min(shapeDepth, -end.z());
-    const std::vector<Vec3> pts = solver::initialLineShape(line.spec->endA.position, line.spec->endB.position,
-                                                           sections, shapeDepth, line.arcLength)
-                                      .positions;
+    const std::vector<Vec3> pts = solver::initialLineShape(endA, endB, sections, shapeDepth, line.arcLength).positions;
     for (int i = 0; i < line.nodeCount; ++i) s.position[line.firstNode + i] = pts[i];
     // Grounded nodes start at their static penetration w / k into the seabed, so the seabed springs are
     // active in the first Newton tangent (otherwise a grounded stretch has no vertical stiffness).
@@ -193,6 +248,10 @@ State Model::initialState() const {
       s.triad[line.firstNode + i] = q;
       prev = t;
     }
+  }
+  for (int v = 0; v < static_cast<int>(m_vesselNode.size()); ++v) {
+    s.position[m_vesselNode[v]] = m_spec->vessels[v].position;
+    s.triad[m_vesselNode[v]] = vesselRotation(v);
   }
   return s;
 }

@@ -62,8 +62,22 @@ class Model {
   const std::vector<NodeAttachment>& attachments() const { return m_attachments; }
   const DofMap& dofs() const { return m_dofs; }                  ///< DOF numbering
   int nodeCount() const { return m_dofs.nodeCount(); }
-  /// Line index owning a node.
+  /// Line index owning a node (-1 for a vessel node).
   int lineOfNode(int node) const { return m_nodeLine[node]; }
+  /// "line 'name' node i (arc length s m)" or "vessel 'name'", for messages.
+  std::string describeNode(int node) const;
+  /// Length [m] that turns a moment at a node into a comparable force (convergence checks).
+  double momentScale(int node) const { return m_momentScale[node]; }
+  /// Vessels in input order.
+  const std::vector<VesselSpec>& vessels() const { return m_spec->vessels; }
+  /// The 6-DOF node of vessel v.
+  int vesselNode(int v) const { return m_vesselNode[v]; }
+  /// Initial global position of a line end [m] (vessel ends: the vessel point at t = 0).
+  Vec3 endPosition(const EndSpec& end) const;
+  /// Initial rotation (vessel axes to global) of vessel v: its heading about z.
+  Mat3 vesselRotation(int v) const;
+  /// Index of a vessel by name, -1 if none.
+  int vesselIndex(const std::string& name) const;
   /// Tributary unstretched length of each node (half of each adjacent element) [m].
   const std::vector<double>& tributaryLength() const { return m_tributaryLength; }
   /// Contact diameter of each node (largest adjacent line type) [m].
@@ -81,6 +95,7 @@ class Model {
 
  private:
   void buildLine(int lineIndex);
+  void buildVessel(int vesselIndex);
   void constrainEnd(int node, const EndSpec& end);
 
   std::unique_ptr<ModelSpec> m_spec;
@@ -92,6 +107,8 @@ class Model {
   std::vector<double> m_nodeContactDiameter;
   std::vector<double> m_nodeMass;
   std::vector<double> m_nodeRotationalInertia;
+  std::vector<double> m_momentScale;
+  std::vector<int> m_vesselNode;
   DofMap m_dofs;
 };
 

@@ -56,6 +56,71 @@ struct EnvironmentSpec {
   SeabedSpec seabed;
   std::vector<CurrentLevel> current;  ///< empty: no current
   WaveSpec waves;
+  double windSpeed = 0.0;         ///< wind speed at 10 m [m/s]
+  double windAzimuth = 0.0;       ///< direction the wind blows towards [rad]
+  double airDensity = 1.225;      ///< [kg/m^3]
+};
+
+/// How a vessel moves.
+enum class VesselMode {
+  Fixed,       ///< does not move
+  Prescribed,  ///< follows a harmonic motion or a time history about its initial position
+  Free         ///< 6-DOF rigid body solved together with its lines (same implicit solve)
+};
+
+/// A coefficient table against relative heading (OCIMF style): per heading, surge, sway and yaw coefficients.
+struct HeadingTable {
+  std::vector<double> heading;  ///< relative heading of the flow in vessel axes, ascending, in [0, 2 pi) [rad]
+  std::vector<Vec3> values;     ///< (x, y, yaw) values at each heading (meaning depends on the table)
+};
+
+/// Response amplitude operators of the first-order wave motion of a vessel.
+struct RaoTable {
+  std::vector<double> period;   ///< wave periods, ascending [s]
+  std::vector<double> heading;  ///< relative wave headings in vessel axes, ascending in [0, 2 pi) [rad]
+  /// amplitude[p][h][dof]: motion amplitude per unit wave amplitude: surge, sway, heave [m/m], roll, pitch,
+  /// yaw [rad/m]; phase[p][h][dof]: phase lag relative to the wave crest at the reference point [rad].
+  std::vector<std::vector<std::array<double, 6>>> amplitude;
+  std::vector<std::vector<std::array<double, 6>>> phase;
+};
+
+/// A floating unit (6-DOF rigid body).
+struct VesselSpec {
+  std::string name;
+  VesselMode mode = VesselMode::Fixed;
+  Vec3 position = Vec3::Zero();   ///< reference point at t = 0, global axes [m]
+  double heading = 0.0;           ///< heading of the vessel x axis, anticlockwise from global +x [rad]
+  double mass = 0.0;              ///< [kg]
+  Vec3 inertia = Vec3::Zero();    ///< roll, pitch, yaw moments of inertia about the reference point [kg m^2]
+  std::array<double, 6> addedMass{};  ///< diagonal added mass: surge, sway, heave [kg]; roll, pitch, yaw [kg m^2]
+  std::array<double, 6> linearDamping{};     ///< [N s/m] and [N m s/rad]
+  std::array<double, 6> quadraticDamping{};  ///< [N s^2/m^2] and [N m s^2/rad^2]
+  std::array<double, 6> hydrostaticStiffness{};  ///< diagonal: heave [N/m], roll, pitch [N m/rad] (others 0)
+  HeadingTable currentCoefficients;  ///< force = 1/2 rho_water V^2 (Cx A_x, Cy A_y, Cmz A_y L): coefficients
+  Vec3 currentAreas = Vec3::Zero();  ///< A_x [m^2], A_y [m^2], L [m] for the current coefficients
+  HeadingTable windCoefficients;     ///< same form with air density and wind speed
+  Vec3 windAreas = Vec3::Zero();     ///< A_x, A_y [m^2], L [m] above water
+  HeadingTable waveDrift;            ///< mean drift force per unit wave amplitude squared [N/m^2], yaw [N m/m^2]
+  RaoTable raos;                     ///< first-order motions (superposed on the solved/prescribed motion)
+  std::array<double, 6> motionAmplitude{};  ///< prescribed harmonic motion: x, y, z [m], roll, pitch, yaw [rad]
+  std::array<double, 6> motionPhase{};      ///< [rad]
+  double motionPeriod = 10.0;               ///< [s]
+  bool heldInStatics = false;  ///< a free vessel held at its position in statics (a DP unit on station), released at t = 0
+  int sourceLine = 0;
+};
+
+/// A line end hung from a vessel through a tensioner (constant tension over a stroke).
+struct TensionerSpec {
+  bool enabled = false;
+  double tension = 0.0;      ///< nominal tension [N]
+  double stroke = 10.0;      ///< total stroke, centred on the initial position [m]
+  double stopStiffness = 1e8;  ///< stiffness of the end stops [N/m]
+};
+
+/// A rotational spring between a vessel and a line end (flex joint).
+struct FlexJointSpec {
+  bool enabled = false;
+  double stiffness = 0.0;  ///< rotational stiffness [N m/rad]
 };
 
 /// How a line end is held.
@@ -83,6 +148,8 @@ struct EndSpec {
   Vec3 position = Vec3::Zero();  ///< global position [m] (vessel axes [m] for kind Vessel)
   std::string vessel;            ///< vessel name, for kind Vessel
   EndMotionSpec motion;          ///< prescribed motion (dynamics), for Fixed/Pinned/Anchored ends
+  TensionerSpec tensioner;       ///< for vessel ends: vertical tensioner instead of a rigid connection
+  FlexJointSpec flexJoint;       ///< for vessel ends of beam lines: rotational spring (else pinned)
   std::array<bool, 3> release{false, false, false};  ///< global translations x, y, z left free at a held end (roller)
   int sourceLine = 0;            ///< line of the input file that defined this end (for messages)
 };
@@ -173,6 +240,7 @@ struct ModelSpec {
   std::string title;
   EnvironmentSpec environment;
   std::map<std::string, section::LineType> lineTypes;
+  std::vector<VesselSpec> vessels;
   std::vector<LineSpec> lines;
   StaticSpec statics;
   DynamicSpec dynamics;

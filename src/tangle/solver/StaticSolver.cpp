@@ -19,7 +19,7 @@ double StaticSolver::residualNorm(const VecX& force, int* worstNode) const {
   // Moments are made comparable to forces by dividing by the element length at the node.
   for (int n = 0; n < dofs.nodeCount(); ++n) {
     const int d = dofs.firstDof(n);
-    const double lref = std::max(model.tributaryLength()[n], 1e-6);
+    const double lref = std::max(model.momentScale(n), 1e-6);
     for (int k = 0; k < dofs.dofCount(n); ++k) {
       if (dofs.equation(d + k) < 0) continue;
       const double v = std::abs(force[d + k]) / (k < 3 ? 1.0 : lref);
@@ -86,13 +86,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     result.message = fmt::format("static equilibrium found in {} iterations (max out-of-balance {:.3g} N)",
                                  result.iterations, result.residual);
   } else {
-    std::string where = "unknown node";
-    if (result.worstNode >= 0) {
-      const int line = model.lineOfNode(result.worstNode);
-      const int local = result.worstNode - model.lines()[line].firstNode;
-      where = fmt::format("line '{}' node {} (arc length {:.2f} m)", model.lines()[line].name, local,
-                          model.lines()[line].arcLength[local]);
-    }
+    const std::string where = model.describeNode(result.worstNode);
     result.message = fmt::format(
         "static analysis did not converge: load fraction reached {:.3f}, {} iterations, largest out-of-balance "
         "force {:.4g} N at {}",

@@ -16,8 +16,10 @@ std::vector<PrescribedNode> prescribedNodes(const model::Model& model) {
     for (int end = 0; end < 2; ++end) {
       const model::EndSpec& e = end == 0 ? line.spec->endA : line.spec->endB;
       if (!e.motion.enabled) continue;
-      if (e.kind == model::EndKind::Free) continue;
-      out.push_back({end == 0 ? line.firstNode : line.lastNode(), e.position, PrescribedMotion(e.motion, rampTime)});
+      if (e.kind == model::EndKind::Free || e.kind == model::EndKind::Vessel) continue;
+      const PrescribedMotion motion(e.motion, rampTime);
+      out.push_back({end == 0 ? line.firstNode : line.lastNode(), e.position,
+                     [motion](double t) { return motion.at(t); }});
     }
   }
   return out;
@@ -31,7 +33,9 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   const auto wallStart = Clock::now();
   auto lastPrint = wallStart;
   const model::Model& model = m_assembler->model();
-  GeneralizedAlpha stepper(*m_assembler, m_settings, prescribedNodes(model));
+  std::vector<PrescribedNode> prescribed = prescribedNodes(model);
+  prescribed.insert(prescribed.end(), m_extraPrescribed.begin(), m_extraPrescribed.end());
+  GeneralizedAlpha stepper(*m_assembler, m_settings, std::move(prescribed));
   DynamicResult result;
   state.time = 0.0;
   stepper.initialize(state);
@@ -68,13 +72,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       dt = 0.5 * h;
       successes = 0;
       if (dt < m_settings.minTimeStep) {
-        std::string where = "unknown node";
-        if (o.worstNode >= 0) {
-          const int line = model.lineOfNode(o.worstNode);
-          const int local = o.worstNode - model.lines()[line].firstNode;
-          where = fmt::format("line '{}' node {} (arc length {:.2f} m)", model.lines()[line].name, local,
-                              model.lines()[line].arcLength[local]);
-        }
+        const std::string where = model.describeNode(o.worstNode);
         result.message =
             rejected ? fmt::format("dynamic analysis stopped at t = {:.6g} s: lines pass through each other even "
                                    "with the minimum time step {:.3g} s",

@@ -46,6 +46,10 @@ class DynamicAnalysis {
   void setStepLimiter(StepLimiter limiter) { m_limiter = std::move(limiter); }
   void setStepHook(StepHook hook) { m_hook = std::move(hook); }
   void setStepValidator(StepValidator validator) { m_validator = std::move(validator); }
+  /// Adds held nodes whose motion is imposed by other parts of the model (vessels).
+  void addPrescribed(std::vector<PrescribedNode> nodes) {
+    for (auto& n : nodes) m_extraPrescribed.push_back(std::move(n));
+  }
   /// Print a progress line (simulated time, real-time factor) to stderr about every 2 s of wall time.
   void setProgress(bool on) { m_progress = on; }
 
@@ -59,6 +63,7 @@ class DynamicAnalysis {
   StepLimiter m_limiter;
   StepHook m_hook;
   StepValidator m_validator;
+  std::vector<PrescribedNode> m_extraPrescribed;
   bool m_progress = false;
 };
 

@@ -1,6 +1,7 @@
 #include "tangle/time/GeneralizedAlpha.hpp"
 
 #include "tangle/core/Error.hpp"
+#include "tangle/geometry/Rotation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,21 +47,31 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr) {
   const model::DofMap& dofs = assembler.model().dofs();
   m_prescribedDof.assign(dofs.fullDofCount(), false);
-  for (const PrescribedNode& p : m_prescribed)
+  for (const PrescribedNode& p : m_prescribed) {
+    const int d = dofs.firstDof(p.node);
     for (int k = 0; k < 3; ++k)
-      if (dofs.equation(dofs.firstDof(p.node) + k) < 0) m_prescribedDof[dofs.firstDof(p.node) + k] = true;
+      if (dofs.equation(d + k) < 0) m_prescribedDof[d + k] = true;
+    // A prescribed rotation (vessel node): the rotational DOFs follow it too.
+    if (dofs.hasRotations(p.node) && p.motion(0.0).hasRotation)
+      for (int k = 3; k < 6; ++k) m_prescribedDof[d + k] = true;
+  }
 }
 
 void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
   const model::DofMap& dofs = m_assembler->model().dofs();
   for (const PrescribedNode& p : m_prescribed) {
-    const MotionValue m = p.motion.at(t);
+    const MotionValue m = p.motion(t);
     const int d = dofs.firstDof(p.node);
     for (int k = 0; k < 3; ++k) {
       if (dofs.equation(d + k) >= 0) continue;  // a released direction (roller) moves freely
       state.position[p.node][k] = p.basePosition[k] + m.displacement[k];
       state.velocity[d + k] = m.velocity[k];
       state.acceleration[d + k] = m.acceleration[k];
+    }
+    if (m.hasRotation && dofs.hasRotations(p.node)) {
+      state.triad[p.node] = m.rotation;
+      state.velocity.segment<3>(d + 3) = m.angularVelocity;
+      state.acceleration.segment<3>(d + 3) = m.angularAcceleration;
     }
   }
 }
@@ -81,7 +92,7 @@ double GeneralizedAlpha::residualNorm(const VecX& r, int* worstNode) const {
   int node = -1;
   for (int n = 0; n < dofs.nodeCount(); ++n) {
     const int d = dofs.firstDof(n);
-    const double lref = std::max(model.tributaryLength()[n], 1e-6);
+    const double lref = std::max(model.momentScale(n), 1e-6);
     for (int k = 0; k < dofs.dofCount(n); ++k) {
       const int eq = dofs.equation(d + k);
       if (eq < 0) continue;
@@ -121,6 +132,8 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     const int d = dofs.firstDof(pn.node);
     for (int k = 0; k < 3; ++k)
       if (m_prescribedDof[d + k]) dq[d + k] = target.position[pn.node][k] - start.position[pn.node][k];
+    if (dofs.hasRotations(pn.node) && m_prescribedDof[d + 3])
+      dq.segment<3>(d + 3) = geometry::logMap(target.triad[pn.node] * start.triad[pn.node].transpose());
   }
   // Other constrained DOFs stay where they are.
   for (int dof = 0; dof < nfull; ++dof)

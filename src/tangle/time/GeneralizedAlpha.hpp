@@ -34,11 +34,12 @@ struct AlphaParameters {
   static AlphaParameters from(model::IntegratorKind kind, double rhoInf);
 };
 
-/// A constrained node whose translations follow a prescribed motion about `basePosition`.
+/// A constrained node whose translations follow a prescribed motion about `basePosition` (and, for a
+/// vessel node, whose rotation follows a prescribed rotation).
 struct PrescribedNode {
   int node = 0;
   Vec3 basePosition = Vec3::Zero();  ///< position at t = 0 [m]
-  PrescribedMotion motion;
+  std::function<MotionValue(double)> motion;  ///< motion at time t [s]
 };
 
 /// Result of one attempted step.

@@ -3,6 +3,8 @@
 /// Prescribed displacement of a held line end about its initial position: ramped harmonic motion
 /// or a time-history table (linear interpolation, held at its last value).
 
+#include <functional>
+
 #include "tangle/core/Types.hpp"
 #include "tangle/model/ModelSpec.hpp"
 
@@ -13,6 +15,10 @@ struct MotionValue {
   Vec3 displacement = Vec3::Zero();  ///< [m]
   Vec3 velocity = Vec3::Zero();      ///< [m/s]
   Vec3 acceleration = Vec3::Zero();  ///< [m/s^2]
+  bool hasRotation = false;          ///< the node's rotation is prescribed too (vessel nodes)
+  Mat3 rotation = Mat3::Identity();  ///< absolute rotation (vessel axes to global)
+  Vec3 angularVelocity = Vec3::Zero();      ///< spatial [rad/s]
+  Vec3 angularAcceleration = Vec3::Zero();  ///< spatial [rad/s^2]
 };
 
 /// A prescribed end motion.

@@ -102,8 +102,11 @@ TEST(MooringConvergenceTest, TensionRangeConvergedInTimeStep) {
   // whose phase depends on dt, see the file comment).
   EXPECT_LT(relativeChange(r02.range, r01.range), 0.02);
   EXPECT_LT(relativeChange(r01.range, r005.range), 0.02);
-  // Sanity: the quasi-static range of this line for +-5 m is ~190 kN (the first harmonic of the
-  // tension is 187.7 kN peak to peak); the dynamic range must be of that size, not a numerical artefact.
+  // Gross-change guard only: the response is strongly dynamic (static solutions with the fairlead at
+  // -5, 0, +5 m give 321.2, 308.3, 296.7 kN, a quasi-static range of 24 kN, against ~199 kN here; the
+  // line's inertia dominates and drag limits it: without drag the range is 451 kN with near-slack
+  // minima, without added mass 198 kN), and its first harmonic, 187.7 kN peak to peak, is converged in
+  // step and mesh to 0.1 %.
   EXPECT_GT(r005.range, 1.5e5);
   EXPECT_LT(r005.range, 2.5e5);
 }

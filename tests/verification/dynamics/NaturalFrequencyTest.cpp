@@ -257,8 +257,8 @@ BeamModel makeBeam(double rotaryDiameter) {
   return b;
 }
 
-/// Bending frequencies of the beam: the non-zero eigenfrequencies, skipping the rigid twist about the
-/// beam axis (pinned ends leave all rotations free, so a uniform twist is a zero-energy mode).
+/// Bending frequencies of the beam: the non-zero eigenfrequencies, skipping a rigid twist about the
+/// beam axis if the model leaves one (pinned ends leave all rotations free).
 std::vector<double> beamBendingFrequencies(BeamModel& b, int* rigidModes) {
   const ModalResult modal = modalAnalysis(*b.assembler, b.state);
   std::vector<double> f;
@@ -279,7 +279,9 @@ TEST(SimplySupportedBeamTest, BendingEigenfrequenciesMatchEulerBernoulli) {
   BeamModel b = makeBeam(rod.outerDiameter);
   int rigid = 0;
   const std::vector<double> f = beamBendingFrequencies(b, &rigid);
-  EXPECT_EQ(rigid, 1) << "only the rigid twist about the axis may have zero frequency";
+  // Pinned ends leave the rotations free: the only possible zero-frequency mode is the rigid twist about
+  // the beam axis, and the model removes it with a torsion lock at end A (Model::buildLine).
+  EXPECT_LE(rigid, 1) << "only the rigid twist about the axis may have zero frequency";
   ASSERT_GE(f.size(), 6u);
 
   // Same beam with a 10x smaller rotary diameter: rotational inertia 100x smaller, everything else equal.

@@ -1,0 +1,290 @@
+#include "tangle/vessel/VesselSystem.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tangle/geometry/Rotation.hpp"
+#include "tangle/hydro/AiryWave.hpp"
+#include "tangle/hydro/JonswapSea.hpp"
+#include "tangle/time/Ramp.hpp"
+#include "tangle/vessel/Tensioner.hpp"
+
+namespace tangle::vessel {
+
+namespace {
+/// Link stiffness: 100 times the axial stiffness EA / L of the line's end element, so the link adds
+/// 1 % to that element's compliance.
+constexpr double kLinkFactor = 100.0;
+/// A beam end hung from a vessel without a flex joint is pinned; a rotational spring of 1e-6 EI / L
+/// removes the free twist mechanism without carrying any noticeable moment.
+constexpr double kPinnedFlexFactor = 1e-6;
+/// Stiffness of the "DP hold" of a free vessel in statics [N/m] and [N m/rad].
+constexpr double kHoldStiffness = 1e10;
+constexpr double kHoldRotationalStiffness = 1e13;
+
+void addBlock6(solver::SystemMatrix& m, int rowFirst, int colFirst, const Mat6& b, double scale) {
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) m.add(rowFirst + i, colFirst + j, scale * b(i, j));
+}
+}  // namespace
+
+VesselSystem::VesselSystem(const model::Model& model, const hydro::HydroLoads& hydro)
+    : m_model(&model), m_hydro(&hydro), m_rampTime(model.spec().dynamics.rampTime) {
+  const model::EnvironmentSpec& env = model.environment();
+  const model::WaveSpec& w = env.waves;
+  m_waveAzimuth = w.azimuth;
+  m_waveAmplitude = w.kind == model::WaveKind::Airy      ? 0.5 * w.height
+                    : w.kind == model::WaveKind::Jonswap ? 0.5 * w.significantHeight
+                                                         : 0.0;
+  // Wave components for the RAO motion (phase sign: the waves use cos(k x - omega t + phase), the RAO
+  // motion cos(omega t - k x + phase), so the component phase is the negated wave phase).
+  std::vector<RaoMotion::Component> components;
+  if (const hydro::WaveField* field = hydro.waves()) {
+    if (const auto* airy = dynamic_cast<const hydro::AiryWave*>(field)) {
+      components.push_back({0.5 * airy->height(), airy->angularFrequency(), airy->waveNumber(), airy->azimuth(),
+                            -airy->phase()});
+    } else if (const auto* sea = dynamic_cast<const hydro::JonswapSea*>(field)) {
+      for (const hydro::WaveComponent& c : sea->components())
+        components.push_back({c.amplitude, c.omega, c.waveNumber, sea->parameters().azimuth, -c.phase});
+    }
+  }
+  for (int v = 0; v < static_cast<int>(model.vessels().size()); ++v) {
+    const model::VesselSpec& spec = model.vessels()[v];
+    VesselData d;
+    d.spec = &spec;
+    d.node = model.vesselNode(v);
+    d.position0 = spec.position;
+    d.rotation0 = model.vesselRotation(v);
+    d.loads = std::make_unique<VesselLoads>(spec, env);
+    if (!spec.raos.period.empty() && !components.empty())
+      d.rao = std::make_unique<RaoMotion>(spec.raos, spec.heading, components);
+    m_vessels.push_back(std::move(d));
+  }
+  const model::State s0 = model.initialState();
+  for (const model::Line& line : model.lines()) {
+    for (int end = 0; end < 2; ++end) {
+      const model::EndSpec& e = end == 0 ? line.spec->endA : line.spec->endB;
+      if (e.kind != model::EndKind::Vessel) continue;
+      Connection c;
+      c.vessel = model.vesselIndex(e.vessel);
+      c.node = end == 0 ? line.firstNode : line.lastNode();
+      c.offset = e.position;
+      const model::LineElement& el = model.elements()[end == 0 ? line.firstElement : line.firstElement + line.elementCount - 1];
+      c.linkStiffness = kLinkFactor * el.type->axialStiffness / el.restLength;
+      c.tensioner = e.tensioner;
+      if (model.dofs().hasRotations(c.node) && el.beam) {
+        c.flexStiffness = e.flexJoint.enabled
+                              ? e.flexJoint.stiffness
+                              : kPinnedFlexFactor * el.beam->properties().bendingStiffness / el.restLength;
+      }
+      c.endTriad0 = s0.triad[c.node];
+      m_connections.push_back(c);
+    }
+  }
+}
+
+VesselSystem::~VesselSystem() = default;
+
+Vec3 VesselSystem::vesselPoint(const model::State& state, int vessel, const Vec3& offset) const {
+  const int node = m_vessels[vessel].node;
+  return state.position[node] + state.triad[node] * offset;
+}
+
+time::MotionValue VesselSystem::prescribedPose(int v, double t) const {
+  const VesselData& d = m_vessels[v];
+  time::MotionValue m;
+  m.hasRotation = true;
+  m.rotation = d.rotation0;
+  if (d.spec->mode != model::VesselMode::Prescribed) return m;
+  const double w = 2.0 * kPi / d.spec->motionPeriod;
+  const time::RampValue r = time::ramp(t, m_rampTime);
+  Vec6 value, rate, accel;
+  for (int k = 0; k < 6; ++k) {
+    const double a = d.spec->motionAmplitude[k];
+    const double s = std::sin(w * t + d.spec->motionPhase[k]);
+    const double c = std::cos(w * t + d.spec->motionPhase[k]);
+    value[k] = r.value * a * s;
+    rate[k] = (r.rate * s + r.value * w * c) * a;
+    accel[k] = (r.accel * s + 2.0 * r.rate * w * c - r.value * w * w * s) * a;
+  }
+  // Translations and small rotations are given in vessel axes.
+  m.displacement = d.rotation0 * value.head<3>();
+  m.velocity = d.rotation0 * rate.head<3>();
+  m.acceleration = d.rotation0 * accel.head<3>();
+  m.rotation = d.rotation0 * geometry::expMap(value.tail<3>());
+  m.angularVelocity = d.rotation0 * rate.tail<3>();
+  m.angularAcceleration = d.rotation0 * accel.tail<3>();
+  return m;
+}
+
+time::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, const Vec3& offset, double t) const {
+  time::MotionValue m;
+  const VesselData& d = m_vessels[v];
+  if (!d.rao) return m;
+  const RaoMotion::Motion r = d.rao->at(t, d.position0, time::ramp(t, m_rampTime).value);
+  const Vec3 arm = rotation * offset;
+  // First order: translation plus small rotation times the lever arm.
+  m.displacement = r.displacement.head<3>() + r.displacement.tail<3>().cross(arm);
+  m.velocity = r.velocity.head<3>() + r.velocity.tail<3>().cross(arm);
+  m.acceleration = r.acceleration.head<3>() + r.acceleration.tail<3>().cross(arm);
+  return m;
+}
+
+std::vector<time::PrescribedNode> VesselSystem::prescribedNodes() const {
+  std::vector<time::PrescribedNode> out;
+  for (int v = 0; v < static_cast<int>(m_vessels.size()); ++v) {
+    const VesselData& d = m_vessels[v];
+    if (d.spec->mode == model::VesselMode::Prescribed)
+      out.push_back({d.node, d.position0, [this, v](double t) { return prescribedPose(v, t); }});
+  }
+  for (const Connection& c : m_connections) {
+    const VesselData& d = m_vessels[c.vessel];
+    if (d.spec->mode == model::VesselMode::Free) continue;
+    const int v = c.vessel;
+    const Vec3 offset = c.offset;
+    const Vec3 base = d.position0 + d.rotation0 * offset;
+    out.push_back({c.node, base, [this, v, offset, base](double t) {
+                     const time::MotionValue pose = prescribedPose(v, t);
+                     const Vec3 arm = pose.rotation * offset;
+                     const time::MotionValue rao = raoPointMotion(v, pose.rotation, offset, t);
+                     time::MotionValue m;
+                     m.displacement = m_vessels[v].position0 + pose.displacement + arm + rao.displacement - base;
+                     m.velocity = pose.velocity + pose.angularVelocity.cross(arm) + rao.velocity;
+                     m.acceleration = pose.acceleration + pose.angularAcceleration.cross(arm) +
+                                      pose.angularVelocity.cross(pose.angularVelocity.cross(arm)) + rao.acceleration;
+                     return m;
+                   }});
+  }
+  return out;
+}
+
+void VesselSystem::addLink(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,
+                           VecX& force, solver::SystemMatrix* matrix) const {
+  const model::DofMap& dofs = m_model->dofs();
+  const VesselData& d = m_vessels[c.vessel];
+  const Mat3& rotation = state.triad[d.node];
+  const Vec3 arm = rotation * c.offset;
+  const Vec3 p = state.position[d.node] + arm + raoPointMotion(c.vessel, rotation, c.offset, request.time).displacement;
+  const Vec3 g = state.position[c.node] - p;
+  // External force on the line end and its stiffness against the relative displacement g.
+  Vec3 fEnd;
+  Mat3 kc;
+  if (c.tensioner.enabled) {
+    const Vec3 e = rotation * Vec3::UnitZ();
+    const Mat3 horizontal = Mat3::Identity() - e * e.transpose();
+    const double stroke = -g.dot(e);  // > 0: the end hangs below the mid-stroke point
+    const TensionerForce t = tensionerForce(c.tensioner, stroke);
+    fEnd = -c.linkStiffness * horizontal * g + t.force * e;
+    kc = c.linkStiffness * horizontal + t.stiffness * e * e.transpose();
+  } else {
+    fEnd = -c.linkStiffness * g;
+    kc = c.linkStiffness * Mat3::Identity();
+  }
+  const int de = dofs.firstDof(c.node);
+  const int dv = dofs.firstDof(d.node);
+  force.segment<3>(de) -= fEnd;                 // on the line end
+  force.segment<3>(dv) += fEnd;                 // reaction on the vessel ...
+  force.segment<3>(dv + 3) += arm.cross(fEnd);  // ... and its moment about the reference point
+  if (!matrix) return;
+  // dF = J^T Kc J with dg = J dq = d(x_end) - d(X) + skew(arm) d(theta) (the lever arm's own rotation
+  // and the turning of the tensioner axis are left out of the tangent).
+  const Mat3 s = geometry::skew(arm);
+  const double kf = request.kf;
+  matrix->add3x3(de, de, kc, kf);
+  matrix->add3x3(de, dv, kc, -kf);
+  matrix->add3x3(de, dv + 3, Mat3(kc * s), kf);
+  matrix->add3x3(dv, de, kc, -kf);
+  matrix->add3x3(dv, dv, kc, kf);
+  matrix->add3x3(dv, dv + 3, Mat3(-kc * s), kf);
+  matrix->add3x3(dv + 3, de, Mat3(-s.transpose() * kc), -kf);
+  matrix->add3x3(dv + 3, dv, Mat3(s.transpose() * kc), -kf);
+  matrix->add3x3(dv + 3, dv + 3, Mat3(s.transpose() * kc * s), kf);
+}
+
+void VesselSystem::addFlexJoint(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,
+                                VecX& force, solver::SystemMatrix* matrix) const {
+  if (c.flexStiffness <= 0.0) return;
+  const model::DofMap& dofs = m_model->dofs();
+  const VesselData& d = m_vessels[c.vessel];
+  const bool free = d.spec->mode == model::VesselMode::Free;
+  const Mat3 rotation = free ? state.triad[d.node] : prescribedPose(c.vessel, request.time).rotation;
+  // Relative rotation of the line end with respect to the vessel since t = 0 (spatial rotation vector).
+  const Mat3 endTurn = state.triad[c.node] * c.endTriad0.transpose();
+  const Mat3 vesselTurn = rotation * d.rotation0.transpose();
+  const Vec3 phi = geometry::logMap(endTurn * vesselTurn.transpose());
+  const int de = dofs.firstDof(c.node) + 3;
+  const int dv = dofs.firstDof(d.node) + 3;
+  force.segment<3>(de) += c.flexStiffness * phi;
+  if (free) force.segment<3>(dv) -= c.flexStiffness * phi;
+  if (!matrix) return;
+  const double k = request.kf * c.flexStiffness;
+  for (int i = 0; i < 3; ++i) {
+    matrix->add(de + i, de + i, k);
+    if (free) {
+      matrix->add(de + i, dv + i, -k);
+      matrix->add(dv + i, de + i, -k);
+      matrix->add(dv + i, dv + i, k);
+    }
+  }
+}
+
+void VesselSystem::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                             solver::SystemMatrix* matrix) {
+  const model::DofMap& dofs = m_model->dofs();
+  for (const VesselData& d : m_vessels) {
+    if (d.spec->mode != model::VesselMode::Free) continue;
+    const int dv = dofs.firstDof(d.node);
+    const Vec6 velocity = request.dynamic ? Vec6(state.velocity.segment<6>(dv)) : Vec6::Zero();
+    const Vec3 current = m_hydro->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0),
+                                          request.time, false)
+                             .velocity;
+    const BodyLoad load = d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0,
+                                         d.rotation0, current, m_waveAmplitude, m_waveAzimuth, 1.0);
+    force.segment<6>(dv) -= load.force;
+    if (matrix) {
+      addBlock6(*matrix, dv, dv, load.stiffness, request.kf);
+      if (request.dynamic && request.cf != 0.0) addBlock6(*matrix, dv, dv, load.damping, request.cf);
+    }
+    if (d.spec->heldInStatics && !request.dynamic) {
+      // Dynamic positioning on station during statics: stiff springs to the initial pose.
+      force.segment<3>(dv) += kHoldStiffness * (state.position[d.node] - d.position0);
+      force.segment<3>(dv + 3) +=
+          kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
+      if (matrix) {
+        matrix->addDiagonal3(dv, request.kf * kHoldStiffness);
+        matrix->addDiagonal3(dv + 3, request.kf * kHoldRotationalStiffness);
+      }
+    }
+  }
+  for (const Connection& c : m_connections) {
+    const VesselData& d = m_vessels[c.vessel];
+    if (d.spec->mode == model::VesselMode::Free) {
+      addLink(state, c, request, force, matrix);
+    } else if (c.tensioner.enabled) {
+      // End on a fixed/prescribed vessel hanging from its tensioner: held horizontally (prescribed),
+      // vertical force from the tensioner.
+      const time::MotionValue pose = prescribedPose(c.vessel, request.time);
+      const Vec3 p = d.position0 + pose.displacement + pose.rotation * c.offset +
+                     raoPointMotion(c.vessel, pose.rotation, c.offset, request.time).displacement;
+      const int dz = m_model->dofs().firstDof(c.node) + 2;
+      const TensionerForce t = tensionerForce(c.tensioner, p.z() - state.position[c.node].z());
+      force[dz] -= t.force;
+      if (matrix) matrix->add(dz, dz, request.kf * t.stiffness);
+    }
+    addFlexJoint(state, c, request, force, matrix);
+  }
+}
+
+void VesselSystem::addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
+                           VecX* out) {
+  const model::DofMap& dofs = m_model->dofs();
+  for (const VesselData& d : m_vessels) {
+    if (d.spec->mode != model::VesselMode::Free) continue;
+    const Mat6 m = d.loads->massMatrix(state.triad[d.node]);
+    const int dv = dofs.firstDof(d.node);
+    if (matrix) addBlock6(*matrix, dv, dv, m, mf);
+    if (out) out->segment<6>(dv) += m * acceleration->segment<6>(dv);
+  }
+}
+
+}  // namespace tangle::vessel

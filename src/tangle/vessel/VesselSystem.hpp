@@ -1,0 +1,80 @@
+#pragma once
+/// @file VesselSystem.hpp
+/// Floating units in the coupled analysis. Each vessel is a 6-DOF node (reference point position and
+/// orientation). Fixed and prescribed vessels are held nodes whose motion is imposed; the line ends
+/// on them are held nodes that follow the vessel point (plus the first-order RAO motion). A free
+/// vessel is solved with its lines in the same implicit Newton iteration: its body loads (VesselLoads)
+/// and 6x6 mass enter the global system, and each line end on it is tied to the vessel point by a
+/// stiff link (penalty), or hangs from a tensioner (constant tension over a stroke, end stops), with an
+/// optional flex joint (rotational spring) for beam lines.
+
+#include <memory>
+#include <vector>
+
+#include "tangle/hydro/HydroLoads.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/Assembler.hpp"
+#include "tangle/time/GeneralizedAlpha.hpp"
+#include "tangle/vessel/RaoMotion.hpp"
+#include "tangle/vessel/VesselLoads.hpp"
+
+namespace tangle::vessel {
+
+/// All vessels of a model and their connections to line ends.
+class VesselSystem final : public solver::LoadContributor {
+ public:
+  VesselSystem(const model::Model& model, const hydro::HydroLoads& hydro);
+  ~VesselSystem() override;
+
+  void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                 solver::SystemMatrix* matrix) override;
+  void addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
+               VecX* out) override;
+
+  /// Held nodes that move: prescribed vessels and the line ends on fixed/prescribed vessels (RAO motion).
+  std::vector<time::PrescribedNode> prescribedNodes() const;
+
+  /// Global position [m] of a vessel point given in vessel axes at a state (without RAO motion).
+  Vec3 vesselPoint(const model::State& state, int vessel, const Vec3& offset) const;
+
+  /// True when the model has any vessel.
+  bool empty() const { return m_vessels.empty(); }
+
+ private:
+  struct Connection {
+    int vessel = 0;
+    int node = 0;            ///< line end node
+    Vec3 offset;             ///< fairlead in vessel axes [m]
+    double linkStiffness = 0.0;  ///< [N/m]
+    model::TensionerSpec tensioner;
+    double flexStiffness = 0.0;  ///< [N m/rad] (0: no rotational coupling)
+    Mat3 endTriad0 = Mat3::Identity();  ///< triad of the end node at t = 0
+  };
+  struct VesselData {
+    const model::VesselSpec* spec = nullptr;
+    int node = 0;
+    Vec3 position0;
+    Mat3 rotation0;
+    std::unique_ptr<VesselLoads> loads;
+    std::unique_ptr<RaoMotion> rao;  ///< nullptr without RAOs or waves
+  };
+
+  /// Pose (position, rotation) and 6-velocity/acceleration of a non-free vessel at time t.
+  time::MotionValue prescribedPose(int vessel, double t) const;
+  /// RAO displacement/velocity/acceleration of a vessel point (vessel axes offset) at t.
+  time::MotionValue raoPointMotion(int vessel, const Mat3& rotation, const Vec3& offset, double t) const;
+  void addLink(const model::State& state, const Connection& c, const solver::AssemblyRequest& request, VecX& force,
+               solver::SystemMatrix* matrix) const;
+  void addFlexJoint(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,
+                    VecX& force, solver::SystemMatrix* matrix) const;
+
+  const model::Model* m_model;
+  const hydro::HydroLoads* m_hydro;
+  std::vector<VesselData> m_vessels;
+  std::vector<Connection> m_connections;
+  double m_waveAmplitude = 0.0;  ///< H/2 (regular) or Hs/2 (irregular) for the drift force [m]
+  double m_waveAzimuth = 0.0;
+  double m_rampTime = 0.0;
+};
+
+}  // namespace tangle::vessel
