@@ -372,6 +372,97 @@ def clearance_figure(table: Table) -> Figure:
 # Files
 
 
+def _line_history(results: Path, line: str, quantity: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Time history of one quantity along a line: (times [s], arc lengths [m], values[time, node])."""
+    path = results / "dynamics" / line / f"{quantity}.csv"
+    raw = np.genfromtxt(path, delimiter=",", names=None, skip_header=1)
+    raw = np.atleast_2d(raw)
+    with open(path, encoding="utf-8") as f:
+        header = f.readline().strip().split(",")
+    arcs = np.array([float(h[2:-1]) for h in header[1:]])  # "s=12.500m"
+    return raw[:, 0], arcs, raw[:, 1:]
+
+
+def _interp_along(arcs: np.ndarray, values: np.ndarray, arc: float) -> float:
+    return float(np.interp(arc, arcs, values))
+
+
+def drift_path_figure(results: Path) -> Figure:
+    """Paper Fig. 11: XY path of every free vessel and of the contact points (from the clash report)."""
+    vessels = read_csv(results / "dynamics" / "vessels.csv")
+    fig = Figure(figsize=(8, 7))
+    ax = fig.add_subplot(1, 1, 1)
+    names = [c[: -len("_x_m")] for c in vessels if c.endswith("_x_m")]
+    for name in names:
+        x = _numeric(vessels, f"{name}_x_m", "vessels.csv")
+        y = _numeric(vessels, f"{name}_y_m", "vessels.csv")
+        if np.ptp(x) + np.ptp(y) < 1e-6:
+            ax.plot(x[:1], y[:1], "s", color="0.3", label=f"{name} (fixed)")
+            continue
+        ax.plot(x, y, "-", lw=2, label=f"{name} path")
+        ax.plot(x[0], y[0], "o", color="k")
+        ax.annotate("t = 0", (x[0], y[0]), textcoords="offset points", xytext=(5, 5))
+    paths = results / "contact" / "event_paths.csv"
+    events = results / "contact" / "events.csv"
+    xs: list = []
+    ys: list = []
+    if paths.is_file() and events.is_file():
+        ev = read_csv(events, text=("line_1", "line_2"))
+        pt = read_csv(paths)
+        line1 = {int(i): str(n) for i, n in zip(ev["event"], ev["line_1"])}
+        cache: dict = {}
+        for event, t, arc in zip(_numeric(pt, "event", paths), _numeric(pt, "time_s", paths), _numeric(pt, "arc_1_m", paths)):
+            line = line1.get(int(event))
+            if line is None:
+                continue
+            if line not in cache:
+                cache[line] = (_line_history(results, line, "x_m"), _line_history(results, line, "y_m"))
+            (times, arcs, xv), (_, _, yv) = cache[line]
+            k = int(np.argmin(np.abs(times - t)))
+            xs.append(_interp_along(arcs, xv[k], arc))
+            ys.append(_interp_along(arcs, yv[k], arc))
+        if xs:
+            ax.plot(xs, ys, ".", color="tab:red", ms=4, label="contact point")
+    # The lines at the end of the run, in plan.
+    for line_dir in sorted(p for p in (results / "dynamics").iterdir() if p.is_dir()):
+        try:
+            _, _, xv = _line_history(results, line_dir.name, "x_m")
+            _, _, yv = _line_history(results, line_dir.name, "y_m")
+        except OSError:
+            continue
+        ax.plot(xv[-1], yv[-1], "-", color="0.6", lw=0.8)
+    # Zoom on the moving vessels (the lines run off the figure).
+    moving = [(_numeric(vessels, f"{n}_x_m", "v"), _numeric(vessels, f"{n}_y_m", "v")) for n in names]
+    moving = [(x, y) for x, y in moving if np.ptp(x) + np.ptp(y) >= 1e-6]
+    if moving:
+        allx = np.concatenate([x for x, _ in moving] + ([np.array(xs)] if paths.is_file() and xs else []))
+        ally = np.concatenate([y for _, y in moving] + ([np.array(ys)] if paths.is_file() and ys else []))
+        half = 0.5 * max(np.ptp(allx), np.ptp(ally), 20.0) * 1.4
+        cx, cy = 0.5 * (allx.min() + allx.max()), 0.5 * (ally.min() + ally.max())
+        ax.set_xlim(cx - half, cx + half)
+        ax.set_ylim(cy - half, cy + half)
+    ax.set_aspect("equal", adjustable="box")
+    ax.set_title("Drift path of the vessels and contact points (plan view, cf. paper Fig. 11)")
+    ax.legend(loc="best", fontsize="small")
+    _finish(ax, "x [m]", "y [m]")
+    return fig
+
+
+def peak_bending_figure(results: Path, line: str) -> Figure:
+    """Paper Fig. 12: bending moment along a line at the instant of its peak bending moment."""
+    times, arcs, moments = _line_history(results, line, "bending_moment_Nm")
+    k, node = np.unravel_index(int(np.argmax(moments)), moments.shape)
+    fig = Figure(figsize=(8, 5))
+    ax = fig.add_subplot(1, 1, 1)
+    ax.plot(arcs, moments[k] / 1000.0, "-", lw=2, label=f"t = {times[k]:.2f} s")
+    ax.plot(arcs[node], moments[k, node] / 1000.0, "v", color="tab:red",
+            label=f"peak {moments[k, node] / 1000.0:.1f} kN m at {arcs[node]:.1f} m")
+    ax.set_title(f"Bending moment along '{line}' at the instant of peak moment (cf. paper Fig. 12)")
+    ax.legend(loc="best")
+    _finish(ax, "arc length from end A [m]", "bending moment [kN m]")
+    return fig
+
+
 def _save(fig: Figure, out_png: str | Path) -> Path:
     out_png = Path(out_png)
     out_png.parent.mkdir(parents=True, exist_ok=True)
@@ -453,6 +544,19 @@ def plot_results(results_dir: str | Path, out_dir: str | Path | None = None, err
     clearance = results / "contact" / "clearance.csv"
     if clearance.is_file():
         attempt(clearance, lambda: plot_clearance(clearance, out / "clearance.png"))
+
+    if (dynamics_dir / "vessels.csv").is_file():
+        attempt(dynamics_dir / "vessels.csv", lambda: _save(drift_path_figure(results), out / "drift_path.png"))
+    if events.is_file():
+        # Peak bending moment of the line hit second in each pair (line_2) that has bending stiffness.
+        try:
+            second = sorted(set(str(v) for v in read_csv(events, text=("line_1", "line_2"))["line_2"]))
+        except (OSError, ValueError, KeyError):
+            second = []
+        for line in second:
+            bm = dynamics_dir / line / "bending_moment_Nm.csv"
+            if bm.is_file():
+                attempt(bm, lambda l=line: _save(peak_bending_figure(results, l), out / f"peak_bending_{l}.png"))
 
     if errors is not None:
         errors.extend(failures)

@@ -159,6 +159,58 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
   if (m_debug)
     std::cerr << fmt::format("      findContacts: {} candidates, {} raw, trial {}, sticky {}\n", m_candidates.size(), raw.size(),
                              trial, m_sticky.size());
+  // A line bent at a node towards the other line (a convex kink: a rod hit at a node and bent by the
+  // impact, a line draped over another) has an interior closest point on each of the two elements at
+  // the node, one on each side, about (rA + rB) times the kink angle away from it. They are one
+  // physical contact: keeping either (chosen by round-off when the layout is symmetric) puts the force
+  // off the node and lets Newton cycle between the two. Both are moved to the node (where the smooth
+  // line's closest point is), with the closest point on the other segment recomputed.
+  {
+    auto interior = [](double w) { return w > 1e-9 && w < 1.0 - 1e-9; };
+    std::vector<int> snapA(raw.size(), -1), snapB(raw.size(), -1);  // -1: keep; 0 / 1: move to that end
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      const SegmentProxy& a = m_proxies[raw[i].proxyA];
+      const SegmentProxy& b = m_proxies[raw[i].proxyB];
+      for (std::size_t j = 0; j < raw.size(); ++j) {
+        const SegmentProxy& a2 = m_proxies[raw[j].proxyA];
+        const SegmentProxy& b2 = m_proxies[raw[j].proxyB];
+        if (j == i || a2.line != a.line || b2.line != b.line) continue;
+        if (b2.element == b.element + 1 && elements[b.element].node2 == elements[b2.element].node1 &&
+            std::abs(a2.element - a.element) <= 1 && interior(raw[i].d.t) && interior(raw[j].d.t)) {
+          snapB[i] = 1;
+          snapB[j] = 0;
+        }
+        if (a2.element == a.element + 1 && elements[a.element].node2 == elements[a2.element].node1 &&
+            std::abs(b2.element - b.element) <= 1 && interior(raw[i].d.s) && interior(raw[j].d.s)) {
+          snapA[i] = 1;
+          snapA[j] = 0;
+        }
+      }
+    }
+    auto project = [](const Vec3& p, const Vec3& x0, const Vec3& x1) {
+      const Vec3 m = x1 - x0;
+      const double mm = m.squaredNorm();
+      return mm > 0.0 ? std::clamp((p - x0).dot(m) / mm, 0.0, 1.0) : 0.0;
+    };
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (snapA[i] < 0 && snapB[i] < 0) continue;
+      geometry::SegmentDistanceResult& d = raw[i].d;
+      const model::LineElement& ea = elements[m_proxies[raw[i].proxyA].element];
+      const model::LineElement& eb = elements[m_proxies[raw[i].proxyB].element];
+      const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
+      const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
+      if (snapA[i] >= 0) d.s = snapA[i];
+      if (snapB[i] >= 0) d.t = snapB[i];
+      if (snapA[i] < 0) d.s = project(b0 + d.t * (b1 - b0), a0, a1);
+      if (snapB[i] < 0) d.t = project(a0 + d.s * (a1 - a0), b0, b1);
+      d.closest0 = a0 + d.s * (a1 - a0);
+      d.closest1 = b0 + d.t * (b1 - b0);
+      d.distance = (d.closest0 - d.closest1).norm();
+      if (m_debug)
+        std::cerr << fmt::format("        kink: e{}-e{} moved to s {:.6f} t {:.6f}\n", m_proxies[raw[i].proxyA].element,
+                                 m_proxies[raw[i].proxyB].element, d.s, d.t);
+    }
+  }
   // Keep local minima of the distance among neighbouring element pairs of the same two lines.
   m_trial.clear();
   for (std::size_t i = 0; i < raw.size(); ++i) {
@@ -389,16 +441,18 @@ double LineContact::stepLimit(const model::State& state) {
     const double rate = n.dot(pointVelocity(state, a.element, d.s) - pointVelocity(state, b.element, d.t));
     if (rate >= 0.0) continue;
     limit = std::min(limit, (std::max(gap, 0.0) + 0.2 * radii) / -rate);
-    // A dynamic impact about to start (same criterion as below, with the lumped pair mass): the step
-    // that reaches it may overshoot the touching time by at most a twentieth of the impact duration,
-    // so the first contact step is as short as the ones that resolve the impact (a step of the
-    // nominal length would swallow an impact that lasts far less than a step).
+    // A dynamic impact about to start (same criterion as below, with the lumped pair mass): approach it
+    // with steps of at most half the time to touch, down to the impact resolution (a twentieth of the
+    // impact duration), so that the first step in contact is as short as the ones that resolve the
+    // impact. A longer step ending in contact would apply the contact force over the whole step: a
+    // spurious impulse that stops the line (a step of the nominal length swallows an impact that lasts
+    // far less than a step). Half the time to touch leaves room for accelerations within the step.
     if (gap > 0.0) {
       const double ma = lumpedMass(a.element, d.s), mb = lumpedMass(b.element, d.t);
       const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
       const double k = stiffness(a.line, b.line);
       if (std::isfinite(m) && -rate * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius))
-        limit = std::min(limit, gap / -rate + contactDuration(k, m, m_zeta) / 20.0);
+        limit = std::min(limit, std::max(0.5 * gap / -rate, contactDuration(k, m, m_zeta) / 20.0));
     }
   }
   // Resolve every impact with at least 20 steps while it lasts. An impact is dynamic when the rigid

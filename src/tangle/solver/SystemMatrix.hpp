@@ -20,7 +20,9 @@ class SystemMatrix {
   void add(int row, int col, double v) {
     const int r = m_dofs->equation(row);
     const int c = m_dofs->equation(col);
-    if (r >= 0 && c >= 0 && v != 0.0) m_triplets.emplace_back(r, c, v);
+    // Exact zeros are kept: dropping them would make the sparsity pattern depend on the values (e.g.
+    // two grounded nodes at the same height) and force a new symbolic factorisation.
+    if (r >= 0 && c >= 0) m_triplets.emplace_back(r, c, v);
   }
   /// Adds a dense block: rows/cols are the full DOF indices of the block's rows/columns.
   template <class Derived>

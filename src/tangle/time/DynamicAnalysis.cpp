@@ -44,10 +44,13 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   const double duration = m_settings.duration;
   const double nominal = m_settings.timeStep;
   const double out = m_settings.outputInterval;
-  double nextOutput = out;
+  // Output times are k * interval (not a running sum, whose round-off would leave slivers of steps).
+  long outputIndex = 1;
+  double nextOutput = std::min(out, duration);
   double dt = nominal;
   int successes = 0;
-  const double eps = 1e-9 * nominal;
+  // Remainders shorter than this are round-off, not time to simulate.
+  const double eps = 1e-6 * nominal;
   model::State before;
   double lastStep = nominal;  // the step grows at most twofold from one step to the next
   while (state.time < duration - eps) {
@@ -92,8 +95,10 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       successes = 0;
     }
     if (state.time >= nextOutput - eps) {
+      state.time = nextOutput;  // land exactly (the step was cut to reach it)
       if (m_observer) m_observer(state, stepper.lastForce());
-      nextOutput += out;
+      ++outputIndex;
+      nextOutput = std::min(static_cast<double>(outputIndex) * out, duration);
     }
     if (m_progress) {
       const auto now = Clock::now();

@@ -84,6 +84,9 @@ class GeneralizedAlpha {
   VecX m_force;
   std::vector<bool> m_prescribedDof;
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
+  bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
+  bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
+  double m_factorStep = 0.0;     // the time step that factorisation was made for [s]
 };
 
 }  // namespace tangle::time

@@ -164,13 +164,13 @@ RaoMotion::Motion RaoMotion::at(double t, const Vec3& referencePoint, double ram
   Vec6 dq = Vec6::Zero();
   Vec6 ddq = Vec6::Zero();
   for (const ComponentResponse& r : m_responses) {
-    const double theta = r.kx * referencePoint.x() + r.ky * referencePoint.y() - r.omega * t + r.phase;
+    const double chi = r.omega * t - r.kx * referencePoint.x() - r.ky * referencePoint.y() + r.phase;
     for (int j = 0; j < 6; ++j) {
       const double amp = r.amplitude * r.rao[j];
-      const double arg = theta + r.lag[j];
+      const double arg = chi - r.lag[j];
       const double c = std::cos(arg);
       q(j) += amp * c;
-      dq(j) += amp * r.omega * std::sin(arg);
+      dq(j) -= amp * r.omega * std::sin(arg);
       ddq(j) -= amp * r.omega * r.omega * c;
     }
   }

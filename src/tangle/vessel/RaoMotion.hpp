@@ -6,15 +6,17 @@
 /// Newman 1977, "Marine hydrodynamics", ch. 6). Equations: docs/theory-vessel.md.
 ///
 /// Conventions.
-/// - Wave component i (same definition as hydro::AiryWave / hydro::WaveComponent):
-///   eta_i(x, y, t) = a_i cos(theta_i), theta_i = k_i (x cos b_i + y sin b_i) - omega_i t + phase_i.
+/// - Wave component i: the motion formula uses the phase psi_i of the brief's contract,
+///   motion_j = a_i |RAO_j| cos(omega_i t - k_i (x cos b_i + y sin b_i) + psi_i - lag_j).
+///   The wave elevation it responds to is eta_i = a_i cos(omega_i t - k_i X + psi_i), so for a wave
+///   written as in hydro::AiryWave / hydro::WaveComponent, eta = a cos(k X - omega t + phase),
+///   psi_i = -phase (NEGATE the hydro phase when building a Component).
 /// - Relative wave heading: the direction the wave travels TOWARDS in vessel axes, anticlockwise from the
 ///   vessel x axis: beta_i = b_i - vesselHeading, wrapped into [0, 2 pi) (0: waves travelling from stern
 ///   to bow, "following sea"; pi: head sea; pi/2: waves travelling towards port, from starboard).
-/// - Phase LAG (OrcaFlex convention): motion_j = a_i |RAO_j| cos(theta_i(x_ref, y_ref, t) + lag_j), i.e.
-///   equivalently a_i |RAO_j| cos(omega_i t - k_i X - phase_i - lag_j): the motion reaches its positive
-///   maximum lag_j / omega_i seconds after the wave crest passes the reference point. With lag 0 the
-///   motion is in phase with the elevation at the reference point.
+/// - Phase LAG (OrcaFlex convention): with the formula above, the motion reaches its positive maximum
+///   lag_j / omega_i seconds after the wave crest passes the reference point. With lag 0 the motion is
+///   in phase with the elevation at the reference point.
 /// - RAO units: surge, sway, heave [m/m]; roll, pitch, yaw [rad/m]; in vessel axes (x forward, y port,
 ///   z up; rotations right-handed about them); results are rotated to global axes with Rz(vesselHeading).
 ///
@@ -37,13 +39,13 @@ namespace tangle::vessel {
 /// Wave-frequency motion of a vessel from RAOs. Immutable after construction, thread-safe.
 class RaoMotion {
  public:
-  /// One linear wave component (eta = amplitude cos(waveNumber (x cos azimuth + y sin azimuth) - omega t + phase)).
+  /// One linear wave component: eta = amplitude cos(omega t - waveNumber (x cos azimuth + y sin azimuth) + phase).
   struct Component {
     double amplitude;   ///< a_i [m] (H/2 for a regular wave)
     double omega;       ///< angular frequency [rad/s], > 0
     double waveNumber;  ///< k_i [rad/m]
     double azimuth;     ///< direction of travel, anticlockwise from global +x [rad]
-    double phase;       ///< phase_i [rad], as in hydro::AiryWave / hydro::WaveComponent
+    double phase;       ///< psi_i [rad] in cos(omega t - k X + psi): = MINUS the hydro::AiryWave / WaveComponent phase
   };
 
   /// Motion of the reference point: (x, y, z) [m], (rx, ry, rz) small rotation angles [rad]; global axes.
@@ -91,7 +93,7 @@ class RaoMotion {
     double omega;           // [rad/s]
     double kx;              // k_i cos(b_i) [rad/m]
     double ky;              // k_i sin(b_i) [rad/m]
-    double phase;           // phase_i [rad]
+    double phase;           // psi_i [rad]
     std::array<double, 6> rao;  // |RAO_j| [m/m, rad/m]
     std::array<double, 6> lag;  // lag_j [rad]
   };

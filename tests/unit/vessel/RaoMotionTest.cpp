@@ -7,6 +7,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/hydro/AiryWave.hpp"
 #include "tangle/vessel/RaoMotion.hpp"
 
 namespace tangle::vessel {
@@ -37,7 +38,7 @@ model::RaoTable raoTable() {
 /// Deep-water wave number for omega.
 double deepK(double omega) { return omega * omega / kStandardGravity; }
 
-// Source: the definition motion = a |RAO| cos(k X - omega t + phase + lag) at a table point
+// Source: the definition motion = a |RAO| cos(omega t - k X + psi - lag) at a table point
 // (T = 8 s, relative heading 90 deg: vessel heading 30 deg, waves towards 120 deg). Tolerance 1e-12 relative.
 TEST(RaoMotion, AmplitudeAndPhaseAtTablePoint) {
   const double omega = 2.0 * kPi / 8.0;
@@ -46,19 +47,19 @@ TEST(RaoMotion, AmplitudeAndPhaseAtTablePoint) {
   const double azimuth = degToRad(120.0);
   const RaoMotion rao(raoTable(), heading, {{1.5, omega, k, azimuth, 0.4}});
   const Vec3 ref(20.0, -7.0, 0.0);
-  const double phaseRef = k * (ref.x() * std::cos(azimuth) + ref.y() * std::sin(azimuth)) + 0.4;
+  const double kx = k * (ref.x() * std::cos(azimuth) + ref.y() * std::sin(azimuth));
   for (double t : {0.0, 1.3, 5.0, 11.7}) {
     const RaoMotion::Motion m = rao.at(t, ref, 1.0);
-    const double theta = phaseRef - omega * t;
+    const double theta = omega * t - kx + 0.4;
     // Heave (vertical: unchanged by the heading rotation): |RAO| = 0.5 + 0.1, lag 0.5.
-    EXPECT_NEAR(m.displacement(2), 1.5 * 0.6 * std::cos(theta + 0.5), 1e-12);
+    EXPECT_NEAR(m.displacement(2), 1.5 * 0.6 * std::cos(theta - 0.5), 1e-12);
     // Surge |RAO| 0.2 (h index 1), sway 0.2, in vessel axes rotated by 30 deg.
-    const double surge = 1.5 * 0.2 * std::cos(theta + 0.2);
-    const double sway = 1.5 * 0.2 * std::cos(theta + 0.3);
+    const double surge = 1.5 * 0.2 * std::cos(theta - 0.2);
+    const double sway = 1.5 * 0.2 * std::cos(theta - 0.3);
     EXPECT_NEAR(m.displacement(0), std::cos(heading) * surge - std::sin(heading) * sway, 1e-12);
     EXPECT_NEAR(m.displacement(1), std::sin(heading) * surge + std::cos(heading) * sway, 1e-12);
     // Yaw: about z, unchanged.
-    EXPECT_NEAR(m.displacement(5), 1.5 * 0.003 * std::cos(theta + 2.0), 1e-14);
+    EXPECT_NEAR(m.displacement(5), 1.5 * 0.003 * std::cos(theta - 2.0), 1e-14);
   }
 }
 
@@ -72,6 +73,24 @@ TEST(RaoMotion, PhaseLagDelaysThePeak) {
   EXPECT_NEAR(peak, 0.6, 1e-12);
   EXPECT_LT(rao.at(tPeak - 0.1, Vec3::Zero(), 1.0).displacement(2), peak);
   EXPECT_LT(rao.at(tPeak + 0.1, Vec3::Zero(), 1.0).displacement(2), peak);
+}
+
+// Source: consistency with the wave field. A component built from hydro::AiryWave with the NEGATED phase,
+// and a heave RAO of 1 m/m with zero lag, heaves exactly with the surface elevation at the reference point.
+// Tolerance 1e-12 m: same cosine evaluated two ways.
+TEST(RaoMotion, UnitHeaveRaoFollowsAiryWaveElevation) {
+  const hydro::AiryWave wave(3.0, 9.0, 0.8, 200.0, kStandardGravity, 1.1);
+  model::RaoTable t;
+  t.period = {9.0};
+  t.heading = {0.0};
+  t.amplitude = {{Row{0.0, 0.0, 1.0, 0.0, 0.0, 0.0}}};
+  t.phase = {{Row{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}}};
+  const RaoMotion rao(t, 0.3, {{0.5 * wave.height(), wave.angularFrequency(), wave.waveNumber(), wave.azimuth(),
+                                -wave.phase()}});
+  const Vec3 ref(35.0, -12.0, 0.0);
+  for (double time : {0.0, 2.1, 7.7}) {
+    EXPECT_NEAR(rao.at(time, ref, 1.0).displacement(2), wave.elevation(ref.x(), ref.y(), time), 1e-12);
+  }
 }
 
 // Source: bilinear interpolation (period, heading), shortest-angle phase interpolation, clamping and

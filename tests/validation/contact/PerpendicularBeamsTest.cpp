@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -65,38 +66,38 @@ TEST_P(PerpendicularBeams, ContactForceAndMidspanMomentMatchBeamTheory) {
   spec.dynamics.enabled = true;
   spec.dynamics.duration = kRampTime + 1.0;
   spec.dynamics.timeStep = c.timeStep;
-  spec.dynamics.outputInterval = spec.dynamics.duration;
+  spec.dynamics.outputInterval = std::max(0.1, c.timeStep);
   spec.dynamics.rampTime = 0.0;
 
   analysis::Simulation sim(std::move(spec));
   ASSERT_TRUE(sim.solveStatics().converged);
-  const time::DynamicResult run = sim.runDynamics(nullptr);
+  // Quasi-static values: averages over the last second, after the supports have stopped (the first
+  // touch excites small vibrations of the beams that the small time steps resolve and hardly damp).
+  double forceSum = 0.0, momentSum[2] = {0.0, 0.0};
+  int samples = 0, contactCount = 0;
+  const time::DynamicResult run = sim.runDynamics([&](const model::State& s, const VecX&) {
+    if (s.time < kRampTime + 1e-9) return;
+    int touching = 0;
+    for (const contact::ContactPoint& point : sim.contact()->contacts()) {
+      if (point.normalForce <= 0.0) continue;
+      ++touching;
+      forceSum += point.normalForce;
+    }
+    contactCount = std::max(contactCount, touching);
+    const auto lines = sim.snapshot(true);
+    for (int l = 0; l < 2; ++l) momentSum[l] += lines[l].bendingMoment[lines[l].bendingMoment.size() / 2];
+    ++samples;
+  });
   ASSERT_TRUE(run.completed) << run.message;
-
-  // The contact force at the end state (evaluate the contact at the final state once more).
-  VecX force;
-  solver::AssemblyRequest request;
-  request.wantMatrix = false;
-  request.dynamic = true;
-  request.time = sim.state().time;
-  sim.assembler().assemble(sim.state(), request, force, nullptr);
-  std::vector<contact::ContactPoint> touching;
-  for (const contact::ContactPoint& point : sim.contact()->contacts())
-    if (point.normalForce > 0.0) touching.push_back(point);
-  ASSERT_EQ(touching.size(), 1u) << "exactly one contact point between the midspans";
-  const double p = touching[0].normalForce;
+  ASSERT_GT(samples, 0);
+  EXPECT_EQ(contactCount, 1) << "exactly one contact point between the midspans";
 
   const double inertia = kPi * std::pow(kD, 4) / 64.0;
   const double expectedP = 48.0 * kE * inertia * kU / std::pow(kL, 3);  // 76.4 N
   const double expectedM = expectedP * kL / 4.0;                        // 22.9 N m
   EXPECT_NEAR(expectedP, 76.4, 0.05);  // the paper's number, as a check of the set-up
-  EXPECT_NEAR(p, expectedP, 0.01 * expectedP);
-
-  const auto lines = sim.snapshot(true);
-  for (const auto& line : lines) {
-    const std::size_t mid = line.bendingMoment.size() / 2;
-    EXPECT_NEAR(line.bendingMoment[mid], expectedM, 0.01 * expectedM) << line.name;
-  }
+  EXPECT_NEAR(forceSum / samples, expectedP, 0.01 * expectedP);
+  for (int l = 0; l < 2; ++l) EXPECT_NEAR(momentSum[l] / samples, expectedM, 0.01 * expectedM) << "beam " << l + 1;
 }
 
 INSTANTIATE_TEST_SUITE_P(Paper61, PerpendicularBeams,
