@@ -154,7 +154,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   m_assembler->beginStep();
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, or when the step size changed.
-  bool haveFactor = m_factorValid && dt == m_factorStep;
+  bool haveFactor = m_reuseAcrossSteps && m_factorValid && dt == m_factorStep;
   double previousResidual = std::numeric_limits<double>::infinity();
   for (int it = 0; it < m_settings.maxIterations; ++it) {
     outcome.iterations = it + 1;

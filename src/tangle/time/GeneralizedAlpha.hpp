@@ -12,6 +12,7 @@
 /// Q_{n+1} = exp(dtheta) Q_n, integrated by the same Newmark formulas as translations (a first-order
 /// consistent treatment of the rotational inertia, which is tiny for slender lines).
 
+#include <cstdlib>
 #include <vector>
 
 #include "tangle/model/ModelSpec.hpp"
@@ -86,6 +87,7 @@ class GeneralizedAlpha {
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
   bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
+  bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   double m_factorStep = 0.0;     // the time step that factorisation was made for [s]
 };
 

@@ -186,8 +186,10 @@ void VesselSystem::addLink(const model::State& state, const Connection& c, const
   force.segment<3>(dv) += fEnd;                 // reaction on the vessel ...
   force.segment<3>(dv + 3) += arm.cross(fEnd);  // ... and its moment about the reference point
   if (!matrix) return;
-  // dF = J^T Kc J with dg = J dq = d(x_end) - d(X) + skew(arm) d(theta) (the lever arm's own rotation
-  // and the turning of the tensioner axis are left out of the tangent).
+  // dF = J^T Kc J with dg = J dq = d(x_end) - d(X) + skew(arm) d(theta), plus the turning of the lever
+  // arm in the moment, d(arm) x fEnd = skew(fEnd) skew(arm) d(theta): with |fEnd| the line tension it
+  // is most of the yaw stiffness of a spread mooring (without it the static Newton iteration diverges
+  // in yaw). The turning of the tensioner axis is left out of the tangent.
   const Mat3 s = geometry::skew(arm);
   const double kf = request.kf;
   matrix->add3x3(de, de, kc, kf);
@@ -198,7 +200,7 @@ void VesselSystem::addLink(const model::State& state, const Connection& c, const
   matrix->add3x3(dv, dv + 3, Mat3(-kc * s), kf);
   matrix->add3x3(dv + 3, de, Mat3(-s.transpose() * kc), -kf);
   matrix->add3x3(dv + 3, dv, Mat3(s.transpose() * kc), -kf);
-  matrix->add3x3(dv + 3, dv + 3, Mat3(s.transpose() * kc * s), kf);
+  matrix->add3x3(dv + 3, dv + 3, Mat3(s.transpose() * kc * s + geometry::skew(fEnd) * s), kf);
 }
 
 void VesselSystem::addFlexJoint(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,

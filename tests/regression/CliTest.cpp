@@ -1,0 +1,82 @@
+// End-to-end checks of the command line: every example validates, a static run writes its result
+// files, bad input gets exit code 1 with a message naming the file, line and key, and --version works.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "TestPaths.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+Outcome runCli(const std::string& arguments) {
+  const fs::path log = fs::temp_directory_path() / "tangle_cli_test.log";
+  const std::string cmd = std::string(TANGLE_CLI_PATH) + " " + arguments + " > " + log.string() + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  return {WEXITSTATUS(status), text.str()};
+}
+
+TEST(Cli, EveryExampleValidates) {
+  int count = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(tangle::test::kExamplesDir)) {
+    if (entry.path().extension() != ".yaml") continue;
+    const Outcome o = runCli("check " + entry.path().string());
+    EXPECT_EQ(o.code, 0) << entry.path() << "\n" << o.output;
+    EXPECT_NE(o.output.find("model is valid"), std::string::npos) << o.output;
+    ++count;
+  }
+  EXPECT_GE(count, 5);
+}
+
+TEST(Cli, StaticRunWritesResults) {
+  const fs::path out = fs::temp_directory_path() / "tangle_cli_catenary";
+  fs::remove_all(out);
+  const Outcome o = runCli("run " + std::string(tangle::test::kExamplesDir) + "/catenary-mooring/model.yaml -o " +
+                           out.string() + " --no-plots -q");
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_TRUE(fs::exists(out / "summary.json"));
+  std::ifstream csv(out / "statics" / "mooring1.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header, "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m");
+  int rows = 0;
+  for (std::string row; std::getline(csv, row);) ++rows;
+  EXPECT_EQ(rows, 201);  // 200 elements
+}
+
+TEST(Cli, BadInputExitsWithOneAndNamesFileLineAndKey) {
+  const fs::path bad = fs::temp_directory_path() / "tangle_cli_bad.yaml";
+  std::ofstream(bad) << "environment:\n  water_depth: 100\nline_types:\n  - name: a\n    outer_diameter: 0.1\n"
+                        "    mass_per_length: 10\n    axial_stiffness: 1e8\nlines:\n  - name: l\n"
+                        "    end_a: {type: anchored, position: [0, 0, -100]}\n"
+                        "    end_b: {type: fixed, position: [50, 0, -10]}\n"
+                        "    sections:\n      - {type: a, lenght: 100, elements: 10}\n";
+  const Outcome o = runCli("run " + bad.string() + " --no-plots");
+  EXPECT_EQ(o.code, 1) << o.output;
+  EXPECT_NE(o.output.find(bad.string() + ":13"), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("lenght"), std::string::npos) << o.output;
+}
+
+TEST(Cli, MissingFileAndVersion) {
+  EXPECT_NE(runCli("run /nonexistent/model.yaml").code, 0);
+  const Outcome v = runCli("--version");
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.output.find("tangle"), std::string::npos);
+}
+
+}  // namespace
