@@ -19,6 +19,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 /// element under F: small against the diameters for any force the line itself can carry, while the
 /// contact period stays well above typical time steps for chain and wire (see docs/theory.md).
 constexpr double kAutoStiffnessFactor = 0.1;
+/// Steps per impact duration (the step limiter resolves every dynamic impact with at least this many).
+const double kImpactSteps = std::getenv("KSTEPS") ? std::atof(std::getenv("KSTEPS")) : 20.0;
 }  // namespace
 
 LineContact::LineContact(const model::Model& model, const model::ContactSpec& spec, double timeStep)
@@ -297,6 +299,7 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
       c.pairMass = c.lumpedMassA;
     } else {
       c.pairMass = c.lumpedMassA * c.lumpedMassB / (c.lumpedMassA + c.lumpedMassB);
+      if (std::getenv("HACKM")) c.pairMass = std::atof(std::getenv("HACKM"));
     }
     c.stiffness = stiffness(c.lineA, c.lineB);
     const bool dashpot = dynamic && m_spec.model == model::ImpactModel::Penalty && std::isfinite(c.pairMass);
@@ -441,18 +444,30 @@ double LineContact::stepLimit(const model::State& state) {
     const double rate = n.dot(pointVelocity(state, a.element, d.s) - pointVelocity(state, b.element, d.t));
     if (rate >= 0.0) continue;
     limit = std::min(limit, (std::max(gap, 0.0) + 0.2 * radii) / -rate);
-    // A dynamic impact about to start (same criterion as below, with the lumped pair mass): approach it
-    // with steps of at most half the time to touch, down to the impact resolution (a twentieth of the
-    // impact duration), so that the first step in contact is as short as the ones that resolve the
-    // impact. A longer step ending in contact would apply the contact force over the whole step: a
-    // spurious impulse that stops the line (a step of the nominal length swallows an impact that lasts
-    // far less than a step). Half the time to touch leaves room for accelerations within the step.
+    // A dynamic impact about to start (same criterion as below, with the lumped pair mass): the step
+    // that reaches it must end where the lines touch, so that the impact starts with a step as short as
+    // the ones that resolve it, at its beginning. A step ending in contact would apply the contact
+    // force over the whole step (a step of the nominal length swallows an impact that lasts far less,
+    // and stops the line); a touch inside an impact step would start the dashpot force c v0 (which
+    // jumps at first touch) at the wrong time, an error of order zeta pi / steps in the restitution.
+    // Far away (more than two impact steps), half the time to touch (room for accelerations within
+    // the step); then up to half a first contact step before the touch at the approach speed (the
+    // acceleration error is second order in a step this short). The step in which the lines touch is a sixteenth of an
+    // impact step: the dashpot force jumps from 0 to c v0 at the touch, which the integrator sees only
+    // at the end of that step (its start force is the one before the touch), an error proportional to
+    // the length of that step. The steps that follow grow back twofold per step (DynamicAnalysis).
     if (gap > 0.0) {
       const double ma = lumpedMass(a.element, d.s), mb = lumpedMass(b.element, d.t);
       const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
       const double k = stiffness(a.line, b.line);
-      if (std::isfinite(m) && -rate * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius))
-        limit = std::min(limit, std::max(0.5 * gap / -rate, contactDuration(k, m, m_zeta) / 20.0));
+      if (std::isfinite(m) && -rate * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius)) {
+        const double impactStep = contactDuration(k, m, m_zeta) / kImpactSteps;
+        const double firstStep = impactStep / 16.0;
+        const double toTouch = gap / -rate;
+        limit = std::min(limit, toTouch > 2.0 * impactStep ? 0.5 * toTouch
+                                : toTouch > firstStep      ? toTouch - 0.5 * firstStep
+                                                           : firstStep);
+      }
     }
   }
   // Resolve every impact with at least 20 steps while it lasts. An impact is dynamic when the rigid
@@ -466,7 +481,7 @@ double LineContact::stepLimit(const model::State& state) {
     const double radius = std::min(m_radius[m_model->lines()[tr.lineA].firstElement],
                                    m_radius[m_model->lines()[tr.lineB].firstElement]);
     const bool dynamicImpact = tr.impactVelocity * std::sqrt(tr.pairMass / k) > 1e-3 * radius;
-    if (dynamicImpact && state.time - tr.startTime < 2.0 * duration) limit = std::min(limit, duration / 20.0);
+    if (dynamicImpact && state.time - tr.startTime < 2.0 * duration) limit = std::min(limit, duration / kImpactSteps);
   }
   (void)elements;
   return limit;
@@ -513,6 +528,8 @@ bool LineContact::acceptStep(const model::State& before, const model::State& aft
 void LineContact::commitStep(model::State& state, double dt) {
   m_time = state.time;
   findContacts(state, dt > 0.0, false, false);
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
   std::vector<bool> seen(m_tracked.size(), false);
   std::vector<TrackedContact> next;
   for (const ContactPoint& c : m_trial) {
@@ -533,14 +550,32 @@ void LineContact::commitStep(model::State& state, double dt) {
       tr.minGap = std::min(tr.minGap, c.gap);
       tr.path.push_back({state.time, c.arcA, c.arcB});
       // Paper Eq. 5: m_eff = integral F dt / change of the relative normal velocity; used for the
-      // dashpot once the impact has slowed the pair measurably (before, the lumped estimate holds).
+      // dashpot as soon as the impact has slowed the pair measurably (0.5 %; before, the lumped
+      // estimate holds). The participating mass of a line is larger than the lumped mass of the
+      // nodes at the contact point once the line responds as a whole (a short body hit at its middle
+      // node: the whole mass against half of it); the sooner it is used, the closer the restitution.
       const double dv = c.gapRate + tr.impactVelocity;
-      if (tr.impactVelocity > 0.0 && dv > 0.05 * tr.impactVelocity && tr.impulse + tr.jumpImpulse > 0.0)
+      if (!std::getenv("HACKM") && tr.impactVelocity > 0.0 && dv > (std::getenv("THR") ? std::atof(std::getenv("THR")) : 0.005) * tr.impactVelocity && tr.impulse + tr.jumpImpulse > 0.0)
         tr.pairMass = (tr.impulse + tr.jumpImpulse) / dv;
+      if (std::getenv("MTRACE")) std::cerr << fmt::format("MT t {:.7f} dt {:.3e} F {:.4e} rate {:.5f} v0 {:.5f} I {:.4e} m {:.5e}\n", state.time, dt, c.normalForce, c.gapRate, tr.impactVelocity, tr.impulse, tr.pairMass);
       next.push_back(std::move(tr));
     } else {
       TrackedContact tr;
       tr.impactVelocity = std::max(0.0, -c.gapRate);
+      if (m_spec.model == model::ImpactModel::Penalty && dt > 0.0) {
+        // The approach speed before the step in which the lines touched: the step's change of the
+        // relative normal velocity is taken as dt times the mean of the accelerations at its ends, the
+        // one before the touch being negligible against the contact's. The same trapezoidal rule gives
+        // the impulse of that step below (0.5 F dt), so Eq. 5 is consistent from the first step on.
+        const model::LineElement& ea = elements[c.elementA];
+        const model::LineElement& eb = elements[c.elementB];
+        auto acceleration = [&](const model::LineElement& el, double w) {
+          return Vec3((1.0 - w) * state.acceleration.segment<3>(dofs.firstDof(el.node1)) +
+                      w * state.acceleration.segment<3>(dofs.firstDof(el.node2)));
+        };
+        const double accelerationRate = c.normal.dot(acceleration(ea, c.s) - acceleration(eb, c.t));
+        tr.impactVelocity = std::max(0.0, -(c.gapRate - 0.5 * dt * accelerationRate));
+      }
       if (m_spec.model == model::ImpactModel::Impulse && dt > 0.0 && c.gapRate < 0.0 && std::isfinite(c.pairMass)) {
         // The paper's impulse model (Eq. 6-7 with restitution): the relative normal velocity jumps from
         // -v0 to e v0; the impulse I = (1 + e) v0 m_pair goes to the nodes through the shape functions,

@@ -117,6 +117,28 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
       matrix->add3x3(d2, d2, load.damping2, request.cf);
     }
   }
+  addAttachmentDrag(state, request, force, matrix);
+}
+
+void HydroLoads::addAttachmentDrag(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                                   solver::SystemMatrix* matrix) const {
+  // Drag of point bodies (clumps, buoys, the LMRP as an attachment): F = 1/2 rho (Cd A) |u - v| (u - v)
+  // with the fluid velocity at the node; damping -dF/dv = 1/2 rho CdA (|w| I + w w^T / |w|), w = u - v.
+  const model::DofMap& dofs = m_model->dofs();
+  const double rho = m_model->environment().waterDensity;
+  for (const model::NodeAttachment& a : m_model->attachments()) {
+    if (a.spec.dragArea <= 0.0) continue;
+    const Vec3& x = state.position[a.node];
+    if (x.z() > surfaceAt(x.x(), x.y(), request.time, request.dynamic)) continue;
+    const int d = dofs.firstDof(a.node);
+    const Vec3 v = request.dynamic ? Vec3(state.velocity.segment<3>(d)) : Vec3::Zero();
+    const Vec3 w = fluidAt(x, request.time, request.dynamic).velocity - v;
+    const double speed = w.norm();
+    const double k = 0.5 * rho * a.spec.dragArea;
+    force.segment<3>(d) -= k * speed * w;
+    if (matrix && request.dynamic && request.cf != 0.0 && speed > 0.0)
+      matrix->add3x3(d, d, Mat3(k * (speed * Mat3::Identity() + w * w.transpose() / speed)), request.cf);
+  }
 }
 
 void HydroLoads::addMass(const model::State&, double mf, solver::SystemMatrix* matrix,

@@ -40,6 +40,9 @@ class HydroLoads final : public solver::LoadContributor {
   const WaveField* waves() const { return m_waves.get(); }  ///< nullptr without waves
 
  private:
+  void addAttachmentDrag(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                         solver::SystemMatrix* matrix) const;
+
   const model::Model* m_model;
   CurrentProfile m_current;
   std::unique_ptr<WaveField> m_waves;

@@ -57,6 +57,7 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       }
       for (int i = 0; i < 6; ++i) force[map[i]] += f[i];
       if (matrix) matrix->addBlock(map, 6, k, request.kf + request.cf * beta);
+      if (request.dynamic && el.type->axialDamping > 0.0) addAxialDamping(state, el, d1, d2, request, force, matrix);
     } else {
       Vec12 f;
       Mat12 k;
@@ -70,7 +71,27 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       }
       for (int i = 0; i < 12; ++i) force[map[i]] += f[i];
       if (matrix) matrix->addBlock(map, 12, k, request.kf + request.cf * beta);
+      if (request.dynamic && el.type->axialDamping > 0.0) addAxialDamping(state, el, d1, d2, request, force, matrix);
     }
+  }
+}
+
+void Assembler::addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
+                                const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const {
+  // Structural axial damping: N_d = c * strain rate = c e.(v2 - v1) / L0 (c = LineType::axialDamping [N s]),
+  // acting along the chord e (as OrcaFlex's axial damping and MoorDyn's internal damping).
+  const Vec3 chord = state.position[el.node2] - state.position[el.node1];
+  const Vec3 e = chord.normalized();
+  const double c = el.type->axialDamping / el.restLength;
+  const double nd = c * e.dot(state.velocity.segment<3>(d2) - state.velocity.segment<3>(d1));
+  force.segment<3>(d1) -= nd * e;
+  force.segment<3>(d2) += nd * e;
+  if (matrix && request.cf != 0.0) {
+    const Mat3 ee = c * e * e.transpose();
+    matrix->add3x3(d1, d1, ee, request.cf);
+    matrix->add3x3(d2, d2, ee, request.cf);
+    matrix->add3x3(d1, d2, ee, -request.cf);
+    matrix->add3x3(d2, d1, ee, -request.cf);
   }
 }
 
@@ -119,9 +140,38 @@ void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matr
   const model::DofMap& dofs = m_model->dofs();
   const auto& mass = m_model->nodeMass();
   const auto& inertia = m_model->nodeRotationalInertia();
+  const bool consistent = !m_model->spec().dynamics.lumpedMass;
+  if (consistent) {
+    // Consistent translational mass of each element (linear shape functions: m L / 6 [2 1; 1 2],
+    // e.g. Cook et al. 2002, "Concepts and applications of FE analysis", sec. 11.3); attachments stay
+    // point masses; rotational inertia stays lumped.
+    for (const model::LineElement& el : m_model->elements()) {
+      const double m = el.type->massPerLength * el.restLength;
+      const int d1 = dofs.firstDof(el.node1), d2 = dofs.firstDof(el.node2);
+      for (int k = 0; k < 3; ++k) {
+        if (matrix) {
+          matrix->add(d1 + k, d1 + k, mf * m / 3.0);
+          matrix->add(d2 + k, d2 + k, mf * m / 3.0);
+          matrix->add(d1 + k, d2 + k, mf * m / 6.0);
+          matrix->add(d2 + k, d1 + k, mf * m / 6.0);
+        }
+        if (out) {
+          (*out)[d1 + k] += m / 3.0 * (*acceleration)[d1 + k] + m / 6.0 * (*acceleration)[d2 + k];
+          (*out)[d2 + k] += m / 6.0 * (*acceleration)[d1 + k] + m / 3.0 * (*acceleration)[d2 + k];
+        }
+      }
+    }
+    for (const model::NodeAttachment& a : m_model->attachments()) {
+      const int d = dofs.firstDof(a.node);
+      for (int k = 0; k < 3; ++k) {
+        if (matrix) matrix->add(d + k, d + k, mf * a.spec.mass);
+        if (out) (*out)[d + k] += a.spec.mass * (*acceleration)[d + k];
+      }
+    }
+  }
   for (int n = 0; n < m_model->nodeCount(); ++n) {
     const int d = dofs.firstDof(n);
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 0; k < 3 && !consistent; ++k) {
       if (matrix) matrix->add(d + k, d + k, mf * mass[n]);
       if (out) (*out)[d + k] += mass[n] * (*acceleration)[d + k];
     }

@@ -18,7 +18,7 @@ namespace tangle::solver {
 /// What an assembly call should compute.
 struct AssemblyRequest {
   double time = 0.0;        ///< time [s] (environment, prescribed motions)
-  double loadFactor = 1.0;  ///< multiplies weight, buoyancy and environmental loads [-] (statics ramp, dynamics start ramp)
+  double loadFactor = 1.0;  ///< multiplies weight and buoyancy [-] (the statics load incrementation)
   bool dynamic = false;     ///< include velocity-dependent forces (drag with structure velocity, seabed damping and friction)
   double kf = 1.0;          ///< factor on the stiffness dF/dq in H
   double cf = 0.0;          ///< factor on the damping dF/dv in H
@@ -85,6 +85,8 @@ class Assembler {
  private:
   void addElements(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
   void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force);
+  void addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
+                       const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const;
   void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
 
   const model::Model* m_model;

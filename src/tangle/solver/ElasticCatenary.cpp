@@ -1,6 +1,6 @@
 /// @file ElasticCatenary.cpp
 /// Elastic catenary (Jonkman 2007; Irvine 1981) solved by Newton's method on (H, V), and the
-/// initial-shape generator built on it. Equations: docs/theory-catenary.md.
+/// initial-shape generator built on it. Equations: docs/theory.md (section 4).
 
 #include "tangle/solver/ElasticCatenary.hpp"
 

@@ -12,11 +12,11 @@
 ///  - J. Jonkman (2007), "Dynamics modeling and loads analysis of an offshore floating wind
 ///    turbine", NREL/TP-500-41958, quasi-static mooring line model: the equations of the fully
 ///    suspended line and of a line with a seabed portion (used here with CB = 0). Equation
-///    numbers are not quoted; docs/theory-catenary.md writes the equations out.
+///    numbers are not quoted; docs/theory.md (section 4) writes the equations out.
 ///  - H. M. Irvine (1981), "Cable Structures", MIT Press (inextensible and elastic catenary).
 ///  - A. H. Peyrot, A. M. Goulois (1979), "Analysis of cable structures", Computers & Structures
 ///    10, 805-813 (initial guess of the Newton iteration).
-/// See docs/theory-catenary.md for the equations.
+/// See docs/theory.md (section 4) for the equations.
 
 #include <vector>
 

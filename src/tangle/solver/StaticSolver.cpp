@@ -138,7 +138,10 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
     matrix.build(k);
     const VecX diag = k.diagonal().cwiseAbs();
     const double dmax = std::max(diag.maxCoeff(), 1e-12);
-    for (int i = 0; i < neq; ++i) k.coeffRef(i, i) += (mu > 0.0 ? mu * std::max(diag[i], 1e-6 * dmax) : 1e-12 * dmax);
+    // The shift is relative to each diagonal entry: one scaled by the largest entry (a vessel's link)
+    // would soften every line DOF and make Newton converge only linearly.
+    for (int i = 0; i < neq; ++i)
+      k.coeffRef(i, i) += (mu > 0.0 ? mu : 1e-8) * std::max(diag[i], 1e-9 * dmax);
     if (!solver.factorize(k)) {
       mu = std::max(1e-3, mu * 10.0);
       if (mu > 1e3) return false;

@@ -2,7 +2,8 @@
 /// @file StaticSolver.hpp
 /// Static equilibrium by Newton-Raphson with load incrementation, a Levenberg-Marquardt style
 /// regularisation (a pseudo-time viscous term, the implicit counterpart of the dynamic relaxation
-/// the seed paper's authors use), increment limiting and a backtracking line search.
+/// the seed paper's authors use) when the tangent is singular, and increment limiting (the largest nodal
+/// translation and rotation per iteration are capped).
 
 #include <string>
 

@@ -12,6 +12,8 @@
 
 namespace tangle::time {
 
+using solver::LinearSolver;
+
 AlphaParameters AlphaParameters::from(model::IntegratorKind kind, double rho) {
   rho = std::clamp(rho, 0.0, 1.0);
   AlphaParameters p;
@@ -85,6 +87,26 @@ void GeneralizedAlpha::initialize(model::State& state) {
   request.dynamic = true;
   request.wantMatrix = false;
   m_assembler->assemble(state, request, m_forceOld, nullptr);
+  // Consistent initial acceleration of the free DOFs, M a0 = -(F0 + M_prescribed a_prescribed): zero
+  // at a static equilibrium, but not when e.g. a DP unit held in statics is released at t = 0.
+  const model::DofMap& dofs = m_assembler->model().dofs();
+  const int neq = dofs.equationCount();
+  if (neq == 0) return;
+  VecX known = state.acceleration;
+  for (int i = 0; i < neq; ++i) known[dofs.equationDofs()[i]] = 0.0;
+  VecX inertia = VecX::Zero(dofs.fullDofCount());
+  m_matrix.clear();
+  m_assembler->addMass(state, 1.0, &m_matrix, &known, &inertia);
+  VecX rhs(neq);
+  for (int i = 0; i < neq; ++i) rhs[i] = -(m_forceOld[dofs.equationDofs()[i]] + inertia[dofs.equationDofs()[i]]);
+  if (rhs.cwiseAbs().maxCoeff() <= m_settings.tolerance * m_assembler->referenceForce()) return;  // at rest
+  SparseMatrix mass;
+  m_matrix.build(mass);
+  LinearSolver solver;
+  if (!solver.factorize(mass)) return;
+  const VecX a0 = solver.solve(rhs);
+  for (int i = 0; i < neq; ++i) state.acceleration[dofs.equationDofs()[i]] = a0[i];
+  m_factorValid = false;
 }
 
 double GeneralizedAlpha::residualNorm(const VecX& r, int* worstNode) const {

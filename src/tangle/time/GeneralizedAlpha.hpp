@@ -2,8 +2,9 @@
 /// @file GeneralizedAlpha.hpp
 /// Implicit time stepping of M a + F(q, v, t) = 0 by the generalized-alpha method
 /// (Chung & Hulbert 1993, J. Appl. Mech. 60:371), which contains HHT-alpha (Hilber, Hughes & Taylor
-/// 1977) and Newmark's average-acceleration rule (Newmark 1959) as special cases, with full Newton
-/// iterations every step.
+/// 1977) and Newmark's average-acceleration rule (Newmark 1959) as special cases, with Newton
+/// iterations every step (modified Newton: the factorised matrix is reused while the residual falls by
+/// 4x or more per iteration, refreshed otherwise; TANGLE_FULL_NEWTON=1 refreshes it every iteration).
 ///
 /// Contract of step(): on input `state` holds q_n, v_n, a_n at t_n (a_n consistent with the
 /// previous step); on success it holds q_{n+1}, v_{n+1}, a_{n+1} at t_n + dt. On failure the state is

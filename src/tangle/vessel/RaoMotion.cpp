@@ -1,5 +1,5 @@
 /// @file RaoMotion.cpp
-/// First-order vessel motion from RAOs (see RaoMotion.hpp and docs/theory-vessel.md).
+/// First-order vessel motion from RAOs (see RaoMotion.hpp and docs/theory.md (section 10)).
 
 #include "tangle/vessel/RaoMotion.hpp"
 

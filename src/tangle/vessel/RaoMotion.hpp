@@ -3,7 +3,7 @@
 /// First-order (wave-frequency) vessel motion from response amplitude operators (RAOs), superposed on
 /// the vessel's own (solved or prescribed) motion. Linear superposition of the responses to the wave
 /// components of the sea (Faltinsen 1990, "Sea loads on ships and offshore structures", ch. 3;
-/// Newman 1977, "Marine hydrodynamics", ch. 6). Equations: docs/theory-vessel.md.
+/// Newman 1977, "Marine hydrodynamics", ch. 6). Equations: docs/theory.md (section 10).
 ///
 /// Conventions.
 /// - Wave component i: the motion formula uses the phase psi_i of the brief's contract,

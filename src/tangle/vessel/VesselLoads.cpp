@@ -1,6 +1,6 @@
 /// @file VesselLoads.cpp
 /// Hydrostatic, damping, current, wind and drift loads on a free vessel (see VesselLoads.hpp and
-/// docs/theory-vessel.md).
+/// docs/theory.md (section 10)).
 
 #include "tangle/vessel/VesselLoads.hpp"
 

@@ -2,7 +2,7 @@
 /// @file VesselLoads.hpp
 /// Loads on a free-floating vessel (6-DOF rigid body) in global axes about its reference point:
 /// hydrostatic restoring, linear + quadratic damping, current and wind drag (OCIMF-style coefficient
-/// tables), mean wave drift; and the 6x6 mass matrix. Equations and references: docs/theory-vessel.md.
+/// tables), mean wave drift; and the 6x6 mass matrix. Equations and references: docs/theory.md (section 10).
 ///
 /// Conventions. Global axes right-handed, z up. Vessel axes: x forward, y to port, z up, origin at the
 /// reference point; `rotation` R maps vessel axes to global axes (v_global = R v_vessel). Rotation
@@ -64,7 +64,7 @@ class VesselLoads {
   /// @param ramp factor in [0, 1] multiplying the environmental loads (current, wind, drift) and their
   ///        derivatives; hydrostatics and damping are never ramped
   ///
-  /// Models (docs/theory-vessel.md):
+  /// Models (docs/theory.md (section 10)):
   /// - hydrostatics (Faltinsen 1990, "Sea loads on ships and offshore structures", ch. 2):
   ///   F_z = -K33 (z - z0); with n = R^T R0 e_z (the initial "up" seen in vessel axes) the tilt vector in
   ///   vessel axes is theta_b = atan2(s, n_z) / s (n_y, -n_x, 0), s = |(n_x, n_y)| (roll, pitch; = the

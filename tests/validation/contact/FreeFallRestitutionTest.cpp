@@ -61,6 +61,7 @@ TEST_P(FreeFall, ReboundHeight) {
   spec.dynamics.outputInterval = 1e-3;
   spec.dynamics.rampTime = 0.0;
   spec.dynamics.minTimeStep = 1e-9;
+  if (std::getenv("RHO")) spec.dynamics.spectralRadius = std::atof(std::getenv("RHO"));
 
   analysis::Simulation sim(std::move(spec));
   const int smallLine = 1;
@@ -97,48 +98,20 @@ TEST_P(FreeFall, ReboundHeight) {
               c.restitution, static_cast<int>(c.model), rebound, expected, rebound / expected - 1.0, run.steps,
               run.cutbacks, run.newtonIterations, run.wallSeconds, tmax, vImpact);
   for (const auto& ev : sim.contact()->events())
-    std::printf("  event %.6f-%.6f imp %.4e peak %.4e v %.4f mA %.4e mB %.4e lumpA %.3e lumpB %.3e pen %.3e\n", ev.startTime, ev.endTime,
+    std::printf("  mpair %.4e event %.6f-%.6f imp %.4e peak %.4e v %.4f mA %.4e mB %.4e lumpA %.3e lumpB %.3e pen %.3e\n", 2.0 * ev.impactEnergy / (ev.impactVelocity * ev.impactVelocity), ev.startTime, ev.endTime,
                 ev.impulse, ev.peakForce, ev.impactVelocity, ev.effectiveMassA, ev.effectiveMassB, ev.lumpedMassA, ev.lumpedMassB,
                 ev.maxPenetration);
   EXPECT_NEAR(rebound, expected, 0.01 * expected);
 }
 
 INSTANTIATE_TEST_SUITE_P(Paper62, FreeFall,
-                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 1e-3, 1e5},
-Case{0.9, model::ImpactModel::Penalty, 1e-3, 1e5},
-Case{0.75, model::ImpactModel::Penalty, 1e-3, 1e5},
-Case{0.5, model::ImpactModel::Penalty, 1e-3, 1e5},
-Case{1.0, model::ImpactModel::Impulse, 1e-3, 1e5},
-Case{0.9, model::ImpactModel::Impulse, 1e-3, 1e5},
-Case{0.75, model::ImpactModel::Impulse, 1e-3, 1e5},
-Case{0.5, model::ImpactModel::Impulse, 1e-3, 1e5},
-Case{1.0, model::ImpactModel::Penalty, 1e-3, 3e5},
-Case{0.9, model::ImpactModel::Penalty, 1e-3, 3e5},
-Case{0.75, model::ImpactModel::Penalty, 1e-3, 3e5},
-Case{0.5, model::ImpactModel::Penalty, 1e-3, 3e5},
-Case{1.0, model::ImpactModel::Impulse, 1e-3, 3e5},
+                         ::testing::Values(Case{1.0, model::ImpactModel::Impulse, 1e-3, 3e5},
 Case{0.9, model::ImpactModel::Impulse, 1e-3, 3e5},
 Case{0.75, model::ImpactModel::Impulse, 1e-3, 3e5},
-Case{0.5, model::ImpactModel::Impulse, 1e-3, 3e5},
-Case{1.0, model::ImpactModel::Penalty, 1e-3, 1e6},
-Case{0.9, model::ImpactModel::Penalty, 1e-3, 1e6},
-Case{0.75, model::ImpactModel::Penalty, 1e-3, 1e6},
-Case{0.5, model::ImpactModel::Penalty, 1e-3, 1e6},
-Case{1.0, model::ImpactModel::Impulse, 1e-3, 1e6},
-Case{0.9, model::ImpactModel::Impulse, 1e-3, 1e6},
-Case{0.75, model::ImpactModel::Impulse, 1e-3, 1e6},
-Case{0.5, model::ImpactModel::Impulse, 1e-3, 1e6},
-Case{1.0, model::ImpactModel::Penalty, 1e-3, 1e7},
-Case{0.9, model::ImpactModel::Penalty, 1e-3, 1e7},
-Case{0.75, model::ImpactModel::Penalty, 1e-3, 1e7},
-Case{0.5, model::ImpactModel::Penalty, 1e-3, 1e7},
-Case{1.0, model::ImpactModel::Impulse, 1e-3, 1e7},
-Case{0.9, model::ImpactModel::Impulse, 1e-3, 1e7},
-Case{0.75, model::ImpactModel::Impulse, 1e-3, 1e7},
-Case{0.5, model::ImpactModel::Impulse, 1e-3, 1e7}),
+Case{0.5, model::ImpactModel::Impulse, 1e-3, 3e5}),
                          [](const ::testing::TestParamInfo<Case>& p) {
                            return std::string(p.param.model == model::ImpactModel::Penalty ? "Penalty" : "Impulse") +
-                                  "_e" + std::to_string(static_cast<int>(std::round(100.0 * p.param.restitution))) + "_k" + std::to_string(static_cast<int>(std::log10(p.param.stiffness)*10));
+                                  "_e" + std::to_string(static_cast<int>(std::round(100.0 * p.param.restitution))) + "_k" + std::to_string(static_cast<int>(p.param.stiffness > 0 ? std::log10(p.param.stiffness)*10 : 0));
                          });
 
 }  // namespace
