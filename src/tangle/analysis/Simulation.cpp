@@ -42,6 +42,8 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
     m_assembler->addMass(m_state, 0.0, nullptr, &m_state.acceleration, &inertia);
     force += inertia;
   }
+  // Ends tied to vessels: take the link forces out, so what remains at the end node is the line's pull.
+  if (m_vessels) force -= m_vessels->endConnectionForces(m_state, m_state.time);
   return solver::computeLineResults(*m_model, *m_assembler, m_state, force);
 }
 

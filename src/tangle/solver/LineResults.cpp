@@ -59,27 +59,6 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
     // pulls its support with the opposite force.
     s.endForceA = -fullForce.segment<3>(dofs.firstDof(line.firstNode));
     s.endForceB = -fullForce.segment<3>(dofs.firstDof(line.lastNode()));
-    // An end that is not held (a free end, an end tied to a free vessel or hanging from a tensioner)
-    // has no reaction: what it pulls on its attachment with is the end element's internal force.
-    auto endElementForce = [&](int element, bool first) {
-      const model::LineElement& el = model.elements()[element];
-      if (el.bar) {
-        Vec6 f;
-        Mat6 k;
-        el.bar->compute(state.position[el.node1], state.position[el.node2], f, k);
-        return Vec3(first ? f.head<3>() : f.segment<3>(3));
-      }
-      Vec12 f;
-      el.beam->compute(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2],
-                       f, nullptr);
-      return Vec3(first ? f.head<3>() : f.segment<3>(6));
-    };
-    auto held = [&](int node) {
-      const int d = dofs.firstDof(node);
-      return dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0;
-    };
-    if (!held(line.firstNode)) s.endForceA = -endElementForce(line.firstElement, true);
-    if (!held(line.lastNode())) s.endForceB = -endElementForce(line.firstElement + line.elementCount - 1, false);
     // Touchdown: last node (from end A) of the first grounded stretch that is followed by suspended line.
     std::vector<bool> grounded(n);
     for (int i = 0; i < n; ++i) {

@@ -26,7 +26,8 @@ struct LineSnapshot {
 };
 
 /// Computes the snapshot of every line. `fullForce` is the assembled out-of-balance force at `state`
-/// (its values at constrained DOFs are the support reactions).
+/// without the forces of whatever holds the line ends (then its values at the end nodes are the
+/// support reactions: the force the line pulls its support with is minus that).
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce);
 

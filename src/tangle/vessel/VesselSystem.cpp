@@ -277,6 +277,28 @@ void VesselSystem::addForces(const model::State& state, const solver::AssemblyRe
   }
 }
 
+VecX VesselSystem::endConnectionForces(const model::State& state, double time) const {
+  const model::DofMap& dofs = m_model->dofs();
+  VecX all = VecX::Zero(dofs.fullDofCount());
+  solver::AssemblyRequest request;
+  request.time = time;
+  request.wantMatrix = false;
+  for (const Connection& c : m_connections) {
+    const VesselData& d = m_vessels[c.vessel];
+    VecX one = VecX::Zero(dofs.fullDofCount());
+    if (d.spec->mode == model::VesselMode::Free) {
+      addLink(state, c, request, one, nullptr);
+    } else if (c.tensioner.enabled) {
+      const time::MotionValue pose = prescribedPose(c.vessel, time);
+      const Vec3 p = d.position0 + pose.displacement + pose.rotation * c.offset +
+                     raoPointMotion(c.vessel, pose.rotation, c.offset, time).displacement;
+      one[dofs.firstDof(c.node) + 2] -= tensionerForce(c.tensioner, p.z() - state.position[c.node].z()).force;
+    }
+    all.segment<3>(dofs.firstDof(c.node)) += one.segment<3>(dofs.firstDof(c.node));
+  }
+  return all;
+}
+
 void VesselSystem::addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
                            VecX* out) {
   const model::DofMap& dofs = m_model->dofs();

@@ -37,6 +37,10 @@ class VesselSystem final : public solver::LoadContributor {
   /// Global position [m] of a vessel point given in vessel axes at a state (without RAO motion).
   Vec3 vesselPoint(const model::State& state, int vessel, const Vec3& offset) const;
 
+  /// The vessels' contribution to the out-of-balance force at the line-end nodes (links and tensioners),
+  /// full DOF vector; subtracting it from F leaves at those nodes the force of the line on the vessel.
+  VecX endConnectionForces(const model::State& state, double time) const;
+
   /// True when the model has any vessel.
   bool empty() const { return m_vessels.empty(); }
 

@@ -325,13 +325,12 @@ TEST(MooredVessel, StaticOffsetBalancesIndependentMooringRestoringForce) {
 namespace tangle {
 namespace {
 
-// Known bug (reported with issue 5, disabled until fixed): for a line end tied to a FREE vessel, the end
-// node is a free node, so LineSnapshot::endForceB = -(out-of-balance force at the end node) is ~0 at
-// equilibrium instead of the force the line exerts on the fairlead (the link force is part of that
-// out-of-balance force). The results tables and dynamics/end_forces.csv then show ~0 N for fairleads
-// and riser tops on free vessels. Measured at U = 0.1 m/s: endForceB ~ (0.002, 0, 0) N per leg, while
-// the leg top tension is ~3.1e5 N. Expected: the fairlead forces of the pinned lines-only model, 1 %.
-TEST(MooredVessel, DISABLED_SnapshotReportsFairleadForcesOfFreeVesselEnds) {
+// Regression for a fixed bug: for a line end tied to a FREE vessel the end node is free, so its
+// out-of-balance force is ~0 at equilibrium; Simulation::snapshot() now takes the link forces out
+// (VesselSystem::endConnectionForces) so LineSnapshot::endForceB is the force the line exerts on the
+// fairlead (before the fix: ~0.002 N against a ~3.1e5 N top tension). Expected: the fairlead forces of
+// the pinned lines-only model within 1 % (the same line loads, so only round-off separates them).
+TEST(MooredVessel, SnapshotReportsFairleadForcesOfFreeVesselEnds) {
   model::ModelSpec spec;
   spec.sourceFile = "moored vessel, snapshot (test)";
   spec.environment = environment(0.3);
