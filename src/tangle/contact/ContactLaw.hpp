@@ -12,22 +12,28 @@
 ///     e(zeta) = exp(-a tau*) (a sin tau* - cos tau*),
 /// (Schwager & Poeschel 2007, "Coefficient of restitution and linear-dashpot model revisited",
 /// Granular Matter 9:465-469, eq. 16-20). Without clipping one would get e = exp(-pi a) (e.g. Tsuji et al.
-/// 1992). e(zeta) decreases monotonically; it is inverted here by bisection. The smallest e a clipped
-/// linear dashpot can give with zeta < 1 is about e(0.999) ~ 0.0425 (reported by minimumRestitution()).
+/// 1992); the two agree to first order, e = 1 - pi zeta, and the clipped one is higher by 2 zeta^2 + ...
+/// Critical damping (zeta = 1) gives e = exp(-2) = 0.135 and a duration 2 / omega_0. Lower restitutions
+/// need zeta > 1: with s = sqrt(zeta^2 - 1) and q = (zeta - s) / (zeta + s), the force vanishes at
+/// t* = -ln(q) / (omega_0 s) and e = q^(zeta / s) (same derivation, real roots). e(zeta) decreases
+/// monotonically over [0, 100] from 1 to 2.5e-5 (minimumRestitution(); e = 0, plastic, is reached only
+/// in the limit); it is inverted here by bisection.
 
 namespace tangle::contact {
 
-/// Coefficient of restitution [-] of a clipped linear spring-dashpot impact with damping ratio zeta in [0, 1).
+/// Coefficient of restitution [-] of a clipped linear spring-dashpot impact with damping ratio zeta >= 0
+/// (clamped to at most 100).
 double restitutionOfDampingRatio(double zeta);
 
 /// Damping ratio zeta [-] whose clipped spring-dashpot impact has restitution e (clamped to the range
 /// the model can reach: e >= minimumRestitution()).
 double dampingRatioForRestitution(double e);
 
-/// Smallest restitution a clipped linear dashpot can produce (zeta -> 1) [-].
+/// Smallest restitution used (zeta = 100: 2.5e-5) [-].
 double minimumRestitution();
 
-/// Duration [s] of a clipped spring-dashpot impact: tau* / omega_d.
+/// Duration [s] of a clipped spring-dashpot impact, from the touch to the separation (tau* / omega_d below
+/// critical damping).
 double contactDuration(double stiffness, double mass, double zeta);
 
 /// Normal force [N] >= 0 of the spring-dashpot at a converged state: k p + c dp/dt, clipped at 0
