@@ -6,32 +6,11 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/solver/LinearSolver.hpp"
+#include "tangle/solver/ResidualNorm.hpp"
 #include <cstdlib>
 #include <iostream>
 
 namespace tangle::solver {
-
-double StaticSolver::residualNorm(const VecX& force, int* worstNode) const {
-  const model::Model& model = m_assembler->model();
-  const model::DofMap& dofs = model.dofs();
-  double worst = 0.0;
-  int node = -1;
-  // Moments are made comparable to forces by dividing by the element length at the node.
-  for (int n = 0; n < dofs.nodeCount(); ++n) {
-    const int d = dofs.firstDof(n);
-    const double lref = std::max(model.momentScale(n), 1e-6);
-    for (int k = 0; k < dofs.dofCount(n); ++k) {
-      if (dofs.equation(d + k) < 0) continue;
-      const double v = std::abs(force[d + k]) / (k < 3 ? 1.0 : lref);
-      if (v > worst) {
-        worst = v;
-        node = n;
-      }
-    }
-  }
-  if (worstNode) *worstNode = node;
-  return worst;
-}
 
 StaticResult StaticSolver::solve(model::State& state, double time) {
   StaticResult result;
@@ -123,7 +102,7 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
   VecX r(neq);
   m_assembler->beginStep();
   m_assembler->assemble(state, request, force, &matrix);
-  double norm = residualNorm(force, &result.worstNode);
+  double norm = residualNorm(model, force, ResidualIndexing::FullDofs, &result.worstNode);
   result.residual = norm;
   int growing = 0;
   double best = norm;
@@ -169,7 +148,7 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
       return false;  // an element folded on itself: this load increment is too large
     }
     const double previous = norm;
-    norm = residualNorm(force, &result.worstNode);
+    norm = residualNorm(model, force, ResidualIndexing::FullDofs, &result.worstNode);
     result.residual = norm;
     const double step = scale * largestT;
     if (std::getenv("TANGLE_DEBUG_STATICS"))
@@ -182,7 +161,7 @@ bool StaticSolver::newton(model::State& state, double loadFraction, double time,
       if (!m_assembler->updateActiveSet()) return true;
       // A contact was released: the residual changed, iterate on.
       m_assembler->assemble(state, request, force, &matrix);
-      norm = residualNorm(force, &result.worstNode);
+      norm = residualNorm(model, force, ResidualIndexing::FullDofs, &result.worstNode);
       best = norm;
       growing = 0;
       continue;

@@ -34,8 +34,6 @@ class StaticSolver {
  private:
   /// Newton at a fixed load fraction. Returns true on convergence.
   bool newton(model::State& state, double loadFraction, double time, int maxIterations, StaticResult& result);
-  /// Max out-of-balance force norm over translational equations and worst node.
-  double residualNorm(const VecX& fullForce, int* worstNode) const;
 
   Assembler* m_assembler;
   model::StaticSpec m_settings;

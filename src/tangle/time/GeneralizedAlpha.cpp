@@ -2,6 +2,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/geometry/Rotation.hpp"
+#include "tangle/solver/ResidualNorm.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -109,28 +110,6 @@ void GeneralizedAlpha::initialize(model::State& state) {
   m_factorValid = false;
 }
 
-double GeneralizedAlpha::residualNorm(const VecX& r, int* worstNode) const {
-  const model::Model& model = m_assembler->model();
-  const model::DofMap& dofs = model.dofs();
-  double worst = 0.0;
-  int node = -1;
-  for (int n = 0; n < dofs.nodeCount(); ++n) {
-    const int d = dofs.firstDof(n);
-    const double lref = std::max(model.momentScale(n), 1e-6);
-    for (int k = 0; k < dofs.dofCount(n); ++k) {
-      const int eq = dofs.equation(d + k);
-      if (eq < 0) continue;
-      const double v = std::abs(r[eq]) / (k < 3 ? 1.0 : lref);
-      if (!(v <= worst)) {  // also catches NaN
-        worst = v;
-        node = n;
-      }
-    }
-  }
-  if (worstNode) *worstNode = node;
-  return worst;
-}
-
 StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   const model::Model& model = m_assembler->model();
   const model::DofMap& dofs = model.dofs();
@@ -213,7 +192,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       const int dof = eqDofs[i];
       r[i] = inertia[dof] + (1.0 - p.alphaF) * m_force[dof] + p.alphaF * m_forceOld[dof];
     }
-    outcome.residual = residualNorm(r, &outcome.worstNode);
+    outcome.residual = solver::residualNorm(model, r, solver::ResidualIndexing::Equations, &outcome.worstNode);
     if (m_debug)
       std::cerr << fmt::format("    t {:.6f} dt {:.3e} it {:2d} |r| {:.4e} worst node {}\n", t1, dt, it, outcome.residual,
                                outcome.worstNode);

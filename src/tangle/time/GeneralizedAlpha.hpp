@@ -73,7 +73,6 @@ class GeneralizedAlpha {
 
  private:
   void applyPrescribed(model::State& state, double t) const;
-  double residualNorm(const VecX& r, int* worstNode) const;
 
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;

@@ -1,0 +1,21 @@
+#pragma once
+/// @file ResidualNorm.hpp
+/// The convergence measure of the Newton solvers: the largest out-of-balance force over the free DOFs,
+/// with moments made comparable to forces by dividing by a length at their node (Model::momentScale).
+
+#include "tangle/core/Types.hpp"
+#include "tangle/model/Model.hpp"
+
+namespace tangle::solver {
+
+/// How a residual vector is indexed.
+enum class ResidualIndexing {
+  FullDofs,   ///< one entry per full DOF (constrained DOFs are skipped)
+  Equations   ///< one entry per equation
+};
+
+/// Largest |residual| over the free DOFs [N] (moments divided by the node's moment scale); NaN if any entry
+/// is NaN. `worstNode` (optional) receives the node where it occurs.
+double residualNorm(const model::Model& model, const VecX& residual, ResidualIndexing indexing, int* worstNode);
+
+}  // namespace tangle::solver
