@@ -42,18 +42,12 @@ void writeStats(io::JsonWriter& j, const char* key, const std::vector<double>& v
   const Stats s = statistics(v);
   j.key(key);
   j.beginObject();
-  j.key("min");
-  j.value(s.min);
-  j.key("mean");
-  j.value(s.mean);
-  j.key("p50");
-  j.value(s.p50);
-  j.key("p90");
-  j.value(s.p90);
-  j.key("max");
-  j.value(s.max);
-  j.key("values");
-  j.value(v);
+  j.field("min", s.min);
+  j.field("mean", s.mean);
+  j.field("p50", s.p50);
+  j.field("p90", s.p90);
+  j.field("max", s.max);
+  j.field("values", v);
   j.endObject();
 }
 }  // namespace
@@ -114,16 +108,11 @@ void ClashReport::write(const fs::path& dir) const {
   std::ofstream f(out / "summary.json");
   io::JsonWriter j(f);
   j.beginObject();
-  j.key("model");
-  j.value(m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");
-  j.key("restitution");
-  j.value(m_contact->spec().restitution);
-  j.key("damping_ratio");
-  j.value(m_contact->dampingRatio());
-  j.key("clearance_margin_m");
-  j.value(m_contact->spec().clearanceMargin);
-  j.key("events");
-  j.value(static_cast<int>(events.size()));
+  j.field("model", m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");
+  j.field("restitution", m_contact->spec().restitution);
+  j.field("damping_ratio", m_contact->dampingRatio());
+  j.field("clearance_margin_m", m_contact->spec().clearanceMargin);
+  j.field("events", static_cast<int>(events.size()));
   j.key("pairs");
   j.beginArray();
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
@@ -139,27 +128,19 @@ void ClashReport::write(const fs::path& dir) const {
     for (const ClearanceSample& s : m_samples)
       if (s.pair == p && (!worst || s.clearance < worst->clearance)) worst = &s;
     j.beginObject();
-    j.key("line_1");
-    j.value(lines[a].name);
-    j.key("line_2");
-    j.value(lines[b].name);
-    j.key("stiffness_N_per_m");
-    j.value(m_contact->stiffness(a, b));
-    j.key("impacts");
-    j.value(static_cast<int>(velocity.size()));
+    j.field("line_1", lines[a].name);
+    j.field("line_2", lines[b].name);
+    j.field("stiffness_N_per_m", m_contact->stiffness(a, b));
+    j.field("impacts", static_cast<int>(velocity.size()));
     writeStats(j, "impact_velocity_m_per_s", velocity);
     writeStats(j, "impact_energy_J", energy);
     writeStats(j, "peak_force_N", force);
     j.key("min_clearance");
     j.beginObject();
-    j.key("clearance_m");
-    j.value(worst ? worst->clearance : std::numeric_limits<double>::infinity());
-    j.key("time_s");
-    j.value(worst ? worst->time : std::nan(""));
-    j.key("arc_1_m");
-    j.value(worst && std::isfinite(worst->clearance) ? worst->arcA : std::nan(""));
-    j.key("arc_2_m");
-    j.value(worst && std::isfinite(worst->clearance) ? worst->arcB : std::nan(""));
+    j.field("clearance_m", worst ? worst->clearance : std::numeric_limits<double>::infinity());
+    j.field("time_s", worst ? worst->time : std::nan(""));
+    j.field("arc_1_m", worst && std::isfinite(worst->clearance) ? worst->arcA : std::nan(""));
+    j.field("arc_2_m", worst && std::isfinite(worst->clearance) ? worst->arcB : std::nan(""));
     j.endObject();
     j.endObject();
   }

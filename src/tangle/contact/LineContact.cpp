@@ -62,7 +62,10 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
     }
   }
   m_radius.reserve(model.elements().size());
-  for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
+  for (const model::LineElement& el : model.elements()) {
+    m_radius.push_back(0.5 * el.type->contactDiameter);
+    m_maxRadius = std::max(m_maxRadius, m_radius.back());
+  }
 
   BroadPhaseOptions options;
   options.selfContact = spec.selfContact;
@@ -117,6 +120,24 @@ double LineContact::arcOf(int line, int element, double w) const {
   return l.arcLength[i] + w * (l.arcLength[i + 1] - l.arcLength[i]);
 }
 
+double LineContact::broadPhaseMargin(const model::State& state, bool dynamic) const {
+  // What any node can move within a few nominal steps, plus the largest contact radius.
+  double maxSpeed = 0.0;
+  const model::DofMap& dofs = m_model->dofs();
+  if (dynamic)
+    for (int n = 0; n < m_model->nodeCount(); ++n)
+      maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
+  return m_maxRadius + 4.0 * maxSpeed * m_timeStep;
+}
+
+void LineContact::refreshCandidates(const model::State& state) {
+  buildProxies(state);
+  BroadPhaseOptions options = m_broadPhase.options();
+  options.margin = m_margin;
+  m_broadPhase = BroadPhase(options);
+  m_broadPhase.findPairs(m_proxies, m_candidates);
+}
+
 void LineContact::buildProxies(const model::State& state) {
   m_proxies.clear();
   for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
@@ -130,13 +151,7 @@ void LineContact::buildProxies(const model::State& state) {
 }
 
 void LineContact::findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial) {
-  if (refreshBroadPhase) {
-    buildProxies(state);
-    BroadPhaseOptions options = m_broadPhase.options();
-    options.margin = m_margin;
-    m_broadPhase = BroadPhase(options);
-    m_broadPhase.findPairs(m_proxies, m_candidates);
-  }
+  if (refreshBroadPhase) refreshCandidates(state);
   const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();
   // Narrow phase on every candidate, at the current positions.
@@ -360,15 +375,7 @@ void LineContact::addForces(const model::State& state, const solver::AssemblyReq
                             solver::SystemMatrix* matrix) {
   const bool refresh = !request.dynamic || !(request.time == m_candidateTime);
   if (refresh) {
-    // Margin: what any node can move within a couple of nominal steps, plus the largest radius.
-    double maxSpeed = 0.0;
-    const model::DofMap& dofs = m_model->dofs();
-    if (request.dynamic)
-      for (int n = 0; n < m_model->nodeCount(); ++n)
-        maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
-    double rmax = 0.0;
-    for (double r : m_radius) rmax = std::max(rmax, r);
-    m_margin = rmax + 4.0 * maxSpeed * m_timeStep;
+    m_margin = broadPhaseMargin(state, request.dynamic);
     m_candidateTime = request.dynamic ? request.time : std::numeric_limits<double>::quiet_NaN();
   }
   findContacts(state, request.dynamic, refresh, true);
@@ -443,18 +450,8 @@ double LineContact::stepLimit(const model::State& state) {
   double limit = kInf;
   const auto& elements = m_model->elements();
   // Look ahead: candidates within the motion of one nominal step.
-  double maxSpeed = 0.0;
-  const model::DofMap& dofs = m_model->dofs();
-  for (int n = 0; n < m_model->nodeCount(); ++n)
-    maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
-  double rmax = 0.0;
-  for (double r : m_radius) rmax = std::max(rmax, r);
-  m_margin = rmax + 4.0 * maxSpeed * m_timeStep;
-  buildProxies(state);
-  BroadPhaseOptions options = m_broadPhase.options();
-  options.margin = m_margin;
-  m_broadPhase = BroadPhase(options);
-  m_broadPhase.findPairs(m_proxies, m_candidates);
+  m_margin = broadPhaseMargin(state, true);
+  refreshCandidates(state);
   m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // force a refresh at the next assembly
   for (const CandidatePair& cp : m_candidates) {
     const SegmentProxy& a = m_proxies[cp.first];

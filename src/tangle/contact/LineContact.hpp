@@ -137,6 +137,10 @@ class LineContact final : public solver::LoadContributor {
   /// Finds the contact points at `state`; `trial` (Newton iterations) lets new contacts join the active set.
   void findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial);
   void buildProxies(const model::State& state);
+  /// Broad-phase margin [m] at a state: the largest radius plus what a node can move in 4 nominal steps.
+  double broadPhaseMargin(const model::State& state, bool dynamic) const;
+  /// Rebuilds the proxies and the candidate pairs with the current margin.
+  void refreshCandidates(const model::State& state);
   void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;
   static ContactEvent makeEvent(const TrackedContact& tr, double endTime, double closingImpulse, bool open);
   double lumpedMass(int element, double w) const;
@@ -158,6 +162,7 @@ class LineContact final : public solver::LoadContributor {
   std::vector<std::vector<bool>> m_allowed;
   std::vector<double> m_lineStiffness;  // automatic stiffness per line [N/m]
   std::vector<double> m_radius;         // contact radius per element [m]
+  double m_maxRadius = 0.0;             // largest of m_radius [m]
   BroadPhase m_broadPhase;
   std::vector<SegmentProxy> m_proxies;
   std::vector<CandidatePair> m_candidates;

@@ -27,6 +27,12 @@ class JsonWriter {
   void value(const char* v) { value(std::string_view(v)); }
   /// Writes an array of numbers.
   void value(const std::vector<double>& v);
+  /// Writes `"k": v` inside an object (key() then value()).
+  template <class T>
+  void field(std::string_view k, const T& v) {
+    key(k);
+    value(v);
+  }
 
  private:
   void separator();
