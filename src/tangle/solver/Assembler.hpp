@@ -6,6 +6,7 @@
 /// (addMass) because integrators combine it differently. State gather/scatter is not done here.
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
@@ -41,6 +42,15 @@ class LoadContributor {
   /// Newton has converged with the current active set; return true if the contributor changed it
   /// (e.g. released a contact that carries tension), so the caller must iterate again.
   virtual bool updateActiveSet() { return false; }
+  /// Statics: the largest fraction in (0, 1] of the proposed increment `fullIncrement` (full DOFs, from
+  /// `state`) that this contributor accepts (e.g. so that no two lines close by more than a fraction of
+  /// their radii in one Newton iteration). 1 accepts the whole increment.
+  virtual double limitIncrement(const model::State& /*state*/, const VecX& /*fullIncrement*/) { return 1.0; }
+  /// Statics: an empty string if `state` is admissible as a converged equilibrium, otherwise why not
+  /// (e.g. two lines have passed through each other). A solver never reports such a state as converged.
+  virtual std::string rejectState(const model::State& /*state*/) { return {}; }
+  /// Statics: a load increment has converged at `state`; commit path-dependent data (trial -> committed).
+  virtual void commitStatic(const model::State& /*state*/) {}
 };
 
 /// Structural elements, weight and buoyancy, point attachments and the seabed; plus any number of
