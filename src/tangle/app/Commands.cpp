@@ -129,6 +129,7 @@ int runAnalysis(const RunOptions& options) {
   if (!options.quiet) printSummary(m);
 
   const solver::StaticResult result = sim.solveStatics();
+  for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
   const auto lines = sim.snapshot();
   io::writeStaticSummary(outDir, m, result, lines);
   if (!result.converged) {

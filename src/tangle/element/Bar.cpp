@@ -15,7 +15,7 @@ Bar::Bar(double axialStiffness, double restLength) : m_ea(axialStiffness), m_l0(
   }
 }
 
-void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent) const {
+void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent, double compressionFactor) const {
   // Crisfield 1991, vol. 1, sec. 3.3: with d = x2 - x1, l = |d|, e = d / l and N = EA (l - L0) / L0,
   // the internal force is [-N e, N e] and its exact derivative is
   // K = [k, -k; -k, k], k = EA / L0 e e^T + N / l (I - e e^T).
@@ -23,20 +23,23 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tan
   const double l = d.norm();
   if (!(l > 0.0)) throw Error("Bar: the two nodes coincide (zero current length)");
   const Vec3 e = d / l;
-  const double n = m_ea * (l - m_l0) / m_l0;
+  // A slack bar (l < L0) may be given a reduced compression stiffness (compressionFactor < 1).
+  const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
+  const double n = ea * (l - m_l0) / m_l0;
   internalForce.head<3>() = -n * e;
   internalForce.tail<3>() = n * e;
 
   const Mat3 eeT = e * e.transpose();
-  const Mat3 k = (m_ea / m_l0) * eeT + (n / l) * (Mat3::Identity() - eeT);
+  const Mat3 k = (ea / m_l0) * eeT + (n / l) * (Mat3::Identity() - eeT);
   tangent.topLeftCorner<3, 3>() = k;
   tangent.bottomRightCorner<3, 3>() = k;
   tangent.topRightCorner<3, 3>() = -k;
   tangent.bottomLeftCorner<3, 3>() = -k;
 }
 
-double Bar::axialForce(const Vec3& x1, const Vec3& x2) const {
-  return m_ea * ((x2 - x1).norm() - m_l0) / m_l0;
+double Bar::axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor) const {
+  const double l = (x2 - x1).norm();
+  return (l < m_l0 ? compressionFactor : 1.0) * m_ea * (l - m_l0) / m_l0;
 }
 
 }  // namespace tangle::element

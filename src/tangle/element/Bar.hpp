@@ -23,10 +23,13 @@ class Bar {
   /// @param[out] internalForce forces the element exerts *on its nodes' equations* ordered
   ///        [node1 (3), node2 (3)] [N]; the equilibrium residual is internalForce - externalForce
   /// @param[out] tangent d(internalForce)/d(x1,x2) [N/m], symmetric (material + geometric part)
-  void compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent) const;
+  /// @param compressionFactor multiplies EA while the bar is shorter than L0 [-] (1: linear elastic in
+  ///        compression; statics uses a small value for cables, which cannot carry compression)
+  void compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent, double compressionFactor = 1.0) const;
 
   /// Axial force N = EA (l - L0) / L0 [N], positive in tension, negative in compression.
-  double axialForce(const Vec3& x1, const Vec3& x2) const;
+  /// @param compressionFactor as in compute()
+  double axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor = 1.0) const;
 
   double axialStiffness() const { return m_ea; }  ///< EA [N]
   double restLength() const { return m_l0; }      ///< L0 [m]

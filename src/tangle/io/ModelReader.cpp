@@ -429,12 +429,13 @@ class NameRegistry {
 void readTitle(const Value& v, ModelSpec& spec) { spec.title = v.text("a title (text)"); }
 
 void readSeabed(const Value& v, model::SeabedSpec& seabed) {
-  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity"});
+  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity", "shear_stiffness"});
   const model::SeabedSpec d;
   seabed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positive());
   seabed.damping = m.number("damping", d.damping, nonNegative());
   seabed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
   seabed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
+  seabed.shearStiffness = m.number("shear_stiffness", seabed.normalStiffness, positive());
 }
 
 /// A list of levels {z, speed, azimuth}, or one map {speed, azimuth} for a uniform current (stored as a

@@ -10,6 +10,7 @@ int DofMap::addNode(int dofCount) {
   m_firstDof.push_back(first);
   m_dofCount.push_back(dofCount);
   m_equation.insert(m_equation.end(), dofCount, -2);
+  m_dofNode.insert(m_dofNode.end(), dofCount, nodeCount() - 1);
   return first;
 }
 

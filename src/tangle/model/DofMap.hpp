@@ -26,6 +26,8 @@ class DofMap {
   bool hasRotations(int node) const { return m_dofCount[node] == 6; }      ///< beam node
   /// Equation number of full DOF `dof`, or -1 when constrained.
   int equation(int dof) const { return m_equation[dof]; }
+  /// Node owning full DOF `dof`.
+  int nodeOf(int dof) const { return m_dofNode[dof]; }
   /// Full DOF of each equation.
   const std::vector<int>& equationDofs() const { return m_equationDof; }
 
@@ -34,6 +36,7 @@ class DofMap {
   std::vector<int> m_dofCount;
   std::vector<int> m_equation;  // -1 constrained, -2 free before finalize
   std::vector<int> m_equationDof;
+  std::vector<int> m_dofNode;
   int m_equationCount = 0;
 };
 

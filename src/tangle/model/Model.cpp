@@ -219,7 +219,23 @@ State Model::initialState() const {
     const Vec3 endB = endPosition(line.spec->endB);
     for (const Vec3& end : {endA, endB})
       if (end.z() <= -env.waterDepth + radius + 1e-6) shapeDepth = std::min(shapeDepth, -end.z());
-    const std::vector<Vec3> pts = solver::initialLineShape(endA, endB, sections, shapeDepth, line.arcLength).positions;
+    double totalWeight = 0.0;
+    for (const auto& sec : sections) totalWeight += sec.weight * sec.length;
+    std::vector<Vec3> pts;
+    if (totalWeight < 0.0 && endA.z() < 0.0 && endB.z() < 0.0) {
+      // A buoyant line floats up into an inverted catenary: the hanging catenary of the mirrored problem
+      // (z -> -z, weight -> -weight, no seabed), mirrored back. A straight start would be a compressed,
+      // unstable equilibrium of a cable.
+      std::vector<solver::CatenarySection> mirrored = sections;
+      for (auto& sec : mirrored) sec.weight = -sec.weight;
+      const Vec3 flip(1.0, 1.0, -1.0);
+      const double noSeabed = 1e3 * std::max(1.0, std::abs(endA.z()) + std::abs(endB.z()) + line.length);
+      pts = solver::initialLineShape(endA.cwiseProduct(flip), endB.cwiseProduct(flip), mirrored, noSeabed, line.arcLength)
+                .positions;
+      for (Vec3& p : pts) p = p.cwiseProduct(flip);
+    } else {
+      pts = solver::initialLineShape(endA, endB, sections, shapeDepth, line.arcLength).positions;
+    }
     for (int i = 0; i < line.nodeCount; ++i) s.position[line.firstNode + i] = pts[i];
     // Grounded nodes start at their static penetration w / k into the seabed, so the seabed springs are
     // active in the first Newton tangent (otherwise a grounded stretch has no vertical stiffness).

@@ -20,8 +20,9 @@ namespace tangle::model {
 struct SeabedSpec {
   double normalStiffness = 1.0e5;  ///< penalty stiffness per unit length of line [N/m/m]
   double damping = 0.0;            ///< normal damping per unit length of line [N s/m/m]
-  double frictionCoefficient = 0.0;  ///< Coulomb friction coefficient mu [-] (dynamics only)
-  double frictionVelocity = 0.01;  ///< regularisation velocity: full friction above it [m/s]
+  double frictionCoefficient = 0.0;  ///< Coulomb friction coefficient mu [-] (statics and dynamics)
+  double frictionVelocity = 0.01;  ///< dynamics: regularisation velocity, full friction above it [m/s]
+  double shearStiffness = 0.0;     ///< statics: friction spring per unit length of line [N/m/m]; 0: = normalStiffness
 };
 
 /// One level of a piecewise-linear current profile.

@@ -48,4 +48,39 @@ SeabedNodeReaction FlatSeabed::reaction(const Vec3& position, const Vec3& veloci
   return r;
 }
 
+StaticFrictionResult FlatSeabed::staticFriction(const Vec3& position, const Vec2& anchor, double normal,
+                                                double normalStiffness, double tributaryLength) const {
+  StaticFrictionResult r;
+  r.anchor = anchor;
+  const double mu = m_spec.frictionCoefficient;
+  if (mu <= 0.0 || normal <= 0.0) return r;
+  const double kt = shearStiffness() * tributaryLength;
+  const Vec2 slip(position.x() - anchor.x(), position.y() - anchor.y());
+  const double distance = slip.norm();
+  const double cap = mu * normal;
+  if (kt * distance <= cap) {
+    // Stick: linear spring to the anchor.
+    r.force.x() = -kt * slip.x();
+    r.force.y() = -kt * slip.y();
+    r.stiffness(0, 0) = r.stiffness(1, 1) = kt;
+    return r;
+  }
+  // Slip: the force sits on the cap along the slip direction n and the anchor follows the node, staying
+  // cap / kt behind it (closest-point return map of a 2D isotropic Coulomb law).
+  const Vec2 n = slip / distance;
+  r.sliding = true;
+  r.force.x() = -cap * n.x();
+  r.force.y() = -cap * n.y();
+  r.anchor = Vec2(position.x(), position.y()) - (cap / kt) * n;
+  // -dF/dx = cap / |s| (I - n n^T) in the plane; -dF/dz = -mu dN/dz n... with N = k (penetration) and
+  // d(penetration)/dz = -1: dF/dz = mu k n, so -dF/dz = -mu k n.
+  const double c = cap / distance;
+  r.stiffness(0, 0) = c * (1.0 - n.x() * n.x());
+  r.stiffness(1, 1) = c * (1.0 - n.y() * n.y());
+  r.stiffness(0, 1) = r.stiffness(1, 0) = -c * n.x() * n.y();
+  r.stiffness(0, 2) = -mu * normalStiffness * n.x();
+  r.stiffness(1, 2) = -mu * normalStiffness * n.y();
+  return r;
+}
+
 }  // namespace tangle::seabed

@@ -16,6 +16,16 @@ struct SeabedNodeReaction {
   double penetration = 0.0;                ///< [m], > 0 in contact
 };
 
+/// Statics friction of one node: an elastic spring to the node's anchor point on the seabed (its as-laid
+/// position), capped at mu N, with the anchor dragged along when the cap is reached (a return map,
+/// as in rate-independent plasticity). See docs/theory.md, "Seabed friction in statics".
+struct StaticFrictionResult {
+  Vec3 force = Vec3::Zero();      ///< friction force on the node, in the seabed plane [N]
+  Mat3 stiffness = Mat3::Zero();  ///< -d(force)/d(position) [N/m]
+  Vec2 anchor = Vec2::Zero();     ///< anchor (x, y) after the return map [m]
+  bool sliding = false;           ///< the force is at the cap mu N
+};
+
 /// Flat seabed: normal force k L delta + c L v_n (compression only) and friction
 /// mu * N * v_t / max(|v_t|, v_reg) (linear "viscous" branch below v_reg so Newton converges;
 /// the regularisation of e.g. OrcaFlex's and MoorDyn's seabed friction models).
@@ -34,6 +44,16 @@ class FlatSeabed {
   /// @param dynamic include damping and friction
   SeabedNodeReaction reaction(const Vec3& position, const Vec3& velocity, double tributaryLength, double radius,
                               bool dynamic) const;
+
+  /// Friction in statics on a node in contact (see StaticFrictionResult).
+  /// @param position node position [m]; @param anchor committed anchor (x, y) [m]
+  /// @param normal normal reaction N [N] (> 0); @param normalStiffness dN/d(penetration) [N/m]
+  /// @param tributaryLength length of line the node stands for [m] (scales the shear stiffness)
+  StaticFrictionResult staticFriction(const Vec3& position, const Vec2& anchor, double normal, double normalStiffness,
+                                      double tributaryLength) const;
+
+  /// Shear (friction spring) stiffness per unit length of line [N/m/m]: the user's value, or the normal stiffness.
+  double shearStiffness() const { return m_spec.shearStiffness > 0.0 ? m_spec.shearStiffness : m_spec.normalStiffness; }
 
   double depth() const { return m_depth; }  ///< [m]
 

@@ -23,6 +23,10 @@ struct LineType {
   double addedMassNormal = 1.0;     ///< normal added-mass coefficient Can [-]
   double addedMassAxial = 0.0;      ///< axial added-mass coefficient Caa [-]
   double axialDamping = 0.0;        ///< structural axial damping coefficient c [N s] (force = c * strain rate)
+  /// Cables only: fraction of EA kept while an element is shorter than its unstretched length [-]. Chain
+  /// and wire rope carry no compression (they buckle at once); the small default keeps the tangent regular.
+  /// 1 makes the bar a linear spring in compression too (e.g. a stiff link of a verification model).
+  double compressionFactor = 1e-6;
 
   /// True when the type carries bending (and torsion): meshed with beams.
   bool isBeam() const { return bendingStiffness > 0.0; }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tangle/seabed/FlatSeabed.hpp"
 
@@ -19,12 +20,63 @@ double submergedFraction(double z1, double z2) {
 
 Assembler::Assembler(const model::Model& model) : m_model(&model) {
   const auto& env = model.environment();
+  std::vector<double> submerged(model.lines().size(), 0.0), air(model.lines().size(), 0.0);
   for (const auto& el : model.elements()) {
     const double w = std::abs(el.type->submergedWeight(env.waterDensity, env.gravity)) * el.restLength;
     const double wAir = el.type->massPerLength * env.gravity * el.restLength;
     m_referenceForce = std::max({m_referenceForce, w, 0.1 * wAir});
     m_roundoffForce = std::max(m_roundoffForce, 1e-14 * el.type->axialStiffness);
+    submerged[el.line] += w;
+    air[el.line] += wAir;
   }
+  for (const model::NodeAttachment& a : model.attachments()) {
+    const int line = model.lineOfNode(a.node);
+    if (line < 0) continue;
+    submerged[line] += std::abs(a.spec.mass - env.waterDensity * a.spec.volume) * env.gravity;
+    air[line] += a.spec.mass * env.gravity;
+  }
+  for (std::size_t l = 0; l < submerged.size(); ++l)
+    m_staticForceScale = std::max({m_staticForceScale, submerged[l], 0.1 * air[l]});
+  const int n = model.nodeCount();
+  m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
+  m_trialAnchor = m_anchor;
+  m_committedXY.assign(n, Vec2::Zero());
+}
+
+double Assembler::roundoffFloor(const model::State& state) const {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  double floor = 0.0;
+  for (const model::LineElement& el : m_model->elements()) {
+    const double x = std::max(state.position[el.node1].cwiseAbs().maxCoeff(), state.position[el.node2].cwiseAbs().maxCoeff()) +
+                     el.restLength;
+    const double l = el.restLength;
+    double f = el.type->axialStiffness * eps * x / l;
+    // Moments are compared with forces over a 1 m lever (StaticSolver).
+    if (el.isBeam()) f = std::max(f, el.type->bendingStiffness * eps * x / (l * l));
+    floor = std::max(floor, f);
+  }
+  // A node sums a few such terms of either sign; 16 leaves room for the accumulation.
+  return 16.0 * floor;
+}
+
+void Assembler::beginStatics(const model::State& state) {
+  const auto& env = m_model->environment();
+  const auto& diameter = m_model->nodeContactDiameter();
+  for (int n = 0; n < m_model->nodeCount(); ++n) {
+    const Vec3& x = state.position[n];
+    m_committedXY[n] = Vec2(x.x(), x.y());
+    const bool touching = x.z() - 0.5 * diameter[n] < -env.waterDepth;
+    m_anchor[n] = touching ? m_committedXY[n] : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+  }
+  m_trialAnchor = m_anchor;
+}
+
+void Assembler::commitStatics(const model::State& state) {
+  for (int n = 0; n < m_model->nodeCount(); ++n) {
+    m_committedXY[n] = Vec2(state.position[n].x(), state.position[n].y());
+  }
+  m_anchor = m_trialAnchor;
+  for (LoadContributor* c : m_contributors) c->commitStatic(state);
 }
 
 void Assembler::assemble(const model::State& state, const AssemblyRequest& request, VecX& force,
@@ -42,13 +94,21 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
                             SystemMatrix* matrix) {
   const model::DofMap& dofs = m_model->dofs();
   const double beta = request.dynamic ? m_model->spec().dynamics.rayleighBeta : 0.0;
-  for (const model::LineElement& el : m_model->elements()) {
+  for (std::size_t e = 0; e < m_model->elements().size(); ++e) {
+    const model::LineElement& el = m_model->elements()[e];
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
+    const bool modified = !m_restLength.empty() && !std::isnan(m_restLength[e]);
     if (el.bar) {
       Vec6 f;
       Mat6 k;
-      el.bar->compute(state.position[el.node1], state.position[el.node2], f, k);
+      const element::Bar& bar = modified ? element::Bar(el.bar->axialStiffness(), m_restLength[e]) : *el.bar;
+      // A cable carries no compression (chain and wire rope buckle at once; MoorDyn's segments likewise):
+      // a slack bar keeps LineType::compressionFactor (1e-6) of its EA, enough to keep the tangent
+      // regular, so a compressed straight line is not an equilibrium and statics finds the shape that
+      // hangs (or floats) in tension. Statics may raise the factor for a while (m_slackFactor).
+      bar.compute(state.position[el.node1], state.position[el.node2], f, k,
+                  std::max(el.type->compressionFactor, m_slackFactor));
       const int map[6] = {d1, d1 + 1, d1 + 2, d2, d2 + 1, d2 + 2};
       if (beta > 0.0) {
         Vec6 v;
@@ -61,8 +121,10 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     } else {
       Vec12 f;
       Mat12 k;
-      el.beam->compute(state.position[el.node1], state.triad[el.node1], state.position[el.node2],
-                       state.triad[el.node2], f, matrix || beta > 0.0 ? &k : nullptr);
+      const element::CorotationalBeam& beam =
+          modified ? element::CorotationalBeam(el.beam->properties(), m_restLength[e]) : *el.beam;
+      beam.compute(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2], f,
+                   matrix || beta > 0.0 ? &k : nullptr);
       const int map[12] = {d1, d1 + 1, d1 + 2, d1 + 3, d1 + 4, d1 + 5, d2, d2 + 1, d2 + 2, d2 + 3, d2 + 4, d2 + 5};
       if (beta > 0.0) {
         Vec12 v;
@@ -122,11 +184,27 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
   const seabed::FlatSeabed bed(env.seabed, env.waterDepth);
   const auto& trib = m_model->tributaryLength();
   const auto& diameter = m_model->nodeContactDiameter();
+  const bool staticFriction = !request.dynamic && env.seabed.frictionCoefficient > 0.0;
   for (int n = 0; n < m_model->nodeCount(); ++n) {
     const int d = dofs.firstDof(n);
+    // A node held in all three translations (an anchor) takes its support from the constraint: a seabed
+    // spring there would only add a phantom vertical load to the anchor reaction.
+    if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) continue;
     const Vec3 v = state.velocity.segment<3>(d);
-    const seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
-    if (r.penetration <= 0.0) continue;
+    seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
+    if (r.penetration <= 0.0) {
+      if (staticFriction) m_trialAnchor[n] = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+      continue;
+    }
+    if (staticFriction) {
+      // The as-laid anchor, or for a node that touched down since the last commit its position then.
+      const Vec2 anchor = std::isnan(m_anchor[n].x()) ? m_committedXY[n] : m_anchor[n];
+      const seabed::StaticFrictionResult f =
+          bed.staticFriction(state.position[n], anchor, r.force.z(), r.stiffness(2, 2), trib[n]);
+      m_trialAnchor[n] = f.anchor;
+      r.force += f.force;
+      r.stiffness += f.stiffness;
+    }
     force.segment<3>(d) -= r.force;
     if (matrix) {
       matrix->add3x3(d, d, r.stiffness, request.kf);
@@ -195,12 +273,18 @@ void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matr
 std::vector<double> Assembler::elementTension(const model::State& state) const {
   std::vector<double> t;
   t.reserve(m_model->elements().size());
-  for (const model::LineElement& el : m_model->elements()) {
+  for (std::size_t e = 0; e < m_model->elements().size(); ++e) {
+    const model::LineElement& el = m_model->elements()[e];
+    const bool modified = !m_restLength.empty() && !std::isnan(m_restLength[e]);
     if (el.bar) {
-      t.push_back(el.bar->axialForce(state.position[el.node1], state.position[el.node2]));
+      const element::Bar& bar = modified ? element::Bar(el.bar->axialStiffness(), m_restLength[e]) : *el.bar;
+      t.push_back(bar.axialForce(state.position[el.node1], state.position[el.node2],
+                                 std::max(el.type->compressionFactor, m_slackFactor)));
     } else {
-      t.push_back(el.beam
-                      ->sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2],
+      const element::CorotationalBeam& beam =
+          modified ? element::CorotationalBeam(el.beam->properties(), m_restLength[e]) : *el.beam;
+      t.push_back(beam
+                      .sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2],
                                       state.triad[el.node2])
                       .axialForce);
     }

@@ -61,9 +61,27 @@ class Assembler {
 
   /// Registers an additional force source (the Assembler keeps a non-owning pointer).
   void addContributor(LoadContributor* contributor) { m_contributors.push_back(contributor); }
+  /// The registered force sources.
+  const std::vector<LoadContributor*>& contributors() const { return m_contributors; }
+
+  /// Statics starts (or restarts) from `state`: seabed friction anchors are set at the as-laid positions
+  /// of the nodes on the seabed in `state`.
+  void beginStatics(const model::State& state);
+  /// A statics load increment converged at `state`: commits the friction anchors (the trial ones of the
+  /// last assembly) and forwards LoadContributor::commitStatic.
+  void commitStatics(const model::State& state);
 
   /// F (full DOFs) and, if requested, H (equations). `force` is resized and zeroed.
   void assemble(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+
+  /// Statics length continuation: element e is given the unstretched length restLengths[e] [m] instead of
+  /// its own (NaN keeps its own); an empty vector restores every element. Weight stays the nominal one.
+  void setRestLengths(std::vector<double> restLengths) { m_restLength = std::move(restLengths); }
+
+  /// Lower bound on the fraction of EA a slack cable element keeps [-] (LineType::compressionFactor
+  /// applies above it); 0 by default. Statics raises it temporarily (continuation in the cable law).
+  void setSlackFactor(double factor) { m_slackFactor = factor; }
+  double slackFactor() const { return m_slackFactor; }
 
   /// Forwards LoadContributor::beginStep to every contributor.
   void beginStep() {
@@ -84,8 +102,16 @@ class Assembler {
   /// the effective tension of Sparks 1984).
   std::vector<double> elementTension(const model::State& state) const;
 
-  /// Reference force [N] for convergence tests: largest element weight magnitude or 1 N.
+  /// Reference force [N] for the dynamic convergence test: largest element weight magnitude or 1 N.
   double referenceForce() const { return m_referenceForce; }
+  /// Force scale [N] of the static convergence test, independent of the mesh: the largest over the lines
+  /// of the line's submerged weight (absolute, each element), 10 % of its weight in air and the weight
+  /// of its attachments, and at least 1 N.
+  double staticForceScale() const { return m_staticForceScale; }
+  /// Round-off floor [N] of the out-of-balance force at `state`: an element's force is known only to
+  /// about EA eps |x| / L (the strain is a difference of coordinates of magnitude |x|), its moments to
+  /// EI eps |x| / L^2; a residual cannot be driven below a few times the largest of these.
+  double roundoffFloor(const model::State& state) const;
   /// Force resolution [N] set by round-off: out-of-balance forces below it are noise
   /// (about 1e-14 * the largest axial stiffness EA; a residual cannot be driven lower).
   double roundoffForce() const { return m_roundoffForce; }
@@ -102,6 +128,14 @@ class Assembler {
   const model::Model* m_model;
   std::vector<LoadContributor*> m_contributors;
   double m_referenceForce = 1.0;
+  double m_staticForceScale = 1.0;
+  // Seabed friction in statics: committed anchor (x, y) per node (NaN: none) and the trial anchors of the
+  // last assembly; positions (x, y) at the last commit, anchors of nodes that touch down later.
+  std::vector<Vec2> m_anchor;
+  std::vector<Vec2> m_trialAnchor;
+  std::vector<Vec2> m_committedXY;
+  std::vector<double> m_restLength;  // statics length continuation (setRestLengths)
+  double m_slackFactor = 0.0;
   double m_roundoffForce = 0.0;
 };
 

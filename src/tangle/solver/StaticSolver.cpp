@@ -2,182 +2,599 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fmt/format.h>
+#include <iostream>
+#include <limits>
+#include <numbers>
 
 #include "tangle/core/Error.hpp"
 #include "tangle/solver/LinearSolver.hpp"
-#include "tangle/solver/ResidualNorm.hpp"
-#include <cstdlib>
-#include <iostream>
 
 namespace tangle::solver {
 
+namespace {
+/// Lever [m] that turns a nodal moment residual of a line node into a force for the convergence test.
+/// A fixed length (not the element length) so that the test does not tighten as the mesh is refined.
+constexpr double kLineMomentLever = 1.0;
+/// Largest Levenberg-Marquardt factor before a Newton solve gives up [-].
+constexpr double kMaxShift = 1e4;
+/// Restarts from a perturbed shape when bar elements end in compression.
+constexpr int kMaxPerturbedRestarts = 2;
+
+bool debugStatics() {
+  static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
+  return on;
+}
+}  // namespace
+
 StaticResult StaticSolver::solve(model::State& state, double time) {
   StaticResult result;
-  if (m_assembler->model().dofs().equationCount() == 0) {
+  const model::Model& model = m_assembler->model();
+  if (model.dofs().equationCount() == 0) {
     result.converged = true;
     result.loadFraction = 1.0;
     result.message = "no free degrees of freedom";
     return result;
   }
-  // Load incrementation: first try the full load from the (catenary) starting shape; on failure go
-  // back to the last equilibrium and take smaller load increments.
-  double reached = 0.0;
-  double increment = 1.0;
+  m_forceScale = m_assembler->staticForceScale();
+  result.tolerance = m_settings.tolerance * m_forceScale;
   const model::State start = state;
-  model::State lastGood = state;
-  bool haveEquilibrium = false;
-  int budget = m_settings.maxIterations;
-  while (reached < 1.0 && budget > 0) {
-    const double target = std::min(1.0, reached + increment);
-    model::State trial = lastGood;
-    StaticResult attempt;
-    const int allowed = std::min(budget, target >= 1.0 && increment >= 1.0 ? budget / 2 : 60);
-    bool ok = false;
-    try {
-      ok = newton(trial, target, time, allowed, attempt);
-    } catch (const Error&) {
-      ok = false;  // an element could not be evaluated at the start of this increment
+  // Iterations in all: max_iterations bounds each Newton solve; the whole continuation gets 20 times that.
+  int budget = std::max(20 * m_settings.maxIterations, 200);
+
+  model::State trial = start;
+  bool ok = solveFrom(trial, time, result, budget);
+  if (!ok && budget > 0) {
+    // Continuation in the cable law: solve with cables that resist compression like tension (a regular
+    // tangent even where the start shape leaves them slack), then take that stiffness away in decades
+    // down to the real, compression-free cable, each stage starting from the last equilibrium.
+    const double slack = m_assembler->slackFactor();
+    model::State linear = start;
+    StaticResult stage = result;
+    m_assembler->setSlackFactor(1.0);
+    bool staged = solveFrom(linear, time, stage, budget);
+    for (double f = 0.1; staged; f *= 0.1) {
+      // Down to the cables' own law (the lower bound 0 leaves LineType::compressionFactor, 1e-6 by default).
+      const bool last = f < 1e-6;
+      m_assembler->setSlackFactor(last ? 0.0 : f);
+      staged = solveFrom(linear, time, stage, budget);
+      if (debugStatics()) std::cerr << fmt::format("  cable compression factor {:.0e}: {}\n", last ? 0.0 : f, staged ? "ok" : "failed");
+      if (last) break;
     }
-    budget -= attempt.iterations;
-    result.iterations += attempt.iterations;
-    result.residual = attempt.residual;
-    result.worstNode = attempt.worstNode;
-    if (ok) {
-      lastGood = trial;
-      haveEquilibrium = true;
-      reached = target;
-      increment = std::min(1.0, increment * 2.0);
+    m_assembler->setSlackFactor(slack);
+    if (staged) {
+      ok = true;
+      trial = linear;
+      result = stage;
     } else {
-      increment *= 0.25;
-      if (increment < 1e-3) break;
-      if (!haveEquilibrium && reached == 0.0) {
-        // Start the ramp from zero load: the starting shape itself.
-        lastGood = start;
-      }
+      result.iterations = stage.iterations;
     }
   }
-  result.loadFraction = reached;
-  result.converged = reached >= 1.0;
-  state = haveEquilibrium ? lastGood : start;
-  const model::Model& model = m_assembler->model();
-  if (result.converged) {
-    result.message = fmt::format("static equilibrium found in {} iterations (max out-of-balance {:.3g} N)",
-                                 result.iterations, result.residual);
+  for (int restart = 0; ok && restart < kMaxPerturbedRestarts; ++restart) {
+    const std::vector<int> compressed = compressedBars(trial);
+    if (compressed.empty()) break;
+    // A line without bending stiffness in compression is on an unstable branch (e.g. a buoyant cable
+    // pushed straight): start again from a shape bulged the way its load pushes it.
+    if (debugStatics()) std::cerr << fmt::format("  {} bar elements in compression: restart from a bulged shape\n", compressed.size());
+    model::State bulged = trial;
+    perturbCompressed(bulged, compressed);
+    model::State again = bulged;
+    StaticResult second = result;
+    if (solveFrom(again, time, second, budget)) {
+      trial = again;
+      result = second;
+    } else {
+      break;
+    }
+  }
+  if (ok) {
+    const std::vector<int> compressed = compressedBars(trial);
+    if (!compressed.empty()) {
+      const int e = compressed.front();
+      const auto& el = model.elements()[e];
+      result.warnings.push_back(fmt::format(
+          "{} suspended cable element(s) are slack (shorter than unstretched) at the static equilibrium (first at "
+          "{}): a line without bending stiffness cannot carry compression; check the line length against the "
+          "distance between its ends, or give the section a bending_stiffness",
+          compressed.size(), model.describeNode(el.node1)));
+    }
+    std::string why;
+    for (LoadContributor* c : m_assembler->contributors()) {
+      why = c->rejectState(trial);
+      if (!why.empty()) break;
+    }
+    if (!why.empty()) {
+      ok = false;
+      result.message = fmt::format("static analysis reached a state that is not admissible: {}", why);
+    }
+  }
+  result.converged = ok;
+  if (ok) {
+    state = trial;
+    result.loadFraction = 1.0;
+    result.message =
+        result.roundoffLimited
+            ? fmt::format("static equilibrium found in {} iterations (max out-of-balance {:.3g} N: the round-off floor, "
+                          "above the requested {:.3g} N)",
+                          result.iterations, result.residual, result.tolerance)
+            : fmt::format("static equilibrium found in {} iterations (max out-of-balance {:.3g} N, tolerance {:.3g} N)",
+                          result.iterations, result.residual, result.tolerance);
   } else {
-    const std::string where = model.describeNode(result.worstNode);
-    result.message = fmt::format(
-        "static analysis did not converge: load fraction reached {:.3f}, {} iterations, largest out-of-balance "
-        "force {:.4g} N at {}",
-        result.loadFraction, result.iterations, result.residual, where);
+    if (result.message.empty()) result.message = diagnose(trial, result, "");
+    state = start;
   }
   return result;
 }
 
-bool StaticSolver::newton(model::State& state, double loadFraction, double time, int maxIterations,
-                          StaticResult& result) {
+bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget) {
+  const model::Model& model = m_assembler->model();
+  const int neq = model.dofs().equationCount();
+  const model::State start = state;
+  const double tolerance = result.tolerance;
+  const int perSolve = std::max(m_settings.maxIterations, 10);
+
+  // 1. Newton from the starting shape at the full load.
+  m_assembler->beginStatics(start);
+  const VecX noOffset = VecX::Zero(neq);
+  NewtonOutcome full = newtonWithFallback(state, noOffset, time, std::min(perSolve, budget), tolerance);
+  budget -= full.iterations;
+  result.iterations += full.iterations;
+  result.residual = full.residual;
+  result.worstNode = full.worstNode;
+  if (full.converged) {
+    result.roundoffLimited = full.roundoff;
+    m_assembler->commitStatics(state);
+    return true;
+  }
+  if (debugStatics()) std::cerr << "  full load failed (" << full.failure << "): continuation from the start shape\n";
+
+  // 2. Continuation from lambda = 0 (the start shape) to 1 in the residual and in length:
+  //    r(q; L(lambda)) - (1 - lambda) r(q0; L(0)) = 0, with L(lambda) = L0 + lambda (L - L0).
+  //    Elements the start shape compresses (a kink of the analytic shape inside an element, which with
+  //    EA ~ 1e9 N is a force of 1e8 N) start at their current chord, stress-free, and are paid out to
+  //    their own length as lambda grows; all others keep their length. Every load is then ramped from
+  //    the state the start shape balances, like a line paid out onto its final position.
+  state = start;
+  m_assembler->beginStatics(start);
+  const std::size_t elementCount = model.elements().size();
+  std::vector<double> startLength(elementCount, std::numeric_limits<double>::quiet_NaN());
+  {
+    const std::vector<double> tension = m_assembler->elementTension(start);
+    for (std::size_t e = 0; e < elementCount; ++e) {
+      const model::LineElement& el = model.elements()[e];
+      if (tension[e] < -1e-2 * m_forceScale)
+        startLength[e] = (start.position[el.node2] - start.position[el.node1]).norm();
+    }
+  }
+  auto lengthsAt = [&](double lambda) {
+    std::vector<double> l(elementCount, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t e = 0; e < elementCount; ++e)
+      if (!std::isnan(startLength[e]))
+        l[e] = startLength[e] + lambda * (model.elements()[e].restLength - startLength[e]);
+    return l;
+  };
+  struct RestoreLengths {
+    Assembler* a;
+    ~RestoreLengths() { a->setRestLengths({}); }
+  } restore{m_assembler};
+  m_assembler->setRestLengths(lengthsAt(0.0));
+  VecX force;
+  VecX r0(neq);
+  AssemblyRequest request;
+  request.time = time;
+  request.dynamic = false;
+  request.wantMatrix = false;
+  try {
+    m_assembler->assemble(start, request, force, nullptr);
+  } catch (const Error& e) {
+    result.message = diagnose(start, result, fmt::format("the starting shape cannot be evaluated ({})", e.what()));
+    return false;
+  }
+  gatherResidual(force, noOffset, r0);
+  double reached = 0.0;
+  double increment = 0.125;
+  std::string lastFailure = full.failure;
+  while (reached < 1.0 && budget > 0) {
+    const double target = std::min(1.0, reached + increment);
+    model::State trial = state;
+    const VecX offset = (1.0 - target) * r0;
+    m_assembler->setRestLengths(lengthsAt(target));
+    // Intermediate states need not be as accurate as the final one: they are only starting points.
+    const double tol = target < 1.0 ? std::max(tolerance, 1e-4 * m_forceScale) : tolerance;
+    NewtonOutcome step = newtonWithFallback(trial, offset, time, std::min(perSolve, budget), tol);
+    budget -= step.iterations;
+    result.iterations += step.iterations;
+    result.residual = step.residual;
+    result.worstNode = step.worstNode;
+    if (debugStatics())
+      std::cerr << fmt::format("  continuation lambda {:.5f} -> {}, {} iterations\n", target,
+                               step.converged ? "ok" : step.failure, step.iterations);
+    if (step.converged) {
+      state = trial;
+      m_assembler->commitStatics(state);
+      reached = target;
+      result.loadFraction = reached;
+      result.roundoffLimited = step.roundoff;
+      increment = std::min(1.0, increment * (step.iterations <= 6 ? 2.0 : 1.0));
+    } else {
+      lastFailure = step.failure;
+      increment *= 0.25;
+      if (increment < 1e-5) break;
+      m_assembler->beginStatics(state);  // back to the anchors of the last converged increment
+    }
+  }
+  if (reached >= 1.0) return true;
+  result.message = diagnose(state, result, lastFailure);
+  return false;
+}
+
+StaticSolver::NewtonOutcome StaticSolver::newtonWithFallback(model::State& state, const VecX& offset, double time,
+                                                             int maxIterations, double tolerance) {
+  // A portfolio, cheapest first: plain Newton (quadratic, and the only one that takes the large
+  // non-monotone first steps of axially stiff beams), then pseudo-transient continuation judged on the
+  // residual (slack cables), then damped Newton judged by the natural monotonicity test.
+  NewtonOutcome out;
+  int used = 0;
+  for (NewtonMode mode : {NewtonMode::Plain, NewtonMode::Merit, NewtonMode::Natural}) {
+    model::State trial = state;
+    out = newton(trial, offset, time, maxIterations, tolerance, mode);
+    used += out.iterations;
+    if (out.converged) {
+      state = trial;
+      break;
+    }
+    if (debugStatics()) std::cerr << "   Newton mode " << static_cast<int>(mode) << " failed: " << out.failure << "\n";
+  }
+  out.iterations = used;
+  return out;
+}
+
+StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX& offset, double time,
+                                                 int maxIterations, double tolerance, NewtonMode mode) {
+  const bool plain = mode == NewtonMode::Plain;
+  const bool merit = mode == NewtonMode::Merit;
+  NewtonOutcome out;
   const model::Model& model = m_assembler->model();
   const model::DofMap& dofs = model.dofs();
   const int neq = dofs.equationCount();
   const auto& eqDofs = dofs.equationDofs();
-  const double fref = m_assembler->referenceForce();
-  double lref = 0.0;
+  double lref = 1.0;
+  double minElement = 1e30;
   for (const auto& line : model.lines()) lref = std::max(lref, line.length);
-  lref = std::max(lref, 1.0);
-  double minElement = lref;
   for (const auto& el : model.elements()) minElement = std::min(minElement, el.restLength);
-  // Largest nodal translation [m] and rotation [rad] per iteration: keeps Newton from jumping across
-  // the solution on slack lines, where the tangent is nearly singular.
-  const double maxTranslation = std::max(0.05 * lref, 2.0 * minElement);
+  if (model.elements().empty()) minElement = lref;
+  // Largest nodal translation [m] and rotation [rad] per iteration (a trust region in displacement):
+  // keeps Newton from jumping across the solution on slack lines, where the tangent is nearly singular.
+  double maxElement = 0.0;
+  for (const auto& el : model.elements()) maxElement = std::max(maxElement, el.restLength);
+  const double maxTranslation = std::max(std::min(0.05 * lref, std::max(10.0, 5.0 * maxElement)), 2.0 * minElement);
   const double maxRotation = 0.5;
+  const double floor = m_assembler->roundoffFloor(state);
+  if (debugStatics()) std::cerr << fmt::format("   round-off floor {:.3g} N, tolerance {:.3g} N\n", floor, tolerance);
 
   AssemblyRequest request;
   request.time = time;
-  request.loadFactor = loadFraction;
   request.dynamic = false;
   SystemMatrix matrix(dofs);
+  SparseMatrix kAccepted;
   SparseMatrix k;
   LinearSolver solver;
   VecX force;
-  VecX r(neq);
+  VecX r(neq), rTrial(neq);
   m_assembler->beginStep();
-  m_assembler->assemble(state, request, force, &matrix);
-  double norm = residualNorm(model, force, ResidualIndexing::FullDofs, &result.worstNode);
-  result.residual = norm;
-  int growing = 0;
-  double best = norm;
-  // Regularisation factor relative to the diagonal: 0 normally (pure Newton); raised only when the
-  // tangent cannot be factorised (a slack line with no stiffness in some direction).
-  double mu = 0.0;
+  try {
+    m_assembler->assemble(state, request, force, &matrix);
+  } catch (const Error& e) {
+    out.failure = fmt::format("an element cannot be evaluated ({})", e.what());
+    return out;
+  }
+  gatherResidual(force, offset, r);
+  matrix.build(kAccepted);
 
+  out.residual = scaledMaxNorm(r, &out.worstNode);
+  double mu = 0.0;
+  int stalled = 0;
+  double best = out.residual;
+  int sinceBest = 0;
+  double lastStep = std::numeric_limits<double>::infinity();
+  double lastShift = 0.0;
   for (int it = 0; it < maxIterations; ++it) {
-    result.iterations = it + 1;
-    if (!std::isfinite(norm)) return false;
-    for (int i = 0; i < neq; ++i) r[i] = force[eqDofs[i]];
-    matrix.build(k);
-    const VecX diag = k.diagonal().cwiseAbs();
+    if (!std::isfinite(out.residual)) {
+      out.failure = "the out-of-balance force is not finite";
+      return out;
+    }
+    // Converged: forces balanced to the tolerance, or stalled at the round-off floor of the elements
+    // (a residual cannot be driven below the noise of EA times the strain round-off).
+    const bool balanced = out.residual <= tolerance;
+    // The step criterion: a correction of 1e-12 of the model's size changes only the last few digits of
+    // the coordinates, so the residual is whatever round-off leaves (seen with fine beam meshes).
+    // Only a full (unshifted) Newton step counts: a step made tiny by the pseudo-transient shift says
+    // nothing about convergence.
+    const bool roundoff = stalled >= 2 && (out.residual <= floor || (lastStep <= 1e-12 * lref && lastShift == 0.0));
+    if (balanced || roundoff) {
+      if (!m_assembler->updateActiveSet()) {
+        out.converged = true;
+        out.roundoff = !balanced;
+        return out;
+      }
+      // A contributor changed its active set (a contact released): iterate on.
+      m_assembler->assemble(state, request, force, &matrix);
+      gatherResidual(force, offset, r);
+      matrix.build(kAccepted);
+      out.residual = scaledMaxNorm(r, &out.worstNode);
+      stalled = 0;
+      continue;
+    }
+    out.iterations = it + 1;
+    k = kAccepted;
+    // Fictitious mass D of the pseudo-transient term: per node, the largest diagonal stiffness of its
+    // translations (and of its rotations), the same in every direction, so a direction in which the
+    // tangent has no stiffness (a slack line laterally on a frictionless seabed) is damped like the
+    // stiff ones. Scaled per node: one scale for all (a vessel's link) would soften every line DOF.
+    VecX diag = k.diagonal().cwiseAbs();
+    {
+      VecX nodeMax = VecX::Zero(2 * dofs.nodeCount());
+      for (int i = 0; i < neq; ++i) {
+        const int dof = eqDofs[i];
+        const int n = dofs.nodeOf(dof);
+        const int slot = 2 * n + (dof - dofs.firstDof(n) < 3 ? 0 : 1);
+        nodeMax[slot] = std::max(nodeMax[slot], diag[i]);
+      }
+      for (int i = 0; i < neq; ++i) {
+        const int dof = eqDofs[i];
+        const int n = dofs.nodeOf(dof);
+        diag[i] = nodeMax[2 * n + (dof - dofs.firstDof(n) < 3 ? 0 : 1)];
+      }
+    }
     const double dmax = std::max(diag.maxCoeff(), 1e-12);
-    // The shift is relative to each diagonal entry: one scaled by the largest entry (a vessel's link)
-    // would soften every line DOF and make Newton converge only linearly.
-    for (int i = 0; i < neq; ++i)
-      k.coeffRef(i, i) += (mu > 0.0 ? mu : 1e-8) * std::max(diag[i], 1e-9 * dmax);
+    for (int i = 0; i < neq; ++i) if (mu > 0.0) k.coeffRef(i, i) += mu * std::max(diag[i], 1e-9 * dmax);
     if (!solver.factorize(k)) {
-      mu = std::max(1e-3, mu * 10.0);
-      if (mu > 1e3) return false;
+      mu = std::max(1e-4, mu * 10.0);
+      if (mu > kMaxShift) {
+        out.failure = "the stiffness matrix is singular";
+        return out;
+      }
       continue;
     }
     const VecX dq = -solver.solve(r);
     double largestT = 0.0, largestR = 0.0;
-    for (int n = 0; n < dofs.nodeCount(); ++n) {
-      const int d = dofs.firstDof(n);
-      for (int c = 0; c < dofs.dofCount(n); ++c) {
-        const int eq = dofs.equation(d + c);
-        if (eq < 0) continue;
-        (c < 3 ? largestT : largestR) = std::max(c < 3 ? largestT : largestR, std::abs(dq[eq]));
-      }
+    int largestNode = -1;
+    for (int i = 0; i < neq; ++i) {
+      const int dof = eqDofs[i];
+      const bool translation = dof - dofs.firstDof(dofs.nodeOf(dof)) < 3;
+      if (translation && std::abs(dq[i]) > largestT) largestNode = dofs.nodeOf(dof);
+      (translation ? largestT : largestR) = std::max(translation ? largestT : largestR, std::abs(dq[i]));
     }
+    if (debugStatics() && largestNode >= 0)
+      std::cerr << fmt::format("    largest step {:.3e} m at {}\n", largestT, model.describeNode(largestNode));
     double scale = 1.0;
     if (largestT > maxTranslation) scale = std::min(scale, maxTranslation / largestT);
     if (largestR > maxRotation) scale = std::min(scale, maxRotation / largestR);
     VecX full = VecX::Zero(dofs.fullDofCount());
     for (int i = 0; i < neq; ++i) full[eqDofs[i]] = scale * dq[i];
-    state.applyIncrement(dofs, full);
-    try {
-      m_assembler->assemble(state, request, force, &matrix);
-    } catch (const Error&) {
-      return false;  // an element folded on itself: this load increment is too large
+    for (LoadContributor* c : m_assembler->contributors()) {
+      const double limit = c->limitIncrement(state, full);
+      if (limit < 1.0) {
+        full *= std::max(limit, 0.0);
+        scale *= std::max(limit, 0.0);
+      }
     }
-    const double previous = norm;
-    norm = residualNorm(model, force, ResidualIndexing::FullDofs, &result.worstNode);
-    result.residual = norm;
-    const double step = scale * largestT;
-    if (std::getenv("TANGLE_DEBUG_STATICS"))
-      std::cerr << fmt::format("  lambda {:.3f} it {:3d} |r| {:.4e} step {:.3e} scale {:.3g} mu {:.2e}\n",
-                               loadFraction, it, norm, step, scale, mu);
-    // Converged: forces balanced and either the last correction was negligible or the residual has
-    // reached round-off level (it no longer halves; stiff elements carry force noise ~ EA * 1e-16).
-    if (norm <= std::max(m_settings.tolerance * fref, 10.0 * m_assembler->roundoffForce()) &&
-        (step <= m_settings.displacementTolerance * lref || norm <= 1e-9 * fref || norm > 0.5 * previous)) {
-      if (!m_assembler->updateActiveSet()) return true;
-      // A contact was released: the residual changed, iterate on.
-      m_assembler->assemble(state, request, force, &matrix);
-      norm = residualNorm(model, force, ResidualIndexing::FullDofs, &result.worstNode);
-      best = norm;
-      growing = 0;
+    model::State trial = state;
+    trial.applyIncrement(dofs, full);
+    lastStep = scale * largestT;
+    lastShift = mu;
+    bool evaluated = true;
+    try {
+      m_assembler->assemble(trial, request, force, &matrix);
+    } catch (const Error&) {
+      evaluated = false;  // an element folded on itself: the increment is too large
+    }
+    // Natural monotonicity test (Deuflhard 2004, "Newton methods for nonlinear problems", sec. 3.3): the
+    // simplified Newton correction at the trial state with the same factorisation must be shorter than
+    // the step just taken (Theta < 1). Unlike a residual norm it is affine invariant: a large residual in
+    // a stiff direction (an axially stiff beam stretched by a rotation step, EA theta^2 / 2) needs only a
+    // tiny correction and is accepted, while a residual in a soft or singular direction (a slack line)
+    // is not. Lengths are compared in metres, rotations over a 1 m lever.
+    double theta = std::numeric_limits<double>::infinity();
+    if (evaluated) {
+      gatherResidual(force, offset, rTrial);
+      if (rTrial.allFinite()) {
+        const VecX correction = solver.solve(rTrial);
+        theta = correction.norm() / std::max(scale * dq.norm(), 1e-300);
+      }
+    }
+    if (debugStatics())
+      std::cerr << fmt::format("    it {:3d} |r| {:.4e} step {:.3e} scale {:.3g} mu {:.2e} theta {:.3g}\n", it,
+                               out.residual, scale * largestT, scale, mu, theta);
+    if (plain) {
+      if (!evaluated || !rTrial.allFinite()) {
+        out.failure = "an element folds or the out-of-balance force is not finite";
+        return out;
+      }
+      const double previous = out.residual;
+      state = std::move(trial);
+      r = rTrial;
+      matrix.build(kAccepted);
+      out.residual = scaledMaxNorm(r, &out.worstNode);
+      stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
+      // Newton may be non-monotone at first, but a residual that keeps growing is divergence.
+      if (out.residual < best) {
+        best = out.residual;
+        sinceBest = 0;
+      } else if (++sinceBest > 8) {
+        out.failure = "the out-of-balance force keeps growing";
+        return out;
+      }
       continue;
     }
-    // Divergence watch: Newton may be non-monotone at first, but a residual that keeps growing means
-    // the load increment is too large.
-    if (norm < best) {
-      best = norm;
-      growing = 0;
-    } else if (++growing > 8) {
-      return false;
+    const bool accept = merit ? (evaluated && rTrial.allFinite() && rTrial.squaredNorm() < 100.0 * r.squaredNorm())
+                              : theta < 1.0;
+    if (accept && merit) {
+      // Pseudo-transient continuation with switched evolution relaxation: mu <- mu |r_new| / |r_old|.
+      const double ratio = rTrial.norm() / std::max(r.norm(), 1e-300);
+      const double previous = out.residual;
+      state = std::move(trial);
+      r = rTrial;
+      matrix.build(kAccepted);
+      out.residual = scaledMaxNorm(r, &out.worstNode);
+      stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
+      if (mu == 0.0) {
+        if (ratio > 1.0) mu = 1e-4;
+      } else {
+        mu *= std::clamp(ratio, 0.1, 10.0);
+        if (mu < 1e-9) mu = 0.0;
+      }
+      if (out.residual < best) {
+        best = 0.5 * out.residual;
+        sinceBest = 0;
+      } else if (++sinceBest > 25) {
+        out.failure = "the out-of-balance force stopped decreasing";
+        return out;
+      }
+      continue;
     }
-    mu *= 0.1;
-    if (mu < 1e-6) mu = 0.0;
+    if (accept) {
+      const double previous = out.residual;
+      state = std::move(trial);
+      r = rTrial;
+      matrix.build(kAccepted);
+      out.residual = scaledMaxNorm(r, &out.worstNode);
+      stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
+      // Pseudo-transient shift (Kelley & Keyes 1998; implicit dynamic relaxation with fictitious masses
+      // proportional to the diagonal stiffness): relaxed as Newton contracts well, kept when it does not.
+      if (theta < 0.5) mu = mu > 1e-9 ? 0.25 * mu : 0.0;
+      if (out.residual < best) {
+        best = 0.5 * out.residual;  // "improving" means halving the largest out-of-balance force
+        sinceBest = 0;
+      } else if (++sinceBest > 40) {
+        out.failure = "the out-of-balance force stopped decreasing";
+        return out;
+      }
+    } else {
+      ++stalled;
+      mu = std::max(1e-4, mu * 10.0);
+      if (mu > kMaxShift) {
+        out.failure = evaluated ? "no increment reduces the Newton correction" : "elements fold for every increment tried";
+        return out;
+      }
+    }
   }
-  return false;
+  out.failure = fmt::format("not converged in {} iterations", maxIterations);
+  return out;
+}
+
+void StaticSolver::gatherResidual(const VecX& force, const VecX& offset, VecX& r) const {
+  const auto& eqDofs = m_assembler->model().dofs().equationDofs();
+  r.resize(static_cast<Eigen::Index>(eqDofs.size()));
+  for (std::size_t i = 0; i < eqDofs.size(); ++i) r[static_cast<Eigen::Index>(i)] = force[eqDofs[i]] - offset[static_cast<Eigen::Index>(i)];
+}
+
+double StaticSolver::scaledMaxNorm(const VecX& residualEq, int* worstNode) const {
+  const model::Model& model = m_assembler->model();
+  const model::DofMap& dofs = model.dofs();
+  const auto& eqDofs = dofs.equationDofs();
+  double worst = 0.0;
+  int node = -1;
+  for (std::size_t i = 0; i < eqDofs.size(); ++i) {
+    const int dof = eqDofs[i];
+    const int n = dofs.nodeOf(dof);
+    const double s = dof - dofs.firstDof(n) < 3 ? 1.0 : (model.lineOfNode(n) >= 0 ? kLineMomentLever : model.momentScale(n));
+    const double v = std::abs(residualEq[static_cast<Eigen::Index>(i)]) / s;
+    if (!(v <= worst)) {
+      worst = v;
+      node = n;
+      if (std::isnan(v)) break;
+    }
+  }
+  if (worstNode) *worstNode = node;
+  return worst;
+}
+
+std::vector<int> StaticSolver::compressedBars(const model::State& state) const {
+  const model::Model& model = m_assembler->model();
+  const auto& env = model.environment();
+  // Cable elements carry no compression (Assembler: a slack bar keeps 1e-6 EA), so a suspended bar that
+  // is shorter than its unstretched length by more than 1e-4 is slack: its line is not held in tension
+  // there (an unstable or indifferent branch). Laid elements may be slack: the seabed holds them.
+  std::vector<int> out;
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    const model::LineElement& el = model.elements()[e];
+    if (!el.bar) continue;
+    const double strain = (state.position[el.node2] - state.position[el.node1]).norm() / el.restLength - 1.0;
+    if (strain >= -1e-4) continue;
+    // Suspended: neither node on the seabed (a touchdown element may be slack, its chord cuts the corner).
+    const bool touches = state.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1] <= -env.waterDepth + 1e-3 ||
+                         state.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2] <= -env.waterDepth + 1e-3;
+    if (!touches) out.push_back(static_cast<int>(e));
+  }
+  return out;
+}
+
+void StaticSolver::perturbCompressed(model::State& state, const std::vector<int>& elements) const {
+  const model::Model& model = m_assembler->model();
+  const auto& env = model.environment();
+  const model::DofMap& dofs = model.dofs();
+  // Group consecutive elements of a line into runs; bulge each run's free nodes by a half sine whose
+  // arc length takes up the run's unstretched length: A = (2 c / pi) sqrt(L / c - 1) for a chord c.
+  std::size_t i = 0;
+  while (i < elements.size()) {
+    std::size_t j = i;
+    while (j + 1 < elements.size() && elements[j + 1] == elements[j] + 1 &&
+           model.elements()[elements[j + 1]].line == model.elements()[elements[i]].line)
+      ++j;
+    const auto& first = model.elements()[elements[i]];
+    const auto& last = model.elements()[elements[j]];
+    double restLength = 0.0, weight = 0.0;
+    for (std::size_t k = i; k <= j; ++k) {
+      const auto& el = model.elements()[elements[k]];
+      restLength += el.restLength;
+      weight += el.type->submergedWeight(env.waterDensity, env.gravity) * el.restLength;
+    }
+    const Vec3 a = state.position[first.node1];
+    const Vec3 b = state.position[last.node2];
+    const double chord = (b - a).norm();
+    const double amplitude = chord < restLength ? 2.0 * chord / std::numbers::pi * std::sqrt(restLength / chord - 1.0)
+                                                : 0.05 * chord;
+    // The load direction: down for a heavy run, up for a buoyant one; perpendicular to a vertical chord
+    // it falls back to a horizontal direction.
+    Vec3 dir = weight >= 0.0 ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitZ());
+    const Vec3 axis = (b - a).normalized();
+    dir -= dir.dot(axis) * axis;
+    if (dir.norm() < 1e-6) dir = axis.unitOrthogonal();
+    dir.normalize();
+    for (int n = first.node1 + 1; n < last.node2; ++n) {
+      const int d = dofs.firstDof(n);
+      bool free = false;
+      for (int c = 0; c < 3; ++c) free = free || dofs.equation(d + c) >= 0;
+      if (!free) continue;
+      const double f = static_cast<double>(n - first.node1) / static_cast<double>(last.node2 - first.node1);
+      state.position[n] = a + f * (b - a) + amplitude * std::sin(std::numbers::pi * f) * dir;
+    }
+    i = j + 1;
+  }
+}
+
+std::string StaticSolver::diagnose(const model::State& state, const StaticResult& result, const std::string& why) const {
+  const model::Model& model = m_assembler->model();
+  const auto& env = model.environment();
+  const int node = result.worstNode;
+  std::string where = node >= 0 ? model.describeNode(node) : std::string("an unknown node");
+  std::string hint;
+  if (node >= 0 && model.lineOfNode(node) >= 0) {
+    const bool onSeabed = state.position[node].z() - 0.5 * model.nodeContactDiameter()[node] <= -env.waterDepth + 1e-3;
+    if (onSeabed && env.seabed.frictionCoefficient <= 0.0 && !env.current.empty())
+      hint = "the node lies on a frictionless seabed with a current across the line, which has no static equilibrium: "
+             "set environment.seabed.friction_coefficient (0.3 to 1.0 is typical)";
+  }
+  if (hint.empty())
+    hint = "check the line lengths against the distances between their ends and the section properties; a larger "
+           "statics.max_iterations or a mesh with fewer, longer elements near that node may help";
+  return fmt::format(
+      "static analysis did not converge{}: load fraction reached {:.3f}, {} iterations, largest out-of-balance force "
+      "{:.4g} N at {} (tolerance {:.3g} N). What to change: {}",
+      why.empty() ? std::string() : fmt::format(" ({})", why), result.loadFraction, result.iterations, result.residual,
+      where, result.tolerance, hint);
 }
 
 }  // namespace tangle::solver

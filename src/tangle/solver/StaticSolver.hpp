@@ -1,11 +1,27 @@
 #pragma once
 /// @file StaticSolver.hpp
-/// Static equilibrium by Newton-Raphson with load incrementation, a Levenberg-Marquardt style
-/// regularisation (a pseudo-time viscous term, the implicit counterpart of the dynamic relaxation
-/// the seed paper's authors use) when the tangent is singular, and increment limiting (the largest nodal
-/// translation and rotation per iteration are capped).
+/// Static equilibrium of the whole model (docs/theory.md, "Static solution"):
+///  1. Newton-Raphson from the starting shape with a Levenberg-Marquardt trust region: each
+///     increment solves (K + mu D) dq = -r (D the diagonal of K) and is accepted only if it lowers
+///     the scaled residual; mu grows on rejection and shrinks on success, so the iteration is plain
+///     Newton (quadratic) near the solution and a damped, descent-like iteration far from it. The
+///     largest nodal translation and rotation per iteration are capped, and contributors (contact) may
+///     cap the increment further (LoadContributor::limitIncrement).
+///  2. If that fails, continuation in a load fraction lambda from the starting shape: the equations
+///     solved are r(q) - (1 - lambda) r(q0) = 0 (a Newton homotopy), so at lambda = 0 the starting
+///     shape is the solution and every load - weight, buoyancy, current drag, vessel loads, end
+///     offsets - is ramped together from the state the start shape balances to the full load.
+///     Increments of lambda grow after successes and are cut after failures.
+/// Convergence is measured against a force scale of the model that does not shrink with the mesh (the
+/// largest line weight, see Assembler::staticForceScale) and accepts a residual stalled at the
+/// round-off floor of the elements (Assembler::roundoffFloor). Seabed friction acts in statics as an
+/// elastic-plastic spring to the as-laid position, committed after every converged increment.
+/// A converged state is checked before it is reported: bar elements in compression (an unstable
+/// branch for a line without bending stiffness) trigger a restart from a perturbed shape, and a state
+/// a contributor rejects (lines passed through each other) is never reported as converged.
 
 #include <string>
+#include <vector>
 
 #include "tangle/model/State.hpp"
 #include "tangle/solver/Assembler.hpp"
@@ -15,11 +31,14 @@ namespace tangle::solver {
 /// Outcome of a static solve.
 struct StaticResult {
   bool converged = false;
-  int iterations = 0;            ///< Newton iterations in all
+  int iterations = 0;            ///< Newton iterations in all (accepted and rejected trial increments)
   double loadFraction = 0.0;     ///< largest load fraction at which equilibrium was reached [-]
-  double residual = 0.0;         ///< final max out-of-balance force [N]
+  double residual = 0.0;         ///< final max out-of-balance force [N] (moments divided by 1 m)
+  double tolerance = 0.0;        ///< force tolerance that was applied [N]
+  bool roundoffLimited = false;  ///< accepted at the round-off floor, above the requested tolerance
   int worstNode = -1;            ///< global node with the largest out-of-balance force
-  std::string message;           ///< human-readable summary
+  std::string message;           ///< human-readable summary (on failure: where, how large, what to change)
+  std::vector<std::string> warnings;  ///< e.g. bar elements left in compression
 };
 
 /// Static analysis driver.
@@ -28,15 +47,44 @@ class StaticSolver {
   StaticSolver(Assembler& assembler, const model::StaticSpec& settings) : m_assembler(&assembler), m_settings(settings) {}
 
   /// Solves for equilibrium starting from `state` (modified in place: on success it is the
-  /// equilibrium; on failure the last equilibrium reached at a lower load fraction).
+  /// equilibrium; on failure the starting state or the last equilibrium reached at a lower load fraction).
   StaticResult solve(model::State& state, double time = 0.0);
 
  private:
-  /// Newton at a fixed load fraction. Returns true on convergence.
-  bool newton(model::State& state, double loadFraction, double time, int maxIterations, StaticResult& result);
+  struct NewtonOutcome {
+    bool converged = false;
+    bool roundoff = false;
+    int iterations = 0;
+    double residual = 0.0;
+    int worstNode = -1;
+    std::string failure;  // why it stopped, when not converged
+  };
+  /// One attempt from `start` towards the full load, with continuation when needed.
+  bool solveFrom(model::State& state, double time, StaticResult& result, int& budget);
+  /// Newton (trust region) at a fixed load fraction; `offset` is (1 - lambda) r(q0) over the equations.
+  enum class NewtonMode { Plain, Merit, Natural };
+  /// Plain: every step that can be evaluated is taken (full Newton within the displacement caps; fails
+  /// when the residual grows 8 times in a row); otherwise damped: the natural monotonicity test with a
+  /// pseudo-transient shift.
+  NewtonOutcome newton(model::State& state, const VecX& offset, double time, int maxIterations, double tolerance,
+                       NewtonMode mode);
+  /// Plain Newton, then the damped variants from the same start while they fail.
+  NewtonOutcome newtonWithFallback(model::State& state, const VecX& offset, double time, int maxIterations,
+                                   double tolerance);
+  /// Scaled out-of-balance (equations): moments divided by a 1 m lever; max-norm and the worst node.
+  double scaledMaxNorm(const VecX& residualEq, int* worstNode) const;
+  /// r over the equations from the full-DOF force vector minus the homotopy offset.
+  void gatherResidual(const VecX& force, const VecX& offset, VecX& r) const;
+  /// Bar elements in compression beyond the tolerance at `state` (element indices).
+  std::vector<int> compressedBars(const model::State& state) const;
+  /// A lateral bulge of the compressed runs of bar elements, in the direction of their distributed load.
+  void perturbCompressed(model::State& state, const std::vector<int>& elements) const;
+  /// Failure message: where, how large, and what the user can change.
+  std::string diagnose(const model::State& state, const StaticResult& result, const std::string& why) const;
 
   Assembler* m_assembler;
   model::StaticSpec m_settings;
+  double m_forceScale = 1.0;
 };
 
 }  // namespace tangle::solver

@@ -1,0 +1,360 @@
+// Statics robustness battery (issue 12): ordinary models of every kind must converge, and where a
+// closed form exists the equilibrium must match it.
+//
+// References and tolerances:
+//  - Catenary with a grounded part, frictionless seabed: the closed-form elastic catenary
+//    (solver::solveAnchoredCatenary, itself verified against Irvine 1981 in ElasticCatenaryTest). 0.5 % on
+//    the fairlead tension: the polyline with lumped nodal weights differs from the continuous catenary by
+//    O((w L_e / H)^2), under 1e-3 even for 10 elements over 500 m (L_e = 50 m).
+//  - Slack catenary (line longer than the L-shaped path anchor -> below fairlead -> fairlead): the exact
+//    equilibrium on a frictionless seabed has zero horizontal tension, so the fairlead tension is the
+//    weight of the vertical hanging length, w (z_fairlead - z_rest) (1 + small elastic stretch); 0.5 %.
+//  - Elastica (test::elastica, Mattiasson 1981): 0.5 % of L on the tip drop for every EA L_e^2 / EI.
+//  - Buoyant cable between held ends: the inverted two-point catenary; checked by sign (tension
+//    everywhere, arch above the ends), the value is 0.5 % against the suspended catenary solution.
+//  - Seabed friction in statics: a laid line under a uniform lateral load q holds while q < mu w
+//    (hand check: each node's friction cap is mu w L_t) and has no equilibrium when q > mu w.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fmt/format.h>
+#include <string>
+
+#include "support/Elastica.hpp"
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/io/ModelReader.hpp"
+#include "tangle/solver/ElasticCatenary.hpp"
+
+namespace tangle {
+namespace {
+
+struct Solved {
+  solver::StaticResult result;
+  std::vector<solver::LineSnapshot> lines;
+  std::unique_ptr<analysis::Simulation> sim;
+};
+
+Solved solveYaml(const std::string& yaml) {
+  Solved s;
+  s.sim = std::make_unique<analysis::Simulation>(io::readModelString(yaml, "battery (test)"));
+  s.result = s.sim->solveStatics();
+  if (s.result.converged) s.lines = s.sim->snapshot();
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Catenaries from slack (span 50 % of the length) to nearly taut, 10 to 1000 elements.
+
+constexpr double kChainMass = 114.9;       // kg/m (studless chain 76 mm)
+constexpr double kChainDiameter = 0.1368;  // m, volume-equivalent
+constexpr double kChainEA = 4.93e8;        // N
+constexpr double kDepth = 100.0;
+constexpr double kLength = 500.0;
+constexpr double kFairleadZ = -10.0;
+
+std::string catenaryYaml(double span, int elements, const std::string& extraEnvironment = "", double mu = 0.0) {
+  return fmt::format(R"(
+environment:
+  water_depth: {depth}
+  seabed: {{normal_stiffness: 1.0e7, friction_coefficient: {mu}}}
+{extra}
+line_types:
+  - {{name: chain, outer_diameter: {d}, mass_per_length: {m}, axial_stiffness: {ea}, drag_normal: 1.333, drag_axial: 0.2}}
+lines:
+  - name: chain
+    end_a: {{type: anchored, position: [0, 0, {za}]}}
+    end_b: {{type: pinned, position: [{span}, 0, {zf}]}}
+    sections:
+      - {{type: chain, length: {length}, elements: {n}}}
+)",
+                     fmt::arg("depth", kDepth), fmt::arg("mu", mu), fmt::arg("extra", extraEnvironment),
+                     fmt::arg("d", kChainDiameter), fmt::arg("m", kChainMass), fmt::arg("ea", kChainEA),
+                     fmt::arg("za", -kDepth + 0.5 * kChainDiameter), fmt::arg("span", span), fmt::arg("zf", kFairleadZ),
+                     fmt::arg("length", kLength), fmt::arg("n", elements));
+}
+
+double chainWeight() {
+  const double area = M_PI / 4.0 * kChainDiameter * kChainDiameter;
+  return (kChainMass - 1025.0 * area) * 9.80665;
+}
+
+struct CatenaryCase {
+  double spanFraction;
+  int elements;
+};
+
+class CatenaryBattery : public ::testing::TestWithParam<CatenaryCase> {};
+
+TEST_P(CatenaryBattery, ConvergesAndMatchesClosedForm) {
+  const auto [fraction, elements] = GetParam();
+  const double span = fraction * kLength;
+  Solved s = solveYaml(catenaryYaml(span, elements));
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  EXPECT_TRUE(s.result.warnings.empty()) << s.result.warnings.front();
+  const double w = chainWeight();
+  const double rest = -kDepth + 0.5 * kChainDiameter;
+  const double height = kFairleadZ - rest;
+  const double fairlead = s.lines[0].endForceB.norm();
+  if (span + height < kLength) {
+    // Slack: vertical hanging part of length ~height, zero horizontal tension.
+    const double expected = w * height * (1.0 + w * height / (2.0 * kChainEA));
+    EXPECT_NEAR(fairlead, expected, 0.005 * expected);
+    EXPECT_LT(std::hypot(s.lines[0].endForceB.x(), s.lines[0].endForceB.y()), 0.005 * expected);
+  } else {
+    solver::CatenaryInput in;
+    in.span = span;
+    in.height = height;
+    in.length = kLength;
+    in.weight = w;
+    in.axialStiffness = kChainEA;
+    const solver::CatenarySolution exact = solver::solveAnchoredCatenary(in);
+    EXPECT_NEAR(fairlead, exact.fairleadTension, 0.005 * exact.fairleadTension);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SpansAndMeshes, CatenaryBattery,
+                         ::testing::Values(CatenaryCase{0.5, 10}, CatenaryCase{0.5, 200}, CatenaryCase{0.5, 1000},
+                                           CatenaryCase{0.6, 50}, CatenaryCase{0.7, 200}, CatenaryCase{0.78, 100},
+                                           CatenaryCase{0.8, 10}, CatenaryCase{0.8, 1000}, CatenaryCase{0.85, 50},
+                                           CatenaryCase{0.9, 200}, CatenaryCase{0.95, 1000}),
+                         [](const ::testing::TestParamInfo<CatenaryCase>& p) {
+                           return fmt::format("span{}pct_{}elements", static_cast<int>(100 * p.param.spanFraction + 0.5),
+                                              p.param.elements);
+                         });
+
+// ---------------------------------------------------------------------------------------------------
+// Cross currents on a line with a grounded part: friction holds the laid part.
+
+struct CurrentCase {
+  double speed;
+  double azimuth;
+};
+
+class CrossCurrentBattery : public ::testing::TestWithParam<CurrentCase> {};
+
+TEST_P(CrossCurrentBattery, ConvergesWithSeabedFriction) {
+  const auto [speed, azimuth] = GetParam();
+  const std::string current = fmt::format("  current: {{speed: {}, azimuth: {}}}", speed, azimuth);
+  Solved s = solveYaml(catenaryYaml(0.85 * kLength, 100, current, 0.5));
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  EXPECT_GT(s.lines[0].seabedNodes, 5);
+}
+
+INSTANTIATE_TEST_SUITE_P(SpeedsAndAzimuths, CrossCurrentBattery,
+                         ::testing::Values(CurrentCase{0.0, 0}, CurrentCase{0.7, 45}, CurrentCase{0.7, 90},
+                                           CurrentCase{1.0, 135}, CurrentCase{1.5, 0}, CurrentCase{1.5, 45},
+                                           CurrentCase{1.5, 90}, CurrentCase{1.5, 180}),
+                         [](const ::testing::TestParamInfo<CurrentCase>& p) {
+                           return fmt::format("speed{}cm_s_azimuth{}", static_cast<int>(100 * p.param.speed),
+                                              static_cast<int>(p.param.azimuth));
+                         });
+
+TEST(CrossCurrent, FrictionlessSeabedFailsWithTheCauseNamed) {
+  const std::string current = "  current: {speed: 1.0, azimuth: 90}";
+  Solved s = solveYaml(catenaryYaml(0.85 * kLength, 50, current, 0.0));
+  ASSERT_FALSE(s.result.converged);
+  EXPECT_NE(s.result.message.find("friction_coefficient"), std::string::npos) << s.result.message;
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Seabed friction in statics against the hand check q < mu w holds, q > mu w slides.
+
+/// A 100 m line laid on the seabed along x, free at both ends, under a current at azimuth 90 deg (across
+/// it). Normal drag per unit length q = 1/2 rho Cd D U^2 against friction mu w per unit length.
+std::string laidLineYaml(double speed, double mu) {
+  return fmt::format(R"(
+environment:
+  water_depth: 50
+  seabed: {{normal_stiffness: 1.0e6, friction_coefficient: {mu}}}
+  current: {{speed: {u}, azimuth: 90}}
+line_types:
+  - {{name: cable, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8, drag_normal: 1.2}}
+lines:
+  - name: laid
+    end_a: {{type: free, position: [0, 0, -49.95]}}
+    end_b: {{type: free, position: [100, 0, -49.95]}}
+    sections:
+      - {{type: cable, length: 100, elements: 20}}
+)",
+                     fmt::arg("mu", mu), fmt::arg("u", speed));
+}
+
+TEST(SeabedFrictionStatics, LaidLineHoldsBelowMuWAndSlidesAbove) {
+  const double mu = 0.3;
+  const double d = 0.1, rho = 1025.0;
+  const double w = (20.0 - rho * M_PI / 4.0 * d * d) * 9.80665;  // submerged weight [N/m]
+  // Current speed at which the drag equals the friction cap: 1/2 rho Cd D U^2 = mu w.
+  const double critical = std::sqrt(mu * w / (0.5 * rho * 1.2 * d));
+  {
+    Solved s = solveYaml(laidLineYaml(0.9 * critical, mu));
+    ASSERT_TRUE(s.result.converged) << s.result.message;
+    // Held by the friction springs (shear stiffness = normal stiffness 1e6 N/m/m): displacement q / k.
+    const double q = 0.5 * rho * 1.2 * d * std::pow(0.9 * critical, 2);
+    for (const Vec3& p : s.lines[0].position) EXPECT_NEAR(p.y(), q / 1.0e6, 0.05 * q / 1.0e6);
+  }
+  {
+    Solved s = solveYaml(laidLineYaml(1.1 * critical, mu));
+    EXPECT_FALSE(s.result.converged) << "a laid line under q = 1.21 mu w has no static equilibrium";
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Beams: the cantilever refined to 1000 elements, and axially stiff sections under large rotation.
+
+std::string cantileverYaml(double ea, double ei, int elements, double tipMass) {
+  return fmt::format(R"(
+environment:
+  water_depth: 100
+line_types:
+  - {{name: tube, outer_diameter: 0.2, mass_per_length: 1.0e-6, axial_stiffness: {ea}, bending_stiffness: {ei}}}
+lines:
+  - name: cantilever
+    contact: false
+    end_a: {{type: fixed, position: [0, 0, 50]}}
+    end_b: {{type: free, position: [10, 0, 50]}}
+    sections:
+      - {{type: tube, length: 10, elements: {n}}}
+    attachments:
+      - {{arc_length: 10, mass: {m}}}
+)",
+                     fmt::arg("ea", ea), fmt::arg("ei", ei), fmt::arg("n", elements), fmt::arg("m", tipMass));
+}
+
+struct BeamCase {
+  double slenderness;  // EA L_e^2 / EI per element
+  int elements;
+};
+
+class BeamBattery : public ::testing::TestWithParam<BeamCase> {};
+
+TEST_P(BeamBattery, ElasticaUnderLargeRotation) {
+  const auto [ratio, elements] = GetParam();
+  constexpr double kL = 10.0, kLoadParameter = 5.0;  // P L^2 / EI: tip rotation ~ 75 deg
+  const double le = kL / elements;
+  const double ea = 1.0e10;
+  const double ei = ea * le * le / ratio;
+  const double p = kLoadParameter * ei / (kL * kL);
+  Solved s = solveYaml(cantileverYaml(ea, ei, elements, p / 9.80665));
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  const auto [shortening, drop] = test::elastica(kLoadParameter);
+  const Vec3 tip = s.lines[0].position.back();
+  // Extension P / EA is below 1e-5 here, so the inextensible elastica applies.
+  EXPECT_NEAR(50.0 - tip.z(), drop * kL, 0.005 * kL);
+  EXPECT_NEAR(kL - tip.x(), shortening * kL, 0.005 * kL);
+}
+
+INSTANTIATE_TEST_SUITE_P(Slenderness, BeamBattery,
+                         ::testing::Values(BeamCase{1e2, 20}, BeamCase{1e4, 10}, BeamCase{1e5, 20}, BeamCase{1e6, 10},
+                                           BeamCase{1e7, 10}, BeamCase{1e3, 1000}),
+                         [](const ::testing::TestParamInfo<BeamCase>& p) {
+                           return fmt::format("ratio1e{}_{}elements", static_cast<int>(std::log10(p.param.slenderness) + 0.5),
+                                              p.param.elements);
+                         });
+
+// ---------------------------------------------------------------------------------------------------
+// A buoyant cable between two held ends floats up into an arch in tension.
+
+TEST(BuoyantCable, FloatsIntoAnArchInTension) {
+  Solved s = solveYaml(R"(
+environment:
+  water_depth: 200
+line_types:
+  - {name: cable, outer_diameter: 0.04984, mass_per_length: 1.0, axial_stiffness: 1.0e6}
+lines:
+  - name: cable
+    end_a: {type: pinned, position: [0, 0, -100]}
+    end_b: {type: pinned, position: [90, 0, -100]}
+    sections:
+      - {type: cable, length: 100, elements: 50}
+)");
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  EXPECT_TRUE(s.result.warnings.empty());
+  const auto& line = s.lines[0];
+  for (double t : line.tension) EXPECT_GT(t, 0.0);
+  EXPECT_GT(line.position[25].z(), -100.0 + 10.0);  // the mid point rises well above the ends
+  // Closed form: the suspended catenary of the mirrored problem (net buoyancy 1 kg/m up).
+  const double area = M_PI / 4.0 * 0.04984 * 0.04984;
+  const double lift = (1025.0 * area - 1.0) * 9.80665;
+  solver::CatenaryInput in;
+  in.span = 90.0;
+  in.height = 0.0;
+  in.length = 100.0;
+  in.weight = lift;
+  in.axialStiffness = 1.0e6;
+  const solver::CatenarySolution exact = solver::solveSuspendedCatenary(in);
+  EXPECT_NEAR(line.endForceB.norm(), exact.fairleadTension, 0.005 * exact.fairleadTension);
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Risers: a flexible riser whose plane is off the current, and two independent top-tensioned risers.
+
+TEST(FlexibleRiser, PlaneOffTheCurrent) {
+  for (double azimuth : {13.0, 45.0, 90.0}) {
+    Solved s = solveYaml(fmt::format(R"(
+environment:
+  water_depth: 500
+  current: {{speed: 1.0, azimuth: {}}}
+  seabed: {{normal_stiffness: 1.0e5, friction_coefficient: 0.5}}
+line_types:
+  - {{name: flex, outer_diameter: 0.4, mass_per_length: 250, axial_stiffness: 1.0e9, bending_stiffness: 1.0e5, drag_normal: 1.2}}
+lines:
+  - name: flex
+    end_a: {{type: anchored, position: [700, 0, -499.8]}}
+    end_b: {{type: pinned, position: [0, 0, -20]}}
+    sections:
+      - {{type: flex, length: 1000, elements: 200}}
+)",
+                                     azimuth));
+    ASSERT_TRUE(s.result.converged) << "azimuth " << azimuth << ": " << s.result.message;
+  }
+}
+
+TEST(TopTensionedRisers, TwoIndependentRisersOverARangeOfLengths) {
+  for (double length : {1005.0, 1008.0, 1010.0, 1012.0, 1014.0}) {
+    Solved s = solveYaml(fmt::format(R"(
+environment:
+  water_depth: 1000
+  current: {{speed: 0.5, azimuth: 0}}
+line_types:
+  - {{name: riser, outer_diameter: 0.3, mass_per_length: 150, axial_stiffness: 3.0e9, bending_stiffness: 3.0e7, drag_normal: 1.0}}
+lines:
+  - name: r1
+    end_a: {{type: pinned, position: [0, 0, -1000]}}
+    end_b: {{type: pinned, position: [0, 0, 15]}}
+    sections:
+      - {{type: riser, length: {L}, elements: 100}}
+  - name: r2
+    end_a: {{type: pinned, position: [20, 0, -1000]}}
+    end_b: {{type: pinned, position: [20, 0, 15]}}
+    sections:
+      - {{type: riser, length: {L}, elements: 100}}
+)",
+                                     fmt::arg("L", length)));
+    ASSERT_TRUE(s.result.converged) << "length " << length << ": " << s.result.message;
+    // Independent and identical: the same top tension.
+    EXPECT_NEAR(s.lines[0].endForceB.norm(), s.lines[1].endForceB.norm(), 1e-6 * s.lines[0].endForceB.norm());
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------
+// Convergence criteria.
+
+TEST(StaticsTolerance, BelowRoundOffIsAcceptedAtTheFloor) {
+  std::string yaml = catenaryYaml(0.85 * kLength, 200);
+  yaml += "statics:\n  tolerance: 1.0e-15\n";
+  Solved s = solveYaml(yaml);
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  EXPECT_TRUE(s.result.roundoffLimited);
+  EXPECT_NE(s.result.message.find("round-off"), std::string::npos);
+}
+
+TEST(StaticsTolerance, ForceScaleDoesNotShrinkWithTheMesh) {
+  Solved coarse = solveYaml(catenaryYaml(0.85 * kLength, 20));
+  Solved fine = solveYaml(catenaryYaml(0.85 * kLength, 1000));
+  ASSERT_TRUE(coarse.result.converged && fine.result.converged);
+  EXPECT_DOUBLE_EQ(coarse.result.tolerance, fine.result.tolerance);
+}
+
+}  // namespace
+}  // namespace tangle
