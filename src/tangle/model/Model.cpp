@@ -1,5 +1,7 @@
 #include "tangle/model/Model.hpp"
 
+#include "tangle/seabed/FlatSeabed.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
@@ -244,7 +246,13 @@ State Model::initialState() const {
       if (x.z() > -shapeDepth + 1e-6) continue;
       const model::LineElement& el = m_elements[line.firstElement + i];
       const double w = el.type->submergedWeight(env.waterDensity, env.gravity);
-      if (w > 0.0) x.z() -= w / env.seabed.normalStiffness;
+      if (w > 0.0) {
+        // Static penetration under the seabed law's smooth onset (FlatSeabed): N = k d^2 / (2 d_s) up to
+        // d_s, k (d - d_s / 2) beyond.
+        const double ds = seabed::FlatSeabed::kSmoothPenetration;
+        const double linear = w / env.seabed.normalStiffness;
+        x.z() -= linear >= 0.5 * ds ? linear + 0.5 * ds : std::sqrt(2.0 * linear * ds);
+      }
     }
 
     // Triads: first one from the initial tangent, then parallel transport along the line so that

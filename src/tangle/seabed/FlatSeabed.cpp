@@ -10,8 +10,17 @@ SeabedNodeReaction FlatSeabed::reaction(const Vec3& position, const Vec3& veloci
   r.penetration = -m_depth - (position.z() - radius);
   if (r.penetration <= 0.0) return r;
   const double k = m_spec.normalStiffness * tributaryLength;
-  double normal = k * r.penetration;
-  r.stiffness(2, 2) = k;
+  // C1 onset over the first kSmoothPenetration of penetration (quadratic, then linear and offset by half
+  // of it): a node touching down or lifting off changes the tangent continuously, so Newton does not
+  // cycle on the touchdown nodes of a finely meshed line.
+  double normal = 0.0;
+  if (r.penetration < kSmoothPenetration) {
+    normal = 0.5 * k * r.penetration * r.penetration / kSmoothPenetration;
+    r.stiffness(2, 2) = k * r.penetration / kSmoothPenetration;
+  } else {
+    normal = k * (r.penetration - 0.5 * kSmoothPenetration);
+    r.stiffness(2, 2) = k;
+  }
   if (dynamic && m_spec.damping > 0.0) {
     const double c = m_spec.damping * tributaryLength;
     const double damped = normal - c * velocity.z();

@@ -583,9 +583,13 @@ std::string StaticSolver::diagnose(const model::State& state, const StaticResult
   std::string hint;
   if (node >= 0 && model.lineOfNode(node) >= 0) {
     const bool onSeabed = state.position[node].z() - 0.5 * model.nodeContactDiameter()[node] <= -env.waterDepth + 1e-3;
-    if (onSeabed && env.seabed.frictionCoefficient <= 0.0 && !env.current.empty())
-      hint = "the node lies on a frictionless seabed with a current across the line, which has no static equilibrium: "
-             "set environment.seabed.friction_coefficient (0.3 to 1.0 is typical)";
+    if (onSeabed && !env.current.empty())
+      hint = env.seabed.frictionCoefficient <= 0.0
+                 ? "the node lies on a frictionless seabed in a current, which may have no static equilibrium: set "
+                   "environment.seabed.friction_coefficient (0.3 to 1.0 is typical)"
+                 : "the node lies on the seabed in a current: if the drag on the laid line exceeds its friction "
+                   "capacity mu w (environment.seabed.friction_coefficient) the line slides and has no static "
+                   "equilibrium";
   }
   if (hint.empty())
     hint = "check the line lengths against the distances between their ends and the section properties; a larger "
