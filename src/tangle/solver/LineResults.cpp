@@ -142,7 +142,10 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
         if (rb > ra) {
           const double sa = s.arcLength[a], sb = s.arcLength[b];
           const double estimate = sa - ra * (sb - sa) / (rb - ra);
-          td = std::clamp(estimate, std::min(s.arcLength[g], sa), std::max(s.arcLength[g], sa));
+          // The last grounded node may already be lifting (the penalty seabed lets it rest a hair
+          // above the contact level): the touchdown may lie up to one element before it.
+          const int before = std::clamp(g - dir, 0, n - 1);
+          td = std::clamp(estimate, std::min(s.arcLength[before], sa), std::max(s.arcLength[before], sa));
         }
       }
       s.touchdownArcLength = td;
