@@ -62,8 +62,9 @@ constexpr double kMaxWavePeriod = 100.0;        ///< T and Tp [s]
 constexpr int kMaxWaveComponents = 10000;       ///< JONSWAP components [-]
 constexpr double kMaxDuration = 1.0e6;          ///< dynamic duration [s]
 constexpr double kMaxMass = 1.0e10;             ///< vessel and attachment masses [kg]
-/// Most elements accepted in one model, and the memory each needs (measured: peak resident memory of
-/// `tangle run --statics-only` on a 20000-element cable model, divided by the element count).
+/// Most elements accepted in one model, and the memory each needs for the message: measured 3.4 kB per
+/// bar element (peak resident memory of `tangle run --statics-only` on a 20000-element cable model minus
+/// that of a 2-element one); 6 kB allows for beams (6 DOFs per node) and the dynamic state.
 constexpr long kMaxElements = 500000;
 constexpr double kBytesPerElement = 6.0e3;
 
