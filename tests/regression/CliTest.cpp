@@ -53,10 +53,53 @@ TEST(Cli, StaticRunWritesResults) {
   std::ifstream csv(out / "statics" / "mooring1.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header, "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m");
+  EXPECT_EQ(header,
+            "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,bending_moment_x_Nm,"
+            "bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,rotation_y_deg,rotation_z_deg");
   int rows = 0;
   for (std::string row; std::getline(csv, row);) ++rows;
   EXPECT_EQ(rows, 201);  // 200 elements
+}
+
+// Issue 13: a folder holds one run, described by itself (model copy, log, manifest with the version).
+TEST(Cli, OutputFolderIsSelfDescribingAndNeverMixesRuns) {
+  const fs::path out = fs::temp_directory_path() / "tangle_cli_folder";
+  fs::remove_all(out);
+  const std::string model = std::string(tangle::test::kExamplesDir) + "/catenary-mooring/model.yaml";
+  ASSERT_EQ(runCli("run " + model + " -o " + out.string() + " --no-plots -q").code, 0);
+  EXPECT_TRUE(fs::exists(out / "model.yaml"));
+  EXPECT_TRUE(fs::exists(out / "run.log"));
+  EXPECT_TRUE(fs::exists(out / "vtk" / "statics.pvd"));
+  std::ifstream manifest(out / "tangle-run.json");
+  std::stringstream text;
+  text << manifest.rdbuf();
+  EXPECT_NE(text.str().find("\"tangle_version\""), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("\"status\": \"completed"), std::string::npos) << text.str();
+  // A stale file of an earlier run: a second run into the folder is refused (exit 1) and leaves it...
+  std::ofstream(out / "statics" / "stale.csv") << "old\n";
+  const Outcome again = runCli("run " + model + " -o " + out.string() + " --no-plots -q");
+  EXPECT_EQ(again.code, 1) << again.output;
+  EXPECT_NE(again.output.find("--overwrite"), std::string::npos) << again.output;
+  // ... and --overwrite clears it first: nothing of the earlier run survives.
+  ASSERT_EQ(runCli("run " + model + " -o " + out.string() + " --no-plots -q --overwrite").code, 0);
+  EXPECT_FALSE(fs::exists(out / "statics" / "stale.csv"));
+  EXPECT_TRUE(fs::exists(out / "statics" / "mooring1.csv"));
+  // A folder tangle did not write is never cleared, even with --overwrite.
+  const fs::path foreign = fs::temp_directory_path() / "tangle_cli_foreign";
+  fs::remove_all(foreign);
+  fs::create_directories(foreign);
+  std::ofstream(foreign / "thesis.tex") << "precious\n";
+  EXPECT_EQ(runCli("run " + model + " -o " + foreign.string() + " --no-plots -q --overwrite").code, 1);
+  EXPECT_TRUE(fs::exists(foreign / "thesis.tex"));
+  fs::remove_all(foreign);
+}
+
+// Issue 13: a 2-byte model ',' made `check` loop forever; now it is refused at once (exit 1).
+TEST(Cli, StrayCommaModelIsRefusedQuickly) {
+  const fs::path bad = fs::temp_directory_path() / "tangle_cli_comma.yaml";
+  std::ofstream(bad) << ",\n";
+  const Outcome o = runCli("check " + bad.string());
+  EXPECT_EQ(o.code, 1) << o.output;
 }
 
 TEST(Cli, BadInputExitsWithOneAndNamesFileLineAndKey) {

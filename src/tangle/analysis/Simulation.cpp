@@ -47,10 +47,12 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   return solver::computeLineResults(*m_model, *m_assembler, m_state, force);
 }
 
-time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress) {
+time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress,
+                                            const time::DynamicAnalysis::StepObserver& stepObserver) {
   time::DynamicAnalysis dynamics(*m_assembler, m_model->spec().dynamics);
   dynamics.setProgress(progress);
   dynamics.setObserver(observer);
+  if (stepObserver) dynamics.setStepObserver(stepObserver);
   if (m_vessels) dynamics.addPrescribed(m_vessels->prescribedNodes());
   if (m_contact) {
     dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });

@@ -39,8 +39,9 @@ class Simulation {
   /// Results along every line at the current state.
   std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
   /// Runs the dynamic analysis from the current state (the static equilibrium); `observer` gets every
-  /// output time. `progress` prints a progress line on stderr.
-  time::DynamicResult runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress = false);
+  /// output time, `stepObserver` (optional) every accepted step. `progress` prints a progress line on stderr.
+  time::DynamicResult runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress = false,
+                                  const time::DynamicAnalysis::StepObserver& stepObserver = {});
 
  private:
   std::unique_ptr<model::Model> m_model;

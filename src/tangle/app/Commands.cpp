@@ -16,7 +16,12 @@
 #include "tangle/io/DynamicRecorder.hpp"
 #include "tangle/io/JsonWriter.hpp"
 #include "tangle/io/ModelReader.hpp"
+#include "tangle/io/OutputFile.hpp"
+#include "tangle/io/OutputFolder.hpp"
 #include "tangle/io/ResultWriter.hpp"
+#include "tangle/io/VtkWriter.hpp"
+#include "tangle/app/RunLog.hpp"
+#include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle::app {
 
@@ -35,17 +40,66 @@ const char* endKindName(model::EndKind k) {
   return "?";
 }
 
-void printSummary(const model::Model& m) {
+const char* waveStretchingName(model::WaveStretching s) {
+  switch (s) {
+    case model::WaveStretching::None: return "none";
+    case model::WaveStretching::Wheeler: return "wheeler";
+    case model::WaveStretching::Extrapolation: return "vertical_extrapolation";
+  }
+  return "?";
+}
+
+const char* vesselModeName(model::VesselMode mode) {
+  switch (mode) {
+    case model::VesselMode::Fixed: return "fixed";
+    case model::VesselMode::Prescribed: return "prescribed";
+    case model::VesselMode::Free: return "free";
+  }
+  return "?";
+}
+
+/// The model summary of `check` and `run`: environment, waves, current, vessels, lines, contact.
+std::string modelSummary(const model::Model& m) {
+  std::string out;
   const auto& env = m.environment();
-  fmt::print("model: {}\n", m.spec().sourceFile);
-  if (!m.spec().title.empty()) fmt::print("title: {}\n", m.spec().title);
-  fmt::print("environment: water depth {:.1f} m, water density {:.1f} kg/m3, gravity {:.5f} m/s2\n", env.waterDepth,
-             env.waterDensity, env.gravity);
+  const model::ModelSpec& spec = m.spec();
+  out += fmt::format("model: {}\n", spec.sourceFile);
+  if (!spec.title.empty()) out += fmt::format("title: {}\n", spec.title);
+  out += fmt::format("environment: water depth {:.1f} m, water density {:.1f} kg/m3, gravity {:.5f} m/s2\n",
+                     env.waterDepth, env.waterDensity, env.gravity);
+  const model::WaveSpec& w = env.waves;
+  switch (w.kind) {
+    case model::WaveKind::None: out += "waves: none\n"; break;
+    case model::WaveKind::Airy:
+      out += fmt::format("waves: regular (Airy), H = {:.2f} m, T = {:.2f} s, towards {:.1f} deg, stretching {}\n",
+                         w.height, w.period, radToDeg(w.azimuth), waveStretchingName(w.stretching));
+      break;
+    case model::WaveKind::Jonswap:
+      out += fmt::format("waves: JONSWAP, Hs = {:.2f} m, Tp = {:.2f} s, gamma {:.2f}, {} components (seed {}), "
+                         "towards {:.1f} deg, stretching {}\n",
+                         w.significantHeight, w.peakPeriod, w.gamma, w.components, w.seed, radToDeg(w.azimuth),
+                         waveStretchingName(w.stretching));
+      break;
+  }
+  if (env.current.empty()) {
+    out += "current: none\n";
+  } else {
+    out += fmt::format("current: {} level(s):", env.current.size());
+    for (const model::CurrentLevel& c : env.current)
+      out += fmt::format(" z = {:.1f} m: {:.2f} m/s towards {:.1f} deg;", c.z, c.speed, radToDeg(c.azimuth));
+    out.back() = '\n';
+  }
+  if (env.windSpeed > 0.0)
+    out += fmt::format("wind: {:.2f} m/s towards {:.1f} deg\n", env.windSpeed, radToDeg(env.windAzimuth));
+  for (const model::VesselSpec& v : spec.vessels)
+    out += fmt::format("  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg, mass {:.1f} t{}\n",
+                       v.name, vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
+                       radToDeg(v.heading), v.mass / 1000.0, v.heldInStatics ? ", held in statics" : "");
   int beams = 0;
   for (const auto& el : m.elements()) beams += el.isBeam() ? 1 : 0;
-  fmt::print("{} line(s), {} elements ({} beam, {} bar), {} nodes, {} DOFs ({} free)\n", m.lines().size(),
-             m.elements().size(), beams, static_cast<int>(m.elements().size()) - beams, m.nodeCount(),
-             m.dofs().fullDofCount(), m.dofs().equationCount());
+  out += fmt::format("{} line(s), {} elements ({} beam, {} bar), {} nodes, {} DOFs ({} free)\n", m.lines().size(),
+                     m.elements().size(), beams, static_cast<int>(m.elements().size()) - beams, m.nodeCount(),
+                     m.dofs().fullDofCount(), m.dofs().equationCount());
   for (int i = 0; i < static_cast<int>(m.lines().size()); ++i) {
     const model::Line& line = m.lines()[i];
     double weight = 0.0;
@@ -53,21 +107,75 @@ void printSummary(const model::Model& m) {
       const auto& el = m.elements()[line.firstElement + e];
       weight += el.type->submergedWeight(env.waterDensity, env.gravity) * el.restLength;
     }
-    fmt::print("  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t, submerged weight {:.1f} kN, "
-               "end A {}, end B {}\n",
-               line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
-               weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
+    out += fmt::format("  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t, submerged weight "
+                       "{:.1f} kN, end A {}, end B {}\n",
+                       line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
+                       weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
   }
-  const auto& d = m.spec().dynamics;
+  if (!spec.contact.enabled) {
+    out += "contact: off\n";
+  } else if (spec.contact.pairs.empty()) {
+    out += fmt::format("contact: every pair of lines{}, restitution {:.2f}\n",
+                       spec.contact.selfContact ? " and each line with itself" : "", spec.contact.restitution);
+  } else {
+    out += fmt::format("contact: {} pair(s):", spec.contact.pairs.size());
+    for (const auto& [a, b] : spec.contact.pairs) out += fmt::format(" {}-{};", a, b);
+    out.back() = '\n';
+  }
+  const auto& d = spec.dynamics;
   if (d.enabled)
-    fmt::print("dynamics: {:.2f} s at dt = {:.4g} s, output every {:.4g} s\n", d.duration, d.timeStep,
-               d.outputInterval);
+    out += fmt::format("dynamics: {:.2f} s at dt = {:.4g} s, output every {:.4g} s\n", d.duration, d.timeStep,
+                       d.outputInterval);
+  return out;
+}
+
+/// Plausibility warnings of the reader, one per line.
+std::string warningText(const model::ModelSpec& spec) {
+  std::string out;
+  for (const std::string& w : spec.warnings) out += "warning: " + w + "\n";
+  return out;
+}
+
+/// Largest axial strain T / EA along each line [-] above `limit`: a line much shorter than its span
+/// converges to a strain no real line survives, silently.
+std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines, double limit) {
+  std::string out;
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const model::Line& line = m.lines()[l];
+    double worst = 0.0, where = 0.0;
+    for (int e = 0; e < line.elementCount; ++e) {
+      const auto& el = m.elements()[line.firstElement + e];
+      const double t = 0.5 * (lines[l].tension[e] + lines[l].tension[e + 1]);
+      const double strain = t / el.type->axialStiffness;
+      if (strain > worst) {
+        worst = strain;
+        where = 0.5 * (line.arcLength[e] + line.arcLength[e + 1]);
+      }
+    }
+    if (worst > limit)
+      out += fmt::format("warning: line '{}': axial strain {:.2f} % at {:.1f} m from end A (above {:.0f} %): check "
+                         "the line length against the distance between its ends, and axial_stiffness\n",
+                         line.name, 100.0 * worst, where, 100.0 * limit);
+  }
+  return out;
+}
+
+/// Tensioner strokes and stop forces, one line each.
+std::string tensionerText(const model::Model& m, const std::vector<vessel::VesselSystem::TensionerReading>& readings) {
+  std::string out;
+  for (const auto& r : readings) {
+    const bool onStop = std::abs(r.stroke) > r.halfStroke;
+    out += fmt::format("  tensioner of line '{}' end {}: stroke {:+.3f} m of +-{:.3f} m, force {:.1f} kN{}\n",
+                       m.lines()[r.line].name, r.end == 0 ? 'A' : 'B', r.stroke, r.halfStroke, r.force / 1000.0,
+                       onStop ? fmt::format(", ON ITS END STOP (stop force {:.1f} kN)", r.stopForce / 1000.0) : "");
+  }
+  return out;
 }
 
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
-                         const std::vector<solver::LineSnapshot>& lines) {
-  std::ofstream out(dir / "dynamics" / "summary.json");
-  io::JsonWriter j(out);
+                         const std::vector<solver::LineSnapshot>& lines, double maxStopForce) {
+  io::OutputFile out(dir / "dynamics" / "summary.json");
+  io::JsonWriter j(out.stream());
   j.beginObject();
   j.field("completed", r.completed);
   j.field("end_time_s", r.endTime);
@@ -77,78 +185,82 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
   j.field("wall_time_s", r.wallSeconds);
   j.field("real_time_factor", r.endTime / std::max(r.wallSeconds, 1e-9));
   j.field("message", r.message);
+  j.field("extremes_over", "every accepted time step");
+  j.field("max_tensioner_stop_force_N", maxStopForce);
   j.key("lines");
   j.beginArray();
+  const std::vector<std::string> stems = io::lineFileStems(lines);
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const auto& range = rec.ranges()[l];
     j.beginObject();
     j.field("name", lines[l].name);
+    j.field("file_stem", stems[l]);
     j.field("max_tension_N", *std::max_element(range.tensionMax.begin(), range.tensionMax.end()));
     j.field("min_tension_N", *std::min_element(range.tensionMin.begin(), range.tensionMin.end()));
     j.field("max_bending_moment_Nm", *std::max_element(range.momentMax.begin(), range.momentMax.end()));
+    j.field("end_a_max_tension_N", range.endTensionMaxA);
+    j.field("end_a_min_tension_N", range.endTensionMinA);
+    j.field("end_b_max_tension_N", range.endTensionMaxB);
+    j.field("end_b_min_tension_N", range.endTensionMinB);
     j.endObject();
   }
   j.endArray();
   j.endObject();
+  out.close();
 }
 
-void makePlots(const fs::path& outDir, bool quiet) {
+void makePlots(const fs::path& outDir, RunLog& log) {
   const fs::path script = fs::path(TANGLE_PYTHON_DIR) / "tangle_plot.py";
   if (!fs::exists("/usr/bin/python3") || !fs::exists(script)) {
-    if (!quiet) fmt::print("plots skipped: /usr/bin/python3 or {} not found\n", script.string());
+    log.info(fmt::format("plots skipped: /usr/bin/python3 or {} not found\n", script.string()));
     return;
   }
   const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' > '{}' 2>&1", script.string(), outDir.string(),
                                       (outDir / "plots.log").string());
   if (std::system(cmd.c_str()) != 0) {
-    std::cerr << fmt::format("warning: plotting failed, see {}\n", (outDir / "plots.log").string());
-  } else if (!quiet) {
-    fmt::print("plots written to {}\n", (outDir / "plots").string());
+    log.error(fmt::format("warning: plotting failed, see {}\n", (outDir / "plots.log").string()));
+  } else {
+    log.info(fmt::format("plots written to {}\n", (outDir / "plots").string()));
   }
 }
 
-}  // namespace
+/// Strain above which a warning is given [-]: steel and chain yield near 0.2-0.5 %, polyester and nylon
+/// ropes break at 10-20 %: 5 % flags input mistakes without flagging fibre ropes in normal use.
+constexpr double kStrainWarning = 0.05;
 
-int runCheck(const CheckOptions& options) {
-  model::Model m(io::readModelFile(options.modelPath));
-  printSummary(m);
-  fmt::print("model is valid\n");
-  return 0;
-}
-
-int runAnalysis(const RunOptions& options) {
+/// The run itself; runAnalysis wraps it to record failures in the folder's manifest and log.
+int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::OutputFolder& folder, RunLog& log) {
   const auto start = std::chrono::steady_clock::now();
-  analysis::Simulation sim(io::readModelFile(options.modelPath));
   const model::Model& m = sim.model();
-  fs::path outDir = options.outputDir;
-  if (outDir.empty()) {
-    const fs::path p(options.modelPath);
-    outDir = p.parent_path() / (p.stem().string() + "_results");
-  }
-  fs::create_directories(outDir);
-  if (!options.quiet) printSummary(m);
+  const fs::path outDir = folder.path();
+  log.info(modelSummary(m));
+  log.error(warningText(m.spec()));
 
   const solver::StaticResult result = sim.solveStatics();
   for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
   const auto lines = sim.snapshot();
   io::writeStaticSummary(outDir, m, result, lines);
   if (!result.converged) {
-    std::cerr << "error: " << result.message << "\n";
-    std::cerr << fmt::format("no static results were written; the solver status is in {}\n",
-                             (outDir / "summary.json").string());
+    log.error("error: " + result.message + "\n");
+    log.error(fmt::format("no static results were written; the solver status is in {}\n",
+                          (outDir / "summary.json").string()));
+    folder.setStatus("failed: statics did not converge");
     return 2;
   }
   io::writeStaticLineTables(outDir, lines);
-  if (!options.quiet) {
-    fmt::print("{}\n", result.message);
-    for (const auto& s : lines) {
-      fmt::print("  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m",
-                 s.name, s.tension.front() / 1000.0, s.tension.back() / 1000.0,
-                 *std::max_element(s.bendingMoment.begin(), s.bendingMoment.end()) / 1000.0);
-      if (s.touchdownArcLength >= 0.0) fmt::print(", touchdown at {:.1f} m from end A", s.touchdownArcLength);
-      fmt::print("\n");
-    }
+  if (m.spec().output.vtk) io::PvdSeries(outDir / "vtk" / "statics.pvd").addStep(0.0, io::toPolylines(lines));
+  log.info(result.message + "\n");
+  for (const auto& s : lines) {
+    std::string text = fmt::format(
+        "  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m", s.name,
+        s.endTensionA / 1000.0, s.endTensionB / 1000.0,
+        *std::max_element(s.bendingMoment.begin(), s.bendingMoment.end()) / 1000.0);
+    if (s.touchdownArcLength >= 0.0) text += fmt::format(", touchdown at {:.1f} m from end A", s.touchdownArcLength);
+    log.info(text + "\n");
   }
+  const vessel::VesselSystem* vessels = sim.vessels();
+  if (vessels) log.info(tensionerText(m, vessels->tensionerReadings(sim.state(), 0.0)));
+  log.error(strainWarnings(m, lines, kStrainWarning));
 
   int code = 0;
   if (m.spec().dynamics.enabled && !options.staticsOnly) {
@@ -157,49 +269,123 @@ int runAnalysis(const RunOptions& options) {
     if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact());
     // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
     // vector relative to the initial heading) against time.
-    std::ofstream vesselFile;
+    std::unique_ptr<io::OutputFile> vesselFile;
+    const std::vector<std::string> vesselStems = [&] {
+      std::vector<std::string> names;
+      for (const auto& v : m.vessels()) names.push_back(v.name);
+      return io::uniqueFileStems(names);
+    }();
     if (!m.vessels().empty()) {
-      vesselFile.open(outDir / "dynamics" / "vessels.csv");
-      vesselFile << "time_s";
-      for (const auto& v : m.vessels())
-        vesselFile << fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", v.name);
-      vesselFile << "\n";
+      vesselFile = std::make_unique<io::OutputFile>(outDir / "dynamics" / "vessels.csv");
+      std::string header = "time_s";
+      for (const std::string& v : vesselStems)
+        header += fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", v);
+      vesselFile->write(header + "\n");
+    }
+    // Tensioners: stroke and stop force against time.
+    std::unique_ptr<io::OutputFile> tensionerFile;
+    double maxStopForce = 0.0;
+    if (vessels && !vessels->tensionerReadings(sim.state(), 0.0).empty()) {
+      tensionerFile = std::make_unique<io::OutputFile>(outDir / "dynamics" / "tensioners.csv");
+      std::string header = "time_s";
+      const std::vector<std::string> stems = io::lineFileStems(lines);
+      for (const auto& r : vessels->tensionerReadings(sim.state(), 0.0))
+        header += fmt::format(",{0}_end_{1}_stroke_m,{0}_end_{1}_force_N,{0}_end_{1}_stop_force_N", stems[r.line],
+                              r.end == 0 ? 'a' : 'b');
+      tensionerFile->write(header + "\n");
     }
     const time::DynamicResult dyn = sim.runDynamics(
         [&](const model::State& s, const VecX&) {
           recorder.record(s.time, sim.snapshot(true));
           if (clash) clash->recordClearance(s);
-          if (vesselFile.is_open()) {
-            vesselFile << fmt::format("{:.4f}", s.time);
+          if (vesselFile) {
+            std::string row = fmt::format("{:.4f}", s.time);
             for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
               const int node = m.vesselNode(v);
               const Vec3 r = geometry::logMap(s.triad[node] * m.vesselRotation(v).transpose()) * 180.0 / kPi;
-              vesselFile << fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", s.position[node].x(),
-                                        s.position[node].y(), s.position[node].z(), r.x(), r.y(), r.z());
+              row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", s.position[node].x(),
+                                 s.position[node].y(), s.position[node].z(), r.x(), r.y(), r.z());
             }
-            vesselFile << "\n";
-            vesselFile.flush();
+            vesselFile->write(row + "\n");
+            vesselFile->flush();
           }
         },
-        !options.quiet);
+        !options.quiet,
+        [&](const model::State& s, double dt) {
+          recorder.accumulate(sim.snapshot(true), dt);
+          if (tensionerFile) {
+            // Every step: a tensioner touching its stop between two output times must show.
+            const auto readings = vessels->tensionerReadings(s, s.time);
+            for (const auto& r : readings) maxStopForce = std::max(maxStopForce, std::abs(r.stopForce));
+            std::string row = fmt::format("{:.6f}", s.time);
+            for (const auto& r : readings) row += fmt::format(",{:.6f},{:.6e},{:.6e}", r.stroke, r.force, r.stopForce);
+            tensionerFile->write(row + "\n");
+          }
+        });
     recorder.writeRanges();
+    recorder.close();
+    if (vesselFile) vesselFile->close();
+    if (tensionerFile) tensionerFile->close();
     if (clash) {
       clash->write(outDir);
-      if (!options.quiet) fmt::print("{}", clash->terminalSummary());
+      log.info(clash->terminalSummary());
     }
-    writeDynamicSummary(outDir, dyn, recorder, lines);
+    writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce);
+    if (maxStopForce > 0.0)
+      log.error(fmt::format("warning: a tensioner reached its end stop during the dynamics (largest stop force "
+                            "{:.1f} kN, see dynamics/tensioners.csv)\n",
+                            maxStopForce / 1000.0));
     if (!dyn.completed) {
-      std::cerr << "error: " << dyn.message << "\n";
-      std::cerr << fmt::format("results up to t = {:.4g} s are in {}\n", dyn.endTime, outDir.string());
+      log.error("error: " + dyn.message + "\n");
+      log.error(fmt::format("results up to t = {:.4g} s are in {}\n", dyn.endTime, outDir.string()));
+      folder.setStatus(fmt::format("failed: dynamics stopped at t = {:.6g} s", dyn.endTime));
       code = 2;
-    } else if (!options.quiet) {
-      fmt::print("{}\n", dyn.message);
+    } else {
+      log.info(dyn.message + "\n");
     }
   }
-  if (m.spec().output.plots && !options.noPlots) makePlots(outDir, options.quiet);
+  if (m.spec().output.plots && !options.noPlots) makePlots(outDir, log);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!options.quiet) fmt::print("results written to {} ({:.2f} s)\n", outDir.string(), seconds);
+  if (code == 0) folder.setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
+                                                                                      : "completed");
+  log.info(fmt::format("results written to {} ({:.2f} s)\n", outDir.string(), seconds));
   return code;
+}
+
+}  // namespace
+
+int runCheck(const CheckOptions& options) {
+  model::Model m(io::readModelFile(options.modelPath));
+  fmt::print("{}", modelSummary(m));
+  std::cerr << warningText(m.spec());
+  fmt::print("model is valid{}\n", m.spec().warnings.empty() ? "" : fmt::format(" ({} warning(s))", m.spec().warnings.size()));
+  return 0;
+}
+
+int runAnalysis(const RunOptions& options) {
+  analysis::Simulation sim(io::readModelFile(options.modelPath));
+  fs::path outDir = options.outputDir;
+  if (outDir.empty()) {
+    const fs::path p(options.modelPath);
+    outDir = p.parent_path() / (p.stem().string() + "_results");
+  }
+  io::OutputFolder folder(outDir, options.modelPath, options.overwrite);
+  RunLog log(options.quiet);
+  log.open(outDir / "run.log");
+  log.info(fmt::format("tangle {}\n", TANGLE_VERSION));
+  try {
+    const int code = runInFolder(options, sim, folder, log);
+    log.close();
+    return code;
+  } catch (const std::exception& e) {
+    // Record the failure in the folder, then let main report it with its exit code.
+    try {
+      log.logOnly(fmt::format("error: {}\n", e.what()));
+      folder.setStatus(std::string("failed: ") + e.what());
+    } catch (const std::exception&) {  // NOLINT(bugprone-empty-catch): the disk may be what failed
+    }
+    throw;
+  }
 }
 
 }  // namespace tangle::app

@@ -18,6 +18,7 @@ struct RunOptions {
   bool staticsOnly = false;
   bool noPlots = false;
   bool quiet = false;
+  bool overwrite = false;  ///< clear an output folder of an earlier tangle run instead of refusing it
 };
 
 /// Validates a model and prints a summary (lines, elements, DOFs, masses, lengths).

@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   run->add_flag("--statics-only", runOptions.staticsOnly, "Stop after the static analysis");
   run->add_flag("--no-plots", runOptions.noPlots, "Do not write PNG plots");
   run->add_flag("-q,--quiet", runOptions.quiet, "Print only errors");
+  run->add_flag("--overwrite", runOptions.overwrite,
+                "Replace the results of an earlier run in the output folder (refused without it)");
 
   try {
     app.parse(argc, argv);

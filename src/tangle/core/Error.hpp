@@ -44,4 +44,10 @@ class ConvergenceError : public Error {
   explicit ConvergenceError(const std::string& message) : Error(message) {}
 };
 
+/// A result file could not be written (disk full, permissions, ...): names the file. Exit code 3.
+class OutputError : public Error {
+ public:
+  explicit OutputError(const std::string& message) : Error(message) {}
+};
+
 }  // namespace tangle

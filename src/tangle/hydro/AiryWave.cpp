@@ -77,6 +77,7 @@ double stretchedLevel(double z, double eta, double depth, Stretching stretching)
       return std::clamp(depth * (zc - eta) / wetHeight, -depth, 0.0);
     }
     case Stretching::Vertical:
+    case Stretching::None:
       return std::min(zc, 0.0);
   }
   return std::min(zc, 0.0);
@@ -122,7 +123,7 @@ FluidKinematics AiryWave::kinematics(const Vec3& p, double t) const {
   const double amplitude = 0.5 * m_height;
   const double eta = amplitude * c;
   FluidKinematics result;
-  if (p.z() > eta) return result;  // dry point: no fluid
+  if (!wetForKinematics(p.z(), eta, m_stretching)) return result;  // dry point: no fluid
 
   const double zPrime = stretchedLevel(p.z(), eta, m_depth, m_stretching);
   const DepthAttenuation att = depthAttenuation(m_k, zPrime, m_depth);

@@ -7,13 +7,25 @@
 
 namespace tangle::hydro {
 
+namespace {
+Stretching stretchingOf(model::WaveStretching s) {
+  switch (s) {
+    case model::WaveStretching::None: return Stretching::None;
+    case model::WaveStretching::Extrapolation: return Stretching::Vertical;
+    case model::WaveStretching::Wheeler: break;
+  }
+  return Stretching::Wheeler;
+}
+}  // namespace
+
 std::unique_ptr<WaveField> makeWaveField(const model::EnvironmentSpec& env) {
   const model::WaveSpec& w = env.waves;
   switch (w.kind) {
     case model::WaveKind::None:
       return nullptr;
     case model::WaveKind::Airy:
-      return std::make_unique<AiryWave>(w.height, w.period, w.azimuth, env.waterDepth, env.gravity, w.phase);
+      return std::make_unique<AiryWave>(w.height, w.period, w.azimuth, env.waterDepth, env.gravity, w.phase,
+                                        stretchingOf(w.stretching));
     case model::WaveKind::Jonswap: {
       JonswapSea::Parameters p;
       p.significantHeight = w.significantHeight;
@@ -24,6 +36,7 @@ std::unique_ptr<WaveField> makeWaveField(const model::EnvironmentSpec& env) {
       p.gravity = env.gravity;
       p.componentCount = w.components;
       p.seed = w.seed;
+      p.stretching = stretchingOf(w.stretching);
       return std::make_unique<JonswapSea>(p);
     }
   }

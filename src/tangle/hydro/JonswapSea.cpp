@@ -149,7 +149,7 @@ FluidKinematics JonswapSea::kinematics(const Vec3& p, double t) const {
     eta += m_amplitude[i] * c;
   }
   FluidKinematics result;
-  if (p.z() > eta) return result;  // dry point
+  if (!wetForKinematics(p.z(), eta, m_parameters.stretching)) return result;  // dry point
 
   // Pass 2: component kinematics at the stretched level (depthAttenuation in exponential form).
   const double zPrime = stretchedLevel(p.z(), eta, depth, m_parameters.stretching);

@@ -24,7 +24,16 @@ enum class Stretching {
   /// "Vertical" stretching (constant extrapolation): below z = 0 the linear profile is evaluated at z,
   /// between z = 0 and a crest eta > 0 it keeps its z = 0 value.
   Vertical,
+  /// No stretching: linear theory as derived, valid up to z = 0 only. Below min(0, eta) the linear
+  /// profile at z; above z = 0 (under a crest) no fluid kinematics.
+  None,
 };
+
+/// True when a point at level z is wet for the kinematics of a surface at eta under `stretching`
+/// (z <= eta, and z <= 0 without stretching).
+inline bool wetForKinematics(double z, double eta, Stretching stretching) {
+  return z <= eta && (stretching != Stretching::None || z <= 0.0);
+}
 
 /// A wave field. Implementations are immutable after construction and thread-safe (const methods only).
 /// Positions are global [m] (z up, z = 0 at still water level, seabed at z = -depth), time t [s].

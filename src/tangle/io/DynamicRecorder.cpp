@@ -13,8 +13,9 @@ namespace fs = std::filesystem;
 
 namespace {
 const char* const kQuantities[] = {"x_m", "y_m", "z_m", "effective_tension_N", "bending_moment_Nm",
-                                   "curvature_1_per_m"};
-constexpr int kQuantityCount = 6;
+                                   "curvature_1_per_m", "bending_moment_x_Nm", "bending_moment_y_Nm",
+                                   "bending_moment_z_Nm", "torque_Nm"};
+constexpr int kQuantityCount = 10;
 
 double quantity(const solver::LineSnapshot& s, int q, std::size_t i) {
   switch (q) {
@@ -23,7 +24,11 @@ double quantity(const solver::LineSnapshot& s, int q, std::size_t i) {
     case 2: return s.position[i].z();
     case 3: return s.tension[i];
     case 4: return s.bendingMoment[i];
-    default: return s.curvature[i];
+    case 5: return s.curvature[i];
+    case 6: return s.bendingMomentVector[i].x();
+    case 7: return s.bendingMomentVector[i].y();
+    case 8: return s.bendingMomentVector[i].z();
+    default: return s.torque[i];
   }
 }
 }  // namespace
@@ -37,6 +42,7 @@ std::vector<VtkPolyline> toPolylines(const std::vector<solver::LineSnapshot>& li
     p.pointScalars = {{"arc_length_m", s.arcLength},
                       {"effective_tension_N", s.tension},
                       {"bending_moment_Nm", s.bendingMoment},
+                      {"torque_Nm", s.torque},
                       {"curvature_1_per_m", s.curvature}};
     out.push_back(std::move(p));
   }
@@ -45,66 +51,59 @@ std::vector<VtkPolyline> toPolylines(const std::vector<solver::LineSnapshot>& li
 
 DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::LineSnapshot>& initial,
                                  double vtkInterval)
-    : m_dir(dir), m_vtkInterval(vtkInterval) {
+    : m_dir(dir), m_stems(lineFileStems(initial)), m_vtkInterval(vtkInterval) {
   const fs::path dyn = dir / "dynamics";
   fs::create_directories(dyn);
-  m_endForces = std::make_unique<std::ofstream>(dyn / "end_forces.csv");
-  if (!*m_endForces) throw Error("cannot write " + (dyn / "end_forces.csv").string());
-  *m_endForces << "time_s";
-  for (const solver::LineSnapshot& s : initial) {
-    m_names.push_back(s.name);
+  m_endForces = std::make_unique<OutputFile>(dyn / "end_forces.csv");
+  std::string header = "time_s";
+  for (std::size_t l = 0; l < initial.size(); ++l) {
+    const solver::LineSnapshot& s = initial[l];
     m_arc.push_back(s.arcLength);
-    const fs::path ld = dyn / safeFileName(s.name);
+    const fs::path ld = dyn / m_stems[l];
     fs::create_directories(ld);
-    std::vector<std::unique_ptr<std::ofstream>> streams;
+    std::vector<std::unique_ptr<OutputFile>> streams;
     for (int q = 0; q < kQuantityCount; ++q) {
-      auto f = std::make_unique<std::ofstream>(ld / (std::string(kQuantities[q]) + ".csv"));
-      if (!*f) throw Error("cannot write in " + ld.string());
-      *f << "time_s";
-      for (double a : s.arcLength) *f << fmt::format(",s={:.3f}m", a);
-      *f << "\n";
+      auto f = std::make_unique<OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));
+      std::string row = "time_s";
+      for (double a : s.arcLength) row += fmt::format(",s={:.3f}m", a);
+      f->write(row + "\n");
       streams.push_back(std::move(f));
     }
     m_streams.push_back(std::move(streams));
-    *m_endForces << fmt::format(",{0}_end_a_tension_N,{0}_end_b_tension_N", s.name);
+    for (const char* end : {"end_a", "end_b"})
+      header += fmt::format(",{0}_{1}_tension_N,{0}_{1}_fx_N,{0}_{1}_fy_N,{0}_{1}_fz_N", m_stems[l], end);
     const std::size_t n = s.arcLength.size();
     const double inf = std::numeric_limits<double>::infinity();
-    m_ranges.push_back({std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
-                        std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
-                        std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0)});
+    Range r{std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
+            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
+            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0)};
+    r.endTensionMaxA = r.endTensionMaxB = -inf;
+    r.endTensionMinA = r.endTensionMinB = inf;
+    m_ranges.push_back(std::move(r));
   }
-  *m_endForces << "\n";
+  m_endForces->write(header + "\n");
   if (m_vtkInterval > 0.0) m_vtk = std::make_unique<PvdSeries>(dir / "vtk" / "lines.pvd");
 }
 
 DynamicRecorder::~DynamicRecorder() = default;
 
 void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot>& lines) {
-  *m_endForces << fmt::format("{:.6f}", time);
+  std::string forces = fmt::format("{:.6f}", time);
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
     for (int q = 0; q < kQuantityCount; ++q) {
-      std::ofstream& f = *m_streams[l][q];
-      f << fmt::format("{:.6f}", time);
-      for (std::size_t i = 0; i < s.arcLength.size(); ++i) f << fmt::format(",{:.6e}", quantity(s, q, i));
-      f << "\n";
-      f.flush();
+      std::string row = fmt::format("{:.6f}", time);
+      for (std::size_t i = 0; i < s.arcLength.size(); ++i) row += fmt::format(",{:.6e}", quantity(s, q, i));
+      m_streams[l][q]->write(row + "\n");
+      m_streams[l][q]->flush();
     }
-    Range& r = m_ranges[l];
-    for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
-      r.tensionMin[i] = std::min(r.tensionMin[i], s.tension[i]);
-      r.tensionMax[i] = std::max(r.tensionMax[i], s.tension[i]);
-      r.tensionSum[i] += s.tension[i];
-      r.momentMin[i] = std::min(r.momentMin[i], s.bendingMoment[i]);
-      r.momentMax[i] = std::max(r.momentMax[i], s.bendingMoment[i]);
-      r.momentSum[i] += s.bendingMoment[i];
-      r.curvatureMin[i] = std::min(r.curvatureMin[i], s.curvature[i]);
-      r.curvatureMax[i] = std::max(r.curvatureMax[i], s.curvature[i]);
-      r.curvatureSum[i] += s.curvature[i];
+    for (int end = 0; end < 2; ++end) {
+      const Vec3& f = end == 0 ? s.endTensionForceA : s.endTensionForceB;
+      forces += fmt::format(",{:.6e},{:.6e},{:.6e},{:.6e}", end == 0 ? s.endTensionA : s.endTensionB, f.x(), f.y(),
+                            f.z());
     }
-    *m_endForces << fmt::format(",{:.6e},{:.6e}", s.endForceA.norm(), s.endForceB.norm());
   }
-  *m_endForces << "\n";
+  m_endForces->write(forces + "\n");
   m_endForces->flush();
   ++m_records;
   if (m_vtk && time >= m_nextVtk - 1e-9) {
@@ -113,22 +112,57 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
   }
 }
 
+void DynamicRecorder::accumulate(const std::vector<solver::LineSnapshot>& lines, double dt) {
+  // Means are time-weighted (each state stands for the step of length dt that led to it): steps are not
+  // equal when the step controller cuts them. The initial state (dt = 0) counts in the extremes only.
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const solver::LineSnapshot& s = lines[l];
+    Range& r = m_ranges[l];
+    for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
+      r.tensionMin[i] = std::min(r.tensionMin[i], s.tension[i]);
+      r.tensionMax[i] = std::max(r.tensionMax[i], s.tension[i]);
+      r.momentMin[i] = std::min(r.momentMin[i], s.bendingMoment[i]);
+      r.momentMax[i] = std::max(r.momentMax[i], s.bendingMoment[i]);
+      r.curvatureMin[i] = std::min(r.curvatureMin[i], s.curvature[i]);
+      r.curvatureMax[i] = std::max(r.curvatureMax[i], s.curvature[i]);
+      r.tensionSum[i] += dt * s.tension[i];
+      r.momentSum[i] += dt * s.bendingMoment[i];
+      r.curvatureSum[i] += dt * s.curvature[i];
+    }
+    r.endTensionMaxA = std::max(r.endTensionMaxA, s.endTensionA);
+    r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
+    r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);
+    r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
+  }
+  m_weight += dt;
+  ++m_steps;
+}
+
 void DynamicRecorder::writeRanges() const {
-  if (m_records == 0) return;
-  for (std::size_t l = 0; l < m_names.size(); ++l) {
-    const fs::path p = m_dir / "dynamics" / safeFileName(m_names[l]) / "range.csv";
-    std::ofstream f(p);
-    if (!f) throw Error("cannot write " + p.string());
-    f << "arc_length_m,tension_min_N,tension_max_N,tension_mean_N,bending_moment_min_Nm,bending_moment_max_Nm,"
-         "bending_moment_mean_Nm,curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n";
+  if (m_steps == 0) return;
+  // Only the initial state seen (no step): its values are the means, i.e. min (= max).
+  const bool noTime = m_weight <= 0.0;
+  auto mean = [&](double sum, double only) { return noTime ? only : sum / m_weight; };
+  for (std::size_t l = 0; l < m_stems.size(); ++l) {
+    OutputFile f(m_dir / "dynamics" / m_stems[l] / "range.csv");
+    f.write("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,bending_moment_min_Nm,bending_moment_max_Nm,"
+            "bending_moment_mean_Nm,curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
     const Range& r = m_ranges[l];
     for (std::size_t i = 0; i < m_arc[l].size(); ++i) {
-      f << fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i],
-                       r.tensionMin[i], r.tensionMax[i], r.tensionSum[i] / m_records, r.momentMin[i],
-                       r.momentMax[i], r.momentSum[i] / m_records, r.curvatureMin[i], r.curvatureMax[i],
-                       r.curvatureSum[i] / m_records);
+      f.write(fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i],
+                          r.tensionMin[i], r.tensionMax[i], mean(r.tensionSum[i], r.tensionMin[i]),
+                          r.momentMin[i], r.momentMax[i], mean(r.momentSum[i], r.momentMin[i]), r.curvatureMin[i],
+                          r.curvatureMax[i], mean(r.curvatureSum[i], r.curvatureMin[i])));
     }
+    f.close();
   }
+}
+
+void DynamicRecorder::close() {
+  for (auto& streams : m_streams)
+    for (auto& f : streams) f->close();
+  m_endForces->close();
+  if (m_vtk) m_vtk->close();
 }
 
 }  // namespace tangle::io

@@ -2,17 +2,22 @@
 /// @file DynamicRecorder.hpp
 /// Records a dynamic run as it goes, so that a run stopped midway keeps everything up to then:
 /// - `dynamics/<line>/<quantity>.csv`: time histories, one row per output time, one column per node
-///   (x_m, y_m, z_m, effective_tension_N, bending_moment_Nm, curvature_1_per_m);
-/// - `dynamics/<line>/range.csv`: range graphs (min, max, mean over the run) along each line;
-/// - `dynamics/end_forces.csv`: end tensions of every line against time;
+///   (x_m, y_m, z_m, effective_tension_N, bending_moment_Nm, curvature_1_per_m, bending moment
+///   components bending_moment_{x,y,z}_Nm in global axes, torque_Nm);
+/// - `dynamics/<line>/range.csv`: range graphs (min, max, time-weighted mean) along each line over every
+///   accepted time step (accumulate()), not only the output times: a short impact between two output
+///   times is in the range graph and the extremes;
+/// - `dynamics/end_forces.csv`: end tension (at the end point, LineSnapshot::endTensionA) and the force
+///   components on what holds each end, against time;
 /// - `vtk/lines.pvd` + `vtk/lines_vtu/*.vtu`: ParaView series of the lines with per-node fields.
+/// <line> is the line's unique file stem (io::lineFileStems). Every write is checked (OutputError).
 
 #include <filesystem>
-#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "tangle/io/OutputFile.hpp"
 #include "tangle/io/VtkWriter.hpp"
 #include "tangle/solver/LineResults.hpp"
 
@@ -21,7 +26,7 @@ namespace tangle::io {
 /// Streams dynamic results to disk.
 class DynamicRecorder {
  public:
-  /// @param dir output directory; @param lineNames names of the lines in model order
+  /// @param dir output directory; @param initial the lines at t = 0 (names, arc lengths)
   /// @param vtkInterval time between ParaView frames [s] (<= 0: no ParaView output)
   DynamicRecorder(const std::filesystem::path& dir, const std::vector<solver::LineSnapshot>& initial,
                   double vtkInterval);
@@ -29,35 +34,44 @@ class DynamicRecorder {
   DynamicRecorder(const DynamicRecorder&) = delete;
   DynamicRecorder& operator=(const DynamicRecorder&) = delete;
 
-  /// Appends one output time (flushed to disk at once).
+  /// Appends one output time to the time histories (flushed to disk at once).
   void record(double time, const std::vector<solver::LineSnapshot>& lines);
-  /// Writes the range graphs of what was recorded so far (call at the end, also after a failure).
+  /// Adds one accepted step (of length dt [s]; dt = 0 for the initial state) to the ranges and extremes.
+  void accumulate(const std::vector<solver::LineSnapshot>& lines, double dt);
+  /// Writes the range graphs of what was accumulated so far (call at the end, also after a failure).
   void writeRanges() const;
-  /// Number of records so far.
+  /// Flushes and closes every time history (call at the end; errors throw OutputError).
+  void close();
+  /// Number of output records so far.
   int recordCount() const { return m_records; }
+  /// Number of accumulated states (initial state + accepted steps).
+  long stepCount() const { return m_steps; }
 
-  /// Min/max/mean accumulators of one line.
+  /// Min/max/mean accumulators of one line (per node), and the extremes of its end tensions [N].
   struct Range {
     std::vector<double> tensionMin, tensionMax, tensionSum;
     std::vector<double> momentMin, momentMax, momentSum;
     std::vector<double> curvatureMin, curvatureMax, curvatureSum;
+    double endTensionMaxA = 0.0, endTensionMaxB = 0.0, endTensionMinA = 0.0, endTensionMinB = 0.0;
   };
   const std::vector<Range>& ranges() const { return m_ranges; }
 
  private:
   std::filesystem::path m_dir;
-  std::vector<std::string> m_names;
+  std::vector<std::string> m_stems;
   std::vector<std::vector<double>> m_arc;
-  std::vector<std::vector<std::unique_ptr<std::ofstream>>> m_streams;  // per line, per quantity
-  std::unique_ptr<std::ofstream> m_endForces;
+  std::vector<std::vector<std::unique_ptr<OutputFile>>> m_streams;  // per line, per quantity
+  std::unique_ptr<OutputFile> m_endForces;
   std::unique_ptr<PvdSeries> m_vtk;
   double m_vtkInterval;
   double m_nextVtk = 0.0;
   std::vector<Range> m_ranges;
+  double m_weight = 0.0;  ///< accumulated time [s] of the means
   int m_records = 0;
+  long m_steps = 0;
 };
 
-/// The lines of a snapshot as VTK polylines with tension, bending moment and curvature fields.
+/// The lines of a snapshot as VTK polylines with tension, bending moment, torque and curvature fields.
 std::vector<VtkPolyline> toPolylines(const std::vector<solver::LineSnapshot>& lines);
 
 }  // namespace tangle::io

@@ -8,6 +8,7 @@
 #include "tangle/io/ModelReader.hpp"
 
 #include <fmt/format.h>
+#include <yaml-cpp/eventhandler.h>
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -43,6 +44,29 @@ constexpr double kSeabedTolerance = 1.0e-9;
 /// Largest accepted ratio of the end-to-end distance to the unstretched line length [-]: beyond it the
 /// geometry is taken as a mistake (a taut line stretched by a few percent is fine).
 constexpr double kMaxEndSpanOverLength = 1.2;
+
+// Physical bounds (issue 13): values beyond them are typing or unit mistakes that otherwise end deep in
+// the solver (tensions of 1e284 N, internal errors). Generous: an order of magnitude beyond any real
+// offshore line or vessel.
+constexpr double kMaxCoordinate = 1.0e5;        ///< |x|, |y|, |z| of any position [m] (100 km)
+constexpr double kMaxWaterDepth = 12000.0;      ///< deeper than the deepest trench [m]
+constexpr double kMaxLineLength = 1.0e5;        ///< one section [m]
+constexpr double kMaxDiameter = 20.0;           ///< [m]; above kPlausibleDiameter only a warning
+constexpr double kPlausibleDiameter = 2.5;      ///< larger diameters are likely inches or mm [m]
+constexpr double kMaxMassPerLength = 1.0e5;     ///< [kg/m]
+constexpr double kMaxStiffness = 1.0e13;        ///< EA [N], EI [N m^2], GJ [N m^2/rad]
+constexpr double kMaxCoefficient = 20.0;        ///< drag and added-mass coefficients [-]
+constexpr double kMaxSpeed = 50.0;              ///< current and wind speeds [m/s]
+constexpr double kMaxWaveHeight = 50.0;         ///< H and Hs [m]
+constexpr double kMaxWavePeriod = 100.0;        ///< T and Tp [s]
+constexpr int kMaxWaveComponents = 10000;       ///< JONSWAP components [-]
+constexpr double kMaxDuration = 1.0e6;          ///< dynamic duration [s]
+constexpr double kMaxMass = 1.0e10;             ///< vessel and attachment masses [kg]
+/// Most elements accepted in one model, and the memory each needs for the message: measured 3.4 kB per
+/// bar element (peak resident memory of `tangle run --statics-only` on a 20000-element cable model minus
+/// that of a 2-element one); 6 kB allows for beams (6 DOFs per node) and the dynamic state.
+constexpr long kMaxElements = 500000;
+constexpr double kBytesPerElement = 6.0e3;
 
 // =====================================================================================================
 // Checked access layer
@@ -98,6 +122,7 @@ struct Range {
   bool loOpen = false;  ///< lo itself is excluded
   bool hiOpen = false;  ///< hi itself is excluded
   std::string hint;     ///< extra explanation appended to messages, e.g. "at least time_step"
+  bool sanityCap = false;  ///< hi is a physical plausibility cap: described as "> lo and <= hi"
 
   bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
 
@@ -105,6 +130,9 @@ struct Range {
   std::string describe() const {
     const bool hasLo = lo > -kInfinity;
     const bool hasHi = hi < kInfinity;
+    if (hasLo && hasHi && sanityCap)
+      return fmt::format(" {} {} and {} {}", loOpen ? ">" : ">=", numberText(lo), hiOpen ? "<" : "<=",
+                         numberText(hi));
     if (hasLo && hasHi)
       return fmt::format(" in {}{}, {}{}", loOpen ? "(" : "[", numberText(lo), numberText(hi),
                          hiOpen ? ")" : "]");
@@ -126,6 +154,12 @@ Range nonNegative() { return {0.0, kInfinity, false, false, {}}; }
 Range atLeast(double lo) { return {lo, kInfinity, false, false, {}}; }
 Range atMost(double hi) { return {-kInfinity, hi, false, false, {}}; }
 Range closed(double lo, double hi) { return {lo, hi, false, false, {}}; }
+/// (0, hi]: a positive physical value with an upper bound.
+Range positiveUpTo(double hi) { return {0.0, hi, true, false, {}, true}; }
+/// [0, hi].
+Range nonNegativeUpTo(double hi) { return {0.0, hi, false, false, {}, true}; }
+/// [lo, hi] with hi a plausibility cap.
+Range atLeastUpTo(double lo, double hi) { return {lo, hi, false, false, {}, true}; }
 
 /// What a number must be, for messages: "a number > 0 (at least time_step)".
 std::string numberExpectation(std::string_view noun, const Range& range) {
@@ -272,11 +306,24 @@ class Value {
     return out;
   }
 
-  /// A position or vector [x, y, z].
+  /// A vector [x, y, z].
   Vec3 vec3() const {
     const std::vector<double> v = numbers(3, "[x, y, z]");
     return Vec3(v[0], v[1], v[2]);
   }
+
+  /// A position [x, y, z], each coordinate within +-kMaxCoordinate.
+  Vec3 position() const {
+    const std::vector<double> v = numbers(3, "[x, y, z]");
+    for (std::size_t i = 0; i < 3; ++i)
+      if (std::abs(v[i]) > kMaxCoordinate)
+        fail(fmt::format("item {} is {}; expected coordinates within +-{} m", i, numberText(v[i]),
+                         numberText(kMaxCoordinate)));
+    return Vec3(v[0], v[1], v[2]);
+  }
+
+  /// "file:line: key 'path': " prefix for warnings about this value.
+  std::string where() const { return InputError(*m_source, m_line, m_path, "").what(); }
 
  private:
   /// The number a plain scalar spells, if it spells a finite one (strict: the whole text must be a number).
@@ -431,11 +478,11 @@ void readTitle(const Value& v, ModelSpec& spec) { spec.title = v.text("a title (
 void readSeabed(const Value& v, model::SeabedSpec& seabed) {
   const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity", "shear_stiffness"});
   const model::SeabedSpec d;
-  seabed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positive());
-  seabed.damping = m.number("damping", d.damping, nonNegative());
-  seabed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
-  seabed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
-  seabed.shearStiffness = m.number("shear_stiffness", seabed.normalStiffness, positive());
+  seabed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positiveUpTo(1.0e12));
+  seabed.damping = m.number("damping", d.damping, nonNegativeUpTo(1.0e12));
+  seabed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegativeUpTo(10.0));
+  seabed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positiveUpTo(10.0));
+  seabed.shearStiffness = m.number("shear_stiffness", seabed.normalStiffness, positiveUpTo(1.0e12));
 }
 
 /// A list of levels {z, speed, azimuth}, or one map {speed, azimuth} for a uniform current (stored as a
@@ -443,7 +490,7 @@ void readSeabed(const Value& v, model::SeabedSpec& seabed) {
 std::vector<model::CurrentLevel> readCurrent(const Value& v) {
   if (v.node().IsMap()) {
     const Map m(v, {"speed", "azimuth"});
-    return {{0.0, m.number("speed", nonNegative()), degToRad(m.number("azimuth", anyNumber()))}};
+    return {{0.0, m.number("speed", nonNegativeUpTo(kMaxSpeed)), degToRad(m.number("azimuth", anyNumber()))}};
   }
   if (!v.node().IsSequence())
     v.expected("a list of levels {z, speed, azimuth} or a single map {speed, azimuth} (uniform current)");
@@ -459,14 +506,14 @@ std::vector<model::CurrentLevel> readCurrent(const Value& v) {
         z.fail(fmt::format("current level z = {} is given twice (first at line {}); levels must be distinct",
                            numberText(level.z), lineOther));
     seen.emplace_back(level.z, z.line());
-    level.speed = m.number("speed", nonNegative());
+    level.speed = m.number("speed", nonNegativeUpTo(kMaxSpeed));
     level.azimuth = degToRad(m.number("azimuth", anyNumber()));
     levels.push_back(level);
   }
   return levels;
 }
 
-model::WaveSpec readWaves(const Value& v) {
+model::WaveSpec readWaves(const Value& v, double waterDepth) {
   using model::WaveKind;
   static const std::vector<std::string> kAiryKeys{"height", "period", "phase"};
   static const std::vector<std::string> kJonswapKeys{"significant_height", "peak_period", "gamma",
@@ -475,6 +522,7 @@ model::WaveSpec readWaves(const Value& v) {
   allowed.insert(allowed.end(), kAiryKeys.begin(), kAiryKeys.end());
   allowed.insert(allowed.end(), kJonswapKeys.begin(), kJonswapKeys.end());
   allowed.emplace_back("azimuth");
+  allowed.emplace_back("stretching");
   const Map m(v, allowed);
 
   model::WaveSpec w;
@@ -495,18 +543,25 @@ model::WaveSpec readWaves(const Value& v) {
   const std::string required = "required for waves of type " + typeName;
   const model::WaveSpec d;
   if (airy) {
-    w.height = m.number("height", positive().withHint(required));
-    w.period = m.number("period", positive().withHint(required));
+    w.height = m.number("height", positiveUpTo(std::min(kMaxWaveHeight, 1.6 * waterDepth))
+                                      .withHint(required + "; at most 1.6 x water_depth (crest above the seabed)"));
+    w.period = m.number("period", positiveUpTo(kMaxWavePeriod).withHint(required));
     w.phase = m.angle("phase", d.phase);
   } else {
-    w.significantHeight = m.number("significant_height", positive().withHint(required));
-    w.peakPeriod = m.number("peak_period", positive().withHint(required));
-    w.gamma = m.number("gamma", d.gamma, atLeast(1.0).withHint("1 gives a Pierson-Moskowitz spectrum"));
-    w.components = m.integer("components", d.components, atLeast(1.0));
+    w.significantHeight = m.number("significant_height", positiveUpTo(std::min(kMaxWaveHeight, 0.8 * waterDepth))
+                                                             .withHint(required + "; at most 0.8 x water_depth"));
+    w.peakPeriod = m.number("peak_period", positiveUpTo(kMaxWavePeriod).withHint(required));
+    w.gamma = m.number("gamma", d.gamma, closed(1.0, 20.0).withHint("1 gives a Pierson-Moskowitz spectrum"));
+    w.components = m.integer("components", d.components, atLeastUpTo(1.0, kMaxWaveComponents));
     const std::optional<Value> seed = m.find("seed");
     w.seed = seed ? static_cast<unsigned>(seed->integer64(closed(0.0, 4294967295.0))) : d.seed;
   }
   w.azimuth = m.angle("azimuth", d.azimuth);
+  if (const std::optional<Value> stretching = m.find("stretching"))
+    w.stretching = stretching->choice<model::WaveStretching>(
+        {{"none", model::WaveStretching::None},
+         {"wheeler", model::WaveStretching::Wheeler},
+         {"vertical_extrapolation", model::WaveStretching::Extrapolation}});
   return w;
 }
 
@@ -514,17 +569,17 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
   const Map m(v, {"water_depth", "water_density", "gravity", "seabed", "current", "waves", "wind"});
   model::EnvironmentSpec& env = spec.environment;
   const model::EnvironmentSpec d;
-  env.waterDepth = m.number("water_depth", positive().withHint("seabed at z = -water_depth"));
-  env.waterDensity = m.number("water_density", d.waterDensity, positive());
-  env.gravity = m.number("gravity", d.gravity, positive());
+  env.waterDepth = m.number("water_depth", positiveUpTo(kMaxWaterDepth).withHint("seabed at z = -water_depth"));
+  env.waterDensity = m.number("water_density", d.waterDensity, closed(500.0, 2000.0));
+  env.gravity = m.number("gravity", d.gravity, closed(1.0, 30.0));
   if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env.seabed);
   if (const std::optional<Value> current = m.find("current")) env.current = readCurrent(*current);
-  if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves);
+  if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves, env.waterDepth);
   if (const std::optional<Value> wind = m.find("wind")) {
     const Map w(*wind, {"speed", "azimuth", "air_density"});
-    env.windSpeed = w.number("speed", nonNegative());
+    env.windSpeed = w.number("speed", nonNegativeUpTo(kMaxSpeed));
     env.windAzimuth = degToRad(w.number("azimuth", 0.0, {}));
-    env.airDensity = w.number("air_density", d.airDensity, positive());
+    env.airDensity = w.number("air_density", d.airDensity, positiveUpTo(10.0));
   }
 }
 
@@ -537,24 +592,42 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     const section::LineType d;
     section::LineType t;
     t.name = names.add(m);
-    t.outerDiameter = m.number("outer_diameter", positive());
-    t.buoyancyDiameter = m.number("buoyancy_diameter", t.outerDiameter, positive());
-    t.contactDiameter = m.number("contact_diameter", t.outerDiameter, positive());
-    t.massPerLength = m.number("mass_per_length", positive());
-    t.axialStiffness = m.number("axial_stiffness", positive());
-    t.bendingStiffness = m.number("bending_stiffness", d.bendingStiffness, nonNegative());
-    t.torsionalStiffness = m.number("torsional_stiffness", d.torsionalStiffness, nonNegative());
-    t.dragNormal = m.number("drag_normal", d.dragNormal, nonNegative());
-    t.dragAxial = m.number("drag_axial", d.dragAxial, nonNegative());
-    t.addedMassNormal = m.number("added_mass_normal", d.addedMassNormal, nonNegative());
-    t.addedMassAxial = m.number("added_mass_axial", d.addedMassAxial, nonNegative());
-    t.axialDamping = m.number("axial_damping", d.axialDamping, nonNegative());
+    const Range diameter = positiveUpTo(kMaxDiameter).withHint("in m");
+    t.outerDiameter = m.number("outer_diameter", diameter);
+    t.buoyancyDiameter = m.number("buoyancy_diameter", t.outerDiameter, diameter);
+    t.contactDiameter = m.number("contact_diameter", t.outerDiameter, diameter);
+    t.massPerLength = m.number("mass_per_length", positiveUpTo(kMaxMassPerLength));
+    t.axialStiffness = m.number("axial_stiffness", positiveUpTo(kMaxStiffness));
+    t.bendingStiffness = m.number("bending_stiffness", d.bendingStiffness, nonNegativeUpTo(kMaxStiffness));
+    t.torsionalStiffness = m.number("torsional_stiffness", d.torsionalStiffness, nonNegativeUpTo(kMaxStiffness));
+    t.dragNormal = m.number("drag_normal", d.dragNormal, nonNegativeUpTo(kMaxCoefficient));
+    t.dragAxial = m.number("drag_axial", d.dragAxial, nonNegativeUpTo(kMaxCoefficient));
+    t.addedMassNormal = m.number("added_mass_normal", d.addedMassNormal, nonNegativeUpTo(kMaxCoefficient));
+    t.addedMassAxial = m.number("added_mass_axial", d.addedMassAxial, nonNegativeUpTo(kMaxCoefficient));
+    t.axialDamping = m.number("axial_damping", d.axialDamping, nonNegativeUpTo(kMaxStiffness));
+    // Plausibility (warnings, not errors: the values are legal, but usually a unit mistake).
+    for (const char* key : {"outer_diameter", "buoyancy_diameter"}) {
+      const double value = std::string_view(key) == "outer_diameter" ? t.outerDiameter : t.buoyancyDiameter;
+      if (m.find(key) && value > kPlausibleDiameter)
+        spec.warnings.push_back(m.find(key)->where() +
+                                fmt::format("diameter of {} m: diameters are in metres (an 18 in riser is 0.457)",
+                                            numberText(value)));
+    }
+    const double submerged = t.submergedWeight(spec.environment.waterDensity, spec.environment.gravity);
+    if (submerged < 0.0)
+      spec.warnings.push_back(
+          item.where() +
+          fmt::format("line type '{}' floats: submerged weight {} N/m (mass_per_length {} kg/m displaces {} kg/m of "
+                      "water); fine for buoyancy modules, otherwise check the units of the diameters and the mass",
+                      t.name, roundedText(submerged), numberText(t.massPerLength),
+                      roundedText(spec.environment.waterDensity * kPi / 4.0 * t.buoyancyDiameter *
+                                  t.buoyancyDiameter)));
     spec.lineTypes.emplace(t.name, t);
   }
 }
 
 model::EndMotionSpec readMotion(const Value& v) {
-  const Map m(v, {"amplitude", "period", "phase", "table"});
+  const Map m(v, {"amplitude", "period", "phase", "table", "interpolation"});
   model::EndMotionSpec motion;
   motion.enabled = true;
   if (const std::optional<Value> table = m.find("table")) {
@@ -564,9 +637,14 @@ model::EndMotionSpec readMotion(const Value& v) {
             fmt::format("'{}' cannot be combined with 'table': give either amplitude, period and phase "
                         "(harmonic motion) or table (time history)",
                         key));
+    if (const std::optional<Value> interpolation = m.find("interpolation"))
+      motion.cubic = interpolation->choice<bool>({{"linear", false}, {"cubic", true}});
     double previousTime = 0.0;
     for (const Value& row : table->items(2)) {
       const std::vector<double> r = row.numbers(4, "[t, dx, dy, dz] (s, m, m, m)");
+      for (std::size_t k = 1; k < 4; ++k)
+        if (std::abs(r[k]) > kMaxCoordinate)
+          row.fail(fmt::format("offset {} m is beyond +-{} m", numberText(r[k]), numberText(kMaxCoordinate)));
       if (r[0] < 0.0)
         row.fail(fmt::format("expected a time t >= 0 s in the first column, got {}", numberText(r[0])));
       if (!motion.table.empty() && r[0] <= previousTime)
@@ -577,13 +655,16 @@ model::EndMotionSpec readMotion(const Value& v) {
     }
     return motion;
   }
+  if (const std::optional<Value> interpolation = m.find("interpolation"))
+    interpolation->fail("'interpolation' applies only to a motion 'table'");
   motion.amplitude = m.get("amplitude", "a list of 3 numbers [x, y, z] in m (or a 'table')").vec3();
-  motion.period = m.number("period", positive());
+  motion.period = m.number("period", positiveUpTo(kMaxDuration));
   motion.phase = m.angle("phase", 0.0);
   return motion;
 }
 
-model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
+model::EndSpec readEnd(const Value& v, const ModelSpec& spec) {
+  const model::EnvironmentSpec& env = spec.environment;
   using model::EndKind;
   const Map m(v, {"type", "position", "vessel", "motion", "release", "tensioner", "flex_joint"});
   model::EndSpec end;
@@ -596,11 +677,28 @@ model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
                                    {"vessel", EndKind::Vessel}});
   const std::string typeName = toLower(type.node().Scalar());
   const Value position = m.get("position", "a list of 3 numbers [x, y, z] in m");
-  end.position = position.vec3();
+  end.position = position.position();
 
   if (end.kind == EndKind::Vessel) {
-    end.vessel =
-        m.get("vessel", "the name of the vessel (required for ends of type vessel)").text("a vessel name");
+    const Value vessel = m.get("vessel", "the name of the vessel (required for ends of type vessel)");
+    end.vessel = vessel.text("a vessel name");
+    const auto found = std::find_if(spec.vessels.begin(), spec.vessels.end(),
+                                    [&](const model::VesselSpec& vs) { return vs.name == end.vessel; });
+    if (found == spec.vessels.end()) {
+      std::vector<std::string> names;
+      for (const model::VesselSpec& vs : spec.vessels) names.push_back("'" + vs.name + "'");
+      vessel.fail(fmt::format("unknown vessel '{}'; {}", end.vessel,
+                              names.empty() ? "the model defines no vessels (add a 'vessels' block)"
+                                            : "vessels defined under vessels: " + join(names)));
+    }
+    // The end in global axes at t = 0 (vessel axes rotated by the heading about z keep z): below the
+    // seabed it would pull the line into the ground.
+    const double z = found->position.z() + end.position.z();
+    if (z < -env.waterDepth - kSeabedTolerance)
+      position.fail(fmt::format("the end is below the seabed: vessel '{}' at z = {} m plus the offset z = {} m "
+                                "gives z = {} m, the seabed is at z = {} m (-water_depth)",
+                                end.vessel, numberText(found->position.z()), numberText(end.position.z()),
+                                numberText(z), numberText(-env.waterDepth)));
   } else {
     if (const std::optional<Value> vessel = m.find("vessel"))
       vessel->fail(
@@ -611,21 +709,26 @@ model::EndSpec readEnd(const Value& v, const model::EnvironmentSpec& env) {
           fmt::format("the end is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth); "
                       "expected z >= {}",
                       numberText(end.position.z()), numberText(seabedZ), numberText(seabedZ)));
+    // An anchor sits on the seabed or in the water, never above the surface.
+    if (end.kind == EndKind::Anchored && end.position.z() > 0.0)
+      position.fail(fmt::format("an anchored end is above the water surface: z = {} m; anchors are at "
+                                "-water_depth <= z <= 0 (use type fixed or pinned for a point in the air)",
+                                numberText(end.position.z())));
   }
 
   if (const std::optional<Value> tensioner = m.find("tensioner")) {
     if (end.kind != EndKind::Vessel) tensioner->fail("a tensioner applies only to ends of type vessel");
     const Map t(*tensioner, {"tension", "stroke", "stop_stiffness"});
     end.tensioner.enabled = true;
-    end.tensioner.tension = t.number("tension", positive());
-    end.tensioner.stroke = t.number("stroke", end.tensioner.stroke, positive());
-    end.tensioner.stopStiffness = t.number("stop_stiffness", end.tensioner.stopStiffness, positive());
+    end.tensioner.tension = t.number("tension", positiveUpTo(1.0e9));
+    end.tensioner.stroke = t.number("stroke", end.tensioner.stroke, positiveUpTo(100.0));
+    end.tensioner.stopStiffness = t.number("stop_stiffness", end.tensioner.stopStiffness, positiveUpTo(1.0e12));
   }
   if (const std::optional<Value> flex = m.find("flex_joint")) {
     if (end.kind != EndKind::Vessel) flex->fail("a flex joint applies only to ends of type vessel");
     const Map f(*flex, {"stiffness"});
     end.flexJoint.enabled = true;
-    end.flexJoint.stiffness = f.number("stiffness", nonNegative());
+    end.flexJoint.stiffness = f.number("stiffness", nonNegativeUpTo(kMaxStiffness));
   }
 
   if (const std::optional<Value> release = m.find("release")) {
@@ -658,8 +761,14 @@ model::SectionSpec readSection(const Value& v, const ModelSpec& spec) {
     type.fail(fmt::format("unknown line type '{}'; line types defined under line_types: {}", section.lineType,
                           join(known)));
   }
-  section.length = m.number("length", positive().withHint("unstretched length in m"));
-  section.elements = m.get("elements", "an integer >= 1").integer(atLeast(1.0));
+  section.length = m.number("length", positiveUpTo(kMaxLineLength).withHint("unstretched length in m"));
+  const Value elements = m.get("elements", "an integer >= 1");
+  const long long count = elements.integer64(atLeast(1.0));
+  if (count > kMaxElements)
+    elements.fail(fmt::format("{} elements would need about {:.3g} GB of memory; at most {} elements are "
+                              "accepted in a model",
+                              count, static_cast<double>(count) * kBytesPerElement / 1e9, kMaxElements));
+  section.elements = static_cast<int>(count);
   return section;
 }
 
@@ -668,10 +777,10 @@ model::AttachmentSpec readAttachment(const Value& v, double lineLength) {
   model::AttachmentSpec a;
   a.arcLength =
       m.number("arc_length", closed(0.0, lineLength).withHint("from end A, within the line's length"));
-  a.mass = m.number("mass", 0.0, nonNegative());
-  a.volume = m.number("volume", 0.0, nonNegative());
-  a.dragArea = m.number("drag_area", 0.0, nonNegative());
-  a.addedMass = m.number("added_mass", 0.0, nonNegative());
+  a.mass = m.number("mass", 0.0, nonNegativeUpTo(kMaxMass));
+  a.volume = m.number("volume", 0.0, nonNegativeUpTo(kMaxMass / 1000.0));
+  a.dragArea = m.number("drag_area", 0.0, nonNegativeUpTo(1.0e4));
+  a.addedMass = m.number("added_mass", 0.0, nonNegativeUpTo(kMaxMass));
   return a;
 }
 
@@ -681,8 +790,8 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
   line.name = names.add(m);
   line.contact = m.boolean("contact", line.contact);
   const std::string endExpectation = "a map {type, position} describing the end";
-  line.endA = readEnd(m.get("end_a", endExpectation), spec.environment);
-  line.endB = readEnd(m.get("end_b", endExpectation), spec.environment);
+  line.endA = readEnd(m.get("end_a", endExpectation), spec);
+  line.endB = readEnd(m.get("end_b", endExpectation), spec);
 
   double length = 0.0;
   for (const Value& item :
@@ -709,7 +818,15 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
 
 void readLines(const Value& v, ModelSpec& spec) {
   NameRegistry names("line");
-  for (const Value& item : v.items(1, ItemLabel::Name)) spec.lines.push_back(readLine(item, spec, names));
+  long long elements = 0;
+  for (const Value& item : v.items(1, ItemLabel::Name)) {
+    spec.lines.push_back(readLine(item, spec, names));
+    for (const model::SectionSpec& section : spec.lines.back().sections) elements += section.elements;
+    if (elements > kMaxElements)
+      item.fail(fmt::format("the model has {} elements up to this line; they would need about {:.3g} GB of memory; "
+                            "at most {} elements are accepted in a model",
+                            elements, static_cast<double>(elements) * kBytesPerElement / 1e9, kMaxElements));
+  }
 }
 
 void readStatics(const Value& v, ModelSpec& spec) {
@@ -727,13 +844,13 @@ void readDynamics(const Value& v, ModelSpec& spec) {
                   "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance"});
   const model::DynamicSpec d;
   model::DynamicSpec& s = spec.dynamics;
-  s.duration = m.number("duration", nonNegative().withHint("0 switches dynamics off"));
+  s.duration = m.number("duration", nonNegativeUpTo(kMaxDuration).withHint("0 switches dynamics off"));
   s.enabled = s.duration > 0.0;
-  s.timeStep = m.number("time_step", d.timeStep, positive());
+  s.timeStep = m.number("time_step", d.timeStep, positiveUpTo(100.0));
   // Defaults that would contradict a user's time step follow it instead.
   s.minTimeStep = m.number("min_time_step", std::min(d.minTimeStep, s.timeStep),
                            Range{0.0, s.timeStep, true, false, "at most time_step"});
-  s.rampTime = m.number("ramp_time", d.rampTime, nonNegative());
+  s.rampTime = m.number("ramp_time", d.rampTime, nonNegativeUpTo(kMaxDuration));
   s.outputInterval = m.number("output_interval", std::max(d.outputInterval, s.timeStep),
                               atLeast(s.timeStep).withHint("at least time_step"));
   if (const std::optional<Value> integrator = m.find("integrator"))
@@ -871,22 +988,29 @@ void readVessels(const Value& v, ModelSpec& spec) {
       vs.mode = mode->choice<model::VesselMode>({{"fixed", model::VesselMode::Fixed},
                                                  {"prescribed", model::VesselMode::Prescribed},
                                                  {"free", model::VesselMode::Free}});
-    vs.position = m.get("position", "the reference point [x, y, z] in m").vec3();
+    vs.position = m.get("position", "the reference point [x, y, z] in m").position();
     vs.heading = degToRad(m.number("heading", 0.0, {}));
     const bool free = vs.mode == model::VesselMode::Free;
     vs.heldInStatics = m.boolean("held_in_statics", false);
     if (vs.heldInStatics && !free) m.get("held_in_statics", "").fail("held_in_statics applies only to free vessels");
-    vs.mass = free ? m.number("mass", positive()) : m.number("mass", 0.0, nonNegative());
+    vs.mass = free ? m.number("mass", positiveUpTo(kMaxMass)) : m.number("mass", 0.0, nonNegativeUpTo(kMaxMass));
     if (const std::optional<Value> inertia = m.find("inertia")) {
       vs.inertia = inertia->vec3();
-      if ((vs.inertia.array() <= 0.0).any()) inertia->fail("expected three moments of inertia > 0 [kg m^2]");
+      if ((vs.inertia.array() <= 0.0).any() || (vs.inertia.array() > 1.0e16).any())
+        inertia->fail("expected three moments of inertia in (0, 1e16] [kg m^2]");
     } else if (free) {
       m.get("inertia", "[Ixx, Iyy, Izz] about the reference point in kg m^2 (required for a free vessel)");
     }
-    vs.addedMass = readSix(m, "added_mass", nonNegative());
-    vs.linearDamping = readSix(m, "linear_damping", nonNegative());
-    vs.quadraticDamping = readSix(m, "quadratic_damping", nonNegative());
-    vs.hydrostaticStiffness = readSix(m, "hydrostatic_stiffness", nonNegative());
+    vs.addedMass = readSix(m, "added_mass", nonNegativeUpTo(1.0e16));
+    vs.linearDamping = readSix(m, "linear_damping", nonNegativeUpTo(1.0e16));
+    vs.quadraticDamping = readSix(m, "quadratic_damping", nonNegativeUpTo(1.0e16));
+    vs.hydrostaticStiffness = readSix(m, "hydrostatic_stiffness", nonNegativeUpTo(1.0e16));
+    // A free vessel floats on its waterplane: without heave stiffness nothing holds it up in statics
+    // (the solve would end with a residual that does not name the cause).
+    if (free && !vs.heldInStatics && vs.hydrostaticStiffness[2] <= 0.0)
+      item.fail(fmt::format("free vessel '{}' has no restoring force in heave: give hydrostatic_stiffness "
+                            "[0, 0, heave, roll, pitch, 0] (heave = rho g waterplane area), or held_in_statics: true",
+                            vs.name));
     if (const std::optional<Value> t = m.find("current_coefficients")) vs.currentCoefficients = readHeadingTable(*t);
     if (const std::optional<Value> a = m.find("current_areas")) vs.currentAreas = a->vec3();
     if (const std::optional<Value> t = m.find("wind_coefficients")) vs.windCoefficients = readHeadingTable(*t);
@@ -903,7 +1027,7 @@ void readVessels(const Value& v, ModelSpec& spec) {
         vs.motionAmplitude[k] = k < 3 ? a[k] : degToRad(a[k]);
         vs.motionPhase[k] = degToRad(ph[k]);
       }
-      vs.motionPeriod = mm.number("period", positive());
+      vs.motionPeriod = mm.number("period", positiveUpTo(kMaxDuration));
     }
     spec.vessels.push_back(std::move(vs));
   }
@@ -952,24 +1076,103 @@ ModelSpec readDocument(const YAML::Node& root, const std::string& source) {
   throw InputError(source, line, "", "invalid YAML" + where + ": " + e.msg);
 }
 
+/// Largest model text read [bytes]: a model is kilobytes (RAO tables perhaps a megabyte); anything far
+/// larger is the wrong file and would only cost memory.
+constexpr std::size_t kMaxModelBytes = 64u << 20;
+/// Deepest flow nesting ('[' and '{') accepted; models need 3 or 4 levels. Guards the recursive parser's
+/// stack against crafted input.
+constexpr int kMaxFlowNesting = 64;
+
+/// Refuses flow nesting deeper than kMaxFlowNesting (quoted text and comments are skipped).
+void checkNesting(const std::string& yaml, const std::string& source) {
+  int depth = 0;
+  int line = 1;
+  char quote = 0;
+  bool comment = false;
+  for (std::size_t i = 0; i < yaml.size(); ++i) {
+    const char c = yaml[i];
+    if (c == '\n') {
+      ++line;
+      comment = false;
+      continue;
+    }
+    if (comment) continue;
+    if (quote) {
+      if (c == quote) quote = 0;
+      continue;
+    }
+    if (c == '"' || c == '\'') quote = c;
+    else if (c == '#' && (i == 0 || std::isspace(static_cast<unsigned char>(yaml[i - 1])))) comment = true;
+    else if (c == '[' || c == '{') {
+      if (++depth > kMaxFlowNesting)
+        throw InputError(source, line, "",
+                         fmt::format("lists or maps nested more than {} levels deep ('[' or '{{')", kMaxFlowNesting));
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+}
+
+/// Receives parser events and ignores them: used only to see whether a second document exists.
+class IgnoreEvents : public YAML::EventHandler {
+ public:
+  void OnDocumentStart(const YAML::Mark&) override {}
+  void OnDocumentEnd() override {}
+  void OnNull(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnAlias(const YAML::Mark&, YAML::anchor_t) override {}
+  void OnScalar(const YAML::Mark&, const std::string&, YAML::anchor_t, const std::string&) override {}
+  void OnSequenceStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnSequenceEnd() override {}
+  void OnMapStart(const YAML::Mark&, const std::string&, YAML::anchor_t, YAML::EmitterStyle::value) override {}
+  void OnMapEnd() override {}
+};
+
+/// Where a second document starts, if the text holds one. Exactly two parser calls: never loops.
+std::optional<YAML::Mark> secondDocument(const std::string& yaml) {
+  std::istringstream in(yaml);
+  YAML::Parser parser(in);
+  IgnoreEvents ignore;
+  if (!parser.HandleNextDocument(ignore)) return std::nullopt;
+  // The mark of the second document is not exposed; report the position the stream reached.
+  class FirstMark : public IgnoreEvents {
+   public:
+    std::optional<YAML::Mark> mark;
+    void OnDocumentStart(const YAML::Mark& m) override {
+      if (!mark) mark = m;
+    }
+  } second;
+  if (!parser.HandleNextDocument(second)) return std::nullopt;
+  return second.mark ? second.mark : std::optional<YAML::Mark>(YAML::Mark());
+}
+
 }  // namespace
 
 model::ModelSpec readModelString(const std::string& yaml, const std::string& sourceName) {
-  std::vector<YAML::Node> documents;
+  if (yaml.size() > kMaxModelBytes)
+    throw InputError(sourceName, 0, "",
+                     fmt::format("the model file is {} bytes; at most {} bytes are read (a model is a few "
+                                 "kilobytes: is this the right file?)",
+                                 yaml.size(), kMaxModelBytes));
+  checkNesting(yaml, sourceName);
+  YAML::Node root;
   try {
-    documents = YAML::LoadAll(yaml);
+    // Not YAML::LoadAll: in yaml-cpp 0.7 it loops forever, allocating, on a stray ',' (fixed upstream
+    // after 0.7). Load reads the first document; secondDocument looks for a second one in at most two
+    // parser calls, so no input can make the reader loop.
+    root = YAML::Load(yaml);
+    if (const std::optional<YAML::Mark> second = secondDocument(yaml))
+      throw InputError(sourceName, second->line + 1, "",
+                       "expected a single YAML document, found more after the first one (a second "
+                       "document after '---', or a stray character such as ',' or ']'); put one model per "
+                       "file");
   } catch (const YAML::Exception& e) {
     rethrowYamlError(e, sourceName);
   }
-  if (documents.empty())
+  if (root.IsNull() || !root.IsDefined())
     throw InputError(sourceName, 0, "",
                      "the model is empty; expected at least the blocks environment, line_types and lines");
-  if (documents.size() > 1)
-    throw InputError(
-        sourceName, lineOf(documents[1], 0), "",
-        "expected a single YAML document, found a second one (after '---'); put one model per file");
   try {
-    return readDocument(documents.front(), sourceName);
+    return readDocument(root, sourceName);
   } catch (const YAML::Exception& e) {
     rethrowYamlError(e, sourceName);
   }

@@ -4,22 +4,51 @@
 #include <cctype>
 #include <cmath>
 #include <fmt/format.h>
-#include <fstream>
+#include <set>
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/io/JsonWriter.hpp"
+#include "tangle/io/OutputFile.hpp"
 
 namespace tangle::io {
 
 namespace fs = std::filesystem;
 
 std::string safeFileName(const std::string& name) {
-  std::string s = name;
-  for (char& c : s) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.')) c = '_';
+  constexpr std::size_t kMaxLength = 64;
+  std::string s;
+  for (char c : name) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    const bool ascii = u < 0x80;
+    s += ascii && (std::isalnum(u) || c == '-' || c == '_' || c == '.') ? c : '_';
+    if (s.size() == kMaxLength) break;
   }
+  if (!s.empty() && s.front() == '.') s.front() = '_';
   return s.empty() ? "line" : s;
+}
+
+std::vector<std::string> uniqueFileStems(const std::vector<std::string>& names) {
+  std::vector<std::string> stems;
+  std::set<std::string> taken;  // lower case: unique on case-insensitive file systems too
+  auto lower = [](std::string t) {
+    for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
+  for (const std::string& name : names) {
+    const std::string base = safeFileName(name);
+    std::string stem = base;
+    for (int k = 2; taken.contains(lower(stem)); ++k) stem = base + "-" + std::to_string(k);
+    taken.insert(lower(stem));
+    stems.push_back(stem);
+  }
+  return stems;
+}
+
+std::vector<std::string> lineFileStems(const std::vector<solver::LineSnapshot>& lines) {
+  std::vector<std::string> names;
+  for (const solver::LineSnapshot& s : lines) names.push_back(s.name);
+  return uniqueFileStems(names);
 }
 
 double elevationAngleDeg(const Vec3& f) {
@@ -30,16 +59,24 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
   const fs::path sub = dir / "statics";
   fs::create_directories(sub);
   std::vector<fs::path> written;
-  for (const solver::LineSnapshot& s : lines) {
-    const fs::path p = sub / (safeFileName(s.name) + ".csv");
-    std::ofstream out(p);
-    if (!out) throw Error("cannot write " + p.string());
-    out << "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m\n";
+  const std::vector<std::string> stems = lineFileStems(lines);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const solver::LineSnapshot& s = lines[l];
+    OutputFile out(sub / (stems[l] + ".csv"));
+    out.write("arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,"
+              "bending_moment_x_Nm,bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,"
+              "rotation_y_deg,rotation_z_deg\n");
     for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
-      out << fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},{:.6e},{:.6e}\n", s.arcLength[i], s.position[i].x(),
-                         s.position[i].y(), s.position[i].z(), s.tension[i], s.bendingMoment[i], s.curvature[i]);
+      const Vec3& m = s.bendingMomentVector[i];
+      const Vec3& r = s.rotation[i];
+      out.write(fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6f},"
+                            "{:.6f},{:.6f}\n",
+                            s.arcLength[i], s.position[i].x(), s.position[i].y(), s.position[i].z(), s.tension[i],
+                            s.bendingMoment[i], s.curvature[i], m.x(), m.y(), m.z(), s.torque[i], r.x(), r.y(),
+                            r.z()));
     }
-    written.push_back(p);
+    out.close();
+    written.push_back(out.path());
   }
   return written;
 }
@@ -47,15 +84,17 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
 void writeStaticSummary(const fs::path& dir, const model::Model& model, const solver::StaticResult& result,
                         const std::vector<solver::LineSnapshot>& lines) {
   fs::create_directories(dir);
-  std::ofstream out(dir / "summary.json");
-  if (!out) throw Error("cannot write " + (dir / "summary.json").string());
-  JsonWriter j(out);
+  OutputFile file(dir / "summary.json");
+  JsonWriter j(file.stream());
   j.beginObject();
   j.field("tangle_version", TANGLE_VERSION);
   j.field("model", model.spec().sourceFile);
   j.field("title", model.spec().title);
   j.field("water_depth_m", model.environment().waterDepth);
   j.field("units", "SI: N, m, kg, s; angles in degrees");
+  j.field("end_tension_definition",
+          "effective tension at the end point: element force vectors extrapolated linearly in arc length to "
+          "the end node; force_N is the force the line exerts on what is at its end");
   j.key("statics");
   j.beginObject();
   j.field("converged", result.converged);
@@ -66,21 +105,25 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
   j.endObject();
   j.key("lines");
   j.beginArray();
-  for (const solver::LineSnapshot& s : lines) {
+  const std::vector<std::string> stems = lineFileStems(lines);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const solver::LineSnapshot& s = lines[l];
     j.beginObject();
     j.field("name", s.name);
+    j.field("file_stem", stems[l]);
     j.field("length_m", s.arcLength.back());
     for (int end = 0; end < 2; ++end) {
-      const Vec3& f = end == 0 ? s.endForceA : s.endForceB;
+      const Vec3& f = end == 0 ? s.endTensionForceA : s.endTensionForceB;
+      const Vec3& reaction = end == 0 ? s.endForceA : s.endForceB;
       j.key(end == 0 ? "end_a" : "end_b");
       j.beginObject();
-      j.field("tension_N", end == 0 ? s.tension.front() : s.tension.back());
-      j.field("reaction_magnitude_N", f.norm());
-      j.field("force_on_support_N", std::vector<double>{f.x(), f.y(), f.z()});
+      j.field("tension_N", end == 0 ? s.endTensionA : s.endTensionB);
+      j.field("force_N", std::vector<double>{f.x(), f.y(), f.z()});
       j.field("horizontal_force_N", std::hypot(f.x(), f.y()));
       j.field("vertical_force_N", f.z());
       j.field("angle_from_horizontal_deg", elevationAngleDeg(f));
       j.field("angle_from_vertical_deg", 90.0 - std::abs(elevationAngleDeg(f)));
+      j.field("support_reaction_N", std::vector<double>{reaction.x(), reaction.y(), reaction.z()});
       j.endObject();
     }
     j.key("touchdown_arc_length_m");
@@ -97,6 +140,7 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
   }
   j.endArray();
   j.endObject();
+  file.close();
 }
 
 }  // namespace tangle::io

@@ -35,6 +35,13 @@ struct CurrentLevel {
 /// Kind of wave train.
 enum class WaveKind { None, Airy, Jonswap };
 
+/// How wave kinematics are taken above and below the still water level (z = 0) under a finite wave.
+enum class WaveStretching {
+  None,           ///< linear theory as is, evaluated at the point's z and cut off above z = 0
+  Wheeler,        ///< Wheeler: z is mapped to z' = d (z - eta) / (d + eta), kinematics at z' (default)
+  Extrapolation   ///< vertical extrapolation: below z = 0 linear theory, above it the z = 0 values up to eta
+};
+
 /// Wave input.
 struct WaveSpec {
   WaveKind kind = WaveKind::None;
@@ -47,6 +54,7 @@ struct WaveSpec {
   unsigned seed = 1;            ///< random seed of the JONSWAP phases [-]
   double azimuth = 0.0;         ///< direction of travel, anticlockwise from +x [rad]
   double phase = 0.0;           ///< phase of the regular wave [rad]
+  WaveStretching stretching = WaveStretching::Wheeler;  ///< kinematics above/below z = 0
 };
 
 /// Environment: water, gravity, seabed, current and waves.
@@ -141,6 +149,7 @@ struct EndMotionSpec {
   double period = 10.0;           ///< [s]
   double phase = 0.0;             ///< [rad]
   std::vector<std::array<double, 4>> table;  ///< optional time history rows (t [s], x, y, z [m] offsets)
+  bool cubic = false;  ///< table interpolation: false piecewise linear, true natural cubic spline (smooth velocity)
 };
 
 /// A line end.
@@ -247,6 +256,9 @@ struct ModelSpec {
   DynamicSpec dynamics;
   ContactSpec contact;
   OutputSpec output;
+  /// Plausibility warnings of the reader (value legal but likely a unit or typing mistake), each naming
+  /// the file, line and key; printed by `check` and `run`.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace tangle::model

@@ -3,7 +3,40 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tangle/geometry/Rotation.hpp"
+#include "tangle/core/Units.hpp"
+
 namespace tangle::solver {
+
+namespace {
+
+/// Force vector of an element at its mid-point [N]: effective tension along the chord from node 1 to 2.
+Vec3 elementForce(const model::State& state, const model::LineElement& el, double tension) {
+  const Vec3 chord = state.position[el.node2] - state.position[el.node1];
+  const double length = chord.norm();
+  return length > 0.0 ? Vec3(tension * chord / length) : Vec3::Zero();
+}
+
+/// True when a point load (attachment) sits at `node`.
+bool hasAttachment(const model::Model& model, int node) {
+  return std::any_of(model.attachments().begin(), model.attachments().end(),
+                     [node](const model::NodeAttachment& a) { return a.node == node; });
+}
+
+/// Force vector at an end point [N], pointing from node 1 to node 2 of the end element (into the line
+/// at end A, out of it at end B), extrapolated as documented in LineSnapshot::endTensionA.
+/// `end` is the end element, `inner` the one next to it (or nullptr).
+Vec3 endPointForce(const model::Model& model, const model::State& state, const model::LineElement& end,
+                   double endTension, const model::LineElement* inner, double innerTension, int sharedNode) {
+  const Vec3 fEnd = elementForce(state, end, endTension);
+  if (!inner || inner->type != end.type || hasAttachment(model, sharedNode)) return fEnd;
+  const Vec3 fInner = elementForce(state, *inner, innerTension);
+  // Mid-points are 0.5 (l_end + l_inner) apart; the end point is 0.5 l_end beyond the end mid-point.
+  const double gap = 0.5 * (end.restLength + inner->restLength);
+  return fEnd + (fEnd - fInner) * (0.5 * end.restLength / gap);
+}
+
+}  // namespace
 
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce) {
@@ -21,6 +54,8 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
     s.bendingMoment.assign(n, 0.0);
     s.bendingMomentVector.assign(n, Vec3::Zero());
     s.curvature.assign(n, 0.0);
+    s.torque.assign(n, 0.0);
+    s.rotation.assign(n, Vec3::Zero());
     std::vector<int> count(n, 0);
     std::vector<double> ei(n, 0.0);
     for (int i = 0; i < n; ++i) s.position[i] = state.position[line.firstNode + i];
@@ -36,6 +71,8 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
             state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2]);
         s.bendingMomentVector[e] += f.moment1;
         s.bendingMomentVector[e + 1] += f.moment2;
+        s.torque[e] += f.torque;
+        s.torque[e + 1] += f.torque;
         ei[e] += el.beam->properties().bendingStiffness;
         ei[e + 1] += el.beam->properties().bendingStiffness;
       }
@@ -43,6 +80,8 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
     for (int i = 0; i < n; ++i) {
       s.tension[i] /= count[i];
       s.bendingMomentVector[i] /= count[i];
+      s.torque[i] /= count[i];
+      s.rotation[i] = geometry::logMap(state.triad[line.firstNode + i]) * (180.0 / kPi);
       ei[i] /= count[i];
       s.bendingMoment[i] = s.bendingMomentVector[i].norm();
       if (ei[i] > 0.0) {
@@ -59,6 +98,23 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
     // pulls its support with the opposite force.
     s.endForceA = -fullForce.segment<3>(dofs.firstDof(line.firstNode));
     s.endForceB = -fullForce.segment<3>(dofs.firstDof(line.lastNode()));
+    {
+      const auto& els = model.elements();
+      const int first = line.firstElement;
+      const int last = line.firstElement + line.elementCount - 1;
+      const bool two = line.elementCount >= 2;
+      // End A: the force on what is at end A points from it into the line (node 1 -> node 2).
+      s.endTensionForceA = endPointForce(model, state, els[first], tension[first], two ? &els[first + 1] : nullptr,
+                                         two ? tension[first + 1] : 0.0, line.firstNode + 1);
+      // End B: the element force points from node 1 to node 2, out of the line; the line pulls end B back.
+      s.endTensionForceB = -endPointForce(model, state, els[last], tension[last], two ? &els[last - 1] : nullptr,
+                                          two ? tension[last - 1] : 0.0, line.lastNode() - 1);
+      // A compressed end element (a line pushed on) gives a negative end tension.
+      const double signA = s.tension.front() < 0.0 ? -1.0 : 1.0;
+      const double signB = s.tension.back() < 0.0 ? -1.0 : 1.0;
+      s.endTensionA = signA * s.endTensionForceA.norm();
+      s.endTensionB = signB * s.endTensionForceB.norm();
+    }
     // Touchdown: last node (from end A) of the first grounded stretch that is followed by suspended line.
     std::vector<bool> grounded(n);
     for (int i = 0; i < n; ++i) {
@@ -71,11 +127,29 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
       grounded[0] = grounded[0] && grounded[1];
       grounded[n - 1] = grounded[n - 1] && grounded[n - 2];
     }
+    auto height = [&](int i) {
+      return std::max(0.0, s.position[i].z() - 0.5 * model.nodeContactDiameter()[line.firstNode + i] + depth);
+    };
     for (int i = 0; i + 1 < n; ++i) {
-      if (grounded[i] != grounded[i + 1]) {
-        s.touchdownArcLength = grounded[i] ? s.arcLength[i] : s.arcLength[i + 1];
-        break;
+      if (grounded[i] == grounded[i + 1]) continue;
+      // g: last grounded node, a and b: the next two suspended nodes going away from it.
+      const int g = grounded[i] ? i : i + 1;
+      const int dir = grounded[i] ? 1 : -1;
+      const int a = g + dir, b = g + 2 * dir;
+      double td = s.arcLength[g];
+      if (b >= 0 && b < n) {
+        const double ra = std::sqrt(height(a)), rb = std::sqrt(height(b));
+        if (rb > ra) {
+          const double sa = s.arcLength[a], sb = s.arcLength[b];
+          const double estimate = sa - ra * (sb - sa) / (rb - ra);
+          // The last grounded node may already be lifting (the penalty seabed lets it rest a hair
+          // above the contact level): the touchdown may lie up to one element before it.
+          const int before = std::clamp(g - dir, 0, n - 1);
+          td = std::clamp(estimate, std::min(s.arcLength[before], sa), std::max(s.arcLength[before], sa));
+        }
       }
+      s.touchdownArcLength = td;
+      break;
     }
     out.push_back(std::move(s));
   }

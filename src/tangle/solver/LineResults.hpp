@@ -19,9 +19,31 @@ struct LineSnapshot {
   std::vector<double> bendingMoment; ///< magnitude of the bending moment [N m] (0 for cables)
   std::vector<Vec3> bendingMomentVector;  ///< bending moment vector, global axes [N m]
   std::vector<double> curvature;     ///< [1/m]: M/EI for beams, discrete geometric curvature for cables
-  Vec3 endForceA = Vec3::Zero();     ///< force the line exerts on its end-A support, global axes [N]
-  Vec3 endForceB = Vec3::Zero();     ///< force the line exerts on its end-B support [N]
-  double touchdownArcLength = -1.0;  ///< arc length from end A of the touchdown point [m], -1 if none
+  std::vector<double> torque;        ///< torsional moment about the line axis [N m] (0 for cables)
+  std::vector<Vec3> rotation;        ///< orientation of the node triad as a rotation vector from the global
+                                     ///< axes [deg] (zero for cable nodes, which carry no rotation)
+  /// End tension: the effective tension at the end point itself [N], the one definition used by the
+  /// terminal, summary.json and end_forces.csv. The element force vectors (tension along each chord) are
+  /// taken at the element mid-points and extrapolated linearly in unstretched arc length to the end
+  /// node (exact for a uniform catenary, whose force vector is linear in arc length); the element next
+  /// to it is used only when no point load sits between the two (same line type, no attachment).
+  double endTensionA = 0.0;
+  double endTensionB = 0.0;
+  /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N]:
+  /// the extrapolated force vector above, pointing from the end into the line; |endTensionForceA| =
+  /// endTensionA. At a free end with nothing attached both are ~0.
+  Vec3 endTensionForceA = Vec3::Zero();
+  Vec3 endTensionForceB = Vec3::Zero();
+  /// Support reaction at the end node: minus the out-of-balance force there, global axes [N]. Differs from
+  /// the end tension by the loads lumped on the end node itself (half an element of weight, drag, inertia,
+  /// seabed contact); kept for equilibrium checks.
+  Vec3 endForceA = Vec3::Zero();
+  Vec3 endForceB = Vec3::Zero();
+  /// Arc length from end A of the touchdown point [m], -1 if none. Interpolated between the last grounded
+  /// and the first suspended node: the height above the seabed grows quadratically from a tangent
+  /// touchdown, so sqrt(height) of the next two suspended nodes is extrapolated linearly to zero (clamped
+  /// to the element).
+  double touchdownArcLength = -1.0;
   int seabedNodes = 0;               ///< nodes in contact with the seabed
 };
 

@@ -40,6 +40,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   state.time = 0.0;
   stepper.initialize(state);
   if (m_observer) m_observer(state, stepper.lastForce());
+  if (m_stepObserver) m_stepObserver(state, 0.0);
 
   const double duration = m_settings.duration;
   const double nominal = m_settings.timeStep;
@@ -94,8 +95,10 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       dt = std::min(nominal, 2.0 * dt);
       successes = 0;
     }
-    if (state.time >= nextOutput - eps) {
-      state.time = nextOutput;  // land exactly (the step was cut to reach it)
+    const bool output = state.time >= nextOutput - eps;
+    if (output) state.time = nextOutput;  // land exactly (the step was cut to reach it)
+    if (m_stepObserver) m_stepObserver(state, h);
+    if (output) {
       if (m_observer) m_observer(state, stepper.lastForce());
       ++outputIndex;
       nextOutput = std::min(static_cast<double>(outputIndex) * out, duration);

@@ -31,6 +31,9 @@ class DynamicAnalysis {
   /// Called at t = 0 and at every output time with the state and the out-of-balance force (whose
   /// values at constrained DOFs are the support reactions).
   using Observer = std::function<void(const model::State&, const VecX& force)>;
+  /// Called at t = 0 (dt = 0) and after every accepted step with the step length dt [s]: extremes and
+  /// range graphs must see every step, not only the output times (a short impact falls between them).
+  using StepObserver = std::function<void(const model::State&, double dt)>;
   /// Returns the largest step [s] allowed from this state (e.g. contact approach), or +inf.
   using StepLimiter = std::function<double(const model::State&)>;
   /// Called after each accepted step (path-dependent models commit their state here; an impact model
@@ -45,6 +48,7 @@ class DynamicAnalysis {
   void setObserver(Observer observer) { m_observer = std::move(observer); }
   void setStepLimiter(StepLimiter limiter) { m_limiter = std::move(limiter); }
   void setStepHook(StepHook hook) { m_hook = std::move(hook); }
+  void setStepObserver(StepObserver observer) { m_stepObserver = std::move(observer); }
   void setStepValidator(StepValidator validator) { m_validator = std::move(validator); }
   /// Adds held nodes whose motion is imposed by other parts of the model (vessels).
   void addPrescribed(std::vector<PrescribedNode> nodes) {
@@ -62,6 +66,7 @@ class DynamicAnalysis {
   Observer m_observer;
   StepLimiter m_limiter;
   StepHook m_hook;
+  StepObserver m_stepObserver;
   StepValidator m_validator;
   std::vector<PrescribedNode> m_extraPrescribed;
   bool m_progress = false;

@@ -1,9 +1,17 @@
 #pragma once
 /// @file PrescribedMotion.hpp
 /// Prescribed displacement of a held line end about its initial position: ramped harmonic motion
-/// or a time-history table (linear interpolation, held at its last value).
+/// or a time-history table, held at its first value before the table and its last value after it.
+/// Table interpolation:
+///  - linear (default): displacement piecewise linear; velocity the slope of the segment that *ends*
+///    at or after t (left-continuous: at a row time the velocity of the segment that led there, so the
+///    step arriving at a row sees the motion it made, and the last row keeps the last segment's
+///    velocity instead of dropping to zero); acceleration zero;
+///  - cubic: clamped cubic spline through the rows with zero velocity at the first and last row (the
+///    motion is held outside the table), so displacement, velocity and acceleration are continuous.
 
 #include <functional>
+#include <vector>
 
 #include "tangle/core/Types.hpp"
 #include "tangle/model/ModelSpec.hpp"
@@ -26,13 +34,15 @@ class PrescribedMotion {
  public:
   /// @param spec harmonic amplitude/period/phase or table
   /// @param rampTime start-up ramp duration [s] (harmonic motion only; a table is used as given)
-  PrescribedMotion(const model::EndMotionSpec& spec, double rampTime) : m_spec(spec), m_rampTime(rampTime) {}
+  PrescribedMotion(const model::EndMotionSpec& spec, double rampTime);
   /// Motion at time t [s].
   MotionValue at(double t) const;
 
  private:
+  MotionValue tableAt(double t) const;
   model::EndMotionSpec m_spec;
   double m_rampTime;
+  std::vector<Vec3> m_second;  ///< spline second derivatives at the rows [m/s^2] (cubic tables)
 };
 
 }  // namespace tangle::time

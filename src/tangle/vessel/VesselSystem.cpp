@@ -299,6 +299,37 @@ VecX VesselSystem::endConnectionForces(const model::State& state, double time) c
   return all;
 }
 
+std::vector<VesselSystem::TensionerReading> VesselSystem::tensionerReadings(const model::State& state,
+                                                                           double time) const {
+  std::vector<TensionerReading> out;
+  for (const Connection& c : m_connections) {
+    if (!c.tensioner.enabled) continue;
+    const VesselData& d = m_vessels[c.vessel];
+    double stroke = 0.0;
+    if (d.spec->mode == model::VesselMode::Free) {
+      // Same stroke as addLink: along the vessel's z axis from the mid-stroke point.
+      const Mat3& rotation = state.triad[d.node];
+      const Vec3 p = state.position[d.node] + rotation * c.offset +
+                     raoPointMotion(c.vessel, rotation, c.offset, time).displacement;
+      stroke = -(state.position[c.node] - p).dot(rotation * Vec3::UnitZ());
+    } else {
+      const time::MotionValue pose = prescribedPose(c.vessel, time);
+      const Vec3 p = d.position0 + pose.displacement + pose.rotation * c.offset +
+                     raoPointMotion(c.vessel, pose.rotation, c.offset, time).displacement;
+      stroke = p.z() - state.position[c.node].z();
+    }
+    TensionerReading r;
+    r.line = m_model->lineOfNode(c.node);
+    r.end = c.node == m_model->lines()[r.line].firstNode ? 0 : 1;
+    r.stroke = stroke;
+    r.halfStroke = 0.5 * c.tensioner.stroke;
+    r.force = tensionerForce(c.tensioner, stroke).force;
+    r.stopForce = r.force - c.tensioner.tension;
+    out.push_back(r);
+  }
+  return out;
+}
+
 void VesselSystem::addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
                            VecX* out) {
   const model::DofMap& dofs = m_model->dofs();

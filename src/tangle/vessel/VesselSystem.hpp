@@ -41,6 +41,18 @@ class VesselSystem final : public solver::LoadContributor {
   /// full DOF vector; subtracting it from F leaves at those nodes the force of the line on the vessel.
   VecX endConnectionForces(const model::State& state, double time) const;
 
+  /// State of one tensioner (issue 13: a tensioner resting on its stop must show in the results).
+  struct TensionerReading {
+    int line = 0;          ///< line index
+    int end = 0;           ///< 0: end A, 1: end B
+    double stroke = 0.0;   ///< displacement from mid-stroke along the tensioner axis, positive down/out [m]
+    double halfStroke = 0.0;  ///< stroke / 2: |stroke| beyond it rests on an end stop [m]
+    double force = 0.0;    ///< force of the tensioner on the line end along its axis [N]
+    double stopForce = 0.0;  ///< part of `force` carried by the end stop (force - nominal tension) [N]
+  };
+  /// The tensioners' strokes and forces at a state.
+  std::vector<TensionerReading> tensionerReadings(const model::State& state, double time) const;
+
   /// True when the model has any vessel.
   bool empty() const { return m_vessels.empty(); }
 

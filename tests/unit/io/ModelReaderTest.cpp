@@ -4,7 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
+#include <future>
+#include <memory>
+#include <thread>
 #include <string>
 #include <utility>
 #include <vector>
@@ -172,6 +178,8 @@ line_types:
     added_mass_normal: 0.9
     added_mass_axial: 0.5
     axial_damping: 1000
+vessels:
+  - {name: fpso, mode: fixed, position: [0, 0, 0]}
 lines:
   - name: mooring1
     contact: false
@@ -522,7 +530,7 @@ TEST(ModelReaderErrors, MissingLineTypeMass) {
 
 TEST(ModelReaderErrors, StringWhereNumberExpected) {
   expectEditError("length: 200", "length: long", "length: long", "lines[moor].sections[0].length",
-                  "expected a number > 0 (unstretched length in m), got long");
+                  "expected a number > 0 and <= 100000 (unstretched length in m), got long");
 }
 
 TEST(ModelReaderErrors, QuotedNumberIsAString) {
@@ -583,7 +591,7 @@ TEST(ModelReaderErrors, UnknownIntegrator) {
 
 TEST(ModelReaderErrors, NegativeLength) {
   expectEditError("length: 200", "length: -5", "length: -5", "lines[moor].sections[0].length",
-                  "expected a number > 0 (unstretched length in m), got -5");
+                  "expected a number > 0 and <= 100000 (unstretched length in m), got -5");
 }
 
 TEST(ModelReaderErrors, ZeroLength) {
@@ -607,18 +615,18 @@ TEST(ModelReaderErrors, NonIntegerElements) {
 
 TEST(ModelReaderErrors, NegativeAttachmentMass) {
   expectEditError("        mass: 1000", "        mass: -1000", "mass: -1000",
-                  "lines[moor].attachments[0].mass", "expected a number >= 0, got -1000");
+                  "lines[moor].attachments[0].mass", "expected a number >= 0 and <= 10000000000, got -1000");
 }
 
 TEST(ModelReaderErrors, ZeroDiameter) {
   expectEditError("    outer_diameter: 0.3", "    outer_diameter: 0", "outer_diameter: 0\n",
-                  "line_types[pipe].outer_diameter", "expected a number > 0, got 0");
+                  "line_types[pipe].outer_diameter", "expected a number > 0 and <= 20 (in m), got 0");
 }
 
 TEST(ModelReaderErrors, NegativeBendingStiffness) {
   expectEditError("bending_stiffness: 1.0e7", "bending_stiffness: -1",
                   "bending_stiffness:", "line_types[pipe].bending_stiffness",
-                  "expected a number >= 0, got -1");
+                  "expected a number >= 0 and <= 10000000000000, got -1");
 }
 
 TEST(ModelReaderErrors, SpectralRadiusOutsideZeroOne) {
@@ -628,7 +636,7 @@ TEST(ModelReaderErrors, SpectralRadiusOutsideZeroOne) {
 
 TEST(ModelReaderErrors, ZeroTimeStep) {
   expectEditError("time_step: 0.01", "time_step: 0", "time_step:", "dynamics.time_step",
-                  "expected a number > 0, got 0");
+                  "expected a number > 0 and <= 100, got 0");
 }
 
 TEST(ModelReaderErrors, NegativeDuration) {
@@ -787,7 +795,7 @@ TEST(ModelReaderErrors, NegativeCurrentSpeed) {
 
 TEST(ModelReaderErrors, AiryWaveWithoutPeriod) {
   expectEditError("    period: 10.0\n", "", "  waves:", "environment.waves.period",
-                  "missing required key 'period'; expected a number > 0 (required for waves of type airy)");
+                  "missing required key 'period'; expected a number > 0 and <= 100 (required for waves of type airy)");
 }
 
 TEST(ModelReaderErrors, JonswapWithoutPeakPeriod) {
@@ -795,7 +803,7 @@ TEST(ModelReaderErrors, JonswapWithoutPeakPeriod) {
                                   "    type: jonswap\n    significant_height: 4.0\n");
   expectInputError(
       yaml, "  waves:", "environment.waves.peak_period",
-      "missing required key 'peak_period'; expected a number > 0 (required for waves of type jonswap)");
+      "missing required key 'peak_period'; expected a number > 0 and <= 100 (required for waves of type jonswap)");
 }
 
 TEST(ModelReaderErrors, WaveKeyOfAnotherWaveType) {
@@ -851,9 +859,112 @@ TEST(ModelReaderErrors, TwoDocumentsInOneFile) {
     readModelString(yaml, kSource);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(e.line(), lineOf(yaml, "title: second"));
+    EXPECT_EQ(e.line(), lineOf(yaml, "title: second") - 1);  // the '---' that starts it
     EXPECT_NE(std::string(e.what()).find("single YAML document"), std::string::npos) << e.what();
   }
+}
+
+/// Reads `yaml` on a separate thread and aborts the test program if that takes more than 20 s: a reader
+/// that loops (yaml-cpp 0.7's LoadAll on a stray ',') must fail the test, not stall the suite.
+void expectRefusedWithoutHanging(const std::string& yaml) {
+  auto done = std::make_shared<std::promise<std::string>>();
+  std::future<std::string> result = done->get_future();
+  std::thread([yaml, done] {
+    try {
+      readModelString(yaml, kSource);
+      done->set_value("accepted");
+    } catch (const InputError& e) {
+      done->set_value(std::string("InputError: ") + e.what());
+    } catch (const std::exception& e) {
+      done->set_value(std::string("other exception: ") + e.what());
+    }
+  }).detach();
+  if (result.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
+    std::fprintf(stderr, "the reader hangs on input '%s'\n", yaml.c_str());
+    std::abort();
+  }
+  const std::string outcome = result.get();
+  EXPECT_EQ(outcome.rfind("InputError: ", 0), 0u) << "input '" << yaml << "': " << outcome;
+}
+
+TEST(ModelReaderErrors, StrayCommaDoesNotHang) {
+  // The 2-byte file of the issue, and stray flow characters after a valid document.
+  for (const std::string yaml : {",", ",\n", "[a, b],", "{a: 1} ,", "title: x\n...\n,", "]", "}"}) {
+    SCOPED_TRACE(yaml);
+    expectRefusedWithoutHanging(yaml);
+  }
+  expectRefusedWithoutHanging(kBaseModel + ",\n");
+}
+
+TEST(ModelReaderErrors, DeepNestingIsRefused) {
+  expectRefusedWithoutHanging("title: " + std::string(100000, '['));
+  expectRefusedWithoutHanging("title: " + std::string(100000, '{'));
+}
+
+TEST(ModelReaderErrors, HugeFileIsRefused) {
+  try {
+    readModelString(std::string(65u << 20, '#'), kSource);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bytes"), std::string::npos) << e.what();
+  }
+}
+
+// Issue 13: values that passed the reader and failed deep in the solver, or gave nonsense.
+TEST(ModelReaderBounds, AbsurdValuesAreRefusedNamingTheKey) {
+  expectEditError("length: 200", "length: 1e300", "length: 1e300", "lines[moor].sections[0].length",
+                  "<= 100000");
+  expectEditError("axial_stiffness: 5.8e8", "axial_stiffness: 1e300", "axial_stiffness: 1e300",
+                  "line_types[chain].axial_stiffness", "<= 10000000000000");
+  expectEditError("position: [400, 0, -100]", "position: [1e300, 0, -100]", "position: [1e300", "lines[moor].end_a.position",
+                  "coordinates within");
+}
+
+TEST(ModelReaderBounds, HugeJonswapComponentCountIsRefused) {
+  const std::string yaml = edited(edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
+                                         "    type: jonswap\n    significant_height: 2.0\n    peak_period: 10.0\n"
+                                         "    components: 2000000000\n"),
+                                  "", "");
+  expectInputError(yaml, "components: 2000000000", "environment.waves.components", "<= 10000");
+}
+
+TEST(ModelReaderBounds, TenMillionElementsAreRefusedWithTheMemoryTheyNeed) {
+  expectEditError("elements: 20", "elements: 10000000", "elements: 10000000", "lines[moor].sections[0].elements",
+                  "GB of memory");
+}
+
+TEST(ModelReaderBounds, AnchorAboveTheWaterIsRefused) {
+  expectEditError("      type: anchored\n      position: [400, 0, -100]", "      type: anchored\n      position: [400, 0, 50]",
+                  "position: [400, 0, 50]", "lines[moor].end_a.position", "above the water surface");
+}
+
+const std::string kVesselModel = edited(kBaseModel, "lines:\n", "vessels:\n  - {name: fpso, mode: fixed, position: [0, 0, 0]}\n"
+                                                    "  - {name: tug, mode: fixed, position: [50, 0, 0]}\nlines:\n");
+
+TEST(ModelReaderBounds, UnknownVesselListsTheValidNamesAndTheKey) {
+  expectInputError(edited(kVesselModel, "      type: fixed\n      position: [20, 0, -10]\n      motion:\n        amplitude: [5, 0, 0]\n        period: 10\n",
+                          "      type: vessel\n      vessel: fspo\n      position: [20, 0, -10]\n"),
+                   "vessel: fspo", "lines[moor].end_b.vessel", "vessels defined under vessels: 'fpso', 'tug'");
+}
+
+TEST(ModelReaderBounds, VesselEndBelowTheSeabedIsRefused) {
+  expectInputError(edited(kVesselModel, "      type: fixed\n      position: [20, 0, -10]\n      motion:\n        amplitude: [5, 0, 0]\n        period: 10\n",
+                          "      type: vessel\n      vessel: fpso\n      position: [20, 0, -400]\n"),
+                   "position: [20, 0, -400]", "lines[moor].end_b.position", "below the seabed");
+}
+
+TEST(ModelReaderSanity, UnitMistakesGiveWarningsNamingTheKey) {
+  // An 18 in riser typed as 18 (inches): legal, but a diameter of metres and a floating line.
+  const ModelSpec spec = readModelString(edited(kBaseModel, "outer_diameter: 0.3", "outer_diameter: 18"), kSource);
+  ASSERT_GE(spec.warnings.size(), 2u);
+  bool diameter = false, floats = false;
+  for (const std::string& w : spec.warnings) {
+    diameter = diameter || w.find("line_types[pipe].outer_diameter") != std::string::npos;
+    floats = floats || w.find("floats") != std::string::npos;
+  }
+  EXPECT_TRUE(diameter);
+  EXPECT_TRUE(floats);
+  EXPECT_TRUE(readModelString(kBaseModel, kSource).warnings.empty());
 }
 
 TEST(ModelReaderErrors, MissingFile) {

@@ -73,6 +73,54 @@ TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
   EXPECT_NEAR(lines[0].touchdownArcLength, exact.groundedLength, element);
 }
 
+// End tension at the end point (LineSnapshot::endTensionB), issue 13: before, the reported end tension
+// was the end element's, half an element in (-2 % at 50 elements on this fairlead). Source: the closed
+// form above. Tolerance 0.05 % (the issue's bound): the extrapolation of the element force vectors is
+// exact for the polyline's linear force field, so only the O((h w / H)^2) ~ 1e-5 lumping error remains.
+TEST(EndTension, FairleadTensionAtTheEndPointMatchesClosedFormAt50Elements) {
+  constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1, kSpan = 270.0;
+  model::ModelSpec spec;
+  spec.sourceFile = "catenary end tension (test)";
+  spec.environment.waterDepth = kDepth;
+  spec.environment.seabed.normalStiffness = 1.0e7;
+  const section::LineType chain = test::cableType("chain", kDiameter, 100.0, 5.0e8);
+  spec.lineTypes[chain.name] = chain;
+  const Vec3 anchor(0.0, 0.0, -kDepth + 0.5 * kDiameter);
+  const Vec3 fairlead(kSpan, 0.0, -10.0);
+  spec.lines.push_back(test::simpleLine("chain", "chain", kLength, 50, model::EndKind::Anchored, anchor,
+                                        model::EndKind::Fixed, fairlead));
+  const double w = chain.submergedWeight(spec.environment.waterDensity, spec.environment.gravity);
+  model::Model m(std::move(spec));
+  solver::Assembler assembler(m);
+  model::State s = m.initialState();
+  solver::StaticSolver solver(assembler, m.spec().statics);
+  ASSERT_TRUE(solver.solve(s).converged);
+  VecX force;
+  solver::AssemblyRequest request;
+  request.wantMatrix = false;
+  assembler.assemble(s, request, force, nullptr);
+  const auto lines = solver::computeLineResults(m, assembler, s, force);
+
+  solver::CatenaryInput in;
+  in.span = kSpan;
+  in.height = fairlead.z() - anchor.z();
+  in.length = kLength;
+  in.weight = w;
+  in.axialStiffness = chain.axialStiffness;
+  const solver::CatenarySolution exact = solver::solveAnchoredCatenary(in);
+  const double t = exact.fairleadTension;
+  EXPECT_NEAR(lines[0].endTensionB, t, 5e-4 * t);
+  const Vec3 f = lines[0].endTensionForceB;
+  EXPECT_NEAR(f.norm(), lines[0].endTensionB, 1e-9 * t);
+  EXPECT_NEAR(std::hypot(f.x(), f.y()), exact.horizontalTension, 5e-4 * t);
+  EXPECT_NEAR(-f.z(), exact.verticalTension, 5e-4 * t);
+  // The end element's own tension is the old, half-element-in value: measurably lower, so this test
+  // would fail on it.
+  EXPECT_LT(lines[0].tension.back(), t * (1.0 - 2e-3));
+  // Touchdown interpolated between nodes: within a quarter element of the closed form (was one element).
+  EXPECT_NEAR(lines[0].touchdownArcLength, exact.groundedLength, 0.25 * kLength / 50);
+}
+
 INSTANTIATE_TEST_SUITE_P(Spans, ElasticCatenaryWithSeabed,
                          ::testing::Values(CatenaryCase{270.0, 60}, CatenaryCase{260.0, 150}),
                          [](const ::testing::TestParamInfo<CatenaryCase>& p) {
