@@ -418,6 +418,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       matrix.build(kAccepted);
       out.residual = scaledMaxNorm(r, &out.worstNode);
       stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
+      // A shift raised because the matrix could not be factorised is relaxed again (pure Newton).
+      mu = mu > 1e-6 ? 0.1 * mu : 0.0;
       // Newton may be non-monotone at first, but a residual that keeps growing is divergence.
       if (out.residual < best) {
         best = out.residual;
