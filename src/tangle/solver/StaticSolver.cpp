@@ -327,6 +327,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       continue;
     }
     out.iterations = it + 1;
+    const SparseMatrix* system = &kAccepted;
+    if (mu > 0.0) {
     k = kAccepted;
     // Fictitious mass D of the pseudo-transient term: per node, the largest diagonal stiffness of its
     // translations (and of its rotations), the same in every direction, so a direction in which the
@@ -348,8 +350,10 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       }
     }
     const double dmax = std::max(diag.maxCoeff(), 1e-12);
-    for (int i = 0; i < neq; ++i) if (mu > 0.0) k.coeffRef(i, i) += mu * std::max(diag[i], 1e-9 * dmax);
-    if (!solver.factorize(k)) {
+    for (int i = 0; i < neq; ++i) k.coeffRef(i, i) += mu * std::max(diag[i], 1e-9 * dmax);
+    system = &k;
+    }
+    if (!solver.factorize(*system)) {
       mu = std::max(1e-4, mu * 10.0);
       if (mu > kMaxShift) {
         out.failure = "the stiffness matrix is singular";
@@ -399,7 +403,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     double theta = std::numeric_limits<double>::infinity();
     if (evaluated) {
       gatherResidual(force, offset, rTrial);
-      if (rTrial.allFinite()) {
+      if (rTrial.allFinite() && (!plain || debugStatics())) {  // plain Newton does not need it
         const VecX correction = solver.solve(rTrial);
         theta = correction.norm() / std::max(scale * dq.norm(), 1e-300);
       }
