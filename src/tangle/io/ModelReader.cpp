@@ -52,7 +52,7 @@ constexpr double kMaxCoordinate = 1.0e5;        ///< |x|, |y|, |z| of any positi
 constexpr double kMaxWaterDepth = 12000.0;      ///< deeper than the deepest trench [m]
 constexpr double kMaxLineLength = 1.0e5;        ///< one section [m]
 constexpr double kMaxDiameter = 20.0;           ///< [m]; above kPlausibleDiameter only a warning
-constexpr double kPlausibleDiameter = 2.5;      ///< larger diameters are likely inches or mm [m]
+constexpr double kPlausibleDiameter = 5.0;      ///< larger diameters are likely inches or mm [m] (an LMRP or a buoyancy can may reach 4-5 m)
 constexpr double kMaxMassPerLength = 1.0e5;     ///< [kg/m]
 constexpr double kMaxStiffness = 1.0e13;        ///< EA [N], EI [N m^2], GJ [N m^2/rad]
 constexpr double kMaxCoefficient = 20.0;        ///< drag and added-mass coefficients [-]
@@ -718,11 +718,12 @@ model::EndSpec readEnd(const Value& v, const ModelSpec& spec) {
 
   if (const std::optional<Value> tensioner = m.find("tensioner")) {
     if (end.kind != EndKind::Vessel) tensioner->fail("a tensioner applies only to ends of type vessel");
-    const Map t(*tensioner, {"tension", "stroke", "stop_stiffness"});
+    const Map t(*tensioner, {"tension", "stroke", "stop_stiffness", "stiffness"});
     end.tensioner.enabled = true;
     end.tensioner.tension = t.number("tension", positiveUpTo(1.0e9));
     end.tensioner.stroke = t.number("stroke", end.tensioner.stroke, positiveUpTo(100.0));
     end.tensioner.stopStiffness = t.number("stop_stiffness", end.tensioner.stopStiffness, positiveUpTo(1.0e12));
+    end.tensioner.stiffness = t.number("stiffness", end.tensioner.stiffness, nonNegativeUpTo(1.0e12));
   }
   if (const std::optional<Value> flex = m.find("flex_joint")) {
     if (end.kind != EndKind::Vessel) flex->fail("a flex joint applies only to ends of type vessel");

@@ -124,6 +124,7 @@ struct TensionerSpec {
   double tension = 0.0;      ///< nominal tension [N]
   double stroke = 10.0;      ///< total stroke, centred on the initial position [m]
   double stopStiffness = 1e8;  ///< stiffness of the end stops [N/m]
+  double stiffness = 0.0;      ///< gas-spring stiffness within the stroke [N/m] (0: constant tension)
 };
 
 /// A rotational spring between a vessel and a line end (flex joint).

@@ -18,11 +18,13 @@ TensionerForce tensionerForce(const model::TensionerSpec& spec, double stroke) {
   check("tension", spec.tension);
   check("stroke", spec.stroke);
   check("stopStiffness", spec.stopStiffness);
+  check("stiffness", spec.stiffness);
   if (!std::isfinite(stroke)) throw Error("tensioner: the line-end stroke is not finite");
   const double half = 0.5 * spec.stroke;
-  if (stroke > half) return {spec.tension + spec.stopStiffness * (stroke - half), spec.stopStiffness};
-  if (stroke < -half) return {spec.tension + spec.stopStiffness * (stroke + half), spec.stopStiffness};
-  return {spec.tension, 0.0};
+  const double k = spec.stiffness;
+  if (stroke > half) return {spec.tension + k * half + spec.stopStiffness * (stroke - half), k + spec.stopStiffness};
+  if (stroke < -half) return {spec.tension - k * half + spec.stopStiffness * (stroke + half), k + spec.stopStiffness};
+  return {spec.tension + k * stroke, k};
 }
 
 }  // namespace tangle::vessel

@@ -324,7 +324,9 @@ std::vector<VesselSystem::TensionerReading> VesselSystem::tensionerReadings(cons
     r.stroke = stroke;
     r.halfStroke = 0.5 * c.tensioner.stroke;
     r.force = tensionerForce(c.tensioner, stroke).force;
-    r.stopForce = r.force - c.tensioner.tension;
+    // The stop carries what the gas spring does not: force - (T + k_g s) with s clamped to the stroke.
+    const double withinStroke = std::clamp(stroke, -r.halfStroke, r.halfStroke);
+    r.stopForce = r.force - (c.tensioner.tension + c.tensioner.stiffness * withinStroke);
     out.push_back(r);
   }
   return out;

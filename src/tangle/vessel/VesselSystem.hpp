@@ -48,7 +48,7 @@ class VesselSystem final : public solver::LoadContributor {
     double stroke = 0.0;   ///< displacement from mid-stroke along the tensioner axis, positive down/out [m]
     double halfStroke = 0.0;  ///< stroke / 2: |stroke| beyond it rests on an end stop [m]
     double force = 0.0;    ///< force of the tensioner on the line end along its axis [N]
-    double stopForce = 0.0;  ///< part of `force` carried by the end stop (force - nominal tension) [N]
+    double stopForce = 0.0;  ///< part of `force` carried by the end stop (force - gas-spring force T + k_g s) [N]
   };
   /// The tensioners' strokes and forces at a state.
   std::vector<TensionerReading> tensionerReadings(const model::State& state, double time) const;

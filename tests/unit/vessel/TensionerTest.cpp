@@ -29,6 +29,20 @@ TEST(Tensioner, ConstantTensionWithinStroke) {
   }
 }
 
+TEST(Tensioner, GasSpringWithinStrokeContinuousAtTheStops) {
+  model::TensionerSpec p = spec();
+  p.stiffness = 5.0e4;
+  // Within the stroke: T + k_g s (hand values).
+  EXPECT_NEAR(tensionerForce(p, -2.0).force, 2.0e6 - 1.0e5, 1e-6);
+  EXPECT_EQ(tensionerForce(p, 3.0).stiffness, 5.0e4);
+  // Beyond the lower stop (s = 5.1): T + k_g S/2 + k 0.1; stiffness k_g + k.
+  EXPECT_NEAR(tensionerForce(p, 5.1).force, 2.0e6 + 2.5e5 + 1.0e6, 1e-6);
+  EXPECT_EQ(tensionerForce(p, 5.1).stiffness, 5.0e4 + 1.0e7);
+  // Continuous at both stops (the jump over 2e-9 m is at most (k_g + k) 2e-9 plus rounding).
+  for (double stop : {-5.0, 5.0})
+    EXPECT_NEAR(tensionerForce(p, stop - 1e-9).force, tensionerForce(p, stop + 1e-9).force, 0.05);
+}
+
 TEST(Tensioner, EndStopsAddForceAndAreContinuous) {
   const model::TensionerSpec p = spec();
   // Fully extended (end 0.1 m beyond the lower stop): tension grows by k * 0.1.
