@@ -11,6 +11,7 @@
 
 #include "tangle/app/Commands.hpp"
 #include "tangle/core/Error.hpp"
+#include "tangle/core/Interrupt.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tangle: nonlinear static and dynamic analysis of offshore lines with line-to-line contact"};
@@ -40,7 +41,11 @@ int main(int argc, char** argv) {
   }
   try {
     if (*check) return tangle::app::runCheck(checkOptions);
-    if (*run) return tangle::app::runAnalysis(runOptions);
+    if (*run) {
+      // Ctrl-C ends the dynamics at the next step; every result so far (clash report included) is written.
+      tangle::core::installInterruptHandler();
+      return tangle::app::runAnalysis(runOptions);
+    }
   } catch (const tangle::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return 1;

@@ -8,6 +8,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/io/JsonWriter.hpp"
+#include "tangle/io/OutputFile.hpp"
 
 namespace tangle::contact {
 
@@ -72,8 +73,8 @@ void ClashReport::write(const fs::path& dir) const {
   const auto& lines = m_model->lines();
   const auto& events = m_contact->events();
   {
-    std::ofstream f(out / "events.csv");
-    if (!f) throw Error("cannot write " + (out / "events.csv").string());
+    io::OutputFile file(out / "events.csv");
+    std::ostream& f = file.stream();
     f << "event,line_1,line_2,start_time_s,end_time_s,arc_1_start_m,arc_2_start_m,arc_1_min_m,arc_1_max_m,"
          "arc_2_min_m,arc_2_max_m,peak_force_N,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,"
          "effective_mass_1_kg,effective_mass_2_kg,lumped_mass_1_kg,lumped_mass_2_kg,max_penetration_m,open\n";
@@ -86,15 +87,19 @@ void ClashReport::write(const fs::path& dir) const {
                        e.impactEnergy, e.effectiveMassA, e.effectiveMassB, e.lumpedMassA, e.lumpedMassB,
                        e.maxPenetration, e.open ? "true" : "false");
     }
+    file.close();
   }
   {
-    std::ofstream f(out / "event_paths.csv");
+    io::OutputFile file(out / "event_paths.csv");
+    std::ostream& f = file.stream();
     f << "event,time_s,arc_1_m,arc_2_m\n";
     for (std::size_t i = 0; i < events.size(); ++i)
       for (const auto& p : events[i].path) f << fmt::format("{},{:.6f},{:.4f},{:.4f}\n", i, p[0], p[1], p[2]);
+    file.close();
   }
   {
-    std::ofstream f(out / "clearance.csv");
+    io::OutputFile file(out / "clearance.csv");
+    std::ostream& f = file.stream();
     f << "time_s,pair,min_clearance_m,arc_1_m,arc_2_m\n";
     for (const ClearanceSample& s : m_samples) {
       const std::string pair = lines[m_pairs[s.pair][0]].name + "-" + lines[m_pairs[s.pair][1]].name;
@@ -104,9 +109,10 @@ void ClashReport::write(const fs::path& dir) const {
         f << fmt::format("{:.6f},{},inf,,\n", s.time, pair);
       }
     }
+    file.close();
   }
-  std::ofstream f(out / "summary.json");
-  io::JsonWriter j(f);
+  io::OutputFile summary(out / "summary.json");
+  io::JsonWriter j(summary.stream());
   j.beginObject();
   j.field("model", m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");
   j.field("restitution", m_contact->spec().restitution);
@@ -146,6 +152,7 @@ void ClashReport::write(const fs::path& dir) const {
   }
   j.endArray();
   j.endObject();
+  summary.close();  // every write is checked: a full disk is an OutputError naming the file
 }
 
 std::string ClashReport::terminalSummary() const {

@@ -1,5 +1,7 @@
 #include "tangle/time/DynamicAnalysis.hpp"
 
+#include "tangle/core/Interrupt.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -55,6 +57,11 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   model::State before;
   double lastStep = nominal;  // the step grows at most twofold from one step to the next
   while (state.time < duration - eps) {
+    if (core::interruptRequested()) {
+      result.message = fmt::format("dynamic analysis interrupted by the user at t = {:.4f} s", state.time);
+      result.interrupted = true;
+      break;
+    }
     double h = std::min({dt, duration - state.time, 2.0 * lastStep});
     if (m_limiter) h = std::min(h, std::max(m_settings.minTimeStep, m_limiter(state)));
     // Land exactly on output times.

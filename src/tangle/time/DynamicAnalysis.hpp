@@ -23,6 +23,7 @@ struct DynamicResult {
   long newtonIterations = 0;
   double wallSeconds = 0.0;   ///< wall-clock time of the run [s]
   std::string message;        ///< summary or the reason the run stopped (time, line, node)
+  bool interrupted = false;   ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)
 };
 
 /// Drives the time integration.
