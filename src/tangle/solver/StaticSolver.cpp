@@ -71,6 +71,19 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       result.iterations = stage.iterations;
     }
   }
+  if (!ok && budget > 0) {
+    // Last resort: the continuation again, with slack suspended cable elements starting taut.
+    model::State taut = start;
+    StaticResult stage = result;
+    if (solveFrom(taut, time, stage, budget, true)) {
+      ok = true;
+      trial = taut;
+      result = stage;
+    } else {
+      result.iterations = stage.iterations;
+      result.message = stage.message;
+    }
+  }
   for (int restart = 0; ok && restart < kMaxPerturbedRestarts; ++restart) {
     const std::vector<int> compressed = compressedBars(trial);
     if (compressed.empty()) break;
@@ -127,7 +140,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
   return result;
 }
 
-bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget) {
+bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget, bool tautStart) {
   const model::Model& model = m_assembler->model();
   const int neq = model.dofs().equationCount();
   const model::State start = state;
@@ -155,16 +168,42 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   //    EA ~ 1e9 N is a force of 1e8 N) start at their current chord, stress-free, and are paid out to
   //    their own length as lambda grows; all others keep their length. Every load is then ramped from
   //    the state the start shape balances, like a line paid out onto its final position.
+  std::string failure = full.failure;
+  if (budget > 0 && continuation(state, start, time, result, budget, tautStart, failure)) return true;
+  if (debugStatics()) std::cerr << "  continuation failed (" << failure << ")\n";
+  state = start;
+  result.message = diagnose(state, result, failure);
+  return false;
+}
+
+bool StaticSolver::continuation(model::State& state, const model::State& start, double time, StaticResult& result,
+                                int& budget, bool tautStart, std::string& failure) {
+  const model::Model& model = m_assembler->model();
+  const int neq = model.dofs().equationCount();
+  const double tolerance = result.tolerance;
+  const int perSolve = std::max(m_settings.maxIterations, 10);
+  const VecX noOffset = VecX::Zero(neq);
   state = start;
   m_assembler->beginStatics(start);
   const std::size_t elementCount = model.elements().size();
   std::vector<double> startLength(elementCount, std::numeric_limits<double>::quiet_NaN());
   {
     const std::vector<double> tension = m_assembler->elementTension(start);
+    const auto& env = model.environment();
     for (std::size_t e = 0; e < elementCount; ++e) {
       const model::LineElement& el = model.elements()[e];
-      if (tension[e] < -1e-2 * m_forceScale)
-        startLength[e] = (start.position[el.node2] - start.position[el.node1]).norm();
+      const double chord = (start.position[el.node2] - start.position[el.node1]).norm();
+      if (tension[e] < -1e-2 * m_forceScale) {
+        startLength[e] = chord;
+      } else if (tautStart && el.bar && chord <= el.restLength * (1.0 + 1e-5)) {
+        // A slack suspended cable element (the analytic shape of a multi-section line is built on one
+        // equivalent section, so some sections come out slightly short) has no stiffness across itself;
+        // a current across the line then meets a singular tangent. In this second attempt it starts at a
+        // strain of 1e-4, taut, and the length continuation takes that away again.
+        const double lowest = std::min(start.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1],
+                                       start.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2]);
+        if (lowest > -env.waterDepth + 1e-3) startLength[e] = chord / (1.0 + 1e-4);
+      }
     }
   }
   auto lengthsAt = [&](double lambda) {
@@ -194,7 +233,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   gatherResidual(force, noOffset, r0);
   double reached = 0.0;
   double increment = 0.125;
-  std::string lastFailure = full.failure;
+  std::string lastFailure = failure;
   while (reached < 1.0 && budget > 0) {
     const double target = std::min(1.0, reached + increment);
     model::State trial = state;
@@ -225,7 +264,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
     }
   }
   if (reached >= 1.0) return true;
-  result.message = diagnose(state, result, lastFailure);
+  failure = lastFailure;
   return false;
 }
 

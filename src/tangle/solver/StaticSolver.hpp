@@ -60,7 +60,12 @@ class StaticSolver {
     std::string failure;  // why it stopped, when not converged
   };
   /// One attempt from `start` towards the full load, with continuation when needed.
-  bool solveFrom(model::State& state, double time, StaticResult& result, int& budget);
+  /// `tautStart`: see continuation().
+  bool solveFrom(model::State& state, double time, StaticResult& result, int& budget, bool tautStart = false);
+  /// Stage 2: the homotopy from `start` (see the file comment); `tautStart` also starts slack suspended cable
+  /// elements at a small strain. On failure `failure` says why.
+  bool continuation(model::State& state, const model::State& start, double time, StaticResult& result, int& budget,
+                    bool tautStart, std::string& failure);
   /// Newton (trust region) at a fixed load fraction; `offset` is (1 - lambda) r(q0) over the equations.
   enum class NewtonMode { Plain, Merit, Natural };
   /// Plain: every step that can be evaluated is taken (full Newton within the displacement caps; fails
