@@ -58,7 +58,7 @@ class FlatSeabed {
   double depth() const { return m_depth; }  ///< [m]
 
   /// Penetration over which the normal reaction sets in smoothly (C1 quadratic onset) [m].
-  static constexpr double kSmoothPenetration = 0.005;
+  static constexpr double kSmoothPenetration = 0.002;
 
  private:
   model::SeabedSpec m_spec;
