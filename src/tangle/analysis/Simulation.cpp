@@ -47,6 +47,11 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   return solver::computeLineResults(*m_model, *m_assembler, m_state, force);
 }
 
+std::vector<solver::LineSnapshot> Simulation::sectionSnapshot() const {
+  const VecX noReactions = VecX::Zero(m_model->dofs().fullDofCount());
+  return solver::computeLineResults(*m_model, *m_assembler, m_state, noReactions);
+}
+
 time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress,
                                             const time::DynamicAnalysis::StepObserver& stepObserver) {
   time::DynamicAnalysis dynamics(*m_assembler, m_model->spec().dynamics);

@@ -38,6 +38,10 @@ class Simulation {
   solver::StaticResult solveStatics();
   /// Results along every line at the current state.
   std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
+  /// The same results without the support reactions (endForceA/B are zero): tensions, moments,
+  /// curvatures and end tensions come from the elements alone, so no force assembly is needed. For
+  /// per-step work such as range graphs, where a full assembly per step would be wasted.
+  std::vector<solver::LineSnapshot> sectionSnapshot() const;
   /// Runs the dynamic analysis from the current state (the static equilibrium); `observer` gets every
   /// output time, `stepObserver` (optional) every accepted step. `progress` prints a progress line on stderr.
   time::DynamicResult runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress = false,

@@ -312,7 +312,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
         },
         !options.quiet,
         [&](const model::State& s, double dt) {
-          recorder.accumulate(sim.snapshot(true), dt);
+          recorder.accumulate(sim.sectionSnapshot(), dt);  // ranges need no support reactions
           if (tensionerFile) {
             // Every step: a tensioner touching its stop between two output times must show.
             const auto readings = vessels->tensionerReadings(s, s.time);

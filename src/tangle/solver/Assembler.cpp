@@ -43,6 +43,18 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
   m_committedXY.assign(n, Vec2::Zero());
 }
 
+const element::Bar& Assembler::barOf(std::size_t e, std::optional<element::Bar>& copy) const {
+  const model::LineElement& el = m_model->elements()[e];
+  if (m_restLength.empty() || std::isnan(m_restLength[e])) return *el.bar;
+  return copy.emplace(el.bar->axialStiffness(), m_restLength[e]);
+}
+
+const element::CorotationalBeam& Assembler::beamOf(std::size_t e, std::optional<element::CorotationalBeam>& copy) const {
+  const model::LineElement& el = m_model->elements()[e];
+  if (m_restLength.empty() || std::isnan(m_restLength[e])) return *el.beam;
+  return copy.emplace(el.beam->properties(), m_restLength[e]);
+}
+
 double Assembler::roundoffFloor(const model::State& state) const {
   constexpr double eps = std::numeric_limits<double>::epsilon();
   double floor = 0.0;
@@ -98,17 +110,17 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     const model::LineElement& el = m_model->elements()[e];
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
-    const bool modified = !m_restLength.empty() && !std::isnan(m_restLength[e]);
+    std::optional<element::Bar> barCopy;
+    std::optional<element::CorotationalBeam> beamCopy;
     if (el.bar) {
       Vec6 f;
       Mat6 k;
-      const element::Bar& bar = modified ? element::Bar(el.bar->axialStiffness(), m_restLength[e]) : *el.bar;
+      const element::Bar& bar = barOf(e, barCopy);
       // A cable carries no compression (chain and wire rope buckle at once; MoorDyn's segments likewise):
       // a slack bar keeps LineType::compressionFactor (1e-6) of its EA, enough to keep the tangent
       // regular, so a compressed straight line is not an equilibrium and statics finds the shape that
       // hangs (or floats) in tension. Statics may raise the factor for a while (m_slackFactor).
-      bar.compute(state.position[el.node1], state.position[el.node2], f, k,
-                  std::max(el.type->compressionFactor, m_slackFactor));
+      bar.compute(state.position[el.node1], state.position[el.node2], f, k, compressionFactor(el));
       const int map[6] = {d1, d1 + 1, d1 + 2, d2, d2 + 1, d2 + 2};
       if (beta > 0.0) {
         Vec6 v;
@@ -121,8 +133,7 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     } else {
       Vec12 f;
       Mat12 k;
-      const element::CorotationalBeam& beam =
-          modified ? element::CorotationalBeam(el.beam->properties(), m_restLength[e]) : *el.beam;
+      const element::CorotationalBeam& beam = beamOf(e, beamCopy);
       beam.compute(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2], f,
                    matrix || beta > 0.0 ? &k : nullptr);
       const int map[12] = {d1, d1 + 1, d1 + 2, d1 + 3, d1 + 4, d1 + 5, d2, d2 + 1, d2 + 2, d2 + 3, d2 + 4, d2 + 5};
@@ -275,14 +286,13 @@ std::vector<double> Assembler::elementTension(const model::State& state) const {
   t.reserve(m_model->elements().size());
   for (std::size_t e = 0; e < m_model->elements().size(); ++e) {
     const model::LineElement& el = m_model->elements()[e];
-    const bool modified = !m_restLength.empty() && !std::isnan(m_restLength[e]);
+    std::optional<element::Bar> barCopy;
+    std::optional<element::CorotationalBeam> beamCopy;
     if (el.bar) {
-      const element::Bar& bar = modified ? element::Bar(el.bar->axialStiffness(), m_restLength[e]) : *el.bar;
-      t.push_back(bar.axialForce(state.position[el.node1], state.position[el.node2],
-                                 std::max(el.type->compressionFactor, m_slackFactor)));
+      const element::Bar& bar = barOf(e, barCopy);
+      t.push_back(bar.axialForce(state.position[el.node1], state.position[el.node2], compressionFactor(el)));
     } else {
-      const element::CorotationalBeam& beam =
-          modified ? element::CorotationalBeam(el.beam->properties(), m_restLength[e]) : *el.beam;
+      const element::CorotationalBeam& beam = beamOf(e, beamCopy);
       t.push_back(beam
                       .sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2],
                                       state.triad[el.node2])

@@ -5,7 +5,9 @@
 /// picks the factors of its integrator; statics uses kf = 1, cf = 0). Inertia is kept apart
 /// (addMass) because integrators combine it differently. State gather/scatter is not done here.
 
+#include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -124,6 +126,14 @@ class Assembler {
   void addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
                        const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const;
   void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+  /// Element e's bar or beam, or, under the statics length continuation (setRestLengths), a copy with the
+  /// overriding unstretched length built in `copy`; no copy in the common case.
+  const element::Bar& barOf(std::size_t e, std::optional<element::Bar>& copy) const;
+  const element::CorotationalBeam& beamOf(std::size_t e, std::optional<element::CorotationalBeam>& copy) const;
+  /// Fraction of EA a slack cable element keeps: its type's, raised to the statics continuation's bound.
+  double compressionFactor(const model::LineElement& el) const {
+    return std::max(el.type->compressionFactor, m_slackFactor);
+  }
 
   const model::Model* m_model;
   std::vector<LoadContributor*> m_contributors;

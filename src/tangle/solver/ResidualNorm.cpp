@@ -6,13 +6,15 @@
 
 namespace tangle::solver {
 
-double residualNorm(const model::Model& model, const VecX& residual, ResidualIndexing indexing, int* worstNode) {
+double residualNorm(const model::Model& model, const VecX& residual, ResidualIndexing indexing, int* worstNode,
+                    double lineMomentLever) {
   const model::DofMap& dofs = model.dofs();
   double worst = 0.0;
   int node = -1;
   for (int n = 0; n < dofs.nodeCount(); ++n) {
     const int d = dofs.firstDof(n);
-    const double lref = std::max(model.momentScale(n), 1e-6);
+    const double lref = lineMomentLever > 0.0 && model.lineOfNode(n) >= 0 ? lineMomentLever
+                                                                           : std::max(model.momentScale(n), 1e-6);
     for (int k = 0; k < dofs.dofCount(n); ++k) {
       const int eq = dofs.equation(d + k);
       if (eq < 0) continue;

@@ -15,7 +15,10 @@ enum class ResidualIndexing {
 };
 
 /// Largest |residual| over the free DOFs [N] (moments divided by the node's moment scale); NaN if any entry
-/// is NaN. `worstNode` (optional) receives the node where it occurs.
-double residualNorm(const model::Model& model, const VecX& residual, ResidualIndexing indexing, int* worstNode);
+/// is NaN. `worstNode` (optional) receives the node where it occurs. `lineMomentLever` [m], when > 0,
+/// replaces the moment scale of line nodes (statics compares moments over a fixed lever, so that the test
+/// does not tighten as elements get shorter); vessel nodes keep theirs.
+double residualNorm(const model::Model& model, const VecX& residual, ResidualIndexing indexing, int* worstNode,
+                    double lineMomentLever = 0.0);
 
 }  // namespace tangle::solver

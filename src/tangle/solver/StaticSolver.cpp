@@ -10,6 +10,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/solver/LinearSolver.hpp"
+#include "tangle/solver/ResidualNorm.hpp"
 
 namespace tangle::solver {
 
@@ -85,14 +86,13 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     }
   }
   for (int restart = 0; ok && restart < kMaxPerturbedRestarts; ++restart) {
-    const std::vector<int> compressed = compressedBars(trial);
-    if (compressed.empty()) break;
-    // A line without bending stiffness in compression is on an unstable branch (e.g. a buoyant cable
+    const std::vector<int> slackElements = slackSuspendedBars(trial);
+    if (slackElements.empty()) break;
+    // A slack line without bending stiffness is on an unstable or indifferent branch (e.g. a buoyant cable
     // pushed straight): start again from a shape bulged the way its load pushes it.
-    if (debugStatics()) std::cerr << fmt::format("  {} bar elements in compression: restart from a bulged shape\n", compressed.size());
-    model::State bulged = trial;
-    perturbCompressed(bulged, compressed);
-    model::State again = bulged;
+    if (debugStatics()) std::cerr << fmt::format("  {} slack cable elements: restart from a bulged shape\n", slackElements.size());
+    model::State again = trial;
+    bulgeSlackRuns(again, slackElements);
     StaticResult second = result;
     if (solveFrom(again, time, second, budget)) {
       trial = again;
@@ -102,15 +102,15 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     }
   }
   if (ok) {
-    const std::vector<int> compressed = compressedBars(trial);
-    if (!compressed.empty()) {
-      const int e = compressed.front();
+    const std::vector<int> slackElements = slackSuspendedBars(trial);
+    if (!slackElements.empty()) {
+      const int e = slackElements.front();
       const auto& el = model.elements()[e];
       result.warnings.push_back(fmt::format(
           "{} suspended cable element(s) are slack (shorter than unstretched) at the static equilibrium (first at "
           "{}): a line without bending stiffness cannot carry compression; check the line length against the "
           "distance between its ends, or give the section a bending_stiffness",
-          compressed.size(), model.describeNode(el.node1)));
+          slackElements.size(), model.describeNode(el.node1)));
     }
     std::string why;
     for (LoadContributor* c : m_assembler->contributors()) {
@@ -331,7 +331,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   gatherResidual(force, offset, r);
   matrix.build(kAccepted);
 
-  out.residual = scaledMaxNorm(r, &out.worstNode);
+  out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
   double mu = 0.0;
   int stalled = 0;
   double best = out.residual;
@@ -361,7 +361,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       m_assembler->assemble(state, request, force, &matrix);
       gatherResidual(force, offset, r);
       matrix.build(kAccepted);
-      out.residual = scaledMaxNorm(r, &out.worstNode);
+      out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
       stalled = 0;
       continue;
     }
@@ -450,79 +450,56 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     if (debugStatics())
       std::cerr << fmt::format("    it {:3d} |r| {:.4e} step {:.3e} scale {:.3g} mu {:.2e} theta {:.3g}\n", it,
                                out.residual, scale * largestT, scale, mu, theta);
-    if (plain) {
-      if (!evaluated || !rTrial.allFinite()) {
-        out.failure = "an element folds or the out-of-balance force is not finite";
-        return out;
-      }
-      const double previous = out.residual;
-      state = std::move(trial);
-      r = rTrial;
-      matrix.build(kAccepted);
-      out.residual = scaledMaxNorm(r, &out.worstNode);
-      stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
-      // A shift raised because the matrix could not be factorised is relaxed again (pure Newton).
-      mu = mu > 1e-6 ? 0.1 * mu : 0.0;
-      // Newton may be non-monotone at first, but a residual that keeps growing is divergence.
-      if (out.residual < best) {
-        best = out.residual;
-        sinceBest = 0;
-      } else if (++sinceBest > 8) {
-        out.failure = "the out-of-balance force keeps growing";
-        return out;
-      }
-      continue;
+    if (plain && (!evaluated || !rTrial.allFinite())) {
+      out.failure = "an element folds or the out-of-balance force is not finite";
+      return out;
     }
-    const bool accept = merit ? (evaluated && rTrial.allFinite() && rTrial.squaredNorm() < 100.0 * r.squaredNorm())
-                              : theta < 1.0;
-    if (accept && merit) {
-      // Pseudo-transient continuation with switched evolution relaxation: mu <- mu |r_new| / |r_old|.
-      const double ratio = rTrial.norm() / std::max(r.norm(), 1e-300);
-      const double previous = out.residual;
-      state = std::move(trial);
-      r = rTrial;
-      matrix.build(kAccepted);
-      out.residual = scaledMaxNorm(r, &out.worstNode);
-      stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
-      if (mu == 0.0) {
-        if (ratio > 1.0) mu = 1e-4;
-      } else {
-        mu *= std::clamp(ratio, 0.1, 10.0);
-        if (mu < 1e-9) mu = 0.0;
-      }
-      if (out.residual < best) {
-        best = 0.5 * out.residual;
-        sinceBest = 0;
-      } else if (++sinceBest > 25) {
-        out.failure = "the out-of-balance force stopped decreasing";
-        return out;
-      }
-      continue;
-    }
-    if (accept) {
-      const double previous = out.residual;
-      state = std::move(trial);
-      r = rTrial;
-      matrix.build(kAccepted);
-      out.residual = scaledMaxNorm(r, &out.worstNode);
-      stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
-      // Pseudo-transient shift (Kelley & Keyes 1998; implicit dynamic relaxation with fictitious masses
-      // proportional to the diagonal stiffness): relaxed as Newton contracts well, kept when it does not.
-      if (theta < 0.5) mu = mu > 1e-9 ? 0.25 * mu : 0.0;
-      if (out.residual < best) {
-        best = 0.5 * out.residual;  // "improving" means halving the largest out-of-balance force
-        sinceBest = 0;
-      } else if (++sinceBest > 40) {
-        out.failure = "the out-of-balance force stopped decreasing";
-        return out;
-      }
-    } else {
+    // Plain Newton takes every step; pseudo-transient continuation refuses a ten-fold rise of |r|_2;
+    // damped Newton needs Theta < 1.
+    const bool accept = plain || (merit ? evaluated && rTrial.allFinite() && rTrial.squaredNorm() < 100.0 * r.squaredNorm()
+                                        : theta < 1.0);
+    if (!accept) {
       ++stalled;
       mu = std::max(1e-4, mu * 10.0);
       if (mu > kMaxShift) {
         out.failure = evaluated ? "no increment reduces the Newton correction" : "elements fold for every increment tried";
         return out;
       }
+      continue;
+    }
+    const double ratio = rTrial.norm() / std::max(r.norm(), 1e-300);
+    const double previous = out.residual;
+    state = std::move(trial);
+    r = rTrial;
+    matrix.build(kAccepted);
+    out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
+    stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
+    if (plain) {
+      // A shift raised because the matrix could not be factorised is relaxed again (pure Newton).
+      mu = mu > 1e-6 ? 0.1 * mu : 0.0;
+    } else if (merit) {
+      // Pseudo-transient continuation (Kelley & Keyes 1998; implicit dynamic relaxation with fictitious
+      // masses proportional to the diagonal stiffness) with switched evolution relaxation:
+      // mu <- mu |r_new| / |r_old|, switched on when a step raises the residual.
+      if (mu == 0.0) {
+        if (ratio > 1.0) mu = 1e-4;
+      } else {
+        mu *= std::clamp(ratio, 0.1, 10.0);
+        if (mu < 1e-9) mu = 0.0;
+      }
+    } else if (theta < 0.5) {
+      mu = mu > 1e-9 ? 0.25 * mu : 0.0;  // relaxed as Newton contracts well, kept when it does not
+    }
+    // Divergence watch: plain Newton may be non-monotone at first but must improve within 8 steps; the
+    // damped variants must halve the largest out-of-balance force within 25 (40) accepted steps.
+    const double improvement = plain ? 1.0 : 0.5;
+    const int patience = plain ? 8 : (merit ? 25 : 40);
+    if (out.residual < best) {
+      best = improvement * out.residual;
+      sinceBest = 0;
+    } else if (++sinceBest > patience) {
+      out.failure = plain ? "the out-of-balance force keeps growing" : "the out-of-balance force stopped decreasing";
+      return out;
     }
   }
   out.failure = fmt::format("not converged in {} iterations", maxIterations);
@@ -535,28 +512,7 @@ void StaticSolver::gatherResidual(const VecX& force, const VecX& offset, VecX& r
   for (std::size_t i = 0; i < eqDofs.size(); ++i) r[static_cast<Eigen::Index>(i)] = force[eqDofs[i]] - offset[static_cast<Eigen::Index>(i)];
 }
 
-double StaticSolver::scaledMaxNorm(const VecX& residualEq, int* worstNode) const {
-  const model::Model& model = m_assembler->model();
-  const model::DofMap& dofs = model.dofs();
-  const auto& eqDofs = dofs.equationDofs();
-  double worst = 0.0;
-  int node = -1;
-  for (std::size_t i = 0; i < eqDofs.size(); ++i) {
-    const int dof = eqDofs[i];
-    const int n = dofs.nodeOf(dof);
-    const double s = dof - dofs.firstDof(n) < 3 ? 1.0 : (model.lineOfNode(n) >= 0 ? kLineMomentLever : model.momentScale(n));
-    const double v = std::abs(residualEq[static_cast<Eigen::Index>(i)]) / s;
-    if (!(v <= worst)) {
-      worst = v;
-      node = n;
-      if (std::isnan(v)) break;
-    }
-  }
-  if (worstNode) *worstNode = node;
-  return worst;
-}
-
-std::vector<int> StaticSolver::compressedBars(const model::State& state) const {
+std::vector<int> StaticSolver::slackSuspendedBars(const model::State& state) const {
   const model::Model& model = m_assembler->model();
   const auto& env = model.environment();
   // Cable elements carry no compression (Assembler: a slack bar keeps 1e-6 EA), so a suspended bar that
@@ -576,7 +532,7 @@ std::vector<int> StaticSolver::compressedBars(const model::State& state) const {
   return out;
 }
 
-void StaticSolver::perturbCompressed(model::State& state, const std::vector<int>& elements) const {
+void StaticSolver::bulgeSlackRuns(model::State& state, const std::vector<int>& elements) const {
   const model::Model& model = m_assembler->model();
   const auto& env = model.environment();
   const model::DofMap& dofs = model.dofs();

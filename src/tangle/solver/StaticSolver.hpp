@@ -16,7 +16,7 @@
 /// largest line weight, see Assembler::staticForceScale) and accepts a residual stalled at the
 /// round-off floor of the elements (Assembler::roundoffFloor). Seabed friction acts in statics as an
 /// elastic-plastic spring to the as-laid position, committed after every converged increment.
-/// A converged state is checked before it is reported: bar elements in compression (an unstable
+/// A converged state is checked before it is reported: slack suspended cable elements (an unstable
 /// branch for a line without bending stiffness) trigger a restart from a perturbed shape, and a state
 /// a contributor rejects (lines passed through each other) is never reported as converged.
 
@@ -76,14 +76,13 @@ class StaticSolver {
   /// Plain Newton, then the damped variants from the same start while they fail.
   NewtonOutcome newtonWithFallback(model::State& state, const VecX& offset, double time, int maxIterations,
                                    double tolerance);
-  /// Scaled out-of-balance (equations): moments divided by a 1 m lever; max-norm and the worst node.
-  double scaledMaxNorm(const VecX& residualEq, int* worstNode) const;
   /// r over the equations from the full-DOF force vector minus the homotopy offset.
   void gatherResidual(const VecX& force, const VecX& offset, VecX& r) const;
-  /// Bar elements in compression beyond the tolerance at `state` (element indices).
-  std::vector<int> compressedBars(const model::State& state) const;
-  /// A lateral bulge of the compressed runs of bar elements, in the direction of their distributed load.
-  void perturbCompressed(model::State& state, const std::vector<int>& elements) const;
+  /// Slack suspended cable elements at `state` (element indices): shorter than unstretched by more than
+  /// 1e-4, neither node on the seabed.
+  std::vector<int> slackSuspendedBars(const model::State& state) const;
+  /// A lateral bulge of the runs of `elements`, in the direction of their distributed load.
+  void bulgeSlackRuns(model::State& state, const std::vector<int>& elements) const;
   /// Failure message: where, how large, and what the user can change.
   std::string diagnose(const model::State& state, const StaticResult& result, const std::string& why) const;
 

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "support/ModelFactory.hpp"
 #include "tangle/model/Model.hpp"
@@ -22,11 +23,16 @@ struct CatenaryCase {
   int elements;
 };
 
-class ElasticCatenaryWithSeabed : public ::testing::TestWithParam<CatenaryCase> {};
+constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1;
 
-TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
-  const CatenaryCase c = GetParam();
-  constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1;
+/// The FE equilibrium of a chain anchored on the seabed with its fairlead 10 m below water, and the
+/// closed-form catenary of the same line.
+struct SolvedCatenary {
+  std::vector<solver::LineSnapshot> lines;
+  solver::CatenarySolution exact;
+};
+
+SolvedCatenary solveCatenary(double span, int elements) {
   model::ModelSpec spec;
   spec.sourceFile = "catenary (test)";
   spec.environment.waterDepth = kDepth;
@@ -34,10 +40,9 @@ TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
   spec.environment.seabed.normalStiffness = 1.0e7;
   const section::LineType chain = test::cableType("chain", kDiameter, 100.0, 5.0e8);
   spec.lineTypes[chain.name] = chain;
-  const double rest = -kDepth + 0.5 * kDiameter;  // where a node rests on the seabed
-  const Vec3 anchor(0.0, 0.0, rest);
-  const Vec3 fairlead(c.span, 0.0, -10.0);
-  spec.lines.push_back(test::simpleLine("chain", "chain", kLength, c.elements, model::EndKind::Anchored, anchor,
+  const Vec3 anchor(0.0, 0.0, -kDepth + 0.5 * kDiameter);  // where a node rests on the seabed
+  const Vec3 fairlead(span, 0.0, -10.0);
+  spec.lines.push_back(test::simpleLine("chain", "chain", kLength, elements, model::EndKind::Anchored, anchor,
                                         model::EndKind::Fixed, fairlead));
   const double w = chain.submergedWeight(spec.environment.waterDensity, spec.environment.gravity);
 
@@ -46,20 +51,26 @@ TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
   model::State s = m.initialState();
   solver::StaticSolver solver(assembler, m.spec().statics);
   const solver::StaticResult r = solver.solve(s);
-  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_TRUE(r.converged) << r.message;
   VecX force;
   solver::AssemblyRequest request;
   request.wantMatrix = false;
   assembler.assemble(s, request, force, nullptr);
-  const auto lines = solver::computeLineResults(m, assembler, s, force);
 
   solver::CatenaryInput in;
-  in.span = c.span;
+  in.span = span;
   in.height = fairlead.z() - anchor.z();
   in.length = kLength;
   in.weight = w;
   in.axialStiffness = chain.axialStiffness;
-  const solver::CatenarySolution exact = solver::solveAnchoredCatenary(in);
+  return {solver::computeLineResults(m, assembler, s, force), solver::solveAnchoredCatenary(in)};
+}
+
+class ElasticCatenaryWithSeabed : public ::testing::TestWithParam<CatenaryCase> {};
+
+TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
+  const CatenaryCase c = GetParam();
+  const auto [lines, exact] = solveCatenary(c.span, c.elements);
   ASSERT_GT(exact.groundedLength, 20.0) << "test case must have a grounded part";
 
   const Vec3 fb = lines[0].endForceB;
@@ -78,36 +89,7 @@ TEST_P(ElasticCatenaryWithSeabed, MatchesClosedForm) {
 // form above. Tolerance 0.05 % (the bound): the extrapolation of the element force vectors is
 // exact for the polyline's linear force field, so only the O((h w / H)^2) ~ 1e-5 lumping error remains.
 TEST(EndTension, FairleadTensionAtTheEndPointMatchesClosedFormAt50Elements) {
-  constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1, kSpan = 270.0;
-  model::ModelSpec spec;
-  spec.sourceFile = "catenary end tension (test)";
-  spec.environment.waterDepth = kDepth;
-  spec.environment.seabed.normalStiffness = 1.0e7;
-  const section::LineType chain = test::cableType("chain", kDiameter, 100.0, 5.0e8);
-  spec.lineTypes[chain.name] = chain;
-  const Vec3 anchor(0.0, 0.0, -kDepth + 0.5 * kDiameter);
-  const Vec3 fairlead(kSpan, 0.0, -10.0);
-  spec.lines.push_back(test::simpleLine("chain", "chain", kLength, 50, model::EndKind::Anchored, anchor,
-                                        model::EndKind::Fixed, fairlead));
-  const double w = chain.submergedWeight(spec.environment.waterDensity, spec.environment.gravity);
-  model::Model m(std::move(spec));
-  solver::Assembler assembler(m);
-  model::State s = m.initialState();
-  solver::StaticSolver solver(assembler, m.spec().statics);
-  ASSERT_TRUE(solver.solve(s).converged);
-  VecX force;
-  solver::AssemblyRequest request;
-  request.wantMatrix = false;
-  assembler.assemble(s, request, force, nullptr);
-  const auto lines = solver::computeLineResults(m, assembler, s, force);
-
-  solver::CatenaryInput in;
-  in.span = kSpan;
-  in.height = fairlead.z() - anchor.z();
-  in.length = kLength;
-  in.weight = w;
-  in.axialStiffness = chain.axialStiffness;
-  const solver::CatenarySolution exact = solver::solveAnchoredCatenary(in);
+  const auto [lines, exact] = solveCatenary(270.0, 50);
   const double t = exact.fairleadTension;
   EXPECT_NEAR(lines[0].endTensionB, t, 5e-4 * t);
   const Vec3 f = lines[0].endTensionForceB;

@@ -23,6 +23,7 @@
 
 #include "TestPaths.hpp"
 #include "support/Elastica.hpp"
+#include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/io/ModelReader.hpp"
 #include "tangle/solver/ElasticCatenary.hpp"
@@ -76,8 +77,7 @@ lines:
 }
 
 double chainWeight() {
-  const double area = M_PI / 4.0 * kChainDiameter * kChainDiameter;
-  return (kChainMass - 1025.0 * area) * 9.80665;
+  return test::cableType("chain", kChainDiameter, kChainMass, kChainEA).submergedWeight(1025.0, 9.80665);
 }
 
 struct CatenaryCase {
