@@ -19,6 +19,8 @@
 /// monotonically over [0, 100] from 1 to 2.5e-5 (minimumRestitution(); e = 0, plastic, is reached only
 /// in the limit); it is inverted here by bisection.
 
+#include <algorithm>
+
 namespace tangle::contact {
 
 /// Coefficient of restitution [-] of a clipped linear spring-dashpot impact with damping ratio zeta >= 0
@@ -43,5 +45,28 @@ inline double normalForce(double penetration, double penetrationRate, double sti
   const double f = stiffness * penetration + damping * penetrationRate;
   return f > 0.0 ? f : 0.0;
 }
+
+/// Regularised penalty law of the line-to-line part (force per unit length [N/m] at penetration p [m]):
+/// quadratic below the regularisation depth p0, linear (slope k) beyond, C1 at p0 and zero with zero
+/// slope at first touch (Meier, Wall & Popp 2017 use the same idea with the quadratic part at positive
+/// gaps; here it is on the penetration side so that no force acts while the surfaces are apart):
+///     f = k p^2 / (2 p0)      for 0 <= p <= p0
+///     f = k (p - p0 / 2)      for p > p0
+/// value() returns f, slope() df/dp.
+struct RegularisedPenalty {
+  double stiffness = 0.0;  ///< k [N/m per m]
+  double depth = 0.0;      ///< p0 [m] (> 0)
+  double value(double p) const {
+    if (p <= 0.0) return 0.0;
+    return p < depth ? 0.5 * stiffness * p * p / depth : stiffness * (p - 0.5 * depth);
+  }
+  double slope(double p) const {
+    if (p <= 0.0) return 0.0;
+    return p < depth ? stiffness * p / depth : stiffness;
+  }
+  /// Fraction of the full dashpot that acts at penetration p: ramps in linearly over p0 so the damping
+  /// force starts from zero at first touch (no jump of c v0).
+  double dampingFraction(double p) const { return p <= 0.0 ? 0.0 : std::min(1.0, p / depth); }
+};
 
 }  // namespace tangle::contact

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <iostream>
 
+#include "tangle/contact/ContactKinematics.hpp"
 #include "tangle/contact/ContactLaw.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 
@@ -67,6 +68,7 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
     m_maxRadius = std::max(m_maxRadius, m_radius.back());
   }
 
+  buildExclusions();
   BroadPhaseOptions options;
   options.selfContact = spec.selfContact;
   options.selfContactSkip = 1;
@@ -101,19 +103,6 @@ Vec3 LineContact::pointVelocity(const model::State& state, int element, double w
          w * state.velocity.segment<3>(dofs.firstDof(el.node2));
 }
 
-Vec3 LineContact::smoothTangent(const model::State& state, int element, double w) const {
-  // Nodal tangent = direction between the neighbouring nodes (central difference), interpolated.
-  const model::LineElement& el = m_model->elements()[element];
-  const model::Line& line = m_model->lines()[el.line];
-  auto nodal = [&](int node) {
-    const int prev = std::max(node - 1, line.firstNode);
-    const int next = std::min(node + 1, line.lastNode());
-    return Vec3((state.position[next] - state.position[prev]).normalized());
-  };
-  const Vec3 t = (1.0 - w) * nodal(el.node1) + w * nodal(el.node2);
-  return t.norm() > 1e-12 ? Vec3(t.normalized()) : Vec3((state.position[el.node2] - state.position[el.node1]).normalized());
-}
-
 double LineContact::arcOf(int line, int element, double w) const {
   const model::Line& l = m_model->lines()[line];
   const int i = element - l.firstElement;
@@ -136,6 +125,12 @@ void LineContact::refreshCandidates(const model::State& state) {
   options.margin = m_margin;
   m_broadPhase = BroadPhase(options);
   m_broadPhase.findPairs(m_proxies, m_candidates);
+  if (!m_zones.empty())
+    m_candidates.erase(std::remove_if(m_candidates.begin(), m_candidates.end(),
+                                      [&](const CandidatePair& c) {
+                                        return !elementPairAllowed(m_proxies[c.first].element, m_proxies[c.second].element);
+                                      }),
+                       m_candidates.end());
 }
 
 void LineContact::buildProxies(const model::State& state) {
@@ -269,16 +264,11 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     c.t = d.t;
     c.pointA = d.closest0;
     c.pointB = d.closest1;
-    // Normal. For lines crossing at an angle: n = tA x tB with tangents interpolated between nodal
-    // tangents, so n (and the force direction) stays continuous when the contact point passes a node,
-    // where the polylines have a kink; for nearly parallel lines the closest-point direction. The two
-    // are blended over crossing angles between ~3 and ~9 degrees. The sign follows the contact's
-    // previous normal (so it does not flip when centrelines cross), else points from B to A.
+    // Normal: the direction of the true closest points (never an approximate normal built from
+    // smoothed tangents, which is not the closest-point direction on curved lines and gave phantom
+    // forces at positive gaps). The sign follows the contact's previous normal, so that lines which
+    // have passed through each other are pushed back to the side they came from.
     const Vec3 diff = c.pointA - c.pointB;
-    const Vec3 ta = smoothTangent(state, c.elementA, c.s);
-    const Vec3 tb = smoothTangent(state, c.elementB, c.t);
-    Vec3 cross = ta.cross(tb);
-    const double sinAngle = cross.norm();
     const Vec3* previous = nullptr;
     for (const TrackedContact& tr : m_tracked)
       if (tr.lineA == a.line && tr.lineB == b.line && std::abs(tr.arcA - arcOf(c.lineA, c.elementA, c.s)) +
@@ -286,29 +276,30 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
                                                            2.0 * (elements[c.elementA].restLength +
                                                                   elements[c.elementB].restLength))
         previous = &tr.normal;
-    const Vec3 reference = previous ? *previous : (diff.norm() > 1e-12 ? Vec3(diff) : Vec3(Vec3::UnitZ()));
-    Vec3 nDistance = diff.norm() > 1e-12 ? Vec3(diff.normalized()) : reference.normalized();
-    // At a free end of either line (the closest point clamped at the line's first or last node) the
-    // contact is end-on-side and the crossing normal is wrong (for a line hitting another end first,
-    // tA x tB is horizontal while the lines touch vertically): the closest-point direction is used.
-    // It equals the crossing direction as long as the closest points are inside both segments, so the
-    // normal stays continuous when the point reaches the end.
+    c.sign = (previous && diff.dot(*previous) < 0.0) ? -1.0 : 1.0;
+    c.normal = diff.norm() > 1e-12 ? Vec3(c.sign * diff.normalized()) : (previous ? *previous : Vec3(Vec3::UnitZ()));
+    c.gap = c.sign * diff.norm() - a.radius - b.radius;
+    // Point-to-point weight of the ABC blending (docs/theory.md 9.3): by the crossing angle of the
+    // two elements; 1 for an end contact that the line-to-line part cannot see (both closest points
+    // at segment ends, one of them a free line end: lines meeting end to end or end to node).
     const auto atLineEnd = [&](int line, int element, double w) {
       const model::Line& l = m_model->lines()[line];
       return (element == l.firstElement && w <= 0.0) || (element == l.firstElement + l.elementCount - 1 && w >= 1.0);
     };
-    const bool endOn = atLineEnd(c.lineA, c.elementA, c.s) || atLineEnd(c.lineB, c.elementB, c.t);
-    const double blend = endOn ? 0.0 : std::clamp((sinAngle - 0.05) / 0.1, 0.0, 1.0);
-    Vec3 n = nDistance;
-    if (blend > 0.0) {
-      cross /= sinAngle;
-      if (cross.dot(reference) < 0.0) cross = -cross;
-      n = (blend * cross + (1.0 - blend) * nDistance).normalized();
+    const auto atSegmentEnd = [](double w) { return w <= 0.0 || w >= 1.0; };
+    c.sFree = !atSegmentEnd(c.s);
+    c.tFree = !atSegmentEnd(c.t);
+    const bool endContact = atSegmentEnd(c.s) && atSegmentEnd(c.t) &&
+                            (atLineEnd(c.lineA, c.elementA, c.s) || atLineEnd(c.lineB, c.elementB, c.t));
+    {
+      const model::LineElement& ea = elements[c.elementA];
+      const model::LineElement& eb = elements[c.elementB];
+      c.weight = endContact ? 1.0
+                            : pointToPointWeight(crossingAngle(state.position[ea.node1], state.position[ea.node2],
+                                                               state.position[eb.node1], state.position[eb.node2]),
+                                                 kBlendLower, kBlendUpper);
     }
-    c.normal = n;
-    // Gap measured along the normal: equal to distance - radii for crossing edges, continuous across
-    // nodes, and still meaningful (negative beyond -radii) if the centrelines pass each other.
-    c.gap = diff.dot(c.normal) - a.radius - b.radius;
+    if (c.weight <= 0.0) continue;
     const Vec3 va = pointVelocity(state, c.elementA, c.s);
     const Vec3 vb = pointVelocity(state, c.elementB, c.t);
     c.gapRate = c.normal.dot(va - vb);
@@ -337,9 +328,9 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     } else {
       c.pairMass = c.lumpedMassA * c.lumpedMassB / (c.lumpedMassA + c.lumpedMassB);
     }
-    c.stiffness = stiffness(c.lineA, c.lineB);
+    c.stiffness = c.weight * stiffness(c.lineA, c.lineB);
     const bool dashpot = dynamic && m_spec.model == model::ImpactModel::Penalty && std::isfinite(c.pairMass);
-    c.damping = dashpot ? 2.0 * m_zeta * std::sqrt(c.stiffness * c.pairMass) : 0.0;
+    c.damping = dashpot ? c.weight * 2.0 * m_zeta * std::sqrt(stiffness(c.lineA, c.lineB) * c.pairMass) : 0.0;
     // Active set (Wriggers 2006, sec. 6.1): a pair that touches becomes active and stays active for the
     // rest of the step's Newton iterations, with a linear spring even if it pulls, so Newton does not
     // cycle between "in contact" and "free"; at convergence, active pairs that pull are released
@@ -394,22 +385,26 @@ void LineContact::addForces(const model::State& state, const solver::AssemblyReq
     const Vec3 f = c.normalForce * c.normal + c.frictionForce;  // force on line A
     for (int i = 0; i < 4; ++i) force.segment<3>(dofs.firstDof(node[i])) -= w[i] * f;
     if (!matrix) continue;
-    // Tangent with the contact parameters held fixed: k n n^T from the spring, c n n^T from the
-    // dashpot, and the friction damping. The rotation of the normal is left out: for crossing lines
-    // it is cancelled by the sliding of the contact point, and elsewhere it is smaller than k by the
-    // ratio penetration / radius.
-    // Every active pair contributes its spring and dashpot (see the active set in findContacts).
+    // Consistent tangent: the spring k grad(d) grad(d)^T plus the rotation of the normal and the sliding
+    // of the closest points, -F Hess(d) (ContactKinematics.hpp; exact for the free projection
+    // parameters); the dashpot c n n^T on the velocities; the friction damping.
+    const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
+    const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
+    const DistanceKinematics kin = distanceKinematics(a0, a1, b0, b1, c.s, c.t, c.sFree, c.tFree, c.sign, true);
     const Mat3 nn = c.normal * c.normal.transpose();
-    Mat3 kBlock = request.kf * c.stiffness * nn;
+    const Mat12 block = request.kf * (c.stiffness * kin.gradient * kin.gradient.transpose() - c.normalForce * kin.hessian);
     Mat3 cBlock = request.cf * c.damping * nn;
     if (c.frictionForce.squaredNorm() > 0.0 && request.cf != 0.0) {
       cBlock += request.cf * m_spec.frictionCoefficient * c.normalForce / m_spec.frictionVelocity *
                 (Mat3::Identity() - nn);
     }
-    const Mat3 block = kBlock + cBlock;
     for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) matrix->add3x3(dofs.firstDof(node[i]), dofs.firstDof(node[j]), block, w[i] * w[j]);
+      for (int j = 0; j < 4; ++j) {
+        const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + w[i] * w[j] * cBlock;
+        matrix->add3x3(dofs.firstDof(node[i]), dofs.firstDof(node[j]), bij);
+      }
   }
+  addLineToLineForces(state, request, force, matrix);
 }
 
 bool LineContact::neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const {
@@ -549,6 +544,7 @@ bool LineContact::acceptStep(const model::State& before, const model::State& aft
 
 void LineContact::commitStep(model::State& state, double dt) {
   m_time = state.time;
+  commitFriction();
   findContacts(state, dt > 0.0, false, false);
   const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();

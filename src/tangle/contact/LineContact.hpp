@@ -18,7 +18,9 @@
 /// two neighbouring pairs report the same point) gives one force, continuous across the node.
 
 #include <limits>
+#include <array>
 #include <map>
+#include <string>
 #include <memory>
 #include <set>
 #include <utility>
@@ -47,6 +49,45 @@ struct ContactPoint {
   double stiffness = 0.0;          ///< [N/m]
   double damping = 0.0;            ///< [N s/m]
   int track = -1;                  ///< index of the committed contact it continues, -1 if new
+  double sign = 1.0;               ///< -1 when the centrelines have passed each other (normal kept)
+  bool sFree = true, tFree = true; ///< closest point inside the segment (free projection parameter)
+  double weight = 1.0;             ///< point-to-point weight of the ABC blending [-]
+};
+
+/// A Gauss point of the line-to-line (Gauss-point-to-segment) part at the current (trial) state: a point
+/// of a slave element of line A and its orthogonal projection on a master element of line B.
+struct LineSample {
+  int lineA = 0, lineB = 0;
+  int elementA = 0, elementB = 0;
+  double xi = 0.0, t = 0.0;         ///< parameters on the slave and master element [-]
+  Vec3 normal;                      ///< unit normal from B to A (closest-point direction)
+  double gap = 0.0;                 ///< surface gap [m] (< 0 in contact)
+  double gapRate = 0.0;             ///< [m/s]
+  double length = 0.0;              ///< integration weight: Gauss weight x Jacobian x (1 - ptp weight) [m]
+  double lineForce = 0.0;           ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
+  double slope = 0.0;               ///< d lineForce / d penetration [N/m^2]
+  double damping = 0.0;             ///< dashpot per unit length [N s/m^2]
+  double arcA = 0.0, arcB = 0.0;    ///< [m]
+};
+
+/// Elastic-stick friction state of the contact of one slave element with one master line.
+struct FrictionAnchor {
+  double arcA = 0.0, arcB = 0.0;    ///< material points on A and B it refers to [m]
+  Vec3 offset = Vec3::Zero();       ///< x_A(arcA) - x_B(arcB) - elastic tangential offset, at commit [m]
+};
+
+/// Line-to-line friction of one slave element with one master line at the trial state.
+struct FrictionPatch {
+  int lineA = 0, lineB = 0, elementA = 0;
+  double length = 0.0;               ///< contact length [m]
+  double normalLoad = 0.0;           ///< mean normal force per unit length [N/m]
+  Vec3 normal = Vec3::UnitZ();
+  Vec3 force = Vec3::Zero();         ///< total friction force on A [N]
+  bool slipping = false;
+  FrictionAnchor trial;              ///< anchor after the return map (committed by commitStatic/commitStep)
+  int nodeA[2] = {0, 0}, nodeB[2] = {0, 0};
+  double wA = 0.0, wB = 0.0;         ///< parameters of the anchor points on their elements
+  Vec3 elastic = Vec3::Zero();       ///< trial tangential offset delta_t [m]
 };
 
 /// A contact followed through time (committed data).
@@ -99,6 +140,19 @@ class LineContact final : public solver::LoadContributor {
                  solver::SystemMatrix* matrix) override;
   void beginStep() override;
   bool updateActiveSet() override;
+  double limitIncrement(const model::State& state, const VecX& fullIncrement) override;
+  std::string rejectState(const model::State& state) override;
+  void commitStatic(const model::State& state) override;
+
+  /// Gauss points of the line-to-line part at the last addForces() call.
+  const std::vector<LineSample>& lineSamples() const { return m_samples; }
+  /// Line-to-line friction patches at the last addForces() call.
+  const std::vector<FrictionPatch>& frictionPatches() const { return m_patches; }
+  /// Whether element eA (of its line) and eB may touch (not excluded by a pair, a zone or a shared
+  /// connection point).
+  bool elementPairAllowed(int eA, int eB) const;
+  /// Total contact force on line A from line B [N] at the last assembly, summed over all parts.
+  Vec3 pairForce(int lineA, int lineB) const;
 
   /// Contact points of the active set at the last addForces() call (the trial state). During Newton
   /// iterations an active point may pull (normalForce < 0); at a converged state none does.
@@ -149,10 +203,22 @@ class LineContact final : public solver::LoadContributor {
   bool inNeighbourhood(const std::pair<int, int>& key, const std::set<std::pair<int, int>>& set) const;
   double nodeTransverseMass(int node) const;
   Vec3 pointVelocity(const model::State& state, int element, double w) const;
-  /// Unit tangent at parameter w of an element, interpolated between nodal tangents (continuous along the line).
-  Vec3 smoothTangent(const model::State& state, int element, double w) const;
   /// Arc length [m] of the point at parameter w of an element of a line.
   double arcOf(int line, int element, double w) const;
+  /// Element and parameter of the point at arc length `arc` of a line (clamped to the line).
+  std::pair<int, double> pointAtArc(int line, double arc) const;
+  /// Line-to-line part: Gauss points on the contact intervals, forces and tangent (LineToLine.cpp).
+  void findLineSamples(const model::State& state, bool dynamic);
+  void addLineToLineForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                           solver::SystemMatrix* matrix);
+  /// Elastic-stick / slip friction of the line-to-line patches (ContactFriction.cpp).
+  void addFriction(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                   solver::SystemMatrix* matrix);
+  void commitFriction();
+  void buildExclusions();
+  /// Line-to-line stiffness per unit length [N/m^2] and dashpot [N s/m^2] of two elements.
+  double lineStiffness(int eA, int eB) const;
+  double lineDamping(int eA, int eB) const;
 
   const model::Model* m_model;
   model::ContactSpec m_spec;
@@ -175,6 +241,11 @@ class LineContact final : public solver::LoadContributor {
   std::vector<TrackedContact> m_tracked;
   std::vector<ContactEvent> m_events;
   double m_time = 0.0;
+  std::vector<LineSample> m_samples;
+  std::vector<FrictionPatch> m_patches;
+  std::map<std::pair<int, int>, FrictionAnchor> m_anchors;  // (slave element, master line) -> committed anchor
+  std::map<std::pair<int, int>, std::vector<std::array<double, 4>>> m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
+  std::vector<Vec3> m_staticReference;  // positions at the last committed static state
   bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
 };
 

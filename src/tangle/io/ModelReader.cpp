@@ -881,7 +881,8 @@ void readOutput(const Value& v, ModelSpec& spec) {
 
 void readContact(const Value& v, ModelSpec& spec) {
   const Map m(v, {"pairs", "self_contact", "stiffness", "restitution", "model", "friction_coefficient",
-                  "friction_velocity", "clearance_margin"});
+                  "friction_velocity", "clearance_margin", "exclude", "exclusion_zones", "exclude_connections",
+                  "impact_velocity_threshold", "event_separation_time"});
   const model::ContactSpec d;
   model::ContactSpec& c = spec.contact;
   c.enabled = true;
@@ -910,6 +911,42 @@ void readContact(const Value& v, ModelSpec& spec) {
   c.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
   c.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
   c.clearanceMargin = m.number("clearance_margin", d.clearanceMargin, positive());
+  auto lineName = [&](const Value& name) {
+    const std::string n = name.text("a line name");
+    const bool known =
+        std::any_of(spec.lines.begin(), spec.lines.end(), [&](const model::LineSpec& l) { return l.name == n; });
+    if (!known) name.fail("unknown line '" + n + "' in contact.exclude / contact.exclusion_zones");
+    return n;
+  };
+  if (const std::optional<Value> exclude = m.find("exclude")) {
+    for (const Value& item : exclude->items(1)) {
+      const std::vector<Value> names = item.items(2);
+      if (names.size() != 2) item.expected("a pair of line names [line_a, line_b] (contact.exclude)");
+      c.exclude.emplace_back(lineName(names[0]), lineName(names[1]));
+    }
+  }
+  if (const std::optional<Value> zones = m.find("exclusion_zones")) {
+    for (const Value& item : zones->items(1)) {
+      const Map z(item, {"line", "from", "to", "with"});
+      model::ContactSpec::ExclusionZone zone;
+      zone.line = lineName(z.get("line", "the name of the line the zone is on (contact.exclusion_zones)"));
+      zone.from = z.number("from", nonNegative().withHint("arc length from end A [m]"));
+      zone.to = z.number("to", nonNegative().withHint("arc length from end A [m]"));
+      if (zone.to <= zone.from) item.fail("contact.exclusion_zones: 'to' must be larger than 'from'");
+      const auto& lines = spec.lines;
+      const auto it = std::find_if(lines.begin(), lines.end(), [&](const model::LineSpec& l) { return l.name == zone.line; });
+      double length = 0.0;
+      for (const auto& sec : it->sections) length += sec.length;
+      if (zone.from >= length)
+        item.fail(fmt::format("contact.exclusion_zones: 'from' ({} m) is beyond the end of line '{}' ({} m long)",
+                              zone.from, zone.line, length));
+      if (const std::optional<Value> with = z.find("with")) zone.other = lineName(*with);
+      c.exclusionZones.push_back(zone);
+    }
+  }
+  c.excludeConnections = m.boolean("exclude_connections", d.excludeConnections);
+  c.impactVelocityThreshold = m.number("impact_velocity_threshold", d.impactVelocityThreshold, nonNegative());
+  c.eventSeparationTime = m.number("event_separation_time", d.eventSeparationTime, nonNegative());
 }
 
 /// A heading table: list of [heading_deg, x, y, yaw] rows, headings ascending in [0, 360).

@@ -236,6 +236,18 @@ struct ContactSpec {
   double frictionCoefficient = 0.0;  ///< Coulomb friction between lines [-]
   double frictionVelocity = 0.01;    ///< friction regularisation velocity [m/s]
   double clearanceMargin = 50.0;     ///< clearances larger than this are reported as "> margin" [m]
+  std::vector<std::pair<std::string, std::string>> exclude;  ///< line pairs that never touch
+  /// A length of a line [from, to] (arc length from end A [m]) excluded from contact, with one other
+  /// line (`other` non-empty) or with all lines.
+  struct ExclusionZone {
+    std::string line;
+    double from = 0.0, to = 0.0;
+    std::string other;
+  };
+  std::vector<ExclusionZone> exclusionZones;
+  bool excludeConnections = true;    ///< exclude lines near a shared connection point automatically
+  double impactVelocityThreshold = 0.05;  ///< an event is an impact if it starts faster than this [m/s]
+  double eventSeparationTime = 0.2;  ///< an event ends after this long without contact [s]
 };
 
 /// Result output settings.
