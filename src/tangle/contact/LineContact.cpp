@@ -103,6 +103,29 @@ Vec3 LineContact::pointVelocity(const model::State& state, int element, double w
          w * state.velocity.segment<3>(dofs.firstDof(el.node2));
 }
 
+Vec3 LineContact::stencilVelocity(const model::State& state, const CentrelineStencil& stencil) const {
+  const model::DofMap& dofs = m_model->dofs();
+  Vec3 v = Vec3::Zero();
+  for (int k = 0; k < 4; ++k)
+    if (stencil.N[k] != 0.0) v += stencil.N[k] * state.velocity.segment<3>(dofs.firstDof(stencil.node[k]));
+  return v;
+}
+
+Vec3 LineContact::stencilAcceleration(const model::State& state, const CentrelineStencil& stencil) const {
+  const model::DofMap& dofs = m_model->dofs();
+  Vec3 a = Vec3::Zero();
+  for (int k = 0; k < 4; ++k)
+    if (stencil.N[k] != 0.0) a += stencil.N[k] * state.acceleration.segment<3>(dofs.firstDof(stencil.node[k]));
+  return a;
+}
+
+double LineContact::stencilMass(const CentrelineStencil& stencil) const {
+  double inverse = 0.0;
+  for (int k = 0; k < 4; ++k)
+    if (stencil.N[k] != 0.0) inverse += stencil.N[k] * stencil.N[k] / nodeTransverseMass(stencil.node[k]);
+  return inverse > 0.0 ? 1.0 / inverse : kInf;
+}
+
 double LineContact::arcOf(int line, int element, double w) const {
   const model::Line& l = m_model->lines()[line];
   const int i = element - l.firstElement;
@@ -151,9 +174,19 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
   const model::DofMap& dofs = m_model->dofs();
   // Narrow phase on every candidate, at the current positions.
   struct Raw {
-    int proxyA, proxyB;
-    geometry::SegmentDistanceResult d;
+    int proxyA = 0, proxyB = 0;
+    geometry::SegmentDistanceResult d;  // closest points of the chords
+    double weight = 0.0;                // point-to-point weight of the ABC blending
+    bool endContact = false;            // chords meet at their ends, one of them a free line end
+    CentrelineDistance curve;           // closest points of the smooth centrelines (if weight > 0)
+    double distance = 0.0;              // curve.distance if weight > 0, else d.distance [m]
+    bool smoothA = false, smoothB = false;  // measured on the smooth centreline (beams), else the polyline
   };
+  const auto atLineEnd = [&](int element, double w) {
+    const model::Line& l = m_model->lines()[elements[element].line];
+    return (element == l.firstElement && w <= 0.0) || (element == l.firstElement + l.elementCount - 1 && w >= 1.0);
+  };
+  const auto atSegmentEnd = [](double w) { return w <= 0.0 || w >= 1.0; };
   std::vector<Raw> raw;
   for (const CandidatePair& c : m_candidates) {
     int pa = c.first, pb = c.second;
@@ -162,108 +195,163 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
       std::swap(pa, pb);
     const model::LineElement& ea = elements[m_proxies[pa].element];
     const model::LineElement& eb = elements[m_proxies[pb].element];
-    const geometry::SegmentDistanceResult d =
-        geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2], state.position[eb.node1],
-                                  state.position[eb.node2]);
-    // Candidates a little beyond touching (the gap is measured along the smoothed normal below and can
-    // be slightly smaller than the distance) and every pair of the active set.
+    const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
+    const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
+    Raw r;
+    r.proxyA = pa;
+    r.proxyB = pb;
+    r.d = geometry::segmentDistance(a0, a1, b0, b1);
+    // Candidates a little beyond touching (for a beam, the smooth centreline lies off the chord by up
+    // to about (kink angle) L / 8 at a kinked node: a quarter of the element length bounds that) and
+    // every pair of the active set.
+    r.smoothA = hasSmoothCentreline(*m_model, m_proxies[pa].element);
+    r.smoothB = hasSmoothCentreline(*m_model, m_proxies[pb].element);
     const double radii = m_proxies[pa].radius + m_proxies[pb].radius;
+    const double bulge = 0.25 * std::max(r.smoothA ? ea.restLength : 0.0, r.smoothB ? eb.restLength : 0.0);
     const bool sticky = inNeighbourhood({m_proxies[pa].element, m_proxies[pb].element}, m_sticky);
-    if (sticky || d.distance < (1.0 + 0.05) * radii) raw.push_back({pa, pb, d});
+    if (!sticky && r.d.distance >= (1.0 + 0.05) * radii + bulge) continue;
+    // Point-to-point weight of the ABC blending (docs/theory.md 9.3): by the crossing angle of the two
+    // elements; 1 for an end contact that the line-to-line part cannot see (both closest points at
+    // segment ends, one of them a free line end: lines meeting end to end or end to node).
+    r.endContact = atSegmentEnd(r.d.s) && atSegmentEnd(r.d.t) &&
+                   (atLineEnd(m_proxies[pa].element, r.d.s) || atLineEnd(m_proxies[pb].element, r.d.t));
+    r.weight = r.endContact ? 1.0 : pointToPointWeight(crossingAngle(a0, a1, b0, b1), kBlendLower, kBlendUpper);
+    r.distance = r.d.distance;
+    if (r.weight > 0.0 && (r.smoothA || r.smoothB)) {
+      // The point-to-point part is measured between the smooth centrelines (SmoothCentreline.hpp): a
+      // polyline corner would act like a sphere and make Newton cycle between the elements at a node.
+      r.curve = centrelineDistance(*m_model, state.position, m_proxies[pa].element, m_proxies[pb].element, r.d.s, r.d.t);
+      r.distance = r.curve.distance;
+    }
+    raw.push_back(std::move(r));
   }
   if (m_debug)
     std::cerr << fmt::format("      findContacts: {} candidates, {} raw, trial {}, sticky {}\n", m_candidates.size(), raw.size(),
                              trial, m_sticky.size());
-  // A line bent at a node towards the other line (a convex kink: a rod hit at a node and bent by the
-  // impact, a line draped over another) has an interior closest point on each of the two elements at
-  // the node, one on each side, about (rA + rB) times the kink angle away from it. They are one
-  // physical contact: keeping either (chosen by round-off when the layout is symmetric) puts the force
-  // off the node and lets Newton cycle between the two. Both are moved to the node (where the smooth
-  // line's closest point is), with the closest point on the other segment recomputed. Only when both
-  // are at the contact (within the search distance of 1.05 radii) and closer to each other than the
-  // sum of the radii (one contact patch): a kinked line near but not at a contact (e.g. a mooring line
-  // pushed by a riser, whose element beyond the node has its own, non-touching minimum) keeps its true
-  // closest point.
+  // The polyline closest points of two cables (segment parameters; free when inside the segment).
+  for (Raw& r : raw) {
+    if (r.weight <= 0.0 || r.smoothA || r.smoothB) continue;
+    r.curve.s = r.d.s;
+    r.curve.t = r.d.t;
+    r.curve.sFree = !atSegmentEnd(r.d.s);
+    r.curve.tFree = !atSegmentEnd(r.d.t);
+    r.curve.a = centrelineStencil(*m_model, m_proxies[r.proxyA].element, r.d.s);
+    r.curve.b = centrelineStencil(*m_model, m_proxies[r.proxyB].element, r.d.t);
+    r.curve.pointA = r.d.closest0;
+    r.curve.pointB = r.d.closest1;
+    r.curve.distance = r.distance = r.d.distance;
+  }
+  // A cable bent at a node towards the other line (a convex kink: a line draped over another, a cable
+  // pressed by a line across it) has an interior closest point on each of the two elements at the
+  // node, one on each side, about (rA + rB) times the kink angle away from it. They are one physical
+  // contact at the fold: both are moved to the node (where the smooth line's closest point is), with
+  // the closest point on the other line recomputed. Only when both are at the contact (within the
+  // search distance of 1.05 radii) and closer to each other than the sum of the radii (one contact
+  // patch): a kinked line near but not at a contact keeps its true closest point. (A beam's smooth
+  // centreline has no fold.)
   {
     auto interior = [](double w) { return w > 1e-9 && w < 1.0 - 1e-9; };
     std::vector<int> snapA(raw.size(), -1), snapB(raw.size(), -1);  // -1: keep; 0 / 1: move to that end
     for (std::size_t i = 0; i < raw.size(); ++i) {
+      if (raw[i].weight <= 0.0) continue;
       const SegmentProxy& a = m_proxies[raw[i].proxyA];
       const SegmentProxy& b = m_proxies[raw[i].proxyB];
       const double radii = a.radius + b.radius;
-      if (raw[i].d.distance >= 1.05 * radii) continue;
+      if (raw[i].distance >= 1.05 * radii) continue;
+      const CentrelineDistance& ci = raw[i].curve;
       for (std::size_t j = 0; j < raw.size(); ++j) {
+        if (j == i || raw[j].weight <= 0.0) continue;
         const SegmentProxy& a2 = m_proxies[raw[j].proxyA];
         const SegmentProxy& b2 = m_proxies[raw[j].proxyB];
-        if (j == i || a2.line != a.line || b2.line != b.line) continue;
-        if (raw[j].d.distance >= 1.05 * (a2.radius + b2.radius)) continue;
-        if (b2.element == b.element + 1 && elements[b.element].node2 == elements[b2.element].node1 &&
-            std::abs(a2.element - a.element) <= 1 && interior(raw[i].d.t) && interior(raw[j].d.t) &&
-            (raw[i].d.closest1 - raw[j].d.closest1).norm() < radii) {
+        if (a2.line != a.line || b2.line != b.line) continue;
+        if (raw[j].distance >= 1.05 * (a2.radius + b2.radius)) continue;
+        const CentrelineDistance& cj = raw[j].curve;
+        if (!raw[i].smoothB && b2.element == b.element + 1 && elements[b.element].node2 == elements[b2.element].node1 &&
+            std::abs(a2.element - a.element) <= 1 && interior(ci.t) && interior(cj.t) &&
+            (ci.pointB - cj.pointB).norm() < radii) {
           snapB[i] = 1;
           snapB[j] = 0;
         }
-        if (a2.element == a.element + 1 && elements[a.element].node2 == elements[a2.element].node1 &&
-            std::abs(b2.element - b.element) <= 1 && interior(raw[i].d.s) && interior(raw[j].d.s) &&
-            (raw[i].d.closest0 - raw[j].d.closest0).norm() < radii) {
+        if (!raw[i].smoothA && a2.element == a.element + 1 && elements[a.element].node2 == elements[a2.element].node1 &&
+            std::abs(b2.element - b.element) <= 1 && interior(ci.s) && interior(cj.s) &&
+            (ci.pointA - cj.pointA).norm() < radii) {
           snapA[i] = 1;
           snapA[j] = 0;
         }
       }
     }
-    auto project = [](const Vec3& p, const Vec3& x0, const Vec3& x1) {
-      const Vec3 m = x1 - x0;
-      const double mm = m.squaredNorm();
-      return mm > 0.0 ? std::clamp((p - x0).dot(m) / mm, 0.0, 1.0) : 0.0;
-    };
     for (std::size_t i = 0; i < raw.size(); ++i) {
       if (snapA[i] < 0 && snapB[i] < 0) continue;
-      geometry::SegmentDistanceResult& d = raw[i].d;
-      const model::LineElement& ea = elements[m_proxies[raw[i].proxyA].element];
-      const model::LineElement& eb = elements[m_proxies[raw[i].proxyB].element];
-      const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
-      const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
-      if (snapA[i] >= 0) d.s = snapA[i];
-      if (snapB[i] >= 0) d.t = snapB[i];
-      if (snapA[i] < 0) d.s = project(b0 + d.t * (b1 - b0), a0, a1);
-      if (snapB[i] < 0) d.t = project(a0 + d.s * (a1 - a0), b0, b1);
-      d.closest0 = a0 + d.s * (a1 - a0);
-      d.closest1 = b0 + d.t * (b1 - b0);
-      d.distance = (d.closest0 - d.closest1).norm();
+      const int elementA = m_proxies[raw[i].proxyA].element, elementB = m_proxies[raw[i].proxyB].element;
+      const CentrelineDistance& old = raw[i].curve;
+      const double s0 = snapA[i] >= 0 ? snapA[i] : old.s, t0 = snapB[i] >= 0 ? snapB[i] : old.t;
+      raw[i].curve = centrelineDistance(*m_model, state.position, elementA, elementB, s0, t0, snapA[i] >= 0, snapB[i] >= 0);
+      raw[i].distance = raw[i].curve.distance;
       if (m_debug)
-        std::cerr << fmt::format("        kink: e{}-e{} moved to s {:.6f} t {:.6f}\n", m_proxies[raw[i].proxyA].element,
-                                 m_proxies[raw[i].proxyB].element, d.s, d.t);
+        std::cerr << fmt::format("        kink: e{}-e{} moved to s {:.6f} t {:.6f}\n", elementA, elementB, raw[i].curve.s,
+                                 raw[i].curve.t);
     }
   }
-  // Keep local minima of the distance among neighbouring element pairs of the same two lines.
+  // One contact per local minimum of the distance between the centrelines, among the pairs of the
+  // same two lines that are neighbours along both:
+  // - two cables (polylines): a minimum at a node is reported by both elements there, and a pair whose
+  //   closest point is held at a segment end next to a pair with a smaller distance is not a minimum;
+  //   the first pair in a strict total order (distance, then element indices) is kept (a tolerance on
+  //   "equal" distances would not be transitive and could drop every pair around a node);
+  // - a beam side (smooth centreline): a pair whose closest point is held at the widened end of its
+  //   range has its minimum on the neighbouring element, whose pair finds it: dropped. The ranges of
+  //   neighbouring elements overlap (kParameterOverlap), so a minimum near a node is found by both
+  //   pairs at the same point: of pairs whose closest points are within a hundredth of the radii on
+  //   both lines the first in the order is kept; distinct minima on neighbouring elements (a line
+  //   draped over another, one foot each side of a bent node) are kept both. A cable side of such a
+  //   pair held at a segment end next to a pair with a smaller distance is dropped as above.
+  const auto heldAtOverlap = [&](const Raw& r) {
+    const double s = r.curve.s, t = r.curve.t;
+    const bool sHeld = !r.curve.sFree && (s < 0.0 || s > 1.0);
+    const bool tHeld = !r.curve.tFree && (t < 0.0 || t > 1.0);
+    return sHeld || tHeld;
+  };
+  const auto heldCable = [&](const Raw& r) {
+    return (!r.smoothA && !r.curve.sFree) || (!r.smoothB && !r.curve.tFree);
+  };
   m_trial.clear();
   for (std::size_t i = 0; i < raw.size(); ++i) {
     const SegmentProxy& a = m_proxies[raw[i].proxyA];
     const SegmentProxy& b = m_proxies[raw[i].proxyB];
+    if (raw[i].weight <= 0.0 || heldAtOverlap(raw[i])) continue;
+    const bool twoCables = !raw[i].smoothA && !raw[i].smoothB;
     bool keep = true;
+    const double same = 0.01 * (a.radius + b.radius);
     for (std::size_t j = 0; j < raw.size() && keep; ++j) {
-      if (j == i) continue;
+      if (j == i || raw[j].weight <= 0.0 || heldAtOverlap(raw[j])) continue;
       const SegmentProxy& a2 = m_proxies[raw[j].proxyA];
       const SegmentProxy& b2 = m_proxies[raw[j].proxyB];
       if (a2.line != a.line || b2.line != b.line) continue;
       if (std::abs(a2.element - a.element) > 1 || std::abs(b2.element - b.element) > 1) continue;
-      // A strict total order (distance, then element indices): a tolerance on "equal" distances would
-      // not be transitive and could drop every pair around a node.
-      if (std::make_tuple(raw[j].d.distance, a2.element, b2.element) <
-          std::make_tuple(raw[i].d.distance, a.element, b.element))
-        keep = false;
+      const bool before =
+          std::make_tuple(raw[j].distance, a2.element, b2.element) < std::make_tuple(raw[i].distance, a.element, b.element);
+      if (!before) continue;
+      const bool samePoint = (raw[j].curve.pointA - raw[i].curve.pointA).norm() <= same &&
+                             (raw[j].curve.pointB - raw[i].curve.pointB).norm() <= same;
+      if (twoCables || samePoint || heldCable(raw[i])) keep = false;
     }
     if (!keep) continue;
-    const geometry::SegmentDistanceResult& d = raw[i].d;
+    const CentrelineDistance& d = raw[i].curve;
     ContactPoint c;
     c.lineA = a.line;
     c.lineB = b.line;
     c.elementA = a.element;
     c.elementB = b.element;
+    c.curve = d;
     c.s = d.s;
     c.t = d.t;
-    c.pointA = d.closest0;
-    c.pointB = d.closest1;
+    c.pointA = d.pointA;
+    c.pointB = d.pointB;
+    c.sFree = d.sFree;
+    c.tFree = d.tFree;
+    c.weight = raw[i].weight;
+    c.arcA = arcOf(c.lineA, c.elementA, c.s);
+    c.arcB = arcOf(c.lineB, c.elementB, c.t);
     // Normal: the direction of the true closest points (never an approximate normal built from
     // smoothed tangents, which is not the closest-point direction on curved lines and gave phantom
     // forces at positive gaps). The sign follows the contact's previous normal, so that lines which
@@ -271,42 +359,18 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     const Vec3 diff = c.pointA - c.pointB;
     const Vec3* previous = nullptr;
     for (const TrackedContact& tr : m_tracked)
-      if (tr.lineA == a.line && tr.lineB == b.line && std::abs(tr.arcA - arcOf(c.lineA, c.elementA, c.s)) +
-                                                               std::abs(tr.arcB - arcOf(c.lineB, c.elementB, c.t)) <
-                                                           2.0 * (elements[c.elementA].restLength +
-                                                                  elements[c.elementB].restLength))
+      if (tr.lineA == a.line && tr.lineB == b.line &&
+          std::abs(tr.arcA - c.arcA) + std::abs(tr.arcB - c.arcB) <
+              2.0 * (elements[c.elementA].restLength + elements[c.elementB].restLength))
         previous = &tr.normal;
     c.sign = (previous && diff.dot(*previous) < 0.0) ? -1.0 : 1.0;
     c.normal = diff.norm() > 1e-12 ? Vec3(c.sign * diff.normalized()) : (previous ? *previous : Vec3(Vec3::UnitZ()));
     c.gap = c.sign * diff.norm() - a.radius - b.radius;
-    // Point-to-point weight of the ABC blending (docs/theory.md 9.3): by the crossing angle of the
-    // two elements; 1 for an end contact that the line-to-line part cannot see (both closest points
-    // at segment ends, one of them a free line end: lines meeting end to end or end to node).
-    const auto atLineEnd = [&](int line, int element, double w) {
-      const model::Line& l = m_model->lines()[line];
-      return (element == l.firstElement && w <= 0.0) || (element == l.firstElement + l.elementCount - 1 && w >= 1.0);
-    };
-    const auto atSegmentEnd = [](double w) { return w <= 0.0 || w >= 1.0; };
-    c.sFree = !atSegmentEnd(c.s);
-    c.tFree = !atSegmentEnd(c.t);
-    const bool endContact = atSegmentEnd(c.s) && atSegmentEnd(c.t) &&
-                            (atLineEnd(c.lineA, c.elementA, c.s) || atLineEnd(c.lineB, c.elementB, c.t));
-    {
-      const model::LineElement& ea = elements[c.elementA];
-      const model::LineElement& eb = elements[c.elementB];
-      c.weight = endContact ? 1.0
-                            : pointToPointWeight(crossingAngle(state.position[ea.node1], state.position[ea.node2],
-                                                               state.position[eb.node1], state.position[eb.node2]),
-                                                 kBlendLower, kBlendUpper);
-    }
-    if (c.weight <= 0.0) continue;
-    const Vec3 va = pointVelocity(state, c.elementA, c.s);
-    const Vec3 vb = pointVelocity(state, c.elementB, c.t);
+    const Vec3 va = stencilVelocity(state, d.a);
+    const Vec3 vb = stencilVelocity(state, d.b);
     c.gapRate = c.normal.dot(va - vb);
-    c.arcA = arcOf(c.lineA, c.elementA, c.s);
-    c.arcB = arcOf(c.lineB, c.elementB, c.t);
-    c.lumpedMassA = lumpedMass(c.elementA, c.s);
-    c.lumpedMassB = lumpedMass(c.elementB, c.t);
+    c.lumpedMassA = stencilMass(d.a);
+    c.lumpedMassB = stencilMass(d.b);
     // Match with a committed contact: same lines, close along both.
     const double reach = 2.0 * (elements[c.elementA].restLength + elements[c.elementB].restLength);
     double best = kInf;
@@ -375,34 +439,32 @@ void LineContact::addForces(const model::State& state, const solver::AssemblyReq
       std::cerr << fmt::format("      contact e{}-e{} s {:.6f} t {:.6f} gap {:.4e} rate {:.4e} F {:.6e} n ({:.3e},{:.3e},{:.3e})\n",
                                c.elementA, c.elementB, c.s, c.t, c.gap, c.gapRate, c.normalForce, c.normal.x(),
                                c.normal.y(), c.normal.z());
-  const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();
   for (const ContactPoint& c : m_trial) {
-    const model::LineElement& ea = elements[c.elementA];
-    const model::LineElement& eb = elements[c.elementB];
-    const int node[4] = {ea.node1, ea.node2, eb.node1, eb.node2};
-    const double w[4] = {1.0 - c.s, c.s, -(1.0 - c.t), -c.t};  // shape weight times side sign
-    const Vec3 f = c.normalForce * c.normal + c.frictionForce;  // force on line A
-    for (int i = 0; i < 4; ++i) force.segment<3>(dofs.firstDof(node[i])) -= w[i] * f;
-    if (!matrix) continue;
     // Consistent tangent: the spring k grad(d) grad(d)^T plus the rotation of the normal and the sliding
-    // of the closest points, -F Hess(d) (ContactKinematics.hpp; exact for the free projection
+    // of the closest points, -F Hess(d) (SmoothCentreline.hpp; exact for the free projection
     // parameters); the dashpot c n n^T on the velocities; the friction damping.
-    const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
-    const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
-    const DistanceKinematics kin = distanceKinematics(a0, a1, b0, b1, c.s, c.t, c.sFree, c.tFree, c.sign, true);
+    const CentrelineKinematics kin = centrelineKinematics(state.position, c.curve, c.sign, matrix != nullptr);
+    const Vec3 f = c.normalForce * c.normal + c.frictionForce;  // force on line A
+    for (int i = 0; i < 8; ++i)
+      if (kin.weight[i] != 0.0) force.segment<3>(dofs.firstDof(kin.node[i])) -= kin.weight[i] * f;
+    if (!matrix) continue;
     const Mat3 nn = c.normal * c.normal.transpose();
-    const Mat12 block = request.kf * (c.stiffness * kin.gradient * kin.gradient.transpose() - c.normalForce * kin.hessian);
+    const Eigen::Matrix<double, 24, 24> block =
+        request.kf * (c.stiffness * kin.gradient * kin.gradient.transpose() - c.normalForce * kin.hessian);
     Mat3 cBlock = request.cf * c.damping * nn;
     if (c.frictionForce.squaredNorm() > 0.0 && request.cf != 0.0) {
       cBlock += request.cf * m_spec.frictionCoefficient * c.normalForce / m_spec.frictionVelocity *
                 (Mat3::Identity() - nn);
     }
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j) {
-        const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + w[i] * w[j] * cBlock;
-        matrix->add3x3(dofs.firstDof(node[i]), dofs.firstDof(node[j]), bij);
+    for (int i = 0; i < 8; ++i) {
+      if (!kin.used[i]) continue;
+      for (int j = 0; j < 8; ++j) {
+        if (!kin.used[j]) continue;
+        const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + kin.weight[i] * kin.weight[j] * cBlock;
+        matrix->add3x3(dofs.firstDof(kin.node[i]), dofs.firstDof(kin.node[j]), bij);
       }
+    }
   }
   addLineToLineForces(state, request, force, matrix);
 }
@@ -505,16 +567,17 @@ double LineContact::stepLimit(const model::State& state) {
 }
 
 void LineContact::applyImpulse(model::State& state, const ContactPoint& c, double impulse) const {
-  const auto& elements = m_model->elements();
+  // Through the stencil weights: sum_k M_k dv_k = sum_k w_k I n = I n (momentum conserved, sum N_k = 1),
+  // and the point's velocity changes by sum_k N_k^2 I / M_k = I / m (stencilMass).
   const model::DofMap& dofs = m_model->dofs();
-  const model::LineElement& ea = elements[c.elementA];
-  const model::LineElement& eb = elements[c.elementB];
-  const int node[4] = {ea.node1, ea.node2, eb.node1, eb.node2};
-  const double w[4] = {1.0 - c.s, c.s, -(1.0 - c.t), -c.t};
-  for (int i = 0; i < 4; ++i) {
-    const double m = nodeTransverseMass(node[i]);
-    if (!std::isfinite(m)) continue;
-    state.velocity.segment<3>(dofs.firstDof(node[i])) += w[i] * impulse / m * c.normal;
+  for (int side = 0; side < 2; ++side) {
+    const CentrelineStencil& st = side == 0 ? c.curve.a : c.curve.b;
+    const double sideSign = side == 0 ? 1.0 : -1.0;
+    for (int k = 0; k < 4; ++k) {
+      const double m = nodeTransverseMass(st.node[k]);
+      if (!std::isfinite(m) || st.N[k] == 0.0) continue;
+      state.velocity.segment<3>(dofs.firstDof(st.node[k])) += sideSign * st.N[k] * impulse / m * c.normal;
+    }
   }
 }
 
@@ -546,14 +609,12 @@ void LineContact::commitStep(model::State& state, double dt) {
   m_time = state.time;
   commitFriction();
   findContacts(state, dt > 0.0, false, false);
-  const auto& elements = m_model->elements();
-  const model::DofMap& dofs = m_model->dofs();
   std::vector<bool> seen(m_tracked.size(), false);
   std::vector<TrackedContact> next;
   for (const ContactPoint& c : m_trial) {
     if (c.normalForce <= 0.0) continue;
-    const Vec3 va = pointVelocity(state, c.elementA, c.s);
-    const Vec3 vb = pointVelocity(state, c.elementB, c.t);
+    const Vec3 va = stencilVelocity(state, c.curve.a);
+    const Vec3 vb = stencilVelocity(state, c.curve.b);
     if (c.track >= 0 && !seen[c.track]) {
       seen[c.track] = true;
       TrackedContact tr = m_tracked[c.track];
@@ -589,13 +650,8 @@ void LineContact::commitStep(model::State& state, double dt) {
         // relative normal velocity is taken as dt times the mean of the accelerations at its ends, the
         // one before the touch being negligible against the contact's. The same trapezoidal rule gives
         // the impulse of that step below (0.5 F dt), so Eq. 5 is consistent from the first step on.
-        const model::LineElement& ea = elements[c.elementA];
-        const model::LineElement& eb = elements[c.elementB];
-        auto acceleration = [&](const model::LineElement& el, double w) {
-          return Vec3((1.0 - w) * state.acceleration.segment<3>(dofs.firstDof(el.node1)) +
-                      w * state.acceleration.segment<3>(dofs.firstDof(el.node2)));
-        };
-        const double accelerationRate = c.normal.dot(acceleration(ea, c.s) - acceleration(eb, c.t));
+        const double accelerationRate =
+            c.normal.dot(stencilAcceleration(state, c.curve.a) - stencilAcceleration(state, c.curve.b));
         tr.impactVelocity = std::max(0.0, -(c.gapRate - 0.5 * dt * accelerationRate));
       }
       if (m_spec.model == model::ImpactModel::Impulse && dt > 0.0 && c.gapRate < 0.0 && std::isfinite(c.pairMass)) {
@@ -606,8 +662,8 @@ void LineContact::commitStep(model::State& state, double dt) {
         applyImpulse(state, c, impulse);
         tr.jumpImpulse = impulse;
       }
-      const Vec3 va0 = pointVelocity(state, c.elementA, c.s);
-      const Vec3 vb0 = pointVelocity(state, c.elementB, c.t);
+      const Vec3 va0 = stencilVelocity(state, c.curve.a);
+      const Vec3 vb0 = stencilVelocity(state, c.curve.b);
       tr.lineA = c.lineA;
       tr.lineB = c.lineB;
       tr.arcA = c.arcA;

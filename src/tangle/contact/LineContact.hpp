@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "tangle/contact/BroadPhase.hpp"
+#include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
 
@@ -52,6 +53,9 @@ struct ContactPoint {
   double sign = 1.0;               ///< -1 when the centrelines have passed each other (normal kept)
   bool sFree = true, tFree = true; ///< closest point inside the segment (free projection parameter)
   double weight = 1.0;             ///< point-to-point weight of the ABC blending [-]
+  /// Closest points on the smooth (C1) centrelines (SmoothCentreline.hpp): s, t above are its
+  /// parameters (a little outside [0, 1] near an interior node), forces go to its stencil nodes.
+  CentrelineDistance curve;
 };
 
 /// A Gauss point of the line-to-line (Gauss-point-to-segment) part at the current (trial) state: a point
@@ -203,6 +207,11 @@ class LineContact final : public solver::LoadContributor {
   bool inNeighbourhood(const std::pair<int, int>& key, const std::set<std::pair<int, int>>& set) const;
   double nodeTransverseMass(int node) const;
   Vec3 pointVelocity(const model::State& state, int element, double w) const;
+  /// Velocity [m/s], acceleration [m/s^2] and instantaneous effective mass [kg] of a smooth-centreline
+  /// point (1/m = sum N_k^2 / M_k for lumped node masses M_k).
+  Vec3 stencilVelocity(const model::State& state, const CentrelineStencil& stencil) const;
+  Vec3 stencilAcceleration(const model::State& state, const CentrelineStencil& stencil) const;
+  double stencilMass(const CentrelineStencil& stencil) const;
   /// Arc length [m] of the point at parameter w of an element of a line.
   double arcOf(int line, int element, double w) const;
   /// Element and parameter of the point at arc length `arc` of a line (clamped to the line).

@@ -62,7 +62,8 @@ TEST(ContactKinematics, DistanceHessianMatchesFiniteDifferences) {
 // Two pinned cables; line B (the master) straight along x, line A bent over it at `angleDeg`.
 struct TangentCase {
   double angleDeg;
-  double depth;  // largest penetration [m]
+  double depth;        // largest penetration [m]
+  bool beams = false;  // steel beams (smooth centreline, SmoothCentreline.hpp) instead of cables
 };
 
 class ContactTangent : public ::testing::TestWithParam<TangentCase> {};
@@ -72,7 +73,7 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
   model::ModelSpec spec;
   spec.sourceFile = "tangent (test)";
   spec.environment.waterDepth = 100.0;
-  spec.lineTypes["c"] = test::cableType("c", 0.1, 20.0, 1e8);
+  spec.lineTypes["c"] = tc.beams ? test::solidRodType("c", 0.1, 2.1e11, 7850.0) : test::cableType("c", 0.1, 20.0, 1e8);
   const double ang = degToRad(tc.angleDeg);
   const Vec3 dir(std::cos(ang), std::sin(ang), 0.0);
   spec.lines = {test::simpleLine("a", "c", 6.0, 12, model::EndKind::Pinned, Vec3(0, 0, 0.1) - 3.0 * dir,
@@ -139,9 +140,10 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
 
 INSTANTIATE_TEST_SUITE_P(Angles, ContactTangent,
                          ::testing::Values(TangentCase{0.0, 0.01}, TangentCase{4.0, 0.01}, TangentCase{8.0, 0.005}, TangentCase{25.0, 0.005},
-                                           TangentCase{90.0, 0.005}),
+                                           TangentCase{90.0, 0.005}, TangentCase{25.0, 0.005, true},
+                                           TangentCase{90.0, 0.005, true}),
                          [](const ::testing::TestParamInfo<TangentCase>& p) {
-                           return "deg" + std::to_string(static_cast<int>(p.param.angleDeg));
+                           return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
                          });
 
 }  // namespace

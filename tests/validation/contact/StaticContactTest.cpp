@@ -8,7 +8,9 @@
 // equilibrium hangs over A in two catenaries, its middle node on A's middle node (a node on a node).
 //
 // Checks:
-// - One contact point (counted once although two element pairs of each line meet there).
+// - One contact patch: B is kinked over A by about 70 deg at its middle node; point-to-point contact is
+//   measured on the smooth (C1) centrelines, which round that kink, so the patch is one point at the
+//   node or two symmetric points, one each side of it (a line wrapped over another), never more.
 // - The contact force equals the weight the contact carries, from the vertical equilibrium of each line
 //   as a free body with its support reactions from the static solution (Simulation::snapshot):
 //     B: F_z = W_B - (support reactions on B)_z,   A: F_z = (support reactions on A)_z - W_A.
@@ -70,7 +72,8 @@ TEST(StaticContact, ContactForceCarriesTheWeightTheSupportsDoNot) {
     ++points;
     contactZ += -(p.normalForce * p.normal + p.frictionForce).z();  // force on B (lineB) = - force on A
   }
-  ASSERT_EQ(points, 1);
+  ASSERT_GE(points, 1);
+  ASSERT_LE(points, 2);
 
   const double g = kStandardGravity;
   const double weightA = kMassA * sim.model().lines()[0].length * g;

@@ -1,0 +1,235 @@
+#include "tangle/contact/SmoothCentreline.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tangle::contact {
+
+Vec3 CentrelineStencil::point(const std::vector<Vec3>& x) const {
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) p += N[k] * x[node[k]];
+  return p;
+}
+
+Vec3 CentrelineStencil::tangent(const std::vector<Vec3>& x) const {
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) p += dN[k] * x[node[k]];
+  return p;
+}
+
+Vec3 CentrelineStencil::secondDerivative(const std::vector<Vec3>& x) const {
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) p += ddN[k] * x[node[k]];
+  return p;
+}
+
+bool hasSmoothCentreline(const model::Model& model, int element) {
+  return model.elements()[element].type->isBeam();
+}
+
+CentrelineStencil centrelineStencil(const model::Model& model, int element, double s) {
+  const auto& elements = model.elements();
+  const model::LineElement& el = elements[element];
+  if (!el.type->isBeam()) {
+    // A cable's centreline is its polyline (see the header).
+    CentrelineStencil st;
+    st.node = {el.node1, el.node1, el.node2, el.node2};
+    st.N = {0.0, 1.0 - s, s, 0.0};
+    st.dN = {0.0, -1.0, 1.0, 0.0};
+    return st;
+  }
+  const model::Line& line = model.lines()[el.line];
+  const int index = element - line.firstElement;
+  const bool hasPrevious = index > 0, hasNext = index < line.elementCount - 1;
+  const double l1 = el.restLength;
+  // Nodal tangents in units of this element's parameter: m1 = a0 x0 + a1 x1 + a2 x2, m2 = b1 x1 + b2 x2 + b3 x3
+  // (three-point difference on the rest arc lengths; the chord at a line end). See the header.
+  double a0 = 0.0, a1 = -1.0, a2 = 1.0;
+  if (hasPrevious) {
+    const double l0 = elements[element - 1].restLength;
+    const double alpha = l1 / (l0 + l1), beta = l0 / (l0 + l1);
+    a0 = -alpha * l1 / l0;
+    a1 = alpha * l1 / l0 - beta;
+    a2 = beta;
+  }
+  double b1 = -1.0, b2 = 1.0, b3 = 0.0;
+  if (hasNext) {
+    const double l2 = elements[element + 1].restLength;
+    const double gamma = l2 / (l1 + l2), delta = l1 / (l1 + l2);
+    b1 = -gamma;
+    b2 = gamma - delta * l1 / l2;
+    b3 = delta * l1 / l2;
+  }
+  // Cubic Hermite basis and its derivatives.
+  const double s2 = s * s, s3 = s2 * s;
+  const double h00 = 2 * s3 - 3 * s2 + 1, h01 = -2 * s3 + 3 * s2, h10 = s3 - 2 * s2 + s, h11 = s3 - s2;
+  const double d00 = 6 * s2 - 6 * s, d01 = -6 * s2 + 6 * s, d10 = 3 * s2 - 4 * s + 1, d11 = 3 * s2 - 2 * s;
+  const double e00 = 12 * s - 6, e01 = -12 * s + 6, e10 = 6 * s - 4, e11 = 6 * s - 2;
+  CentrelineStencil st;
+  st.node = {hasPrevious ? elements[element - 1].node1 : el.node1, el.node1, el.node2,
+             hasNext ? elements[element + 1].node2 : el.node2};
+  st.N = {h10 * a0, h00 + h10 * a1 + h11 * b1, h01 + h10 * a2 + h11 * b2, h11 * b3};
+  st.dN = {d10 * a0, d00 + d10 * a1 + d11 * b1, d01 + d10 * a2 + d11 * b2, d11 * b3};
+  st.ddN = {e10 * a0, e00 + e10 * a1 + e11 * b1, e01 + e10 * a2 + e11 * b2, e11 * b3};
+  return st;
+}
+
+namespace {
+/// Search range of an element's parameter (widened at interior nodes, see kParameterOverlap).
+std::pair<double, double> parameterRange(const model::Model& model, int element) {
+  if (!hasSmoothCentreline(model, element)) return {0.0, 1.0};
+  const model::Line& line = model.lines()[model.elements()[element].line];
+  const int index = element - line.firstElement;
+  return {index > 0 ? -kParameterOverlap : 0.0, index < line.elementCount - 1 ? 1.0 + kParameterOverlap : 1.0};
+}
+}  // namespace
+
+CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position, int elementA,
+                                      int elementB, double s0, double t0, bool holdS, bool holdT) {
+  const auto [sLo, sHi] = parameterRange(model, elementA);
+  const auto [tLo, tHi] = parameterRange(model, elementB);
+  const double lo[2] = {sLo, tLo}, hi[2] = {sHi, tHi};
+  double p[2] = {holdS ? s0 : std::clamp(s0, sLo, sHi), holdT ? t0 : std::clamp(t0, tLo, tHi)};
+  auto value = [&](const double q[2]) {
+    return 0.5 * (centrelineStencil(model, elementA, q[0]).point(position) -
+                  centrelineStencil(model, elementB, q[1]).point(position))
+                     .squaredNorm();
+  };
+  auto gradientNorm = [&](const double q[2]) {
+    const CentrelineStencil a = centrelineStencil(model, elementA, q[0]);
+    const CentrelineStencil b = centrelineStencil(model, elementB, q[1]);
+    const Vec3 u = a.point(position) - b.point(position);
+    double gs = u.dot(a.tangent(position)), gt = -u.dot(b.tangent(position));
+    if (holdS || (q[0] <= lo[0] && gs > 0.0) || (q[0] >= hi[0] && gs < 0.0)) gs = 0.0;
+    if (holdT || (q[1] <= lo[1] && gt > 0.0) || (q[1] >= hi[1] && gt < 0.0)) gt = 0.0;
+    return std::hypot(gs, gt);
+  };
+  // Projected Newton on V(s, t) = |c_A(s) - c_B(t)|^2 / 2 with bound constraints (Bertsekas 1982): a
+  // parameter at a bound whose gradient points out of the range is held; the others take a Newton step
+  // (a scaled gradient step where the reduced Hessian is not positive definite), projected on the range,
+  // halved until V decreases.
+  for (int iteration = 0; iteration < 40; ++iteration) {
+    const CentrelineStencil a = centrelineStencil(model, elementA, p[0]);
+    const CentrelineStencil b = centrelineStencil(model, elementB, p[1]);
+    const Vec3 u = a.point(position) - b.point(position);
+    const Vec3 ca = a.tangent(position), cb = b.tangent(position);
+    const Vec3 caa = a.secondDerivative(position), cbb = b.secondDerivative(position);
+    const double g[2] = {u.dot(ca), -u.dot(cb)};
+    Eigen::Matrix2d h;
+    h << ca.dot(ca) + u.dot(caa), -ca.dot(cb), -ca.dot(cb), cb.dot(cb) - u.dot(cbb);
+    bool held[2];
+    for (int k = 0; k < 2; ++k)
+      held[k] = (k == 0 ? holdS : holdT) || (p[k] <= lo[k] && g[k] > 0.0) || (p[k] >= hi[k] && g[k] < 0.0);
+    double step[2] = {0.0, 0.0};
+    if (!held[0] && !held[1]) {
+      const Eigen::Vector2d gv(g[0], g[1]);
+      if (h(0, 0) > 0.0 && h.determinant() > 1e-12 * h(0, 0) * h(1, 1)) {
+        const Eigen::Vector2d d = -h.ldlt().solve(gv);
+        step[0] = d(0);
+        step[1] = d(1);
+      } else {
+        step[0] = -g[0] / std::max(ca.squaredNorm(), 1e-300);
+        step[1] = -g[1] / std::max(cb.squaredNorm(), 1e-300);
+      }
+    } else {
+      for (int k = 0; k < 2; ++k) {
+        if (held[k]) continue;
+        const double scale = k == 0 ? ca.squaredNorm() : cb.squaredNorm();
+        step[k] = -g[k] / (h(k, k) > 0.0 ? h(k, k) : std::max(scale, 1e-300));
+      }
+    }
+    if (std::abs(step[0]) + std::abs(step[1]) < 1e-13) break;
+    // Accept a step that lowers V, or (near the minimum, where V changes below its round-off) one
+    // that lowers the gradient: the Newton step there converges quadratically.
+    const double v0 = 0.5 * u.squaredNorm();
+    const double g0 = std::hypot(held[0] ? 0.0 : g[0], held[1] ? 0.0 : g[1]);
+    double lambda = 1.0;
+    double q[2];
+    bool improved = false;
+    for (int halving = 0; halving < 40; ++halving, lambda *= 0.5) {
+      for (int k = 0; k < 2; ++k) q[k] = std::clamp(p[k] + lambda * step[k], lo[k], hi[k]);
+      if (value(q) < v0 || (halving == 0 && gradientNorm(q) < 0.5 * g0)) {
+        improved = true;
+        break;
+      }
+    }
+    if (!improved) break;
+    const double moved = std::abs(q[0] - p[0]) + std::abs(q[1] - p[1]);
+    p[0] = q[0];
+    p[1] = q[1];
+    if (moved < 1e-13) break;
+  }
+  CentrelineDistance r;
+  r.s = p[0];
+  r.t = p[1];
+  r.sFree = !holdS && p[0] > sLo && p[0] < sHi;
+  r.tFree = !holdT && p[1] > tLo && p[1] < tHi;
+  r.a = centrelineStencil(model, elementA, r.s);
+  r.b = centrelineStencil(model, elementB, r.t);
+  r.pointA = r.a.point(position);
+  r.pointB = r.b.point(position);
+  r.distance = (r.pointA - r.pointB).norm();
+  return r;
+}
+
+CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, const CentrelineDistance& d, double sign,
+                                          bool wantHessian) {
+  CentrelineKinematics k;
+  for (int i = 0; i < 4; ++i) {
+    k.node[i] = d.a.node[i];
+    k.weight[i] = d.a.N[i];
+    k.node[4 + i] = d.b.node[i];
+    k.weight[4 + i] = -d.b.N[i];
+    k.used[i] = d.a.N[i] != 0.0 || d.a.dN[i] != 0.0 || d.a.ddN[i] != 0.0;
+    k.used[4 + i] = d.b.N[i] != 0.0 || d.b.dN[i] != 0.0 || d.b.ddN[i] != 0.0;
+  }
+  const Vec3 u = d.pointA - d.pointB;
+  const double dist = u.norm();
+  k.distance = sign * dist;
+  k.normal = dist > 0.0 ? Vec3(sign * u / dist) : Vec3(Vec3::UnitZ());
+  for (int i = 0; i < 8; ++i) k.gradient.segment<3>(3 * i) = k.weight[i] * k.normal;
+  if (!wantHessian || dist <= 0.0) return k;
+  using Mat24 = Eigen::Matrix<double, 24, 24>;
+  Mat24 hv = Mat24::Zero();
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) hv.block<3, 3>(3 * i, 3 * j) = k.weight[i] * k.weight[j] * Mat3::Identity();
+  // Mixed derivatives V_xp for the free parameters: column for p is, per slot i, w_i du/dp + (dw_i/dp) u.
+  const Vec3 ca = d.a.tangent(position), cb = d.b.tangent(position);
+  const Vec3 caa = d.a.secondDerivative(position), cbb = d.b.secondDerivative(position);
+  Eigen::Matrix<double, 24, 2> bxp = Eigen::Matrix<double, 24, 2>::Zero();
+  Vec3 m[2];
+  double curvatureTerm[2];
+  int nFree = 0;
+  if (d.sFree) {
+    m[nFree] = ca;
+    curvatureTerm[nFree] = u.dot(caa);
+    for (int i = 0; i < 8; ++i) {
+      const double dw = i < 4 ? d.a.dN[i] : 0.0;
+      bxp.block<3, 1>(3 * i, nFree) = k.weight[i] * m[nFree] + dw * u;
+    }
+    ++nFree;
+  }
+  if (d.tFree) {
+    m[nFree] = -cb;
+    curvatureTerm[nFree] = -u.dot(cbb);
+    for (int i = 0; i < 8; ++i) {
+      const double dw = i < 4 ? 0.0 : -d.b.dN[i - 4];
+      bxp.block<3, 1>(3 * i, nFree) = k.weight[i] * m[nFree] + dw * u;
+    }
+    ++nFree;
+  }
+  if (nFree == 1) {
+    const double vpp = m[0].squaredNorm() + curvatureTerm[0];
+    if (vpp > 0.0) hv -= bxp.col(0) * bxp.col(0).transpose() / vpp;
+  } else if (nFree == 2) {
+    Eigen::Matrix2d vpp;
+    vpp << m[0].dot(m[0]) + curvatureTerm[0], m[0].dot(m[1]), m[1].dot(m[0]), m[1].dot(m[1]) + curvatureTerm[1];
+    const double det = vpp.determinant();
+    if (det > 1e-12 * std::abs(vpp(0, 0) * vpp(1, 1))) hv -= bxp * vpp.inverse() * bxp.transpose();
+  }
+  const Eigen::Matrix<double, 24, 1> g = sign * k.gradient;  // gradient of the unsigned distance
+  k.hessian = sign * (hv - g * g.transpose()) / dist;
+  return k;
+}
+
+}  // namespace tangle::contact

@@ -1,0 +1,99 @@
+#pragma once
+/// @file SmoothCentreline.hpp
+/// The C1 centreline through a line's nodes on which point-to-point contact is measured.
+///
+/// Why: the finite-element centreline is a polyline. At a node it has a corner, and the distance from
+/// a corner to another line behaves like the distance to a sphere: the normal turns with any sideways
+/// motion (a negative lateral stiffness -F/d) and the closest point hops between the two elements at the
+/// node. Two beams crossing node on node (the seed paper's case 6.1 with 20 or 60 elements) then make
+/// Newton cycle. Point-to-point contact of smooth beams (Wriggers & Zavarise 1997; Meier, Wall & Popp
+/// 2017, who use C1 Hermite elements) assumes a unique closest point with a continuous normal.
+///
+/// What: on element e = (x1, x2) of a line, with neighbouring nodes x0 (before) and x3 (after), the
+/// cubic Hermite curve
+///     c(s) = h00(s) x1 + h01(s) x2 + h10(s) m1 + h11(s) m2,  s in [0, 1],
+/// with the nodal tangents (in units of this element's parameter) of the three-point finite
+/// difference on the rest arc lengths L0, L1, L2 of the elements before, at and after:
+///     c'(node) / L = L1/(L0+L1) (x1-x0)/L0 + L0/(L0+L1) (x2-x1)/L1         (node 1, m1 = L1 c'/L)
+/// and likewise at node 2 (a non-uniform Catmull-Rom spline). The tangent per unit rest arc length is the
+/// same seen from both elements at a node, so the centreline is C1. At a line end the tangent is the
+/// end element's chord (a single-element line is its straight segment). The curve passes through the
+/// nodes and is a linear combination of the four node positions, c(s) = sum_k N_k(s) x_k, so forces go
+/// to the nodes through N_k and the tangent stiffness follows from the same weights.
+/// Deviation from the polyline: at most about kappa L^2 / 8 for curvature kappa and element length L.
+///
+/// Which lines: beams (a type with bending stiffness), whose true centreline is smooth. A cable (bar
+/// elements) keeps its polyline: it really folds at a node where it is draped over another line (a
+/// chain over a wire), and rounding that fold moves the contact off the node onto the two legs,
+/// pushing them apart (measured: the horizontal tension of a chain draped over a wire 5.6 % low against
+/// the catenary, 0.12 % with the contact at the node); LineContact moves such contacts to the node.
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "tangle/core/Types.hpp"
+#include "tangle/model/Model.hpp"
+
+namespace tangle::contact {
+
+/// A point of the smooth centreline: c(s) = sum_k N_k(s) x_{node_k} (k < 4; unused slots have zero weights).
+struct CentrelineStencil {
+  std::array<int, 4> node{};               ///< global node indices
+  std::array<double, 4> N{}, dN{}, ddN{};  ///< weights [-] and their first and second s-derivatives [-]
+
+  Vec3 point(const std::vector<Vec3>& x) const;      ///< c(s) [m]
+  Vec3 tangent(const std::vector<Vec3>& x) const;    ///< dc/ds [m]
+  Vec3 secondDerivative(const std::vector<Vec3>& x) const;  ///< d2c/ds2 [m]
+};
+
+/// True if `element` belongs to a line measured on the smooth centreline (a beam), false for a cable.
+bool hasSmoothCentreline(const model::Model& model, int element);
+
+/// Stencil of the smooth centreline (the chord's linear interpolation for a cable) on `element` at parameter s (s may lie a little outside [0, 1]:
+/// the cubic is extrapolated).
+CentrelineStencil centrelineStencil(const model::Model& model, int element, double s);
+
+/// Range of the parameter of an element's piece searched for a closest point: [0, 1], widened by
+/// kParameterOverlap at an interior node of a beam, so that a minimum at or near a node is strictly inside the
+/// range of at least one of the two elements there (one of them is kept as the local minimum).
+inline constexpr double kParameterOverlap = 0.05;
+
+/// Closest points of the smooth centrelines of two elements.
+struct CentrelineDistance {
+  double s = 0.0, t = 0.0;        ///< parameters on element A and B [-]
+  bool sFree = true, tFree = true;  ///< strictly inside the search range (a stationary point in it)
+  CentrelineStencil a, b;         ///< stencils at s and t
+  Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();  ///< closest points [m]
+  double distance = 0.0;          ///< |pointA - pointB| [m]
+};
+
+/// Minimises |c_A(s) - c_B(t)| over the search ranges of the two elements by a projected Newton method
+/// with a backtracking line search on the squared distance, started from (s0, t0) (the closest points
+/// of the two chords). holdS (holdT) keeps s = s0 (t = t0): the closest point of B's centreline to a given
+/// point of A's (then not free).
+CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position, int elementA,
+                                      int elementB, double s0, double t0, bool holdS = false, bool holdT = false);
+
+/// The distance between the closest points and its exact derivatives with respect to the eight node
+/// positions of the two stencils (A's four, then B's four; a node in both gets both contributions).
+struct CentrelineKinematics {
+  double distance = 0.0;            ///< sign * |pA - pB| [m]
+  Vec3 normal = Vec3::UnitZ();      ///< sign * (pA - pB) / |pA - pB|
+  std::array<int, 8> node{};        ///< global node of each slot
+  std::array<double, 8> weight{};   ///< N_k for A's slots, -N_k for B's
+  std::array<bool, 8> used{};       ///< false for a slot with N_k, dN_k and ddN_k all zero (no node there)
+  Eigen::Matrix<double, 24, 1> gradient = Eigen::Matrix<double, 24, 1>::Zero();  ///< d distance / dx [-]
+  Eigen::Matrix<double, 24, 24> hessian = Eigen::Matrix<double, 24, 24>::Zero();  ///< [1/m]
+};
+
+/// Value-function derivatives (envelope theorem) over the free parameters: with u = c_A(s) - c_B(t) and
+/// V = |u|^2 / 2 minimised over the free parameters p,
+///     Hess V* = V_xx - V_xp V_pp^-1 V_px,   V_pp = [[cA'.cA' + u.cA'', -cA'.cB'], [., cB'.cB' - u.cB'']],
+/// and d = sqrt(2 V*): grad d = w_k n, Hess d = (Hess V* - grad d grad d^T) / d (docs/theory.md 9.3).
+/// @param sign -1 to measure along the reversed direction (lines that passed each other)
+CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, const CentrelineDistance& d, double sign,
+                                          bool wantHessian);
+
+}  // namespace tangle::contact

@@ -1,0 +1,149 @@
+// The smooth (C1) centreline of point-to-point contact (SmoothCentreline.hpp): interpolation, C1
+// continuity at nodes, exactness for quadratic shapes, the closest-point search and the exact
+// derivatives of the distance.
+//
+// Sources: the three-point difference on non-uniform spacing is exact for quadratics, and a cubic
+// Hermite curve with exact end values and tangents reproduces a quadratic exactly; so nodes placed on a
+// parabola x(sigma) at their rest arc lengths sigma give c(s) = x(sigma_i + s L_i) to round-off
+// (tolerance 1e-12 m on 1 m coordinates). Derivatives: central differences with h = 1e-6 m (truncation
+// ~h^2, round-off ~1e-16/h), tolerance 1e-6 of the largest entry.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "support/ModelFactory.hpp"
+#include "tangle/contact/SmoothCentreline.hpp"
+
+namespace tangle {
+namespace {
+
+/// Two lines of three sections with unequal element lengths (1.0, 0.5, 2.0 m elements).
+model::Model twoLines() {
+  model::ModelSpec spec;
+  spec.sourceFile = "centreline (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["c"] = test::solidRodType("c", 0.1, 2.1e11, 7850.0);  // beams: smooth centreline
+  for (const char* name : {"a", "b"}) {
+    model::LineSpec l = test::simpleLine(name, "c", 3.0, 3, model::EndKind::Pinned, Vec3(0, 0, 0), model::EndKind::Pinned,
+                                         Vec3(8, 0, 0));
+    l.sections.push_back({"c", 1.0, 2});
+    l.sections.push_back({"c", 4.0, 2});
+    spec.lines.push_back(l);
+  }
+  return model::Model(spec);
+}
+
+Vec3 parabola(double sigma) { return Vec3(0.9 * sigma, 0.3 + 0.05 * sigma * sigma, -0.02 * sigma * sigma + 0.1 * sigma); }
+
+TEST(SmoothCentreline, ACableKeepsItsPolyline) {
+  model::ModelSpec spec;
+  spec.sourceFile = "centreline (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["c"] = test::cableType("c", 0.1, 20.0, 1e8);
+  spec.lines = {test::simpleLine("a", "c", 3.0, 3, model::EndKind::Pinned, Vec3(0, 0, 0), model::EndKind::Pinned, Vec3(3, 0, 0))};
+  const model::Model m(spec);
+  EXPECT_FALSE(contact::hasSmoothCentreline(m, 1));
+  std::vector<Vec3> x = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 1, 0), Vec3(3, 1, 0)};
+  const contact::CentrelineStencil st = contact::centrelineStencil(m, 1, 0.25);
+  EXPECT_LT((st.point(x) - Vec3(1.25, 0.25, 0)).norm(), 1e-15);
+  EXPECT_LT((st.tangent(x) - Vec3(1, 1, 0)).norm(), 1e-15);
+  EXPECT_EQ(st.secondDerivative(x).norm(), 0.0);
+}
+
+TEST(SmoothCentreline, ReproducesAQuadraticShapeWithUnequalElementsAndIsC1AtNodes) {
+  const model::Model m = twoLines();
+  const model::Line& line = m.lines()[0];
+  std::vector<Vec3> x(m.nodeCount(), Vec3::Zero());
+  for (int i = 0; i < line.nodeCount; ++i) x[line.firstNode + i] = parabola(line.arcLength[i]);
+  // Interior elements only: at the line ends the tangent is the chord (not exact for a parabola).
+  for (int e = line.firstElement + 1; e < line.firstElement + line.elementCount - 1; ++e) {
+    const int i = e - line.firstElement;
+    const double length = line.arcLength[i + 1] - line.arcLength[i];
+    for (double s : {0.0, 0.3, 0.5, 1.0}) {
+      const contact::CentrelineStencil st = contact::centrelineStencil(m, e, s);
+      EXPECT_LT((st.point(x) - parabola(line.arcLength[i] + s * length)).norm(), 1e-12) << "element " << e << " s " << s;
+      double sum = 0.0;
+      for (double n : st.N) sum += n;
+      EXPECT_NEAR(sum, 1.0, 1e-14);
+    }
+  }
+  // C1 at every interior node: the tangent per unit rest length is the same from both elements, also
+  // for a shape that is not quadratic.
+  for (int i = 0; i < line.nodeCount; ++i)
+    x[line.firstNode + i] = Vec3(std::cos(line.arcLength[i]), std::sin(1.3 * line.arcLength[i]), 0.1 * i * i);
+  for (int e = line.firstElement; e < line.firstElement + line.elementCount - 1; ++e) {
+    const double l0 = m.elements()[e].restLength, l1 = m.elements()[e + 1].restLength;
+    const contact::CentrelineStencil before = contact::centrelineStencil(m, e, 1.0);
+    const contact::CentrelineStencil after = contact::centrelineStencil(m, e + 1, 0.0);
+    EXPECT_LT((before.point(x) - after.point(x)).norm(), 1e-14);
+    EXPECT_LT((before.tangent(x) / l0 - after.tangent(x) / l1).norm(), 1e-12) << "node after element " << e;
+  }
+}
+
+TEST(SmoothCentreline, ClosestPointsAreStationaryAndTheDistanceDerivativesAreExact) {
+  const model::Model m = twoLines();
+  const model::Line& la = m.lines()[0];
+  const model::Line& lb = m.lines()[1];
+  std::vector<Vec3> x0(m.nodeCount(), Vec3::Zero());
+  // A curved along x (bowed in z), B curved crossing it at about 60 deg, 0.05 m below.
+  for (int i = 0; i < la.nodeCount; ++i) {
+    const double s = la.arcLength[i] - 4.0;
+    x0[la.firstNode + i] = Vec3(s, 0.02 * s * s, 0.3 - 0.03 * s * s);
+  }
+  const Vec3 dir(std::cos(1.05), std::sin(1.05), 0.0);
+  for (int i = 0; i < lb.nodeCount; ++i) {
+    const double s = lb.arcLength[i] - 4.3;
+    x0[lb.firstNode + i] = s * dir + Vec3(0.1, 0.0, 0.25 + 0.04 * s * s);
+  }
+  // The pair near the crossing: search every pair, keep the smallest distance with free parameters.
+  auto solve = [&](const std::vector<Vec3>& x) {
+    contact::CentrelineDistance best;
+    best.distance = 1e300;
+    for (int ea = la.firstElement; ea < la.firstElement + la.elementCount; ++ea)
+      for (int eb = lb.firstElement; eb < lb.firstElement + lb.elementCount; ++eb) {
+        const contact::CentrelineDistance d = contact::centrelineDistance(m, x, ea, eb, 0.5, 0.5);
+        if (d.sFree && d.tFree && d.distance < best.distance) best = d;
+      }
+    return best;
+  };
+  const contact::CentrelineDistance d = solve(x0);
+  ASSERT_LT(d.distance, 1.0);
+  // Stationary: the separation is normal to both tangents.
+  const Vec3 u = d.pointA - d.pointB;
+  EXPECT_LT(std::abs(u.normalized().dot(d.a.tangent(x0).normalized())), 1e-10);
+  EXPECT_LT(std::abs(u.normalized().dot(d.b.tangent(x0).normalized())), 1e-10);
+
+  const contact::CentrelineKinematics k = contact::centrelineKinematics(x0, d, 1.0, true);
+  auto elementOf = [&](const contact::CentrelineStencil& st) {
+    for (int e = 0; e < static_cast<int>(m.elements().size()); ++e)
+      if (m.elements()[e].node1 == st.node[1] && m.elements()[e].node2 == st.node[2]) return e;
+    return -1;
+  };
+  const int ea = elementOf(d.a), eb = elementOf(d.b);
+  const double h = 1e-6;
+  double worstGradient = 0.0, worstHessian = 0.0;
+  for (int slot = 0; slot < 8; ++slot)
+    for (int c = 0; c < 3; ++c) {
+      std::vector<Vec3> xp = x0, xm = x0;
+      xp[k.node[slot]][c] += h;
+      xm[k.node[slot]][c] -= h;
+      // Re-solve from the converged parameters on the same element pair.
+      const auto kp = contact::centrelineKinematics(xp, contact::centrelineDistance(m, xp, ea, eb, d.s, d.t), 1.0, false);
+      const auto km = contact::centrelineKinematics(xm, contact::centrelineDistance(m, xm, ea, eb, d.s, d.t), 1.0, false);
+      // Several slots can hold the same node (none here: the pair is far from the line ends and the
+      // lines are different), so a slot's derivative is the node's.
+      worstGradient = std::max(worstGradient, std::abs((kp.distance - km.distance) / (2 * h) - k.gradient[3 * slot + c]));
+      // Hessian column: derivative of the node-summed gradient.
+      for (int r = 0; r < 8; ++r) {
+        const Vec3 fd = (kp.gradient.segment<3>(3 * r) - km.gradient.segment<3>(3 * r)) / (2 * h);
+        const Vec3 an = k.hessian.block<3, 1>(3 * r, 3 * slot + c);
+        worstHessian = std::max(worstHessian, (fd - an).cwiseAbs().maxCoeff());
+      }
+    }
+  EXPECT_LT(worstGradient, 1e-8);
+  EXPECT_LT(worstHessian, 1e-6 * k.hessian.cwiseAbs().maxCoeff()) << "largest entry " << k.hessian.cwiseAbs().maxCoeff();
+}
+
+}  // namespace
+}  // namespace tangle
