@@ -597,9 +597,7 @@ bool LineContact::acceptStep(const model::State& before, const model::State& aft
     const Vec3 n0 = d0.closest0 - d0.closest1;
     if (d0.distance - radii > 0.0 && n0.norm() > 1e-12) {
       // Tunnelling: the centrelines crossed (the separation vector reversed) within both segments.
-      const Vec3 n1 = d1.closest0 - d1.closest1;
-      const bool interior = d1.s > 0.0 && d1.s < 1.0 && d1.t > 0.0 && d1.t < 1.0;
-      if (interior && n0.dot(n1) < 0.0) return false;
+      if (passedThrough(a.element, b.element, d0, d1)) return false;
     }
   }
   return true;

@@ -28,6 +28,7 @@
 
 #include "tangle/contact/BroadPhase.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
+#include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
 
@@ -225,6 +226,10 @@ class LineContact final : public solver::LoadContributor {
                    solver::SystemMatrix* matrix);
   void commitFriction();
   void buildExclusions();
+  /// Whether elements A and B passed through each other between two states, from their closest points
+  /// before and after (StaticContact.cpp).
+  bool passedThrough(int elementA, int elementB, const geometry::SegmentDistanceResult& before,
+                     const geometry::SegmentDistanceResult& after) const;
   /// Line-to-line stiffness per unit length [N/m^2] and dashpot [N s/m^2] of two elements.
   double lineStiffness(int eA, int eB) const;
   double lineDamping(int eA, int eB) const;

@@ -18,6 +18,21 @@ constexpr double kClosingFraction = 0.25;
 constexpr double kRejectDepth = 0.5;
 }  // namespace
 
+bool LineContact::passedThrough(int elementA, int elementB, const geometry::SegmentDistanceResult& before,
+                                const geometry::SegmentDistanceResult& after) const {
+  // The separation vector of the closest points reversed, with the closest points after the move inside
+  // both lines: strictly inside the segments, or at a node between two elements (lines crossing node on
+  // node, where every element pair has its closest points at segment ends). Only at a line's free end
+  // can the separation reverse without a crossing (a line going round the end of another).
+  const auto inside = [&](int element, double w) {
+    if (w > 0.0 && w < 1.0) return true;
+    const model::Line& l = m_model->lines()[m_model->elements()[element].line];
+    return w <= 0.0 ? element > l.firstElement : element < l.firstElement + l.elementCount - 1;
+  };
+  if (!inside(elementA, after.s) || !inside(elementB, after.t)) return false;
+  return (before.closest0 - before.closest1).dot(after.closest0 - after.closest1) < 0.0;
+}
+
 double LineContact::limitIncrement(const model::State& state, const VecX& fullIncrement) {
   const model::DofMap& dofs = m_model->dofs();
   const auto& elements = m_model->elements();
@@ -40,7 +55,7 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   struct Pair {
     int ea, eb;
     double radii, gap0;
-    Vec3 sep0;
+    geometry::SegmentDistanceResult before;
   };
   std::vector<Pair> watched;
   for (const CandidatePair& cp : pairs) {
@@ -48,8 +63,7 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
     const SegmentProxy& b = m_proxies[cp.second];
     if (!elementPairAllowed(a.element, b.element)) continue;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
-    watched.push_back({a.element, b.element, a.radius + b.radius, d.distance - a.radius - b.radius,
-                       d.closest0 - d.closest1});
+    watched.push_back({a.element, b.element, a.radius + b.radius, d.distance - a.radius - b.radius, d});
   }
   auto admissible = [&](double alpha) {
     for (const Pair& p : watched) {
@@ -60,8 +74,7 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
           state.position[eb.node1] + alpha * move[eb.node1], state.position[eb.node2] + alpha * move[eb.node2]);
       const double gap = d.distance - p.radii;
       if (gap < std::min(p.gap0, 0.0) - kClosingFraction * p.radii) return false;
-      const bool interior = d.s > 0.0 && d.s < 1.0 && d.t > 0.0 && d.t < 1.0;
-      if (interior && p.sep0.dot(d.closest0 - d.closest1) < 0.0) return false;  // passed through
+      if (passedThrough(p.ea, p.eb, p.before, d)) return false;
     }
     return true;
   };
@@ -73,9 +86,14 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
 std::string LineContact::rejectState(const model::State& state) {
   if (m_staticReference.empty()) m_staticReference = m_model->initialState().position;
   const auto& elements = m_model->elements();
+  // Pairs within reach of each other now or at the reference state: the radii plus the largest move
+  // of a node since the reference (a line that passed right through another is no longer near it).
+  double largestMove = 0.0;
+  for (int n = 0; n < m_model->nodeCount(); ++n)
+    largestMove = std::max(largestMove, (state.position[n] - m_staticReference[n]).norm());
   buildProxies(state);
   BroadPhaseOptions options = m_broadPhase.options();
-  options.margin = m_maxRadius;
+  options.margin = m_maxRadius + largestMove;
   BroadPhase broad(options);
   std::vector<CandidatePair> pairs;
   broad.findPairs(m_proxies, pairs);
@@ -86,7 +104,6 @@ std::string LineContact::rejectState(const model::State& state) {
     if (!elementPairAllowed(a.element, b.element)) continue;
     const double radii = a.radius + b.radius;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
-    if (d.distance >= radii) continue;
     const model::LineElement& ea = elements[a.element];
     const model::LineElement& eb = elements[b.element];
     const std::string where =
@@ -97,8 +114,7 @@ std::string LineContact::rejectState(const model::State& state) {
                          radii - d.distance, radii);
     const geometry::SegmentDistanceResult r = geometry::segmentDistance(
         m_staticReference[ea.node1], m_staticReference[ea.node2], m_staticReference[eb.node1], m_staticReference[eb.node2]);
-    const bool interior = d.s > 0.0 && d.s < 1.0 && d.t > 0.0 && d.t < 1.0;
-    if (interior && r.distance > 0.5 * radii && (r.closest0 - r.closest1).dot(d.closest0 - d.closest1) < 0.0)
+    if (r.distance > 0.5 * radii && r.distance < radii + largestMove && passedThrough(a.element, b.element, r, d))
       return fmt::format("{} have passed through each other", where);
   }
   return {};
