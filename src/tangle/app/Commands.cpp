@@ -10,6 +10,7 @@
 
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/ClashReport.hpp"
+#include "tangle/contact/StaticContactReport.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
@@ -250,6 +251,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   io::writeStaticLineTables(outDir, lines);
   if (m.spec().output.vtk) io::PvdSeries(outDir / "vtk" / "statics.pvd").addStep(0.0, io::toPolylines(lines));
   log.info(result.message + "\n");
+  if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
   for (const auto& s : lines) {
     std::string text = fmt::format(
         "  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m", s.name,

@@ -64,6 +64,15 @@ void ClashReport::recordClearance(const model::State& state) {
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
     const auto c = m_contact->clearance(state, m_pairs[p][0], m_pairs[p][1]);
     m_samples.push_back({state.time, p, c[0], c[1], c[2]});
+    ForceSample f{state.time, p, 0.0, 0.0, 0.0, 0};
+    for (const ContactPatch& patch : m_contact->patches()) {
+      if (patch.lineA != m_pairs[p][0] || patch.lineB != m_pairs[p][1]) continue;
+      f.force += patch.force;
+      f.peakPerLength = std::max(f.peakPerLength, patch.peakForcePerLength);
+      f.length += patch.length;
+      ++f.patches;
+    }
+    m_forces.push_back(f);
   }
 }
 
@@ -75,17 +84,20 @@ void ClashReport::write(const fs::path& dir) const {
   {
     io::OutputFile file(out / "events.csv");
     std::ostream& f = file.stream();
-    f << "event,line_1,line_2,start_time_s,end_time_s,arc_1_start_m,arc_2_start_m,arc_1_min_m,arc_1_max_m,"
-         "arc_2_min_m,arc_2_max_m,peak_force_N,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,"
-         "effective_mass_1_kg,effective_mass_2_kg,lumped_mass_1_kg,lumped_mass_2_kg,max_penetration_m,open\n";
+    f << "event,line_1,line_2,kind,start_time_s,end_time_s,x_start_m,y_start_m,z_start_m,arc_1_start_m,arc_2_start_m,"
+         "arc_1_min_m,arc_1_max_m,arc_2_min_m,arc_2_max_m,peak_force_N,peak_force_per_length_N_per_m,"
+         "max_contact_length_m,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,energy_mass_kg,energy_mass_basis,"
+         "effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open\n";
     for (std::size_t i = 0; i < events.size(); ++i) {
       const ContactEvent& e = events[i];
-      f << fmt::format("{},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},"
-                       "{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{}\n",
-                       i, lines[e.lineA].name, lines[e.lineB].name, e.startTime, e.endTime, e.arcAStart, e.arcBStart,
-                       e.arcAMin, e.arcAMax, e.arcBMin, e.arcBMax, e.peakForce, e.impulse, e.impactVelocity,
-                       e.impactEnergy, e.effectiveMassA, e.effectiveMassB, e.lumpedMassA, e.lumpedMassB,
-                       e.maxPenetration, e.open ? "true" : "false");
+      f << fmt::format("{},{},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.6e},"
+                       "{:.6e},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{}\n",
+                       i, lines[e.lineA].name, lines[e.lineB].name, e.kind(), e.startTime, e.endTime,
+                       e.positionStart.x(), e.positionStart.y(), e.positionStart.z(), e.arcAStart, e.arcBStart,
+                       e.arcAMin, e.arcAMax, e.arcBMin, e.arcBMax, e.peakForce, e.peakForcePerLength,
+                       e.maxContactLength, e.impulse, e.impactVelocity, e.impactEnergy, e.energyMass,
+                       e.energyMassBasis, e.effectiveMassA, e.effectiveMassB, e.maxPenetration,
+                       e.open ? "true" : "false");
     }
     file.close();
   }
@@ -111,6 +123,15 @@ void ClashReport::write(const fs::path& dir) const {
     }
     file.close();
   }
+  {
+    io::OutputFile file(out / "forces.csv");
+    std::ostream& f = file.stream();
+    f << "time_s,pair,total_force_N,peak_force_per_length_N_per_m,contact_length_m,patches\n";
+    for (const ForceSample& s : m_forces)
+      f << fmt::format("{:.6f},{}-{},{:.6e},{:.6e},{:.4f},{}\n", s.time, lines[m_pairs[s.pair][0]].name,
+                       lines[m_pairs[s.pair][1]].name, s.force, s.peakPerLength, s.length, s.patches);
+    file.close();
+  }
   io::OutputFile summary(out / "summary.json");
   io::JsonWriter j(summary.stream());
   j.beginObject();
@@ -124,8 +145,16 @@ void ClashReport::write(const fs::path& dir) const {
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
     const int a = m_pairs[p][0], b = m_pairs[p][1];
     std::vector<double> velocity, energy, force;
+    int sustained = 0;
+    double peakSustained = 0.0, contactTime = 0.0;
     for (const ContactEvent& e : events) {
       if (e.lineA != a || e.lineB != b) continue;
+      contactTime += e.endTime - e.startTime;
+      if (e.sustained) {
+        ++sustained;
+        peakSustained = std::max(peakSustained, e.peakForce);
+      }
+      if (!e.impact) continue;  // the distributions are over impacts only
       velocity.push_back(e.impactVelocity);
       energy.push_back(e.impactEnergy);
       force.push_back(e.peakForce);
@@ -138,6 +167,9 @@ void ClashReport::write(const fs::path& dir) const {
     j.field("line_2", lines[b].name);
     j.field("stiffness_N_per_m", m_contact->stiffness(a, b));
     j.field("impacts", static_cast<int>(velocity.size()));
+    j.field("sustained_contacts", sustained);
+    j.field("sustained_peak_force_N", peakSustained);
+    j.field("time_in_contact_s", contactTime);
     writeStats(j, "impact_velocity_m_per_s", velocity);
     writeStats(j, "impact_energy_J", energy);
     writeStats(j, "peak_force_N", force);
@@ -160,21 +192,23 @@ std::string ClashReport::terminalSummary() const {
   std::string s = fmt::format("clash report: {} contact event(s)\n", m_contact->events().size());
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
     const int a = m_pairs[p][0], b = m_pairs[p][1];
-    int count = 0;
+    int count = 0, sustained = 0;
     double vmax = 0.0, emax = 0.0, fmax = 0.0;
     for (const ContactEvent& e : m_contact->events()) {
       if (e.lineA != a || e.lineB != b) continue;
+      fmax = std::max(fmax, e.peakForce);
+      if (e.sustained) ++sustained;
+      if (!e.impact) continue;
       ++count;
       vmax = std::max(vmax, e.impactVelocity);
       emax = std::max(emax, e.impactEnergy);
-      fmax = std::max(fmax, e.peakForce);
     }
     double minClear = std::numeric_limits<double>::infinity();
     for (const ClearanceSample& c : m_samples)
       if (c.pair == p) minClear = std::min(minClear, c.clearance);
-    s += fmt::format("  {} / {}: {} impact(s), max impact velocity {:.3f} m/s, max impact energy {:.4g} J, "
+    s += fmt::format("  {} / {}: {} impact(s), {} sustained contact(s), max impact velocity {:.3f} m/s, max impact energy {:.4g} J, "
                      "max contact force {:.4g} kN, min clearance {}\n",
-                     lines[a].name, lines[b].name, count, vmax, emax, fmax / 1000.0,
+                     lines[a].name, lines[b].name, count, sustained, vmax, emax, fmax / 1000.0,
                      std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
   }
   return s;

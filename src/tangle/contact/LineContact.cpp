@@ -32,6 +32,7 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
       m_spec(spec),
       m_timeStep(timeStep),
       m_zeta(dampingRatioForRestitution(spec.restitution)),
+      m_eventTracker(spec.impactVelocityThreshold, spec.eventSeparationTime),
       m_debug(std::getenv("TANGLE_DEBUG_CONTACT") != nullptr) {
   const int nLines = static_cast<int>(model.lines().size());
   m_lineEnabled.resize(nLines);
@@ -606,13 +607,34 @@ bool LineContact::acceptStep(const model::State& before, const model::State& aft
 void LineContact::commitStep(model::State& state, double dt) {
   m_time = state.time;
   commitFriction();
-  findContacts(state, dt > 0.0, false, false);
+  const bool dynamic = dt > 0.0;
+  findContacts(state, dynamic, false, false);
+  findLineSamples(state, dynamic);
   std::vector<bool> seen(m_tracked.size(), false);
   std::vector<TrackedContact> next;
+  std::vector<ContactSpot> spots;
+  const auto& elements = m_model->elements();
   for (const ContactPoint& c : m_trial) {
     if (c.normalForce <= 0.0) continue;
     const Vec3 va = stencilVelocity(state, c.curve.a);
     const Vec3 vb = stencilVelocity(state, c.curve.b);
+    ContactSpot spot;
+    spot.lineA = c.lineA;
+    spot.lineB = c.lineB;
+    spot.arcA = c.arcA;
+    spot.arcB = c.arcB;
+    spot.position = c.pointA;
+    spot.normal = c.normal;
+    spot.force = c.normalForce;
+    spot.approachSpeed = std::max(0.0, -c.gapRate);
+    spot.gap = c.gap;
+    spot.pairMass = c.pairMass;
+    spot.stiffness = stiffness(c.lineA, c.lineB);
+    spot.velocityBeforeA = spot.velocityA = va;
+    spot.velocityBeforeB = spot.velocityB = vb;
+    spot.radii = m_radius[c.elementA] + m_radius[c.elementB];
+    spot.minRadius = std::min(m_radius[c.elementA], m_radius[c.elementB]);
+    spot.elementLength = std::max(elements[c.elementA].restLength, elements[c.elementB].restLength);
     if (c.track >= 0 && !seen[c.track]) {
       seen[c.track] = true;
       TrackedContact tr = m_tracked[c.track];
@@ -681,50 +703,81 @@ void LineContact::commitStep(model::State& state, double dt) {
       tr.lumpedMassB = c.lumpedMassB;
       tr.minGap = c.gap;
       tr.path.push_back({state.time, c.arcA, c.arcB});
+      spot.approachSpeed = tr.impactVelocity;
+      spot.jumpImpulse = tr.jumpImpulse;
+      spot.velocityA = va0;
+      spot.velocityB = vb0;
       next.push_back(std::move(tr));
     }
+    spots.push_back(spot);
   }
-  // Contacts that ended: record their events.
-  for (std::size_t k = 0; k < m_tracked.size(); ++k)
-    if (!seen[k]) m_events.push_back(makeEvent(m_tracked[k], state.time, 0.5 * m_tracked[k].lastForce * dt, false));
   m_tracked = std::move(next);
+  // Line-to-line Gauss points.
+  const model::DofMap& dofs = m_model->dofs();
+  auto acceleration = [&](int element, double w) {
+    const model::LineElement& el = elements[element];
+    return Vec3((1.0 - w) * state.acceleration.segment<3>(dofs.firstDof(el.node1)) +
+                w * state.acceleration.segment<3>(dofs.firstDof(el.node2)));
+  };
+  for (const LineSample& smp : m_samples) {
+    if (smp.lineForce <= 0.0) continue;
+    ContactSpot spot;
+    spot.lineA = smp.lineA;
+    spot.lineB = smp.lineB;
+    spot.arcA = smp.arcA;
+    spot.arcB = smp.arcB;
+    const model::LineElement& ea = elements[smp.elementA];
+    spot.position = (1.0 - smp.xi) * state.position[ea.node1] + smp.xi * state.position[ea.node2];
+    spot.normal = smp.normal;
+    spot.length = smp.length;
+    spot.forcePerLength = smp.lineForce;
+    spot.force = smp.lineForce * smp.length;
+    // Approach speed before the step, as for point contacts (trapezoidal change over the step).
+    const double accelerationRate =
+        dynamic ? smp.normal.dot(acceleration(smp.elementA, smp.xi) - acceleration(smp.elementB, smp.t)) : 0.0;
+    spot.approachSpeed = std::max(0.0, -(smp.gapRate - 0.5 * dt * accelerationRate));
+    spot.gap = smp.gap;
+    // Reduced mass per unit length of the two lines times the length the point stands for.
+    const double muA = lumpedMass(smp.elementA, smp.xi) / elements[smp.elementA].restLength;
+    const double muB = lumpedMass(smp.elementB, smp.t) / elements[smp.elementB].restLength;
+    const double mu = std::isinf(muA) ? muB : std::isinf(muB) ? muA : muA * muB / (muA + muB);
+    spot.pairMass = mu * smp.length;
+    spot.stiffness = lineStiffness(smp.elementA, smp.elementB) * smp.length;
+    spot.velocityBeforeA = spot.velocityA = pointVelocity(state, smp.elementA, smp.xi);
+    spot.velocityBeforeB = spot.velocityB = pointVelocity(state, smp.elementB, smp.t);
+    spot.radii = m_radius[smp.elementA] + m_radius[smp.elementB];
+    spot.minRadius = std::min(m_radius[smp.elementA], m_radius[smp.elementB]);
+    spot.elementLength = std::max(elements[smp.elementA].restLength, elements[smp.elementB].restLength);
+    spots.push_back(spot);
+  }
+  m_eventTracker.update(state.time, dt, dynamic, spots, [&](int a, int b, double a0, double a1, double b0, double b1) {
+    return gapBetween(state, a, b, a0, a1, b0, b1);
+  });
 }
 
-ContactEvent LineContact::makeEvent(const TrackedContact& tr, double endTime, double closingImpulse, bool open) {
-  ContactEvent ev;
-  ev.lineA = tr.lineA;
-  ev.lineB = tr.lineB;
-  ev.startTime = tr.startTime;
-  ev.endTime = endTime;
-  ev.path = tr.path;
-  ev.arcAStart = tr.path.front()[1];
-  ev.arcBStart = tr.path.front()[2];
-  ev.arcAMin = ev.arcAMax = ev.arcAStart;
-  ev.arcBMin = ev.arcBMax = ev.arcBStart;
-  for (const auto& p : tr.path) {
-    ev.arcAMin = std::min(ev.arcAMin, p[1]);
-    ev.arcAMax = std::max(ev.arcAMax, p[1]);
-    ev.arcBMin = std::min(ev.arcBMin, p[2]);
-    ev.arcBMax = std::max(ev.arcBMax, p[2]);
+double LineContact::gapBetween(const model::State& state, int lineA, int lineB, double a0, double a1, double b0,
+                               double b1) const {
+  const model::Line& la = m_model->lines()[lineA];
+  const model::Line& lb = m_model->lines()[lineB];
+  const auto& elements = m_model->elements();
+  double best = kInf;
+  for (int i = 0; i < la.elementCount; ++i) {
+    if (la.arcLength[i + 1] < a0 || la.arcLength[i] > a1) continue;
+    const model::LineElement& ea = elements[la.firstElement + i];
+    for (int j = 0; j < lb.elementCount; ++j) {
+      if (lb.arcLength[j + 1] < b0 || lb.arcLength[j] > b1) continue;
+      if (lineA == lineB && std::abs(i - j) <= 1) continue;
+      const model::LineElement& eb = elements[lb.firstElement + j];
+      const geometry::SegmentDistanceResult d = geometry::segmentDistance(
+          state.position[ea.node1], state.position[ea.node2], state.position[eb.node1], state.position[eb.node2]);
+      best = std::min(best, d.distance - m_radius[la.firstElement + i] - m_radius[lb.firstElement + j]);
+    }
   }
-  ev.peakForce = tr.peakForce;
-  ev.impulse = tr.impulse + closingImpulse + tr.jumpImpulse;
-  ev.impactVelocity = tr.impactVelocity;
-  ev.impactEnergy = std::isfinite(tr.pairMass) ? 0.5 * tr.pairMass * tr.impactVelocity * tr.impactVelocity : 0.0;
-  // Paper Eq. 5 per line: the impulse over the normal velocity change of the line's contact point.
-  const double dva = std::abs(tr.normal.dot(tr.lastVelocityA - tr.startVelocityA));
-  const double dvb = std::abs(tr.normal.dot(tr.lastVelocityB - tr.startVelocityB));
-  ev.effectiveMassA = dva > 1e-12 ? ev.impulse / dva : kInf;
-  ev.effectiveMassB = dvb > 1e-12 ? ev.impulse / dvb : kInf;
-  ev.lumpedMassA = tr.lumpedMassA;
-  ev.lumpedMassB = tr.lumpedMassB;
-  ev.maxPenetration = std::max(0.0, -tr.minGap);
-  ev.open = open;
-  return ev;
+  return best;
 }
 
 void LineContact::finish(double time) {
-  for (const TrackedContact& tr : m_tracked) m_events.push_back(makeEvent(tr, time, 0.0, true));
+  m_eventTracker.finish(time);
   m_tracked.clear();
 }
 

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "tangle/contact/BroadPhase.hpp"
+#include "tangle/contact/ContactEvents.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/model/Model.hpp"
@@ -117,24 +118,6 @@ struct TrackedContact {
   double jumpImpulse = 0.0;          ///< impulse of the impulse-model velocity jump [N s]
 };
 
-/// A finished (or still open at the end of the run) contact event, for the clash report.
-struct ContactEvent {
-  int lineA = 0, lineB = 0;
-  double startTime = 0.0, endTime = 0.0;  ///< [s]
-  double arcAStart = 0.0, arcBStart = 0.0;  ///< where it began along each line [m]
-  double arcAMin = 0.0, arcAMax = 0.0, arcBMin = 0.0, arcBMax = 0.0;  ///< extent of the slide [m]
-  std::vector<std::array<double, 3>> path;  ///< (time, arcA, arcB) along the event
-  double peakForce = 0.0;       ///< [N]
-  double impulse = 0.0;         ///< integral of F dt [N s]
-  double impactVelocity = 0.0;  ///< relative normal velocity at impact [m/s]
-  double impactEnergy = 0.0;    ///< 1/2 m_pair v_n^2 [J]
-  double effectiveMassA = 0.0;  ///< Eq. 5: impulse / normal velocity change of line A at the point [kg]
-  double effectiveMassB = 0.0;  ///< Eq. 5 for line B [kg]
-  double lumpedMassA = 0.0, lumpedMassB = 0.0;  ///< instantaneous FE effective masses at impact [kg]
-  double maxPenetration = 0.0;  ///< [m]
-  bool open = false;            ///< still in contact when the run ended
-};
-
 /// The contact model, as a load contributor of the assembler.
 class LineContact final : public solver::LoadContributor {
  public:
@@ -164,8 +147,15 @@ class LineContact final : public solver::LoadContributor {
   const std::vector<ContactPoint>& contacts() const { return m_trial; }
   /// Contacts followed through time (committed).
   const std::vector<TrackedContact>& tracked() const { return m_tracked; }
-  /// Finished events (and, after finish(), the open ones).
-  const std::vector<ContactEvent>& events() const { return m_events; }
+  /// Finished events (and, after finish(), the open ones): ContactEvents.hpp gives the rule.
+  const std::vector<ContactEvent>& events() const { return m_eventTracker.events(); }
+  /// Events still open.
+  const std::vector<ContactEvent>& openEvents() const { return m_eventTracker.openEvents(); }
+  /// Contact patches per line pair at the last commit (total force, peak force per unit length, extent).
+  const std::vector<ContactPatch>& patches() const { return m_eventTracker.patches(); }
+  /// Smallest surface gap [m] between lines A and B over arc ranges [a0, a1] on A and [b0, b1] on B
+  /// (polyline; +inf if no element of either range).
+  double gapBetween(const model::State& state, int lineA, int lineB, double a0, double a1, double b0, double b1) const;
 
   /// Largest step [s] from this state so that no approaching pair closes by more than a fifth of its
   /// contact radii (no tunnelling) and every active impact is resolved with at least 20 steps.
@@ -201,7 +191,6 @@ class LineContact final : public solver::LoadContributor {
   /// Rebuilds the proxies and the candidate pairs with the current margin.
   void refreshCandidates(const model::State& state);
   void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;
-  static ContactEvent makeEvent(const TrackedContact& tr, double endTime, double closingImpulse, bool open);
   double lumpedMass(int element, double w) const;
   /// Element pairs (A, B) that are the same or adjacent along both lines.
   bool neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const;
@@ -253,7 +242,7 @@ class LineContact final : public solver::LoadContributor {
   std::set<std::pair<int, int>> m_released;  // element pairs released in this step (they pulled)
   int m_releaseRounds = 0;
   std::vector<TrackedContact> m_tracked;
-  std::vector<ContactEvent> m_events;
+  ContactEventTracker m_eventTracker;
   double m_time = 0.0;
   std::vector<LineSample> m_samples;
   std::vector<FrictionPatch> m_patches;

@@ -140,6 +140,14 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
   return result;
 }
 
+std::string StaticSolver::inadmissible(const model::State& state) const {
+  for (LoadContributor* c : m_assembler->contributors()) {
+    std::string why = c->rejectState(state);
+    if (!why.empty()) return why;
+  }
+  return {};
+}
+
 bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget, bool tautStart) {
   const model::Model& model = m_assembler->model();
   const int neq = model.dofs().equationCount();
@@ -152,6 +160,16 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   const VecX noOffset = VecX::Zero(neq);
   NewtonOutcome full = newtonWithFallback(state, noOffset, time, std::min(perSolve, budget), tolerance);
   budget -= full.iterations;
+  if (full.converged) {
+    // A converged state that a contributor rejects (lines passed through each other) is not an
+    // equilibrium of the problem: continue in load from the start shape instead.
+    const std::string why = inadmissible(state);
+    if (!why.empty()) {
+      full.converged = false;
+      full.failure = why;
+      state = start;
+    }
+  }
   result.iterations += full.iterations;
   result.residual = full.residual;
   result.worstNode = full.worstNode;
@@ -246,6 +264,13 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
     result.iterations += step.iterations;
     result.residual = step.residual;
     result.worstNode = step.worstNode;
+    if (step.converged) {
+      const std::string why = inadmissible(trial);
+      if (!why.empty()) {
+        step.converged = false;
+        step.failure = why;
+      }
+    }
     if (debugStatics())
       std::cerr << fmt::format("  continuation lambda {:.5f} -> {}, {} iterations\n", target,
                                step.converged ? "ok" : step.failure, step.iterations);

@@ -61,6 +61,8 @@ class StaticSolver {
   };
   /// One attempt from `start` towards the full load, with continuation when needed.
   /// `tautStart`: see continuation().
+  /// The first contributor's reason to reject `state` (LoadContributor::rejectState), empty if none.
+  std::string inadmissible(const model::State& state) const;
   bool solveFrom(model::State& state, double time, StaticResult& result, int& budget, bool tautStart = false);
   /// Stage 2: the homotopy from `start` (see the file comment); `tautStart` also starts slack suspended cable
   /// elements at a small strain. On failure `failure` says why.

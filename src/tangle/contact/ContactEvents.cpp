@@ -1,0 +1,227 @@
+#include "tangle/contact/ContactEvents.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <utility>
+
+namespace tangle::contact {
+
+namespace {
+constexpr double kPi = 3.141592653589793;
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// Spots of one patch, with their aggregates.
+struct Patch {
+  std::vector<const ContactSpot*> spots;
+  double force = 0.0, length = 0.0, peakPerLength = 0.0, arcA = 0.0, arcB = 0.0;
+  double aMin = kInf, aMax = -kInf, bMin = kInf, bMax = -kInf;
+  double reach = 0.0, approach = 0.0, penetration = 0.0, jumpImpulse = 0.0;
+  double lineMass = 0.0, lineStiffness = 0.0;  // sums over Gauss spots
+  Vec3 position = Vec3::Zero();                // force centroid on line A
+  const ContactSpot* strongest = nullptr;
+};
+
+bool overlaps(double lo, double hi, double from, double to) { return hi >= from && lo <= to; }
+}  // namespace
+
+std::string ContactEvent::kind() const {
+  if (impact && sustained) return "impact then sustained";
+  return impact ? "impact" : "sustained";
+}
+
+void ContactEventTracker::update(double time, double dt, bool dynamic, const std::vector<ContactSpot>& spots,
+                                 const GapFunction& gapIn) {
+  // Patches per line pair: spots sorted along line A, split where consecutive spots are farther apart
+  // than the reach along A or B.
+  std::map<std::pair<int, int>, std::vector<const ContactSpot*>> byPair;
+  for (const ContactSpot& s : spots)
+    if (s.force > 0.0) byPair[{s.lineA, s.lineB}].push_back(&s);
+  std::vector<Patch> patches;
+  for (auto& [pair, list] : byPair) {
+    std::sort(list.begin(), list.end(), [](const ContactSpot* a, const ContactSpot* b) { return a->arcA < b->arcA; });
+    Patch current;
+    const ContactSpot* previous = nullptr;
+    for (const ContactSpot* s : list) {
+      const double reach = 2.0 * s->elementLength + s->radii;
+      if (previous && (s->arcA - previous->arcA > reach || std::abs(s->arcB - previous->arcB) > reach)) {
+        patches.push_back(current);
+        current = Patch();
+      }
+      current.spots.push_back(s);
+      previous = s;
+    }
+    patches.push_back(current);
+  }
+  for (Patch& p : patches) {
+    double strongest = -1.0;
+    for (const ContactSpot* s : p.spots) {
+      p.force += s->force;
+      p.length += s->length;
+      p.peakPerLength = std::max(p.peakPerLength, s->forcePerLength);
+      p.arcA += s->force * s->arcA;
+      p.arcB += s->force * s->arcB;
+      p.position += s->force * s->position;
+      p.aMin = std::min(p.aMin, s->arcA);
+      p.aMax = std::max(p.aMax, s->arcA);
+      p.bMin = std::min(p.bMin, s->arcB);
+      p.bMax = std::max(p.bMax, s->arcB);
+      p.reach = std::max(p.reach, 2.0 * s->elementLength + s->radii);
+      p.approach = std::max(p.approach, s->approachSpeed);
+      p.penetration = std::max(p.penetration, -s->gap);
+      p.jumpImpulse += s->jumpImpulse;
+      if (s->length > 0.0) {
+        p.lineMass += s->pairMass;
+        p.lineStiffness += s->stiffness;
+      }
+      if (s->force > strongest) {
+        strongest = s->force;
+        p.strongest = s;
+      }
+    }
+    p.arcA /= p.force;
+    p.arcB /= p.force;
+    p.position /= p.force;
+  }
+
+  // Match patches to open events; the forces of several patches of one event add up.
+  std::vector<double> eventForce(m_open.size(), 0.0);
+  std::vector<bool> continued(m_open.size(), false);
+  m_patches.clear();
+  for (const Patch& p : patches) {
+    const ContactSpot& s = *p.strongest;
+    int match = -1;
+    for (std::size_t k = 0; k < m_open.size() && match < 0; ++k) {
+      const ContactEvent& e = m_open[k];
+      if (e.lineA != s.lineA || e.lineB != s.lineB) continue;
+      const double r = std::max(e.reach, p.reach);
+      if (overlaps(p.aMin, p.aMax, e.lastAMin - r, e.lastAMax + r) && overlaps(p.bMin, p.bMax, e.lastBMin - r, e.lastBMax + r))
+        match = static_cast<int>(k);
+    }
+    if (match < 0) {
+      // A new event.
+      ContactEvent e;
+      e.lineA = s.lineA;
+      e.lineB = s.lineB;
+      e.startTime = time;
+      e.arcAStart = p.arcA;
+      e.arcBStart = p.arcB;
+      e.positionStart = p.position;
+      e.arcAMin = e.lastAMin = p.aMin;
+      e.arcAMax = e.lastAMax = p.aMax;
+      e.arcBMin = e.lastBMin = p.bMin;
+      e.arcBMax = e.lastBMax = p.bMax;
+      e.impactVelocity = dynamic ? p.approach : 0.0;
+      e.pointStart = s.length <= 0.0;
+      e.pairMass = e.pointStart ? s.pairMass : p.lineMass;
+      e.stiffness = e.pointStart ? s.stiffness : p.lineStiffness;
+      e.radii = s.radii;
+      e.minRadius = s.minRadius;
+      e.reach = p.reach;
+      e.normalStart = s.normal;
+      e.startVelocityA = s.velocityBeforeA;
+      e.startVelocityB = s.velocityBeforeB;
+      e.lumpedMassA = e.lumpedMassB = 0.0;
+      e.impact = dynamic && e.impactVelocity > m_impactVelocity;
+      e.sustained = !dynamic;
+      m_open.push_back(std::move(e));
+      eventForce.push_back(0.0);
+      continued.push_back(false);
+      match = static_cast<int>(m_open.size()) - 1;
+    }
+    ContactEvent& e = m_open[match];
+    if (!continued[match]) {
+      continued[match] = true;
+      e.lastAMin = p.aMin;
+      e.lastAMax = p.aMax;
+      e.lastBMin = p.bMin;
+      e.lastBMax = p.bMax;
+      e.lastVelocityA = s.velocityA;
+      e.lastVelocityB = s.velocityB;
+    } else {
+      e.lastAMin = std::min(e.lastAMin, p.aMin);
+      e.lastAMax = std::max(e.lastAMax, p.aMax);
+      e.lastBMin = std::min(e.lastBMin, p.bMin);
+      e.lastBMax = std::max(e.lastBMax, p.bMax);
+    }
+    eventForce[match] += p.force;
+    e.arcAMin = std::min(e.arcAMin, p.aMin);
+    e.arcAMax = std::max(e.arcAMax, p.aMax);
+    e.arcBMin = std::min(e.arcBMin, p.bMin);
+    e.arcBMax = std::max(e.arcBMax, p.bMax);
+    e.peakForcePerLength = std::max(e.peakForcePerLength, p.peakPerLength);
+    e.maxContactLength = std::max(e.maxContactLength, p.length);
+    e.maxPenetration = std::max(e.maxPenetration, p.penetration);
+    e.jumpImpulse += p.jumpImpulse;
+    e.reach = std::max(e.reach, p.reach);
+    e.path.push_back({time, p.arcA, p.arcB});
+    m_patches.push_back({s.lineA, s.lineB, p.force, p.peakPerLength, p.length, p.arcA, p.arcB, p.aMin, p.aMax,
+                         p.bMin, p.bMax});
+  }
+  for (std::size_t k = 0; k < m_open.size(); ++k) {
+    if (!continued[k]) continue;
+    ContactEvent& e = m_open[k];
+    e.impulse += 0.5 * (e.lastForce + eventForce[k]) * dt;
+    e.lastForce = eventForce[k];
+    e.peakForce = std::max(e.peakForce, eventForce[k]);
+    e.endTime = time;
+    e.lastContactTime = time;
+    if (!dynamic) e.sustained = true;
+    if (std::isfinite(e.pairMass) && e.pairMass > 0.0 && e.stiffness > 0.0 &&
+        time - e.startTime > kSustainedDurations * kPi * std::sqrt(e.pairMass / e.stiffness))
+      e.sustained = true;
+  }
+  // Events no patch continued: closed once the surfaces have parted (see the file comment).
+  for (std::size_t k = m_open.size(); k-- > 0;) {
+    if (continued[k]) continue;
+    ContactEvent& e = m_open[k];
+    const double r = e.reach;
+    const double gap = gapIn(e.lineA, e.lineB, e.lastAMin - r, e.lastAMax + r, e.lastBMin - r, e.lastBMax + r);
+    const double closing = 0.5 * e.lastForce * dt;
+    if (gap > kSeparationFraction * e.radii || time - e.lastContactTime > m_separationTime) {
+      close(k, time, closing);
+    } else {
+      e.impulse += closing;
+      e.lastForce = 0.0;
+    }
+  }
+}
+
+void ContactEventTracker::close(std::size_t openIndex, double time, double closingImpulse) {
+  ContactEvent e = std::move(m_open[openIndex]);
+  m_open.erase(m_open.begin() + static_cast<std::ptrdiff_t>(openIndex));
+  e.endTime = time;
+  e.impulse += closingImpulse + e.jumpImpulse;
+  e.jumpImpulse = 0.0;
+  // Paper Eq. 5 per line: the impulse over the change of the normal velocity of the line's contact point.
+  const double dva = std::abs(e.normalStart.dot(e.lastVelocityA - e.startVelocityA));
+  const double dvb = std::abs(e.normalStart.dot(e.lastVelocityB - e.startVelocityB));
+  // Only an impact has a velocity change to measure (in a sustained contact the impulse grows while
+  // the velocity does not change): NaN otherwise.
+  e.effectiveMassA = !e.impact ? std::nan("") : dva > 1e-12 ? e.impulse / dva : kInf;
+  e.effectiveMassB = !e.impact ? std::nan("") : dvb > 1e-12 ? e.impulse / dvb : kInf;
+  // Energy mass: Eq. 5 pair mass where the impact changed the relative normal velocity measurably.
+  const double dvRelative = std::abs(e.normalStart.dot((e.lastVelocityA - e.lastVelocityB) - (e.startVelocityA - e.startVelocityB)));
+  if (e.pointStart && e.impact && e.impactVelocity > 0.0 && dvRelative > 0.05 * e.impactVelocity) {
+    e.energyMass = e.impulse / dvRelative;
+    e.energyMassBasis = "eq5";
+  } else {
+    e.energyMass = std::isfinite(e.pairMass) ? e.pairMass : 0.0;
+    e.energyMassBasis = e.pointStart ? "lumped" : "line";
+  }
+  e.impactEnergy = 0.5 * e.energyMass * e.impactVelocity * e.impactVelocity;
+  m_closed.push_back(std::move(e));
+}
+
+void ContactEventTracker::finish(double time) {
+  while (!m_open.empty()) {
+    m_open.back().open = true;
+    close(m_open.size() - 1, time, 0.0);
+    m_closed.back().endTime = time;
+  }
+  std::stable_sort(m_closed.begin(), m_closed.end(),
+                   [](const ContactEvent& a, const ContactEvent& b) { return a.startTime < b.startTime; });
+}
+
+}  // namespace tangle::contact

@@ -1,0 +1,141 @@
+#pragma once
+/// @file ContactEvents.hpp
+/// Contact events for the clash report: one physical contact between two lines is one event, whether
+/// it is a point (a crossing), a length (lines along each other) or both, and however its contact points
+/// move from element to element or come and go inside it.
+///
+/// The rule (docs/theory.md 9.9):
+/// - At every committed state the contact spots of a line pair (point contacts and line-to-line Gauss
+///   points with a positive force) are grouped into patches: spots closer along line 1 than the reach
+///   (two elements plus the sum of the radii) belong to one patch.
+/// - A patch continues the open event of the same pair whose extent, grown by the reach, it overlaps on
+///   both lines; otherwise it opens a new event.
+/// - An open event that no patch continues closes when the surfaces in its extent are apart by more than
+///   kSeparationFraction of the sum of the radii (a bounce, a separation), or when it has had no contact
+///   force for `contact.event_separation_time`; until then (a resting contact that breathes) it stays
+///   open with zero force.
+/// - An event is an impact when its first approach speed v0 exceeds `contact.impact_velocity_threshold`
+///   in a dynamic run; it is sustained when it lasts longer than kSustainedDurations contact durations
+///   pi sqrt(m / k) (or is a static contact). The clash statistics are over impacts only.
+/// - Impact energy 1/2 m v0^2 with the mass stated: the paper's Eq. 5 pair mass (impulse over the change
+///   of the relative normal velocity) where the impact changed the velocity measurably (a point impact
+///   that ends or rebounds); otherwise the lumped FE pair mass at the impact point, or for a contact along
+///   a length the reduced mass per unit length of the two lines times the contact length (the kinetic
+///   energy of the relative normal motion of the contacting lengths).
+
+#include <array>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+
+namespace tangle::contact {
+
+/// Sum of the radii fraction by which the surfaces must part to close an event [-].
+inline constexpr double kSeparationFraction = 0.05;
+/// Contact durations after which an event counts as sustained [-].
+inline constexpr double kSustainedDurations = 10.0;
+
+/// One contact spot at a committed state (built by LineContact).
+struct ContactSpot {
+  int lineA = 0, lineB = 0;
+  double arcA = 0.0, arcB = 0.0;    ///< [m]
+  Vec3 position = Vec3::Zero();     ///< point on line A's centreline [m]
+  Vec3 normal = Vec3::UnitZ();      ///< from B to A
+  double force = 0.0;               ///< normal force [N] (a Gauss point: force per length x length)
+  double length = 0.0;              ///< contact length it stands for [m] (0 for a point contact)
+  double forcePerLength = 0.0;      ///< [N/m] (line-to-line Gauss points only)
+  double approachSpeed = 0.0;       ///< relative normal speed before the step it touched in [m/s] (>= 0)
+  double gap = 0.0;                 ///< [m]
+  double pairMass = 0.0;            ///< [kg]: effective mass of a point contact, reduced mass per length x length for a Gauss point
+  double stiffness = 0.0;           ///< [N/m] (a Gauss point: per length x length)
+  double jumpImpulse = 0.0;         ///< velocity-jump impulse of the impulse model applied at this state [N s]
+  Vec3 velocityA = Vec3::Zero(), velocityB = Vec3::Zero();  ///< of the contact points [m/s]
+  Vec3 velocityBeforeA = Vec3::Zero(), velocityBeforeB = Vec3::Zero();  ///< before an impulse-model jump [m/s]
+  double radii = 0.0;               ///< sum of the contact radii [m]
+  double minRadius = 0.0;           ///< the smaller contact radius [m]
+  double elementLength = 0.0;       ///< the larger element length at the spot [m]
+};
+
+/// A contact event (open or closed).
+struct ContactEvent {
+  int lineA = 0, lineB = 0;
+  double startTime = 0.0, endTime = 0.0;  ///< [s]
+  double arcAStart = 0.0, arcBStart = 0.0;  ///< where it began along each line (force centroid) [m]
+  Vec3 positionStart = Vec3::Zero();      ///< where it began, on line 1 (force centroid) [m]
+  double arcAMin = 0.0, arcAMax = 0.0, arcBMin = 0.0, arcBMax = 0.0;  ///< extent over the event [m]
+  std::vector<std::array<double, 3>> path;  ///< (time, arcA, arcB) force centroids along the event
+  double peakForce = 0.0;          ///< largest total normal force of the patch [N]
+  double peakForcePerLength = 0.0; ///< largest line-to-line force per unit length [N/m]
+  double maxContactLength = 0.0;   ///< longest contact length [m]
+  double impulse = 0.0;            ///< integral of the total force over time [N s]
+  double impactVelocity = 0.0;     ///< relative normal approach speed at first contact [m/s]
+  double impactEnergy = 0.0;       ///< 1/2 energyMass impactVelocity^2 [J]
+  double energyMass = 0.0;         ///< mass used for the impact energy [kg]
+  std::string energyMassBasis;     ///< "eq5", "lumped" or "line" (see the file comment)
+  double effectiveMassA = 0.0;     ///< Eq. 5: impulse / normal velocity change of line A at the point [kg] (NaN unless an impact)
+  double effectiveMassB = 0.0;     ///< Eq. 5 for line B [kg]
+  double lumpedMassA = 0.0, lumpedMassB = 0.0;  ///< (unused for line contacts) [kg]
+  double maxPenetration = 0.0;     ///< [m]
+  bool impact = false;             ///< started with a dynamically significant approach speed
+  bool sustained = false;          ///< lasted more than kSustainedDurations contact durations, or static
+  bool open = false;               ///< still open at the end of the run
+  /// "impact", "impact then sustained" or "sustained".
+  std::string kind() const;
+
+  // Tracking data (not reported).
+  double pairMass = 0.0;           ///< pair mass at the start [kg]
+  double stiffness = 0.0;          ///< [N/m]
+  double radii = 0.0, minRadius = 0.0, reach = 0.0;  ///< [m]
+  double lastAMin = 0.0, lastAMax = 0.0, lastBMin = 0.0, lastBMax = 0.0;  ///< extent at the last contact [m]
+  double lastForce = 0.0;          ///< [N]
+  double lastContactTime = 0.0;    ///< last time with contact force [s]
+  Vec3 normalStart = Vec3::UnitZ();
+  Vec3 startVelocityA = Vec3::Zero(), startVelocityB = Vec3::Zero();
+  Vec3 lastVelocityA = Vec3::Zero(), lastVelocityB = Vec3::Zero();
+  bool pointStart = true;          ///< the strongest spot at the start was a point contact
+  double jumpImpulse = 0.0;        ///< [N s]
+};
+
+/// One patch of a line pair at a committed state (for the force histories).
+struct ContactPatch {
+  int lineA = 0, lineB = 0;
+  double force = 0.0;              ///< total normal force [N]
+  double peakForcePerLength = 0.0; ///< [N/m]
+  double length = 0.0;             ///< contact length [m]
+  double arcA = 0.0, arcB = 0.0;   ///< force centroid [m]
+  double arcAMin = 0.0, arcAMax = 0.0, arcBMin = 0.0, arcBMax = 0.0;  ///< extent [m]
+};
+
+/// Follows the events through a run.
+class ContactEventTracker {
+ public:
+  /// @param impactVelocityThreshold events starting faster than this are impacts [m/s]
+  /// @param separationTime an event without contact force for this long is closed [s]
+  ContactEventTracker(double impactVelocityThreshold = 0.05, double separationTime = 0.2)
+      : m_impactVelocity(impactVelocityThreshold), m_separationTime(separationTime) {}
+
+  /// Smallest surface gap [m] between lines A and B over the arc ranges [a0, a1] on A and [b0, b1] on B.
+  using GapFunction = std::function<double(int lineA, int lineB, double a0, double a1, double b0, double b1)>;
+
+  /// Updates the events with the spots of a committed state at `time` reached with step dt (0 in statics).
+  void update(double time, double dt, bool dynamic, const std::vector<ContactSpot>& spots, const GapFunction& gapIn);
+  /// Closes the open events at the end of the run.
+  void finish(double time);
+  /// Closed events in the order they closed (after finish(): all of them, by start time).
+  const std::vector<ContactEvent>& events() const { return m_closed; }
+  /// Open events.
+  const std::vector<ContactEvent>& openEvents() const { return m_open; }
+  /// Patches at the last update.
+  const std::vector<ContactPatch>& patches() const { return m_patches; }
+
+ private:
+  void close(std::size_t openIndex, double time, double closingImpulse);
+
+  double m_impactVelocity, m_separationTime;
+  std::vector<ContactEvent> m_open, m_closed;
+  std::vector<ContactPatch> m_patches;
+};
+
+}  // namespace tangle::contact
