@@ -131,6 +131,7 @@ class LineContact final : public solver::LoadContributor {
   double limitIncrement(const model::State& state, const VecX& fullIncrement) override;
   std::string rejectState(const model::State& state) override;
   void commitStatic(const model::State& state) override;
+  void beginStatic(const model::State& state) override { m_staticReference = state.position; }
 
   /// Gauss points of the line-to-line part at the last addForces() call.
   const std::vector<LineSample>& lineSamples() const { return m_samples; }

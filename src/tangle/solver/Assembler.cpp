@@ -81,6 +81,7 @@ void Assembler::beginStatics(const model::State& state) {
     m_anchor[n] = touching ? m_committedXY[n] : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
   }
   m_trialAnchor = m_anchor;
+  for (LoadContributor* c : m_contributors) c->beginStatic(state);
 }
 
 void Assembler::commitStatics(const model::State& state) {

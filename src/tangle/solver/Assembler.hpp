@@ -48,6 +48,9 @@ class LoadContributor {
   /// `state`) that this contributor accepts (e.g. so that no two lines close by more than a fraction of
   /// their radii in one Newton iteration). 1 accepts the whole increment.
   virtual double limitIncrement(const model::State& /*state*/, const VecX& /*fullIncrement*/) { return 1.0; }
+  /// Statics starts (or restarts) from `state`: the reference for rejectState until the next
+  /// commitStatic (a contributor that tracks crossings compares with it).
+  virtual void beginStatic(const model::State& /*state*/) {}
   /// Statics: an empty string if `state` is admissible as a converged equilibrium, otherwise why not
   /// (e.g. two lines have passed through each other). A solver never reports such a state as converged.
   virtual std::string rejectState(const model::State& /*state*/) { return {}; }
