@@ -22,7 +22,9 @@ struct Outcome {
 };
 
 Outcome runCli(const std::string& arguments) {
-  const fs::path log = fs::temp_directory_path() / "tangle_cli_test.log";
+  // One log per test: ctest runs the tests of this file in parallel processes.
+  const fs::path log = fs::temp_directory_path() /
+                       ("tangle_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
   const std::string cmd = std::string(TANGLE_CLI_PATH) + " " + arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(log);

@@ -50,12 +50,19 @@ void LineContact::addFriction(const model::State& state, const solver::AssemblyR
     arcA /= patch.length;
     arcB /= patch.length;
     const double kt = lineStiffness(samples.front()->elementA, samples.front()->elementB);
-    // Committed anchor, or a new one at the patch's centre with no elastic offset.
-    auto found = m_anchors.find(key);
-    const bool fresh = found == m_anchors.end();
+    // Committed anchor; or the one this patch got when it first touched in this step's (or static
+    // solve's) iterations; or a new one at the patch's centre with no elastic offset, kept for the
+    // following iterations (an anchor renewed at every iterate would never resist).
+    const FrictionAnchor* existing = nullptr;
+    if (auto it = m_anchors.find(key); it != m_anchors.end()) {
+      existing = &it->second;
+    } else if (auto jt = m_pendingAnchors.find(key); jt != m_pendingAnchors.end()) {
+      existing = &jt->second;
+    }
+    const bool fresh = existing == nullptr;
     FrictionAnchor anchor;
-    auto [elA, wA] = pointAtArc(patch.lineA, fresh ? arcA : found->second.arcA);
-    auto [elB, wB] = pointAtArc(patch.lineB, fresh ? arcB : found->second.arcB);
+    auto [elA, wA] = pointAtArc(patch.lineA, fresh ? arcA : existing->arcA);
+    auto [elB, wB] = pointAtArc(patch.lineB, fresh ? arcB : existing->arcB);
     const model::LineElement& ea = elements[elA];
     const model::LineElement& eb = elements[elB];
     const Vec3 xa = (1.0 - wA) * state.position[ea.node1] + wA * state.position[ea.node2];
@@ -64,8 +71,9 @@ void LineContact::addFriction(const model::State& state, const solver::AssemblyR
       anchor.arcA = arcA;
       anchor.arcB = arcB;
       anchor.offset = xa - xb;
+      m_pendingAnchors[key] = anchor;
     } else {
-      anchor = found->second;
+      anchor = *existing;
     }
     const Mat3 tp = Mat3::Identity() - patch.normal * patch.normal.transpose();
     Vec3 delta = tp * (xa - xb - anchor.offset);
@@ -107,6 +115,7 @@ void LineContact::commitFriction() {
   std::map<std::pair<int, int>, FrictionAnchor> next;
   for (const FrictionPatch& p : m_patches) next[{p.elementA, p.lineB}] = p.trial;
   m_anchors = std::move(next);
+  m_pendingAnchors.clear();
 }
 
 }  // namespace tangle::contact

@@ -483,6 +483,7 @@ bool LineContact::inNeighbourhood(const std::pair<int, int>& key, const std::set
 }
 
 void LineContact::beginStep() {
+  m_pendingAnchors.clear();
   m_sticky.clear();
   m_released.clear();
   m_releaseRounds = 0;

@@ -131,7 +131,10 @@ class LineContact final : public solver::LoadContributor {
   double limitIncrement(const model::State& state, const VecX& fullIncrement) override;
   std::string rejectState(const model::State& state) override;
   void commitStatic(const model::State& state) override;
-  void beginStatic(const model::State& state) override { m_staticReference = state.position; }
+  void beginStatic(const model::State& state) override {
+    m_staticReference = state.position;
+    m_pendingAnchors.clear();
+  }
 
   /// Gauss points of the line-to-line part at the last addForces() call.
   const std::vector<LineSample>& lineSamples() const { return m_samples; }
@@ -248,6 +251,7 @@ class LineContact final : public solver::LoadContributor {
   std::vector<LineSample> m_samples;
   std::vector<FrictionPatch> m_patches;
   std::map<std::pair<int, int>, FrictionAnchor> m_anchors;  // (slave element, master line) -> committed anchor
+  std::map<std::pair<int, int>, FrictionAnchor> m_pendingAnchors;  // anchors of patches new in this step / solve
   std::map<std::pair<int, int>, std::vector<std::array<double, 4>>> m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
   std::vector<Vec3> m_staticReference;  // positions at the last committed static state
   bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
