@@ -525,7 +525,13 @@ def plot_results(results_dir: str | Path, out_dir: str | Path | None = None, err
 
     statics_dir = results / "statics"
     if statics_dir.is_dir():
+        # The line tables are the files the summary names; statics/contact_*.csv are contact results.
+        stems = {line.get("file_stem") for line in summary.get("lines", []) if isinstance(line, dict)}
         for csv_path in sorted(statics_dir.glob("*.csv")):
+            if stems - {None} and csv_path.stem not in stems:
+                continue
+            if not stems - {None} and csv_path.stem in ("contact_points", "contact_pairs"):
+                continue
             attempt(csv_path, lambda p=csv_path: plot_statics(p, out / f"statics_{p.stem}.png", depth))
 
     dynamics_dir = results / "dynamics"
