@@ -101,6 +101,7 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     m_cacheDynamic = true;
   }
   const Vec3 zero = Vec3::Zero();
+  const bool wantDamping = matrix && request.dynamic && request.cf != 0.0;
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const model::LineElement& el = elements[e];
     const Vec3& x1 = state.position[el.node1];
@@ -120,12 +121,12 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
       fluid.velocity += m_fluid[e].velocity;
       fluid.acceleration = m_fluid[e].acceleration;
     }
-    const MorisonElementLoad load = morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet);
+    const MorisonElementLoad load = morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet, wantDamping);
     // Out-of-balance convention: external loads are subtracted.
     force.segment<3>(d1) -= load.force1;
     force.segment<3>(d2) -= load.force2;
     m_addedMass[e] = load.addedMassPerNode;
-    if (matrix && request.dynamic && request.cf != 0.0) {
+    if (wantDamping) {
       matrix->add3x3(d1, d1, load.damping1, request.cf);
       matrix->add3x3(d2, d2, load.damping2, request.cf);
     }

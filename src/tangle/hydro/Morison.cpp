@@ -15,32 +15,38 @@ namespace tangle::hydro {
 
 namespace {
 
-void require(bool ok, const char* what, const char* requirement, double value) {
-  if (ok) return;
+// The checks run on every call (the function's contract); the message is built out of the hot path.
+[[noreturn]] [[gnu::cold]] [[gnu::noinline]] void fail(const char* what, const char* requirement, double value) {
   std::ostringstream os;
   os.precision(17);
   os << "morisonElementLoad: " << what << " must be " << requirement << " (got " << value << ")";
   throw Error(os.str());
 }
 
+inline void require(bool ok, const char* what, const char* requirement, double value) {
+  if (!ok) [[unlikely]]
+    fail(what, requirement, value);
+}
+
 /// Drag per unit length q(v_r) = kn |v_rn| v_rn + ka |v_ra| v_ra and its Jacobian J = dq/dv_r:
 /// J = kn (|v_rn| (I - t t^T) + v_rn v_rn^T / |v_rn|) + 2 ka |t.v_r| t t^T; the normal part tends to 0 as
 /// v_rn -> 0 (|x| x is continuously differentiable), so J = 2 ka |t.v_r| t t^T there.
-void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, Mat3& jacobian) {
+/// The Jacobian only when asked for (most assemblies need the force alone).
+inline void drag(const Vec3& vr, const Vec3& t, const Mat3& ttT, double kn, double ka, Vec3& q, Mat3* jacobian) {
   const double va = t.dot(vr);
   const Vec3 vn = vr - va * t;
   const double vnNorm = vn.norm();
-  const Mat3 ttT = t * t.transpose();
   q = kn * vnNorm * vn + ka * std::abs(va) * va * t;
-  jacobian = kn * vnNorm * (Mat3::Identity() - ttT) + 2.0 * ka * std::abs(va) * ttT;
-  if (vnNorm > 0.0) jacobian += (kn / vnNorm) * (vn * vn.transpose());
+  if (!jacobian) return;
+  *jacobian = kn * vnNorm * (Mat3::Identity() - ttT) + 2.0 * ka * std::abs(va) * ttT;
+  if (vnNorm > 0.0) *jacobian += (kn / vnNorm) * (vn * vn.transpose());
 }
 
 }  // namespace
 
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const section::LineType& type, double rho,
-                                      double wettedFraction) {
+                                      double wettedFraction, bool wantDamping) {
   require(wettedFraction >= 0.0 && wettedFraction <= 1.0, "submerged fraction [-]", "in [0, 1]",
           wettedFraction);
   require(std::isfinite(rho) && rho >= 0.0, "fluid density [kg/m^3]", "finite and >= 0", rho);
@@ -72,12 +78,14 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
 
   Vec3 q1, q2;
   Mat3 j1, j2;
-  drag(fluid.velocity - v1, t, kn, ka, q1, j1);
-  drag(fluid.velocity - v2, t, kn, ka, q2, j2);
+  drag(fluid.velocity - v1, t, ttT, kn, ka, q1, wantDamping ? &j1 : nullptr);
+  drag(fluid.velocity - v2, t, ttT, kn, ka, q2, wantDamping ? &j2 : nullptr);
   load.force1 = halfLength * (q1 + inertia);
   load.force2 = halfLength * (q2 + inertia);
-  load.damping1 = halfLength * j1;  // d force1/d v1 = -halfLength * j1
-  load.damping2 = halfLength * j2;
+  if (wantDamping) {
+    load.damping1 = halfLength * j1;  // d force1/d v1 = -halfLength * j1
+    load.damping2 = halfLength * j2;
+  }
   load.addedMassPerNode = halfLength * addedMassPerLength;
   return load;
 }

@@ -53,10 +53,12 @@ struct MorisonElementLoad {
 /// @param rho fluid density [kg/m^3], >= 0
 /// @param wettedFraction submerged fraction f of the element length in [0, 1] (see submergedFraction);
 ///        every load, damping and added mass is proportional to it
+/// @param wantDamping compute damping1 / damping2 (left zero otherwise: an assembly without a matrix
+///        needs the forces alone)
 /// @throws tangle::Error for coincident nodes, f outside [0, 1], rho < 0 or negative diameters
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const section::LineType& type, double rho,
-                                      double wettedFraction);
+                                      double wettedFraction, bool wantDamping = true);
 
 /// Fraction [-] of the segment z1-z2 [m] lying below the surface level surfaceElevation [m], assuming a
 /// straight segment and a locally flat surface: 1 if both ends are at or below it, 0 if both are at or
