@@ -206,6 +206,13 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
     if (r.penetration <= 0.0) {
       if (staticFriction) m_trialAnchor[n] = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
+      // A zero block keeps the matrix entries in the same order whether or not the node touches, so
+      // SystemMatrix::build reuses its scatter map as the touchdown point moves (the node's diagonal
+      // block exists anyway: no new non-zeros).
+      if (matrix) {
+        matrix->add3x3(d, d, Mat3::Zero());
+        if (request.cf != 0.0) matrix->add3x3(d, d, Mat3::Zero());
+      }
       continue;
     }
     if (staticFriction) {
