@@ -16,6 +16,10 @@ Bar::Bar(double axialStiffness, double restLength) : m_ea(axialStiffness), m_l0(
 }
 
 void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent, double compressionFactor) const {
+  compute(x1, x2, internalForce, &tangent, compressionFactor);
+}
+
+void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tangent, double compressionFactor) const {
   // Crisfield 1991, vol. 1, sec. 3.3: with d = x2 - x1, l = |d|, e = d / l and N = EA (l - L0) / L0,
   // the internal force is [-N e, N e] and its exact derivative is
   // K = [k, -k; -k, k], k = EA / L0 e e^T + N / l (I - e e^T).
@@ -28,13 +32,14 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tan
   const double n = ea * (l - m_l0) / m_l0;
   internalForce.head<3>() = -n * e;
   internalForce.tail<3>() = n * e;
+  if (!tangent) return;
 
   const Mat3 eeT = e * e.transpose();
   const Mat3 k = (ea / m_l0) * eeT + (n / l) * (Mat3::Identity() - eeT);
-  tangent.topLeftCorner<3, 3>() = k;
-  tangent.bottomRightCorner<3, 3>() = k;
-  tangent.topRightCorner<3, 3>() = -k;
-  tangent.bottomLeftCorner<3, 3>() = -k;
+  tangent->topLeftCorner<3, 3>() = k;
+  tangent->bottomRightCorner<3, 3>() = k;
+  tangent->topRightCorner<3, 3>() = -k;
+  tangent->bottomLeftCorner<3, 3>() = -k;
 }
 
 double Bar::axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor) const {

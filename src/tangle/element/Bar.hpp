@@ -26,6 +26,8 @@ class Bar {
   /// @param compressionFactor multiplies EA while the bar is shorter than L0 [-] (1: linear elastic in
   ///        compression; statics uses a small value for cables, which cannot carry compression)
   void compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6& tangent, double compressionFactor = 1.0) const;
+  /// As above; the tangent only if `tangent` is not null (an assembly without a matrix needs the force).
+  void compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tangent, double compressionFactor = 1.0) const;
 
   /// Axial force N = EA (l - L0) / L0 [N], positive in tension, negative in compression.
   /// @param compressionFactor as in compute()

@@ -121,7 +121,8 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       // a slack bar keeps LineType::compressionFactor (1e-6) of its EA, enough to keep the tangent
       // regular, so a compressed straight line is not an equilibrium and statics finds the shape that
       // hangs (or floats) in tension. Statics may raise the factor for a while (m_slackFactor).
-      bar.compute(state.position[el.node1], state.position[el.node2], f, k, compressionFactor(el));
+      bar.compute(state.position[el.node1], state.position[el.node2], f, matrix || beta > 0.0 ? &k : nullptr,
+                  compressionFactor(el));
       const int map[6] = {d1, d1 + 1, d1 + 2, d2, d2 + 1, d2 + 2};
       if (beta > 0.0) {
         Vec6 v;
