@@ -97,27 +97,18 @@ double LineContact::lumpedMass(int element, double w) const {
   return inv > 0.0 ? 1.0 / inv : kInf;
 }
 
-Vec3 LineContact::pointVelocity(const model::State& state, int element, double w) const {
+Vec3 LineContact::pointValue(const VecX& field, int element, double w) const {
   const model::LineElement& el = m_model->elements()[element];
   const model::DofMap& dofs = m_model->dofs();
-  return (1.0 - w) * state.velocity.segment<3>(dofs.firstDof(el.node1)) +
-         w * state.velocity.segment<3>(dofs.firstDof(el.node2));
+  return (1.0 - w) * field.segment<3>(dofs.firstDof(el.node1)) + w * field.segment<3>(dofs.firstDof(el.node2));
 }
 
-Vec3 LineContact::stencilVelocity(const model::State& state, const CentrelineStencil& stencil) const {
+Vec3 LineContact::stencilValue(const VecX& field, const CentrelineStencil& stencil) const {
   const model::DofMap& dofs = m_model->dofs();
   Vec3 v = Vec3::Zero();
   for (int k = 0; k < 4; ++k)
-    if (stencil.N[k] != 0.0) v += stencil.N[k] * state.velocity.segment<3>(dofs.firstDof(stencil.node[k]));
+    if (stencil.N[k] != 0.0) v += stencil.N[k] * field.segment<3>(dofs.firstDof(stencil.node[k]));
   return v;
-}
-
-Vec3 LineContact::stencilAcceleration(const model::State& state, const CentrelineStencil& stencil) const {
-  const model::DofMap& dofs = m_model->dofs();
-  Vec3 a = Vec3::Zero();
-  for (int k = 0; k < 4; ++k)
-    if (stencil.N[k] != 0.0) a += stencil.N[k] * state.acceleration.segment<3>(dofs.firstDof(stencil.node[k]));
-  return a;
 }
 
 double LineContact::stencilMass(const CentrelineStencil& stencil) const {
@@ -143,18 +134,21 @@ double LineContact::broadPhaseMargin(const model::State& state, bool dynamic) co
   return m_maxRadius + 4.0 * maxSpeed * m_timeStep;
 }
 
-void LineContact::refreshCandidates(const model::State& state) {
+void LineContact::refreshCandidates(const model::State& state) { m_candidates = pairsWithin(state, m_margin); }
+
+std::vector<CandidatePair> LineContact::pairsWithin(const model::State& state, double margin) {
   buildProxies(state);
   BroadPhaseOptions options = m_broadPhase.options();
-  options.margin = m_margin;
-  m_broadPhase = BroadPhase(options);
-  m_broadPhase.findPairs(m_proxies, m_candidates);
+  options.margin = margin;
+  std::vector<CandidatePair> pairs;
+  BroadPhase(options).findPairs(m_proxies, pairs);
   if (!m_zones.empty())
-    m_candidates.erase(std::remove_if(m_candidates.begin(), m_candidates.end(),
-                                      [&](const CandidatePair& c) {
-                                        return !elementPairAllowed(m_proxies[c.first].element, m_proxies[c.second].element);
-                                      }),
-                       m_candidates.end());
+    pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                               [&](const CandidatePair& c) {
+                                 return !elementPairAllowed(m_proxies[c.first].element, m_proxies[c.second].element);
+                               }),
+                pairs.end());
+  return pairs;
 }
 
 void LineContact::buildProxies(const model::State& state) {
@@ -172,7 +166,6 @@ void LineContact::buildProxies(const model::State& state) {
 void LineContact::findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial) {
   if (refreshBroadPhase) refreshCandidates(state);
   const auto& elements = m_model->elements();
-  const model::DofMap& dofs = m_model->dofs();
   // Narrow phase on every candidate, at the current positions.
   struct Raw {
     int proxyA = 0, proxyB = 0;
@@ -367,8 +360,8 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     c.sign = (previous && diff.dot(*previous) < 0.0) ? -1.0 : 1.0;
     c.normal = diff.norm() > 1e-12 ? Vec3(c.sign * diff.normalized()) : (previous ? *previous : Vec3(Vec3::UnitZ()));
     c.gap = c.sign * diff.norm() - a.radius - b.radius;
-    const Vec3 va = stencilVelocity(state, d.a);
-    const Vec3 vb = stencilVelocity(state, d.b);
+    const Vec3 va = stencilValue(state.velocity, d.a);
+    const Vec3 vb = stencilValue(state.velocity, d.b);
     c.gapRate = c.normal.dot(va - vb);
     c.lumpedMassA = stencilMass(d.a);
     c.lumpedMassB = stencilMass(d.b);
@@ -422,7 +415,6 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
       const double speed = vt.norm();
       c.frictionForce = -m_spec.frictionCoefficient * c.normalForce * vt / std::max(speed, m_spec.frictionVelocity);
     }
-    (void)dofs;
     m_trial.push_back(c);
   }
 }
@@ -521,7 +513,7 @@ double LineContact::stepLimit(const model::State& state) {
     Vec3 n = d.closest0 - d.closest1;
     if (n.norm() < 1e-12) continue;
     n.normalize();
-    const double rate = n.dot(pointVelocity(state, a.element, d.s) - pointVelocity(state, b.element, d.t));
+    const double rate = n.dot(pointValue(state.velocity, a.element, d.s) - pointValue(state.velocity, b.element, d.t));
     if (rate >= 0.0) continue;
     limit = std::min(limit, (std::max(gap, 0.0) + 0.2 * radii) / -rate);
     // A dynamic impact about to start (same criterion as below, with the lumped pair mass): the step
@@ -617,8 +609,8 @@ void LineContact::commitStep(model::State& state, double dt) {
   const auto& elements = m_model->elements();
   for (const ContactPoint& c : m_trial) {
     if (c.normalForce <= 0.0) continue;
-    const Vec3 va = stencilVelocity(state, c.curve.a);
-    const Vec3 vb = stencilVelocity(state, c.curve.b);
+    const Vec3 va = stencilValue(state.velocity, c.curve.a);
+    const Vec3 vb = stencilValue(state.velocity, c.curve.b);
     ContactSpot spot;
     spot.lineA = c.lineA;
     spot.lineB = c.lineB;
@@ -672,7 +664,7 @@ void LineContact::commitStep(model::State& state, double dt) {
         // one before the touch being negligible against the contact's. The same trapezoidal rule gives
         // the impulse of that step below (0.5 F dt), so Eq. 5 is consistent from the first step on.
         const double accelerationRate =
-            c.normal.dot(stencilAcceleration(state, c.curve.a) - stencilAcceleration(state, c.curve.b));
+            c.normal.dot(stencilValue(state.acceleration, c.curve.a) - stencilValue(state.acceleration, c.curve.b));
         tr.impactVelocity = std::max(0.0, -(c.gapRate - 0.5 * dt * accelerationRate));
       }
       if (m_spec.model == model::ImpactModel::Impulse && dt > 0.0 && c.gapRate < 0.0 && std::isfinite(c.pairMass)) {
@@ -683,8 +675,8 @@ void LineContact::commitStep(model::State& state, double dt) {
         applyImpulse(state, c, impulse);
         tr.jumpImpulse = impulse;
       }
-      const Vec3 va0 = stencilVelocity(state, c.curve.a);
-      const Vec3 vb0 = stencilVelocity(state, c.curve.b);
+      const Vec3 va0 = stencilValue(state.velocity, c.curve.a);
+      const Vec3 vb0 = stencilValue(state.velocity, c.curve.b);
       tr.lineA = c.lineA;
       tr.lineB = c.lineB;
       tr.arcA = c.arcA;
@@ -714,12 +706,6 @@ void LineContact::commitStep(model::State& state, double dt) {
   }
   m_tracked = std::move(next);
   // Line-to-line Gauss points.
-  const model::DofMap& dofs = m_model->dofs();
-  auto acceleration = [&](int element, double w) {
-    const model::LineElement& el = elements[element];
-    return Vec3((1.0 - w) * state.acceleration.segment<3>(dofs.firstDof(el.node1)) +
-                w * state.acceleration.segment<3>(dofs.firstDof(el.node2)));
-  };
   for (const LineSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
     ContactSpot spot;
@@ -735,7 +721,7 @@ void LineContact::commitStep(model::State& state, double dt) {
     spot.force = smp.lineForce * smp.length;
     // Approach speed before the step, as for point contacts (trapezoidal change over the step).
     const double accelerationRate =
-        dynamic ? smp.normal.dot(acceleration(smp.elementA, smp.xi) - acceleration(smp.elementB, smp.t)) : 0.0;
+        dynamic ? smp.normal.dot(pointValue(state.acceleration, smp.elementA, smp.xi) - pointValue(state.acceleration, smp.elementB, smp.t)) : 0.0;
     spot.approachSpeed = std::max(0.0, -(smp.gapRate - 0.5 * dt * accelerationRate));
     spot.gap = smp.gap;
     // Reduced mass per unit length of the two lines times the length the point stands for.
@@ -744,8 +730,8 @@ void LineContact::commitStep(model::State& state, double dt) {
     const double mu = std::isinf(muA) ? muB : std::isinf(muB) ? muA : muA * muB / (muA + muB);
     spot.pairMass = mu * smp.length;
     spot.stiffness = lineStiffness(smp.elementA, smp.elementB) * smp.length;
-    spot.velocityBeforeA = spot.velocityA = pointVelocity(state, smp.elementA, smp.xi);
-    spot.velocityBeforeB = spot.velocityB = pointVelocity(state, smp.elementB, smp.t);
+    spot.velocityBeforeA = spot.velocityA = pointValue(state.velocity, smp.elementA, smp.xi);
+    spot.velocityBeforeB = spot.velocityB = pointValue(state.velocity, smp.elementB, smp.t);
     spot.radii = m_radius[smp.elementA] + m_radius[smp.elementB];
     spot.minRadius = std::min(m_radius[smp.elementA], m_radius[smp.elementB]);
     spot.elementLength = std::max(elements[smp.elementA].restLength, elements[smp.elementB].restLength);

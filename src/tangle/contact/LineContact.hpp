@@ -194,17 +194,20 @@ class LineContact final : public solver::LoadContributor {
   double broadPhaseMargin(const model::State& state, bool dynamic) const;
   /// Rebuilds the proxies and the candidate pairs with the current margin.
   void refreshCandidates(const model::State& state);
+  /// Rebuilds the proxies at `state` and returns the element pairs whose boxes come within `margin` [m]
+  /// of each other and may touch (exclusion zones applied). m_candidates then refer to stale proxies.
+  std::vector<CandidatePair> pairsWithin(const model::State& state, double margin);
   void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;
   double lumpedMass(int element, double w) const;
   /// Element pairs (A, B) that are the same or adjacent along both lines.
   bool neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const;
   bool inNeighbourhood(const std::pair<int, int>& key, const std::set<std::pair<int, int>>& set) const;
   double nodeTransverseMass(int node) const;
-  Vec3 pointVelocity(const model::State& state, int element, double w) const;
-  /// Velocity [m/s], acceleration [m/s^2] and instantaneous effective mass [kg] of a smooth-centreline
-  /// point (1/m = sum N_k^2 / M_k for lumped node masses M_k).
-  Vec3 stencilVelocity(const model::State& state, const CentrelineStencil& stencil) const;
-  Vec3 stencilAcceleration(const model::State& state, const CentrelineStencil& stencil) const;
+  /// A per-DOF field (velocity [m/s], acceleration [m/s^2]) at parameter w of an element (linear).
+  Vec3 pointValue(const VecX& field, int element, double w) const;
+  /// The same field at a smooth-centreline point, and the point's instantaneous effective mass [kg]
+  /// (1/m = sum N_k^2 / M_k for lumped node masses M_k).
+  Vec3 stencilValue(const VecX& field, const CentrelineStencil& stencil) const;
   double stencilMass(const CentrelineStencil& stencil) const;
   /// Arc length [m] of the point at parameter w of an element of a line.
   double arcOf(int line, int element, double w) const;

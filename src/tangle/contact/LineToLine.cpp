@@ -118,7 +118,7 @@ void LineContact::findLineSamples(const model::State& state, bool dynamic) {
       smp.normal = diff / dist;
       smp.length = kGaussW[g] * jacobian * blend;
       const double p = -smp.gap;
-      const Vec3 va = pointVelocity(state, A.element, smp.xi), vb = pointVelocity(state, B.element, smp.t);
+      const Vec3 va = pointValue(state.velocity, A.element, smp.xi), vb = pointValue(state.velocity, B.element, smp.t);
       smp.gapRate = smp.normal.dot(va - vb);
       smp.damping = damping * law.dampingFraction(p);
       smp.slope = law.slope(p);

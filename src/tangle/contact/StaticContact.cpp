@@ -45,13 +45,8 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   }
   if (largest <= 0.0) return 1.0;
   // Candidates: pairs whose boxes, grown by the largest node move, come within the radii.
-  buildProxies(state);
-  BroadPhaseOptions options = m_broadPhase.options();
-  options.margin = m_maxRadius + largest;
-  BroadPhase broad(options);
-  std::vector<CandidatePair> pairs;
-  broad.findPairs(m_proxies, pairs);
-  m_candidateTime = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<CandidatePair> pairs = pairsWithin(state, m_maxRadius + largest);
+  m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
   struct Pair {
     int ea, eb;
     double radii, gap0;
@@ -61,7 +56,6 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   for (const CandidatePair& cp : pairs) {
     const SegmentProxy& a = m_proxies[cp.first];
     const SegmentProxy& b = m_proxies[cp.second];
-    if (!elementPairAllowed(a.element, b.element)) continue;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
     watched.push_back({a.element, b.element, a.radius + b.radius, d.distance - a.radius - b.radius, d});
   }
@@ -91,17 +85,11 @@ std::string LineContact::rejectState(const model::State& state) {
   double largestMove = 0.0;
   for (int n = 0; n < m_model->nodeCount(); ++n)
     largestMove = std::max(largestMove, (state.position[n] - m_staticReference[n]).norm());
-  buildProxies(state);
-  BroadPhaseOptions options = m_broadPhase.options();
-  options.margin = m_maxRadius + largestMove;
-  BroadPhase broad(options);
-  std::vector<CandidatePair> pairs;
-  broad.findPairs(m_proxies, pairs);
-  m_candidateTime = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<CandidatePair> pairs = pairsWithin(state, m_maxRadius + largestMove);
+  m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
   for (const CandidatePair& cp : pairs) {
     const SegmentProxy& a = m_proxies[cp.first];
     const SegmentProxy& b = m_proxies[cp.second];
-    if (!elementPairAllowed(a.element, b.element)) continue;
     const double radii = a.radius + b.radius;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
     const model::LineElement& ea = elements[a.element];
