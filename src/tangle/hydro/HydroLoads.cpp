@@ -59,6 +59,10 @@ HydroLoads::HydroLoads(const model::Model& model)
   m_fluid.resize(n);
   m_surface.assign(n, 0.0);
   m_addedMass.assign(n, Mat3::Zero());
+  if (!model.spec().wakes.empty()) {
+    m_wake = std::make_unique<WakeInterference>(model, m_current);
+    if (m_wake->empty()) m_wake.reset();
+  }
 }
 
 double HydroLoads::surfaceAt(double x, double y, double t, bool dynamic) const {
@@ -100,6 +104,7 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     m_cacheTime = request.time;
     m_cacheDynamic = true;
   }
+  if (m_wake) m_wake->evaluate(state, rho, m_elementWake);
   const Vec3 zero = Vec3::Zero();
   const bool wantDamping = matrix && request.dynamic && request.cf != 0.0;
   for (std::size_t e = 0; e < elements.size(); ++e) {
@@ -117,14 +122,37 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     const Vec3 v2 = request.dynamic ? Vec3(state.velocity.segment<3>(d2)) : zero;
     FluidKinematics fluid;
     fluid.velocity = m_current.velocity(0.5 * (x1.z() + x2.z()));
+    if (m_wake) fluid.velocity += m_elementWake[e].velocityChange;
     if (waves) {
       fluid.velocity += m_fluid[e].velocity;
       fluid.acceleration = m_fluid[e].acceleration;
     }
-    const MorisonElementLoad load = morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet, wantDamping);
+    const bool wakeTangent = m_wake && matrix && m_wake->isDownstream(static_cast<int>(e));
+    const MorisonElementLoad load =
+        morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet, wantDamping || wakeTangent);
     // Out-of-balance convention: external loads are subtracted.
     force.segment<3>(d1) -= load.force1;
     force.segment<3>(d2) -= load.force2;
+    if (m_wake && !m_elementWake[e].liftPerLength.isZero(0.0)) {
+      // Wake lift (Blevins) on the wetted length, half on each node.
+      const Vec3 lift = 0.5 * wet * (x2 - x1).norm() * m_elementWake[e].liftPerLength;
+      force.segment<3>(d1) -= lift;
+      force.segment<3>(d2) -= lift;
+    }
+    if (wakeTangent) {
+      // d(force_i)/d(x_j) = 1/2 d(force_i)/d(midpoint): drag through the velocity change (damping_i is
+      // -d force_i / d v_i = d force_i / d u), lift on half the wetted length. Added for every downstream
+      // element, zero where no wake acts, so the matrix entries keep their order.
+      Mat3 dVelocity, dLift;
+      m_wake->gradient(state, static_cast<int>(e), rho, dVelocity, dLift);
+      const double half = 0.25 * wet * (x2 - x1).norm();
+      const Mat3 k1 = -0.5 * (load.damping1 * dVelocity) - half * dLift;
+      const Mat3 k2 = -0.5 * (load.damping2 * dVelocity) - half * dLift;
+      matrix->add3x3(d1, d1, k1, request.kf);
+      matrix->add3x3(d1, d2, k1, request.kf);
+      matrix->add3x3(d2, d1, k2, request.kf);
+      matrix->add3x3(d2, d2, k2, request.kf);
+    }
     m_addedMass[e] = load.addedMassPerNode;
     if (wantDamping) {
       matrix->add3x3(d1, d1, load.damping1, request.cf);

@@ -1,13 +1,15 @@
 #pragma once
 /// @file HydroLoads.hpp
 /// Hydrodynamic loads on every line element: Morison drag, fluid inertia and added mass from the
-/// current profile and the wave field (relative-velocity form). In statics only the current acts
+/// current profile and the wave field (relative-velocity form), with the current reduced in the wake of
+/// upstream lines where the model asks for wake interference (WakeInterference.hpp). In statics only the current acts
 /// (structure at rest); in dynamics waves are ramped in over the ramp time.
 
 #include <memory>
 #include <vector>
 
 #include "tangle/hydro/CurrentProfile.hpp"
+#include "tangle/hydro/WakeInterference.hpp"
 #include "tangle/hydro/WaveField.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
@@ -38,6 +40,8 @@ class HydroLoads final : public solver::LoadContributor {
   /// Surface elevation (ramped) at (x, y) [m] and time [s].
   double surfaceAt(double x, double y, double t, bool dynamic) const;
   const WaveField* waves() const { return m_waves.get(); }  ///< nullptr without waves
+  /// The wake at every element from the last addForces() call (empty without wake_interference).
+  const std::vector<ElementWake>& elementWake() const { return m_elementWake; }
 
  private:
   void addAttachmentDrag(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
@@ -52,6 +56,8 @@ class HydroLoads final : public solver::LoadContributor {
   std::vector<FluidKinematics> m_fluid;  // per element, at the cached time
   std::vector<double> m_surface;         // per element
   std::vector<Mat3> m_addedMass;         // per element, per node
+  std::unique_ptr<WakeInterference> m_wake;  // nullptr without wake_interference
+  std::vector<ElementWake> m_elementWake;    // per element, from the last addForces()
 };
 
 }  // namespace tangle::hydro

@@ -214,6 +214,7 @@ class Value {
   }
 
   /// A plain (unquoted, untagged) scalar: the only kind read as a number or a boolean.
+  bool isSequence() const { return m_node.IsSequence(); }
   bool isPlain() const {
     if (!m_node.IsScalar()) return false;
     const std::string& tag = m_node.Tag();
@@ -949,6 +950,75 @@ void readContact(const Value& v, ModelSpec& spec) {
   c.eventSeparationTime = m.number("event_separation_time", d.eventSeparationTime, nonNegative());
 }
 
+/// wake_interference: a list of {upstream, downstream, model, coefficients, upstream_drag_coefficient};
+/// upstream and downstream each a line name or a list of names (every upstream line acts on every
+/// downstream one), or `lines: [...]` for a group in which every line acts on every other one.
+void readWakes(const Value& v, ModelSpec& spec) {
+  auto lineName = [&](const Value& name) {
+    const std::string n = name.text("a line name");
+    const bool known =
+        std::any_of(spec.lines.begin(), spec.lines.end(), [&](const model::LineSpec& l) { return l.name == n; });
+    if (!known) name.fail("unknown line '" + n + "' in wake_interference");
+    return n;
+  };
+  auto names = [&](const Value& item) {
+    std::vector<std::string> out;
+    if (item.isSequence()) {
+      for (const Value& n : item.items(1)) out.push_back(lineName(n));
+    } else {
+      out.push_back(lineName(item));
+    }
+    return out;
+  };
+  for (const Value& item : v.items(1)) {
+    const Map m(item, {"upstream", "downstream", "lines", "model", "coefficients", "upstream_drag_coefficient"});
+    model::WakeSpec w;
+    if (const std::optional<Value> model = m.find("model"))
+      w.model = model->choice<model::WakeSpec::Model>(
+          {{"huse", model::WakeSpec::Model::Huse}, {"blevins", model::WakeSpec::Model::Blevins}});
+    if (const std::optional<Value> c = m.find("coefficients")) {
+      if (w.model == model::WakeSpec::Model::Huse) {
+        const Map k(*c, {"k1", "k2", "k3"});
+        w.k1 = k.number("k1", w.k1, positive().withHint("wake half-width factor, Huse 1993: 0.25"));
+        w.k2 = k.number("k2", w.k2, positive().withHint("centre-line deficit factor, Huse 1993: 1.0"));
+        w.k3 = k.number("k3", w.k3, positive().withHint("Gaussian profile factor, Huse 1993: 0.693"));
+      } else {
+        const Map k(*c, {"a1", "a2", "a3"});
+        w.a1 = k.number("a1", w.a1, positive().withHint("centre-line deficit factor, Blevins 2005: 1.0"));
+        w.a2 = k.number("a2", w.a2, positive().withHint("Gaussian profile factor, Blevins 2005: 4.5"));
+        w.a3 = k.number("a3", w.a3, Range{-1e3, 0.0, false, false, "lift factor (Blevins 2005: -10.6)"});
+      }
+    }
+    w.upstreamDragCoefficient =
+        m.number("upstream_drag_coefficient", 0.0, nonNegative().withHint("0 takes the upstream line type's drag_normal"));
+    std::vector<std::pair<std::string, std::string>> pairs;
+    if (const std::optional<Value> group = m.find("lines")) {
+      if (m.find("upstream") || m.find("downstream"))
+        item.fail("give either 'lines' (a group) or 'upstream' and 'downstream', not both");
+      const std::vector<std::string> all = names(*group);
+      if (all.size() < 2) group->fail("a wake group needs at least two lines");
+      for (const auto& a : all)
+        for (const auto& b : all)
+          if (a != b) pairs.emplace_back(a, b);
+    } else {
+      const std::vector<std::string> up = names(m.get("upstream", "the line (or list of lines) whose wake acts"));
+      const std::vector<std::string> down =
+          names(m.get("downstream", "the line (or list of lines) that sees the reduced current"));
+      for (const auto& a : up)
+        for (const auto& b : down) {
+          if (a == b) item.fail(fmt::format("line '{}' cannot be in its own wake", a));
+          pairs.emplace_back(a, b);
+        }
+    }
+    for (const auto& [a, b] : pairs) {
+      model::WakeSpec one = w;
+      one.upstream = a;
+      one.downstream = b;
+      spec.wakes.push_back(one);
+    }
+  }
+}
+
 /// A heading table: list of [heading_deg, x, y, yaw] rows, headings ascending in [0, 360).
 model::HeadingTable readHeadingTable(const Value& v) {
   model::HeadingTable t;
@@ -1090,6 +1160,7 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
     TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},
     TopLevelBlock{"contact", false, "a map of line-to-line contact settings", readContact},
+    TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}", readWakes},
     TopLevelBlock{"output", false, "a map of output settings", readOutput},
 };
 

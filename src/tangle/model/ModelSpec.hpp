@@ -250,6 +250,19 @@ struct ContactSpec {
   double eventSeparationTime = 0.2;  ///< an event ends after this long without contact [s]
 };
 
+/// Wake interference of one upstream line on one downstream line (docs/theory.md sec. 12): the steady
+/// current seen by the downstream line is reduced in the wake of the upstream one (hydro/WakeModel.hpp).
+struct WakeSpec {
+  enum class Model { Huse, Blevins };
+  std::string upstream;    ///< line whose wake acts
+  std::string downstream;  ///< line that sees the reduced current
+  Model model = Model::Huse;
+  double k1 = 0.25, k2 = 1.0, k3 = 0.693;  ///< Huse coefficients [-]
+  double a1 = 1.0, a2 = 4.5, a3 = -10.6;   ///< Blevins coefficients [-]
+  /// Drag coefficient of the upstream line for its wake [-]; 0: the upstream line type's drag_normal.
+  double upstreamDragCoefficient = 0.0;
+};
+
 /// Result output settings.
 struct OutputSpec {
   bool vtk = true;   ///< write a ParaView .pvd/.vtu series
@@ -268,6 +281,7 @@ struct ModelSpec {
   StaticSpec statics;
   DynamicSpec dynamics;
   ContactSpec contact;
+  std::vector<WakeSpec> wakes;  ///< wake interference pairs (empty: none)
   OutputSpec output;
   /// Plausibility warnings of the reader (value legal but likely a unit or typing mistake), each naming
   /// the file, line and key; printed by `check` and `run`.

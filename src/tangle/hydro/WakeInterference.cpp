@@ -1,0 +1,155 @@
+/// @file WakeInterference.cpp
+/// The wake of upstream lines on downstream line elements (geometry in WakeInterference.hpp).
+
+#include "tangle/hydro/WakeInterference.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tangle::hydro {
+
+namespace {
+int lineIndex(const model::Model& model, const std::string& name) {
+  const auto& lines = model.lines();
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    if (lines[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+}  // namespace
+
+WakeInterference::WakeInterference(const model::Model& model, const CurrentProfile& current)
+    : m_model(&model), m_current(&current), m_downstream(model.elements().size(), false) {
+  for (const model::WakeSpec& w : model.spec().wakes) {
+    Pair p;
+    p.upstream = lineIndex(model, w.upstream);
+    p.downstream = lineIndex(model, w.downstream);
+    if (p.upstream < 0 || p.downstream < 0) continue;  // the reader checked the names
+    p.coefficients.kind = w.model == model::WakeSpec::Model::Huse ? WakeKind::Huse : WakeKind::Blevins;
+    p.coefficients.k1 = w.k1;
+    p.coefficients.k2 = w.k2;
+    p.coefficients.k3 = w.k3;
+    p.coefficients.a1 = w.a1;
+    p.coefficients.a2 = w.a2;
+    p.coefficients.a3 = w.a3;
+    p.dragCoefficient = w.upstreamDragCoefficient;
+    const model::Line& up = model.lines()[static_cast<std::size_t>(p.upstream)];
+    const model::Line& down = model.lines()[static_cast<std::size_t>(p.downstream)];
+    // First guess: the upstream element at the same fraction of the line.
+    p.guess.resize(static_cast<std::size_t>(down.elementCount));
+    for (int e = 0; e < down.elementCount; ++e)
+      p.guess[static_cast<std::size_t>(e)] =
+          up.firstElement + std::min(up.elementCount - 1, e * up.elementCount / std::max(1, down.elementCount));
+    for (int e = 0; e < down.elementCount; ++e) m_downstream[static_cast<std::size_t>(down.firstElement + e)] = true;
+    m_pairs.push_back(std::move(p));
+  }
+}
+
+void WakeInterference::evaluate(const model::State& state, double rho, std::vector<ElementWake>& out) {
+  const auto& elements = m_model->elements();
+  out.assign(elements.size(), ElementWake{});
+  for (Pair& pair : m_pairs) {
+    const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
+    for (int k = 0; k < down.elementCount; ++k) {
+      const int e = down.firstElement + k;
+      const model::LineElement& el = elements[static_cast<std::size_t>(e)];
+      const Vec3& p1 = state.position[el.node1];
+      const Vec3& p2 = state.position[el.node2];
+      const ElementWake w = wakeAtPoint(state, pair, k, 0.5 * (p1 + p2), (p2 - p1).normalized(), rho);
+      ElementWake& o = out[static_cast<std::size_t>(e)];
+      if (w.deficit > o.deficit) o = w;
+    }
+  }
+}
+
+void WakeInterference::gradient(const model::State& state, int element, double rho, Mat3& velocity, Mat3& lift) {
+  velocity.setZero();
+  lift.setZero();
+  const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
+  const Vec3& p1 = state.position[el.node1];
+  const Vec3& p2 = state.position[el.node2];
+  const Vec3 p = 0.5 * (p1 + p2);
+  const Vec3 td = (p2 - p1).normalized();
+  // Central differences with a step of 1e-4 of the diameter: the wake varies over its width (~D and more).
+  const double h = 1e-4 * std::max(el.type->outerDiameter, 1e-3);
+  for (Pair& pair : m_pairs) {
+    const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
+    if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
+    const int k = element - down.firstElement;
+    if (wakeAtPoint(state, pair, k, p, td, rho).deficit <= 0.0) continue;
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 step = h * Vec3::Unit(c);
+      const ElementWake plus = wakeAtPoint(state, pair, k, p + step, td, rho);
+      const ElementWake minus = wakeAtPoint(state, pair, k, p - step, td, rho);
+      velocity.col(c) += (plus.velocityChange - minus.velocityChange) / (2.0 * h);
+      lift.col(c) += (plus.liftPerLength - minus.liftPerLength) / (2.0 * h);
+    }
+  }
+}
+
+ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
+                                          double rho) const {
+  ElementWake o;
+  const auto& elements = m_model->elements();
+  const model::Line& up = m_model->lines()[static_cast<std::size_t>(pair.upstream)];
+  const model::LineElement& el = elements[static_cast<std::size_t>(m_model->lines()[static_cast<std::size_t>(pair.downstream)].firstElement + k)];
+  const int firstUp = up.firstElement;
+  const int lastUp = up.firstElement + up.elementCount - 1;
+  // Walk along the upstream line to the element p projects onto.
+  int j = std::clamp(pair.guess[static_cast<std::size_t>(k)], firstUp, lastUp);
+  double s = 0.0;
+  Vec3 a, axis;
+  int previousStep = 0;
+  bool inside = false;
+  for (int step = 0; step <= up.elementCount; ++step) {
+    const model::LineElement& u = elements[static_cast<std::size_t>(j)];
+    a = state.position[u.node1];
+    axis = state.position[u.node2] - a;
+    const double length2 = axis.squaredNorm();
+    s = length2 > 0.0 ? (p - a).dot(axis) / length2 : 0.5;
+    int move = 0;
+    if (s < 0.0 && j > firstUp) move = -1;
+    if (s > 1.0 && j < lastUp) move = 1;
+    if (move == 0) {
+      inside = s >= 0.0 && s <= 1.0;
+      break;
+    }
+    if (move == -previousStep) {  // p lies in the gap outside a kink of the upstream line
+      inside = true;
+      break;
+    }
+    previousStep = move;
+    j += move;
+  }
+  pair.guess[static_cast<std::size_t>(k)] = j;
+  if (!inside) return o;  // beyond an end of the upstream line
+  s = std::clamp(s, 0.0, 1.0);
+  const double length = axis.norm();
+  if (length <= 0.0) return o;
+  const Vec3 t = axis / length;
+  const Vec3 q = a + s * axis;
+  const Vec3 current = m_current->velocity(p.z());
+  const Vec3 normalFlow = current - current.dot(t) * t;
+  const double speed = normalFlow.norm();
+  if (speed <= 1e-9) return o;
+  const Vec3 ex = normalFlow / speed;
+  const Vec3 d = p - q;
+  const double x = d.dot(ex);
+  if (x <= 0.0) return o;
+  const Vec3 across = d - x * ex - d.dot(t) * t;
+  const double y = across.norm();
+  const section::LineType& upType = *elements[static_cast<std::size_t>(j)].type;
+  const double cd = pair.dragCoefficient > 0.0 ? pair.dragCoefficient : upType.dragNormal;
+  const double downDiameter = el.type->outerDiameter;
+  const WakeValue w = wakeAt(pair.coefficients, x, y, cd, upType.outerDiameter, downDiameter);
+  if (w.deficit <= 0.0) return o;
+  o.deficit = w.deficit;
+  o.upstreamLine = pair.upstream;
+  o.velocityChange = -w.deficit * speed * ex;
+  if (w.liftCoefficient != 0.0 && y > 0.0) {
+    const Vec3 lift = 0.5 * rho * w.liftCoefficient * downDiameter * speed * speed * (across / y);
+    o.liftPerLength = lift - lift.dot(td) * td;
+  }
+  return o;
+}
+
+}  // namespace tangle::hydro

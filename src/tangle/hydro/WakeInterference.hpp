@@ -1,0 +1,80 @@
+#pragma once
+/// @file WakeInterference.hpp
+/// Wake interference between lines: for every element of a downstream line, the wake of its upstream
+/// line(s) at the element midpoint, found from the positions of both lines at the state assembled
+/// (docs/theory.md sec. 12.2).
+///
+/// Geometry, per downstream element midpoint p and upstream line:
+///  - the upstream element whose axis p projects onto (parameter s in [0, 1]), found by walking along the
+///    upstream line from the element found last time (a few steps per call once the lines have settled);
+///    p beyond either end of the upstream line sees no wake;
+///  - the incident flow is the steady current at p's depth, its component normal to that upstream element,
+///    U_n = U_c - (U_c . t) t, speed U = |U_n| and direction e_x = U_n / U;
+///  - with d = p - q (q the projection of p on the upstream axis), x = d . e_x downstream and
+///    y = |d - x e_x - (d . t) t| across, both in the plane normal to the upstream element.
+/// The downstream element then sees the current U_c - (u / U) U e_x (the deficit reduces the normal flow
+/// component; waves and the line's own motion are added as usual) and, for Blevins, the lift
+/// 1/2 rho CL D_d U^2 along the transverse direction, projected normal to the downstream element.
+/// Several upstream lines: the one with the largest deficit acts (wakes are not superposed).
+///
+/// The wake comes from the steady current only and follows the upstream line as it is at the assembled
+/// state (in dynamics its instantaneous position; no convection delay). The tangent includes the
+/// derivatives of the wake with respect to the downstream element's position (gradient()); those with
+/// respect to the upstream line's position (a coupling block between the lines) are left out.
+
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+#include "tangle/hydro/CurrentProfile.hpp"
+#include "tangle/hydro/WakeModel.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/model/State.hpp"
+
+namespace tangle::hydro {
+
+/// The wake at one downstream element.
+struct ElementWake {
+  Vec3 velocityChange = Vec3::Zero();  ///< change of the current at the midpoint [m/s]
+  Vec3 liftPerLength = Vec3::Zero();   ///< Blevins lift per unit length, normal to the element [N/m]
+  double deficit = 0.0;                ///< u / U [-] of the acting wake
+  int upstreamLine = -1;               ///< index of the line whose wake acts (-1: none)
+};
+
+class WakeInterference {
+ public:
+  /// @param model the meshed model (its spec().wakes name the pairs)
+  /// @param current the steady current profile
+  WakeInterference(const model::Model& model, const CurrentProfile& current);
+
+  bool empty() const { return m_pairs.empty(); }
+  /// True when element e belongs to a downstream line.
+  bool isDownstream(int element) const { return m_downstream[static_cast<std::size_t>(element)]; }
+
+  /// The wake at every element midpoint for `state` (zero for elements of lines with no upstream line).
+  /// @param rho water density [kg/m^3] (for the lift)
+  void evaluate(const model::State& state, double rho, std::vector<ElementWake>& out);
+  /// Derivatives of the velocity change [1/s] and of the lift per length [N/m^2] of downstream element
+  /// `element` with respect to its midpoint (central differences; the upstream line held where it is).
+  /// Zero where no wake acts. For the tangent: the Blevins lift and the deficit gradient across the wake
+  /// are stiffnesses of the order of the string's own (a fixed-point iteration without them diverges).
+  void gradient(const model::State& state, int element, double rho, Mat3& velocity, Mat3& lift);
+
+ private:
+  struct Pair {
+    int upstream = -1;
+    int downstream = -1;
+    WakeCoefficients coefficients;
+    double dragCoefficient = 0.0;  ///< 0: each upstream element's type dragNormal
+    std::vector<int> guess;        ///< per downstream element: upstream element found last time
+  };
+  /// The wake of pair's upstream line at point p of the pair's downstream element k (tangent td).
+  ElementWake wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
+                          double rho) const;
+
+  const model::Model* m_model;
+  const CurrentProfile* m_current;
+  std::vector<Pair> m_pairs;
+  std::vector<bool> m_downstream;
+};
+
+}  // namespace tangle::hydro
