@@ -18,6 +18,9 @@ input (under RESULTS_DIR)        plot
 ``dynamics/end_forces.csv``      ``end_tensions.png``: tension at each line end vs time
 ``contact/events.csv``           ``clash_events.png``: impact energy and peak force per clash
 ``contact/clearance.csv``        ``clearance.png``: minimum clearance vs time per line pair
+``clearance/envelope.csv``       ``clearance_envelope.png``: static and minimum dynamic clearance
+                                 along each line of each assessed pair, with the required
+                                 clearance of ``clearance/summary.json`` (DNV-RP-F203)
 ===============================  ==============================================================
 
 Parts whose input file does not exist are skipped silently. A file that exists but cannot be
@@ -58,11 +61,13 @@ __all__ = [
     "end_tensions_figure",
     "clash_events_figure",
     "clearance_figure",
+    "clearance_envelope_figure",
     "plot_statics",
     "plot_range",
     "plot_end_tensions",
     "plot_clash_events",
     "plot_clearance",
+    "plot_clearance_envelope",
     "plot_results",
     "main",
 ]
@@ -93,6 +98,7 @@ RANGE_COLUMNS = (
 )
 EVENTS_COLUMNS = ("start_time_s", "line_1", "line_2", "peak_force_N", "impact_energy_J")
 CLEARANCE_COLUMNS = ("time_s", "pair", "min_clearance_m")
+ENVELOPE_COLUMNS = ("line", "other_line", "arc_length_m", "static_clearance_m", "min_clearance_m")
 
 Table = dict  # column name -> numpy array (float, or object for text columns)
 
@@ -368,6 +374,35 @@ def clearance_figure(table: Table) -> Figure:
     return fig
 
 
+def clearance_envelope_figure(table: Table, required: float | None = None) -> Figure:
+    """Clearance [m] along each line of each assessed pair from a ``clearance/envelope.csv`` table: the
+    static clearance (dashed) and the minimum over the dynamics (solid), one panel per line, with the
+    required clearance (DNV-RP-F203 no-collision criterion) as a red line when given."""
+    _require(table, ENVELOPE_COLUMNS, "clearance envelope table")
+    arc = _numeric(table, "arc_length_m", "clearance envelope")
+    static = _numeric(table, "static_clearance_m", "clearance envelope")
+    dynamic = _numeric(table, "min_clearance_m", "clearance envelope")
+    fig = Figure(figsize=(10.0, 6.0), layout="constrained")
+    if len(arc) == 0:
+        return _no_data(fig, "no clearance envelope data")
+    sides = np.array([f"{a} to {b}" for a, b in zip(table["line"], table["other_line"])], dtype=object)
+    unique = list(dict.fromkeys(sides))
+    axes = np.atleast_1d(fig.subplots(len(unique), 1, sharex=False, squeeze=False)[:, 0])
+    for ax, side in zip(axes, unique):
+        sel = sides == side
+        order = np.argsort(arc[sel], kind="stable")
+        a, st, dy = arc[sel][order], static[sel][order], dynamic[sel][order]
+        ax.plot(a, st, color="C0", linestyle="--", linewidth=1.0, label=f"static (min {np.nanmin(st):.3g} m)")
+        if not np.all(np.isnan(dy)):
+            ax.plot(a, dy, color="C1", linewidth=1.2, label=f"dynamic minimum (min {np.nanmin(dy):.3g} m)")
+        if required is not None and required > 0.0:
+            ax.axhline(required, color="red", linewidth=1.0, label=f"required {required:.3g} m")
+        _finish(ax, "arc length from end A [m]", "clearance [m]")
+        ax.set_title(f"Clearance from '{side.split(' to ')[0]}' to '{side.split(' to ')[1]}'")
+        ax.legend(loc="best", fontsize="small")
+    return fig
+
+
 # --------------------------------------------------------------------------------------------
 # Files
 
@@ -497,6 +532,18 @@ def plot_clearance(csv_path: str | Path, out_png: str | Path) -> Path:
     return _save(clearance_figure(read_csv(csv_path, text=("pair",))), out_png)
 
 
+def plot_clearance_envelope(csv_path: str | Path, out_png: str | Path) -> Path:
+    """Reads ``clearance/envelope.csv`` (and the required clearance from ``summary.json`` beside it)
+    and writes the clearance envelope plot to ``out_png``."""
+    csv_path = Path(csv_path)
+    required = None
+    summary = csv_path.parent / "summary.json"
+    if summary.is_file():
+        required = float(json.loads(summary.read_text(encoding="utf-8")).get("required_clearance_m", 0.0))
+    table = read_csv(csv_path, text=("line", "other_line"))
+    return _save(clearance_envelope_figure(table, required), out_png)
+
+
 def plot_results(results_dir: str | Path, out_dir: str | Path | None = None, errors: list | None = None) -> list[Path]:
     """Makes every plot whose input exists in ``results_dir``; returns the PNG paths written.
 
@@ -550,6 +597,10 @@ def plot_results(results_dir: str | Path, out_dir: str | Path | None = None, err
     clearance = results / "contact" / "clearance.csv"
     if clearance.is_file():
         attempt(clearance, lambda: plot_clearance(clearance, out / "clearance.png"))
+
+    envelope = results / "clearance" / "envelope.csv"
+    if envelope.is_file():
+        attempt(envelope, lambda: plot_clearance_envelope(envelope, out / "clearance_envelope.png"))
 
     if (dynamics_dir / "vessels.csv").is_file():
         attempt(dynamics_dir / "vessels.csv", lambda: _save(drift_path_figure(results), out / "drift_path.png"))

@@ -299,6 +299,29 @@ def test_figures_have_the_expected_subplots(tmp: Path) -> None:
 # ---------------------------------------------------------------------------------------------
 
 
+def test_clearance_envelope_plot_with_required_clearance(tmp: Path) -> None:
+    rows = []
+    for line, other in (("up", "down"), ("down", "up")):
+        for i in range(11):
+            rows.append([line, other, f"{10.0 * i}", f"{4.0 - 0.1 * i}", f"{3.0 - 0.2 * i}", f"{0.5 * i}"])
+    write_csv(tmp / "clearance" / "envelope.csv",
+              ["line", "other_line", "arc_length_m", "static_clearance_m", "min_clearance_m", "time_of_min_s"], rows)
+    (tmp / "clearance" / "summary.json").write_text('{"required_clearance_m": 1.5, "pairs": []}', encoding="utf-8")
+    fig = tangle_plot.clearance_envelope_figure(
+        tangle_plot.read_csv(tmp / "clearance" / "envelope.csv", text=("line", "other_line")), 1.5)
+    assert len(fig.axes) == 2
+    labels = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert labels == ["static (min 3 m)", "dynamic minimum (min 1 m)", "required 1.5 m"], labels
+    written = tangle_plot.plot_results(tmp)
+    assert tmp / "plots" / "clearance_envelope.png" in written
+    # A statics-only run has no dynamic column values: only the static curve and the requirement.
+    rows = [["up", "down", "0", "4", "nan", "nan"], ["up", "down", "10", "3.5", "nan", "nan"]]
+    write_csv(tmp / "s.csv", ["line", "other_line", "arc_length_m", "static_clearance_m", "min_clearance_m",
+                              "time_of_min_s"], rows)
+    fig = tangle_plot.clearance_envelope_figure(tangle_plot.read_csv(tmp / "s.csv", text=("line", "other_line")), 1.5)
+    assert len(fig.axes[0].get_lines()) == 2
+
+
 def main() -> int:
     tests = [(name, fn) for name, fn in globals().items() if name.startswith("test_") and callable(fn)]
     failed = 0
@@ -320,3 +343,4 @@ def main() -> int:
 
 if __name__ == "__main__":
     sys.exit(main())
+

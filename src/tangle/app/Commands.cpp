@@ -10,6 +10,7 @@
 
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/ClashReport.hpp"
+#include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/StaticContactReport.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
@@ -252,6 +253,17 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   if (m.spec().output.vtk) io::PvdSeries(outDir / "vtk" / "statics.pvd").addStep(0.0, io::toPolylines(lines));
   log.info(result.message + "\n");
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
+  std::unique_ptr<contact::ClearanceEnvelope> envelope;
+  {
+    std::vector<std::array<int, 2>> contactPairs;
+    if (sim.contact()) contactPairs = contact::ClashReport(m, *sim.contact()).pairs();
+    envelope = std::make_unique<contact::ClearanceEnvelope>(m, contactPairs);
+    if (envelope->empty()) {
+      envelope.reset();
+    } else {
+      envelope->recordStatic(sim.state());
+    }
+  }
   for (const auto& s : lines) {
     std::string text = fmt::format(
         "  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m", s.name,
@@ -315,6 +327,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
         !options.quiet,
         [&](const model::State& s, double dt) {
           recorder.accumulate(sim.sectionSnapshot(), dt);  // ranges need no support reactions
+          if (envelope) envelope->record(s);  // every step: the minimum clearance must not fall between outputs
           if (tensionerFile) {
             // Every step: a tensioner touching its stop between two output times must show.
             const auto readings = vessels->tensionerReadings(s, s.time);
@@ -345,6 +358,10 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     } else {
       log.info(dyn.message + "\n");
     }
+  }
+  if (envelope) {
+    envelope->write(outDir);
+    log.info(envelope->terminalSummary());
   }
   if (m.spec().output.plots && !options.noPlots) makePlots(outDir, log);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1019,6 +1019,28 @@ void readWakes(const Value& v, ModelSpec& spec) {
   }
 }
 
+/// clearance: {required [m], pairs: [[a, b], ...]}.
+void readClearance(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"required", "pairs"});
+  spec.clearance.required =
+      m.number("required", 0.0, nonNegative().withHint("required surface-to-surface clearance [m] (DNV-RP-F203)"));
+  if (const std::optional<Value> pairs = m.find("pairs")) {
+    for (const Value& item : pairs->items(1)) {
+      const std::vector<Value> names = item.items(2);
+      if (names.size() != 2) item.expected("a pair of line names [line_a, line_b] (clearance.pairs)");
+      std::array<std::string, 2> pair;
+      for (std::size_t k = 0; k < 2; ++k) {
+        pair[k] = names[k].text("a line name");
+        const bool known = std::any_of(spec.lines.begin(), spec.lines.end(),
+                                       [&](const model::LineSpec& l) { return l.name == pair[k]; });
+        if (!known) names[k].fail("unknown line '" + pair[k] + "' in clearance.pairs");
+      }
+      if (pair[0] == pair[1]) item.fail("clearance.pairs: a line paired with itself");
+      spec.clearance.pairs.emplace_back(pair[0], pair[1]);
+    }
+  }
+}
+
 /// A heading table: list of [heading_deg, x, y, yaw] rows, headings ascending in [0, 360).
 model::HeadingTable readHeadingTable(const Value& v) {
   model::HeadingTable t;
@@ -1160,6 +1182,7 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
     TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},
     TopLevelBlock{"contact", false, "a map of line-to-line contact settings", readContact},
+    TopLevelBlock{"clearance", false, "a map {required, pairs} (DNV-RP-F203 clearance check)", readClearance},
     TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}", readWakes},
     TopLevelBlock{"output", false, "a map of output settings", readOutput},
 };

@@ -263,6 +263,12 @@ struct WakeSpec {
   double upstreamDragCoefficient = 0.0;
 };
 
+/// The no-collision check of DNV-RP-F203 (contact/ClearanceEnvelope.hpp).
+struct ClearanceSpec {
+  double required = 0.0;  ///< required surface-to-surface clearance [m]
+  std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs checked (empty: see ClearanceEnvelope)
+};
+
 /// Result output settings.
 struct OutputSpec {
   bool vtk = true;   ///< write a ParaView .pvd/.vtu series
@@ -282,6 +288,7 @@ struct ModelSpec {
   DynamicSpec dynamics;
   ContactSpec contact;
   std::vector<WakeSpec> wakes;  ///< wake interference pairs (empty: none)
+  ClearanceSpec clearance;
   OutputSpec output;
   /// Plausibility warnings of the reader (value legal but likely a unit or typing mistake), each naming
   /// the file, line and key; printed by `check` and `run`.

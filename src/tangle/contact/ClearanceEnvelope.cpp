@@ -1,0 +1,192 @@
+/// @file ClearanceEnvelope.cpp
+/// Clearance envelopes along line pairs (definition in ClearanceEnvelope.hpp).
+
+#include "tangle/contact/ClearanceEnvelope.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <set>
+
+#include "tangle/io/JsonWriter.hpp"
+#include "tangle/io/OutputFile.hpp"
+
+namespace tangle::contact {
+
+namespace {
+int lineIndex(const model::Model& model, const std::string& name) {
+  for (std::size_t i = 0; i < model.lines().size(); ++i)
+    if (model.lines()[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+ClearanceEnvelope::ClearanceEnvelope(const model::Model& model, const std::vector<std::array<int, 2>>& contactPairs)
+    : m_model(&model), m_required(model.spec().clearance.required) {
+  std::set<std::array<int, 2>> pairs;
+  auto add = [&](int a, int b) {
+    if (a < 0 || b < 0 || a == b) return;
+    pairs.insert({std::min(a, b), std::max(a, b)});
+  };
+  const model::ClearanceSpec& spec = model.spec().clearance;
+  if (!spec.pairs.empty()) {
+    for (const auto& [a, b] : spec.pairs) add(lineIndex(model, a), lineIndex(model, b));
+  } else if (!contactPairs.empty()) {
+    for (const auto& p : contactPairs) add(p[0], p[1]);
+  } else {
+    for (const model::WakeSpec& w : model.spec().wakes) add(lineIndex(model, w.upstream), lineIndex(model, w.downstream));
+  }
+  m_pairs.assign(pairs.begin(), pairs.end());
+  for (const auto& p : m_pairs)
+    for (int k = 0; k < 2; ++k) {
+      Side s;
+      s.line = p[static_cast<std::size_t>(k)];
+      s.other = p[static_cast<std::size_t>(1 - k)];
+      const std::size_t n = static_cast<std::size_t>(model.lines()[static_cast<std::size_t>(s.line)].nodeCount);
+      s.staticClearance.assign(n, std::nan(""));
+      s.dynamicClearance.assign(n, kInf);
+      s.timeOfMinimum.assign(n, std::nan(""));
+      m_sides.push_back(std::move(s));
+    }
+}
+
+std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, int line, int other) const {
+  const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
+  const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
+  const auto& diameter = m_model->nodeContactDiameter();
+  std::vector<double> out(static_cast<std::size_t>(a.nodeCount), kInf);
+  for (int i = 0; i < a.nodeCount; ++i) {
+    const int n = a.firstNode + i;
+    const Vec3& x = state.position[n];
+    double best = kInf;
+    for (int j = 0; j + 1 < b.nodeCount; ++j) {
+      const int m1 = b.firstNode + j, m2 = m1 + 1;
+      const Vec3& p = state.position[m1];
+      const Vec3 axis = state.position[m2] - p;
+      const double l2 = axis.squaredNorm();
+      const double s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
+      const double radius = 0.5 * (s < 0.5 ? diameter[m1] : diameter[m2]);
+      best = std::min(best, (x - (p + s * axis)).norm() - radius);
+    }
+    out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
+  }
+  return out;
+}
+
+void ClearanceEnvelope::recordStatic(const model::State& state) {
+  for (Side& s : m_sides) s.staticClearance = nodeClearance(state, s.line, s.other);
+}
+
+void ClearanceEnvelope::record(const model::State& state) {
+  m_dynamic = true;
+  for (Side& s : m_sides) {
+    const std::vector<double> c = nodeClearance(state, s.line, s.other);
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (c[i] < s.dynamicClearance[i]) {
+        s.dynamicClearance[i] = c[i];
+        s.timeOfMinimum[i] = state.time;
+      }
+  }
+}
+
+void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
+  const std::filesystem::path out = dir / "clearance";
+  std::filesystem::create_directories(out);
+  const auto& lines = m_model->lines();
+  {
+    io::OutputFile file(out / "envelope.csv");
+    std::ostream& f = file.stream();
+    f << "line,other_line,arc_length_m,static_clearance_m,min_clearance_m,time_of_min_s\n";
+    for (const Side& s : m_sides) {
+      const model::Line& l = lines[static_cast<std::size_t>(s.line)];
+      for (std::size_t i = 0; i < s.staticClearance.size(); ++i)
+        f << fmt::format("{},{},{:.4f},{:.6e},{:.6e},{:.6f}\n", l.name, lines[static_cast<std::size_t>(s.other)].name,
+                         l.arcLength[i], s.staticClearance[i],
+                         m_dynamic ? s.dynamicClearance[i] : std::nan(""), s.timeOfMinimum[i]);
+    }
+    file.close();
+  }
+  io::OutputFile summary(out / "summary.json");
+  io::JsonWriter j(summary.stream());
+  j.beginObject();
+  j.field("standard", "DNV-RP-F203 (2009) no-collision criterion: minimum clearance >= required");
+  j.field("required_clearance_m", m_required);
+  j.key("pairs");
+  j.beginArray();
+  for (std::size_t p = 0; p < m_pairs.size(); ++p) {
+    const Side& a = m_sides[2 * p];
+    const Side& b = m_sides[2 * p + 1];
+    auto worst = [](const std::vector<double>& v) {
+      std::size_t k = 0;
+      for (std::size_t i = 1; i < v.size(); ++i)
+        if (v[i] < v[k]) k = i;
+      return k;
+    };
+    j.beginObject();
+    j.field("line_1", lines[static_cast<std::size_t>(a.line)].name);
+    j.field("line_2", lines[static_cast<std::size_t>(b.line)].name);
+    const std::size_t sa = worst(a.staticClearance), sb = worst(b.staticClearance);
+    const bool staticOnA = a.staticClearance[sa] <= b.staticClearance[sb];
+    const double staticMin = staticOnA ? a.staticClearance[sa] : b.staticClearance[sb];
+    j.key("static");
+    j.beginObject();
+    j.field("min_clearance_m", staticMin);
+    j.field("line", lines[static_cast<std::size_t>(staticOnA ? a.line : b.line)].name);
+    j.field("arc_length_m", staticOnA ? lines[static_cast<std::size_t>(a.line)].arcLength[sa]
+                                      : lines[static_cast<std::size_t>(b.line)].arcLength[sb]);
+    j.endObject();
+    double overall = staticMin;
+    if (m_dynamic) {
+      const std::size_t da = worst(a.dynamicClearance), db = worst(b.dynamicClearance);
+      const bool onA = a.dynamicClearance[da] <= b.dynamicClearance[db];
+      const double dynamicMin = onA ? a.dynamicClearance[da] : b.dynamicClearance[db];
+      overall = std::min(overall, dynamicMin);
+      j.key("dynamic");
+      j.beginObject();
+      j.field("min_clearance_m", dynamicMin);
+      j.field("line", lines[static_cast<std::size_t>(onA ? a.line : b.line)].name);
+      j.field("arc_length_m", onA ? lines[static_cast<std::size_t>(a.line)].arcLength[da]
+                                  : lines[static_cast<std::size_t>(b.line)].arcLength[db]);
+      j.field("time_s", onA ? a.timeOfMinimum[da] : b.timeOfMinimum[db]);
+      j.endObject();
+    }
+    j.field("min_clearance_m", overall);
+    j.field("pass", overall >= m_required);
+    j.endObject();
+  }
+  j.endArray();
+  j.endObject();
+  summary.close();
+}
+
+std::string ClearanceEnvelope::terminalSummary() const {
+  const auto& lines = m_model->lines();
+  std::string s = fmt::format("clearance (DNV-RP-F203 no-collision check, required {:.3g} m):\n", m_required);
+  for (std::size_t p = 0; p < m_pairs.size(); ++p) {
+    const Side& a = m_sides[2 * p];
+    const Side& b = m_sides[2 * p + 1];
+    double staticMin = kInf, dynamicMin = kInf, when = std::nan(""), where = std::nan("");
+    int whereLine = a.line;
+    for (const Side* side : {&a, &b})
+      for (std::size_t i = 0; i < side->staticClearance.size(); ++i) {
+        staticMin = std::min(staticMin, side->staticClearance[i]);
+        if (m_dynamic && side->dynamicClearance[i] < dynamicMin) {
+          dynamicMin = side->dynamicClearance[i];
+          when = side->timeOfMinimum[i];
+          where = lines[static_cast<std::size_t>(side->line)].arcLength[i];
+          whereLine = side->line;
+        }
+      }
+    const double overall = std::min(staticMin, dynamicMin);
+    s += fmt::format("  {} / {}: static min {:.3f} m", lines[static_cast<std::size_t>(a.line)].name,
+                     lines[static_cast<std::size_t>(b.line)].name, staticMin);
+    if (m_dynamic)
+      s += fmt::format(", dynamic min {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'", dynamicMin, when, where,
+                       lines[static_cast<std::size_t>(whereLine)].name);
+    s += overall >= m_required ? ": PASS\n" : ": FAIL\n";
+  }
+  return s;
+}
+
+}  // namespace tangle::contact

@@ -1,0 +1,58 @@
+#pragma once
+/// @file ClearanceEnvelope.hpp
+/// The no-collision check of DNV-RP-F203 ("Riser interference", 2009, sec. 4): for every pair of lines
+/// assessed, the smallest surface-to-surface clearance at every node of each line to the other line,
+/// in the static equilibrium and over every accepted step of the dynamics (with the time it occurs), and
+/// a pass / fail against the required clearance of the model file (clearance.required).
+///
+/// Clearance at node i of line A to line B: min over the elements of B of the distance from x_i to the
+/// element's chord, minus the contact radii (half the contact diameters of node i and of the nearer
+/// node of the element); negative when the surfaces overlap. Written to clearance/envelope.csv and
+/// clearance/summary.json; a few lines for the terminal.
+
+#include <array>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "tangle/model/Model.hpp"
+#include "tangle/model/State.hpp"
+
+namespace tangle::contact {
+
+class ClearanceEnvelope {
+ public:
+  /// Pairs: clearance.pairs of the model; else the pairs allowed to touch when there is a contact block
+  /// (`contactPairs`); else the line pairs of wake_interference (either order); else none.
+  ClearanceEnvelope(const model::Model& model, const std::vector<std::array<int, 2>>& contactPairs);
+
+  bool empty() const { return m_pairs.empty(); }
+  /// The static clearance at every node (call once, at the static equilibrium).
+  void recordStatic(const model::State& state);
+  /// Updates the dynamic envelope with this state (call every accepted step).
+  void record(const model::State& state);
+  /// Writes clearance/envelope.csv and clearance/summary.json.
+  void write(const std::filesystem::path& dir) const;
+  std::string terminalSummary() const;
+
+  /// Clearance [m] of every node of line `line` to line `other` at a state (the quantity of the file comment).
+  std::vector<double> nodeClearance(const model::State& state, int line, int other) const;
+
+  struct Side {
+    int line = -1, other = -1;
+    std::vector<double> staticClearance;   ///< per node of `line` [m] (NaN before recordStatic)
+    std::vector<double> dynamicClearance;  ///< per node, minimum over the run [m] (+inf before record)
+    std::vector<double> timeOfMinimum;     ///< per node [s]
+  };
+  const std::vector<Side>& sides() const { return m_sides; }  ///< two per pair (A to B, B to A)
+
+ private:
+  const model::Model* m_model;
+  std::vector<std::array<int, 2>> m_pairs;
+  std::vector<Side> m_sides;
+  bool m_dynamic = false;
+  double m_required = 0.0;
+};
+
+}  // namespace tangle::contact
