@@ -75,13 +75,26 @@ void WakeInterference::gradient(const model::State& state, int element, double r
     const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
     if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
     const int k = element - down.firstElement;
-    if (wakeAtPoint(state, pair, k, p, td, rho).deficit <= 0.0) continue;
+    const ElementWake centre = wakeAtPoint(state, pair, k, p, td, rho);
+    if (centre.deficit <= 0.0) continue;
     for (int c = 0; c < 3; ++c) {
       const Vec3 step = h * Vec3::Unit(c);
       const ElementWake plus = wakeAtPoint(state, pair, k, p + step, td, rho);
       const ElementWake minus = wakeAtPoint(state, pair, k, p - step, td, rho);
-      velocity.col(c) += (plus.velocityChange - minus.velocityChange) / (2.0 * h);
-      lift.col(c) += (plus.liftPerLength - minus.liftPerLength) / (2.0 * h);
+      // The wake ends abruptly (level with the upstream centre, beyond the upstream line's ends): a
+      // difference across that edge is not a derivative; take the one-sided one on the wake's side.
+      const bool inPlus = plus.deficit > 0.0 && plus.upstreamLine == centre.upstreamLine;
+      const bool inMinus = minus.deficit > 0.0 && minus.upstreamLine == centre.upstreamLine;
+      if (inPlus && inMinus) {
+        velocity.col(c) += (plus.velocityChange - minus.velocityChange) / (2.0 * h);
+        lift.col(c) += (plus.liftPerLength - minus.liftPerLength) / (2.0 * h);
+      } else if (inPlus) {
+        velocity.col(c) += (plus.velocityChange - centre.velocityChange) / h;
+        lift.col(c) += (plus.liftPerLength - centre.liftPerLength) / h;
+      } else if (inMinus) {
+        velocity.col(c) += (centre.velocityChange - minus.velocityChange) / h;
+        lift.col(c) += (centre.liftPerLength - minus.liftPerLength) / h;
+      }
     }
   }
 }

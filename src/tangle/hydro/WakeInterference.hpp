@@ -19,8 +19,9 @@
 ///
 /// The wake comes from the steady current only and follows the upstream line as it is at the assembled
 /// state (in dynamics its instantaneous position; no convection delay). The tangent includes the
-/// derivatives of the wake with respect to the downstream element's position (gradient()); those with
-/// respect to the upstream line's position (a coupling block between the lines) are left out.
+/// derivative of the lift with respect to the downstream element's position (gradient(), used by
+/// HydroLoads); the drag's dependence on it through the deficit and every dependence on the upstream
+/// line's position (a coupling block between the lines) are left out.
 
 #include <vector>
 
