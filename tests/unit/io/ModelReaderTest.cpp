@@ -1035,3 +1035,71 @@ TEST(ModelReaderFiles, EveryExampleModelIsAccepted) {
 
 }  // namespace
 }  // namespace tangle::io
+
+namespace tangle::io {
+namespace {
+
+/// Two lines plus the wake and clearance blocks (issue 9).
+std::string wakeModel(const std::string& wake, const std::string& clearance = "") {
+  return R"(environment:
+  water_depth: 100
+line_types:
+  - {name: pipe, outer_diameter: 0.3, mass_per_length: 100, axial_stiffness: 2.0e9}
+lines:
+  - name: a
+    end_a: {type: fixed, position: [0, 0, -100]}
+    end_b: {type: fixed, position: [0, 0, -10]}
+    sections: [{type: pipe, length: 89.9, elements: 10}]
+  - name: b
+    end_a: {type: fixed, position: [5, 0, -100]}
+    end_b: {type: fixed, position: [5, 0, -10]}
+    sections: [{type: pipe, length: 89.9, elements: 10}]
+  - name: c
+    end_a: {type: fixed, position: [10, 0, -100]}
+    end_b: {type: fixed, position: [10, 0, -10]}
+    sections: [{type: pipe, length: 89.9, elements: 10}]
+)" + wake + clearance;
+}
+
+TEST(ModelReader, ReadsWakePairsListsGroupsAndCoefficients) {
+  const ModelSpec spec = readModelString(wakeModel(R"(wake_interference:
+  - {upstream: a, downstream: [b, c], model: blevins, coefficients: {a1: 1.2, a3: -8}, upstream_drag_coefficient: 1.1}
+  - {lines: [b, c]}
+)", "clearance: {required: 1.5, pairs: [[a, b]]}\n"), kSource);
+  ASSERT_EQ(spec.wakes.size(), 4u);  // a->b, a->c, b->c, c->b
+  EXPECT_EQ(spec.wakes[0].upstream, "a");
+  EXPECT_EQ(spec.wakes[1].downstream, "c");
+  EXPECT_EQ(spec.wakes[0].model, model::WakeSpec::Model::Blevins);
+  EXPECT_EQ(spec.wakes[0].a1, 1.2);
+  EXPECT_EQ(spec.wakes[0].a2, 4.5);
+  EXPECT_EQ(spec.wakes[0].a3, -8.0);
+  EXPECT_EQ(spec.wakes[0].upstreamDragCoefficient, 1.1);
+  EXPECT_EQ(spec.wakes[2].model, model::WakeSpec::Model::Huse);
+  EXPECT_EQ(spec.wakes[2].upstream, "b");
+  EXPECT_EQ(spec.wakes[3].upstream, "c");
+  EXPECT_EQ(spec.clearance.required, 1.5);
+  ASSERT_EQ(spec.clearance.pairs.size(), 1u);
+  EXPECT_EQ(spec.clearance.pairs[0].second, "b");
+}
+
+TEST(ModelReader, RejectsBadWakeAndClearanceInput) {
+  expectInputError(wakeModel("wake_interference:\n  - {upstream: a, downstream: zz}\n"), "downstream: zz",
+                   "wake_interference[0].downstream", "unknown line 'zz'");
+  expectInputError(wakeModel("wake_interference:\n  - {upstream: a, downstream: a}\n"), "upstream: a, downstream: a",
+                   "wake_interference[0]", "cannot be in its own wake");
+  expectInputError(wakeModel("wake_interference:\n  - {lines: [a, b], upstream: a}\n"), "lines: [a, b]",
+                   "wake_interference[0]", "not both");
+  expectInputError(wakeModel("wake_interference:\n  - {upstream: a, downstream: b, model: huse_x}\n"),
+                   "model: huse_x", "wake_interference[0].model", "huse");
+  expectInputError(wakeModel("wake_interference:\n  - {upstream: a, downstream: b, model: blevins, "
+                             "coefficients: {a3: 2}}\n"),
+                   "a3: 2", "wake_interference[0].coefficients.a3", "lift factor");
+  expectInputError(wakeModel("wake_interference:\n  - {upstream: a, downstream: b, coefficients: {a1: 2}}\n"),
+                   "a1: 2", "wake_interference[0].coefficients.a1", "");
+  expectInputError(wakeModel("", "clearance: {required: -1}\n"), "required: -1", "clearance.required", ">= 0");
+  expectInputError(wakeModel("", "clearance: {pairs: [[a, q]]}\n"), "pairs: [[a, q]]", "clearance.pairs[0][1]",
+                   "unknown line 'q'");
+}
+
+}  // namespace
+}  // namespace tangle::io
