@@ -3,9 +3,10 @@
 
 #include "tangle/contact/ClearanceEnvelope.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <set>
 
 #include "tangle/io/JsonWriter.hpp"
@@ -22,7 +23,8 @@ int lineIndex(const model::Model& model, const std::string& name) {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
-ClearanceEnvelope::ClearanceEnvelope(const model::Model& model, const std::vector<std::array<int, 2>>& contactPairs)
+ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
+                                     const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model), m_required(model.spec().clearance.required) {
   std::set<std::array<int, 2>> pairs;
   auto add = [&](int a, int b) {
@@ -35,7 +37,8 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model, const std::vecto
   } else if (!contactPairs.empty()) {
     for (const auto& p : contactPairs) add(p[0], p[1]);
   } else {
-    for (const model::WakeSpec& w : model.spec().wakes) add(lineIndex(model, w.upstream), lineIndex(model, w.downstream));
+    for (const model::WakeSpec& w : model.spec().wakes)
+      add(lineIndex(model, w.upstream), lineIndex(model, w.downstream));
   }
   m_pairs.assign(pairs.begin(), pairs.end());
   for (const auto& p : m_pairs)
@@ -43,7 +46,8 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model, const std::vecto
       Side s;
       s.line = p[static_cast<std::size_t>(k)];
       s.other = p[static_cast<std::size_t>(1 - k)];
-      const std::size_t n = static_cast<std::size_t>(model.lines()[static_cast<std::size_t>(s.line)].nodeCount);
+      const std::size_t n =
+          static_cast<std::size_t>(model.lines()[static_cast<std::size_t>(s.line)].nodeCount);
       s.staticClearance.assign(n, std::nan(""));
       s.dynamicClearance.assign(n, kInf);
       s.timeOfMinimum.assign(n, std::nan(""));
@@ -101,8 +105,8 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
     for (const Side& s : m_sides) {
       const model::Line& l = lines[static_cast<std::size_t>(s.line)];
       for (std::size_t i = 0; i < s.staticClearance.size(); ++i)
-        f << fmt::format("{},{},{:.4f},{:.6e},{:.6e},{:.6f}\n", l.name, lines[static_cast<std::size_t>(s.other)].name,
-                         l.arcLength[i], s.staticClearance[i],
+        f << fmt::format("{},{},{:.4f},{:.6e},{:.6e},{:.6f}\n", l.name,
+                         lines[static_cast<std::size_t>(s.other)].name, l.arcLength[i], s.staticClearance[i],
                          m_dynamic ? s.dynamicClearance[i] : std::nan(""), s.timeOfMinimum[i]);
     }
     file.close();

@@ -36,7 +36,8 @@ class ClearanceEnvelope {
   void write(const std::filesystem::path& dir) const;
   std::string terminalSummary() const;
 
-  /// Clearance [m] of every node of line `line` to line `other` at a state (the quantity of the file comment).
+  /// Clearance [m] of every node of line `line` to line `other` at a state (the quantity of the file
+  /// comment).
   std::vector<double> nodeClearance(const model::State& state, int line, int other) const;
 
   struct Side {

@@ -38,8 +38,10 @@ WakeInterference::WakeInterference(const model::Model& model, const CurrentProfi
     p.guess.resize(static_cast<std::size_t>(down.elementCount));
     for (int e = 0; e < down.elementCount; ++e)
       p.guess[static_cast<std::size_t>(e)] =
-          up.firstElement + std::min(up.elementCount - 1, e * up.elementCount / std::max(1, down.elementCount));
-    for (int e = 0; e < down.elementCount; ++e) m_downstream[static_cast<std::size_t>(down.firstElement + e)] = true;
+          up.firstElement +
+          std::min(up.elementCount - 1, e * up.elementCount / std::max(1, down.elementCount));
+    for (int e = 0; e < down.elementCount; ++e)
+      m_downstream[static_cast<std::size_t>(down.firstElement + e)] = true;
     m_pairs.push_back(std::move(p));
   }
 }
@@ -61,7 +63,8 @@ void WakeInterference::evaluate(const model::State& state, double rho, std::vect
   }
 }
 
-void WakeInterference::gradient(const model::State& state, int element, double rho, Mat3& velocity, Mat3& lift) {
+void WakeInterference::gradient(const model::State& state, int element, double rho, Mat3& velocity,
+                                Mat3& lift) {
   velocity.setZero();
   lift.setZero();
   const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
@@ -99,12 +102,13 @@ void WakeInterference::gradient(const model::State& state, int element, double r
   }
 }
 
-ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
-                                          double rho) const {
+ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p,
+                                          const Vec3& td, double rho) const {
   ElementWake o;
   const auto& elements = m_model->elements();
   const model::Line& up = m_model->lines()[static_cast<std::size_t>(pair.upstream)];
-  const model::LineElement& el = elements[static_cast<std::size_t>(m_model->lines()[static_cast<std::size_t>(pair.downstream)].firstElement + k)];
+  const model::LineElement& el = elements[static_cast<std::size_t>(
+      m_model->lines()[static_cast<std::size_t>(pair.downstream)].firstElement + k)];
   const int firstUp = up.firstElement;
   const int lastUp = up.firstElement + up.elementCount - 1;
   // Walk along the upstream line to the element p projects onto.

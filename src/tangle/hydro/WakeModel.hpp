@@ -46,7 +46,7 @@ struct WakeCoefficients {
 
 /// The wake at one downstream point.
 struct WakeValue {
-  double deficit = 0.0;  ///< u / U [-], in [0, 1]
+  double deficit = 0.0;          ///< u / U [-], in [0, 1]
   double liftCoefficient = 0.0;  ///< CL [-] on the downstream diameter, along +y (0 for Huse)
   double halfWidth = 0.0;        ///< b [m]: Huse's half-value width; Blevins: sqrt(ln 2 Cd D x / a2)
 };
