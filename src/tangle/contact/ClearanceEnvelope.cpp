@@ -166,7 +166,10 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
 
 std::string ClearanceEnvelope::terminalSummary() const {
   const auto& lines = m_model->lines();
-  std::string s = fmt::format("clearance (DNV-RP-F203 no-collision check, required {:.3g} m):\n", m_required);
+  std::string s =
+      m_required > 0.0
+          ? fmt::format("clearance (DNV-RP-F203 no-collision check, required {:.3g} m):\n", m_required)
+          : std::string("clearance (no clearance.required given: checked against contact, 0 m):\n");
   for (std::size_t p = 0; p < m_pairs.size(); ++p) {
     const Side& a = m_sides[2 * p];
     const Side& b = m_sides[2 * p + 1];
