@@ -1,14 +1,16 @@
 #include "tangle/solver/StaticSolver.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <fmt/format.h>
 #include <iostream>
 #include <limits>
 #include <numbers>
 
 #include "tangle/core/Error.hpp"
+#include "tangle/geometry/Rotation.hpp"
 #include "tangle/solver/LinearSolver.hpp"
 #include "tangle/solver/ResidualNorm.hpp"
 
@@ -46,6 +48,26 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
 
   model::State trial = start;
   bool ok = solveFrom(trial, time, result, budget);
+  if (!ok) {
+    // A line held at one end and free at the other that is far more flexible than its weight (a heavy
+    // rope or slender pipe clamped horizontally, w L^3 / EI in the thousands) cannot be reached from the
+    // given straight shape: its first Newton step is the linear deflection (kilometres) and every
+    // continuation increment stretches the stiff elements. Start again with it hanging.
+    model::State hanging = start;
+    StaticResult stage = result;
+    if (hangFreeLines(hanging)) {
+      if (debugStatics()) std::cerr << "  restart with the free lines hanging from their held ends\n";
+      // Its own allowance: the attempt from the given shape may have used the whole budget.
+      budget = std::max(budget, 5 * m_settings.maxIterations);
+      if (solveFrom(hanging, time, stage, budget)) {
+        ok = true;
+        trial = hanging;
+        result = stage;
+      } else {
+        result.iterations = stage.iterations;
+      }
+    }
+  }
   if (!ok && budget > 0) {
     // Continuation in the cable law: solve with cables that resist compression like tension (a regular
     // tangent even where the start shape leaves them slack), then take that stiffness away in decades
@@ -60,7 +82,9 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       const bool last = f < 1e-6;
       m_assembler->setSlackFactor(last ? 0.0 : f);
       staged = solveFrom(linear, time, stage, budget);
-      if (debugStatics()) std::cerr << fmt::format("  cable compression factor {:.0e}: {}\n", last ? 0.0 : f, staged ? "ok" : "failed");
+      if (debugStatics())
+        std::cerr << fmt::format("  cable compression factor {:.0e}: {}\n", last ? 0.0 : f,
+                                 staged ? "ok" : "failed");
       if (last) break;
     }
     m_assembler->setSlackFactor(slack);
@@ -90,7 +114,9 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     if (slackElements.empty()) break;
     // A slack line without bending stiffness is on an unstable or indifferent branch (e.g. a buoyant cable
     // pushed straight): start again from a shape bulged the way its load pushes it.
-    if (debugStatics()) std::cerr << fmt::format("  {} slack cable elements: restart from a bulged shape\n", slackElements.size());
+    if (debugStatics())
+      std::cerr << fmt::format("  {} slack cable elements: restart from a bulged shape\n",
+                               slackElements.size());
     model::State again = trial;
     bulgeSlackRuns(again, slackElements);
     StaticResult second = result;
@@ -107,7 +133,8 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       const int e = slackElements.front();
       const auto& el = model.elements()[e];
       result.warnings.push_back(fmt::format(
-          "{} suspended cable element(s) are slack (shorter than unstretched) at the static equilibrium (first at "
+          "{} suspended cable element(s) are slack (shorter than unstretched) at the static equilibrium "
+          "(first at "
           "{}): a line without bending stiffness cannot carry compression; check the line length against the "
           "distance between its ends, or give the section a bending_stiffness",
           slackElements.size(), model.describeNode(el.node1)));
@@ -126,13 +153,15 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
   if (ok) {
     state = trial;
     result.loadFraction = 1.0;
-    result.message =
-        result.roundoffLimited
-            ? fmt::format("static equilibrium found in {} iterations (max out-of-balance {:.3g} N: the round-off floor, "
-                          "above the requested {:.3g} N)",
-                          result.iterations, result.residual, result.tolerance)
-            : fmt::format("static equilibrium found in {} iterations (max out-of-balance {:.3g} N, tolerance {:.3g} N)",
-                          result.iterations, result.residual, result.tolerance);
+    result.message = result.roundoffLimited ? fmt::format(
+                                                  "static equilibrium found in {} iterations (max "
+                                                  "out-of-balance {:.3g} N: the round-off floor, "
+                                                  "above the requested {:.3g} N)",
+                                                  result.iterations, result.residual, result.tolerance)
+                                            : fmt::format(
+                                                  "static equilibrium found in {} iterations (max "
+                                                  "out-of-balance {:.3g} N, tolerance {:.3g} N)",
+                                                  result.iterations, result.residual, result.tolerance);
   } else {
     if (result.message.empty()) result.message = diagnose(trial, result, "");
     state = start;
@@ -148,7 +177,8 @@ std::string StaticSolver::inadmissible(const model::State& state) const {
   return {};
 }
 
-bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget, bool tautStart) {
+bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget,
+                             bool tautStart) {
   const model::Model& model = m_assembler->model();
   const int neq = model.dofs().equationCount();
   const model::State start = state;
@@ -178,7 +208,8 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
     m_assembler->commitStatics(state);
     return true;
   }
-  if (debugStatics()) std::cerr << "  full load failed (" << full.failure << "): continuation from the start shape\n";
+  if (debugStatics())
+    std::cerr << "  full load failed (" << full.failure << "): continuation from the start shape\n";
 
   // 2. Continuation from lambda = 0 (the start shape) to 1 in the residual and in length:
   //    r(q; L(lambda)) - (1 - lambda) r(q0; L(0)) = 0, with L(lambda) = L0 + lambda (L - L0).
@@ -194,8 +225,8 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   return false;
 }
 
-bool StaticSolver::continuation(model::State& state, const model::State& start, double time, StaticResult& result,
-                                int& budget, bool tautStart, std::string& failure) {
+bool StaticSolver::continuation(model::State& state, const model::State& start, double time,
+                                StaticResult& result, int& budget, bool tautStart, std::string& failure) {
   const model::Model& model = m_assembler->model();
   const int neq = model.dofs().equationCount();
   const double tolerance = result.tolerance;
@@ -218,8 +249,9 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
         // equivalent section, so some sections come out slightly short) has no stiffness across itself;
         // a current across the line then meets a singular tangent. In this second attempt it starts at a
         // strain of 1e-4, taut, and the length continuation takes that away again.
-        const double lowest = std::min(start.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1],
-                                       start.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2]);
+        const double lowest =
+            std::min(start.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1],
+                     start.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2]);
         if (lowest > -env.waterDepth + 1e-3) startLength[e] = chord / (1.0 + 1e-4);
       }
     }
@@ -245,7 +277,8 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   try {
     m_assembler->assemble(start, request, force, nullptr);
   } catch (const Error& e) {
-    result.message = diagnose(start, result, fmt::format("the starting shape cannot be evaluated ({})", e.what()));
+    result.message =
+        diagnose(start, result, fmt::format("the starting shape cannot be evaluated ({})", e.what()));
     return false;
   }
   gatherResidual(force, noOffset, r0);
@@ -293,8 +326,9 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   return false;
 }
 
-StaticSolver::NewtonOutcome StaticSolver::newtonWithFallback(model::State& state, const VecX& offset, double time,
-                                                             int maxIterations, double tolerance) {
+StaticSolver::NewtonOutcome StaticSolver::newtonWithFallback(model::State& state, const VecX& offset,
+                                                             double time, int maxIterations,
+                                                             double tolerance) {
   // A portfolio, cheapest first: plain Newton (quadratic, and the only one that takes the large
   // non-monotone first steps of axially stiff beams), then pseudo-transient continuation judged on the
   // residual (slack cables), then damped Newton judged by the natural monotonicity test.
@@ -308,7 +342,8 @@ StaticSolver::NewtonOutcome StaticSolver::newtonWithFallback(model::State& state
       state = trial;
       break;
     }
-    if (debugStatics()) std::cerr << "   Newton mode " << static_cast<int>(mode) << " failed: " << out.failure << "\n";
+    if (debugStatics())
+      std::cerr << "   Newton mode " << static_cast<int>(mode) << " failed: " << out.failure << "\n";
   }
   out.iterations = used;
   return out;
@@ -332,10 +367,12 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   // keeps Newton from jumping across the solution on slack lines, where the tangent is nearly singular.
   double maxElement = 0.0;
   for (const auto& el : model.elements()) maxElement = std::max(maxElement, el.restLength);
-  const double maxTranslation = std::max(std::min(0.05 * lref, std::max(10.0, 5.0 * maxElement)), 2.0 * minElement);
+  const double maxTranslation =
+      std::max(std::min(0.05 * lref, std::max(10.0, 5.0 * maxElement)), 2.0 * minElement);
   const double maxRotation = 0.5;
   const double floor = m_assembler->roundoffFloor(state);
-  if (debugStatics()) std::cerr << fmt::format("   round-off floor {:.3g} N, tolerance {:.3g} N\n", floor, tolerance);
+  if (debugStatics())
+    std::cerr << fmt::format("   round-off floor {:.3g} N, tolerance {:.3g} N\n", floor, tolerance);
 
   AssemblyRequest request;
   request.time = time;
@@ -375,7 +412,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     // the coordinates, so the residual is whatever round-off leaves (seen with fine beam meshes).
     // Only a full (unshifted) Newton step counts: a step made tiny by the pseudo-transient shift says
     // nothing about convergence.
-    const bool roundoff = stalled >= 2 && (out.residual <= floor || (lastStep <= 1e-12 * lref && lastShift == 0.0));
+    const bool roundoff =
+        stalled >= 2 && (out.residual <= floor || (lastStep <= 1e-12 * lref && lastShift == 0.0));
     if (balanced || roundoff) {
       if (!m_assembler->updateActiveSet()) {
         out.converged = true;
@@ -393,29 +431,29 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     out.iterations = it + 1;
     const SparseMatrix* system = &kAccepted;
     if (mu > 0.0) {
-    k = kAccepted;
-    // Fictitious mass D of the pseudo-transient term: per node, the largest diagonal stiffness of its
-    // translations (and of its rotations), the same in every direction, so a direction in which the
-    // tangent has no stiffness (a slack line laterally on a frictionless seabed) is damped like the
-    // stiff ones. Scaled per node: one scale for all (a vessel's link) would soften every line DOF.
-    VecX diag = k.diagonal().cwiseAbs();
-    {
-      VecX nodeMax = VecX::Zero(2 * dofs.nodeCount());
-      for (int i = 0; i < neq; ++i) {
-        const int dof = eqDofs[i];
-        const int n = dofs.nodeOf(dof);
-        const int slot = 2 * n + (dof - dofs.firstDof(n) < 3 ? 0 : 1);
-        nodeMax[slot] = std::max(nodeMax[slot], diag[i]);
+      k = kAccepted;
+      // Fictitious mass D of the pseudo-transient term: per node, the largest diagonal stiffness of its
+      // translations (and of its rotations), the same in every direction, so a direction in which the
+      // tangent has no stiffness (a slack line laterally on a frictionless seabed) is damped like the
+      // stiff ones. Scaled per node: one scale for all (a vessel's link) would soften every line DOF.
+      VecX diag = k.diagonal().cwiseAbs();
+      {
+        VecX nodeMax = VecX::Zero(2 * dofs.nodeCount());
+        for (int i = 0; i < neq; ++i) {
+          const int dof = eqDofs[i];
+          const int n = dofs.nodeOf(dof);
+          const int slot = 2 * n + (dof - dofs.firstDof(n) < 3 ? 0 : 1);
+          nodeMax[slot] = std::max(nodeMax[slot], diag[i]);
+        }
+        for (int i = 0; i < neq; ++i) {
+          const int dof = eqDofs[i];
+          const int n = dofs.nodeOf(dof);
+          diag[i] = nodeMax[2 * n + (dof - dofs.firstDof(n) < 3 ? 0 : 1)];
+        }
       }
-      for (int i = 0; i < neq; ++i) {
-        const int dof = eqDofs[i];
-        const int n = dofs.nodeOf(dof);
-        diag[i] = nodeMax[2 * n + (dof - dofs.firstDof(n) < 3 ? 0 : 1)];
-      }
-    }
-    const double dmax = std::max(diag.maxCoeff(), 1e-12);
-    for (int i = 0; i < neq; ++i) k.coeffRef(i, i) += mu * std::max(diag[i], 1e-9 * dmax);
-    system = &k;
+      const double dmax = std::max(diag.maxCoeff(), 1e-12);
+      for (int i = 0; i < neq; ++i) k.coeffRef(i, i) += mu * std::max(diag[i], 1e-9 * dmax);
+      system = &k;
     }
     if (!solver.factorize(*system)) {
       mu = std::max(1e-4, mu * 10.0);
@@ -435,7 +473,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       (translation ? largestT : largestR) = std::max(translation ? largestT : largestR, std::abs(dq[i]));
     }
     if (debugStatics() && largestNode >= 0)
-      std::cerr << fmt::format("    largest step {:.3e} m at {}\n", largestT, model.describeNode(largestNode));
+      std::cerr << fmt::format("    largest step {:.3e} m at {}\n", largestT,
+                               model.describeNode(largestNode));
     double scale = 1.0;
     if (largestT > maxTranslation) scale = std::min(scale, maxTranslation / largestT);
     if (largestR > maxRotation) scale = std::min(scale, maxRotation / largestR);
@@ -473,21 +512,23 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       }
     }
     if (debugStatics())
-      std::cerr << fmt::format("    it {:3d} |r| {:.4e} step {:.3e} scale {:.3g} mu {:.2e} theta {:.3g}\n", it,
-                               out.residual, scale * largestT, scale, mu, theta);
+      std::cerr << fmt::format("    it {:3d} |r| {:.4e} step {:.3e} scale {:.3g} mu {:.2e} theta {:.3g}\n",
+                               it, out.residual, scale * largestT, scale, mu, theta);
     if (plain && (!evaluated || !rTrial.allFinite())) {
       out.failure = "an element folds or the out-of-balance force is not finite";
       return out;
     }
     // Plain Newton takes every step; pseudo-transient continuation refuses a ten-fold rise of |r|_2;
     // damped Newton needs Theta < 1.
-    const bool accept = plain || (merit ? evaluated && rTrial.allFinite() && rTrial.squaredNorm() < 100.0 * r.squaredNorm()
-                                        : theta < 1.0);
+    const bool accept =
+        plain || (merit ? evaluated && rTrial.allFinite() && rTrial.squaredNorm() < 100.0 * r.squaredNorm()
+                        : theta < 1.0);
     if (!accept) {
       ++stalled;
       mu = std::max(1e-4, mu * 10.0);
       if (mu > kMaxShift) {
-        out.failure = evaluated ? "no increment reduces the Newton correction" : "elements fold for every increment tried";
+        out.failure = evaluated ? "no increment reduces the Newton correction"
+                                : "elements fold for every increment tried";
         return out;
       }
       continue;
@@ -523,7 +564,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       best = improvement * out.residual;
       sinceBest = 0;
     } else if (++sinceBest > patience) {
-      out.failure = plain ? "the out-of-balance force keeps growing" : "the out-of-balance force stopped decreasing";
+      out.failure =
+          plain ? "the out-of-balance force keeps growing" : "the out-of-balance force stopped decreasing";
       return out;
     }
   }
@@ -534,7 +576,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
 void StaticSolver::gatherResidual(const VecX& force, const VecX& offset, VecX& r) const {
   const auto& eqDofs = m_assembler->model().dofs().equationDofs();
   r.resize(static_cast<Eigen::Index>(eqDofs.size()));
-  for (std::size_t i = 0; i < eqDofs.size(); ++i) r[static_cast<Eigen::Index>(i)] = force[eqDofs[i]] - offset[static_cast<Eigen::Index>(i)];
+  for (std::size_t i = 0; i < eqDofs.size(); ++i)
+    r[static_cast<Eigen::Index>(i)] = force[eqDofs[i]] - offset[static_cast<Eigen::Index>(i)];
 }
 
 std::vector<int> StaticSolver::slackSuspendedBars(const model::State& state) const {
@@ -550,8 +593,10 @@ std::vector<int> StaticSolver::slackSuspendedBars(const model::State& state) con
     const double strain = (state.position[el.node2] - state.position[el.node1]).norm() / el.restLength - 1.0;
     if (strain >= -1e-4) continue;
     // Suspended: neither node on the seabed (a touchdown element may be slack, its chord cuts the corner).
-    const bool touches = state.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1] <= -env.waterDepth + 1e-3 ||
-                         state.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2] <= -env.waterDepth + 1e-3;
+    const bool touches =
+        state.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1] <=
+            -env.waterDepth + 1e-3 ||
+        state.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2] <= -env.waterDepth + 1e-3;
     if (!touches) out.push_back(static_cast<int>(e));
   }
   return out;
@@ -580,8 +625,9 @@ void StaticSolver::bulgeSlackRuns(model::State& state, const std::vector<int>& e
     const Vec3 a = state.position[first.node1];
     const Vec3 b = state.position[last.node2];
     const double chord = (b - a).norm();
-    const double amplitude = chord < restLength ? 2.0 * chord / std::numbers::pi * std::sqrt(restLength / chord - 1.0)
-                                                : 0.05 * chord;
+    const double amplitude = chord < restLength
+                                 ? 2.0 * chord / std::numbers::pi * std::sqrt(restLength / chord - 1.0)
+                                 : 0.05 * chord;
     // The load direction: down for a heavy run, up for a buoyant one; perpendicular to a vertical chord
     // it falls back to a horizontal direction.
     Vec3 dir = weight >= 0.0 ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitZ());
@@ -601,30 +647,109 @@ void StaticSolver::bulgeSlackRuns(model::State& state, const std::vector<int>& e
   }
 }
 
-std::string StaticSolver::diagnose(const model::State& state, const StaticResult& result, const std::string& why) const {
+bool StaticSolver::hangFreeLines(model::State& state) const {
+  const model::Model& model = m_assembler->model();
+  const auto& env = model.environment();
+  bool any = false;
+  for (const model::Line& line : model.lines()) {
+    const bool freeA = line.spec->endA.kind == model::EndKind::Free;
+    const bool freeB = line.spec->endB.kind == model::EndKind::Free;
+    if (freeA == freeB || line.nodeCount < 3) continue;
+    // Weight per length: submerged below the water, in air above it (the held end decides).
+    const int held = freeB ? line.firstNode : line.lastNode();
+    const bool wet = state.position[held].z() < 0.0;
+    double weight = 0.0, bending = 0.0;
+    for (int e = 0; e < line.elementCount; ++e) {
+      const model::LineElement& el = model.elements()[static_cast<std::size_t>(line.firstElement + e)];
+      weight += (wet ? el.type->submergedWeight(env.waterDensity, env.gravity)
+                     : el.type->massPerLength * env.gravity) *
+                el.restLength;
+      bending = std::max(bending, el.type->bendingStiffness);
+    }
+    for (const model::NodeAttachment& a : model.attachments())
+      if (model.lineOfNode(a.node) == static_cast<int>(&line - model.lines().data()))
+        weight += (a.spec.mass - (wet ? env.waterDensity * a.spec.volume : 0.0)) * env.gravity;
+    if (weight == 0.0) continue;
+    const Vec3 g = weight > 0.0 ? Vec3(-Vec3::UnitZ()) : Vec3(Vec3::UnitZ());
+    const double elementLength = line.length / static_cast<double>(line.elementCount);
+    const double bendLength =
+        std::min(0.25 * line.length,
+                 std::max(2.0 * elementLength,
+                          3.0 * std::sqrt(bending / (std::abs(weight) / line.length) / line.length)));
+    // Walk from the held end: step k runs from node order[k] to order[k + 1].
+    std::vector<int> order(static_cast<std::size_t>(line.nodeCount));
+    for (int i = 0; i < line.nodeCount; ++i)
+      order[static_cast<std::size_t>(i)] = freeB ? line.firstNode + i : line.lastNode() - i;
+    Vec3 d0 = state.position[order[1]] - state.position[order[0]];
+    if (d0.norm() <= 0.0) continue;
+    d0.normalize();
+    Vec3 axis = d0.cross(g);
+    const double angle = std::atan2(axis.norm(), d0.dot(g));
+    if (axis.norm() < 1e-9) axis = d0.unitOrthogonal();
+    axis.normalize();
+    Vec3 horizontal(d0.x(), d0.y(), 0.0);
+    horizontal = horizontal.norm() > 1e-9 ? Vec3(horizontal.normalized()) : Vec3(Vec3::UnitX());
+    const double bottom = -env.waterDepth + 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(held)];
+    double s = 0.0;
+    Vec3 x = state.position[order[0]];
+    std::vector<Vec3> tangent(order.size(), g);
+    for (std::size_t k = 0; k + 1 < order.size(); ++k) {
+      const double length = std::abs(line.arcLength[static_cast<std::size_t>(order[k + 1] - line.firstNode)] -
+                                     line.arcLength[static_cast<std::size_t>(order[k] - line.firstNode)]);
+      const double mid = std::min(1.0, (s + 0.5 * length) / bendLength);
+      Vec3 t = Eigen::AngleAxisd(mid * angle, axis) * d0;
+      if (x.z() <= bottom + 1e-9 && t.z() < 0.0) t = horizontal;  // laid along the seabed
+      x += length * t;
+      if (x.z() < bottom) x.z() = bottom;
+      s += length;
+      state.position[order[k + 1]] = x;
+      tangent[k] = t;
+    }
+    // Triads: the held end keeps its own; the others follow by parallel transport of the tangents.
+    Vec3 previous = d0;
+    Mat3 q = state.triad[order[0]];
+    for (std::size_t k = 1; k < order.size(); ++k) {
+      const Vec3 t = k + 1 < order.size() ? Vec3((tangent[k - 1] + tangent[k]).normalized()) : tangent[k - 1];
+      q = geometry::rotationBetween(previous, t) * q;
+      state.triad[order[k]] = q;
+      previous = t;
+    }
+    any = true;
+  }
+  return any;
+}
+
+std::string StaticSolver::diagnose(const model::State& state, const StaticResult& result,
+                                   const std::string& why) const {
   const model::Model& model = m_assembler->model();
   const auto& env = model.environment();
   const int node = result.worstNode;
   std::string where = node >= 0 ? model.describeNode(node) : std::string("an unknown node");
   std::string hint;
   if (node >= 0 && model.lineOfNode(node) >= 0) {
-    const bool onSeabed = state.position[node].z() - 0.5 * model.nodeContactDiameter()[node] <= -env.waterDepth + 1e-3;
+    const bool onSeabed =
+        state.position[node].z() - 0.5 * model.nodeContactDiameter()[node] <= -env.waterDepth + 1e-3;
     if (onSeabed && !env.current.empty())
-      hint = env.seabed.frictionCoefficient <= 0.0
-                 ? "the node lies on a frictionless seabed in a current, which may have no static equilibrium: set "
-                   "environment.seabed.friction_coefficient (0.3 to 1.0 is typical)"
-                 : "the node lies on the seabed in a current: if the drag on the laid line exceeds its friction "
-                   "capacity mu w (environment.seabed.friction_coefficient) the line slides and has no static "
-                   "equilibrium";
+      hint =
+          env.seabed.frictionCoefficient <= 0.0
+              ? "the node lies on a frictionless seabed in a current, which may have no static equilibrium: "
+                "set "
+                "environment.seabed.friction_coefficient (0.3 to 1.0 is typical)"
+              : "the node lies on the seabed in a current: if the drag on the laid line exceeds its friction "
+                "capacity mu w (environment.seabed.friction_coefficient) the line slides and has no static "
+                "equilibrium";
   }
   if (hint.empty())
-    hint = "check the line lengths against the distances between their ends and the section properties; a larger "
-           "statics.max_iterations or a mesh with fewer, longer elements near that node may help";
+    hint =
+        "check the line lengths against the distances between their ends and the section properties; a "
+        "larger "
+        "statics.max_iterations or a mesh with fewer, longer elements near that node may help";
   return fmt::format(
-      "static analysis did not converge{}: load fraction reached {:.3f}, {} iterations, largest out-of-balance force "
+      "static analysis did not converge{}: load fraction reached {:.3f}, {} iterations, largest "
+      "out-of-balance force "
       "{:.4g} N at {} (tolerance {:.3g} N). What to change: {}",
-      why.empty() ? std::string() : fmt::format(" ({})", why), result.loadFraction, result.iterations, result.residual,
-      where, result.tolerance, hint);
+      why.empty() ? std::string() : fmt::format(" ({})", why), result.loadFraction, result.iterations,
+      result.residual, where, result.tolerance, hint);
 }
 
 }  // namespace tangle::solver

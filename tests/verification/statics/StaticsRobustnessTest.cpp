@@ -387,3 +387,52 @@ TEST(StaticsTolerance, ForceScaleDoesNotShrinkWithTheMesh) {
 
 }  // namespace
 }  // namespace tangle
+
+namespace tangle {
+namespace {
+
+// ---------------------------------------------------------------------------------------------------
+// A heavy, bending-soft line clamped horizontally (issue 12: EA Le^2 / EI 1e6-1e7). 10 m of 30 kg/m in air,
+// EA 1e10 N, EI = EA Le^2 / ratio, so w L^3 / EI ~ 470-4700: the line hangs almost vertically from the
+// clamp, with a bending boundary layer sqrt(EI / T) shorter than an element at the clamp. From the given
+// straight shape Newton's first step is the linear deflection w L^4 / 8 EI (kilometres); the solver restarts
+// with the line hanging. Checks (exact statics, no closed form needed): the clamp carries the whole weight
+// vertically (1e-6; endForceA is the force of the line on the end) and no horizontal force (1e-6 of the weight); the free end lies below the clamp, its
+// horizontal offset under a few bending lengths plus one element, its depth L within 2 %.
+class HeavyCantilever : public ::testing::TestWithParam<std::tuple<double, int>> {};
+
+TEST_P(HeavyCantilever, HangsFromTheClamp) {
+  const auto [ratio, elements] = GetParam();
+  const double ea = 1e10, length = 10.0, le = length / elements;
+  const double ei = ea * le * le / ratio;
+  model::ModelSpec spec;
+  spec.sourceFile = "heavy cantilever (test)";
+  spec.environment.waterDepth = 100.0;
+  section::LineType t = test::solidRodType("rod", 0.2, 2e11, 7850.0);
+  t.massPerLength = 30.0;
+  t.axialStiffness = ea;
+  t.bendingStiffness = ei;
+  t.torsionalStiffness = ei / 1.3;
+  spec.lineTypes[t.name] = t;
+  spec.lines.push_back(test::simpleLine("c", "rod", length, elements, model::EndKind::Fixed, Vec3(0, 0, 10),
+                                        model::EndKind::Free, Vec3(length, 0, 10)));
+  analysis::Simulation sim(std::move(spec));
+  const solver::StaticResult r = sim.solveStatics();
+  ASSERT_TRUE(r.converged) << r.message;
+  const double weight = 30.0 * length * sim.model().environment().gravity;
+  const auto snaps = sim.snapshot();
+  EXPECT_NEAR(snaps[0].endForceA.z(), -weight, 1e-6 * weight);  // the line pulls the clamp down
+  EXPECT_NEAR(snaps[0].endForceA.x(), 0.0, 1e-6 * weight);
+  const model::Line& line = sim.model().lines()[0];
+  const Vec3 tip = sim.state().position[line.lastNode()];
+  const double bendingLength = std::sqrt(ei / weight);
+  EXPECT_LT(std::abs(tip.x()), 5.0 * bendingLength + le) << "tip " << tip.transpose();
+  EXPECT_NEAR(10.0 - tip.z(), length, 0.02 * length) << "tip " << tip.transpose();
+}
+
+INSTANTIATE_TEST_SUITE_P(Ratios, HeavyCantilever,
+                         ::testing::Values(std::make_tuple(1e6, 200), std::make_tuple(1e7, 40),
+                                           std::make_tuple(1e7, 200)));
+
+}  // namespace
+}  // namespace tangle
