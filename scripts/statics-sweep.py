@@ -36,7 +36,9 @@ def variants():
         ea, length = 1e10, 10.0
         ei = ea * (length / n) ** 2 / ratio
         mass = load * ei / length**2 / 9.80665
-        yield f"cantilever EA Le^2/EI {ratio:g}, PL^2/EI {load}, {n} elements", f"""environment:
+        self_weight = 30.0 * 9.80665 * length**3 / ei  # w L^3 / EI of the line's own weight (in air)
+        yield (f"cantilever EA Le^2/EI {ratio:g}, tip PL^2/EI {load}, self-weight wL^3/EI {self_weight:.3g}, "
+               f"{n} elements"), f"""environment:
   water_depth: 100
 line_types:
   - {{name: t, outer_diameter: 0.2, mass_per_length: 30, axial_stiffness: {ea}, bending_stiffness: {ei}}}
