@@ -253,16 +253,12 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   if (m.spec().output.vtk) io::PvdSeries(outDir / "vtk" / "statics.pvd").addStep(0.0, io::toPolylines(lines));
   log.info(result.message + "\n");
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
-  std::unique_ptr<contact::ClearanceEnvelope> envelope;
-  {
-    std::vector<std::array<int, 2>> contactPairs;
-    if (sim.contact()) contactPairs = contact::ClashReport(m, *sim.contact()).pairs();
-    envelope = std::make_unique<contact::ClearanceEnvelope>(m, contactPairs);
-    if (envelope->empty()) {
-      envelope.reset();
-    } else {
-      envelope->recordStatic(sim.state());
-    }
+  std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
+      m, sim.contact() ? sim.contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+  if (envelope->empty()) {
+    envelope.reset();
+  } else {
+    envelope->recordStatic(sim.state());
   }
   for (const auto& s : lines) {
     std::string text = fmt::format(

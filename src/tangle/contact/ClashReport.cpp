@@ -53,12 +53,8 @@ void writeStats(io::JsonWriter& j, const char* key, const std::vector<double>& v
 }
 }  // namespace
 
-ClashReport::ClashReport(const model::Model& model, const LineContact& contact) : m_model(&model), m_contact(&contact) {
-  const int n = static_cast<int>(model.lines().size());
-  for (int a = 0; a < n; ++a)
-    for (int b = a; b < n; ++b)
-      if (contact.pairAllowed(a, b)) m_pairs.push_back({a, b});
-}
+ClashReport::ClashReport(const model::Model& model, const LineContact& contact)
+    : m_model(&model), m_contact(&contact), m_pairs(contact.allowedPairs()) {}
 
 void ClashReport::recordClearance(const model::State& state) {
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {

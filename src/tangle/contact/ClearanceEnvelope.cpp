@@ -15,11 +15,6 @@
 namespace tangle::contact {
 
 namespace {
-int lineIndex(const model::Model& model, const std::string& name) {
-  for (std::size_t i = 0; i < model.lines().size(); ++i)
-    if (model.lines()[i].name == name) return static_cast<int>(i);
-  return -1;
-}
 constexpr double kInf = std::numeric_limits<double>::infinity();
 }  // namespace
 
@@ -33,12 +28,12 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
   };
   const model::ClearanceSpec& spec = model.spec().clearance;
   if (!spec.pairs.empty()) {
-    for (const auto& [a, b] : spec.pairs) add(lineIndex(model, a), lineIndex(model, b));
+    for (const auto& [a, b] : spec.pairs) add(model.lineIndex(a), model.lineIndex(b));
   } else if (!contactPairs.empty()) {
     for (const auto& p : contactPairs) add(p[0], p[1]);
   } else {
     for (const model::WakeSpec& w : model.spec().wakes)
-      add(lineIndex(model, w.upstream), lineIndex(model, w.downstream));
+      add(model.lineIndex(w.upstream), model.lineIndex(w.downstream));
   }
   m_pairs.assign(pairs.begin(), pairs.end());
   for (const auto& p : m_pairs)
@@ -94,6 +89,27 @@ void ClearanceEnvelope::record(const model::State& state) {
   }
 }
 
+ClearanceEnvelope::Minimum ClearanceEnvelope::minimum(std::size_t pair, bool dynamic) const {
+  // The first smallest node of line 1, then of line 2 (ties go to line 1); node 0 of line 1 to start.
+  const Side& first = m_sides[2 * pair];
+  Minimum m;
+  m.clearance = (dynamic ? first.dynamicClearance : first.staticClearance)[0];
+  m.line = first.line;
+  m.arcLength = m_model->lines()[static_cast<std::size_t>(first.line)].arcLength[0];
+  m.time = dynamic ? first.timeOfMinimum[0] : std::nan("");
+  for (const Side* side : {&first, &m_sides[2 * pair + 1]}) {
+    const std::vector<double>& c = dynamic ? side->dynamicClearance : side->staticClearance;
+    for (std::size_t i = 0; i < c.size(); ++i)
+      if (c[i] < m.clearance) {
+        m.clearance = c[i];
+        m.line = side->line;
+        m.arcLength = m_model->lines()[static_cast<std::size_t>(side->line)].arcLength[i];
+        m.time = dynamic ? side->timeOfMinimum[i] : std::nan("");
+      }
+  }
+  return m;
+}
+
 void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   const std::filesystem::path out = dir / "clearance";
   std::filesystem::create_directories(out);
@@ -121,38 +137,26 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   for (std::size_t p = 0; p < m_pairs.size(); ++p) {
     const Side& a = m_sides[2 * p];
     const Side& b = m_sides[2 * p + 1];
-    auto worst = [](const std::vector<double>& v) {
-      std::size_t k = 0;
-      for (std::size_t i = 1; i < v.size(); ++i)
-        if (v[i] < v[k]) k = i;
-      return k;
-    };
     j.beginObject();
     j.field("line_1", lines[static_cast<std::size_t>(a.line)].name);
     j.field("line_2", lines[static_cast<std::size_t>(b.line)].name);
-    const std::size_t sa = worst(a.staticClearance), sb = worst(b.staticClearance);
-    const bool staticOnA = a.staticClearance[sa] <= b.staticClearance[sb];
-    const double staticMin = staticOnA ? a.staticClearance[sa] : b.staticClearance[sb];
+    const Minimum st = minimum(p, false);
     j.key("static");
     j.beginObject();
-    j.field("min_clearance_m", staticMin);
-    j.field("line", lines[static_cast<std::size_t>(staticOnA ? a.line : b.line)].name);
-    j.field("arc_length_m", staticOnA ? lines[static_cast<std::size_t>(a.line)].arcLength[sa]
-                                      : lines[static_cast<std::size_t>(b.line)].arcLength[sb]);
+    j.field("min_clearance_m", st.clearance);
+    j.field("line", lines[static_cast<std::size_t>(st.line)].name);
+    j.field("arc_length_m", st.arcLength);
     j.endObject();
-    double overall = staticMin;
+    double overall = st.clearance;
     if (m_dynamic) {
-      const std::size_t da = worst(a.dynamicClearance), db = worst(b.dynamicClearance);
-      const bool onA = a.dynamicClearance[da] <= b.dynamicClearance[db];
-      const double dynamicMin = onA ? a.dynamicClearance[da] : b.dynamicClearance[db];
-      overall = std::min(overall, dynamicMin);
+      const Minimum dy = minimum(p, true);
+      overall = std::min(overall, dy.clearance);
       j.key("dynamic");
       j.beginObject();
-      j.field("min_clearance_m", dynamicMin);
-      j.field("line", lines[static_cast<std::size_t>(onA ? a.line : b.line)].name);
-      j.field("arc_length_m", onA ? lines[static_cast<std::size_t>(a.line)].arcLength[da]
-                                  : lines[static_cast<std::size_t>(b.line)].arcLength[db]);
-      j.field("time_s", onA ? a.timeOfMinimum[da] : b.timeOfMinimum[db]);
+      j.field("min_clearance_m", dy.clearance);
+      j.field("line", lines[static_cast<std::size_t>(dy.line)].name);
+      j.field("arc_length_m", dy.arcLength);
+      j.field("time_s", dy.time);
       j.endObject();
     }
     j.field("min_clearance_m", overall);
@@ -171,26 +175,17 @@ std::string ClearanceEnvelope::terminalSummary() const {
           ? fmt::format("clearance (DNV-RP-F203 no-collision check, required {:.3g} m):\n", m_required)
           : std::string("clearance (no clearance.required given: checked against contact, 0 m):\n");
   for (std::size_t p = 0; p < m_pairs.size(); ++p) {
-    const Side& a = m_sides[2 * p];
-    const Side& b = m_sides[2 * p + 1];
-    double staticMin = kInf, dynamicMin = kInf, when = std::nan(""), where = std::nan("");
-    int whereLine = a.line;
-    for (const Side* side : {&a, &b})
-      for (std::size_t i = 0; i < side->staticClearance.size(); ++i) {
-        staticMin = std::min(staticMin, side->staticClearance[i]);
-        if (m_dynamic && side->dynamicClearance[i] < dynamicMin) {
-          dynamicMin = side->dynamicClearance[i];
-          when = side->timeOfMinimum[i];
-          where = lines[static_cast<std::size_t>(side->line)].arcLength[i];
-          whereLine = side->line;
-        }
-      }
-    const double overall = std::min(staticMin, dynamicMin);
-    s += fmt::format("  {} / {}: static min {:.3f} m", lines[static_cast<std::size_t>(a.line)].name,
-                     lines[static_cast<std::size_t>(b.line)].name, staticMin);
-    if (m_dynamic)
-      s += fmt::format(", dynamic min {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'", dynamicMin, when, where,
-                       lines[static_cast<std::size_t>(whereLine)].name);
+    const Minimum st = minimum(p, false);
+    s += fmt::format("  {} / {}: static min {:.3f} m",
+                     lines[static_cast<std::size_t>(m_sides[2 * p].line)].name,
+                     lines[static_cast<std::size_t>(m_sides[2 * p + 1].line)].name, st.clearance);
+    double overall = st.clearance;
+    if (m_dynamic) {
+      const Minimum dy = minimum(p, true);
+      overall = std::min(overall, dy.clearance);
+      s += fmt::format(", dynamic min {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'", dy.clearance, dy.time,
+                       dy.arcLength, lines[static_cast<std::size_t>(dy.line)].name);
+    }
     s += overall >= m_required ? ": PASS\n" : ": FAIL\n";
   }
   return s;

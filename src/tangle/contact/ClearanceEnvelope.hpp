@@ -49,6 +49,15 @@ class ClearanceEnvelope {
   const std::vector<Side>& sides() const { return m_sides; }  ///< two per pair (A to B, B to A)
 
  private:
+  /// The smallest clearance of pair `pair` (static, or dynamic with its time) and where it occurs.
+  struct Minimum {
+    double clearance;  ///< [m]
+    int line;
+    double arcLength;  ///< [m]
+    double time;       ///< [s] (NaN for the static one)
+  };
+  Minimum minimum(std::size_t pair, bool dynamic) const;
+
   const model::Model* m_model;
   std::vector<std::array<int, 2>> m_pairs;
   std::vector<Side> m_sides;

@@ -79,6 +79,15 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
 
 bool LineContact::pairAllowed(int a, int b) const { return m_allowed[a][b]; }
 
+std::vector<std::array<int, 2>> LineContact::allowedPairs() const {
+  std::vector<std::array<int, 2>> pairs;
+  const int n = static_cast<int>(m_allowed.size());
+  for (int a = 0; a < n; ++a)
+    for (int b = a; b < n; ++b)
+      if (pairAllowed(a, b)) pairs.push_back({a, b});
+  return pairs;
+}
+
 double LineContact::stiffness(int a, int b) const {
   return m_spec.stiffness > 0.0 ? m_spec.stiffness : std::min(m_lineStiffness[a], m_lineStiffness[b]);
 }

@@ -181,6 +181,8 @@ class LineContact final : public solver::LoadContributor {
   double dampingRatio() const { return m_zeta; }
   /// Whether two lines may touch.
   bool pairAllowed(int lineA, int lineB) const;
+  /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order.
+  std::vector<std::array<int, 2>> allowedPairs() const;
   /// Minimum clearance between two lines at a state: (clearance [m], arcA [m], arcB [m]). The clearance is
   /// the gap between the surfaces (negative in contact); +inf when farther than the clearance margin.
   std::array<double, 3> clearance(const model::State& state, int lineA, int lineB) const;

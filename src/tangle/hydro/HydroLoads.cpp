@@ -145,8 +145,7 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
       // dependence on the position through the deficit is left out: it is small against the structure's
       // stiffness, and with it Newton took 111-174 iterations instead of 6-7 on the test models.
       // Symmetric part only: the linear solver is a symmetric LDL^T (LinearSolver.hpp).
-      Mat3 dVelocity, dLift;
-      m_wake->gradient(state, static_cast<int>(e), rho, dVelocity, dLift);
+      const Mat3 dLift = m_wake->liftGradient(state, static_cast<int>(e), rho);
       const Mat3 k = -0.25 * wet * (x2 - x1).norm() * 0.5 * (dLift + dLift.transpose());
       matrix->add3x3(d1, d1, k, request.kf);
       matrix->add3x3(d1, d2, k, request.kf);

@@ -8,21 +8,12 @@
 
 namespace tangle::hydro {
 
-namespace {
-int lineIndex(const model::Model& model, const std::string& name) {
-  const auto& lines = model.lines();
-  for (std::size_t i = 0; i < lines.size(); ++i)
-    if (lines[i].name == name) return static_cast<int>(i);
-  return -1;
-}
-}  // namespace
-
 WakeInterference::WakeInterference(const model::Model& model, const CurrentProfile& current)
     : m_model(&model), m_current(&current), m_downstream(model.elements().size(), false) {
   for (const model::WakeSpec& w : model.spec().wakes) {
     Pair p;
-    p.upstream = lineIndex(model, w.upstream);
-    p.downstream = lineIndex(model, w.downstream);
+    p.upstream = model.lineIndex(w.upstream);
+    p.downstream = model.lineIndex(w.downstream);
     if (p.upstream < 0 || p.downstream < 0) continue;  // the reader checked the names
     p.coefficients.kind = w.model == model::WakeSpec::Model::Huse ? WakeKind::Huse : WakeKind::Blevins;
     p.coefficients.k1 = w.k1;
@@ -63,10 +54,8 @@ void WakeInterference::evaluate(const model::State& state, double rho, std::vect
   }
 }
 
-void WakeInterference::gradient(const model::State& state, int element, double rho, Mat3& velocity,
-                                Mat3& lift) {
-  velocity.setZero();
-  lift.setZero();
+Mat3 WakeInterference::liftGradient(const model::State& state, int element, double rho) {
+  Mat3 lift = Mat3::Zero();
   const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
   const Vec3& p1 = state.position[el.node1];
   const Vec3& p2 = state.position[el.node2];
@@ -75,6 +64,7 @@ void WakeInterference::gradient(const model::State& state, int element, double r
   // Central differences with a step of 1e-4 of the diameter: the wake varies over its width (~D and more).
   const double h = 1e-4 * std::max(el.type->outerDiameter, 1e-3);
   for (Pair& pair : m_pairs) {
+    if (pair.coefficients.kind != WakeKind::Blevins) continue;  // Huse's wake has no lift
     const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
     if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
     const int k = element - down.firstElement;
@@ -89,17 +79,15 @@ void WakeInterference::gradient(const model::State& state, int element, double r
       const bool inPlus = plus.deficit > 0.0 && plus.upstreamLine == centre.upstreamLine;
       const bool inMinus = minus.deficit > 0.0 && minus.upstreamLine == centre.upstreamLine;
       if (inPlus && inMinus) {
-        velocity.col(c) += (plus.velocityChange - minus.velocityChange) / (2.0 * h);
         lift.col(c) += (plus.liftPerLength - minus.liftPerLength) / (2.0 * h);
       } else if (inPlus) {
-        velocity.col(c) += (plus.velocityChange - centre.velocityChange) / h;
         lift.col(c) += (plus.liftPerLength - centre.liftPerLength) / h;
       } else if (inMinus) {
-        velocity.col(c) += (centre.velocityChange - minus.velocityChange) / h;
         lift.col(c) += (centre.liftPerLength - minus.liftPerLength) / h;
       }
     }
   }
+  return lift;
 }
 
 ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p,

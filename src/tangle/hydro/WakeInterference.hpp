@@ -19,7 +19,7 @@
 ///
 /// The wake comes from the steady current only and follows the upstream line as it is at the assembled
 /// state (in dynamics its instantaneous position; no convection delay). The tangent includes the
-/// derivative of the lift with respect to the downstream element's position (gradient(), used by
+/// derivative of the lift with respect to the downstream element's position (liftGradient(), used by
 /// HydroLoads); the drag's dependence on it through the deficit and every dependence on the upstream
 /// line's position (a coupling block between the lines) are left out.
 
@@ -54,11 +54,11 @@ class WakeInterference {
   /// The wake at every element midpoint for `state` (zero for elements of lines with no upstream line).
   /// @param rho water density [kg/m^3] (for the lift)
   void evaluate(const model::State& state, double rho, std::vector<ElementWake>& out);
-  /// Derivatives of the velocity change [1/s] and of the lift per length [N/m^2] of downstream element
-  /// `element` with respect to its midpoint (central differences; the upstream line held where it is).
-  /// Zero where no wake acts. For the tangent: the Blevins lift and the deficit gradient across the wake
-  /// are stiffnesses of the order of the string's own (a fixed-point iteration without them diverges).
-  void gradient(const model::State& state, int element, double rho, Mat3& velocity, Mat3& lift);
+  /// Derivative of the lift per length [N/m^2] of downstream element `element` with respect to its
+  /// midpoint (central differences, one-sided at the wake's edges; the upstream line held where it is);
+  /// zero where no Blevins wake acts. For the tangent: the Blevins lift stiffness is of the order of a
+  /// tensioned riser's own lateral stiffness (a fixed-point iteration without it converges slowly).
+  Mat3 liftGradient(const model::State& state, int element, double rho);
 
  private:
   struct Pair {

@@ -880,6 +880,16 @@ void readOutput(const Value& v, ModelSpec& spec) {
   spec.output.plots = m.boolean("plots", d.plots);
 }
 
+/// `name` read as the name of a line of `spec`; an unknown one fails with "unknown line 'X'", followed by
+/// " in <context>" when a context is given.
+std::string knownLine(const Value& name, const ModelSpec& spec, std::string_view context) {
+  const std::string n = name.text("a line name");
+  const bool known =
+      std::any_of(spec.lines.begin(), spec.lines.end(), [&](const model::LineSpec& l) { return l.name == n; });
+  if (!known) name.fail("unknown line '" + n + "'" + (context.empty() ? "" : " in " + std::string(context)));
+  return n;
+}
+
 void readContact(const Value& v, ModelSpec& spec) {
   const Map m(v, {"pairs", "self_contact", "stiffness", "restitution", "model", "friction_coefficient",
                   "friction_velocity", "clearance_margin", "exclude", "exclusion_zones", "exclude_connections",
@@ -891,13 +901,7 @@ void readContact(const Value& v, ModelSpec& spec) {
     for (const Value& item : pairs->items(1)) {
       const std::vector<Value> names = item.items(2);
       if (names.size() != 2) item.expected("a pair of line names [line_a, line_b]");
-      std::pair<std::string, std::string> pair{names[0].text("a line name"), names[1].text("a line name")};
-      for (const Value& name : names) {
-        const std::string n = name.text("a line name");
-        const bool known = std::any_of(spec.lines.begin(), spec.lines.end(),
-                                       [&](const model::LineSpec& l) { return l.name == n; });
-        if (!known) name.fail("unknown line '" + n + "'");
-      }
+      std::pair<std::string, std::string> pair{knownLine(names[0], spec, ""), knownLine(names[1], spec, "")};
       if (pair.first == pair.second && !m.boolean("self_contact", d.selfContact))
         item.fail("a line paired with itself needs self_contact: true");
       c.pairs.push_back(pair);
@@ -913,11 +917,7 @@ void readContact(const Value& v, ModelSpec& spec) {
   c.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
   c.clearanceMargin = m.number("clearance_margin", d.clearanceMargin, positive());
   auto lineName = [&](const Value& name) {
-    const std::string n = name.text("a line name");
-    const bool known =
-        std::any_of(spec.lines.begin(), spec.lines.end(), [&](const model::LineSpec& l) { return l.name == n; });
-    if (!known) name.fail("unknown line '" + n + "' in contact.exclude / contact.exclusion_zones");
-    return n;
+    return knownLine(name, spec, "contact.exclude / contact.exclusion_zones");
   };
   if (const std::optional<Value> exclude = m.find("exclude")) {
     for (const Value& item : exclude->items(1)) {
@@ -954,19 +954,12 @@ void readContact(const Value& v, ModelSpec& spec) {
 /// upstream and downstream each a line name or a list of names (every upstream line acts on every
 /// downstream one), or `lines: [...]` for a group in which every line acts on every other one.
 void readWakes(const Value& v, ModelSpec& spec) {
-  auto lineName = [&](const Value& name) {
-    const std::string n = name.text("a line name");
-    const bool known =
-        std::any_of(spec.lines.begin(), spec.lines.end(), [&](const model::LineSpec& l) { return l.name == n; });
-    if (!known) name.fail("unknown line '" + n + "' in wake_interference");
-    return n;
-  };
   auto names = [&](const Value& item) {
     std::vector<std::string> out;
     if (item.isSequence()) {
-      for (const Value& n : item.items(1)) out.push_back(lineName(n));
+      for (const Value& n : item.items(1)) out.push_back(knownLine(n, spec, "wake_interference"));
     } else {
-      out.push_back(lineName(item));
+      out.push_back(knownLine(item, spec, "wake_interference"));
     }
     return out;
   };
@@ -1029,12 +1022,7 @@ void readClearance(const Value& v, ModelSpec& spec) {
       const std::vector<Value> names = item.items(2);
       if (names.size() != 2) item.expected("a pair of line names [line_a, line_b] (clearance.pairs)");
       std::array<std::string, 2> pair;
-      for (std::size_t k = 0; k < 2; ++k) {
-        pair[k] = names[k].text("a line name");
-        const bool known = std::any_of(spec.lines.begin(), spec.lines.end(),
-                                       [&](const model::LineSpec& l) { return l.name == pair[k]; });
-        if (!known) names[k].fail("unknown line '" + pair[k] + "' in clearance.pairs");
-      }
+      for (std::size_t k = 0; k < 2; ++k) pair[k] = knownLine(names[k], spec, "clearance.pairs");
       if (pair[0] == pair[1]) item.fail("clearance.pairs: a line paired with itself");
       spec.clearance.pairs.emplace_back(pair[0], pair[1]);
     }

@@ -51,6 +51,12 @@ Mat3 Model::vesselRotation(int v) const {
   return Eigen::AngleAxisd(m_spec->vessels[v].heading, Vec3::UnitZ()).toRotationMatrix();
 }
 
+int Model::lineIndex(const std::string& name) const {
+  for (int l = 0; l < static_cast<int>(m_lines.size()); ++l)
+    if (m_lines[l].name == name) return l;
+  return -1;
+}
+
 int Model::vesselIndex(const std::string& name) const {
   for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v)
     if (m_spec->vessels[v].name == name) return v;

@@ -76,6 +76,8 @@ class Model {
   Vec3 endPosition(const EndSpec& end) const;
   /// Initial rotation (vessel axes to global) of vessel v: its heading about z.
   Mat3 vesselRotation(int v) const;
+  /// Index of a line by name, -1 if none.
+  int lineIndex(const std::string& name) const;
   /// Index of a vessel by name, -1 if none.
   int vesselIndex(const std::string& name) const;
   /// Tributary unstretched length of each node (half of each adjacent element) [m].

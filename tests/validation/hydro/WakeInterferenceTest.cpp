@@ -213,23 +213,25 @@ Comparison compareDownstream(model::WakeSpec::Model kind) {
   return out;
 }
 
-TEST(WakeInterferenceTest, HuseDownstreamStringMatchesShooting) {
-  const Comparison c = compareDownstream(model::WakeSpec::Model::Huse);
-  std::printf("Huse: max deflection %.4f m, wake effect %.4f m, FE error %.3e m (%.3f %% of the deflection)\n",
+/// The downstream string of `kind` against the shooting solution.
+void expectDownstreamMatchesShooting(model::WakeSpec::Model kind, const char* label) {
+  const Comparison c = compareDownstream(kind);
+  std::printf("%s: max deflection %.4f m, wake effect %.4f m, FE error %.3e m (%.3f %% of the deflection)\n", label,
               c.maxDeflection, c.wakeEffect, c.maxError, 100.0 * c.maxError / c.maxDeflection);
-  // The wake must matter for the comparison to mean anything: ~15 % of the deflection here.
+  // The wake must matter for the comparison to mean anything: ~15 % of the deflection (Huse), ~90 %
+  // (Blevins, whose lift pulls the string sideways).
   EXPECT_GT(c.wakeEffect, 0.1 * c.maxDeflection);
   // Issue bound: 1 % of the deflection. FE error sources: midpoint current per element and nodal lumping
   // (O(h^2), h = 1.9 m), the wake at element midpoints.
   EXPECT_LE(c.maxError, 0.01 * c.maxDeflection);
 }
 
+TEST(WakeInterferenceTest, HuseDownstreamStringMatchesShooting) {
+  expectDownstreamMatchesShooting(model::WakeSpec::Model::Huse, "Huse");
+}
+
 TEST(WakeInterferenceTest, BlevinsDownstreamStringWithLiftMatchesShooting) {
-  const Comparison c = compareDownstream(model::WakeSpec::Model::Blevins);
-  std::printf("Blevins: max deflection %.4f m, wake effect %.4f m, FE error %.3e m (%.3f %% of the deflection)\n",
-              c.maxDeflection, c.wakeEffect, c.maxError, 100.0 * c.maxError / c.maxDeflection);
-  EXPECT_GT(c.wakeEffect, 0.1 * c.maxDeflection);
-  EXPECT_LE(c.maxError, 0.01 * c.maxDeflection);
+  expectDownstreamMatchesShooting(model::WakeSpec::Model::Blevins, "Blevins");
 }
 
 TEST(WakeInterferenceTest, TandemCylinderDragReductionFollowsHuse) {
