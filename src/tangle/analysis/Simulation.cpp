@@ -1,5 +1,15 @@
 #include "tangle/analysis/Simulation.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <numbers>
+
+#include "tangle/core/Interrupt.hpp"
+#include "tangle/time/DynamicRelaxation.hpp"
+
 namespace tangle::analysis {
 
 Simulation::Simulation(model::ModelSpec spec)
@@ -23,10 +33,57 @@ Simulation::~Simulation() = default;
 
 solver::StaticResult Simulation::solveStatics() {
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
-  const solver::StaticResult result = solver.solve(m_state);
+  solver::StaticResult result = solver.solve(m_state);
+  if (!result.converged && !core::interruptRequested()) relaxThenSolve(result);
   // Contacts at rest in the static equilibrium become the starting contacts of the dynamics.
   if (m_contact && result.converged) m_contact->commitStep(m_state, 0.0);
   return result;
+}
+
+bool Simulation::relaxThenSolve(solver::StaticResult& result) {
+  // Not (yet) with line contact (the relaxation's impacts would enter the clash report) nor with free
+  // vessels (a DP unit held in statics would drift off during the relaxation).
+  if (m_contact) return false;
+  for (const model::VesselSpec& v : m_model->spec().vessels)
+    if (v.mode == model::VesselMode::Free) return false;
+  double longest = 0.0;
+  for (const model::LineSpec& line : m_model->spec().lines) {
+    double length = 0.0;
+    for (const model::SectionSpec& s : line.sections) length += s.length;
+    longest = std::max(longest, length);
+  }
+  std::vector<time::PrescribedNode> prescribed = time::prescribedNodes(*m_model);
+  if (m_vessels)
+    for (time::PrescribedNode& n : m_vessels->prescribedNodes()) prescribed.push_back(std::move(n));
+  time::DynamicRelaxation relaxation(*m_assembler, m_model->spec().dynamics, std::move(prescribed), longest);
+  // Rounds of two periods of the slowest (pendulum) mode, each followed by a Newton solve from the shape
+  // reached; at rest means slower than 1 mm/s.
+  const double period = 2.0 * std::numbers::pi / (0.5 * relaxation.damping());
+  constexpr int kRounds = 4;
+  constexpr double kRestSpeed = 1e-3;
+  const bool debug = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
+  model::State relaxed = m_state;
+  const int newtonIterations = result.iterations;
+  for (int round = 0; round < kRounds; ++round) {
+    const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
+    if (debug) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
+    if (core::interruptRequested()) return false;
+    model::State trial = relaxed;
+    solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
+    solver::StaticResult again = solver.solve(trial);
+    if (again.converged) {
+      again.iterations += newtonIterations;
+      again.message += fmt::format(
+          ", from the shape at rest after dynamic relaxation ({} round(s), damping {:.3g} 1/s; {} Newton iterations "
+          "in all)",
+          round + 1, relaxation.damping(), again.iterations);
+      result = again;
+      m_state = trial;
+      return true;
+    }
+    if (r.steps == 0) break;  // the relaxation cannot move: no use going on
+  }
+  return false;
 }
 
 std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {

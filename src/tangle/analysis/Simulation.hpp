@@ -34,7 +34,8 @@ class Simulation {
   /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
   model::State& state() { return m_state; }
 
-  /// Static equilibrium from the initial shape.
+  /// Static equilibrium from the initial shape; when the Newton solve fails, from the shape reached by
+  /// dynamic relaxation (time::DynamicRelaxation; not for models with line contact or free vessels).
   solver::StaticResult solveStatics();
   /// Results along every line at the current state.
   std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
@@ -48,6 +49,9 @@ class Simulation {
                                   const time::DynamicAnalysis::StepObserver& stepObserver = {});
 
  private:
+  /// The dynamic-relaxation fallback of solveStatics: on success replaces `result` and m_state.
+  bool relaxThenSolve(solver::StaticResult& result);
+
   std::unique_ptr<model::Model> m_model;
   std::unique_ptr<solver::Assembler> m_assembler;
   std::unique_ptr<hydro::HydroLoads> m_hydro;

@@ -89,7 +89,7 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
   const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();
   const double rho = m_model->environment().waterDensity;
-  const bool waves = request.dynamic && m_waves && time::ramp(request.time, m_rampTime).value > 0.0;
+  const bool waves = request.dynamic && request.waves && m_waves && time::ramp(request.time, m_rampTime).value > 0.0;
   if (waves && (request.time != m_cacheTime || !m_cacheDynamic)) {
     // Wave kinematics (the costly part) once per time value; the current is cheap and is evaluated
     // at the current midpoint every call.
@@ -170,10 +170,11 @@ void HydroLoads::addAttachmentDrag(const model::State& state, const solver::Asse
   for (const model::NodeAttachment& a : m_model->attachments()) {
     if (a.spec.dragArea <= 0.0) continue;
     const Vec3& x = state.position[a.node];
-    if (x.z() > surfaceAt(x.x(), x.y(), request.time, request.dynamic)) continue;
+    const bool withWaves = request.dynamic && request.waves;
+    if (x.z() > surfaceAt(x.x(), x.y(), request.time, withWaves)) continue;
     const int d = dofs.firstDof(a.node);
     const Vec3 v = request.dynamic ? Vec3(state.velocity.segment<3>(d)) : Vec3::Zero();
-    const Vec3 w = fluidAt(x, request.time, request.dynamic).velocity - v;
+    const Vec3 w = fluidAt(x, request.time, withWaves).velocity - v;
     const double speed = w.norm();
     const double k = 0.5 * rho * a.spec.dragArea;
     force.segment<3>(d) -= k * speed * w;

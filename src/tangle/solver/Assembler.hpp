@@ -6,6 +6,7 @@
 /// (addMass) because integrators combine it differently. State gather/scatter is not done here.
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@ struct AssemblyRequest {
   double time = 0.0;        ///< time [s] (environment, prescribed motions)
   double loadFactor = 1.0;  ///< multiplies weight and buoyancy [-] (the statics load incrementation)
   bool dynamic = false;     ///< include velocity-dependent forces (drag with structure velocity, seabed damping and friction)
+  bool waves = true;        ///< with `dynamic`: include wave kinematics (false in dynamic relaxation, a statics method)
   double kf = 1.0;          ///< factor on the stiffness dF/dq in H
   double cf = 0.0;          ///< factor on the damping dF/dv in H
   bool wantMatrix = true;   ///< assemble H
@@ -82,6 +84,11 @@ class Assembler {
   /// Statics length continuation: element e is given the unstretched length restLengths[e] [m] instead of
   /// its own (NaN keeps its own); an empty vector restores every element. Weight stays the nominal one.
   void setRestLengths(std::vector<double> restLengths) { m_restLength = std::move(restLengths); }
+  /// Unstretched length [m] element e has in assembly now (its own, or the continuation's override).
+  double restLengthOf(std::size_t e) const {
+    return m_restLength.empty() || std::isnan(m_restLength[e]) ? m_model->elements()[e].restLength
+                                                               : m_restLength[e];
+  }
 
   /// Lower bound on the fraction of EA a slack cable element keeps [-] (LineType::compressionFactor
   /// applies above it); 0 by default. Statics raises it temporarily (continuation in the cable law).

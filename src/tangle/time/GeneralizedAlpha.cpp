@@ -65,7 +65,13 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
 void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
   const model::DofMap& dofs = m_assembler->model().dofs();
   for (const PrescribedNode& p : m_prescribed) {
-    const MotionValue m = p.motion(t);
+    MotionValue m = p.motion(t);
+    if (m_frozen) {  // held still at their positions of the frozen time
+      m.velocity.setZero();
+      m.acceleration.setZero();
+      m.angularVelocity.setZero();
+      m.angularAcceleration.setZero();
+    }
     const int d = dofs.firstDof(p.node);
     for (int k = 0; k < 3; ++k) {
       if (dofs.equation(d + k) >= 0) continue;  // a released direction (roller) moves freely
@@ -82,10 +88,11 @@ void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
 }
 
 void GeneralizedAlpha::initialize(model::State& state) {
-  applyPrescribed(state, state.time);
+  applyPrescribed(state, environmentTime(state.time));
   solver::AssemblyRequest request;
-  request.time = state.time;
+  request.time = environmentTime(state.time);
   request.dynamic = true;
+  request.waves = !m_frozen;
   request.wantMatrix = false;
   m_assembler->assemble(state, request, m_forceOld, nullptr);
   // Consistent initial acceleration of the free DOFs, M a0 = -(F0 + M_prescribed a_prescribed): zero
@@ -130,7 +137,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   VecX dq = dt * v0;
   // Prescribed DOFs follow their motion exactly.
   model::State target = start;
-  applyPrescribed(target, t1);
+  applyPrescribed(target, environmentTime(t1));
   for (const PrescribedNode& pn : m_prescribed) {
     const int d = dofs.firstDof(pn.node);
     for (int k = 0; k < 3; ++k)
@@ -144,8 +151,9 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
 
   const double mf = (1.0 - p.alphaM) / (p.beta * dt * dt) + rayleighAlpha * (1.0 - p.alphaF) * p.gamma / (p.beta * dt);
   solver::AssemblyRequest request;
-  request.time = t1;
+  request.time = environmentTime(t1);
   request.dynamic = true;
+  request.waves = !m_frozen;
   request.kf = 1.0 - p.alphaF;
   request.cf = (1.0 - p.alphaF) * p.gamma / (p.beta * dt);
   const double fref = m_assembler->referenceForce();
@@ -171,7 +179,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
         state.acceleration[dof] = 0.0;
       }
     }
-    applyPrescribed(state, t1);
+    applyPrescribed(state, environmentTime(t1));
 
     const bool refresh = !haveFactor || !m_modifiedNewton;
     request.wantMatrix = refresh;

@@ -64,6 +64,14 @@ class GeneralizedAlpha {
   /// Advances by dt (see the class contract).
   StepOutcome step(model::State& state, double dt);
 
+  /// Dynamic relaxation (a statics method): every step sees the environment and the prescribed positions
+  /// of time `time` [s] with the prescribed nodes at rest and no waves, so the motion decays to the static
+  /// equilibrium at that time. The state's own time still advances (pseudo-time).
+  void freezeEnvironment(double time) {
+    m_frozen = true;
+    m_frozenTime = time;
+  }
+
   const AlphaParameters& parameters() const { return m_params; }
   /// Undoes the last accepted step: `previous` is the state before it (F_n is re-evaluated there).
   void restore(model::State& previous) { initialize(previous); }
@@ -73,6 +81,8 @@ class GeneralizedAlpha {
 
  private:
   void applyPrescribed(model::State& state, double t) const;
+  /// Time at which loads and prescribed motions are evaluated for a state at time t [s].
+  double environmentTime(double t) const { return m_frozen ? m_frozenTime : t; }
 
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
@@ -89,6 +99,8 @@ class GeneralizedAlpha {
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   double m_factorStep = 0.0;     // the time step that factorisation was made for [s]
+  bool m_frozen = false;         // freezeEnvironment was called
+  double m_frozenTime = 0.0;     // [s]
 };
 
 }  // namespace tangle::time

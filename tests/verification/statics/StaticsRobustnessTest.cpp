@@ -175,6 +175,59 @@ TEST(CrossCurrent, ThreeSectionMooringLineOfTheExample) {
   }
 }
 
+TEST(CrossCurrent, SlackLineWithTheCurrentTowardsTheAnchor) {
+  // The catenary example with its anchor moved in to 800 m (span 71 % of the 1130 m length) and a current
+  // from the fairlead towards the anchor: the hanging part is pushed back over the grounded part, its
+  // touchdown must slide tens of metres against friction (a tangent with no stiffness along the slip) and
+  // the grounded chain goes slack. The Newton continuation cannot follow that path; the dynamic-relaxation
+  // fallback (time::DynamicRelaxation) reaches the rested shape and Newton finishes there.
+  // Check of the result, computed here from the converged shape and the line properties alone (not from
+  // the solver's loads): the fairlead force balances the submerged weight plus the Morison normal drag
+  // 1/2 rho Cd D |u_n| u_n of every element clear of the seabed (the grounded chain is slack, so the line
+  // carries ~nothing across the touchdown). Tolerance: two wire elements' weight (4.4 kN, ~2.5 % of the
+  // fairlead tension), the resolution of the touchdown point. And the grounded part is slack: end A
+  // tension under 1 % of the fairlead's.
+  for (double speed : {1.0, 1.5}) {
+    model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/catenary-mooring/model.yaml");
+    spec.lines[0].endA.position.x() = 800.0;
+    spec.environment.seabed.frictionCoefficient = 0.5;
+    spec.environment.current = {{0.0, speed, 0.0}};
+    analysis::Simulation sim(std::move(spec));
+    const solver::StaticResult r = sim.solveStatics();
+    ASSERT_TRUE(r.converged) << speed << " m/s: " << r.message;
+    const solver::LineSnapshot line = sim.snapshot()[0];
+    const double g = 9.80665, rho = 1025.0;
+    struct Piece {
+      int elements;
+      double weight, cdTimesD;  // N/m, m
+    };
+    const double chainWeight = (114.9 - rho * M_PI / 4.0 * 0.1368 * 0.1368) * g;
+    const double wireWeight = (42.6 - rho * M_PI / 4.0 * 0.0831 * 0.0831) * g;
+    const Piece pieces[] = {{40, chainWeight, 1.333 * 0.1368}, {130, wireWeight, 1.2 * 0.096},
+                            {30, chainWeight, 1.333 * 0.1368}};
+    const double lengths[] = {250.0, 780.0, 100.0};
+    Vec3 load = Vec3::Zero();
+    int e = 0;
+    for (int k = 0; k < 3; ++k) {
+      for (int i = 0; i < pieces[k].elements; ++i, ++e) {
+        const Vec3 a = line.position[e], b = line.position[e + 1];
+        if (std::min(a.z(), b.z()) < -345.0 + 0.5) continue;  // on (or at) the seabed
+        const double l0 = lengths[k] / pieces[k].elements;
+        const Vec3 t = (b - a).normalized();
+        const Vec3 u(speed, 0.0, 0.0);
+        const Vec3 un = u - u.dot(t) * t;
+        load += 0.5 * rho * pieces[k].cdTimesD * un.norm() * un * l0;
+        load.z() -= pieces[k].weight * l0;
+      }
+    }
+    // The line's force on the fairlead equals the loads on the suspended part.
+    EXPECT_NEAR(line.endTensionForceB.x(), load.x(), 2.0 * 6.0 * wireWeight) << speed << " m/s";
+    EXPECT_NEAR(line.endTensionForceB.z(), load.z(), 2.0 * 6.0 * wireWeight) << speed << " m/s";
+    EXPECT_GT(line.endTensionForceB.x(), 0.0) << "the current pulls the fairlead towards the anchor";
+    EXPECT_LT(line.endTensionA, 0.01 * line.endTensionB) << "the grounded chain is slack";
+  }
+}
+
 TEST(CrossCurrent, FrictionlessSeabedStreamsTheLaidLineDownstream) {
   // With no friction the laid part has no lateral restraint: its equilibrium swings about the anchor until
   // it lies along the current (a flag in the wind). The solver must find it, not fail.
