@@ -68,6 +68,7 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
     const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
     if (debug) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
     if (core::interruptRequested()) return false;
+    if (r.steps == 0) break;  // the relaxation cannot move: Newton would start where it failed
     model::State trial = relaxed;
     solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
     solver::StaticResult again = solver.solve(trial);
@@ -81,7 +82,6 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
       m_state = trial;
       return true;
     }
-    if (r.steps == 0) break;  // the relaxation cannot move: no use going on
   }
   return false;
 }
