@@ -843,7 +843,7 @@ void readStatics(const Value& v, ModelSpec& spec) {
 void readDynamics(const Value& v, ModelSpec& spec) {
   using model::IntegratorKind;
   const Map m(v, {"duration", "time_step", "min_time_step", "ramp_time", "output_interval", "integrator",
-                  "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance"});
+                  "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance", "max_cable_strain_step"});
   const model::DynamicSpec d;
   model::DynamicSpec& s = spec.dynamics;
   s.duration = m.number("duration", nonNegativeUpTo(kMaxDuration).withHint("0 switches dynamics off"));
@@ -870,6 +870,8 @@ void readDynamics(const Value& v, ModelSpec& spec) {
   }
   s.maxIterations = m.integer("max_iterations", d.maxIterations, atLeast(1.0));
   s.tolerance = m.number("tolerance", d.tolerance, positive());
+  s.maxCableStrainStep = m.number("max_cable_strain_step", d.maxCableStrainStep,
+                                  closed(0.0, 1.0).withHint("0 switches the snap step limit off"));
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {

@@ -216,6 +216,9 @@ struct DynamicSpec {
   double rayleighBeta = 0.0;    ///< stiffness-proportional Rayleigh damping [s]
   int maxIterations = 20;       ///< Newton iterations per step [-]
   double tolerance = 1.0e-6;    ///< residual tolerance relative to the reference force [-]
+  /// Largest strain a cable (bar) element may gain in one step beyond max(its strain, 0) [-]; 0: no limit.
+  /// Resolves slack-to-taut snaps in time (see time/CableSnapLimit.hpp).
+  double maxCableStrainStep = 1.0e-4;
 };
 
 /// How an impact between lines is resolved.

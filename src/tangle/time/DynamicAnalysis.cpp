@@ -1,5 +1,7 @@
 #include "tangle/time/DynamicAnalysis.hpp"
 
+#include "tangle/time/CableSnapLimit.hpp"
+
 #include "tangle/core/Interrupt.hpp"
 
 #include <algorithm>
@@ -64,6 +66,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     }
     double h = std::min({dt, duration - state.time, 2.0 * lastStep});
     if (m_limiter) h = std::min(h, std::max(m_settings.minTimeStep, m_limiter(state)));
+    h = std::min(h, std::max(m_settings.minTimeStep, cableSnapStepLimit(model, state, m_settings.maxCableStrainStep)));
     // Land exactly on output times.
     if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
     if (h <= eps) h = std::min(dt, duration - state.time);
