@@ -12,6 +12,7 @@
 
 #include <array>
 #include <filesystem>
+#include <map>
 #include <limits>
 #include <string>
 #include <vector>
@@ -37,8 +38,10 @@ class ClearanceEnvelope {
   std::string terminalSummary() const;
 
   /// Clearance [m] of every node of line `line` to line `other` at a state (the quantity of the file
-  /// comment).
-  std::vector<double> nodeClearance(const model::State& state, int line, int other) const;
+  /// comment). With `onlyBelow` (one value per node [m]), a node whose clearance is provably not below its
+  /// value gets +inf instead of the exact clearance (the dynamic envelope needs only new minima).
+  std::vector<double> nodeClearance(const model::State& state, int line, int other,
+                                    const std::vector<double>* onlyBelow = nullptr) const;
 
   struct Side {
     int line = -1, other = -1;
@@ -63,6 +66,9 @@ class ClearanceEnvelope {
   std::vector<Side> m_sides;
   bool m_dynamic = false;
   double m_required = 0.0;
+  /// Per (line, other): the segment of `other` nearest to each node of `line` at the last call (a first
+  /// guess that lets nodeClearance skip most of `other`; a cache, not part of the result).
+  mutable std::map<std::array<int, 2>, std::vector<int>> m_hint;
 };
 
 }  // namespace tangle::contact

@@ -1,0 +1,129 @@
+/// Tests of tangle::contact::ClearanceEnvelope::nodeClearance, whose search skips blocks of segments by
+/// bounding spheres and starts from the previous nearest segment: it must give exactly the brute-force
+/// minimum over all segments (same expression, so no tolerance), whatever the previous call left as a
+/// first guess; with a threshold per node (`onlyBelow`) a node may get +inf only when its brute-force
+/// clearance is not below its threshold, and a finite value is the exact one.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "support/ModelFactory.hpp"
+#include "tangle/contact/ClearanceEnvelope.hpp"
+#include "tangle/model/Model.hpp"
+
+namespace tangle::contact {
+namespace {
+
+/// Surface-to-surface clearance of node i of `line` to `other` over all segments (the definition in
+/// ClearanceEnvelope.hpp: the segment's contact radius at its nearer end, then the node's own radius).
+std::vector<double> bruteForce(const model::Model& m, const model::State& s, int line, int other) {
+  const model::Line& a = m.lines()[static_cast<std::size_t>(line)];
+  const model::Line& b = m.lines()[static_cast<std::size_t>(other)];
+  const auto& diameter = m.nodeContactDiameter();
+  std::vector<double> out;
+  for (int i = 0; i < a.nodeCount; ++i) {
+    const Vec3& x = s.position[a.firstNode + i];
+    double best = std::numeric_limits<double>::infinity();
+    for (int j = 0; j + 1 < b.nodeCount; ++j) {
+      const int m1 = b.firstNode + j, m2 = m1 + 1;
+      const Vec3& p = s.position[m1];
+      const Vec3 axis = s.position[m2] - p;
+      const double l2 = axis.squaredNorm();
+      const double t = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
+      best = std::min(best, (x - (p + t * axis)).norm() - 0.5 * (t < 0.5 ? diameter[m1] : diameter[m2]));
+    }
+    out.push_back(best - 0.5 * diameter[a.firstNode + i]);
+  }
+  return out;
+}
+
+/// Two lines of 37 and 53 elements (block remainders on both), different diameters.
+model::ModelSpec twoLines() {
+  model::ModelSpec spec;
+  spec.sourceFile = "clearance (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["thin"] = test::cableType("thin", 0.1, 10.0, 1e8);
+  spec.lineTypes["thick"] = test::cableType("thick", 0.5, 50.0, 1e9);
+  spec.lines = {test::simpleLine("a", "thin", 40.0, 37, model::EndKind::Pinned, Vec3(0, 0, -50),
+                                 model::EndKind::Pinned, Vec3(40, 0, -50)),
+                test::simpleLine("b", "thick", 60.0, 53, model::EndKind::Pinned, Vec3(0, 5, -60),
+                                 model::EndKind::Pinned, Vec3(60, 5, -60))};
+  return spec;
+}
+
+/// Random wavy shapes of both lines (a new layout per seed, lines crossing and running side by side).
+void shuffle(const model::Model& m, model::State& s, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const model::Line& line : m.lines()) {
+    const Vec3 start(10.0 * u(rng), 10.0 * u(rng), -50.0 + 10.0 * u(rng));
+    const Vec3 dir = Vec3(1.0, 0.3 * u(rng), 0.3 * u(rng)).normalized();
+    const double amplitude = 3.0 * (1.0 + u(rng)), wavelength = 5.0 + 20.0 * (1.0 + u(rng));
+    for (int i = 0; i < line.nodeCount; ++i) {
+      const double arc = 1.1 * i;
+      s.position[line.firstNode + i] =
+          start + arc * dir + Vec3(0, amplitude * std::sin(arc / wavelength), amplitude * std::cos(arc / wavelength)) +
+          0.2 * Vec3(u(rng), u(rng), u(rng));
+    }
+  }
+}
+
+TEST(ClearanceEnvelope, NodeClearanceEqualsTheBruteForceMinimumWhateverTheFirstGuess) {
+  const model::Model m(twoLines());
+  model::State s = m.initialState();
+  ClearanceEnvelope envelope(m, {{0, 1}});
+  std::mt19937 rng(20261125);
+  for (int trial = 0; trial < 40; ++trial) {
+    shuffle(m, s, rng);  // the hints of the previous trial are unrelated to this layout
+    for (int side = 0; side < 2; ++side) {
+      const std::vector<double> reference = bruteForce(m, s, side, 1 - side);
+      const std::vector<double> got = envelope.nodeClearance(s, side, 1 - side);
+      ASSERT_EQ(got.size(), reference.size());
+      for (std::size_t i = 0; i < got.size(); ++i)
+        ASSERT_EQ(got[i], reference[i]) << "trial " << trial << ", line " << side << ", node " << i;
+    }
+  }
+}
+
+TEST(ClearanceEnvelope, ThresholdSkipsOnlyNodesThatCannotSetANewMinimum) {
+  const model::Model m(twoLines());
+  model::State s = m.initialState();
+  ClearanceEnvelope envelope(m, {{0, 1}});
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  int skipped = 0, exact = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    shuffle(m, s, rng);
+    for (int side = 0; side < 2; ++side) {
+      const std::vector<double> reference = bruteForce(m, s, side, 1 - side);
+      // Thresholds around the true clearances (some nodes above, some below), some +inf (first call).
+      std::vector<double> threshold(reference.size());
+      for (std::size_t i = 0; i < reference.size(); ++i)
+        threshold[i] = u(rng) < 0.1 ? std::numeric_limits<double>::infinity() : reference[i] + 4.0 * (u(rng) - 0.5);
+      const std::vector<double> got = envelope.nodeClearance(s, side, 1 - side, &threshold);
+      for (std::size_t i = 0; i < got.size(); ++i) {
+        if (std::isinf(got[i])) {
+          ++skipped;
+          ASSERT_GE(reference[i], threshold[i]) << "trial " << trial << ": a new minimum was skipped at node " << i;
+        } else {
+          ++exact;
+          ASSERT_EQ(got[i], reference[i]) << "trial " << trial << ", node " << i;
+        }
+        if (reference[i] < threshold[i]) {
+          ASSERT_FALSE(std::isinf(got[i]));
+        }
+      }
+    }
+  }
+  // Both branches are exercised (the thresholds straddle the clearances; the bounds are conservative, so
+  // fewer nodes are skipped than have a clearance above their threshold: 83 of ~3600 here).
+  EXPECT_GT(skipped, 20);
+  EXPECT_GT(exact, 100);
+}
+
+}  // namespace
+}  // namespace tangle::contact
