@@ -7,6 +7,8 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
+#include <sstream>
+#include <cmath>
 
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/ClashReport.hpp"
@@ -16,6 +18,7 @@
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/io/DynamicRecorder.hpp"
+#include "tangle/io/HtmlReport.hpp"
 #include "tangle/io/JsonWriter.hpp"
 #include "tangle/io/ModelReader.hpp"
 #include "tangle/io/OutputFile.hpp"
@@ -131,6 +134,13 @@ std::string modelSummary(const model::Model& m) {
   return out;
 }
 
+std::string readTextFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  if (in) s << in.rdbuf();
+  return s.str();
+}
+
 /// Plausibility warnings of the reader, one per line.
 std::string warningText(const model::ModelSpec& spec) {
   std::string out;
@@ -230,6 +240,33 @@ void makePlots(const fs::path& outDir, RunLog& log) {
 /// ropes break at 10-20 %: 5 % flags input mistakes without flagging fibre ropes in normal use.
 constexpr double kStrainWarning = 0.05;
 
+/// report/data.json and report.html of a run. A missing three.js costs the page, not the run.
+void writeReport(const io::HtmlReport& report, const fs::path& outDir, RunLog& log,
+                 std::chrono::steady_clock::duration collected) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const fs::path page = outDir / "report.html";
+  const std::string data = report.json();
+  {
+    fs::create_directories(outDir / "report");
+    io::OutputFile f(outDir / "report" / "data.json");
+    f.write(data);
+    f.close();
+  }
+  const int frames = report.frameCount();
+  log.info(fmt::format("report: {} frame(s){}\n", frames,
+                       report.stride() > 1 ? fmt::format(", every {} output times", report.stride()) : ""));
+  try {
+    io::HtmlReport::writePage(data, readTextFile(outDir / "run.log"), page);
+  } catch (const InputError& e) {
+    log.error(fmt::format("warning: report.html not written: {}\n", e.what()));
+    return;
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0 + collected).count();
+  log.info(fmt::format("report written to {} ({:.1f} MB, {:.2f} s)\n", page.string(),
+                       static_cast<double>(fs::file_size(page)) / 1e6, seconds));
+}
+
 /// The run itself; runAnalysis wraps it to record failures in the folder's manifest and log.
 int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::OutputFolder& folder, RunLog& log) {
   const auto start = std::chrono::steady_clock::now();
@@ -259,6 +296,20 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     envelope.reset();
   } else {
     envelope->recordStatic(sim.state());
+  }
+  // The browser report: its collection is timed, so the run log states what it cost.
+  std::chrono::steady_clock::duration reportTime{};
+  auto timed = [&reportTime](auto&& work) {
+    const auto t0 = std::chrono::steady_clock::now();
+    work();
+    reportTime += std::chrono::steady_clock::now() - t0;
+  };
+  std::unique_ptr<io::HtmlReport> report;
+  if (!options.noReport) {
+    timed([&] {
+      report = std::make_unique<io::HtmlReport>(m, "run", modelSummary(m));
+      report->setStatics(lines, sim.state(), sim.contact(), envelope.get());
+    });
   }
   for (const auto& s : lines) {
     std::string text = fmt::format(
@@ -304,9 +355,15 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
                               r.end == 0 ? 'a' : 'b');
       tensionerFile->write(header + "\n");
     }
+    if (report) {
+      const auto& d = m.spec().dynamics;
+      report->planFrames(static_cast<int>(std::ceil(d.duration / std::max(d.outputInterval, 1e-12))) + 1);
+    }
     const time::DynamicResult dyn = sim.runDynamics(
         [&](const model::State& s, const VecX&) {
-          recorder.record(s.time, sim.snapshot(true));
+          const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
+          recorder.record(s.time, snap);
+          if (report) timed([&] { report->recordOutput(snap, s, sim.contact(), envelope.get()); });
           if (clash) clash->recordClearance(s);
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", s.time);
@@ -335,6 +392,16 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
         });
     recorder.writeRanges();
     recorder.close();
+    if (report && recorder.stepCount() > 0) {
+      timed([&] {
+        for (std::size_t l = 0; l < recorder.ranges().size(); ++l) {
+          const auto& r = recorder.ranges()[l];
+          report->setRange(static_cast<int>(l), r.tensionMin, r.tensionMax, r.momentMin, r.momentMax,
+                           r.curvatureMin, r.curvatureMax);
+        }
+        if (clash) report->setClash(*sim.contact(), *clash);
+      });
+    }
     if (vesselFile) vesselFile->close();
     if (tensionerFile) tensionerFile->close();
     if (clash) {
@@ -360,6 +427,13 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     log.info(envelope->terminalSummary());
   }
   if (m.spec().output.plots && !options.noPlots) makePlots(outDir, log);
+  if (report) {
+    if (envelope) report->setEnvelope(*envelope);
+    report->setStatus(code == 0 ? (options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
+                                                                                     : "completed")
+                                : "failed");
+    writeReport(*report, outDir, log, reportTime);
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (code == 0) folder.setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
                                                                                       : "completed");
@@ -374,6 +448,33 @@ int runCheck(const CheckOptions& options) {
   fmt::print("{}", modelSummary(m));
   std::cerr << warningText(m.spec());
   fmt::print("model is valid{}\n", m.spec().warnings.empty() ? "" : fmt::format(" ({} warning(s))", m.spec().warnings.size()));
+  return 0;
+}
+
+int runReport(const ReportOptions& options) {
+  const fs::path dir(options.resultsDir);
+  io::HtmlReport::rebuildPage(dir);
+  fmt::print("report written to {}\n", (dir / "report.html").string());
+  return 0;
+}
+
+int runView(const ViewOptions& options) {
+  analysis::Simulation sim(io::readModelFile(options.modelPath));
+  const model::Model& m = sim.model();
+  std::cerr << warningText(m.spec());
+  fs::path page = options.output;
+  if (page.empty()) {
+    const fs::path p(options.modelPath);
+    page = p.parent_path() / (p.stem().string() + "_view.html");
+  }
+  io::HtmlReport report(m, "view", modelSummary(m));
+  std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
+      m, sim.contact() ? sim.contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+  if (envelope->empty()) envelope.reset();
+  report.setStatics(sim.snapshot(), sim.state(), nullptr, envelope.get());
+  report.setStatus("model before analysis (initial shapes)");
+  io::HtmlReport::writePage(report.json(), "", page);
+  fmt::print("view written to {}\n", page.string());
   return 0;
 }
 

@@ -19,11 +19,27 @@ struct RunOptions {
   bool noPlots = false;
   bool quiet = false;
   bool overwrite = false;  ///< clear an output folder of an earlier tangle run instead of refusing it
+  bool noReport = false;   ///< do not write report.html
+};
+
+/// Options of `tangle report`.
+struct ReportOptions {
+  std::string resultsDir;
+};
+
+/// Options of `tangle view`.
+struct ViewOptions {
+  std::string modelPath;
+  std::string output;  ///< page to write; empty: <model stem>_view.html beside the model file
 };
 
 /// Validates a model and prints a summary (lines, elements, DOFs, masses, lengths).
 int runCheck(const CheckOptions& options);
 /// Runs the analysis and writes results.
 int runAnalysis(const RunOptions& options);
+/// Rebuilds report.html of a results folder from its report data and run log.
+int runReport(const ReportOptions& options);
+/// Writes the report page of a model before any analysis (initial shapes, vessels, environment).
+int runView(const ViewOptions& options);
 
 }  // namespace tangle::app

@@ -33,6 +33,21 @@ int main(int argc, char** argv) {
   run->add_flag("--overwrite", runOptions.overwrite,
                 "Replace the results of an earlier run in the output folder (refused without it)");
 
+  run->add_flag("--no-report", runOptions.noReport, "Do not write report.html (the results report in the browser)");
+
+  tangle::app::ReportOptions reportOptions;
+  CLI::App* report =
+      app.add_subcommand("report", "Write report.html of a results folder again (from report/data.json and run.log)");
+  report->add_option("results", reportOptions.resultsDir, "Results folder of tangle run")
+      ->required()
+      ->check(CLI::ExistingDirectory);
+
+  tangle::app::ViewOptions viewOptions;
+  CLI::App* view = app.add_subcommand(
+      "view", "Write the report page of a model before any analysis (initial shapes, vessels, current, waves)");
+  view->add_option("model", viewOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
+  view->add_option("-o,--output", viewOptions.output, "Page to write (default: <model name>_view.html next to it)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -41,6 +56,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (*check) return tangle::app::runCheck(checkOptions);
+    if (*report) return tangle::app::runReport(reportOptions);
+    if (*view) return tangle::app::runView(viewOptions);
     if (*run) {
       // Ctrl-C ends the dynamics at the next step; every result so far (clash report included) is written.
       tangle::core::installInterruptHandler();

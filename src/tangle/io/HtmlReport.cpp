@@ -1,0 +1,375 @@
+#include "tangle/io/HtmlReport.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "tangle/contact/ClashReport.hpp"
+#include "tangle/contact/ClearanceEnvelope.hpp"
+#include "tangle/contact/LineContact.hpp"
+#include "tangle/core/Error.hpp"
+#include "tangle/geometry/Rotation.hpp"
+#include "tangle/io/OutputFile.hpp"
+#include "tangle/io/ReportTemplate.hpp"
+
+namespace tangle::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A JSON string literal; "</" is written "<\/" so the text cannot close the page's <script> element.
+std::string quote(std::string_view s) {
+  std::string out = "\"";
+  char prev = 0;
+  for (char c : s) {
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\n': out += "\\n"; break;
+      case '\r': out += "\\r"; break;
+      case '\t': out += "\\t"; break;
+      case '/': out += prev == '<' ? "\\/" : "/"; break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          out += fmt::format("\\u{:04x}", static_cast<int>(c));
+        } else {
+          out += c;
+        }
+    }
+    prev = c;
+  }
+  return out + "\"";
+}
+
+/// A number with `digits` significant digits (null when not finite).
+std::string sig(double v, int digits) {
+  if (!std::isfinite(v)) return "null";
+  if (v == 0.0) return "0";
+  return fmt::format("{:.{}g}", v, digits);
+}
+
+/// A number rounded to `decimals` decimals, without trailing zeros (null when not finite).
+std::string fixed(double v, int decimals) {
+  if (!std::isfinite(v)) return "null";
+  std::string s = fmt::format("{:.{}f}", v, decimals);
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+  }
+  if (s == "-0") s = "0";
+  return s;
+}
+
+template <class F>
+std::string array(std::size_t n, F&& item) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < n; ++i) {
+    if (i) out += ',';
+    out += item(i);
+  }
+  return out + "]";
+}
+
+std::string sigArray(const std::vector<double>& v, int digits, double scale = 1.0) {
+  return array(v.size(), [&](std::size_t i) { return sig(v[i] * scale, digits); });
+}
+
+/// Position along a line at unstretched arc length `arc` [m] (linear between nodes).
+Vec3 pointAt(const solver::LineSnapshot& s, double arc) {
+  const auto& a = s.arcLength;
+  if (a.empty()) return Vec3::Zero();
+  if (arc <= a.front()) return s.position.front();
+  if (arc >= a.back()) return s.position.back();
+  const std::size_t i = static_cast<std::size_t>(std::upper_bound(a.begin(), a.end(), arc) - a.begin());
+  const double w = (arc - a[i - 1]) / std::max(a[i] - a[i - 1], 1e-12);
+  return (1.0 - w) * s.position[i - 1] + w * s.position[i];
+}
+
+const char* modeName(model::VesselMode m) {
+  switch (m) {
+    case model::VesselMode::Fixed: return "fixed";
+    case model::VesselMode::Prescribed: return "prescribed";
+    case model::VesselMode::Free: return "free";
+  }
+  return "?";
+}
+
+std::string readText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+HtmlReport::HtmlReport(const model::Model& model, std::string kind, std::string summary)
+    : m_model(&model), m_kind(std::move(kind)), m_summary(std::move(summary)) {
+  m_endTension.resize(2 * model.lines().size());
+  m_vesselXY.resize(2 * model.vessels().size());
+}
+
+void HtmlReport::planFrames(int expectedOutputs) {
+  long nodes = 0;
+  for (const model::Line& l : m_model->lines()) nodes += l.nodeCount;
+  const long maxFrames = std::max(2L, std::min<long>(kMaxFrames, kMaxNodeFrames / std::max(nodes, 1L)));
+  m_stride = static_cast<int>(std::max(1L, (expectedOutputs + maxFrames - 1) / maxFrames));
+}
+
+std::string HtmlReport::frameJson(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
+                                  const contact::LineContact* contact,
+                                  const contact::ClearanceEnvelope* envelope) const {
+  std::string out = fmt::format("{{\"t\":{},\"lines\":[", fixed(state.time, 4));
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const solver::LineSnapshot& s = lines[l];
+    if (l) out += ',';
+    out += "{\"p\":" + array(3 * s.position.size(), [&](std::size_t i) {
+      return fmt::format("{}", std::llround(1000.0 * s.position[i / 3][static_cast<int>(i % 3)]));
+    });
+    out += ",\"T\":" + sigArray(s.tension, 4, 1e-3);
+    out += ",\"M\":" + sigArray(s.bendingMoment, 4, 1e-3);
+    out += ",\"C\":" + sigArray(s.curvature, 3);
+    if (envelope) {
+      // Clearance of each node to the nearest other line it is assessed against.
+      std::vector<double> c(s.position.size(), std::numeric_limits<double>::infinity());
+      bool any = false;
+      for (const auto& side : envelope->sides()) {
+        if (side.line != static_cast<int>(l)) continue;
+        const std::vector<double> v = envelope->nodeClearance(state, side.line, side.other);
+        for (std::size_t i = 0; i < c.size() && i < v.size(); ++i) c[i] = std::min(c[i], v[i]);
+        any = true;
+      }
+      if (any) out += ",\"c\":" + array(c.size(), [&](std::size_t i) { return fixed(c[i], 3); });
+    }
+    out += '}';
+  }
+  out += "],\"v\":" + array(m_model->vessels().size(), [&](std::size_t v) {
+    const int node = m_model->vesselNode(static_cast<int>(v));
+    const Vec3 r = geometry::logMap(state.triad[node]);
+    const Vec3& x = state.position[node];
+    return fmt::format("[{},{},{},{},{},{}]", fixed(x.x(), 3), fixed(x.y(), 3), fixed(x.z(), 3), sig(r.x(), 6),
+                       sig(r.y(), 6), sig(r.z(), 6));
+  });
+  // Contact patches: force centroid on both lines and the total normal force.
+  out += ",\"k\":[";
+  if (contact) {
+    bool first = true;
+    for (const contact::ContactPatch& p : contact->patches()) {
+      if (p.lineA < 0 || p.lineB < 0 || p.lineA >= static_cast<int>(lines.size()) ||
+          p.lineB >= static_cast<int>(lines.size()) || !(p.force > 0.0))
+        continue;
+      const Vec3 a = pointAt(lines[p.lineA], p.arcA), b = pointAt(lines[p.lineB], p.arcB);
+      if (!first) out += ',';
+      first = false;
+      out += fmt::format("[{},{},{},{},{},{},{},{},{}]", p.lineA, p.lineB, fixed(a.x(), 3), fixed(a.y(), 3),
+                         fixed(a.z(), 3), fixed(b.x(), 3), fixed(b.y(), 3), fixed(b.z(), 3), sig(p.force, 4));
+    }
+  }
+  return out + "]}";
+}
+
+void HtmlReport::setStatics(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
+                            const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope) {
+  m_statics = frameJson(lines, state, contact, envelope);
+  // Static ranges (the values themselves) until the dynamics replace them.
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    setRange(static_cast<int>(l), lines[l].tension, lines[l].tension, lines[l].bendingMoment,
+             lines[l].bendingMoment, lines[l].curvature, lines[l].curvature);
+}
+
+void HtmlReport::recordOutput(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
+                              const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope) {
+  m_time.push_back(state.time);
+  for (std::size_t l = 0; l < lines.size() && 2 * l + 1 < m_endTension.size(); ++l) {
+    m_endTension[2 * l].push_back(lines[l].endTensionA);
+    m_endTension[2 * l + 1].push_back(lines[l].endTensionB);
+  }
+  for (std::size_t v = 0; v < m_model->vessels().size(); ++v) {
+    const Vec3& x = state.position[m_model->vesselNode(static_cast<int>(v))];
+    m_vesselXY[2 * v].push_back(x.x());
+    m_vesselXY[2 * v + 1].push_back(x.y());
+  }
+  if (m_outputs % m_stride == 0) m_frames.push_back(frameJson(lines, state, contact, envelope));
+  ++m_outputs;
+}
+
+void HtmlReport::setRange(int line, const std::vector<double>& tensionMin, const std::vector<double>& tensionMax,
+                          const std::vector<double>& momentMin, const std::vector<double>& momentMax,
+                          const std::vector<double>& curvatureMin, const std::vector<double>& curvatureMax) {
+  if (static_cast<int>(m_rangeParts.size()) <= line) m_rangeParts.resize(line + 1);
+  m_rangeParts[line] = fmt::format(
+      "{{\"Tmin\":{},\"Tmax\":{},\"Mmin\":{},\"Mmax\":{},\"Cmin\":{},\"Cmax\":{}}}", sigArray(tensionMin, 4, 1e-3),
+      sigArray(tensionMax, 4, 1e-3), sigArray(momentMin, 4, 1e-3), sigArray(momentMax, 4, 1e-3),
+      sigArray(curvatureMin, 3), sigArray(curvatureMax, 3));
+}
+
+void HtmlReport::setClash(const contact::LineContact& contact, const contact::ClashReport& clash) {
+  const auto& lines = m_model->lines();
+  std::string out = "{\"events\":";
+  const auto& events = contact.events();
+  out += array(events.size(), [&](std::size_t i) {
+    const contact::ContactEvent& e = events[i];
+    return fmt::format(
+        "{{\"a\":{},\"b\":{},\"start\":{},\"end\":{},\"kind\":{},\"peak\":{},\"impulse\":{},\"speed\":{},"
+        "\"energy\":{},\"arcA\":{},\"arcB\":{},\"pos\":[{},{},{}]}}",
+        e.lineA, e.lineB, fixed(e.startTime, 4), fixed(e.endTime, 4), quote(e.kind()), sig(e.peakForce, 4),
+        sig(e.impulse, 4), sig(e.impactVelocity, 4), sig(e.impactEnergy, 4), fixed(e.arcAStart, 2),
+        fixed(e.arcBStart, 2), fixed(e.positionStart.x(), 3), fixed(e.positionStart.y(), 3),
+        fixed(e.positionStart.z(), 3));
+  });
+  // Minimum clearance of each pair against time (output times).
+  const auto& pairs = clash.pairs();
+  out += ",\"pairs\":" + array(pairs.size(), [&](std::size_t p) {
+    return fmt::format("[{},{}]", quote(lines[pairs[p][0]].name), quote(lines[pairs[p][1]].name));
+  });
+  std::vector<double> times;
+  std::vector<std::vector<double>> values(pairs.size());
+  for (const auto& s : clash.samples()) {
+    if (times.empty() || s.time > times.back() + 1e-12) {
+      times.push_back(s.time);
+      for (auto& v : values) v.push_back(std::numeric_limits<double>::quiet_NaN());
+    }
+    if (s.pair >= 0 && s.pair < static_cast<int>(values.size())) values[s.pair].back() = s.clearance;
+  }
+  out += ",\"t\":" + array(times.size(), [&](std::size_t i) { return fixed(times[i], 4); });
+  out += ",\"clearance\":" + array(values.size(), [&](std::size_t p) {
+    return array(values[p].size(), [&](std::size_t i) { return fixed(values[p][i], 4); });
+  });
+  m_clash = out + "}";
+}
+
+void HtmlReport::setEnvelope(const contact::ClearanceEnvelope& envelope) {
+  const auto& sides = envelope.sides();
+  m_envelope = array(sides.size(), [&](std::size_t i) {
+    const auto& s = sides[i];
+    return fmt::format("{{\"line\":{},\"other\":{},\"static\":{},\"dynamic\":{}}}", s.line, s.other,
+                       array(s.staticClearance.size(), [&](std::size_t k) { return fixed(s.staticClearance[k], 4); }),
+                       array(s.dynamicClearance.size(), [&](std::size_t k) { return fixed(s.dynamicClearance[k], 4); }));
+  });
+}
+
+void HtmlReport::writeData(const fs::path& file) const {
+  fs::create_directories(file.parent_path());
+  OutputFile out(file);
+  out.write(json());
+  out.close();
+}
+
+std::string HtmlReport::json() const {
+  struct Text {
+    std::string s;
+    void write(const std::string& t) { s += t; }
+  } f;
+  const model::Model& m = *m_model;
+  const model::ModelSpec& spec = m.spec();
+  const auto& env = m.environment();
+  f.write(fmt::format("{{\"format\":1,\"version\":{},\"kind\":{},\"model\":{},\"title\":{},\"status\":{},",
+                      quote(TANGLE_VERSION), quote(m_kind), quote(spec.sourceFile), quote(spec.title),
+                      quote(m_status)));
+  f.write("\"summary\":" + quote(m_summary) + ",");
+  f.write(fmt::format("\"depth\":{},", fixed(env.waterDepth, 3)));
+  // Lines: names, arc lengths, contact diameters, sections.
+  f.write("\"lines\":" + array(m.lines().size(), [&](std::size_t l) {
+    const model::Line& line = m.lines()[l];
+    const auto& d = m.nodeContactDiameter();
+    std::string sections = array(line.spec->sections.size(), [&](std::size_t k) {
+      const model::SectionSpec& s = line.spec->sections[k];
+      return fmt::format("{{\"type\":{},\"length\":{},\"elements\":{}}}", quote(s.lineType), fixed(s.length, 3),
+                         s.elements);
+    });
+    return fmt::format("{{\"name\":{},\"length\":{},\"arc\":{},\"diam\":{},\"sections\":{}}}", quote(line.name),
+                       fixed(line.length, 3),
+                       array(line.arcLength.size(), [&](std::size_t i) { return fixed(line.arcLength[i], 3); }),
+                       array(static_cast<std::size_t>(line.nodeCount),
+                             [&](std::size_t i) { return fixed(d[line.firstNode + i], 4); }),
+                       sections);
+  }) + ",");
+  // Vessels as boxes: length L from the current-force areas (A_y = L T, A_x = B T) when given.
+  f.write("\"vessels\":" + array(m.vessels().size(), [&](std::size_t v) {
+    const model::VesselSpec& s = m.vessels()[v];
+    const Vec3& a = s.currentAreas;
+    const double length = a.z() > 0.0 ? a.z() : 100.0;
+    const double draft = a.y() > 0.0 ? std::clamp(a.y() / length, 1.0, 0.5 * length) : 0.1 * length;
+    const double breadth = a.x() > 0.0 ? std::clamp(a.x() / draft, 1.0, length) : 0.2 * length;
+    const bool sized = a.x() > 0.0 && a.y() > 0.0 && a.z() > 0.0;
+    return fmt::format("{{\"name\":{},\"mode\":{},\"length\":{},\"breadth\":{},\"draft\":{},\"sized\":{}}}",
+                       quote(s.name), quote(modeName(s.mode)), fixed(length, 2), fixed(breadth, 2), fixed(draft, 2),
+                       sized ? "true" : "false");
+  }) + ",");
+  f.write("\"current\":" + array(env.current.size(), [&](std::size_t i) {
+    const auto& c = env.current[i];
+    return fmt::format("{{\"z\":{},\"speed\":{},\"azimuth\":{}}}", fixed(c.z, 3), fixed(c.speed, 4),
+                       fixed(c.azimuth, 6));
+  }) + ",");
+  const model::WaveSpec& w = env.waves;
+  f.write(fmt::format("\"waves\":{{\"kind\":{},\"height\":{},\"period\":{},\"azimuth\":{}}},",
+                      quote(w.kind == model::WaveKind::None ? "none" : w.kind == model::WaveKind::Airy ? "airy" : "jonswap"),
+                      fixed(w.kind == model::WaveKind::Jonswap ? w.significantHeight : w.height, 3),
+                      fixed(w.kind == model::WaveKind::Jonswap ? w.peakPeriod : w.period, 3), fixed(w.azimuth, 6)));
+  f.write(fmt::format("\"wind\":{{\"speed\":{},\"azimuth\":{}}},", fixed(env.windSpeed, 3), fixed(env.windAzimuth, 6)));
+  const double interval = spec.dynamics.outputInterval;
+  f.write(fmt::format("\"decimation\":{{\"stride\":{},\"output_interval\":{},\"outputs\":{},\"frames\":{}}},", m_stride,
+                      sig(interval, 6), m_outputs, m_frames.size()));
+  f.write("\"statics\":" + (m_statics.empty() ? std::string("null") : m_statics) + ",");
+  f.write("\"frames\":[");
+  for (std::size_t i = 0; i < m_frames.size(); ++i) {
+    if (i) f.write(",");
+    f.write(m_frames[i]);
+    f.write("\n");
+  }
+  f.write("],");
+  // Histories at every output time (end tensions [kN], vessel x, y [m]).
+  f.write("\"history\":{\"t\":" + array(m_time.size(), [&](std::size_t i) { return fixed(m_time[i], 4); }));
+  f.write(",\"endTension\":" + array(m_endTension.size(), [&](std::size_t k) { return sigArray(m_endTension[k], 5, 1e-3); }));
+  f.write(",\"vesselXY\":" + array(m_vesselXY.size(), [&](std::size_t k) {
+    return array(m_vesselXY[k].size(), [&](std::size_t i) { return fixed(m_vesselXY[k][i], 3); });
+  }) + "},");
+  f.write("\"ranges\":" + array(m_rangeParts.size(), [&](std::size_t l) {
+    return m_rangeParts[l].empty() ? std::string("null") : m_rangeParts[l];
+  }) + ",");
+  f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + "}\n");
+  return std::move(f.s);
+}
+
+fs::path HtmlReport::threeDirectory() { return fs::path(TANGLE_THREE_DIR); }
+
+void HtmlReport::rebuildPage(const fs::path& dir) {
+  const fs::path dataFile = dir / "report" / "data.json";
+  if (!fs::exists(dataFile))
+    throw InputError(dataFile.string(), 0, "",
+                     "report data not found (tangle run writes it with the results; run the analysis again)");
+  writePage(readText(dataFile), readText(dir / "run.log"), dir / "report.html");
+}
+
+void HtmlReport::writePage(const std::string& data, const std::string& log, const fs::path& page) {
+  const fs::path threeFile = threeDirectory() / "three.min.js";
+  const fs::path controlsFile = threeDirectory() / "examples" / "js" / "controls" / "OrbitControls.js";
+  const std::string three = readText(threeFile);
+  const std::string controls = readText(controlsFile);
+  if (three.empty() || controls.empty())
+    throw InputError(three.empty() ? threeFile.string() : controlsFile.string(), 0, "",
+                     "not found: the report page needs three.js (Debian package libjs-three)");
+  std::string html(kReportHtml);
+  auto replace = [&](std::string_view marker, const std::string& text) {
+    const std::size_t at = html.find(marker);
+    if (at == std::string::npos) throw std::logic_error(fmt::format("report template lacks {}", marker));
+    html.replace(at, marker.size(), text);
+  };
+  // The data last: it may be large and must not be searched for markers.
+  replace("/*@CSS@*/", kReportCss);
+  replace("/*@THREE@*/", three + "\n" + controls);
+  replace("/*@APP@*/", kReportJs);
+  replace("/*@LOG@*/", quote(log));
+  replace("/*@DATA@*/", data);
+  fs::create_directories(page.parent_path().empty() ? fs::path(".") : page.parent_path());
+  OutputFile out(page);
+  out.write(html);
+  out.close();
+}
+
+}  // namespace tangle::io

@@ -1,0 +1,96 @@
+#pragma once
+/// @file HtmlReport.hpp
+/// The results report in the browser: one self-contained `report.html` (three.js from Debian's
+/// libjs-three inlined, the data embedded as JSON, no server) with a 3D replay of the lines (tubes of
+/// their contact diameter coloured by tension, bending moment, curvature or clearance), vessels (boxes
+/// at their position and attitude), seabed, sea surface, contact points and forces; interactive plots
+/// (end tensions, range graphs, clearance, drift path); the clash table; the model summary and run log.
+///
+/// During a run the report collects compact frames: at most kMaxFrames, and at most kMaxNodeFrames node
+/// positions in all, so an output time is kept every `stride` output times (stated in the page);
+/// positions are rounded to 1 mm, tensions and moments to 4 significant digits. The end tensions and
+/// vessel positions for the plots are kept at every output time. The data go to
+/// `<results>/report/data.json`, from which writePage() builds the page (`tangle report DIR` does it
+/// again from the folder). docs/report.md describes the page.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tangle/model/Model.hpp"
+#include "tangle/model/State.hpp"
+#include "tangle/solver/LineResults.hpp"
+
+namespace tangle::contact {
+class LineContact;
+class ClearanceEnvelope;
+class ClashReport;
+}  // namespace tangle::contact
+
+namespace tangle::io {
+
+/// Collects the data of one report and writes them as JSON.
+class HtmlReport {
+ public:
+  static constexpr int kMaxFrames = 400;
+  static constexpr long kMaxNodeFrames = 100000;
+
+  /// @param kind "run" or "view" (a model before any analysis)
+  /// @param summary the model summary text (as on the terminal)
+  HtmlReport(const model::Model& model, std::string kind, std::string summary);
+
+  /// Sets the frame stride from the number of output times expected (dynamics: duration / interval + 1).
+  void planFrames(int expectedOutputs);
+  int stride() const { return m_stride; }
+  /// Frames kept so far (dynamics).
+  int frameCount() const { return static_cast<int>(m_frames.size()); }
+
+  /// The static equilibrium (or, for `view`, the initial shape). `contact` and `envelope` may be null.
+  void setStatics(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
+                  const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope);
+  /// One output time of the dynamics: always into the histories, and a frame every stride() calls.
+  void recordOutput(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
+                    const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope);
+  /// Range graphs along line `line` [N, N m, 1/m] (dynamics).
+  void setRange(int line, const std::vector<double>& tensionMin, const std::vector<double>& tensionMax,
+                const std::vector<double>& momentMin, const std::vector<double>& momentMax,
+                const std::vector<double>& curvatureMin, const std::vector<double>& curvatureMax);
+  /// Contact events and clearance histories of the run.
+  void setClash(const contact::LineContact& contact, const contact::ClashReport& clash);
+  /// Static and dynamic clearance envelopes.
+  void setEnvelope(const contact::ClearanceEnvelope& envelope);
+  /// Status of the run ("completed", ...) and its end time [s].
+  void setStatus(const std::string& status) { m_status = status; }
+
+  /// The data as JSON text.
+  std::string json() const;
+  /// Writes json() to a file (`<dir>/report/data.json` for a run).
+  void writeData(const std::filesystem::path& file) const;
+
+  /// Builds the page from the data (json()) and the run log text. Needs three.js (libjs-three).
+  /// @throws InputError when three.js is not installed; OutputError on a failed write
+  static void writePage(const std::string& data, const std::string& log, const std::filesystem::path& page);
+  /// `tangle report DIR`: DIR/report.html again from DIR/report/data.json and DIR/run.log.
+  /// @throws InputError when the data file is missing
+  static void rebuildPage(const std::filesystem::path& dir);
+  /// Where three.js is read from (libjs-three).
+  static std::filesystem::path threeDirectory();
+
+ private:
+  std::string frameJson(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
+                        const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope) const;
+
+  const model::Model* m_model;
+  std::string m_kind, m_summary, m_status;
+  int m_stride = 1;
+  int m_outputs = 0;
+  std::string m_statics;              ///< JSON of the static frame
+  std::vector<std::string> m_frames;  ///< JSON of each kept dynamic frame
+  std::vector<double> m_time;         ///< every output time [s]
+  std::vector<std::vector<double>> m_endTension;  ///< per line end (2 per line), per output [N]
+  std::vector<std::vector<double>> m_vesselXY;    ///< per vessel x, y (2 per vessel), per output [m]
+  std::vector<std::string> m_rangeParts;  ///< JSON range graphs per line
+  std::string m_clash = "null", m_envelope = "[]";
+};
+
+}  // namespace tangle::io

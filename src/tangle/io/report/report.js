@@ -1,0 +1,756 @@
+// tangle results report: 3D replay (three.js), plots (SVG), clash table, model summary, run log.
+// The data come from the <script id="tangle-data"> element (HtmlReport.cpp writes them); units are SI
+// except positions in the frames (mm) and tensions / moments (kN, kN m).
+(function () {
+  "use strict";
+  var data = JSON.parse(document.getElementById("tangle-data").textContent);
+  var frames = data.frames && data.frames.length ? data.frames : (data.statics ? [data.statics] : []);
+  var isDynamic = !!(data.frames && data.frames.length);
+  var status = { ready: false, errors: window.TANGLE_ERRORS };
+  var lineColours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
+                     "#bcbd22", "#7f7f7f"];
+  function lineColour(i) { return lineColours[i % lineColours.length]; }
+  function el(tag, attrs, text) {
+    var e = document.createElement(tag);
+    if (attrs) for (var k in attrs) e.setAttribute(k, attrs[k]);
+    if (text !== undefined) e.textContent = text;
+    return e;
+  }
+  function fmt(v, digits) {
+    if (v === null || v === undefined || !isFinite(v)) return "-";
+    var a = Math.abs(v);
+    if (a !== 0 && (a >= 1e6 || a < 1e-3)) return v.toExponential(Math.max(1, (digits || 4) - 1));
+    return Number(v.toPrecision(digits || 4)).toString();
+  }
+  function deg(rad) { return rad * 180 / Math.PI; }
+
+  // ---------------------------------------------------------------- header, model, log
+  document.getElementById("title").textContent =
+      (data.kind === "view" ? "tangle model view: " : "tangle report: ") + (data.title || data.model);
+  document.getElementById("meta").textContent = "model " + data.model + " \u00b7 tangle " + data.version +
+      " \u00b7 " + (data.status || "");
+  document.getElementById("log-text").textContent = TANGLE_LOG || "(no run log)";
+
+  (function modelSection() {
+    var body = document.getElementById("model-body");
+    body.appendChild(el("pre", null, data.summary));
+    var t = el("table");
+    t.innerHTML = "<thead><tr><th class=text>line</th><th>length (m)</th><th class=text>section type</th>" +
+        "<th>section length (m)</th><th>elements</th><th>contact diameter (m)</th></tr></thead>";
+    var tb = el("tbody");
+    data.lines.forEach(function (line) {
+      var dmax = Math.max.apply(null, line.diam);
+      line.sections.forEach(function (s, k) {
+        var tr = el("tr");
+        [k === 0 ? line.name : "", k === 0 ? fmt(line.length, 6) : "", s.type, fmt(s.length, 6), s.elements,
+         k === 0 ? fmt(dmax, 4) : ""].forEach(function (v, c) {
+          tr.appendChild(el("td", c === 0 || c === 2 ? { "class": "text" } : null, String(v)));
+        });
+        tb.appendChild(tr);
+      });
+    });
+    t.appendChild(tb);
+    body.appendChild(t);
+    if (data.vessels.length) {
+      var p = el("p", null, "Vessels are drawn as boxes: " + data.vessels.map(function (v) {
+        return v.name + " " + fmt(v.length, 3) + " x " + fmt(v.breadth, 3) + " m, draft " + fmt(v.draft, 3) +
+            " m (" + (v.sized ? "from its current-force areas" : "no current-force areas given: nominal size") + ")";
+      }).join("; ") + ".");
+      body.appendChild(p);
+    }
+  })();
+
+  // ---------------------------------------------------------------- quantities
+  var quantities = [];
+  if (data.kind !== "view") {
+    quantities.push({ key: "T", label: "effective tension", unit: "kN" });
+    quantities.push({ key: "M", label: "bending moment", unit: "kN m" });
+    quantities.push({ key: "C", label: "curvature", unit: "1/m" });
+  }
+  if (frames.length && frames[0].lines.some(function (l) { return l.c; }))
+    quantities.push({ key: "c", label: "clearance", unit: "m", reversed: true, cap: 10 });
+  quantities.push({ key: "line", label: "line", unit: "" });
+  quantities.forEach(function (q) {
+    if (q.key === "line") return;
+    var lo = Infinity, hi = -Infinity;
+    frames.forEach(function (f) {
+      f.lines.forEach(function (l) {
+        var v = l[q.key];
+        if (!v) return;
+        for (var i = 0; i < v.length; ++i) if (v[i] !== null) { if (v[i] < lo) lo = v[i]; if (v[i] > hi) hi = v[i]; }
+      });
+    });
+    if (q.cap !== undefined && hi > q.cap) { hi = Math.max(q.cap, lo); q.capped = true; }
+    if (!isFinite(lo)) { lo = 0; hi = 1; }
+    if (hi - lo < 1e-12 * Math.max(1, Math.abs(hi))) { hi = lo + Math.max(1e-9, Math.abs(lo) * 1e-3); }
+    q.min = lo; q.max = hi;
+  });
+  // Blue - cyan - green - yellow - red.
+  var stops = [[0.15, 0.25, 0.85], [0.1, 0.75, 0.9], [0.2, 0.8, 0.3], [0.95, 0.85, 0.15], [0.85, 0.1, 0.1]];
+  function colourMap(u, out) {
+    u = Math.min(1, Math.max(0, u)) * (stops.length - 1);
+    var i = Math.min(stops.length - 2, Math.floor(u)), w = u - i;
+    for (var k = 0; k < 3; ++k) out[k] = stops[i][k] * (1 - w) + stops[i + 1][k] * w;
+    return out;
+  }
+
+  // ---------------------------------------------------------------- 3D scene
+  var container = document.getElementById("scene");
+  var renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(window.devicePixelRatio || 1);
+  renderer.setClearColor(0xdfe8f0);
+  container.appendChild(renderer.domElement);
+  var scene = new THREE.Scene();
+  var camera = new THREE.PerspectiveCamera(40, 1, 0.1, 1e6);
+  camera.up.set(0, 0, 1);
+  scene.add(new THREE.AmbientLight(0xffffff, 0.55));
+  var sun = new THREE.DirectionalLight(0xffffff, 0.6);
+  sun.position.set(0.4, -0.6, 1);
+  scene.add(sun);
+  var sun2 = new THREE.DirectionalLight(0xffffff, 0.25);
+  sun2.position.set(-0.5, 0.7, -0.3);
+  scene.add(sun2);
+
+  // Extent of the scene: every node of every frame and the vessels.
+  var box = new THREE.Box3();
+  frames.forEach(function (f) {
+    f.lines.forEach(function (l) {
+      for (var i = 0; i < l.p.length; i += 3) box.expandByPoint(new THREE.Vector3(l.p[i] / 1000, l.p[i + 1] / 1000, l.p[i + 2] / 1000));
+    });
+    f.v.forEach(function (v) { box.expandByPoint(new THREE.Vector3(v[0], v[1], v[2])); });
+  });
+  if (box.isEmpty()) box.set(new THREE.Vector3(-1, -1, -1), new THREE.Vector3(1, 1, 1));
+  box.expandByPoint(new THREE.Vector3(box.min.x, box.min.y, -data.depth));
+  box.expandByPoint(new THREE.Vector3(box.max.x, box.max.y, 0));
+  var size = box.getSize(new THREE.Vector3());
+  var sceneSize = Math.max(size.x, size.y, size.z, 1);
+  var centre = box.getCenter(new THREE.Vector3());
+
+  // Seabed and sea surface, a margin around the lines.
+  var margin = 0.15 * sceneSize;
+  var planeW = size.x + 2 * margin, planeH = size.y + 2 * margin;
+  var seabed = new THREE.Mesh(new THREE.PlaneBufferGeometry(planeW, planeH),
+      new THREE.MeshLambertMaterial({ color: 0xc8b58a, side: THREE.DoubleSide }));
+  seabed.position.set(centre.x, centre.y, -data.depth);
+  scene.add(seabed);
+  var grid = new THREE.GridHelper(Math.max(planeW, planeH), 20, 0x9c8a60, 0xb0a070);
+  grid.rotation.x = Math.PI / 2;
+  grid.position.set(centre.x, centre.y, -data.depth + 0.01);
+  scene.add(grid);
+  var sea = new THREE.Mesh(new THREE.PlaneBufferGeometry(planeW, planeH),
+      new THREE.MeshLambertMaterial({ color: 0x3a7ec8, transparent: true, opacity: 0.22, side: THREE.DoubleSide,
+                                      depthWrite: false }));
+  sea.position.set(centre.x, centre.y, 0);
+  scene.add(sea);
+
+  // Current, wave and wind directions: arrows on the sea surface (azimuth from +x, direction of travel).
+  var arrowLength = 0.18 * sceneSize;
+  var envNotes = [];
+  function envArrow(azimuth, colour, z, text) {
+    var dir = new THREE.Vector3(Math.cos(azimuth), Math.sin(azimuth), 0);
+    var origin = new THREE.Vector3(box.min.x - 0.5 * margin, box.min.y - 0.5 * margin, z);
+    scene.add(new THREE.ArrowHelper(dir, origin, arrowLength, colour, 0.25 * arrowLength, 0.1 * arrowLength));
+    envNotes.push("<span style='color:#" + new THREE.Color(colour).getHexString() + "'>\u2192</span> " + text);
+  }
+  if (data.current.length) {
+    var top = data.current.reduce(function (a, b) { return a.z > b.z ? a : b; });
+    envArrow(top.azimuth, 0x0050c0, -0.02 * sceneSize, "current " + fmt(top.speed, 3) + " m/s towards " +
+             fmt(deg(top.azimuth), 4) + " deg");
+  }
+  if (data.waves.kind !== "none")
+    envArrow(data.waves.azimuth, 0x00a0a0, 0.005 * sceneSize, "waves (" + data.waves.kind + ") " +
+             fmt(data.waves.height, 3) + " m, " + fmt(data.waves.period, 3) + " s towards " +
+             fmt(deg(data.waves.azimuth), 4) + " deg");
+  if (data.wind.speed > 0)
+    envArrow(data.wind.azimuth, 0x707070, 0.04 * sceneSize, "wind " + fmt(data.wind.speed, 3) + " m/s towards " +
+             fmt(deg(data.wind.azimuth), 4) + " deg");
+  var axes = new THREE.AxesHelper(0.08 * sceneSize);
+  axes.position.set(box.min.x - 0.5 * margin, box.max.y + 0.5 * margin, 0);
+  scene.add(axes);
+
+  // Lines as tubes of their contact diameter (exaggerated on request: a 0.5 m riser 1 km long is a hair).
+  var ring = 10;
+  var maxDiam = 0;
+  data.lines.forEach(function (l) { l.diam.forEach(function (d) { maxDiam = Math.max(maxDiam, d); }); });
+  var exaggerations = [1, 2, 5, 10, 20, 50, 100];
+  var autoEx = 1;
+  for (var e = 0; e < exaggerations.length; ++e) {
+    autoEx = exaggerations[e];
+    if (maxDiam * autoEx >= sceneSize / 250) break;
+  }
+  var exaggeration = autoEx;
+  var tubes = data.lines.map(function (line, li) {
+    var n = line.arc.length;
+    var g = new THREE.BufferGeometry();
+    var pos = new Float32Array(n * ring * 3), nor = new Float32Array(n * ring * 3), col = new Float32Array(n * ring * 3);
+    var index = [];
+    for (var i = 0; i + 1 < n; ++i)
+      for (var k = 0; k < ring; ++k) {
+        var a = i * ring + k, b = i * ring + (k + 1) % ring, c = a + ring, d = b + ring;
+        index.push(a, c, b, b, c, d);
+      }
+    g.setIndex(index);
+    g.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+    g.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
+    g.setAttribute("color", new THREE.BufferAttribute(col, 3));
+    var mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ vertexColors: THREE.VertexColors, side: THREE.DoubleSide }));
+    mesh.frustumCulled = false;
+    mesh.userData.line = li;
+    scene.add(mesh);
+    return mesh;
+  });
+  function updateTube(li, fl) {
+    var g = tubes[li].geometry, pos = g.attributes.position.array, nor = g.attributes.normal.array;
+    var p = fl.p, n = p.length / 3, diam = data.lines[li].diam;
+    var t = new THREE.Vector3(), nrm = new THREE.Vector3(), bin = new THREE.Vector3(), tmp = new THREE.Vector3();
+    var first = true;
+    for (var i = 0; i < n; ++i) {
+      var i0 = Math.max(0, i - 1), i1 = Math.min(n - 1, i + 1);
+      t.set(p[3 * i1] - p[3 * i0], p[3 * i1 + 1] - p[3 * i0 + 1], p[3 * i1 + 2] - p[3 * i0 + 2]);
+      if (t.lengthSq() === 0) t.set(0, 0, 1);
+      t.normalize();
+      if (!first) nrm.addScaledVector(t, -nrm.dot(t));
+      if (first || nrm.lengthSq() < 1e-8) {
+        tmp.set(Math.abs(t.z) < 0.9 ? 0 : 1, 0, Math.abs(t.z) < 0.9 ? 1 : 0);
+        nrm.crossVectors(t, tmp);
+        first = false;
+      }
+      nrm.normalize();
+      bin.crossVectors(t, nrm);
+      var r = 0.5 * diam[i] * exaggeration;
+      for (var k = 0; k < ring; ++k) {
+        var ang = 2 * Math.PI * k / ring, c = Math.cos(ang), s = Math.sin(ang);
+        var nx = c * nrm.x + s * bin.x, ny = c * nrm.y + s * bin.y, nz = c * nrm.z + s * bin.z;
+        var o = 3 * (i * ring + k);
+        pos[o] = p[3 * i] / 1000 + r * nx; pos[o + 1] = p[3 * i + 1] / 1000 + r * ny; pos[o + 2] = p[3 * i + 2] / 1000 + r * nz;
+        nor[o] = nx; nor[o + 1] = ny; nor[o + 2] = nz;
+      }
+    }
+    g.attributes.position.needsUpdate = true;
+    g.attributes.normal.needsUpdate = true;
+  }
+  var quantity = quantities[0];
+  function colourTube(li, fl) {
+    var col = tubes[li].geometry.attributes.color.array, n = fl.p.length / 3, rgb = [0, 0, 0];
+    var v = quantity.key === "line" ? null : fl[quantity.key];
+    var base = new THREE.Color(lineColour(li));
+    for (var i = 0; i < n; ++i) {
+      if (v && v[i] !== null && v[i] !== undefined) {
+        var u = (v[i] - quantity.min) / (quantity.max - quantity.min);
+        colourMap(quantity.reversed ? 1 - u : u, rgb);
+      } else if (v) {
+        rgb[0] = rgb[1] = rgb[2] = 0.6;
+      } else {
+        rgb[0] = base.r; rgb[1] = base.g; rgb[2] = base.b;
+      }
+      for (var k = 0; k < ring; ++k) {
+        var o = 3 * (i * ring + k);
+        col[o] = rgb[0]; col[o + 1] = rgb[1]; col[o + 2] = rgb[2];
+      }
+    }
+    tubes[li].geometry.attributes.color.needsUpdate = true;
+  }
+
+  // Vessels: boxes from -draft to +draft/2 about the reference point, in vessel axes (x forward).
+  var vessels = data.vessels.map(function (v) {
+    var group = new THREE.Group();
+    var g = new THREE.BoxBufferGeometry(v.length, v.breadth, 1.5 * v.draft);
+    var m = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xb0b4bb, transparent: true, opacity: 0.75 }));
+    m.position.z = -0.25 * v.draft;
+    group.add(m);
+    var edges = new THREE.LineSegments(new THREE.EdgesGeometry(g), new THREE.LineBasicMaterial({ color: 0x303030 }));
+    edges.position.z = m.position.z;
+    group.add(edges);
+    // Bow marker.
+    var bow = new THREE.Mesh(new THREE.ConeBufferGeometry(0.12 * v.breadth, 0.15 * v.length, 12),
+                             new THREE.MeshLambertMaterial({ color: 0xe0a020 }));
+    bow.rotation.z = -Math.PI / 2;
+    bow.position.set(0.5 * v.length + 0.075 * v.length, 0, 0.5 * v.draft);
+    group.add(bow);
+    scene.add(group);
+    return group;
+  });
+  function placeVessel(vi, pose) {
+    var g = vessels[vi], r = new THREE.Vector3(pose[3], pose[4], pose[5]), angle = r.length();
+    g.position.set(pose[0], pose[1], pose[2]);
+    if (angle > 0) g.quaternion.setFromAxisAngle(r.divideScalar(angle), angle);
+    else g.quaternion.set(0, 0, 0, 1);
+  }
+
+  // Contact points (spheres on both lines) and forces (arrows from line B to line A, length by force).
+  var maxForce = 0;
+  frames.forEach(function (f) { f.k.forEach(function (c) { maxForce = Math.max(maxForce, c[8]); }); });
+  var contactGroup = new THREE.Group();
+  scene.add(contactGroup);
+  var contactMaterial = new THREE.MeshLambertMaterial({ color: 0xff2020 });
+  var sphereGeometry = new THREE.SphereBufferGeometry(1, 12, 8);
+  function drawContacts(f) {
+    while (contactGroup.children.length) contactGroup.remove(contactGroup.children[0]);
+    var radius = Math.max(maxDiam * exaggeration * 0.8, sceneSize / 300);
+    f.k.forEach(function (c) {
+      var a = new THREE.Vector3(c[2], c[3], c[4]), b = new THREE.Vector3(c[5], c[6], c[7]);
+      [a, b].forEach(function (p) {
+        var s = new THREE.Mesh(sphereGeometry, contactMaterial);
+        s.scale.setScalar(radius);
+        s.position.copy(p);
+        contactGroup.add(s);
+      });
+      var dir = a.clone().sub(b);
+      if (dir.lengthSq() < 1e-12) dir.set(0, 0, 1);
+      dir.normalize();
+      var len = 0.12 * sceneSize * (maxForce > 0 ? c[8] / maxForce : 0) + 4 * radius;
+      contactGroup.add(new THREE.ArrowHelper(dir, a, len, 0xff0000, 0.3 * len, 0.15 * len));
+    });
+  }
+
+  var controls = new THREE.OrbitControls(camera, renderer.domElement);
+  controls.target.copy(centre);
+  camera.position.set(centre.x - 0.9 * sceneSize, centre.y - 1.3 * sceneSize, centre.z + 0.7 * sceneSize);
+  camera.near = sceneSize / 1e4;
+  camera.far = sceneSize * 100;
+  controls.update();
+  var dirty = true;
+  controls.addEventListener("change", function () { dirty = true; });
+  function resize() {
+    var w = container.clientWidth, h = container.clientHeight;
+    renderer.setSize(w, h);
+    camera.aspect = w / Math.max(h, 1);
+    camera.updateProjectionMatrix();
+    dirty = true;
+  }
+  window.addEventListener("resize", resize);
+  resize();
+
+  // ---------------------------------------------------------------- legend
+  function drawLegend() {
+    var L = document.getElementById("legend");
+    L.innerHTML = "";
+    if (quantity.key === "line") {
+      data.lines.forEach(function (l, i) {
+        var d = el("div");
+        d.innerHTML = "<span style='color:" + lineColour(i) + "'>\u25a0</span> ";
+        d.appendChild(document.createTextNode(l.name));
+        L.appendChild(d);
+      });
+    } else {
+      L.appendChild(el("div", null, quantity.label + " (" + quantity.unit + ")"));
+      var c = el("canvas", { width: 160, height: 14 }), ctx = c.getContext("2d"), rgb = [0, 0, 0];
+      for (var x = 0; x < 160; ++x) {
+        colourMap(quantity.reversed ? 1 - x / 159 : x / 159, rgb);
+        ctx.fillStyle = "rgb(" + rgb.map(function (v) { return Math.round(255 * v); }).join(",") + ")";
+        ctx.fillRect(x, 0, 1, 14);
+      }
+      L.appendChild(c);
+      var ticks = el("div");
+      ticks.style.display = "flex";
+      ticks.style.justifyContent = "space-between";
+      ticks.appendChild(el("span", null, fmt(quantity.min, 4)));
+      ticks.appendChild(el("span", null, fmt(0.5 * (quantity.min + quantity.max), 4)));
+      ticks.appendChild(el("span", null, (quantity.capped ? "\u2265 " : "") + fmt(quantity.max, 4)));
+      L.appendChild(ticks);
+      if (quantity.key === "c") L.appendChild(el("div", null, "grey: not assessed / beyond margin"));
+    }
+    var extra = el("div");
+    extra.innerHTML = envNotes.join("<br>");
+    L.appendChild(extra);
+    if (maxForce > 0) L.appendChild(el("div", null, "red arrows: contact force (longest " + fmt(maxForce / 1000, 4) + " kN)"));
+  }
+
+  // ---------------------------------------------------------------- replay
+  var frameIndex = 0, playing = false, speed = 1, lastTick = null, simTime = frames.length ? frames[0].t : 0;
+  var slider = document.getElementById("slider"), timeLabel = document.getElementById("time");
+  slider.max = Math.max(0, frames.length - 1);
+  var plots = [];
+  function showFrame(i) {
+    if (!frames.length) return;
+    frameIndex = Math.max(0, Math.min(frames.length - 1, i));
+    var f = frames[frameIndex];
+    f.lines.forEach(function (fl, li) { updateTube(li, fl); colourTube(li, fl); });
+    f.v.forEach(function (pose, vi) { placeVessel(vi, pose); });
+    drawContacts(f);
+    slider.value = frameIndex;
+    timeLabel.textContent = isDynamic ? "t = " + f.t.toFixed(2) + " s (frame " + (frameIndex + 1) + " of " +
+        frames.length + ")" : (data.kind === "view" ? "initial shapes" : "static equilibrium");
+    plots.forEach(function (p) { if (p.timeCursor) p.setCursor(f.t); });
+    dirty = true;
+  }
+  function frameAt(t) {
+    var lo = 0, hi = frames.length - 1;
+    while (lo < hi) { var mid = (lo + hi + 1) >> 1; if (frames[mid].t <= t + 1e-9) lo = mid; else hi = mid - 1; }
+    return lo;
+  }
+  slider.addEventListener("input", function () { simTime = frames[+slider.value].t; showFrame(+slider.value); });
+  var playButton = document.getElementById("play");
+  function setPlaying(on) {
+    playing = on && frames.length > 1;
+    playButton.textContent = playing ? "Pause" : "Play";
+    lastTick = null;
+  }
+  playButton.addEventListener("click", function () {
+    if (!playing && frameIndex === frames.length - 1) { simTime = frames[0].t; showFrame(0); }
+    setPlaying(!playing);
+  });
+  var speedSelect = document.getElementById("speed");
+  [0.1, 0.25, 0.5, 1, 2, 5, 10, 20].forEach(function (s) {
+    var o = el("option", { value: s }, s + "\u00d7");
+    if (s === 1) o.selected = true;
+    speedSelect.appendChild(o);
+  });
+  speedSelect.addEventListener("change", function () { speed = +speedSelect.value; });
+  if (!isDynamic) { playButton.disabled = true; speedSelect.disabled = true; slider.disabled = true; }
+  var qSelect = document.getElementById("quantity");
+  quantities.forEach(function (q, i) { qSelect.appendChild(el("option", { value: i }, q.label + (q.unit ? " (" + q.unit + ")" : ""))); });
+  qSelect.addEventListener("change", function () { quantity = quantities[+qSelect.value]; drawLegend(); showFrame(frameIndex); });
+  var exSelect = document.getElementById("exaggeration");
+  exaggerations.forEach(function (x) {
+    var o = el("option", { value: x }, x === 1 ? "true scale" : "\u00d7" + x);
+    if (x === exaggeration) o.selected = true;
+    exSelect.appendChild(o);
+  });
+  exSelect.addEventListener("change", function () { exaggeration = +exSelect.value; showFrame(frameIndex); });
+  var d = data.decimation || {};
+  document.getElementById("note").textContent = isDynamic ?
+      frames.length + " frames of " + d.outputs + " output times (" + (d.stride > 1 ? "every " + d.stride +
+      " output times" : "every output time") + ", output interval " + d.output_interval + " s); the plots use every output time." :
+      (data.kind === "view" ? "The model before any analysis: initial shapes of the lines." :
+       "Statics only: the static equilibrium.");
+  function tick(now) {
+    if (playing && frames.length > 1) {
+      if (lastTick !== null) {
+        simTime += (now - lastTick) / 1000 * speed;
+        if (simTime >= frames[frames.length - 1].t) { simTime = frames[frames.length - 1].t; setPlaying(false); }
+        var i = frameAt(simTime);
+        if (i !== frameIndex) showFrame(i);
+      }
+      lastTick = now;
+    }
+    if (dirty) { controls.update(); renderer.render(scene, camera); dirty = false; }
+    requestAnimationFrame(tick);
+  }
+
+  // ---------------------------------------------------------------- plots (SVG, zoom by drag and wheel)
+  var svgNS = "http://www.w3.org/2000/svg";
+  function svgEl(tag, attrs) {
+    var e = document.createElementNS(svgNS, tag);
+    for (var k in attrs) e.setAttribute(k, attrs[k]);
+    return e;
+  }
+  function niceTicks(lo, hi, n) {
+    var span = hi - lo, step = Math.pow(10, Math.floor(Math.log10(span / n))), err = span / n / step;
+    step *= err >= 7.5 ? 10 : err >= 3.5 ? 5 : err >= 1.5 ? 2 : 1;
+    var out = [];
+    for (var v = Math.ceil(lo / step) * step; v <= hi + 1e-9 * span; v += step) out.push(Math.abs(v) < 1e-12 * step ? 0 : v);
+    return out;
+  }
+  // opts: title, xlabel, ylabel, series [{name, x, y, colour, dash}], timeCursor, equalAxes
+  function makePlot(opts) {
+    var div = el("div", { "class": "plot" });
+    div.appendChild(el("h3", null, opts.title));
+    var W = 560, H = 280, ml = 62, mr = 12, mt = 8, mb = 40;
+    var svg = svgEl("svg", { viewBox: "0 0 " + W + " " + H, preserveAspectRatio: "none" });
+    div.appendChild(svg);
+    var readout = el("div", { "class": "readout" });
+    div.appendChild(readout);
+    div.appendChild(el("div", { "class": "hint" }, "drag: zoom to box \u00b7 wheel: zoom \u00b7 double-click: reset"));
+    document.getElementById("plot-grid").appendChild(div);
+    var full = { x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity };
+    opts.series.forEach(function (s) {
+      for (var i = 0; i < s.x.length; ++i) {
+        if (s.x[i] === null || s.y[i] === null || !isFinite(s.x[i]) || !isFinite(s.y[i])) continue;
+        full.x0 = Math.min(full.x0, s.x[i]); full.x1 = Math.max(full.x1, s.x[i]);
+        full.y0 = Math.min(full.y0, s.y[i]); full.y1 = Math.max(full.y1, s.y[i]);
+      }
+    });
+    if (!isFinite(full.x0)) { full = { x0: 0, x1: 1, y0: 0, y1: 1 }; }
+    function pad(a, b) { var s = b - a; if (s <= 0) s = Math.max(Math.abs(a) * 0.1, 1e-9); return [a - 0.05 * s, b + 0.05 * s]; }
+    var px = pad(full.x0, full.x1), py = pad(full.y0, full.y1);
+    if (opts.equalAxes) {
+      var sx = px[1] - px[0], sy = py[1] - py[0], k = (W - ml - mr) / (H - mt - mb);
+      if (sx / sy > k) { var cy = 0.5 * (py[0] + py[1]); py = [cy - 0.5 * sx / k, cy + 0.5 * sx / k]; }
+      else { var cx = 0.5 * (px[0] + px[1]); px = [cx - 0.5 * sy * k, cx + 0.5 * sy * k]; }
+    }
+    var home = { x0: px[0], x1: px[1], y0: py[0], y1: py[1] }, view = Object.assign({}, home);
+    function X(v) { return ml + (v - view.x0) / (view.x1 - view.x0) * (W - ml - mr); }
+    function Y(v) { return H - mb - (v - view.y0) / (view.y1 - view.y0) * (H - mt - mb); }
+    function invX(px_) { return view.x0 + (px_ - ml) / (W - ml - mr) * (view.x1 - view.x0); }
+    function invY(py_) { return view.y0 + (H - mb - py_) / (H - mt - mb) * (view.y1 - view.y0); }
+    var plot = { timeCursor: opts.timeCursor, cursorT: null };
+    var cursorLine = null, hoverG = null, zoomRect = null;
+    function draw() {
+      while (svg.firstChild) svg.removeChild(svg.firstChild);
+      var clipId = "clip" + Math.random().toString(36).slice(2);
+      var defs = svgEl("defs", {}), cp = svgEl("clipPath", { id: clipId });
+      cp.appendChild(svgEl("rect", { x: ml, y: mt, width: W - ml - mr, height: H - mt - mb }));
+      defs.appendChild(cp);
+      svg.appendChild(defs);
+      niceTicks(view.x0, view.x1, 6).forEach(function (v) {
+        svg.appendChild(svgEl("line", { x1: X(v), x2: X(v), y1: mt, y2: H - mb, stroke: "#eee" }));
+        var t = svgEl("text", { x: X(v), y: H - mb + 14, "font-size": 11, "text-anchor": "middle" });
+        t.textContent = fmt(v, 6);
+        svg.appendChild(t);
+      });
+      niceTicks(view.y0, view.y1, 5).forEach(function (v) {
+        svg.appendChild(svgEl("line", { x1: ml, x2: W - mr, y1: Y(v), y2: Y(v), stroke: "#eee" }));
+        var t = svgEl("text", { x: ml - 4, y: Y(v) + 4, "font-size": 11, "text-anchor": "end" });
+        t.textContent = fmt(v, 6);
+        svg.appendChild(t);
+      });
+      svg.appendChild(svgEl("rect", { x: ml, y: mt, width: W - ml - mr, height: H - mt - mb, fill: "none", stroke: "#888" }));
+      var xl = svgEl("text", { x: (ml + W - mr) / 2, y: H - 6, "font-size": 12, "text-anchor": "middle" });
+      xl.textContent = opts.xlabel;
+      svg.appendChild(xl);
+      var yl = svgEl("text", { x: 12, y: (mt + H - mb) / 2, "font-size": 12, "text-anchor": "middle",
+                               transform: "rotate(-90 12 " + (mt + H - mb) / 2 + ")" });
+      yl.textContent = opts.ylabel;
+      svg.appendChild(yl);
+      var g = svgEl("g", { "clip-path": "url(#" + clipId + ")" });
+      opts.series.forEach(function (s) {
+        var dpath = "", pen = false;
+        // Thin out to about two points per pixel column for long series.
+        var step = Math.max(1, Math.floor(s.x.length / 2000));
+        for (var i = 0; i < s.x.length; i += step) {
+          if (s.y[i] === null || !isFinite(s.y[i])) { pen = false; continue; }
+          dpath += (pen ? "L" : "M") + X(s.x[i]).toFixed(1) + " " + Y(s.y[i]).toFixed(1);
+          pen = true;
+        }
+        var attrs = { d: dpath, fill: "none", stroke: s.colour, "stroke-width": 1.4 };
+        if (s.dash) attrs["stroke-dasharray"] = s.dash;
+        g.appendChild(svgEl("path", attrs));
+      });
+      svg.appendChild(g);
+      // Legend.
+      var lx = ml + 8;
+      opts.series.forEach(function (s) {
+        var t = svgEl("text", { x: lx + 16, y: mt + 14, "font-size": 11 });
+        t.textContent = s.name;
+        svg.appendChild(svgEl("line", { x1: lx, x2: lx + 13, y1: mt + 10, y2: mt + 10, stroke: s.colour,
+                                        "stroke-width": 2, "stroke-dasharray": s.dash || "" }));
+        svg.appendChild(t);
+        lx += 24 + 6.2 * s.name.length;
+      });
+      cursorLine = svgEl("line", { x1: 0, x2: 0, y1: mt, y2: H - mb, stroke: "#000", "stroke-dasharray": "3 3",
+                                   visibility: "hidden" });
+      svg.appendChild(cursorLine);
+      hoverG = svgEl("g", {});
+      svg.appendChild(hoverG);
+      zoomRect = svgEl("rect", { fill: "#1d355722", stroke: "#1d3557", visibility: "hidden" });
+      svg.appendChild(zoomRect);
+      plot.setCursor(plot.cursorT);
+    }
+    plot.setCursor = function (t) {
+      plot.cursorT = t;
+      if (!cursorLine) return;
+      if (t === null || t < view.x0 || t > view.x1) { cursorLine.setAttribute("visibility", "hidden"); return; }
+      cursorLine.setAttribute("x1", X(t)); cursorLine.setAttribute("x2", X(t));
+      cursorLine.setAttribute("visibility", "visible");
+    };
+    function svgPoint(ev) {
+      var r = svg.getBoundingClientRect();
+      return [(ev.clientX - r.left) / r.width * W, (ev.clientY - r.top) / r.height * H];
+    }
+    var dragStart = null;
+    svg.addEventListener("mousedown", function (ev) { dragStart = svgPoint(ev); ev.preventDefault(); });
+    svg.addEventListener("mousemove", function (ev) {
+      var p = svgPoint(ev);
+      if (dragStart) {
+        zoomRect.setAttribute("x", Math.min(p[0], dragStart[0])); zoomRect.setAttribute("y", Math.min(p[1], dragStart[1]));
+        zoomRect.setAttribute("width", Math.abs(p[0] - dragStart[0])); zoomRect.setAttribute("height", Math.abs(p[1] - dragStart[1]));
+        zoomRect.setAttribute("visibility", "visible");
+        return;
+      }
+      // Hover: the nearest point of each series (in screen distance).
+      while (hoverG.firstChild) hoverG.removeChild(hoverG.firstChild);
+      var parts = [];
+      opts.series.forEach(function (s) {
+        var best = -1, bd = Infinity;
+        for (var i = 0; i < s.x.length; ++i) {
+          if (s.y[i] === null || !isFinite(s.y[i])) continue;
+          var dx = X(s.x[i]) - p[0], dy = opts.byDistance ? Y(s.y[i]) - p[1] : 0, dd = dx * dx + dy * dy;
+          if (dd < bd) { bd = dd; best = i; }
+        }
+        if (best < 0) return;
+        hoverG.appendChild(svgEl("circle", { cx: X(s.x[best]), cy: Y(s.y[best]), r: 3.5, fill: s.colour }));
+        parts.push(s.name + ": " + opts.xlabel.split(" (")[0] + " " + fmt(s.x[best], 6) + ", " + fmt(s.y[best], 5));
+      });
+      readout.textContent = parts.join("  |  ");
+    });
+    window.addEventListener("mouseup", function (ev) {
+      if (!dragStart) return;
+      var p = svgPoint(ev), a = dragStart;
+      dragStart = null;
+      zoomRect.setAttribute("visibility", "hidden");
+      if (Math.abs(p[0] - a[0]) < 5 || Math.abs(p[1] - a[1]) < 5) return;
+      var nx0 = invX(Math.min(a[0], p[0])), nx1 = invX(Math.max(a[0], p[0]));
+      var ny0 = invY(Math.max(a[1], p[1])), ny1 = invY(Math.min(a[1], p[1]));
+      view = { x0: nx0, x1: nx1, y0: ny0, y1: ny1 };
+      draw();
+    });
+    svg.addEventListener("wheel", function (ev) {
+      ev.preventDefault();
+      var p = svgPoint(ev), f = ev.deltaY > 0 ? 1.25 : 0.8, cx = invX(p[0]), cy = invY(p[1]);
+      view = { x0: cx + (view.x0 - cx) * f, x1: cx + (view.x1 - cx) * f, y0: cy + (view.y0 - cy) * f, y1: cy + (view.y1 - cy) * f };
+      draw();
+    }, { passive: false });
+    svg.addEventListener("dblclick", function () { view = Object.assign({}, home); draw(); });
+    svg.addEventListener("mouseleave", function () { readout.textContent = ""; if (hoverG) while (hoverG.firstChild) hoverG.removeChild(hoverG.firstChild); });
+    draw();
+    plots.push(plot);
+    return plot;
+  }
+
+  var h = data.history || { t: [] };
+  if (h.t.length) {
+    var series = [];
+    data.lines.forEach(function (l, i) {
+      series.push({ name: l.name + " A", x: h.t, y: h.endTension[2 * i], colour: lineColour(i) });
+      series.push({ name: l.name + " B", x: h.t, y: h.endTension[2 * i + 1], colour: lineColour(i), dash: "5 3" });
+    });
+    makePlot({ title: "End tensions", xlabel: "time (s)", ylabel: "tension (kN)", series: series, timeCursor: true });
+  }
+  [["T", "Effective tension", "tension (kN)"], ["M", "Bending moment", "bending moment (kN m)"]].forEach(function (q) {
+    if (!data.ranges || !data.ranges.length || data.kind === "view") return;
+    var series = [];
+    data.ranges.forEach(function (r, i) {
+      if (!r) return;
+      var arc = data.lines[i].arc, same = isDynamic ? false : true;
+      series.push({ name: data.lines[i].name + (same ? "" : " max"), x: arc, y: r[q[0] + "max"], colour: lineColour(i) });
+      if (!same) series.push({ name: data.lines[i].name + " min", x: arc, y: r[q[0] + "min"], colour: lineColour(i), dash: "5 3" });
+    });
+    if (q[0] === "M" && series.every(function (s) { return s.y.every(function (v) { return !v; }); })) return;
+    makePlot({ title: q[1] + (isDynamic ? ": range graph (every time step)" : ": static equilibrium"),
+               xlabel: "arc length from end A (m)", ylabel: q[2], series: series });
+  });
+  if (data.clash && data.clash.t && data.clash.t.length) {
+    makePlot({ title: "Minimum clearance between lines", xlabel: "time (s)", ylabel: "clearance (m)", timeCursor: true,
+               series: data.clash.pairs.map(function (p, i) {
+                 return { name: p[0] + " / " + p[1], x: data.clash.t, y: data.clash.clearance[i], colour: lineColour(i) };
+               }) });
+  }
+  if (data.envelope && data.envelope.length) {
+    var es = [];
+    data.envelope.forEach(function (s, i) {
+      var name = data.lines[s.line].name + " to " + data.lines[s.other].name;
+      es.push({ name: name + " static", x: data.lines[s.line].arc, y: s.static, colour: lineColour(i), dash: "5 3" });
+      if (s.dynamic.some(function (v) { return v !== null; }))
+        es.push({ name: name + " dynamic min", x: data.lines[s.line].arc, y: s.dynamic, colour: lineColour(i) });
+    });
+    makePlot({ title: "Clearance envelope", xlabel: "arc length (m)", ylabel: "clearance (m)", series: es });
+  }
+  if (data.vessels.length && h.vesselXY && h.vesselXY.length && h.t.length) {
+    makePlot({ title: "Vessel drift path (plan view)", xlabel: "x (m)", ylabel: "y (m)", equalAxes: true, byDistance: true,
+               series: data.vessels.map(function (v, i) {
+                 return { name: v.name, x: h.vesselXY[2 * i], y: h.vesselXY[2 * i + 1], colour: lineColour(i + 3) };
+               }) });
+  }
+  if (!plots.length) document.getElementById("plot-grid").appendChild(el("p", null, "No plots: no analysis results."));
+
+  // ---------------------------------------------------------------- clash table
+  var clashRows = 0;
+  (function clashTable() {
+    var body = document.getElementById("clash-body");
+    var events = data.clash && data.clash.events ? data.clash.events : [];
+    if (!events.length) {
+      body.appendChild(el("p", null, data.clash ? "No contact events." : "No line contact in this model (or no dynamics)."));
+      return;
+    }
+    body.appendChild(el("p", null, "Click a row to replay the event; click a header to sort."));
+    var cols = [
+      ["#", function (e, i) { return i + 1; }],
+      ["lines", function (e) { return data.lines[e.a].name + " / " + data.lines[e.b].name; }, true],
+      ["kind", function (e) { return e.kind; }, true],
+      ["start (s)", function (e) { return e.start; }], ["end (s)", function (e) { return e.end; }],
+      ["peak force (kN)", function (e) { return e.peak / 1000; }], ["impulse (N s)", function (e) { return e.impulse; }],
+      ["impact speed (m/s)", function (e) { return e.speed; }], ["impact energy (J)", function (e) { return e.energy; }],
+      ["arc A (m)", function (e) { return e.arcA; }], ["arc B (m)", function (e) { return e.arcB; }],
+      ["x (m)", function (e) { return e.pos[0]; }], ["y (m)", function (e) { return e.pos[1]; }],
+      ["z (m)", function (e) { return e.pos[2]; }]];
+    var table = el("table"), thead = el("thead"), hr = el("tr"), tbody = el("tbody");
+    var rows = events.map(function (e, i) { return { e: e, v: cols.map(function (c) { return c[1](e, i); }) }; });
+    var sortCol = 0, sortDir = 1;
+    function fill() {
+      while (tbody.firstChild) tbody.removeChild(tbody.firstChild);
+      rows.sort(function (a, b) {
+        var x = a.v[sortCol], y = b.v[sortCol];
+        return (x < y ? -1 : x > y ? 1 : 0) * sortDir;
+      });
+      rows.forEach(function (r) {
+        var tr = el("tr", { "data-start": r.e.start });
+        r.v.forEach(function (v, c) { tr.appendChild(el("td", cols[c][2] ? { "class": "text" } : null, typeof v === "number" ? fmt(v, 5) : v)); });
+        tr.addEventListener("click", function () {
+          Array.prototype.forEach.call(tbody.children, function (x) { x.classList.remove("selected"); });
+          tr.classList.add("selected");
+          setPlaying(false);
+          simTime = r.e.start;
+          showFrame(frameAt(r.e.start));
+          document.getElementById("view").scrollIntoView({ behavior: "smooth" });
+        });
+        tbody.appendChild(tr);
+      });
+    }
+    cols.forEach(function (c, k) {
+      var th = el("th", c[2] ? { "class": "text" } : null, c[0]);
+      th.addEventListener("click", function () { sortDir = sortCol === k ? -sortDir : 1; sortCol = k; fill(); });
+      hr.appendChild(th);
+    });
+    thead.appendChild(hr);
+    table.appendChild(thead);
+    table.appendChild(tbody);
+    fill();
+    body.appendChild(table);
+    clashRows = rows.length;
+  })();
+
+  // ---------------------------------------------------------------- start, and the test hooks
+  drawLegend();
+  showFrame(0);
+  controls.update();
+  renderer.render(scene, camera);
+  requestAnimationFrame(tick);
+
+  function checksum() {
+    var s = 0;
+    tubes.forEach(function (m) { var a = m.geometry.attributes.position.array; for (var i = 0; i < a.length; ++i) s += Math.abs(a[i]) * ((i % 7) + 1); });
+    return s;
+  }
+  function drawnPixels() {
+    var gl = renderer.getContext(), w = gl.drawingBufferWidth, hh = gl.drawingBufferHeight;
+    var px = new Uint8Array(w * hh * 4), count = 0;
+    gl.readPixels(0, 0, w, hh, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    for (var i = 0; i < px.length; i += 4) if (Math.abs(px[i] - 0xdf) + Math.abs(px[i + 1] - 0xe8) + Math.abs(px[i + 2] - 0xf0) > 30) ++count;
+    return count;
+  }
+  status.frames = frames.length;
+  status.meshes = tubes.length;
+  status.vessels = vessels.length;
+  status.clashRows = clashRows;
+  status.plots = plots.length;
+  status.quantities = quantities.map(function (q) { return q.key; });
+  status.checksumFirst = checksum();
+  status.pixelsDrawn = drawnPixels();
+  if (location.hash.indexOf("selftest") >= 0 && frames.length > 1) {
+    showFrame(frames.length - 1);
+    renderer.render(scene, camera);
+    status.checksumLast = checksum();
+    status.contactsLast = contactGroup.children.length;
+    var slid = -1;
+    // Move through the slider's own input event, as a user does.
+    slider.value = String(frames.length - 1);
+    slider.dispatchEvent(new Event("input"));
+    slid = checksum();
+    status.checksumSlider = slid;
+    if (clashRows) {
+      var row = document.querySelector("#clash-body tbody tr");
+      row.click();
+      status.frameAfterRowClick = frameIndex;
+      status.eventStart = +row.getAttribute("data-start");
+      status.frameTimeAfterRowClick = frames[frameIndex].t;
+    }
+    showFrame(0);
+    renderer.render(scene, camera);
+    status.checksumBack = checksum();
+  }
+  status.ready = true;
+  var st = document.getElementById("tangle-status");
+  st.textContent = JSON.stringify(status);
+  window.TANGLE_STATUS = status;
+})();
