@@ -739,7 +739,7 @@
     slid = checksum();
     status.checksumSlider = slid;
     if (clashRows) {
-      var row = document.querySelector("#clash-body tbody tr");
+      var all = document.querySelectorAll("#clash-body tbody tr"), row = all[all.length - 1];
       row.click();
       status.frameAfterRowClick = frameIndex;
       status.eventStart = +row.getAttribute("data-start");
