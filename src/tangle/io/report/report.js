@@ -128,12 +128,12 @@
 
   // Seabed and sea surface, a margin around the lines.
   var margin = 0.15 * sceneSize;
-  var planeW = size.x + 2 * margin, planeH = size.y + 2 * margin;
+  var planeW = Math.max(size.x, size.y) + 2 * margin, planeH = planeW;
   var seabed = new THREE.Mesh(new THREE.PlaneBufferGeometry(planeW, planeH),
       new THREE.MeshLambertMaterial({ color: 0xc8b58a, side: THREE.DoubleSide }));
   seabed.position.set(centre.x, centre.y, -data.depth);
   scene.add(seabed);
-  var grid = new THREE.GridHelper(Math.max(planeW, planeH), 20, 0x9c8a60, 0xb0a070);
+  var grid = new THREE.GridHelper(planeW, 20, 0x9c8a60, 0xb0a070);
   grid.rotation.x = Math.PI / 2;
   grid.position.set(centre.x, centre.y, -data.depth + 0.01);
   scene.add(grid);
@@ -170,15 +170,20 @@
 
   // Lines as tubes of their contact diameter (exaggerated on request: a 0.5 m riser 1 km long is a hair).
   var ring = 10;
-  var maxDiam = 0;
-  data.lines.forEach(function (l) { l.diam.forEach(function (d) { maxDiam = Math.max(maxDiam, d); }); });
+  var maxDiam = 0, diams = [];
+  data.lines.forEach(function (l) { l.diam.forEach(function (d) { maxDiam = Math.max(maxDiam, d); diams.push(d); }); });
+  diams.sort(function (a, b) { return a - b; });
+  // Automatic exaggeration: the thicker lines (75th percentile of the node diameters) about 1/600 of the scene.
+  var typicalDiam = diams.length ? diams[Math.floor(0.75 * (diams.length - 1))] : 1;
   var exaggerations = [1, 2, 5, 10, 20, 50, 100];
   var autoEx = 1;
   for (var e = 0; e < exaggerations.length; ++e) {
     autoEx = exaggerations[e];
-    if (maxDiam * autoEx >= sceneSize / 250) break;
+    if (typicalDiam * autoEx >= sceneSize / 600) break;
   }
   var exaggeration = autoEx;
+  // Exaggerated tubes are at least this thick [m], so a chain beside a riser stays visible.
+  var minRadius = sceneSize / 1500;
   var tubes = data.lines.map(function (line, li) {
     var n = line.arc.length;
     var g = new THREE.BufferGeometry();
@@ -218,6 +223,7 @@
       nrm.normalize();
       bin.crossVectors(t, nrm);
       var r = 0.5 * diam[i] * exaggeration;
+      if (exaggeration > 1) r = Math.max(r, minRadius);
       for (var k = 0; k < ring; ++k) {
         var ang = 2 * Math.PI * k / ring, c = Math.cos(ang), s = Math.sin(ang);
         var nx = c * nrm.x + s * bin.x, ny = c * nrm.y + s * bin.y, nz = c * nrm.z + s * bin.z;
@@ -350,6 +356,8 @@
       L.appendChild(ticks);
       if (quantity.key === "c") L.appendChild(el("div", null, "grey: not assessed / beyond margin"));
     }
+    L.appendChild(el("div", null, exaggeration > 1 ? "tubes: contact diameter \u00d7" + exaggeration + ", at least " +
+        fmt(2 * minRadius, 2) + " m" : "tubes: contact diameter to scale"));
     var extra = el("div");
     extra.innerHTML = envNotes.join("<br>");
     L.appendChild(extra);
@@ -407,7 +415,7 @@
     if (x === exaggeration) o.selected = true;
     exSelect.appendChild(o);
   });
-  exSelect.addEventListener("change", function () { exaggeration = +exSelect.value; showFrame(frameIndex); });
+  exSelect.addEventListener("change", function () { exaggeration = +exSelect.value; drawLegend(); showFrame(frameIndex); });
   var d = data.decimation || {};
   document.getElementById("note").textContent = isDynamic ?
       frames.length + " frames of " + d.outputs + " output times (" + (d.stride > 1 ? "every " + d.stride +
@@ -749,6 +757,7 @@
     renderer.render(scene, camera);
     status.checksumBack = checksum();
   }
+  status.openMs = Math.round(performance.now());  // navigation start to the first frame drawn
   status.ready = true;
   var st = document.getElementById("tangle-status");
   st.textContent = JSON.stringify(status);
