@@ -1,8 +1,9 @@
 #include "tangle/io/HtmlReport.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -27,12 +28,24 @@ std::string quote(std::string_view s) {
   char prev = 0;
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
-      case '/': out += prev == '<' ? "\\/" : "/"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '/':
+        out += prev == '<' ? "\\/" : "/";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           out += fmt::format("\\u{:04x}", static_cast<int>(c));
@@ -91,9 +104,12 @@ Vec3 pointAt(const solver::LineSnapshot& s, double arc) {
 
 const char* modeName(model::VesselMode m) {
   switch (m) {
-    case model::VesselMode::Fixed: return "fixed";
-    case model::VesselMode::Prescribed: return "prescribed";
-    case model::VesselMode::Free: return "free";
+    case model::VesselMode::Fixed:
+      return "fixed";
+    case model::VesselMode::Prescribed:
+      return "prescribed";
+    case model::VesselMode::Free:
+      return "free";
   }
   return "?";
 }
@@ -129,8 +145,8 @@ std::string HtmlReport::frameJson(const std::vector<solver::LineSnapshot>& lines
     const solver::LineSnapshot& s = lines[l];
     if (l) out += ',';
     out += "{\"p\":" + array(3 * s.position.size(), [&](std::size_t i) {
-      return fmt::format("{}", std::llround(1000.0 * s.position[i / 3][static_cast<int>(i % 3)]));
-    });
+             return fmt::format("{}", std::llround(1000.0 * s.position[i / 3][static_cast<int>(i % 3)]));
+           });
     out += ",\"T\":" + sigArray(s.tension, 4, 1e-3);
     out += ",\"M\":" + sigArray(s.bendingMoment, 4, 1e-3);
     out += ",\"C\":" + sigArray(s.curvature, 3);
@@ -149,12 +165,12 @@ std::string HtmlReport::frameJson(const std::vector<solver::LineSnapshot>& lines
     out += '}';
   }
   out += "],\"v\":" + array(m_model->vessels().size(), [&](std::size_t v) {
-    const int node = m_model->vesselNode(static_cast<int>(v));
-    const Vec3 r = geometry::logMap(state.triad[node]);
-    const Vec3& x = state.position[node];
-    return fmt::format("[{},{},{},{},{},{}]", fixed(x.x(), 3), fixed(x.y(), 3), fixed(x.z(), 3), sig(r.x(), 6),
-                       sig(r.y(), 6), sig(r.z(), 6));
-  });
+           const int node = m_model->vesselNode(static_cast<int>(v));
+           const Vec3 r = geometry::logMap(state.triad[node]);
+           const Vec3& x = state.position[node];
+           return fmt::format("[{},{},{},{},{},{}]", fixed(x.x(), 3), fixed(x.y(), 3), fixed(x.z(), 3),
+                              sig(r.x(), 6), sig(r.y(), 6), sig(r.z(), 6));
+         });
   // Contact patches: force centroid on both lines and the total normal force.
   out += ",\"k\":[";
   if (contact) {
@@ -183,7 +199,8 @@ void HtmlReport::setStatics(const std::vector<solver::LineSnapshot>& lines, cons
 }
 
 void HtmlReport::recordOutput(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
-                              const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope) {
+                              const contact::LineContact* contact,
+                              const contact::ClearanceEnvelope* envelope) {
   m_time.push_back(state.time);
   for (std::size_t l = 0; l < lines.size() && 2 * l + 1 < m_endTension.size(); ++l) {
     m_endTension[2 * l].push_back(lines[l].endTensionA);
@@ -198,14 +215,15 @@ void HtmlReport::recordOutput(const std::vector<solver::LineSnapshot>& lines, co
   ++m_outputs;
 }
 
-void HtmlReport::setRange(int line, const std::vector<double>& tensionMin, const std::vector<double>& tensionMax,
-                          const std::vector<double>& momentMin, const std::vector<double>& momentMax,
-                          const std::vector<double>& curvatureMin, const std::vector<double>& curvatureMax) {
+void HtmlReport::setRange(int line, const std::vector<double>& tensionMin,
+                          const std::vector<double>& tensionMax, const std::vector<double>& momentMin,
+                          const std::vector<double>& momentMax, const std::vector<double>& curvatureMin,
+                          const std::vector<double>& curvatureMax) {
   if (static_cast<int>(m_rangeParts.size()) <= line) m_rangeParts.resize(line + 1);
-  m_rangeParts[line] = fmt::format(
-      "{{\"Tmin\":{},\"Tmax\":{},\"Mmin\":{},\"Mmax\":{},\"Cmin\":{},\"Cmax\":{}}}", sigArray(tensionMin, 4, 1e-3),
-      sigArray(tensionMax, 4, 1e-3), sigArray(momentMin, 4, 1e-3), sigArray(momentMax, 4, 1e-3),
-      sigArray(curvatureMin, 3), sigArray(curvatureMax, 3));
+  m_rangeParts[line] =
+      fmt::format("{{\"Tmin\":{},\"Tmax\":{},\"Mmin\":{},\"Mmax\":{},\"Cmin\":{},\"Cmax\":{}}}",
+                  sigArray(tensionMin, 4, 1e-3), sigArray(tensionMax, 4, 1e-3), sigArray(momentMin, 4, 1e-3),
+                  sigArray(momentMax, 4, 1e-3), sigArray(curvatureMin, 3), sigArray(curvatureMax, 3));
 }
 
 void HtmlReport::setClash(const contact::LineContact& contact, const contact::ClashReport& clash) {
@@ -225,8 +243,8 @@ void HtmlReport::setClash(const contact::LineContact& contact, const contact::Cl
   // Minimum clearance of each pair against time (output times).
   const auto& pairs = clash.pairs();
   out += ",\"pairs\":" + array(pairs.size(), [&](std::size_t p) {
-    return fmt::format("[{},{}]", quote(lines[pairs[p][0]].name), quote(lines[pairs[p][1]].name));
-  });
+           return fmt::format("[{},{}]", quote(lines[pairs[p][0]].name), quote(lines[pairs[p][1]].name));
+         });
   std::vector<double> times;
   std::vector<std::vector<double>> values(pairs.size());
   for (const auto& s : clash.samples()) {
@@ -238,8 +256,8 @@ void HtmlReport::setClash(const contact::LineContact& contact, const contact::Cl
   }
   out += ",\"t\":" + array(times.size(), [&](std::size_t i) { return fixed(times[i], 4); });
   out += ",\"clearance\":" + array(values.size(), [&](std::size_t p) {
-    return array(values[p].size(), [&](std::size_t i) { return fixed(values[p][i], 4); });
-  });
+           return array(values[p].size(), [&](std::size_t i) { return fixed(values[p][i], 4); });
+         });
   m_clash = out + "}";
 }
 
@@ -247,9 +265,10 @@ void HtmlReport::setEnvelope(const contact::ClearanceEnvelope& envelope) {
   const auto& sides = envelope.sides();
   m_envelope = array(sides.size(), [&](std::size_t i) {
     const auto& s = sides[i];
-    return fmt::format("{{\"line\":{},\"other\":{},\"static\":{},\"dynamic\":{}}}", s.line, s.other,
-                       array(s.staticClearance.size(), [&](std::size_t k) { return fixed(s.staticClearance[k], 4); }),
-                       array(s.dynamicClearance.size(), [&](std::size_t k) { return fixed(s.dynamicClearance[k], 4); }));
+    return fmt::format(
+        "{{\"line\":{},\"other\":{},\"static\":{},\"dynamic\":{}}}", s.line, s.other,
+        array(s.staticClearance.size(), [&](std::size_t k) { return fixed(s.staticClearance[k], 4); }),
+        array(s.dynamicClearance.size(), [&](std::size_t k) { return fixed(s.dynamicClearance[k], 4); }));
   });
 }
 
@@ -274,47 +293,63 @@ std::string HtmlReport::json() const {
   f.write("\"summary\":" + quote(m_summary) + ",");
   f.write(fmt::format("\"depth\":{},", fixed(env.waterDepth, 3)));
   // Lines: names, arc lengths, contact diameters, sections.
-  f.write("\"lines\":" + array(m.lines().size(), [&](std::size_t l) {
-    const model::Line& line = m.lines()[l];
-    const auto& d = m.nodeContactDiameter();
-    std::string sections = array(line.spec->sections.size(), [&](std::size_t k) {
-      const model::SectionSpec& s = line.spec->sections[k];
-      return fmt::format("{{\"type\":{},\"length\":{},\"elements\":{}}}", quote(s.lineType), fixed(s.length, 3),
-                         s.elements);
-    });
-    return fmt::format("{{\"name\":{},\"length\":{},\"arc\":{},\"diam\":{},\"sections\":{}}}", quote(line.name),
-                       fixed(line.length, 3),
-                       array(line.arcLength.size(), [&](std::size_t i) { return fixed(line.arcLength[i], 3); }),
-                       array(static_cast<std::size_t>(line.nodeCount),
-                             [&](std::size_t i) { return fixed(d[line.firstNode + i], 4); }),
-                       sections);
-  }) + ",");
+  f.write("\"lines\":" +
+          array(m.lines().size(),
+                [&](std::size_t l) {
+                  const model::Line& line = m.lines()[l];
+                  const auto& d = m.nodeContactDiameter();
+                  std::string sections = array(line.spec->sections.size(), [&](std::size_t k) {
+                    const model::SectionSpec& s = line.spec->sections[k];
+                    return fmt::format("{{\"type\":{},\"length\":{},\"elements\":{}}}", quote(s.lineType),
+                                       fixed(s.length, 3), s.elements);
+                  });
+                  return fmt::format("{{\"name\":{},\"length\":{},\"arc\":{},\"diam\":{},\"sections\":{}}}",
+                                     quote(line.name), fixed(line.length, 3),
+                                     array(line.arcLength.size(),
+                                           [&](std::size_t i) { return fixed(line.arcLength[i], 3); }),
+                                     array(static_cast<std::size_t>(line.nodeCount),
+                                           [&](std::size_t i) { return fixed(d[line.firstNode + i], 4); }),
+                                     sections);
+                }) +
+          ",");
   // Vessels as boxes: length L from the current-force areas (A_y = L T, A_x = B T) when given.
-  f.write("\"vessels\":" + array(m.vessels().size(), [&](std::size_t v) {
-    const model::VesselSpec& s = m.vessels()[v];
-    const Vec3& a = s.currentAreas;
-    const double length = a.z() > 0.0 ? a.z() : 100.0;
-    const double draft = a.y() > 0.0 ? std::clamp(a.y() / length, 1.0, 0.5 * length) : 0.1 * length;
-    const double breadth = a.x() > 0.0 ? std::clamp(a.x() / draft, 1.0, length) : 0.2 * length;
-    const bool sized = a.x() > 0.0 && a.y() > 0.0 && a.z() > 0.0;
-    return fmt::format("{{\"name\":{},\"mode\":{},\"length\":{},\"breadth\":{},\"draft\":{},\"sized\":{}}}",
-                       quote(s.name), quote(modeName(s.mode)), fixed(length, 2), fixed(breadth, 2), fixed(draft, 2),
-                       sized ? "true" : "false");
-  }) + ",");
-  f.write("\"current\":" + array(env.current.size(), [&](std::size_t i) {
-    const auto& c = env.current[i];
-    return fmt::format("{{\"z\":{},\"speed\":{},\"azimuth\":{}}}", fixed(c.z, 3), fixed(c.speed, 4),
-                       fixed(c.azimuth, 6));
-  }) + ",");
+  f.write("\"vessels\":" +
+          array(m.vessels().size(),
+                [&](std::size_t v) {
+                  const model::VesselSpec& s = m.vessels()[v];
+                  const Vec3& a = s.currentAreas;
+                  const double length = a.z() > 0.0 ? a.z() : 100.0;
+                  const double draft =
+                      a.y() > 0.0 ? std::clamp(a.y() / length, 1.0, 0.5 * length) : 0.1 * length;
+                  const double breadth = a.x() > 0.0 ? std::clamp(a.x() / draft, 1.0, length) : 0.2 * length;
+                  const bool sized = a.x() > 0.0 && a.y() > 0.0 && a.z() > 0.0;
+                  return fmt::format(
+                      "{{\"name\":{},\"mode\":{},\"length\":{},\"breadth\":{},\"draft\":{},\"sized\":{}}}",
+                      quote(s.name), quote(modeName(s.mode)), fixed(length, 2), fixed(breadth, 2),
+                      fixed(draft, 2), sized ? "true" : "false");
+                }) +
+          ",");
+  f.write("\"current\":" +
+          array(env.current.size(),
+                [&](std::size_t i) {
+                  const auto& c = env.current[i];
+                  return fmt::format("{{\"z\":{},\"speed\":{},\"azimuth\":{}}}", fixed(c.z, 3),
+                                     fixed(c.speed, 4), fixed(c.azimuth, 6));
+                }) +
+          ",");
   const model::WaveSpec& w = env.waves;
   f.write(fmt::format("\"waves\":{{\"kind\":{},\"height\":{},\"period\":{},\"azimuth\":{}}},",
-                      quote(w.kind == model::WaveKind::None ? "none" : w.kind == model::WaveKind::Airy ? "airy" : "jonswap"),
+                      quote(w.kind == model::WaveKind::None   ? "none"
+                            : w.kind == model::WaveKind::Airy ? "airy"
+                                                              : "jonswap"),
                       fixed(w.kind == model::WaveKind::Jonswap ? w.significantHeight : w.height, 3),
-                      fixed(w.kind == model::WaveKind::Jonswap ? w.peakPeriod : w.period, 3), fixed(w.azimuth, 6)));
-  f.write(fmt::format("\"wind\":{{\"speed\":{},\"azimuth\":{}}},", fixed(env.windSpeed, 3), fixed(env.windAzimuth, 6)));
+                      fixed(w.kind == model::WaveKind::Jonswap ? w.peakPeriod : w.period, 3),
+                      fixed(w.azimuth, 6)));
+  f.write(fmt::format("\"wind\":{{\"speed\":{},\"azimuth\":{}}},", fixed(env.windSpeed, 3),
+                      fixed(env.windAzimuth, 6)));
   const double interval = spec.dynamics.outputInterval;
-  f.write(fmt::format("\"decimation\":{{\"stride\":{},\"output_interval\":{},\"outputs\":{},\"frames\":{}}},", m_stride,
-                      sig(interval, 6), m_outputs, m_frames.size()));
+  f.write(fmt::format("\"decimation\":{{\"stride\":{},\"output_interval\":{},\"outputs\":{},\"frames\":{}}},",
+                      m_stride, sig(interval, 6), m_outputs, m_frames.size()));
   f.write("\"statics\":" + (m_statics.empty() ? std::string("null") : m_statics) + ",");
   f.write("\"frames\":[");
   for (std::size_t i = 0; i < m_frames.size(); ++i) {
@@ -325,13 +360,20 @@ std::string HtmlReport::json() const {
   f.write("],");
   // Histories at every output time (end tensions [kN], vessel x, y [m]).
   f.write("\"history\":{\"t\":" + array(m_time.size(), [&](std::size_t i) { return fixed(m_time[i], 4); }));
-  f.write(",\"endTension\":" + array(m_endTension.size(), [&](std::size_t k) { return sigArray(m_endTension[k], 5, 1e-3); }));
-  f.write(",\"vesselXY\":" + array(m_vesselXY.size(), [&](std::size_t k) {
-    return array(m_vesselXY[k].size(), [&](std::size_t i) { return fixed(m_vesselXY[k][i], 3); });
-  }) + "},");
-  f.write("\"ranges\":" + array(m_rangeParts.size(), [&](std::size_t l) {
-    return m_rangeParts[l].empty() ? std::string("null") : m_rangeParts[l];
-  }) + ",");
+  f.write(",\"endTension\":" +
+          array(m_endTension.size(), [&](std::size_t k) { return sigArray(m_endTension[k], 5, 1e-3); }));
+  f.write(",\"vesselXY\":" +
+          array(m_vesselXY.size(),
+                [&](std::size_t k) {
+                  return array(m_vesselXY[k].size(),
+                               [&](std::size_t i) { return fixed(m_vesselXY[k][i], 3); });
+                }) +
+          "},");
+  f.write(
+      "\"ranges\":" +
+      array(m_rangeParts.size(),
+            [&](std::size_t l) { return m_rangeParts[l].empty() ? std::string("null") : m_rangeParts[l]; }) +
+      ",");
   f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + "}\n");
   return std::move(f.s);
 }

@@ -78,18 +78,19 @@ class HtmlReport {
 
  private:
   std::string frameJson(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
-                        const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope) const;
+                        const contact::LineContact* contact,
+                        const contact::ClearanceEnvelope* envelope) const;
 
   const model::Model* m_model;
   std::string m_kind, m_summary, m_status;
   int m_stride = 1;
   int m_outputs = 0;
-  std::string m_statics;              ///< JSON of the static frame
-  std::vector<std::string> m_frames;  ///< JSON of each kept dynamic frame
-  std::vector<double> m_time;         ///< every output time [s]
+  std::string m_statics;                          ///< JSON of the static frame
+  std::vector<std::string> m_frames;              ///< JSON of each kept dynamic frame
+  std::vector<double> m_time;                     ///< every output time [s]
   std::vector<std::vector<double>> m_endTension;  ///< per line end (2 per line), per output [N]
   std::vector<std::vector<double>> m_vesselXY;    ///< per vessel x, y (2 per vessel), per output [m]
-  std::vector<std::string> m_rangeParts;  ///< JSON range graphs per line
+  std::vector<std::string> m_rangeParts;          ///< JSON range graphs per line
   std::string m_clash = "null", m_envelope = "[]";
 };
 

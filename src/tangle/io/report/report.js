@@ -68,8 +68,9 @@
     quantities.push({ key: "C", label: "curvature", unit: "1/m" });
   }
   if (frames.length && frames[0].lines.some(function (l) { return l.c; }))
-    quantities.push({ key: "c", label: "clearance", unit: "m", reversed: true, cap: 10 });
-  quantities.push({ key: "line", label: "line", unit: "" });
+    quantities.push({ key: "c", label: "clearance", unit: "m", reversed: true, clearance: true });
+  if (data.kind === "view") quantities.unshift({ key: "line", label: "line", unit: "" });
+  else quantities.push({ key: "line", label: "line", unit: "" });
   quantities.forEach(function (q) {
     if (q.key === "line") return;
     var lo = Infinity, hi = -Infinity;
@@ -80,7 +81,13 @@
         for (var i = 0; i < v.length; ++i) if (v[i] !== null) { if (v[i] < lo) lo = v[i]; if (v[i] > hi) hi = v[i]; }
       });
     });
-    if (q.cap !== undefined && hi > q.cap) { hi = Math.max(q.cap, lo); q.capped = true; }
+    if (q.clearance && isFinite(lo)) {
+      // Small clearances matter: the scale starts at 0 (or the deepest overlap) and ends at 10 m or
+      // three times the smallest clearance, larger ones in the end colour.
+      var cap = Math.max(10, 3 * Math.max(lo, 0));
+      lo = Math.min(lo, 0);
+      if (hi > cap) { hi = cap; q.capped = true; }
+    }
     if (!isFinite(lo)) { lo = 0; hi = 1; }
     if (hi - lo < 1e-12 * Math.max(1, Math.abs(hi))) { hi = lo + Math.max(1e-9, Math.abs(lo) * 1e-3); }
     q.min = lo; q.max = hi;
@@ -658,7 +665,8 @@
     var body = document.getElementById("clash-body");
     var events = data.clash && data.clash.events ? data.clash.events : [];
     if (!events.length) {
-      body.appendChild(el("p", null, data.clash ? "No contact events." : "No line contact in this model (or no dynamics)."));
+      body.appendChild(el("p", null, data.kind === "view" ? "Model view: no analysis yet." :
+          data.clash ? "No contact events." : "No line contact in this model (or no dynamics)."));
       return;
     }
     body.appendChild(el("p", null, "Click a row to replay the event; click a header to sort."));
