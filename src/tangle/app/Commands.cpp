@@ -253,8 +253,9 @@ void writeReport(const io::HtmlReport& report, const fs::path& outDir, RunLog& l
     f.close();
   }
   const int frames = report.frameCount();
-  log.info(fmt::format("report: {} frame(s){}\n", frames,
-                       report.stride() > 1 ? fmt::format(", every {} output times", report.stride()) : ""));
+  if (frames > 0)
+    log.info(fmt::format("report: {} frame(s) of the dynamics{}\n", frames,
+                         report.stride() > 1 ? fmt::format(", every {} output times", report.stride()) : ""));
   try {
     io::HtmlReport::writePage(data, readTextFile(outDir / "run.log"), page);
   } catch (const InputError& e) {

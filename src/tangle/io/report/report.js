@@ -334,6 +334,25 @@
   window.addEventListener("resize", resize);
   resize();
 
+  // Hover over a tube: line, node arc length and the values there.
+  var raycaster = new THREE.Raycaster(), mouse = new THREE.Vector2(), hoverBox = document.getElementById("hover");
+  renderer.domElement.addEventListener("mousemove", function (ev) {
+    var r = renderer.domElement.getBoundingClientRect();
+    mouse.set((ev.clientX - r.left) / r.width * 2 - 1, -(ev.clientY - r.top) / r.height * 2 + 1);
+    raycaster.setFromCamera(mouse, camera);
+    var hit = raycaster.intersectObjects(tubes)[0];
+    if (!hit || !frames.length) { hoverBox.textContent = ""; return; }
+    var li = hit.object.userData.line, node = Math.floor(hit.face.a / ring);
+    var fl = frames[frameIndex].lines[li], line = data.lines[li];
+    node = Math.min(node, line.arc.length - 1);
+    var parts = [line.name + ", s = " + fmt(line.arc[node], 6) + " m",
+                 "z = " + fmt(fl.p[3 * node + 2] / 1000, 5) + " m"];
+    quantities.forEach(function (q) {
+      if (q.key !== "line" && fl[q.key]) parts.push(q.label + " " + fmt(fl[q.key][node], 4) + " " + q.unit);
+    });
+    hoverBox.textContent = parts.join(" \u00b7 ");
+  });
+
   // ---------------------------------------------------------------- legend
   function drawLegend() {
     var L = document.getElementById("legend");
