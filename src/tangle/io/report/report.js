@@ -160,9 +160,19 @@
     envNotes.push("<span style='color:#" + new THREE.Color(colour).getHexString() + "'>\u2192</span> " + text);
   }
   if (data.current.length) {
+    // The current profile: one arrow per level given, at its depth, length by speed.
     var top = data.current.reduce(function (a, b) { return a.z > b.z ? a : b; });
-    envArrow(top.azimuth, 0x0050c0, -0.02 * sceneSize, "current " + fmt(top.speed, 3) + " m/s towards " +
-             fmt(deg(top.azimuth), 4) + " deg");
+    var vmax = Math.max.apply(null, data.current.map(function (c) { return c.speed; })) || 1;
+    data.current.forEach(function (c) {
+      if (c === top || !(c.speed > 0)) return;
+      var dir = new THREE.Vector3(Math.cos(c.azimuth), Math.sin(c.azimuth), 0);
+      var len = arrowLength * c.speed / vmax;
+      scene.add(new THREE.ArrowHelper(dir, new THREE.Vector3(box.min.x - 0.5 * margin, box.min.y - 0.5 * margin,
+                                      Math.max(c.z, -data.depth)), len, 0x4080e0, 0.25 * len, 0.1 * len));
+    });
+    envArrow(top.azimuth, 0x0050c0, Math.min(top.z, -0.02 * sceneSize), "current " + fmt(top.speed, 3) +
+             " m/s towards " + fmt(deg(top.azimuth), 4) + " deg at z = " + fmt(top.z, 4) + " m" +
+             (data.current.length > 1 ? " (" + data.current.length + " levels, arrows at their depths)" : ""));
   }
   if (data.waves.kind !== "none")
     envArrow(data.waves.azimuth, 0x00a0a0, 0.005 * sceneSize, "waves (" + data.waves.kind + ") " +
@@ -283,6 +293,47 @@
     scene.add(group);
     return group;
   });
+  // Name labels (sprites that always face the camera).
+  function label(text, colour) {
+    var c = document.createElement("canvas"), ctx = c.getContext("2d");
+    ctx.font = "bold 28px sans-serif";
+    c.width = Math.ceil(ctx.measureText(text).width) + 12;
+    c.height = 36;
+    ctx.font = "bold 28px sans-serif";
+    ctx.fillStyle = "rgba(255,255,255,0.75)";
+    ctx.fillRect(0, 0, c.width, c.height);
+    ctx.fillStyle = colour;
+    ctx.fillText(text, 6, 28);
+    var tex = new THREE.CanvasTexture(c);
+    tex.minFilter = THREE.LinearFilter;
+    var sprite = new THREE.Sprite(new THREE.SpriteMaterial({ map: tex, depthTest: false }));
+    var h = 0.025 * sceneSize;
+    sprite.scale.set(h * c.width / c.height, h, 1);
+    sprite.renderOrder = 10;
+    return sprite;
+  }
+  var showLabels = true;
+  var vesselLabels = data.vessels.map(function (v) {
+    var s = label(v.name, "#303030");
+    scene.add(s);
+    return s;
+  });
+  var lineLabels = data.lines.map(function (l, i) {
+    var s = label(l.name, lineColour(i));
+    scene.add(s);
+    return s;
+  });
+  function placeLabels(f) {
+    f.v.forEach(function (pose, vi) {
+      vesselLabels[vi].position.set(pose[0], pose[1], pose[2] + 0.6 * data.vessels[vi].draft + 0.03 * sceneSize);
+      vesselLabels[vi].visible = showLabels;
+    });
+    f.lines.forEach(function (fl, li) {
+      var i = Math.floor(0.5 * (fl.p.length / 3 - 1));
+      lineLabels[li].position.set(fl.p[3 * i] / 1000, fl.p[3 * i + 1] / 1000, fl.p[3 * i + 2] / 1000 + 0.02 * sceneSize);
+      lineLabels[li].visible = showLabels;
+    });
+  }
   function placeVessel(vi, pose) {
     var g = vessels[vi], r = new THREE.Vector3(pose[3], pose[4], pose[5]), angle = r.length();
     g.position.set(pose[0], pose[1], pose[2]);
@@ -299,7 +350,7 @@
   var sphereGeometry = new THREE.SphereBufferGeometry(1, 12, 8);
   function drawContacts(f) {
     while (contactGroup.children.length) contactGroup.remove(contactGroup.children[0]);
-    var radius = Math.max(maxDiam * exaggeration * 0.8, sceneSize / 300);
+    var radius = Math.max(typicalDiam * exaggeration * 1.5, sceneSize / 300);
     f.k.forEach(function (c) {
       var a = new THREE.Vector3(c[2], c[3], c[4]), b = new THREE.Vector3(c[5], c[6], c[7]);
       [a, b].forEach(function (p) {
@@ -401,6 +452,7 @@
     var f = frames[frameIndex];
     f.lines.forEach(function (fl, li) { updateTube(li, fl); colourTube(li, fl); });
     f.v.forEach(function (pose, vi) { placeVessel(vi, pose); });
+    placeLabels(f);
     drawContacts(f);
     slider.value = frameIndex;
     timeLabel.textContent = isDynamic ? "t = " + f.t.toFixed(2) + " s (frame " + (frameIndex + 1) + " of " +
@@ -441,6 +493,8 @@
     if (x === exaggeration) o.selected = true;
     exSelect.appendChild(o);
   });
+  var labelBox = document.getElementById("labels");
+  labelBox.addEventListener("change", function () { showLabels = labelBox.checked; showFrame(frameIndex); });
   exSelect.addEventListener("change", function () { exaggeration = +exSelect.value; drawLegend(); showFrame(frameIndex); });
   var d = data.decimation || {};
   document.getElementById("note").textContent = isDynamic ?
@@ -553,14 +607,16 @@
       });
       svg.appendChild(g);
       // Legend.
-      var lx = ml + 8;
+      var lx = ml + 8, ly = mt + 10;
       opts.series.forEach(function (s) {
-        var t = svgEl("text", { x: lx + 16, y: mt + 14, "font-size": 11 });
+        var w = 24 + 6.2 * s.name.length;
+        if (lx + w > W - mr && lx > ml + 8) { lx = ml + 8; ly += 14; }
+        var t = svgEl("text", { x: lx + 16, y: ly + 4, "font-size": 11 });
         t.textContent = s.name;
-        svg.appendChild(svgEl("line", { x1: lx, x2: lx + 13, y1: mt + 10, y2: mt + 10, stroke: s.colour,
+        svg.appendChild(svgEl("line", { x1: lx, x2: lx + 13, y1: ly, y2: ly, stroke: s.colour,
                                         "stroke-width": 2, "stroke-dasharray": s.dash || "" }));
         svg.appendChild(t);
-        lx += 24 + 6.2 * s.name.length;
+        lx += w;
       });
       cursorLine = svgEl("line", { x1: 0, x2: 0, y1: mt, y2: H - mb, stroke: "#000", "stroke-dasharray": "3 3",
                                    visibility: "hidden" });
@@ -784,6 +840,9 @@
     renderer.render(scene, camera);
     status.checksumBack = checksum();
   }
+  // #t=SECONDS in the address opens the replay at that time (a link to an instant).
+  var tm = /[#&]t=([0-9.eE+-]+)/.exec(location.hash);
+  if (tm && frames.length > 1) { simTime = +tm[1]; showFrame(frameAt(simTime)); }
   status.openMs = Math.round(performance.now());  // navigation start to the first frame drawn
   status.ready = true;
   var st = document.getElementById("tangle-status");
