@@ -10,7 +10,8 @@ Runs `tangle run` on tests/data/report-contact.yaml (two risers touching under a
   drawn, the time slider moves the lines, a clash-table row jumps the replay to its event (the page's
   self-test, `#selftest`, writes what it saw into <pre id="tangle-status">);
 - takes a screenshot: not blank, and the tubes in the colours of the tension scale;
-- rebuilds the page with `tangle report DIR` and writes a model view with `tangle view`.
+- rebuilds the page with `tangle report DIR`, writes a model view with `tangle view`, and checks the
+  page of a run whose statics fail.
 Exits 77 (ctest: skipped) when Chromium is not installed; prints nothing unless a test fails.
 """
 
@@ -214,9 +215,24 @@ def main() -> int:
             assert status["ready"] and status["errors"] == [], status
             assert status["frames"] == 1 and status["pixelsDrawn"] > 2000, status
 
+        def failed_statics() -> None:
+            # A run whose statics fail still leaves a page (model, log, where the solver stopped).
+            model = tmp / "fail.yaml"
+            model.write_text(MODEL.read_text(encoding="utf-8").replace(
+                "\ndynamics:", "\nstatics:\n  max_iterations: 1\n\ndynamics:"), encoding="utf-8")
+            out = tmp / "fail"
+            r2 = subprocess.run([tangle, "run", str(model), "-o", str(out), "-q", "--no-plots"], capture_output=True,
+                                text=True, timeout=60)
+            assert r2.returncode == 2, (r2.returncode, r2.stderr)
+            d = embedded_data(out / "report.html")
+            assert d["status"] == "failed: statics did not converge" and d["frames"] == [], d["status"]
+            status = page_status(out / "report.html", profile)
+            assert status["ready"] and status["errors"] == [] and status["frames"] == 1, status
+            assert "did not converge" in (out / "report.html").read_text(encoding="utf-8")
+
         tests = [("data", lambda: check_data(run, data)), ("page", lambda: check_page(run, data, profile)),
                  ("screenshot", lambda: check_screenshot(run, profile, tmp)), ("rebuild", rebuild),
-                 ("view", view)]
+                 ("view", view), ("failed statics", failed_statics)]
         for name, test in tests:
             try:
                 test()

@@ -285,6 +285,13 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     log.error(fmt::format("no static results were written; the solver status is in {}\n",
                           (outDir / "summary.json").string()));
     folder.setStatus("failed: statics did not converge");
+    if (!options.noReport) {
+      // The page still gives the model, the log and the shape where the solver stopped, for the diagnosis.
+      io::HtmlReport report(m, "run", modelSummary(m));
+      report.setStatics(lines, sim.state(), nullptr, nullptr);
+      report.setStatus("failed: statics did not converge");
+      writeReport(report, outDir, log, {});
+    }
     return 2;
   }
   io::writeStaticLineTables(outDir, lines);

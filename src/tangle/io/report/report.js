@@ -6,6 +6,7 @@
   var data = JSON.parse(document.getElementById("tangle-data").textContent);
   var frames = data.frames && data.frames.length ? data.frames : (data.statics ? [data.statics] : []);
   var isDynamic = !!(data.frames && data.frames.length);
+  var staticsFailed = /statics did not converge/.test(data.status || "");
   var status = { ready: false, errors: window.TANGLE_ERRORS };
   var lineColours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf",
                      "#bcbd22", "#7f7f7f"];
@@ -456,7 +457,8 @@
     drawContacts(f);
     slider.value = frameIndex;
     timeLabel.textContent = isDynamic ? "t = " + f.t.toFixed(2) + " s (frame " + (frameIndex + 1) + " of " +
-        frames.length + ")" : (data.kind === "view" ? "initial shapes" : "static equilibrium");
+        frames.length + ")" : (data.kind === "view" ? "initial shapes" : staticsFailed ? "statics did not converge: where the solver stopped" :
+         "static equilibrium");
     plots.forEach(function (p) { if (p.timeCursor) p.setCursor(f.t); });
     dirty = true;
   }
@@ -501,7 +503,8 @@
       frames.length + " frames of " + d.outputs + " output times (" + (d.stride > 1 ? "every " + d.stride +
       " output times" : "every output time") + ", output interval " + d.output_interval + " s); the plots use every output time." :
       (data.kind === "view" ? "The model before any analysis: initial shapes of the lines." :
-       "Statics only: the static equilibrium.");
+       staticsFailed ? "The static solve did not converge: the shape and results shown are where it stopped, not " +
+       "an equilibrium (see the run log)." : "Statics only: the static equilibrium.");
   function tick(now) {
     if (playing && frames.length > 1) {
       if (lastTick !== null) {
@@ -707,7 +710,8 @@
       if (!same) series.push({ name: data.lines[i].name + " min", x: arc, y: r[q[0] + "min"], colour: lineColour(i), dash: "5 3" });
     });
     if (q[0] === "M" && series.every(function (s) { return s.y.every(function (v) { return !v; }); })) return;
-    makePlot({ title: q[1] + (isDynamic ? ": range graph (every time step)" : ": static equilibrium"),
+    makePlot({ title: q[1] + (isDynamic ? ": range graph (every time step)" :
+                                staticsFailed ? ": where the static solve stopped" : ": static equilibrium"),
                xlabel: "arc length from end A (m)", ylabel: q[2], series: series });
   });
   if (data.clash && data.clash.t && data.clash.t.length) {
