@@ -425,6 +425,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       log.error("error: " + dyn.message + "\n");
       log.error(fmt::format("results up to t = {:.4g} s are in {}\n", dyn.endTime, outDir.string()));
       folder.setStatus(fmt::format("failed: dynamics stopped at t = {:.6g} s", dyn.endTime));
+      if (report) report->setStatus(fmt::format("failed: dynamics stopped at t = {:.6g} s", dyn.endTime));
       code = 2;
     } else {
       log.info(dyn.message + "\n");
@@ -437,9 +438,8 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   if (m.spec().output.plots && !options.noPlots) makePlots(outDir, log);
   if (report) {
     if (envelope) report->setEnvelope(*envelope);
-    report->setStatus(code == 0 ? (options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
-                                                                                     : "completed")
-                                : "failed");
+    if (code == 0)
+      report->setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)" : "completed");
     writeReport(*report, outDir, log, reportTime);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
