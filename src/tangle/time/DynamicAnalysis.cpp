@@ -59,7 +59,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   model::State before;
   double lastStep = nominal;  // the step grows at most twofold from one step to the next
   while (state.time < duration - eps) {
-    if (core::interruptRequested()) {
+    if (core::interruptRequested() || (m_stop && m_stop())) {
       result.message = fmt::format("dynamic analysis interrupted by the user at t = {:.4f} s", state.time);
       result.interrupted = true;
       break;

@@ -43,6 +43,9 @@ class DynamicAnalysis {
   /// Returns false when a converged step must still be rejected (e.g. two lines passed through each
   /// other); the step is then cut like a Newton failure.
   using StepValidator = std::function<bool(const model::State& before, const model::State& after)>;
+  /// Returns true when the caller wants the run to stop before the next step (as Ctrl-C does, but for this
+  /// run only: the Python module stops one run when its progress callback raises or Ctrl-C reaches Python).
+  using StopRequest = std::function<bool()>;
 
   DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings);
 
@@ -51,6 +54,7 @@ class DynamicAnalysis {
   void setStepHook(StepHook hook) { m_hook = std::move(hook); }
   void setStepObserver(StepObserver observer) { m_stepObserver = std::move(observer); }
   void setStepValidator(StepValidator validator) { m_validator = std::move(validator); }
+  void setStopRequest(StopRequest stop) { m_stop = std::move(stop); }
   /// Adds held nodes whose motion is imposed by other parts of the model (vessels).
   void addPrescribed(std::vector<PrescribedNode> nodes) {
     for (auto& n : nodes) m_extraPrescribed.push_back(std::move(n));
@@ -69,6 +73,7 @@ class DynamicAnalysis {
   StepHook m_hook;
   StepObserver m_stepObserver;
   StepValidator m_validator;
+  StopRequest m_stop;
   std::vector<PrescribedNode> m_extraPrescribed;
   bool m_progress = false;
 };
