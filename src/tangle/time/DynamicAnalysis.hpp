@@ -20,11 +20,17 @@ struct DynamicResult {
   double endTime = 0.0;    ///< last time reached [s]
   int steps = 0;           ///< accepted steps
   int cutbacks = 0;        ///< step cuts after Newton failures
+  int errorRejections = 0; ///< steps redone because the local error estimate exceeded the tolerance
   long newtonIterations = 0;
   double wallSeconds = 0.0;   ///< wall-clock time of the run [s]
   std::string message;        ///< summary or the reason the run stopped (time, line, node)
   bool interrupted = false;   ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)
 };
+
+/// Local error estimate of a generalized-alpha step [-]: |(beta - 1/6) h^2 (a_{n+1} - a_n)| / |u_{n+1} - u_n|
+/// over the translational DOFs (Zienkiewicz & Xie 1991). `betaError` = |beta - 1/6|, h the step [s].
+double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after, double h,
+                          double betaError);
 
 /// Drives the time integration.
 class DynamicAnalysis {
