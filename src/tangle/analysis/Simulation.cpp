@@ -110,11 +110,13 @@ std::vector<solver::LineSnapshot> Simulation::sectionSnapshot() const {
 }
 
 time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress,
-                                            const time::DynamicAnalysis::StepObserver& stepObserver) {
+                                            const time::DynamicAnalysis::StepObserver& stepObserver,
+                                            const time::DynamicAnalysis::StopRequest& stop) {
   time::DynamicAnalysis dynamics(*m_assembler, m_model->spec().dynamics);
   dynamics.setProgress(progress);
   dynamics.setObserver(observer);
   if (stepObserver) dynamics.setStepObserver(stepObserver);
+  if (stop) dynamics.setStopRequest(stop);
   if (m_vessels) dynamics.addPrescribed(m_vessels->prescribedNodes());
   if (m_contact) {
     dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });

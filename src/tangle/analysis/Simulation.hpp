@@ -45,8 +45,10 @@ class Simulation {
   std::vector<solver::LineSnapshot> sectionSnapshot() const;
   /// Runs the dynamic analysis from the current state (the static equilibrium); `observer` gets every
   /// output time, `stepObserver` (optional) every accepted step. `progress` prints a progress line on stderr.
+  /// `stop` (optional) is asked before every step; true ends the run as an interruption.
   time::DynamicResult runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress = false,
-                                  const time::DynamicAnalysis::StepObserver& stepObserver = {});
+                                  const time::DynamicAnalysis::StepObserver& stepObserver = {},
+                                  const time::DynamicAnalysis::StopRequest& stop = {});
 
  private:
   /// The dynamic-relaxation fallback of solveStatics: on success replaces `result` and m_state.

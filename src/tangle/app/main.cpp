@@ -9,6 +9,7 @@
 
 #include <iostream>
 
+#include "tangle/app/BatchRunner.hpp"
 #include "tangle/app/Commands.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
@@ -32,7 +33,6 @@ int main(int argc, char** argv) {
   run->add_flag("-q,--quiet", runOptions.quiet, "Print only errors");
   run->add_flag("--overwrite", runOptions.overwrite,
                 "Replace the results of an earlier run in the output folder (refused without it)");
-
   run->add_flag("--no-report", runOptions.noReport, "Do not write report.html (the results report in the browser)");
 
   tangle::app::ReportOptions reportOptions;
@@ -48,6 +48,17 @@ int main(int argc, char** argv) {
   view->add_option("model", viewOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
   view->add_option("-o,--output", viewOptions.output, "Page to write (default: <model name>_view.html next to it)");
 
+  tangle::app::BatchOptions batchOptions;
+  CLI::App* batch = app.add_subcommand(
+      "batch", "Run the load cases of a batch file, in parallel processes (and across MPI ranks under mpirun)");
+  batch->add_option("batch", batchOptions.batchPath, "Batch file (YAML, docs/batch.md)")->required()->check(CLI::ExistingFile);
+  batch->add_option("-o,--output", batchOptions.outputDir, "Output directory (default: <batch name>_results next to it)");
+  batch->add_option("-j,--jobs", batchOptions.jobs,
+                    "Cases at a time per process (default: one per core; 1 per rank under mpirun)")
+      ->check(CLI::Range(1, 1024));
+  batch->add_flag("--plots", batchOptions.plots, "Write PNG plots for every case");
+  batch->add_flag("-q,--quiet", batchOptions.quiet, "Print only errors");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -62,6 +73,12 @@ int main(int argc, char** argv) {
       // Ctrl-C ends the dynamics at the next step; every result so far (clash report included) is written.
       tangle::core::installInterruptHandler();
       return tangle::app::runAnalysis(runOptions);
+    }
+    if (*batch) {
+      // Ctrl-C reaches the running cases too (same process group): they stop cleanly and keep their results;
+      // no new case is started.
+      tangle::core::installInterruptHandler();
+      return tangle::app::runBatch(batchOptions);
     }
   } catch (const tangle::InputError& e) {
     std::cerr << "error: " << e.what() << "\n";

@@ -843,7 +843,8 @@ void readStatics(const Value& v, ModelSpec& spec) {
 void readDynamics(const Value& v, ModelSpec& spec) {
   using model::IntegratorKind;
   const Map m(v, {"duration", "time_step", "min_time_step", "ramp_time", "output_interval", "integrator",
-                  "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance", "max_cable_strain_step"});
+                  "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance", "max_cable_strain_step",
+                  "error_tolerance", "max_time_step"});
   const model::DynamicSpec d;
   model::DynamicSpec& s = spec.dynamics;
   s.duration = m.number("duration", nonNegativeUpTo(kMaxDuration).withHint("0 switches dynamics off"));
@@ -872,6 +873,10 @@ void readDynamics(const Value& v, ModelSpec& spec) {
   s.tolerance = m.number("tolerance", d.tolerance, positive());
   s.maxCableStrainStep = m.number("max_cable_strain_step", d.maxCableStrainStep,
                                   closed(0.0, 1.0).withHint("0 switches the snap step limit off"));
+  s.errorTolerance = m.number("error_tolerance", d.errorTolerance,
+                              closed(0.0, 0.5).withHint("0: fixed steps of time_step; e.g. 1e-3 asks for error control"));
+  s.maxTimeStep = m.number("max_time_step", s.outputInterval,
+                           Range{s.timeStep, s.outputInterval, false, false, "between time_step and output_interval"});
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {

@@ -29,6 +29,25 @@ std::vector<PrescribedNode> prescribedNodes(const model::Model& model) {
   return out;
 }
 
+double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after, double h,
+                          double betaError) {
+  // Zienkiewicz & Xie (1991), Earthquake Eng. Struct. Dyn. 20:871: the Newmark-family displacement update
+  // matches a cubic Taylor expansion except for e = (beta - 1/6) h^2 (a_{n+1} - a_n); the relative error is
+  // |e| / |u_{n+1} - u_n| over the translational DOFs of every node (2-norms).
+  const model::DofMap& dofs = model.dofs();
+  double error2 = 0.0, increment2 = 0.0;
+  for (int n = 0; n < model.nodeCount(); ++n) {
+    const int d = dofs.firstDof(n);
+    const Vec3 da = after.acceleration.segment<3>(d) - before.acceleration.segment<3>(d);
+    error2 += da.squaredNorm();
+    increment2 += (after.position[static_cast<std::size_t>(n)] - before.position[static_cast<std::size_t>(n)]).squaredNorm();
+  }
+  const double error = betaError * h * h * std::sqrt(error2);
+  // A model at rest moves by round-off: 1 nm per node is "no motion", not a step to refine.
+  const double floor = 1e-9 * std::sqrt(static_cast<double>(model.nodeCount()));
+  return error / std::max(std::sqrt(increment2), floor);
+}
+
 DynamicAnalysis::DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings)
     : m_assembler(&assembler), m_settings(settings) {}
 
@@ -52,6 +71,12 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   // Output times are k * interval (not a running sum, whose round-off would leave slivers of steps).
   long outputIndex = 1;
   double nextOutput = std::min(out, duration);
+  // Error control (dynamics.error_tolerance > 0): the step follows the local error estimate, up to
+  // maxStep; otherwise fixed steps of `nominal`, cut on failure and regrown twofold after 4 successes.
+  const double tolerance = m_settings.errorTolerance;
+  const bool errorControl = tolerance > 0.0;
+  const double maxStep = errorControl ? (m_settings.maxTimeStep > 0.0 ? m_settings.maxTimeStep : out) : nominal;
+  const double betaError = std::abs(stepper.parameters().beta - 1.0 / 6.0);
   double dt = nominal;
   int successes = 0;
   // Remainders shorter than this are round-off, not time to simulate.
@@ -59,7 +84,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   model::State before;
   double lastStep = nominal;  // the step grows at most twofold from one step to the next
   while (state.time < duration - eps) {
-    if (core::interruptRequested()) {
+    if (core::interruptRequested() || (m_stop && m_stop())) {
       result.message = fmt::format("dynamic analysis interrupted by the user at t = {:.4f} s", state.time);
       result.interrupted = true;
       break;
@@ -70,7 +95,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     // Land exactly on output times.
     if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
     if (h <= eps) h = std::min(dt, duration - state.time);
-    if (m_validator) before = state;
+    const bool clippedForOutput = h < dt * (1.0 - 1e-9);
+    if (m_validator || errorControl) before = state;
     StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
     bool rejected = false;
@@ -98,10 +124,24 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       }
       continue;
     }
+    if (errorControl) {
+      const double eta = localErrorEstimate(model, before, state, h, betaError);
+      const double factor = std::clamp(0.9 * std::cbrt(tolerance / std::max(eta, 1e-300)), 0.2, 2.0);
+      if (eta > 2.0 * tolerance && h > m_settings.minTimeStep * (1.0 + 1e-9)) {
+        // Too inaccurate: redo the step shorter (h factor, factor <= 0.9 (1/2)^(1/3) here).
+        stepper.restore(before);
+        state = before;
+        ++result.errorRejections;
+        dt = std::max(m_settings.minTimeStep, h * factor);
+        continue;
+      }
+      // A step shortened to land on an output time says little about the step the error allows.
+      if (!(clippedForOutput && eta <= tolerance)) dt = std::clamp(h * factor, m_settings.minTimeStep, maxStep);
+    }
     ++result.steps;
-    lastStep = h;
+    lastStep = errorControl && clippedForOutput ? std::max(h, lastStep) : h;
     if (m_hook) m_hook(state, h);
-    if (++successes >= 4 && dt < nominal) {
+    if (!errorControl && ++successes >= 4 && dt < nominal) {
       dt = std::min(nominal, 2.0 * dt);
       successes = 0;
     }
@@ -128,10 +168,13 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
   if (result.completed) {
     result.message = fmt::format(
-        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back), {:.2f} s wall time, real-time "
+        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}), {:.2f} s wall time, real-time "
         "factor {:.1f}",
-        result.endTime, result.steps, result.cutbacks, result.wallSeconds,
-        result.endTime / std::max(result.wallSeconds, 1e-9));
+        result.endTime, result.steps, result.cutbacks,
+        errorControl ? fmt::format(", {} redone for accuracy, mean step {:.4g} s", result.errorRejections,
+                                   result.endTime / std::max(result.steps, 1))
+                     : "",
+        result.wallSeconds, result.endTime / std::max(result.wallSeconds, 1e-9));
   }
   return result;
 }

@@ -20,11 +20,17 @@ struct DynamicResult {
   double endTime = 0.0;    ///< last time reached [s]
   int steps = 0;           ///< accepted steps
   int cutbacks = 0;        ///< step cuts after Newton failures
+  int errorRejections = 0; ///< steps redone because the local error estimate exceeded the tolerance
   long newtonIterations = 0;
   double wallSeconds = 0.0;   ///< wall-clock time of the run [s]
   std::string message;        ///< summary or the reason the run stopped (time, line, node)
   bool interrupted = false;   ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)
 };
+
+/// Local error estimate of a generalized-alpha step [-]: |(beta - 1/6) h^2 (a_{n+1} - a_n)| / |u_{n+1} - u_n|
+/// over the translational DOFs (Zienkiewicz & Xie 1991). `betaError` = |beta - 1/6|, h the step [s].
+double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after, double h,
+                          double betaError);
 
 /// Drives the time integration.
 class DynamicAnalysis {
@@ -43,6 +49,9 @@ class DynamicAnalysis {
   /// Returns false when a converged step must still be rejected (e.g. two lines passed through each
   /// other); the step is then cut like a Newton failure.
   using StepValidator = std::function<bool(const model::State& before, const model::State& after)>;
+  /// Returns true when the caller wants the run to stop before the next step (as Ctrl-C does, but for this
+  /// run only: the Python module stops one run when its progress callback raises or Ctrl-C reaches Python).
+  using StopRequest = std::function<bool()>;
 
   DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings);
 
@@ -51,6 +60,7 @@ class DynamicAnalysis {
   void setStepHook(StepHook hook) { m_hook = std::move(hook); }
   void setStepObserver(StepObserver observer) { m_stepObserver = std::move(observer); }
   void setStepValidator(StepValidator validator) { m_validator = std::move(validator); }
+  void setStopRequest(StopRequest stop) { m_stop = std::move(stop); }
   /// Adds held nodes whose motion is imposed by other parts of the model (vessels).
   void addPrescribed(std::vector<PrescribedNode> nodes) {
     for (auto& n : nodes) m_extraPrescribed.push_back(std::move(n));
@@ -69,6 +79,7 @@ class DynamicAnalysis {
   StepHook m_hook;
   StepObserver m_stepObserver;
   StepValidator m_validator;
+  StopRequest m_stop;
   std::vector<PrescribedNode> m_extraPrescribed;
   bool m_progress = false;
 };

@@ -1021,8 +1021,8 @@ TEST(ModelReaderFiles, EveryExampleModelIsAccepted) {
   namespace fs = std::filesystem;
   std::vector<std::string> files;
   for (const fs::directory_entry& entry : fs::recursive_directory_iterator(test::kExamplesDir))
-    if (entry.is_regular_file() && entry.path().extension() == ".yaml")
-      files.push_back(entry.path().string());
+    if (entry.is_regular_file() && entry.path().extension() == ".yaml" && entry.path().filename() != "batch.yaml")
+      files.push_back(entry.path().string());  // batch.yaml: a load-case batch (docs/batch.md), not a model
   EXPECT_GE(files.size(), 4u);
   for (const std::string& file : files) {
     SCOPED_TRACE(file);

@@ -1,0 +1,219 @@
+"""tangle: nonlinear static and dynamic analysis of offshore lines with line-to-line contact.
+
+Scripting interface (docs/python.md)::
+
+    import tangle
+    model = tangle.Model.load("examples/mooring-dynamics/model.yaml")
+    model.set("environment.current", {"speed": 1.0, "azimuth": 90})   # checked at once by the reader
+    model.set("dynamics.duration", 60)
+    statics = model.run_statics()                # StaticResults
+    print(statics.lines["mooring1"]["end_b_tension_N"])
+    run = model.run_dynamics(progress=lambda t, T: print(f"{t:.0f}/{T:.0f} s"))
+    tension = run.lines["mooring1"]["effective_tension_N"]   # numpy array [time, node], N
+
+Units are SI (m, kg, N, s) everywhere in results; the model itself is in the units of the model file
+(angles in degrees). Every key of a result says its unit (``_m``, ``_N``, ``_Nm``, ``_1_per_m``, ``_s``,
+``_deg``). Runs release the GIL, so several models can run side by side in threads.
+"""
+
+from __future__ import annotations
+
+import copy
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Optional
+
+import numpy as np
+
+from ._tangle import ConvergenceError, ModelError, __version__  # noqa: F401
+from . import _tangle
+
+__all__ = ["Model", "StaticResults", "DynamicResults", "ModelError", "ConvergenceError", "Interrupted",
+           "__version__"]
+
+
+class Interrupted(KeyboardInterrupt):
+    """Ctrl-C (or an exception raised by the progress callback) stopped a dynamic run.
+
+    ``results`` holds the DynamicResults up to the step where the run stopped; ``__cause__`` is the
+    exception that stopped it.
+    """
+
+    def __init__(self, message: str, results: "DynamicResults"):
+        super().__init__(message)
+        self.results = results
+
+
+@dataclass
+class StaticResults:
+    """Static equilibrium.
+
+    lines: per line name, a dict of numpy arrays along the line (node by node from end A):
+    ``arc_length_m``, ``position_m`` [node, xyz], ``effective_tension_N``, ``bending_moment_Nm``,
+    ``curvature_1_per_m``, ``torque_Nm``; and ``end_a_tension_N``, ``end_b_tension_N`` (effective tension
+    at the end points), ``end_a_force_N``/``end_b_force_N`` (force the line exerts on what holds its
+    ends, xyz), ``end_a_support_reaction_N``/``end_b_support_reaction_N``, ``touchdown_arc_length_m``
+    (NaN when none), ``nodes_on_seabed``.
+    """
+
+    converged: bool
+    iterations: int
+    load_fraction: float
+    max_out_of_balance_N: float
+    message: str
+    warnings: list[str]
+    lines: dict[str, dict[str, Any]]
+
+
+@dataclass
+class DynamicResults:
+    """A dynamic run.
+
+    time_s: output times [s]. lines: per line name, a dict: ``arc_length_m`` [node];
+    ``position_m`` [time, node, xyz]; ``effective_tension_N``, ``bending_moment_Nm``,
+    ``curvature_1_per_m``, ``torque_Nm`` [time, node]; ``end_tension_N`` [time, end A/B];
+    ``end_force_N`` [time, end A/B, xyz]; ``range``: range graphs over every accepted step (not only the
+    output times) as ``<quantity>_min/_max/_mean_<unit>`` [node], means time-weighted.
+    vessels: per vessel name, ``motion`` [time, (x_m, y_m, z_m, rx_deg, ry_deg, rz_deg)] (reference point and
+    rotation vector from the initial attitude). contact_events: one dict per contact event (the clash
+    report's rows). clearance: one dict per line and other line: ``arc_length_m``, ``static_clearance_m``,
+    ``min_clearance_m`` (over every accepted step), ``time_of_min_s`` [node].
+    """
+
+    completed: bool
+    interrupted: bool
+    message: str
+    end_time_s: float
+    steps: int
+    step_cutbacks: int
+    newton_iterations: int
+    wall_time_s: float
+    time_s: np.ndarray
+    lines: dict[str, dict[str, Any]]
+    vessels: dict[str, dict[str, Any]] = field(default_factory=dict)
+    contact_events: list[dict[str, Any]] = field(default_factory=list)
+    clearance: list[dict[str, Any]] = field(default_factory=list)
+
+    def range_graph(self, line: str, quantity: str = "effective_tension") -> dict[str, np.ndarray]:
+        """Min, max and mean of a quantity along a line: {'arc_length_m', 'min', 'max', 'mean'}."""
+        r = self.lines[line]["range"]
+        keys = [k for k in r if k.startswith(quantity + "_min_")]
+        if not keys:
+            raise KeyError(f"no range graph of {quantity!r}; one of: effective_tension, bending_moment, curvature")
+        unit = keys[0][len(quantity) + 5:]
+        return {"arc_length_m": self.lines[line]["arc_length_m"], "min": r[f"{quantity}_min_{unit}"],
+                "max": r[f"{quantity}_max_{unit}"], "mean": r[f"{quantity}_mean_{unit}"]}
+
+
+class Model:
+    """A tangle model: the content of a model file as nested dicts and lists (``data``).
+
+    Edit ``data`` directly or with ``set(path, value)``; paths are the reader's key paths, e.g.
+    ``environment.current.speed``, ``lines[mooring1].end_b.position``, ``line_types[chain76].axial_stiffness``
+    (list items by name or 0-based index). ``set`` checks the whole model at once with the model reader and
+    raises ModelError (a ValueError) with the reader's message, leaving the model unchanged; direct edits
+    of ``data`` are checked by ``check()`` and by every run.
+    """
+
+    def __init__(self, data: dict, source: str = "<python model>"):
+        if not isinstance(data, dict):
+            raise TypeError(f"a model is a dict of blocks (environment, line_types, lines, ...), got {type(data).__name__}")
+        self.data = copy.deepcopy(data)
+        self.source = source
+        self._text: Optional[str] = None  # the file's own text while data is unchanged (line numbers in messages)
+        self._loaded: Optional[dict] = None
+
+    @classmethod
+    def load(cls, path: str | Path) -> "Model":
+        """Reads a model file (YAML). Raises ModelError naming the file when it cannot be read or parsed."""
+        path = str(path)
+        try:
+            text = Path(path).read_text(encoding="utf-8")
+        except OSError as e:
+            raise ModelError(f"{path}: cannot read the model file: {e.strerror}") from None
+        model = cls(_tangle.load_yaml(text, path), path)
+        model._text, model._loaded = text, copy.deepcopy(model.data)
+        return model
+
+    @classmethod
+    def from_yaml(cls, text: str, source: str = "<yaml text>") -> "Model":
+        model = cls(_tangle.load_yaml(text, source), source)
+        model._text, model._loaded = text, copy.deepcopy(model.data)
+        return model
+
+    def text(self) -> str:
+        """The model as YAML text (the original file's text while unchanged)."""
+        if self._text is not None and self.data == self._loaded:
+            return self._text
+        return _tangle.dump_yaml(self.data)
+
+    def save(self, path: str | Path) -> None:
+        Path(path).write_text(self.text(), encoding="utf-8")
+
+    def get(self, path: str) -> Any:
+        """The value at a key path (a copy)."""
+        return _tangle.get_path(self.data, path, self.source)
+
+    def set(self, path: str, value: Any) -> None:
+        """Sets the value at a key path and checks the model; on ModelError the model is unchanged."""
+        updated = _tangle.set_path(self.data, path, value, self.source)
+        _tangle.check(_tangle.dump_yaml(updated), self.source + " (after set)")
+        self.data = updated
+
+    def check(self) -> None:
+        """Checks the model with the model reader (raises ModelError)."""
+        _tangle.check(self.text(), self.source)
+
+    def copy(self) -> "Model":
+        m = Model(self.data, self.source)
+        m._text, m._loaded = self._text, copy.deepcopy(self._loaded)
+        return m
+
+    # -- runs -------------------------------------------------------------------------------------
+    def simulation(self) -> "Simulation":
+        """A Simulation of the model as it is now (later changes to the model do not affect it)."""
+        return Simulation(self)
+
+    def run_statics(self) -> StaticResults:
+        """Static equilibrium (raises ConvergenceError with the solver's diagnosis when none is found)."""
+        return self.simulation().run_statics()
+
+    def run_dynamics(self, progress: Optional[Callable[[float, float], Any]] = None) -> DynamicResults:
+        """Statics, then the dynamic run of the model's dynamics block. ``progress(time_s, duration_s)`` is
+        called at every output time. Ctrl-C stops the run at the next step and raises Interrupted, whose
+        ``results`` hold everything up to then."""
+        sim = self.simulation()
+        sim.run_statics()
+        return sim.run_dynamics(progress)
+
+
+class Simulation:
+    """One analysis of one model (statics, then dynamics from the static equilibrium)."""
+
+    def __init__(self, model: Model):
+        text = model.text()
+        edited = model._text is None or text != model._text
+        # Messages name the file; after edits their line numbers are those of model.text().
+        self._core = _tangle.Simulation(text, model.source + (" (as edited in Python: see Model.text())" if edited else ""))
+        self.lines = [d["name"] for d in self._core.lines()]
+        self.statics: Optional[StaticResults] = None
+
+    def run_statics(self) -> StaticResults:
+        s = self._core.statics()
+        if not s["converged"]:
+            raise ConvergenceError(s["message"])
+        self.statics = StaticResults(lines={p["name"]: p for p in self._core.profiles()}, **s)
+        return self.statics
+
+    def run_dynamics(self, progress: Optional[Callable[[float, float], Any]] = None) -> DynamicResults:
+        if self.statics is None:
+            self.run_statics()
+        d = self._core.dynamics(progress)
+        error = d.pop("error")
+        d.pop("range_steps")
+        d["lines"] = {x["name"]: x for x in d["lines"]}
+        d["vessels"] = {x["name"]: x for x in d["vessels"]}
+        results = DynamicResults(**d)
+        if error is not None:
+            raise Interrupted(results.message, results) from error
+        return results

@@ -1,0 +1,327 @@
+/// @file PySimulation.cpp
+/// Analyses driven from Python (see PySimulation.hpp).
+
+#include "tangle/python/PySimulation.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "tangle/contact/ClearanceEnvelope.hpp"
+#include "tangle/core/Units.hpp"
+#include "tangle/geometry/Rotation.hpp"
+#include "tangle/io/ModelReader.hpp"
+
+namespace py = pybind11;
+
+namespace tangle::python {
+
+namespace {
+
+using Array = py::array_t<double>;
+
+/// A numpy array of the given shape filled from `data` (row-major).
+Array array(const std::vector<double>& data, std::vector<py::ssize_t> shape) {
+  Array a(shape);
+  std::copy(data.begin(), data.end(), a.mutable_data());
+  return a;
+}
+
+Array vec3Array(const Vec3& v) { return array({v.x(), v.y(), v.z()}, {3}); }
+
+Array positions(const std::vector<Vec3>& p) {
+  std::vector<double> flat;
+  for (const Vec3& x : p) flat.insert(flat.end(), {x.x(), x.y(), x.z()});
+  return array(flat, {static_cast<py::ssize_t>(p.size()), 3});
+}
+
+/// One line's results at one state (the quantities of statics/<line>.csv and summary.json).
+py::dict profile(const solver::LineSnapshot& s) {
+  const auto n = static_cast<py::ssize_t>(s.arcLength.size());
+  py::dict d;
+  d["name"] = s.name;
+  d["arc_length_m"] = array(s.arcLength, {n});
+  d["position_m"] = positions(s.position);
+  d["effective_tension_N"] = array(s.tension, {n});
+  d["bending_moment_Nm"] = array(s.bendingMoment, {n});
+  d["curvature_1_per_m"] = array(s.curvature, {n});
+  d["torque_Nm"] = array(s.torque, {n});
+  d["end_a_tension_N"] = s.endTensionA;
+  d["end_b_tension_N"] = s.endTensionB;
+  d["end_a_force_N"] = vec3Array(s.endTensionForceA);
+  d["end_b_force_N"] = vec3Array(s.endTensionForceB);
+  d["end_a_support_reaction_N"] = vec3Array(s.endForceA);
+  d["end_b_support_reaction_N"] = vec3Array(s.endForceB);
+  d["touchdown_arc_length_m"] = s.touchdownArcLength >= 0.0 ? s.touchdownArcLength : std::nan("");
+  d["nodes_on_seabed"] = s.seabedNodes;
+  return d;
+}
+
+/// Time histories of one line, filled at the output times.
+struct LineHistory {
+  std::vector<double> position, tension, moment, curvature, torque, endTension, endForce;
+  // Ranges over every accepted step (the algorithm of io::DynamicRecorder::accumulate).
+  std::vector<double> tensionMin, tensionMax, tensionSum, momentMin, momentMax, momentSum, curvatureMin,
+      curvatureMax, curvatureSum;
+};
+
+}  // namespace
+
+PySimulation::PySimulation(const std::string& yaml, const std::string& sourceName)
+    : m_sim(std::make_unique<analysis::Simulation>(io::readModelString(yaml, sourceName))) {}
+
+py::list PySimulation::lines() {
+  py::list out;
+  const model::Model& m = m_sim->model();
+  for (int i = 0; i < static_cast<int>(m.lines().size()); ++i) {
+    const model::Line& l = m.lines()[static_cast<std::size_t>(i)];
+    py::dict d;
+    d["name"] = l.name;
+    d["nodes"] = l.nodeCount;
+    d["elements"] = l.elementCount;
+    d["length_m"] = l.length;
+    d["mass_kg"] = m.lineMass(i);
+    d["arc_length_m"] = array(l.arcLength, {static_cast<py::ssize_t>(l.arcLength.size())});
+    out.append(d);
+  }
+  return out;
+}
+
+py::dict PySimulation::statics() {
+  solver::StaticResult r;
+  {
+    py::gil_scoped_release release;
+    r = m_sim->solveStatics();
+  }
+  m_staticsConverged = r.converged;
+  py::dict d;
+  d["converged"] = r.converged;
+  d["iterations"] = r.iterations;
+  d["load_fraction"] = r.loadFraction;
+  d["max_out_of_balance_N"] = r.residual;
+  d["message"] = r.message;
+  d["warnings"] = r.warnings;
+  return d;
+}
+
+py::list PySimulation::profiles() {
+  py::list out;
+  for (const solver::LineSnapshot& s : m_sim->snapshot()) out.append(profile(s));
+  return out;
+}
+
+py::dict PySimulation::dynamics(const py::object& progress) {
+  if (!m_staticsConverged) throw std::runtime_error("run the statics first (the dynamics start from the static equilibrium)");
+  const model::Model& m = m_sim->model();
+  if (!m.spec().dynamics.enabled)
+    throw std::runtime_error("the model has no dynamics block (set dynamics.duration and dynamics.time_step)");
+  const std::size_t lineCount = m.lines().size();
+  std::vector<LineHistory> hist(lineCount);
+  for (std::size_t l = 0; l < lineCount; ++l) {
+    const auto n = static_cast<std::size_t>(m.lines()[l].nodeCount);
+    const double inf = std::numeric_limits<double>::infinity();
+    LineHistory& h = hist[l];
+    for (auto* v : {&h.tensionMin, &h.momentMin, &h.curvatureMin}) v->assign(n, inf);
+    for (auto* v : {&h.tensionMax, &h.momentMax, &h.curvatureMax}) v->assign(n, -inf);
+    for (auto* v : {&h.tensionSum, &h.momentSum, &h.curvatureSum}) v->assign(n, 0.0);
+  }
+  std::vector<double> times, vesselMotion;
+  double weight = 0.0;
+  long steps = 0;
+  std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
+      m, m_sim->contact() ? m_sim->contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+  if (envelope->empty()) {
+    envelope.reset();
+  } else {
+    envelope->recordStatic(m_sim->state());
+  }
+  const double duration = m.spec().dynamics.duration;
+  std::atomic<bool> stop{false};
+  py::object error = py::none();
+
+  time::DynamicResult result;
+  {
+    py::gil_scoped_release release;
+    const auto observer = [&](const model::State& s, const VecX&) {
+      const std::vector<solver::LineSnapshot> snap = m_sim->snapshot(true);
+      times.push_back(s.time);
+      for (std::size_t l = 0; l < lineCount; ++l) {
+        const solver::LineSnapshot& x = snap[l];
+        LineHistory& h = hist[l];
+        for (const Vec3& p : x.position) h.position.insert(h.position.end(), {p.x(), p.y(), p.z()});
+        h.tension.insert(h.tension.end(), x.tension.begin(), x.tension.end());
+        h.moment.insert(h.moment.end(), x.bendingMoment.begin(), x.bendingMoment.end());
+        h.curvature.insert(h.curvature.end(), x.curvature.begin(), x.curvature.end());
+        h.torque.insert(h.torque.end(), x.torque.begin(), x.torque.end());
+        h.endTension.insert(h.endTension.end(), {x.endTensionA, x.endTensionB});
+        const Vec3 &fa = x.endTensionForceA, &fb = x.endTensionForceB;
+        h.endForce.insert(h.endForce.end(), {fa.x(), fa.y(), fa.z(), fb.x(), fb.y(), fb.z()});
+      }
+      for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
+        // As dynamics/vessels.csv: reference point, and rotation from the initial attitude [deg].
+        const int node = m.vesselNode(v);
+        const Vec3 r = geometry::logMap(s.triad[static_cast<std::size_t>(node)] * m.vesselRotation(v).transpose()) *
+                       180.0 / kPi;
+        const Vec3& p = s.position[static_cast<std::size_t>(node)];
+        vesselMotion.insert(vesselMotion.end(), {p.x(), p.y(), p.z(), r.x(), r.y(), r.z()});
+      }
+      if (!progress.is_none() && !stop) {
+        py::gil_scoped_acquire acquire;
+        try {
+          progress(s.time, duration);
+        } catch (py::error_already_set& e) {
+          error = e.value();
+          stop = true;
+        }
+      }
+    };
+    const auto stepObserver = [&](const model::State& s, double dt) {
+      const std::vector<solver::LineSnapshot> snap = m_sim->sectionSnapshot();
+      for (std::size_t l = 0; l < lineCount; ++l) {
+        const solver::LineSnapshot& x = snap[l];
+        LineHistory& h = hist[l];
+        for (std::size_t i = 0; i < x.arcLength.size(); ++i) {
+          h.tensionMin[i] = std::min(h.tensionMin[i], x.tension[i]);
+          h.tensionMax[i] = std::max(h.tensionMax[i], x.tension[i]);
+          h.momentMin[i] = std::min(h.momentMin[i], x.bendingMoment[i]);
+          h.momentMax[i] = std::max(h.momentMax[i], x.bendingMoment[i]);
+          h.curvatureMin[i] = std::min(h.curvatureMin[i], x.curvature[i]);
+          h.curvatureMax[i] = std::max(h.curvatureMax[i], x.curvature[i]);
+          h.tensionSum[i] += dt * x.tension[i];
+          h.momentSum[i] += dt * x.bendingMoment[i];
+          h.curvatureSum[i] += dt * x.curvature[i];
+        }
+      }
+      weight += dt;
+      ++steps;
+      if (envelope) envelope->record(s);
+    };
+    // Ctrl-C: Python's handler only sets a flag; it is seen here, with the GIL, before every step.
+    const auto stopRequest = [&]() {
+      if (stop) return true;
+      py::gil_scoped_acquire acquire;
+      if (PyErr_CheckSignals() != 0) {
+        error = py::error_already_set().value();  // takes the pending KeyboardInterrupt
+        stop = true;
+      }
+      return stop.load();
+    };
+    result = m_sim->runDynamics(observer, false, stepObserver, stopRequest);
+  }
+
+  py::dict out;
+  out["completed"] = result.completed;
+  out["interrupted"] = result.interrupted;
+  out["error"] = error;
+  out["end_time_s"] = result.endTime;
+  out["steps"] = result.steps;
+  out["step_cutbacks"] = result.cutbacks;
+  out["newton_iterations"] = result.newtonIterations;
+  out["wall_time_s"] = result.wallSeconds;
+  out["message"] = result.message;
+  const auto nt = static_cast<py::ssize_t>(times.size());
+  out["time_s"] = array(times, {nt});
+  py::list lines;
+  for (std::size_t l = 0; l < lineCount; ++l) {
+    const model::Line& line = m.lines()[l];
+    const auto n = static_cast<py::ssize_t>(line.nodeCount);
+    const LineHistory& h = hist[l];
+    py::dict d;
+    d["name"] = line.name;
+    d["arc_length_m"] = array(line.arcLength, {n});
+    d["position_m"] = array(h.position, {nt, n, 3});
+    d["effective_tension_N"] = array(h.tension, {nt, n});
+    d["bending_moment_Nm"] = array(h.moment, {nt, n});
+    d["curvature_1_per_m"] = array(h.curvature, {nt, n});
+    d["torque_Nm"] = array(h.torque, {nt, n});
+    d["end_tension_N"] = array(h.endTension, {nt, 2});
+    d["end_force_N"] = array(h.endForce, {nt, 2, 3});
+    // Range graphs over every accepted step; means time-weighted (the initial state only: its values).
+    const auto mean = [&](const std::vector<double>& sum, const std::vector<double>& only) {
+      std::vector<double> v(sum.size());
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = weight > 0.0 ? sum[i] / weight : only[i];
+      return array(v, {n});
+    };
+    py::dict range;
+    range["effective_tension_min_N"] = array(h.tensionMin, {n});
+    range["effective_tension_max_N"] = array(h.tensionMax, {n});
+    range["effective_tension_mean_N"] = mean(h.tensionSum, h.tensionMin);
+    range["bending_moment_min_Nm"] = array(h.momentMin, {n});
+    range["bending_moment_max_Nm"] = array(h.momentMax, {n});
+    range["bending_moment_mean_Nm"] = mean(h.momentSum, h.momentMin);
+    range["curvature_min_1_per_m"] = array(h.curvatureMin, {n});
+    range["curvature_max_1_per_m"] = array(h.curvatureMax, {n});
+    range["curvature_mean_1_per_m"] = mean(h.curvatureSum, h.curvatureMin);
+    d["range"] = range;
+    lines.append(d);
+  }
+  out["lines"] = lines;
+  out["range_steps"] = steps;
+
+  py::list vessels;
+  for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
+    std::vector<double> motion;
+    const std::size_t stride = 6 * m.vessels().size();
+    for (std::size_t t = 0; t < times.size(); ++t)
+      for (std::size_t k = 0; k < 6; ++k) motion.push_back(vesselMotion[t * stride + 6 * static_cast<std::size_t>(v) + k]);
+    py::dict d;
+    d["name"] = m.vessels()[static_cast<std::size_t>(v)].name;
+    d["motion"] = array(motion, {nt, 6});
+    d["motion_columns"] = py::make_tuple("x_m", "y_m", "z_m", "rx_deg", "ry_deg", "rz_deg");
+    vessels.append(d);
+  }
+  out["vessels"] = vessels;
+
+  py::list events;
+  if (m_sim->contact()) {
+    for (const contact::ContactEvent& e : m_sim->contact()->events()) {
+      py::dict d;
+      d["line_1"] = m.lines()[static_cast<std::size_t>(e.lineA)].name;
+      d["line_2"] = m.lines()[static_cast<std::size_t>(e.lineB)].name;
+      d["kind"] = e.kind();
+      d["start_time_s"] = e.startTime;
+      d["end_time_s"] = e.endTime;
+      d["arc_1_m"] = e.arcAStart;
+      d["arc_2_m"] = e.arcBStart;
+      d["position_m"] = vec3Array(e.positionStart);
+      d["impact_velocity_m_per_s"] = e.impactVelocity;
+      d["impact_energy_J"] = e.impactEnergy;
+      d["peak_force_N"] = e.peakForce;
+      d["peak_force_per_length_N_per_m"] = e.peakForcePerLength;
+      d["impulse_Ns"] = e.impulse;
+      d["max_penetration_m"] = e.maxPenetration;
+      d["effective_mass_1_kg"] = e.effectiveMassA;
+      d["effective_mass_2_kg"] = e.effectiveMassB;
+      d["impact"] = e.impact;
+      d["sustained"] = e.sustained;
+      d["open"] = e.open;
+      events.append(d);
+    }
+  }
+  out["contact_events"] = events;
+
+  py::list clearance;
+  if (envelope) {
+    for (const contact::ClearanceEnvelope::Side& s : envelope->sides()) {
+      const model::Line& line = m.lines()[static_cast<std::size_t>(s.line)];
+      const auto n = static_cast<py::ssize_t>(line.nodeCount);
+      py::dict d;
+      d["line"] = line.name;
+      d["other_line"] = m.lines()[static_cast<std::size_t>(s.other)].name;
+      d["arc_length_m"] = array(line.arcLength, {n});
+      d["static_clearance_m"] = array(s.staticClearance, {n});
+      d["min_clearance_m"] = array(s.dynamicClearance, {n});
+      d["time_of_min_s"] = array(s.timeOfMinimum, {n});
+      clearance.append(d);
+    }
+  }
+  out["clearance"] = clearance;
+  return out;
+}
+
+}  // namespace tangle::python

@@ -1,0 +1,133 @@
+"""`tangle batch`: load cases in parallel processes and on MPI ranks (docs/batch.md).
+
+Run through ctest (it sets TANGLE_CLI), or by hand:
+    TANGLE_CLI=build/ci/tangle /usr/bin/python3 -m pytest -q tests/python/test_batch.py
+
+The base model is the mooring example shortened to 4 s of dynamics (each case runs in about half a
+second); the batch has 2 headings x 2 current speeds and a case whose model is invalid (a negative
+section length), which must fail alone.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import os
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+CLI = os.environ.get("TANGLE_CLI", str(ROOT / "build" / "ci" / "tangle"))
+BASE = ROOT / "examples" / "mooring-dynamics" / "model.yaml"
+
+BATCH = f"""
+model: {BASE}
+set:
+  dynamics.duration: 4
+  environment.seabed.friction_coefficient: 0.5
+  environment.current: {{speed: 0.5, azimuth: 0}}
+  output.vtk: false
+cases:
+  - name: intact
+  - name: broken
+    set: {{"lines[mooring1].sections[0].length": -5}}
+parameters:
+  - {{name: heading, key: environment.current.azimuth, values: [0, 90]}}
+  - {{name: current, key: environment.current.speed, values: [0.5, 1.5]}}
+"""
+
+MPI_ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+               OMPI_MCA_rmaps_base_oversubscribe="1")
+
+
+def run(args, **kw):
+    return subprocess.run(args, capture_output=True, text=True, timeout=600, **kw)
+
+
+def rows(folder: Path) -> dict[str, dict[str, str]]:
+    with (folder / "summary.csv").open() as f:
+        return {r["case"]: r for r in csv.DictReader(f)}
+
+
+@pytest.fixture(scope="module")
+def batch_file(tmp_path_factory) -> Path:
+    d = tmp_path_factory.mktemp("batch")
+    p = d / "batch.yaml"
+    p.write_text(BATCH)
+    return p
+
+
+def check_rows(table: dict[str, dict[str, str]]) -> None:
+    assert len(table) == 8
+    for heading in ("0", "90"):
+        for current in ("0.5", "1.5"):
+            ok = table[f"intact_heading={heading}_current={current}"]
+            assert ok["status"] == "completed", ok
+            assert ok["exit_code"] == "0"
+            assert float(ok["mooring1_max_tension_N"]) > 1e5
+            assert ok["heading"] == heading and ok["current"] == current
+            bad = table[f"broken_heading={heading}_current={current}"]
+            assert bad["status"].startswith("failed"), bad
+            assert bad["exit_code"] == "1"
+            assert "length" in bad["message"], bad
+
+
+def test_local_processes_and_rerun(batch_file: Path, tmp_path: Path) -> None:
+    out = tmp_path / "local"
+    r = run([CLI, "batch", str(batch_file), "-o", str(out), "-j", "2"])
+    assert r.returncode == 2, r.stdout + r.stderr  # some cases failed, the others ran
+    table = rows(out)
+    check_rows(table)
+    assert all(v["reused"] == "false" for v in table.values())
+
+    # The summary equals the single runs: rerun one case's model on its own and compare.
+    single = tmp_path / "single"
+    case = "intact_heading=90_current=1.5"
+    r1 = run([CLI, "run", str(out / "models" / f"{case}.yaml"), "-o", str(single), "--no-plots", "-q"])
+    assert r1.returncode == 0, r1.stderr
+    dyn = json.loads((single / "dynamics" / "summary.json").read_text())
+    assert float(table[case]["mooring1_max_tension_N"]) == pytest.approx(dyn["lines"][0]["max_tension_N"], rel=1e-5)
+
+    # A rerun skips the finished cases and runs the failed ones again.
+    stamp = (out / "cases" / case / "summary.json").stat().st_mtime_ns
+    r2 = run([CLI, "batch", str(batch_file), "-o", str(out)])
+    assert r2.returncode == 2
+    assert "4 already done, 4 to run" in r2.stdout, r2.stdout
+    again = rows(out)
+    check_rows(again)
+    assert again[case]["reused"] == "true"
+    assert again["broken_heading=0_current=0.5"]["reused"] == "false"
+    assert again[case]["mooring1_max_tension_N"] == table[case]["mooring1_max_tension_N"]
+    assert (out / "cases" / case / "summary.json").stat().st_mtime_ns == stamp
+
+
+@pytest.mark.skipif(shutil.which("mpirun") is None, reason="mpirun (openmpi-bin) not installed")
+def test_mpi_ranks_share_the_cases(batch_file: Path, tmp_path: Path) -> None:
+    local = tmp_path / "local"
+    assert run([CLI, "batch", str(batch_file), "-o", str(local), "-j", "1", "-q"]).returncode == 2
+    out = tmp_path / "mpi"
+    r = run(["mpirun", "-np", "2", "--oversubscribe", CLI, "batch", str(batch_file), "-o", str(out)], env=MPI_ENV)
+    assert r.returncode == 2, r.stdout + r.stderr
+    table = rows(out)
+    check_rows(table)
+    # Both ranks ran cases (rank 0 between dispatches, rank 1 on request).
+    assert {v["rank"] for v in table.values()} == {"0", "1"}, table
+    # Same results as the one-process batch.
+    for name, row in rows(local).items():
+        assert table[name]["mooring1_max_tension_N"] == row["mooring1_max_tension_N"], name
+
+
+def test_bad_batch_file_names_file_and_key(tmp_path: Path) -> None:
+    p = tmp_path / "bad.yaml"
+    p.write_text(f"model: {BASE}\nparameters:\n  - {{name: h, key: environment.curent.azimuth, values: [0]}}\n"
+                 f"  - {{name: l, key: 'lines[nosuchline].length', values: [1]}}\n")
+    r = run([CLI, "batch", str(p), "-o", str(tmp_path / "out")])
+    assert r.returncode == 1
+    assert str(p) in r.stderr and "nosuchline" in r.stderr and "mooring1" in r.stderr, r.stderr
+    assert not (tmp_path / "out").exists()
+    p.write_text(f"model: {BASE}\nparameter: []\n")
+    r = run([CLI, "batch", str(p)])
+    assert r.returncode == 1 and "parameter" in r.stderr and "one of the keys" in r.stderr, r.stderr

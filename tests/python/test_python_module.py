@@ -1,0 +1,190 @@
+"""The Python module `tangle` (docs/python.md) against the command line on the same models.
+
+Run through ctest (it sets PYTHONPATH to <build>/python and TANGLE_CLI), or by hand:
+    PYTHONPATH=build/ci/python TANGLE_CLI=build/ci/tangle /usr/bin/python3 -m pytest -q tests/python/test_python_module.py
+
+Reference: the CLI's CSV files of the same model. Both sides run the same solver code on the same input,
+so they agree to the CSV's printed precision (7 significant digits for forces, 1e-6 m for positions):
+the tolerances are the rounding of the CSV, not a physical tolerance.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import subprocess
+import threading
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tangle
+
+ROOT = Path(__file__).resolve().parents[2]
+CLI = os.environ.get("TANGLE_CLI", str(ROOT / "build" / "ci" / "tangle"))
+MOORING = ROOT / "examples" / "mooring-dynamics" / "model.yaml"
+CONTACT = ROOT / "examples" / "risers-in-contact" / "model.yaml"
+
+RTOL = 1e-6   # %.6e in the CSV: 7 significant digits
+POS_ATOL = 1e-6  # %.6f in the CSV [m]
+
+
+def read_csv(path: Path) -> tuple[list[str], np.ndarray]:
+    with path.open() as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array([[float(v) for v in r] for r in rows[1:]])
+
+
+def cli_run(model: tangle.Model, out: Path) -> Path:
+    path = out.with_suffix(".yaml")
+    model.save(path)
+    r = subprocess.run([CLI, "run", str(path), "-o", str(out), "--no-plots", "-q"], capture_output=True, text=True,
+                       timeout=600)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+@pytest.fixture(scope="module")
+def mooring() -> tangle.Model:
+    m = tangle.Model.load(MOORING)
+    m.set("dynamics.duration", 12)  # through the end of the 10 s ramp: tensions vary
+    m.set("output.vtk", False)
+    return m
+
+
+def test_load_get_set_and_reader_errors(tmp_path: Path) -> None:
+    m = tangle.Model.load(MOORING)
+    assert m.get("environment.water_depth") == 345
+    assert m.get("lines[mooring1].end_b.type") == "pinned"
+    assert m.get("line_types[0].name") == "chain76"
+    before = m.get("environment")
+    with pytest.raises(tangle.ModelError, match=r"environment\.water_depth.*expected a number > 0") as e:
+        m.set("environment.water_depth", -5)
+    assert isinstance(e.value, ValueError)
+    assert m.get("environment") == before  # unchanged after a refused change
+    with pytest.raises(tangle.ModelError, match=r"lines\[nosuch\].*one of: mooring1"):
+        m.set("lines[nosuch].length", 3)
+    with pytest.raises(tangle.ModelError, match=r"unknown key|not a known key|one of"):
+        m.set("environment.curent", {"speed": 1.0, "azimuth": 0})
+    # Direct edits of data are checked at the run, with the reader's message.
+    bad = m.copy()
+    bad.data["line_types"][0]["axial_stiffness"] = "stiff"
+    with pytest.raises(tangle.ModelError, match=r"line_types\[chain76\]\.axial_stiffness"):
+        bad.run_statics()
+    with pytest.raises(tangle.ModelError, match="cannot read"):
+        tangle.Model.load(tmp_path / "missing.yaml")
+    with pytest.raises(TypeError):
+        m.set("title", object())
+
+
+def test_model_from_a_dict_runs_like_the_file() -> None:
+    from_file = tangle.Model.load(MOORING)
+    from_dict = tangle.Model(from_file.data, "dict model")
+    a = from_file.run_statics()
+    b = from_dict.run_statics()
+    for key in ("effective_tension_N", "position_m"):
+        np.testing.assert_array_equal(a.lines["mooring1"][key], b.lines["mooring1"][key])
+
+
+def test_statics_and_dynamics_equal_the_cli(mooring: tangle.Model, tmp_path: Path) -> None:
+    out = cli_run(mooring, tmp_path / "cli")
+    statics = mooring.run_statics()
+    assert statics.converged
+    header, table = read_csv(out / "statics" / "mooring1.csv")
+    col = {h: i for i, h in enumerate(header)}
+    line = statics.lines["mooring1"]
+    np.testing.assert_allclose(line["arc_length_m"], table[:, col["arc_length_m"]], atol=POS_ATOL)
+    np.testing.assert_allclose(line["position_m"], table[:, [col["x_m"], col["y_m"], col["z_m"]]], atol=POS_ATOL)
+    np.testing.assert_allclose(line["effective_tension_N"], table[:, col["effective_tension_N"]], rtol=RTOL)
+
+    calls: list[tuple[float, float]] = []
+    run = mooring.run_dynamics(progress=lambda t, T: calls.append((t, T)))
+    assert run.completed and not run.interrupted
+    _, tension = read_csv(out / "dynamics" / "mooring1" / "effective_tension_N.csv")
+    np.testing.assert_allclose(run.time_s, tension[:, 0], atol=1e-6)
+    np.testing.assert_allclose(run.lines["mooring1"]["effective_tension_N"], tension[:, 1:], rtol=RTOL)
+    _, x = read_csv(out / "dynamics" / "mooring1" / "x_m.csv")
+    # x_m.csv prints 7 significant digits (%.6e), the statics table 1e-6 m (%.6f).
+    np.testing.assert_allclose(run.lines["mooring1"]["position_m"][:, :, 0], x[:, 1:], rtol=RTOL, atol=POS_ATOL)
+    header, ends = read_csv(out / "dynamics" / "end_forces.csv")
+    col = {h: i for i, h in enumerate(header)}
+    np.testing.assert_allclose(run.lines["mooring1"]["end_tension_N"][:, 1], ends[:, col["mooring1_end_b_tension_N"]],
+                               rtol=RTOL)
+    np.testing.assert_allclose(run.lines["mooring1"]["end_force_N"][:, 0, 0], ends[:, col["mooring1_end_a_fx_N"]],
+                               rtol=RTOL, atol=1e-6 * np.abs(ends[:, col["mooring1_end_a_fx_N"]]).max())
+    header, rng = read_csv(out / "dynamics" / "mooring1" / "range.csv")
+    col = {h: i for i, h in enumerate(header)}
+    graph = run.range_graph("mooring1", "effective_tension")
+    for k in ("min", "max", "mean"):
+        np.testing.assert_allclose(graph[k], rng[:, col[f"tension_{k}_N"]], rtol=RTOL)
+    # Progress at every output time, with the duration.
+    assert len(calls) == len(run.time_s) and calls[-1] == pytest.approx((12.0, 12.0))
+
+
+def test_contact_events_and_clearance_equal_the_cli(tmp_path: Path) -> None:
+    m = tangle.Model.load(CONTACT)
+    m.set("dynamics.duration", 5)
+    m.set("output.vtk", False)
+    out = cli_run(m, tmp_path / "cli")
+    run = m.run_dynamics()
+    with (out / "contact" / "events.csv").open() as f:
+        events = list(csv.DictReader(f))
+    assert len(run.contact_events) == len(events) > 0
+    for mine, ref in zip(run.contact_events, events):
+        assert (mine["line_1"], mine["line_2"], mine["kind"]) == (ref["line_1"], ref["line_2"], ref["kind"])
+        assert mine["peak_force_N"] == pytest.approx(float(ref["peak_force_N"]), rel=RTOL)
+        assert mine["start_time_s"] == pytest.approx(float(ref["start_time_s"]), abs=1e-6)
+    with (out / "clearance" / "envelope.csv").open() as f:
+        env = [r for r in csv.DictReader(f)]
+    first = run.clearance[0]
+    ref = [r for r in env if r["line"] == first["line"] and r["other_line"] == first["other_line"]]
+    np.testing.assert_allclose(first["min_clearance_m"], [float(r["min_clearance_m"]) for r in ref], rtol=RTOL,
+                               atol=1e-9)
+
+
+def test_progress_exception_stops_the_run_and_keeps_the_results(mooring: tangle.Model) -> None:
+    class Stop(Exception):
+        pass
+
+    def progress(t: float, duration: float) -> None:
+        if t >= 3.0:
+            raise Stop()
+
+    with pytest.raises(tangle.Interrupted) as e:
+        mooring.run_dynamics(progress)
+    assert isinstance(e.value.__cause__, Stop)
+    partial = e.value.results
+    assert partial.interrupted and not partial.completed
+    assert 3.0 <= partial.time_s[-1] < 3.5
+    assert partial.lines["mooring1"]["effective_tension_N"].shape[0] == len(partial.time_s)
+
+
+def test_threads_run_side_by_side(mooring: tangle.Model) -> None:
+    serial = mooring.run_dynamics()
+    models = [mooring.copy() for _ in range(2)]
+    results: list = [None, None]
+
+    def work(i: int) -> None:
+        results[i] = models[i].run_dynamics()
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for r in results:
+        np.testing.assert_array_equal(r.lines["mooring1"]["effective_tension_N"],
+                                      serial.lines["mooring1"]["effective_tension_N"])
+
+
+def test_the_gil_is_released_during_a_run(mooring: tangle.Model) -> None:
+    # While a run holds the GIL no other Python thread can execute a single bytecode: the main thread's
+    # counter would stay near zero for the whole run.
+    worker = threading.Thread(target=mooring.run_dynamics)
+    worker.start()
+    count = 0
+    while worker.is_alive():
+        count += 1
+    worker.join()
+    assert count > 10000
