@@ -85,9 +85,10 @@ std::string selfExecutable() {
 }
 
 /// Starts `tangle run` on one case, its output to the case's log. @return the child's pid
-pid_t startCase(const std::string& exe, const CasePaths& p, bool plots) {
+pid_t startCase(const std::string& exe, const CasePaths& p, const BatchOptions& options) {
   std::vector<std::string> args = {exe, "run", p.model.string(), "-o", p.results.string(), "--overwrite", "--quiet"};
-  if (!plots) args.push_back("--no-plots");
+  if (!options.plots) args.push_back("--no-plots");
+  if (!options.reports) args.push_back("--no-report");
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -126,9 +127,10 @@ CaseSummary finishCase(const BatchCase& c, const CasePaths& p, int status, doubl
 
 #ifdef TANGLE_WITH_MPI
 /// Runs one case to its end (the blocking form, for MPI worker ranks).
-CaseSummary runCase(const std::string& exe, const BatchCase& c, const CasePaths& p, bool plots, int rank) {
+CaseSummary runCase(const std::string& exe, const BatchCase& c, const CasePaths& p, const BatchOptions& options,
+                    int rank) {
   const auto start = Clock::now();
-  const pid_t pid = startCase(exe, p, plots);
+  const pid_t pid = startCase(exe, p, options);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
@@ -225,7 +227,7 @@ int runBatch(const BatchOptions& options) {
       MPI_Recv(&index, 1, MPI_INT, 0, kTagAssign, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       if (index < 0) break;
       last = runCase(exe, plan.cases[static_cast<std::size_t>(index)], paths[static_cast<std::size_t>(index)],
-                     options.plots, ranks.rank)
+                     options, ranks.rank)
                  .serialise();
     }
     MPI_Finalize();
@@ -259,7 +261,7 @@ int runBatch(const BatchOptions& options) {
     while (static_cast<int>(running.size()) < jobs) {
       const int i = nextCase();
       if (i < 0) break;
-      running[startCase(exe, paths[static_cast<std::size_t>(i)], options.plots)] = {i, Clock::now()};
+      running[startCase(exe, paths[static_cast<std::size_t>(i)], options)] = {i, Clock::now()};
       busy = true;
     }
 #ifdef TANGLE_WITH_MPI

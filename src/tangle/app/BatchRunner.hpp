@@ -23,6 +23,7 @@ struct BatchOptions {
   std::string outputDir;  ///< empty: <batch name>_results beside the batch file
   int jobs = 0;           ///< cases at a time per process (0: cores without MPI, 1 per rank with MPI)
   bool plots = false;     ///< PNG plots for every case (off: they cost more than small runs)
+  bool reports = true;    ///< report.html for every case (1-4 MB each)
   bool quiet = false;
 };
 

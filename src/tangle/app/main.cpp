@@ -57,6 +57,8 @@ int main(int argc, char** argv) {
                     "Cases at a time per process (default: one per core; 1 per rank under mpirun)")
       ->check(CLI::Range(1, 1024));
   batch->add_flag("--plots", batchOptions.plots, "Write PNG plots for every case");
+  bool noReports = false;
+  batch->add_flag("--no-report", noReports, "Do not write report.html for every case");
   batch->add_flag("-q,--quiet", batchOptions.quiet, "Print only errors");
 
   try {
@@ -78,6 +80,7 @@ int main(int argc, char** argv) {
       // Ctrl-C reaches the running cases too (same process group): they stop cleanly and keep their results;
       // no new case is started.
       tangle::core::installInterruptHandler();
+      batchOptions.reports = !noReports;
       return tangle::app::runBatch(batchOptions);
     }
   } catch (const tangle::InputError& e) {
