@@ -407,9 +407,28 @@ def clearance_envelope_figure(table: Table, required: float | None = None) -> Fi
 # Files
 
 
+# CSV time-history names -> (dataset in results.h5 under /dynamics/lines/<line>/, component or None).
+_H5_QUANTITIES = {
+    "x_m": ("position", 0), "y_m": ("position", 1), "z_m": ("position", 2),
+    "effective_tension_N": ("effective_tension", None), "bending_moment_Nm": ("bending_moment", None),
+    "curvature_1_per_m": ("curvature", None), "torque_Nm": ("torque", None),
+    "bending_moment_x_Nm": ("bending_moment_vector", 0), "bending_moment_y_Nm": ("bending_moment_vector", 1),
+    "bending_moment_z_Nm": ("bending_moment_vector", 2),
+}
+
+
 def _line_history(results: Path, line: str, quantity: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Time history of one quantity along a line: (times [s], arc lengths [m], values[time, node])."""
+    """Time history of one quantity along a line: (times [s], arc lengths [m], values[time, node]), from
+    ``dynamics/<line>/<quantity>.csv`` or, when the run wrote HDF5 only (output.format), ``results.h5``."""
     path = results / "dynamics" / line / f"{quantity}.csv"
+    if not path.exists() and (results / "results.h5").exists():
+        import h5py  # Debian's python3-h5py; only needed for HDF5-only runs
+
+        name, component = _H5_QUANTITIES[quantity]
+        with h5py.File(results / "results.h5", "r") as f:
+            g = f["dynamics/lines"][line]
+            values = g[name][...] if component is None else g[name][:, :, component]
+            return f["dynamics/time"][...], g["arc_length"][...], np.asarray(values, dtype=float)
     raw = np.genfromtxt(path, delimiter=",", names=None, skip_header=1)
     raw = np.atleast_2d(raw)
     with open(path, encoding="utf-8") as f:

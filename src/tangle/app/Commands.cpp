@@ -1,5 +1,6 @@
 #include "tangle/app/Commands.hpp"
 
+#include <array>
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -7,6 +8,7 @@
 #include <fmt/format.h>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 #include <cmath>
 
@@ -18,6 +20,7 @@
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/io/DynamicRecorder.hpp"
+#include "tangle/io/Hdf5Results.hpp"
 #include "tangle/io/HtmlReport.hpp"
 #include "tangle/io/JsonWriter.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -236,6 +239,27 @@ void makePlots(const fs::path& outDir, RunLog& log) {
   }
 }
 
+/// Whether the run writes CSV time histories and results.h5 (output.format; `auto`: both unless the CSV
+/// time histories would exceed OutputSpec::kAutoCsvLimit, then HDF5 only).
+struct ResultFiles {
+  bool csv = true, hdf5 = true;
+};
+ResultFiles resultFiles(const model::Model& m, bool staticsOnly) {
+  const model::OutputSpec& o = m.spec().output;
+  switch (o.format) {
+    case model::ResultFormat::Csv: return {true, false};
+    case model::ResultFormat::Hdf5: return {false, true};
+    case model::ResultFormat::Both: return {true, true};
+    case model::ResultFormat::Auto: break;
+  }
+  const model::DynamicSpec& d = m.spec().dynamics;
+  if (!d.enabled || staticsOnly) return {true, true};
+  // 10 quantities per node, ~13 characters per value ("-1.234567e+05,").
+  const double records = std::floor(d.duration / d.outputInterval) + 1.0;
+  const double bytes = 10.0 * 13.0 * static_cast<double>(m.nodeCount()) * records;
+  return {bytes <= model::OutputSpec::kAutoCsvLimit, true};
+}
+
 /// Strain above which a warning is given [-]: steel and chain yield near 0.2-0.5 %, polyester and nylon
 /// ropes break at 10-20 %: 5 % flags input mistakes without flagging fibre ropes in normal use.
 constexpr double kStrainWarning = 0.05;
@@ -296,6 +320,14 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   }
   io::writeStaticLineTables(outDir, lines);
   if (m.spec().output.vtk) io::PvdSeries(outDir / "vtk" / "statics.pvd").addStep(0.0, io::toPolylines(lines));
+  const ResultFiles files = resultFiles(m, options.staticsOnly);
+  std::unique_ptr<io::Hdf5Results> h5;
+  if (files.hdf5) {
+    std::ifstream modelCopy(outDir / "model.yaml", std::ios::binary);
+    const std::string modelText((std::istreambuf_iterator<char>(modelCopy)), std::istreambuf_iterator<char>());
+    h5 = std::make_unique<io::Hdf5Results>(outDir, m, modelText);
+    h5->writeStatics(lines);
+  }
   log.info(result.message + "\n");
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
   std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
@@ -333,7 +365,9 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
 
   int code = 0;
   if (m.spec().dynamics.enabled && !options.staticsOnly) {
-    io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0);
+    io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0, files.csv);
+    if (h5) h5->beginDynamics(lines);
+    std::vector<double> vesselMotion(6 * m.vessels().size());
     std::unique_ptr<contact::ClashReport> clash;
     if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact());
     // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
@@ -373,14 +407,19 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
           recorder.record(s.time, snap);
           if (report) timed([&] { report->recordOutput(snap, s, sim.contact(), envelope.get()); });
           if (clash) clash->recordClearance(s);
+          for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
+            const int node = m.vesselNode(v);
+            const Vec3 r = geometry::logMap(s.triad[node] * m.vesselRotation(v).transpose()) * 180.0 / kPi;
+            const Vec3& p = s.position[node];
+            std::copy_n(std::array<double, 6>{p.x(), p.y(), p.z(), r.x(), r.y(), r.z()}.data(), 6,
+                        vesselMotion.begin() + 6 * v);
+          }
+          if (h5) h5->record(s.time, snap, vesselMotion);
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", s.time);
-            for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
-              const int node = m.vesselNode(v);
-              const Vec3 r = geometry::logMap(s.triad[node] * m.vesselRotation(v).transpose()) * 180.0 / kPi;
-              row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", s.position[node].x(),
-                                 s.position[node].y(), s.position[node].z(), r.x(), r.y(), r.z());
-            }
+            for (std::size_t k = 0; k < vesselMotion.size(); k += 6)
+              row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", vesselMotion[k], vesselMotion[k + 1],
+                                 vesselMotion[k + 2], vesselMotion[k + 3], vesselMotion[k + 4], vesselMotion[k + 5]);
             vesselFile->write(row + "\n");
             vesselFile->flush();
           }
@@ -400,6 +439,8 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
         });
     recorder.writeRanges();
     recorder.close();
+    if (h5 && recorder.stepCount() > 0) h5->writeRanges(recorder);
+    if (h5 && sim.contact()) h5->writeContactEvents(sim.contact()->events());
     if (report && recorder.stepCount() > 0) {
       timed([&] {
         for (std::size_t l = 0; l < recorder.ranges().size(); ++l) {
@@ -434,7 +475,9 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   if (envelope) {
     envelope->write(outDir);
     log.info(envelope->terminalSummary());
+    if (h5) h5->writeClearance(*envelope);
   }
+  if (h5) h5->close();  // results.h5 complete, results.xdmf beside it
   if (m.spec().output.plots && !options.noPlots) makePlots(outDir, log);
   if (report) {
     if (envelope) report->setEnvelope(*envelope);

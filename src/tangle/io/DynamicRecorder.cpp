@@ -50,7 +50,7 @@ std::vector<VtkPolyline> toPolylines(const std::vector<solver::LineSnapshot>& li
 }
 
 DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::LineSnapshot>& initial,
-                                 double vtkInterval)
+                                 double vtkInterval, bool timeHistories)
     : m_dir(dir), m_stems(lineFileStems(initial)), m_vtkInterval(vtkInterval) {
   const fs::path dyn = dir / "dynamics";
   fs::create_directories(dyn);
@@ -62,7 +62,7 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
     const fs::path ld = dyn / m_stems[l];
     fs::create_directories(ld);
     std::vector<std::unique_ptr<OutputFile>> streams;
-    for (int q = 0; q < kQuantityCount; ++q) {
+    for (int q = 0; q < (timeHistories ? kQuantityCount : 0); ++q) {
       auto f = std::make_unique<OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));
       std::string row = "time_s";
       for (double a : s.arcLength) row += fmt::format(",s={:.3f}m", a);
@@ -91,9 +91,10 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
   std::string forces = fmt::format("{:.6f}", time);
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
-    for (int q = 0; q < kQuantityCount; ++q) {
+    for (std::size_t q = 0; q < m_streams[l].size(); ++q) {
       std::string row = fmt::format("{:.6f}", time);
-      for (std::size_t i = 0; i < s.arcLength.size(); ++i) row += fmt::format(",{:.6e}", quantity(s, q, i));
+      for (std::size_t i = 0; i < s.arcLength.size(); ++i)
+        row += fmt::format(",{:.6e}", quantity(s, static_cast<int>(q), i));
       m_streams[l][q]->write(row + "\n");
       m_streams[l][q]->flush();
     }

@@ -28,8 +28,10 @@ class DynamicRecorder {
  public:
   /// @param dir output directory; @param initial the lines at t = 0 (names, arc lengths)
   /// @param vtkInterval time between ParaView frames [s] (<= 0: no ParaView output)
+  /// @param timeHistories write dynamics/<line>/<quantity>.csv (false: results.h5 holds them; the range
+  ///        graphs and end_forces.csv are written either way)
   DynamicRecorder(const std::filesystem::path& dir, const std::vector<solver::LineSnapshot>& initial,
-                  double vtkInterval);
+                  double vtkInterval, bool timeHistories = true);
   ~DynamicRecorder();
   DynamicRecorder(const DynamicRecorder&) = delete;
   DynamicRecorder& operator=(const DynamicRecorder&) = delete;
@@ -46,6 +48,8 @@ class DynamicRecorder {
   int recordCount() const { return m_records; }
   /// Number of accumulated states (initial state + accepted steps).
   long stepCount() const { return m_steps; }
+  /// Time the means are weighted over [s] (0: only the initial state; then the means are its values).
+  double meanWeight() const { return m_weight; }
 
   /// Min/max/mean accumulators of one line (per node), and the extremes of its end tensions [N].
   struct Range {

@@ -880,8 +880,13 @@ void readDynamics(const Value& v, ModelSpec& spec) {
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"vtk", "vtk_interval", "plots"});
+  const Map m(v, {"format", "vtk", "vtk_interval", "plots"});
   const model::OutputSpec d;
+  if (const std::optional<Value> format = m.find("format"))
+    spec.output.format = format->choice<model::ResultFormat>({{"auto", model::ResultFormat::Auto},
+                                                              {"csv", model::ResultFormat::Csv},
+                                                              {"hdf5", model::ResultFormat::Hdf5},
+                                                              {"both", model::ResultFormat::Both}});
   spec.output.vtk = m.boolean("vtk", d.vtk);
   spec.output.vtkInterval = m.number("vtk_interval", d.vtkInterval, positive());
   spec.output.plots = m.boolean("plots", d.plots);

@@ -278,7 +278,18 @@ struct ClearanceSpec {
 };
 
 /// Result output settings.
+/// Files that hold the time histories of a dynamic run (docs/results-hdf5.md).
+enum class ResultFormat {
+  Auto,  ///< both while the CSV time histories stay under OutputSpec::kAutoCsvLimit, else HDF5 only
+  Csv,   ///< CSV files only
+  Hdf5,  ///< results.h5 (+ results.xdmf); the small CSV tables (statics, ranges, end forces) stay
+  Both   ///< both
+};
+
 struct OutputSpec {
+  /// Estimated CSV time-history volume above which `auto` writes HDF5 only [bytes].
+  static constexpr double kAutoCsvLimit = 100e6;
+  ResultFormat format = ResultFormat::Auto;
   bool vtk = true;   ///< write a ParaView .pvd/.vtu series
   double vtkInterval = 1.0;  ///< time between ParaView frames in dynamics [s]
   bool plots = true; ///< write PNG plots (needs python3 with matplotlib)

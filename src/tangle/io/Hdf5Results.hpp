@@ -1,0 +1,69 @@
+#pragma once
+/// @file Hdf5Results.hpp
+/// One HDF5 file per run, `results.h5`, with an XDMF file beside it (`results.xdmf`) that lets ParaView
+/// open the lines' motion and fields. Layout (docs/results-hdf5.md; every dataset has `units` and
+/// `description` attributes, series are chunked along time and deflate + shuffle compressed):
+///
+///     /                       attrs: tangle_version, title, model_file, model_text (the model as run)
+///     /statics/lines/<line>/  arc_length, position [node, xyz], effective_tension, bending_moment,
+///                             bending_moment_vector [node, xyz], curvature, torque, rotation [node, xyz]
+///                             attrs: end_a_tension, end_b_tension, touchdown_arc_length
+///     /dynamics/time          [time]
+///     /dynamics/lines/<line>/ position [time, node, xyz], effective_tension, bending_moment, curvature,
+///                             torque [time, node], bending_moment_vector [time, node, xyz],
+///                             end_tension [time, end], end_force [time, end, xyz], range/<quantity>_{min,max,mean}
+///     /dynamics/vessels/<vessel>/motion [time, (x, y, z, rx, ry, rz)]
+///     /contact/events/<field> [event], /clearance/<line>/<other>/... [node]
+///     /xdmf/<line>/segments   [element, 2] node indices (the XDMF polyline topology)
+///
+/// Rows are written a chunk at a time and the file is flushed at every chunk, so a run that stops midway
+/// (or crashes) keeps everything up to the last chunk; a run that fails with an error keeps all of it.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tangle/contact/ClearanceEnvelope.hpp"
+#include "tangle/contact/ContactEvents.hpp"
+#include "tangle/io/DynamicRecorder.hpp"
+#include "tangle/io/Hdf5File.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/LineResults.hpp"
+
+namespace tangle::io {
+
+class Hdf5Results {
+ public:
+  /// Creates `dir`/results.h5 and stores the model. `modelText` is the model file as run.
+  Hdf5Results(const std::filesystem::path& dir, const model::Model& model, const std::string& modelText);
+  ~Hdf5Results();
+
+  void writeStatics(const std::vector<solver::LineSnapshot>& lines);
+  /// Starts the time series (call once, before the first record).
+  void beginDynamics(const std::vector<solver::LineSnapshot>& initial);
+  /// One output time: the lines and, per vessel, (x, y, z [m], rx, ry, rz [deg]).
+  void record(double time, const std::vector<solver::LineSnapshot>& lines, const std::vector<double>& vesselMotion);
+  /// Range graphs accumulated by the CSV recorder (same numbers as dynamics/<line>/range.csv).
+  void writeRanges(const DynamicRecorder& recorder);
+  void writeContactEvents(const std::vector<contact::ContactEvent>& events);
+  void writeClearance(const contact::ClearanceEnvelope& envelope);
+  /// Flushes, closes the file and writes results.xdmf (the dynamics, or the static shape).
+  void close();
+
+ private:
+  void writeXdmf() const;
+
+  std::filesystem::path m_dir;
+  const model::Model* m_model;
+  std::unique_ptr<Hdf5File> m_file;
+  std::vector<std::string> m_stems;
+  std::vector<std::size_t> m_nodes;
+  bool m_hasStatics = false;
+  int m_time = -1;
+  std::vector<std::vector<int>> m_lineSeries;  ///< per line: series handles (see the .cpp)
+  std::vector<int> m_vesselSeries;             ///< per vessel: its motion series
+  std::vector<double> m_times;
+};
+
+}  // namespace tangle::io

@@ -1,0 +1,154 @@
+"""results.h5 and results.xdmf (docs/results-hdf5.md) read back with h5py, against the CSV files of the
+same run.
+
+Run through ctest (it sets TANGLE_CLI), or by hand:
+    TANGLE_CLI=build/ci/tangle /usr/bin/python3 -m pytest -q tests/python/test_results_hdf5.py
+
+Tolerances: the time series are stored in single precision (7 significant digits) and the CSV files print
+7 significant digits (%.6e): they agree to a few units of the 7th digit (rtol 1e-6 plus float32 rounding,
+2e-7 relative). Statics and range graphs are stored in double precision: equal to the CSV's rounding.
+No XDMF reader is in Debian's python3-vtk9 (built without Xdmf), so the XDMF is checked by parsing it:
+every HDF5 reference exists with the declared dimensions and every hyperslab lies inside its dataset.
+"""
+
+from __future__ import annotations
+
+import csv
+import os
+import subprocess
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import h5py
+import numpy as np
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+CLI = os.environ.get("TANGLE_CLI", str(ROOT / "build" / "ci" / "tangle"))
+RTOL = 1.5e-6
+
+
+def read_csv(path: Path) -> tuple[list[str], np.ndarray]:
+    with path.open() as f:
+        rows = list(csv.reader(f))
+    return rows[0], np.array([[float(v) for v in r] for r in rows[1:]])
+
+
+def run(model: Path, out: Path, changes: dict[str, str]) -> Path:
+    text = model.read_text()
+    for old, new in changes.items():
+        assert old in text, old
+        text = text.replace(old, new)
+    path = out.parent / (out.name + ".yaml")
+    path.write_text(text)
+    r = subprocess.run([CLI, "run", str(path), "-o", str(out), "--no-plots", "--no-report", "-q"],
+                       capture_output=True, text=True, timeout=600)
+    assert r.returncode == 0, r.stderr
+    return out
+
+
+@pytest.fixture(scope="module")
+def mooring(tmp_path_factory) -> Path:
+    out = tmp_path_factory.mktemp("h5") / "mooring"
+    return run(ROOT / "examples" / "mooring-dynamics" / "model.yaml", out,
+               {"  duration: 200 ": "  duration: 12 ", "output:\n": "output:\n  format: both\n"})
+
+
+def test_every_dataset_has_units_and_a_description(mooring: Path) -> None:
+    with h5py.File(mooring / "results.h5", "r") as f:
+        seen = []
+
+        def check(name, obj):
+            if isinstance(obj, h5py.Dataset):
+                seen.append(name)
+                assert isinstance(obj.attrs["units"], str) and obj.attrs["units"], name
+                assert isinstance(obj.attrs["description"], str) and obj.attrs["description"], name
+
+        f.visititems(check)
+        expected = {f"dynamics/lines/mooring1/{q}" for q in
+                    ("position", "effective_tension", "bending_moment", "bending_moment_vector", "curvature",
+                     "torque", "end_tension", "end_force", "arc_length")}
+        expected |= {f"statics/lines/mooring1/{q}" for q in
+                     ("position", "effective_tension", "bending_moment", "curvature", "torque", "arc_length")}
+        expected |= {f"dynamics/lines/mooring1/range/{q}_{k}" for q in ("effective_tension", "bending_moment",
+                                                                        "curvature") for k in ("min", "max", "mean")}
+        expected |= {"dynamics/time"}
+        assert expected <= set(seen), expected - set(seen)
+        assert f.attrs["model_text"] == (mooring / "model.yaml").read_text()
+        assert f.attrs["tangle_version"]
+        # Time series: chunked along time and compressed.
+        ds = f["dynamics/lines/mooring1/effective_tension"]
+        assert ds.chunks[1:] == ds.shape[1:] and ds.compression == "gzip" and ds.shuffle
+
+
+def test_values_equal_the_csv_files(mooring: Path) -> None:
+    with h5py.File(mooring / "results.h5", "r") as f:
+        g = f["dynamics/lines/mooring1"]
+        _, tension = read_csv(mooring / "dynamics" / "mooring1" / "effective_tension_N.csv")
+        np.testing.assert_allclose(f["dynamics/time"][...], tension[:, 0], atol=1e-6)
+        np.testing.assert_allclose(g["effective_tension"][...], tension[:, 1:], rtol=RTOL)
+        for k, q in enumerate(("x_m", "y_m", "z_m")):
+            _, x = read_csv(mooring / "dynamics" / "mooring1" / f"{q}.csv")
+            np.testing.assert_allclose(g["position"][:, :, k], x[:, 1:], rtol=RTOL, atol=1e-6)
+        header, ends = read_csv(mooring / "dynamics" / "end_forces.csv")
+        col = {h: i for i, h in enumerate(header)}
+        np.testing.assert_allclose(g["end_tension"][:, 1], ends[:, col["mooring1_end_b_tension_N"]], rtol=RTOL)
+        header, rng = read_csv(mooring / "dynamics" / "mooring1" / "range.csv")
+        col = {h: i for i, h in enumerate(header)}
+        for k in ("min", "max", "mean"):
+            np.testing.assert_allclose(g["range"][f"effective_tension_{k}"][...], rng[:, col[f"tension_{k}_N"]],
+                                       rtol=1e-6)
+        header, st = read_csv(mooring / "statics" / "mooring1.csv")
+        col = {h: i for i, h in enumerate(header)}
+        s = f["statics/lines/mooring1"]
+        np.testing.assert_allclose(s["effective_tension"][...], st[:, col["effective_tension_N"]], rtol=1e-6)
+        np.testing.assert_allclose(s["position"][:, 2], st[:, col["z_m"]], atol=1e-6)
+
+
+def test_xdmf_references_exist_with_their_dimensions(mooring: Path) -> None:
+    root = ET.parse(mooring / "results.xdmf").getroot()
+    temporal = root.find("Domain/Grid")
+    assert temporal.get("CollectionType") == "Temporal"
+    frames = temporal.findall("Grid")
+    times = [float(g.find("Time").get("Value")) for g in frames]
+    assert times == sorted(times) and times[0] == 0.0 and times[-1] == pytest.approx(12.0)
+    assert len(frames) == 13  # output.vtk_interval 1 s
+    checked = 0
+    with h5py.File(mooring / "results.h5", "r") as f:
+        for item in root.iter("DataItem"):
+            if item.get("Format") != "HDF":
+                continue
+            file, path = item.text.strip().split(":")
+            assert file == "results.h5"
+            dims = tuple(int(d) for d in item.get("Dimensions").split())
+            assert f[path].shape == dims, path
+            checked += 1
+        for slab in root.iter("DataItem"):
+            if slab.get("ItemType") != "HyperSlab":
+                continue
+            select, data = slab.findall("DataItem")
+            start, stride, count = np.array(select.text.split(), dtype=int).reshape(3, -1)
+            shape = f[data.text.strip().split(":")[1]].shape
+            assert np.all(start + (count - 1) * stride < shape)
+            assert int(np.prod(count)) == int(np.prod([int(d) for d in slab.get("Dimensions").split()]))
+    assert checked > 13 * 5
+
+
+def test_hdf5_only_run_with_contact_and_clearance(tmp_path: Path) -> None:
+    out = run(ROOT / "examples" / "risers-in-contact" / "model.yaml", tmp_path / "contact",
+              {"  duration: 20": "  duration: 5", "output:\n": "output:\n  format: hdf5\n"})
+    assert not (out / "dynamics" / "upstream" / "effective_tension_N.csv").exists()
+    assert (out / "dynamics" / "upstream" / "range.csv").exists()  # the small tables stay
+    with (out / "contact" / "events.csv").open() as fh:
+        events = list(csv.DictReader(fh))
+    with h5py.File(out / "results.h5", "r") as f:
+        e = f["contact/events"]
+        assert e.attrs["count"] == len(events) > 0
+        np.testing.assert_allclose(e["peak_force"][...], [float(r["peak_force_N"]) for r in events], rtol=1e-6)
+        names = e.attrs["line_names"].split(",")
+        assert [names[int(i)] for i in e["line_1"][...]] == [r["line_1"] for r in events]
+        c = f["clearance/upstream/downstream"]
+        with (out / "clearance" / "envelope.csv").open() as fh:
+            env = [r for r in csv.DictReader(fh) if r["line"] == "upstream"]
+        np.testing.assert_allclose(c["min_clearance"][...], [float(r["min_clearance_m"]) for r in env], rtol=1e-6,
+                                   atol=1e-9)
