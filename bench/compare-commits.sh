@@ -28,30 +28,7 @@ old_bin="$work/old/build/tangle"
 mkdir -p "$work/cases"
 sed -e 's/^  vtk: true/  vtk: false/' "$root/examples/mooring-dynamics/model.yaml" > "$work/cases/mooring.yaml"
 sed -e 's/^  vtk: true/  vtk: false/' "$root/examples/drilling-riser-drift/model.yaml" > "$work/cases/drilling-riser.yaml"
-/usr/bin/python3 - "$work/cases/mooring.yaml" "$work/cases/twelve-lines.yaml" <<'PY'
-import math, re, sys
-text = open(sys.argv[1]).read()
-head, rest = text.split("lines:\n", 1)
-tail = rest[rest.index("\nstatics:"):]
-block = []
-for k in range(12):
-    az = math.radians(30 * k)
-    c, s = math.cos(az), math.sin(az)
-    fx, fy = 20 * c, 20 * s                    # fairleads on a 20 m circle
-    ax, ay = fx + 1000 * c, fy + 1000 * s      # anchors 1000 m out, as the example
-    block.append(f"""  - name: line{k + 1}
-    end_a: {{type: anchored, position: [{ax:.3f}, {ay:.3f}, -345]}}
-    end_b:
-      type: pinned
-      position: [{fx:.3f}, {fy:.3f}, -20]
-      motion: {{amplitude: [5, 0, 0], period: 10, phase: 0}}
-    sections:
-      - {{type: chain76, length: 250, elements: 40}}
-      - {{type: wire96, length: 780, elements: 130}}
-      - {{type: chain76, length: 100, elements: 30}}
-""")
-open(sys.argv[2], "w").write(head + "lines:\n" + "".join(block) + tail)
-PY
+/usr/bin/python3 "$root/bench/twelve_lines.py" "$work/cases/mooring.yaml" "$work/cases/twelve-lines.yaml"
 
 best() {  # binary model -> best wall time [s] of $repeats runs
   local bin="$1" model="$2" bestt=""
