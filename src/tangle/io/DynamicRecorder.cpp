@@ -1,7 +1,10 @@
 #include "tangle/io/DynamicRecorder.hpp"
 
 #include <algorithm>
+#include <fmt/compile.h>
 #include <fmt/format.h>
+
+#include <iterator>
 #include <limits>
 
 #include "tangle/core/Error.hpp"
@@ -92,10 +95,14 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
     for (std::size_t q = 0; q < m_streams[l].size(); ++q) {
-      std::string row = fmt::format("{:.6f}", time);
+      // Compiled format strings into one buffer: formatting value by value through fmt::format was 8 % of a
+      // mooring run (format parsing and a string per value).
+      fmt::memory_buffer row;
+      fmt::format_to(std::back_inserter(row), FMT_COMPILE("{:.6f}"), time);
       for (std::size_t i = 0; i < s.arcLength.size(); ++i)
-        row += fmt::format(",{:.6e}", quantity(s, static_cast<int>(q), i));
-      m_streams[l][q]->write(row + "\n");
+        fmt::format_to(std::back_inserter(row), FMT_COMPILE(",{:.6e}"), quantity(s, static_cast<int>(q), i));
+      row.push_back('\n');
+      m_streams[l][q]->write(std::string_view(row.data(), row.size()));
       m_streams[l][q]->flush();
     }
     for (int end = 0; end < 2; ++end) {
