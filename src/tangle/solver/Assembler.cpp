@@ -24,7 +24,6 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
   for (const auto& el : model.elements()) {
     const double w = std::abs(el.type->submergedWeight(env.waterDensity, env.gravity)) * el.restLength;
     const double wAir = el.type->massPerLength * env.gravity * el.restLength;
-    m_referenceForce = std::max({m_referenceForce, w, 0.1 * wAir});
     m_roundoffForce = std::max(m_roundoffForce, 1e-14 * el.type->axialStiffness);
     submerged[el.line] += w;
     air[el.line] += wAir;
@@ -36,8 +35,15 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
     air[line] += a.spec.mass * env.gravity;
   }
   for (std::size_t l = 0; l < submerged.size(); ++l)
-    m_staticForceScale = std::max({m_staticForceScale, submerged[l], 0.1 * air[l]});
+    m_forceScale = std::max({m_forceScale, submerged[l], 0.1 * air[l]});
   const int n = model.nodeCount();
+  m_nodeForceScale.assign(n, m_forceScale);
+  for (int node = 0; node < n; ++node) {
+    const int line = model.lineOfNode(node);
+    if (line < 0) continue;
+    const double scale = std::max(submerged[line], 0.1 * air[line]);
+    if (scale > 0.0) m_nodeForceScale[node] = scale;
+  }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
   m_trialAnchor = m_anchor;
   m_committedXY.assign(n, Vec2::Zero());
@@ -69,6 +75,26 @@ double Assembler::roundoffFloor(const model::State& state) const {
   }
   // A node sums a few such terms of either sign; 16 leaves room for the accumulation.
   return 16.0 * floor;
+}
+
+void Assembler::nodeRoundoffFloor(const model::State& state, std::vector<double>& floor) const {
+  constexpr double eps = std::numeric_limits<double>::epsilon();
+  floor.assign(m_model->nodeCount(), 0.0);
+  double largest = 0.0;
+  for (const model::LineElement& el : m_model->elements()) {
+    const double x = std::max(state.position[el.node1].cwiseAbs().maxCoeff(), state.position[el.node2].cwiseAbs().maxCoeff()) +
+                     el.restLength;
+    const double l = el.restLength;
+    const double ea = el.type->axialStiffness;
+    double f = 16.0 * ea * eps * x / l;
+    if (el.isBeam()) f = std::max(f, 16.0 * el.type->bendingStiffness * eps * x / (l * l));
+    f = std::max(f, 10.0 * 1e-14 * ea);  // the force resolution of roundoffForce, per element
+    floor[el.node1] = std::max(floor[el.node1], f);
+    floor[el.node2] = std::max(floor[el.node2], f);
+    largest = std::max(largest, f);
+  }
+  for (int n = 0; n < m_model->nodeCount(); ++n)
+    if (m_model->lineOfNode(n) < 0) floor[n] = largest;
 }
 
 void Assembler::beginStatics(const model::State& state) {

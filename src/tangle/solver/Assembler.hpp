@@ -114,12 +114,19 @@ class Assembler {
   /// the effective tension of Sparks 1984).
   std::vector<double> elementTension(const model::State& state) const;
 
-  /// Reference force [N] for the dynamic convergence test: largest element weight magnitude or 1 N.
-  double referenceForce() const { return m_referenceForce; }
-  /// Force scale [N] of the static convergence test, independent of the mesh: the largest over the lines
-  /// of the line's submerged weight (absolute, each element), 10 % of its weight in air and the weight
-  /// of its attachments, and at least 1 N.
-  double staticForceScale() const { return m_staticForceScale; }
+  /// Force scale [N] of the static and dynamic convergence tests, independent of the mesh: the largest over
+  /// the lines of the line's submerged weight (absolute, each element), 10 % of its weight in air and the
+  /// weight of its attachments, and at least 1 N.
+  double forceScale() const { return m_forceScale; }
+  /// Force scale [N] of each node for the dynamic convergence test: the scale of its line as in
+  /// forceScale() but without the 1 N floor (a 2 g body next to a 2000 t one is tested on its own weight),
+  /// forceScale() for nodes on no line (vessels).
+  const std::vector<double>& nodeForceScale() const { return m_nodeForceScale; }
+  /// Round-off floor [N] of the out-of-balance force of each node at `state` (into `floor`, one per node):
+  /// 16 max(EA eps |x| / L, EI eps |x| / L^2, 1e-14 EA) over the elements at the node (see roundoffFloor),
+  /// the global roundoffFloor for nodes on no element. Per node, so that a stiff line's round-off does not
+  /// become the tolerance of a light one.
+  void nodeRoundoffFloor(const model::State& state, std::vector<double>& floor) const;
   /// Round-off floor [N] of the out-of-balance force at `state`: an element's force is known only to
   /// about EA eps |x| / L (the strain is a difference of coordinates of magnitude |x|), its moments to
   /// EI eps |x| / L^2; a residual cannot be driven below a few times the largest of these.
@@ -147,8 +154,8 @@ class Assembler {
 
   const model::Model* m_model;
   std::vector<LoadContributor*> m_contributors;
-  double m_referenceForce = 1.0;
-  double m_staticForceScale = 1.0;
+  double m_forceScale = 1.0;
+  std::vector<double> m_nodeForceScale;
   // Seabed friction in statics: committed anchor (x, y) per node (NaN: none) and the trial anchors of the
   // last assembly; positions (x, y) at the last commit, anchors of nodes that touch down later.
   std::vector<Vec2> m_anchor;

@@ -81,10 +81,10 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
       s.tension[i] /= count[i];
       s.bendingMomentVector[i] /= count[i];
       s.torque[i] /= count[i];
-      // Cable nodes keep the identity triad: their rotation is zero without the logarithm (which, with its
-      // atan2, was 6 % of a mooring run through the per-step range graphs).
-      const Mat3& triad = state.triad[line.firstNode + i];
-      if (triad != Mat3::Identity()) s.rotation[i] = geometry::logMap(triad) * (180.0 / kPi);
+      // Cable nodes have no rotation: zero without the logarithm (which, with its atan2, was 6 % of a
+      // mooring run through the per-step range graphs).
+      if (dofs.hasRotations(line.firstNode + i))
+        s.rotation[i] = geometry::logMap(state.triad[line.firstNode + i]) * (180.0 / kPi);
       ei[i] /= count[i];
       s.bendingMoment[i] = s.bendingMomentVector[i].norm();
       if (ei[i] > 0.0) {

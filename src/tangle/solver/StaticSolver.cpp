@@ -47,7 +47,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     result.message = "no free degrees of freedom";
     return result;
   }
-  m_forceScale = m_assembler->staticForceScale();
+  m_forceScale = m_assembler->forceScale();
   result.tolerance = m_settings.tolerance * m_forceScale;
   const model::State start = state;
   // Iterations in all: max_iterations bounds each Newton solve; the whole continuation gets 20 times that.

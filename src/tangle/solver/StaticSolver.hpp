@@ -13,7 +13,7 @@
 ///     offsets - is ramped together from the state the start shape balances to the full load.
 ///     Increments of lambda grow after successes and are cut after failures.
 /// Convergence is measured against a force scale of the model that does not shrink with the mesh (the
-/// largest line weight, see Assembler::staticForceScale) and accepts a residual stalled at the
+/// largest line weight, see Assembler::forceScale) and accepts a residual stalled at the
 /// round-off floor of the elements (Assembler::roundoffFloor). Seabed friction acts in statics as an
 /// elastic-plastic spring to the as-laid position, committed after every converged increment.
 /// A converged state is checked before it is reported: slack suspended cable elements (an unstable

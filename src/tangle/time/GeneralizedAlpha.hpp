@@ -88,6 +88,8 @@ class GeneralizedAlpha {
   model::DynamicSpec m_settings;
   std::vector<PrescribedNode> m_prescribed;
   AlphaParameters m_params;
+  std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
+  VecX m_allowed;                   // allowed out-of-balance of each equation this step [N or N m]
   solver::SystemMatrix m_matrix;
   solver::LinearSolver m_solver;
   SparseMatrix m_k;
