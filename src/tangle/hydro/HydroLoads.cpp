@@ -58,7 +58,7 @@ HydroLoads::HydroLoads(const model::Model& model)
   const std::size_t n = model.elements().size();
   m_fluid.resize(n);
   m_surface.assign(n, 0.0);
-  m_addedMass.assign(n, Mat3::Zero());
+  m_addedMass.assign(n, AddedMass{});
   if (!model.spec().wakes.empty()) {
     m_wake = std::make_unique<WakeInterference>(model, m_current);
     if (m_wake->empty()) m_wake.reset();
@@ -113,7 +113,7 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     const Vec3& x2 = state.position[el.node2];
     const double wet = submergedFraction(x1.z(), x2.z(), waves ? m_surface[e] : 0.0);
     if (wet <= 0.0) {
-      m_addedMass[e].setZero();
+      m_addedMass[e] = AddedMass{};
       continue;
     }
     const int d1 = dofs.firstDof(el.node1);
@@ -188,11 +188,12 @@ void HydroLoads::addMass(const model::State&, double mf, solver::SystemMatrix* m
   const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();
   for (std::size_t e = 0; e < elements.size(); ++e) {
-    const Mat3& ma = m_addedMass[e];
+    const AddedMass& ma = m_addedMass[e];
+    const Mat3 m = matrix ? ma.matrix() : Mat3::Zero();
     for (int node : {elements[e].node1, elements[e].node2}) {
       const int d = dofs.firstDof(node);
-      if (matrix) matrix->add3x3(d, d, ma, mf);
-      if (out) out->segment<3>(d) += ma * acceleration->segment<3>(d);
+      if (matrix) matrix->add3x3(d, d, m, mf);
+      if (out) out->segment<3>(d) += ma * Vec3(acceleration->segment<3>(d));
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tangle/hydro/CurrentProfile.hpp"
+#include "tangle/hydro/Morison.hpp"
 #include "tangle/hydro/WakeInterference.hpp"
 #include "tangle/hydro/WaveField.hpp"
 #include "tangle/model/Model.hpp"
@@ -55,7 +56,7 @@ class HydroLoads final : public solver::LoadContributor {
   bool m_cacheDynamic = false;
   std::vector<FluidKinematics> m_fluid;  // per element, at the cached time
   std::vector<double> m_surface;         // per element
-  std::vector<Mat3> m_addedMass;         // per element, per node
+  std::vector<AddedMass> m_addedMass;    // per element, per node
   std::unique_ptr<WakeInterference> m_wake;  // nullptr without wake_interference
   std::vector<ElementWake> m_elementWake;    // per element, from the last addForces()
 };

@@ -32,12 +32,13 @@ inline void require(bool ok, const char* what, const char* requirement, double v
 /// J = kn (|v_rn| (I - t t^T) + v_rn v_rn^T / |v_rn|) + 2 ka |t.v_r| t t^T; the normal part tends to 0 as
 /// v_rn -> 0 (|x| x is continuously differentiable), so J = 2 ka |t.v_r| t t^T there.
 /// The Jacobian only when asked for (most assemblies need the force alone).
-inline void drag(const Vec3& vr, const Vec3& t, const Mat3& ttT, double kn, double ka, Vec3& q, Mat3* jacobian) {
+inline void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, Mat3* jacobian) {
   const double va = t.dot(vr);
   const Vec3 vn = vr - va * t;
   const double vnNorm = vn.norm();
   q = kn * vnNorm * vn + ka * std::abs(va) * va * t;
   if (!jacobian) return;
+  const Mat3 ttT = t * t.transpose();
   *jacobian = kn * vnNorm * (Mat3::Identity() - ttT) + 2.0 * ka * std::abs(va) * ttT;
   if (vnNorm > 0.0) *jacobian += (kn / vnNorm) * (vn * vn.transpose());
 }
@@ -69,24 +70,30 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
   const double displacedArea = type.buoyancyDiameter > 0.0 ? type.displacedAreaPerLength() : area;  // A_b
   const double kn = 0.5 * rho * type.dragNormal * d;       // [kg/m^2]
   const double ka = 0.5 * rho * type.dragAxial * kPi * d;  // [kg/m^2]
-  const Mat3 ttT = t * t.transpose();
-  const Mat3 addedMassPerLength =
-      rho * area * (type.addedMassNormal * (Mat3::Identity() - ttT) + type.addedMassAxial * ttT);  // [kg/m]
+  // Added mass per unit length rho A (Can (I - t t^T) + Caa t t^T), kept as t and two masses.
+  const double normalMass = rho * area * type.addedMassNormal;  // [kg/m]
+  const double axialMass = rho * area * type.addedMassAxial;    // [kg/m]
 
   // Fluid inertia per unit length: Froude-Krylov + added-mass part of the fluid acceleration.
-  const Vec3 inertia = rho * displacedArea * fluid.acceleration + addedMassPerLength * fluid.acceleration;
+  Vec3 inertia = Vec3::Zero();
+  if (!fluid.acceleration.isZero(0.0)) {
+    const Vec3& af = fluid.acceleration;
+    inertia = (rho * displacedArea + normalMass) * af + ((axialMass - normalMass) * t.dot(af)) * t;
+  }
 
   Vec3 q1, q2;
   Mat3 j1, j2;
-  drag(fluid.velocity - v1, t, ttT, kn, ka, q1, wantDamping ? &j1 : nullptr);
-  drag(fluid.velocity - v2, t, ttT, kn, ka, q2, wantDamping ? &j2 : nullptr);
+  drag(fluid.velocity - v1, t, kn, ka, q1, wantDamping ? &j1 : nullptr);
+  drag(fluid.velocity - v2, t, kn, ka, q2, wantDamping ? &j2 : nullptr);
   load.force1 = halfLength * (q1 + inertia);
   load.force2 = halfLength * (q2 + inertia);
   if (wantDamping) {
     load.damping1 = halfLength * j1;  // d force1/d v1 = -halfLength * j1
     load.damping2 = halfLength * j2;
   }
-  load.addedMassPerNode = halfLength * addedMassPerLength;
+  load.addedMassPerNode.tangent = t;
+  load.addedMassPerNode.normal = halfLength * normalMass;
+  load.addedMassPerNode.axial = halfLength * axialMass;
   return load;
 }
 

@@ -25,6 +25,19 @@
 
 namespace tangle::hydro {
 
+/// Added mass of a node of a straight element [kg]: m_n (I - t t^T) + m_a t t^T, kept as the tangent and
+/// the two masses (applying it to an acceleration costs a dot product; the 3x3 matrix is built only for
+/// assemblies that need it).
+struct AddedMass {
+  Vec3 tangent = Vec3::UnitX();  ///< unit tangent t of the element [-]
+  double normal = 0.0;           ///< m_n, added mass normal to t [kg]
+  double axial = 0.0;            ///< m_a, added mass along t [kg]
+  /// The force m a [N] of an acceleration a [m/s^2].
+  Vec3 operator*(const Vec3& a) const { return normal * a + ((axial - normal) * tangent.dot(a)) * tangent; }
+  /// The matrix m_n I + (m_a - m_n) t t^T [kg].
+  Mat3 matrix() const { return normal * Mat3::Identity() + (axial - normal) * (tangent * tangent.transpose()); }
+};
+
 /// Morison loads of one element, lumped on its two nodes.
 /// The total hydrodynamic force on node i is force_i - addedMassPerNode * (acceleration of node i).
 struct MorisonElementLoad {
@@ -35,7 +48,7 @@ struct MorisonElementLoad {
   Mat3 damping1 = Mat3::Zero();
   Mat3 damping2 = Mat3::Zero();  ///< C_2 = -d(force2)/d(v2) [N s/m], symmetric positive semi-definite
   /// Added mass of each node (the same for both) [kg]: f L/2 rho A (Can (I - t t^T) + Caa t t^T).
-  Mat3 addedMassPerNode = Mat3::Zero();
+  AddedMass addedMassPerNode;
 };
 
 /// Morison loads on the element x1-x2 (formulas in the file comment), lumped per node: node i receives

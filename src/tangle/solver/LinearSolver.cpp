@@ -11,27 +11,56 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
                            std::equal(m_outer.begin(), m_outer.end(), k.outerIndexPtr()) &&
                            std::equal(m_inner.begin(), m_inner.end(), k.innerIndexPtr());
   if (!samePattern) {
-    m_ldlt.analyzePattern(k);
     m_rows = k.rows();
     m_outer.assign(k.outerIndexPtr(), k.outerIndexPtr() + k.outerSize() + 1);
     m_inner.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
     m_analysed = true;
+    m_ldltAnalysed = false;
+    m_bandedSuits = false;
+    if (m_allowBanded && k.rows() > 0) {
+      // The envelope suits when one factorisation costs no more than a few multiply-adds per stored
+      // entry of the matrix (a band: ~3 per entry), i.e. the coupling between distant equations is rare.
+      m_skyline.analyzePattern(k);
+      m_bandedSuits = m_skyline.factorizationCost() <= 8.0 * static_cast<double>(k.nonZeros()) + 64.0;
+    }
+  }
+  if (m_bandedSuits && m_skyline.factorize(k)) {
+    m_method = Method::Banded;
+    return true;
+  }
+  if (!m_ldltAnalysed) {
+    m_ldlt.analyzePattern(k);
+    m_ldltAnalysed = true;
   }
   m_ldlt.factorize(k);
-  m_useLu = m_ldlt.info() != Eigen::Success;
-  if (!m_useLu) {
+  bool useLu = m_ldlt.info() != Eigen::Success;
+  if (!useLu) {
     // LDL^T without pivoting can "succeed" on a numerically singular matrix: check the pivots.
     const VecX d = m_ldlt.vectorD();
     const double dmax = d.cwiseAbs().maxCoeff();
-    m_useLu = d.size() > 0 && d.cwiseAbs().minCoeff() <= 1e-14 * dmax;
+    useLu = d.size() > 0 && d.cwiseAbs().minCoeff() <= 1e-14 * dmax;
   }
-  if (m_useLu) {
+  if (useLu) {
+    m_method = Method::Lu;
     m_lu.compute(k);
     return m_lu.info() == Eigen::Success;
   }
+  m_method = Method::Ldlt;
   return true;
 }
 
-VecX LinearSolver::solve(const VecX& b) const { return m_useLu ? VecX(m_lu.solve(b)) : VecX(m_ldlt.solve(b)); }
+VecX LinearSolver::solve(const VecX& b) const {
+  VecX x = b;
+  solveInPlace(x);
+  return x;
+}
+
+void LinearSolver::solveInPlace(VecX& b) const {
+  switch (m_method) {
+    case Method::Banded: m_skyline.solveInPlace(b); return;
+    case Method::Ldlt: b = m_ldlt.solve(b); return;
+    case Method::Lu: b = m_lu.solve(b); return;
+  }
+}
 
 }  // namespace tangle::solver

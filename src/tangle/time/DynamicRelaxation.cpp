@@ -39,6 +39,11 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
   const model::DofMap& dofs = m_assembler->model().dofs();
   const int nodes = m_assembler->model().nodeCount();
   GeneralizedAlpha stepper(*m_assembler, m_settings, m_prescribed);
+  // The general sparse solver, as the rest of statics: with the banded one (same solutions to 1e-12) the
+  // statics of the slack line in a 1.5 m/s current towards the anchor (StaticsRobustnessTest) ends on a
+  // different rested shape from which Newton does not converge - a path that sensitive to round-off is a
+  // doubt noted in issue 8.
+  stepper.setBandedSolver(false);
   stepper.freezeEnvironment(staticTime);
   state.velocity.setZero();
   state.acceleration.setZero();

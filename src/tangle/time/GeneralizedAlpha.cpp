@@ -165,13 +165,13 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   m_assembler->nodeRoundoffFloor(start, m_nodeFloor);
   {
     const std::vector<double>& scale = m_assembler->nodeForceScale();
-    m_allowed.resize(neq);
+    m_inverseAllowed.resize(neq);
     for (int i = 0; i < neq; ++i) {
       const int dof = eqDofs[i];
       const int node = dofs.nodeOf(dof);
       double allowed = std::max(m_settings.tolerance * scale[node], m_nodeFloor[node]);
       if (dof - dofs.firstDof(node) >= 3) allowed *= std::max(model.momentScale(node), 1e-6);
-      m_allowed[i] = allowed;
+      m_inverseAllowed[i] = 1.0 / allowed;
     }
   }
 
@@ -218,12 +218,9 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       r[i] = inertia[dof] + (1.0 - p.alphaF) * m_force[dof] + p.alphaF * m_forceOld[dof];
     }
     outcome.residual = solver::residualNorm(model, r, solver::ResidualIndexing::Equations, &outcome.worstNode);
-    // Largest out-of-balance relative to what each DOF is allowed (NaN stays NaN).
+    // Largest out-of-balance relative to what each DOF is allowed (a NaN shows in outcome.residual).
     double ratio = 0.0;
-    for (int i = 0; i < neq; ++i) {
-      const double q = std::abs(r[i]) / m_allowed[i];
-      if (!(q <= ratio)) ratio = q;
-    }
+    for (int i = 0; i < neq; ++i) ratio = std::max(ratio, std::abs(r[i]) * m_inverseAllowed[i]);
     if (m_debug)
       std::cerr << fmt::format("    t {:.6f} dt {:.3e} it {:2d} |r| {:.4e} ({:.3e} of the tolerance) worst node {}\n", t1,
                                dt, it, outcome.residual, ratio, outcome.worstNode);
@@ -252,7 +249,9 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       m_factorStep = dt;
       haveFactor = true;
     }
-    const VecX delta = m_solver.solve(-r);
+    m_delta = -r;
+    m_solver.solveInPlace(m_delta);
+    const VecX& delta = m_delta;
     if (m_debug) {
       Eigen::Index imax = 0;
       r.cwiseAbs().maxCoeff(&imax);

@@ -72,6 +72,12 @@ class GeneralizedAlpha {
     m_frozenTime = time;
   }
 
+  /// Use the banded linear solver when the pattern suits (the default; LinearSolver.hpp). Dynamic relaxation,
+  /// a statics method, keeps the general solver of statics.
+  void setBandedSolver(bool allow) {
+    m_solver.setAllowBanded(allow);
+    m_factorValid = false;
+  }
   const AlphaParameters& parameters() const { return m_params; }
   /// Undoes the last accepted step: `previous` is the state before it (F_n is re-evaluated there).
   void restore(model::State& previous) { initialize(previous); }
@@ -89,9 +95,10 @@ class GeneralizedAlpha {
   std::vector<PrescribedNode> m_prescribed;
   AlphaParameters m_params;
   std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
-  VecX m_allowed;                   // allowed out-of-balance of each equation this step [N or N m]
+  VecX m_delta;                     // Newton correction of the equations [m, rad]
+  VecX m_inverseAllowed;                   // 1 / allowed out-of-balance of each equation this step [1/N or 1/(N m)]
   solver::SystemMatrix m_matrix;
-  solver::LinearSolver m_solver;
+  solver::LinearSolver m_solver{true};  // banded when the pattern suits (LinearSolver.hpp)
   SparseMatrix m_k;
   VecX m_forceOld;  // F(q_n, v_n, t_n)
   VecX m_force;

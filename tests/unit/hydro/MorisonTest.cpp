@@ -167,7 +167,10 @@ TEST(Morison, AddedMassMatrix) {
   EXPECT_LT((load.addedMassPerNode * t - 0.2 * m * t).norm(), 1e-10);
   EXPECT_LT((load.addedMassPerNode * n1 - 1.0 * m * n1).norm(), 1e-10);
   EXPECT_LT((load.addedMassPerNode * n2 - 1.0 * m * n2).norm(), 1e-10);
-  EXPECT_LT((load.addedMassPerNode - load.addedMassPerNode.transpose()).norm(), 1e-12);
+  const Mat3 matrix = load.addedMassPerNode.matrix();
+  EXPECT_LT((matrix - matrix.transpose()).norm(), 1e-12);
+  const Vec3 a(0.3, -1.2, 2.0);
+  EXPECT_LT((matrix * a - load.addedMassPerNode * a).norm(), 1e-12 * m);
 }
 
 // Source: Morison inertia term: rho A (1 + Can) a_n normally (Froude-Krylov + added mass), rho A_b (1 + Caa)
@@ -202,14 +205,14 @@ TEST(Morison, SubmergedFractionScalesLoadsAndEmergedElementHasNone) {
   const MorisonElementLoad part = morisonElementLoad(x1, x2, v, v, fluid, type, kRho, 0.25);
   EXPECT_LT((part.force1 - 0.25 * full.force1).norm(), 1e-12 * full.force1.norm());
   EXPECT_LT((part.damping2 - 0.25 * full.damping2).norm(), 1e-12 * full.damping2.norm());
-  EXPECT_LT((part.addedMassPerNode - 0.25 * full.addedMassPerNode).norm(),
-            1e-12 * full.addedMassPerNode.norm());
+  EXPECT_LT((part.addedMassPerNode.matrix() - 0.25 * full.addedMassPerNode.matrix()).norm(),
+            1e-12 * full.addedMassPerNode.matrix().norm());
   const MorisonElementLoad dry = morisonElementLoad(Vec3(0, 0, 1), Vec3(3, 0, 2), v, v, fluid, type, kRho,
                                                     submergedFraction(1.0, 2.0, 0.0));
   EXPECT_EQ(dry.force1, Vec3::Zero());
   EXPECT_EQ(dry.force2, Vec3::Zero());
   EXPECT_EQ(dry.damping1, Mat3::Zero());
-  EXPECT_EQ(dry.addedMassPerNode, Mat3::Zero());
+  EXPECT_EQ(dry.addedMassPerNode.matrix(), Mat3::Zero());
 }
 
 // Source: linear wetted fraction of a straight segment under a flat surface.

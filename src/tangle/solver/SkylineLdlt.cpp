@@ -1,0 +1,102 @@
+#include "tangle/solver/SkylineLdlt.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tangle::solver {
+
+namespace {
+constexpr std::ptrdiff_t kUpper = std::numeric_limits<std::ptrdiff_t>::min();
+}  // namespace
+
+std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
+  m_n = static_cast<int>(k.rows());
+  m_first.resize(m_n);
+  for (int i = 0; i < m_n; ++i) m_first[i] = i;
+  const int* outer = k.outerIndexPtr();
+  const int* inner = k.innerIndexPtr();
+  const int* nnzPerColumn = k.isCompressed() ? nullptr : k.innerNonZeroPtr();
+  auto columnEnd = [&](int c) { return nnzPerColumn ? outer[c] + nnzPerColumn[c] : outer[c + 1]; };
+  for (int c = 0; c < m_n; ++c)
+    for (int p = outer[c]; p < columnEnd(c); ++p) {
+      const int r = inner[p];
+      if (r > c) m_first[r] = std::min(m_first[r], c);
+    }
+  m_start.resize(m_n + 1);
+  m_start[0] = 0;
+  for (int i = 0; i < m_n; ++i) m_start[i + 1] = m_start[i] + static_cast<std::size_t>(i - m_first[i]);
+  m_values.assign(m_start[m_n], 0.0);
+  m_diagonal.assign(m_n, 0.0);
+  m_map.assign(outer[m_n], kUpper);
+  for (int c = 0; c < m_n; ++c)
+    for (int p = outer[c]; p < columnEnd(c); ++p) {
+      const int r = inner[p];
+      if (r == c) m_map[p] = -1 - r;
+      else if (r > c) m_map[p] = static_cast<std::ptrdiff_t>(m_start[r] + static_cast<std::size_t>(c - m_first[r]));
+    }
+  // Cost: for each entry (i, j) of the envelope, a dot product over the overlap of rows i and j.
+  m_cost = 0.0;
+  for (int i = 0; i < m_n; ++i)
+    for (int j = m_first[i]; j < i; ++j) m_cost += static_cast<double>(j - std::max(m_first[i], m_first[j])) + 2.0;
+  return m_values.size() + static_cast<std::size_t>(m_n);
+}
+
+bool SkylineLdlt::factorize(const SparseMatrix& k) {
+  std::fill(m_values.begin(), m_values.end(), 0.0);
+  std::fill(m_diagonal.begin(), m_diagonal.end(), 0.0);
+  const double* a = k.valuePtr();
+  const std::size_t stored = m_map.size();
+  for (std::size_t p = 0; p < stored; ++p) {
+    const std::ptrdiff_t m = m_map[p];
+    if (m >= 0) m_values[static_cast<std::size_t>(m)] += a[p];
+    else if (m != kUpper) m_diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
+  }
+  double largest = 0.0;
+  for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
+  const double tiny = 1e-14 * largest;
+  double* v = m_values.data();
+  for (int i = 0; i < m_n; ++i) {
+    const int fi = m_first[i];
+    const std::ptrdiff_t rowI = rowBase(i);  // v[rowI + j] = entry (i, j), j in [fi, i)
+    // v[rowI + j] <- w_j = L(i, j) D(j) = A(i, j) - sum_{k < j} w_k L(j, k)  (Crout, row by row)
+    for (int j = fi; j < i; ++j) {
+      const int fj = m_first[j];
+      const std::ptrdiff_t rowJ = rowBase(j);
+      double s = v[rowI + j];
+      for (int q = std::max(fi, fj); q < j; ++q) s -= v[rowI + q] * v[rowJ + q];
+      v[rowI + j] = s;
+    }
+    // D(i) = A(i, i) - sum_j w_j L(i, j); L(i, j) = w_j / D(j).
+    double d = m_diagonal[i];
+    for (int j = fi; j < i; ++j) {
+      const double l = v[rowI + j] / m_diagonal[j];
+      d -= l * v[rowI + j];
+      v[rowI + j] = l;
+    }
+    if (!(std::abs(d) > tiny)) return false;  // also NaN
+    m_diagonal[i] = d;
+  }
+  return true;
+}
+
+void SkylineLdlt::solveInPlace(VecX& b) const {
+  const double* v = m_values.data();
+  // L y = b
+  for (int i = 0; i < m_n; ++i) {
+    const std::ptrdiff_t rowI = rowBase(i);
+    double s = b[i];
+    for (int j = m_first[i]; j < i; ++j) s -= v[rowI + j] * b[j];
+    b[i] = s;
+  }
+  // D z = y
+  for (int i = 0; i < m_n; ++i) b[i] /= m_diagonal[i];
+  // L^T x = z
+  for (int i = m_n - 1; i >= 0; --i) {
+    const std::ptrdiff_t rowI = rowBase(i);
+    const double xi = b[i];
+    for (int j = m_first[i]; j < i; ++j) b[j] -= v[rowI + j] * xi;
+  }
+}
+
+}  // namespace tangle::solver

@@ -1,0 +1,134 @@
+// Unit tests of the envelope LDL^T (SkylineLdlt) and of LinearSolver's choice between it and the general
+// sparse LDL^T. Reference: Eigen's dense LDL^T / the residual of the solve, to round-off (1e-12 relative:
+// the matrices are well conditioned, condition numbers below 1e4).
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+#include <random>
+#include <vector>
+
+#include "tangle/solver/LinearSolver.hpp"
+#include "tangle/solver/SkylineLdlt.hpp"
+
+namespace tangle {
+namespace {
+
+/// A symmetric matrix from dense blocks along the diagonal (a "line" of nodes with `dofsPerNode` DOFs,
+/// neighbours coupled), positive definite by diagonal dominance, plus optional couplings (i, j).
+SparseMatrix lineMatrix(int nodes, int dofsPerNode, const std::vector<std::pair<int, int>>& extra, unsigned seed,
+                        bool indefinite = false) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const int n = nodes * dofsPerNode;
+  std::vector<Triplet> t;
+  auto sym = [&](int i, int j, double v) {
+    t.emplace_back(i, j, v);
+    if (i != j) t.emplace_back(j, i, v);
+  };
+  for (int a = 0; a < nodes; ++a)
+    for (int b = a; b <= std::min(a + 1, nodes - 1); ++b)
+      for (int i = 0; i < dofsPerNode; ++i)
+        for (int j = 0; j < dofsPerNode; ++j) {
+          const int r = a * dofsPerNode + i, c = b * dofsPerNode + j;
+          if (a == b && j < i) continue;
+          if (a == b && i == j) continue;
+          sym(r, c, u(rng));
+        }
+  for (const auto& [i, j] : extra) sym(i, j, u(rng));
+  for (int i = 0; i < n; ++i) {
+    const double d = 4.0 * dofsPerNode + 2.0 + u(rng);
+    t.emplace_back(i, i, indefinite && i % 7 == 3 ? -d : d);
+  }
+  SparseMatrix k(n, n);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  return k;
+}
+
+double relativeResidual(const SparseMatrix& k, const VecX& x, const VecX& b) { return (k * x - b).norm() / b.norm(); }
+
+TEST(SkylineLdlt, BarLineIsABandWithFiveSubDiagonals) {
+  const SparseMatrix k = lineMatrix(200, 3, {}, 1);
+  solver::SkylineLdlt s;
+  const std::size_t stored = s.analyzePattern(k);
+  // Row 3a + i reaches back to column 3(a - 1): 3 + i entries below the diagonal (a >= 1), i in the node.
+  EXPECT_EQ(stored, 600u + 199u * (3u + 4u + 5u) + 3u);
+  ASSERT_TRUE(s.factorize(k));
+  VecX b = VecX::LinSpaced(600, -1.0, 2.0);
+  VecX x = b;
+  s.solveInPlace(x);
+  EXPECT_LT(relativeResidual(k, x, b), 1e-13);
+}
+
+TEST(SkylineLdlt, EqualsDenseLdltOnBeamLineWithArrowCoupling) {
+  // 6 DOFs per node; the last node coupled to the first (two lines joined at a vessel numbered last).
+  std::vector<std::pair<int, int>> extra;
+  for (int i = 0; i < 6; ++i) extra.emplace_back(59 * 6 + i, i);
+  const SparseMatrix k = lineMatrix(60, 6, extra, 2);
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_TRUE(s.factorize(k));
+  const VecX b = VecX::Random(360);
+  VecX x = b;
+  s.solveInPlace(x);
+  const Eigen::MatrixXd dense(k);
+  const VecX reference = dense.ldlt().solve(b);
+  EXPECT_LT((x - reference).norm() / reference.norm(), 1e-12);
+}
+
+TEST(SkylineLdlt, IndefiniteMatrixWithoutZeroPivotsIsSolved) {
+  const SparseMatrix k = lineMatrix(50, 3, {}, 3, true);
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_TRUE(s.factorize(k));
+  const VecX b = VecX::Random(150);
+  VecX x = b;
+  s.solveInPlace(x);
+  EXPECT_LT(relativeResidual(k, x, b), 1e-12);
+}
+
+TEST(SkylineLdlt, ZeroPivotIsReportedNotSolved) {
+  // [[1, 1], [1, 1]]: the second pivot is 0.
+  std::vector<Triplet> t{{0, 0, 1.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 1.0}};
+  SparseMatrix k(2, 2);
+  k.setFromTriplets(t.begin(), t.end());
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  EXPECT_FALSE(s.factorize(k));
+}
+
+TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {
+  // A band: the banded method.
+  const SparseMatrix band = lineMatrix(200, 3, {}, 4);
+  solver::LinearSolver banded(true);
+  ASSERT_TRUE(banded.factorize(band));
+  EXPECT_TRUE(banded.usedBanded());
+  const VecX b = VecX::Random(600);
+  EXPECT_LT(relativeResidual(band, banded.solve(b), b), 1e-13);
+  // Couplings between distant equations everywhere (two lines side by side in contact along their length,
+  // numbered one after the other): the envelope fills, the general method is used, same solution.
+  std::vector<std::pair<int, int>> contacts;
+  for (int a = 0; a < 100; a += 2) contacts.emplace_back(300 + 3 * a, 3 * a);
+  const SparseMatrix scattered = lineMatrix(200, 3, contacts, 5);
+  solver::LinearSolver chooser(true);
+  ASSERT_TRUE(chooser.factorize(scattered));
+  EXPECT_FALSE(chooser.usedBanded());
+  EXPECT_LT(relativeResidual(scattered, chooser.solve(b), b), 1e-12);
+  // Not allowed: the general method even for a band.
+  solver::LinearSolver general(false);
+  ASSERT_TRUE(general.factorize(band));
+  EXPECT_FALSE(general.usedBanded());
+}
+
+TEST(LinearSolver, SingularMatrixFallsBackAndReportsFailure) {
+  std::vector<Triplet> t{{0, 0, 1.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 1.0}};
+  SparseMatrix k(2, 2);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  solver::LinearSolver s(true);
+  EXPECT_FALSE(s.factorize(k));
+}
+
+}  // namespace
+}  // namespace tangle
