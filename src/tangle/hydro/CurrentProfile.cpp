@@ -56,6 +56,13 @@ CurrentProfile::CurrentProfile(std::vector<CurrentLevel> levels) : m_levels(std:
     m_unwrappedAzimuth[i] =
         m_unwrappedAzimuth[i - 1] + shorterArc(m_unwrappedAzimuth[i - 1], m_levels[i].azimuth);
   }
+  // Directions at the levels, computed once: velocity() is called for every element at every assembly,
+  // and between two levels of equal azimuth (the common case) the direction is exactly that of the level.
+  m_unwrappedDirection.resize(m_levels.size());
+  for (std::size_t i = 0; i < m_levels.size(); ++i)
+    m_unwrappedDirection[i] = Vec2(std::cos(m_unwrappedAzimuth[i]), std::sin(m_unwrappedAzimuth[i]));
+  m_frontDirection = Vec2(std::cos(m_levels.front().azimuth), std::sin(m_levels.front().azimuth));
+  m_backDirection = Vec2(std::cos(m_levels.back().azimuth), std::sin(m_levels.back().azimuth));
 }
 
 CurrentProfile CurrentProfile::uniform(double speed, double azimuth) {
@@ -64,26 +71,25 @@ CurrentProfile CurrentProfile::uniform(double speed, double azimuth) {
 
 Vec3 CurrentProfile::velocity(double z) const {
   if (m_levels.empty()) return Vec3::Zero();
-  double speed = 0.0;
-  double azimuth = 0.0;
   if (z <= m_levels.front().z) {
-    speed = m_levels.front().speed;
-    azimuth = m_levels.front().azimuth;
-  } else if (z >= m_levels.back().z) {
-    speed = m_levels.back().speed;
-    azimuth = m_levels.back().azimuth;
-  } else {
-    // First level strictly above z; its predecessor is at or below z.
-    const auto above =
-        std::upper_bound(m_levels.begin(), m_levels.end(), z,
-                         [](double value, const CurrentLevel& level) { return value < level.z; });
-    const auto i = static_cast<std::size_t>(above - m_levels.begin());
-    const CurrentLevel& lo = m_levels[i - 1];
-    const CurrentLevel& hi = m_levels[i];
-    const double s = (z - lo.z) / (hi.z - lo.z);
-    speed = lo.speed + s * (hi.speed - lo.speed);
-    azimuth = m_unwrappedAzimuth[i - 1] + s * (m_unwrappedAzimuth[i] - m_unwrappedAzimuth[i - 1]);
+    const double speed = m_levels.front().speed;
+    return Vec3(speed * m_frontDirection.x(), speed * m_frontDirection.y(), 0.0);
   }
+  if (z >= m_levels.back().z) {
+    const double speed = m_levels.back().speed;
+    return Vec3(speed * m_backDirection.x(), speed * m_backDirection.y(), 0.0);
+  }
+  // First level strictly above z; its predecessor is at or below z.
+  const auto above = std::upper_bound(m_levels.begin(), m_levels.end(), z,
+                                      [](double value, const CurrentLevel& level) { return value < level.z; });
+  const auto i = static_cast<std::size_t>(above - m_levels.begin());
+  const CurrentLevel& lo = m_levels[i - 1];
+  const CurrentLevel& hi = m_levels[i];
+  const double s = (z - lo.z) / (hi.z - lo.z);
+  const double speed = lo.speed + s * (hi.speed - lo.speed);
+  const double turn = m_unwrappedAzimuth[i] - m_unwrappedAzimuth[i - 1];
+  if (turn == 0.0) return Vec3(speed * m_unwrappedDirection[i - 1].x(), speed * m_unwrappedDirection[i - 1].y(), 0.0);
+  const double azimuth = m_unwrappedAzimuth[i - 1] + s * turn;
   return Vec3(speed * std::cos(azimuth), speed * std::sin(azimuth), 0.0);
 }
 

@@ -49,6 +49,9 @@ class CurrentProfile {
  private:
   std::vector<CurrentLevel> m_levels;
   std::vector<double> m_unwrappedAzimuth;  // level azimuths made continuous along the shorter arcs [rad]
+  std::vector<Vec2> m_unwrappedDirection;  // (cos, sin) of m_unwrappedAzimuth [-]
+  Vec2 m_frontDirection = Vec2::UnitX();   // (cos, sin) of the lowest level's azimuth [-]
+  Vec2 m_backDirection = Vec2::UnitX();    // (cos, sin) of the highest level's azimuth [-]
 };
 
 }  // namespace tangle::hydro

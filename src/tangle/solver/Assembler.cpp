@@ -316,9 +316,11 @@ void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matr
   for (LoadContributor* c : m_contributors) c->addMass(state, mf, matrix, acceleration, out);
 }
 
-std::vector<double> Assembler::elementTension(const model::State& state) const {
+std::vector<double> Assembler::elementTension(const model::State& state,
+                                              std::vector<element::BeamSectionForces>* beamForces) const {
   std::vector<double> t;
   t.reserve(m_model->elements().size());
+  if (beamForces) beamForces->assign(m_model->elements().size(), element::BeamSectionForces{});
   for (std::size_t e = 0; e < m_model->elements().size(); ++e) {
     const model::LineElement& el = m_model->elements()[e];
     std::optional<element::Bar> barCopy;
@@ -328,10 +330,10 @@ std::vector<double> Assembler::elementTension(const model::State& state) const {
       t.push_back(bar.axialForce(state.position[el.node1], state.position[el.node2], compressionFactor(el)));
     } else {
       const element::CorotationalBeam& beam = beamOf(e, beamCopy);
-      t.push_back(beam
-                      .sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2],
-                                      state.triad[el.node2])
-                      .axialForce);
+      const element::BeamSectionForces f =
+          beam.sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2]);
+      t.push_back(f.axialForce);
+      if (beamForces) (*beamForces)[e] = f;
     }
   }
   return t;

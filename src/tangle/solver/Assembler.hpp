@@ -112,7 +112,10 @@ class Assembler {
 
   /// Effective tension [N] of each element (axial force; with weight applied as submerged weight it is
   /// the effective tension of Sparks 1984).
-  std::vector<double> elementTension(const model::State& state) const;
+  /// With `beamForces`, also the section forces of every beam element (resized to the element count;
+  /// bar entries left default), computed once for both.
+  std::vector<double> elementTension(const model::State& state,
+                                     std::vector<element::BeamSectionForces>* beamForces = nullptr) const;
 
   /// Force scale [N] of the static and dynamic convergence tests, independent of the mesh: the largest over
   /// the lines of the line's submerged weight (absolute, each element), 10 % of its weight in air and the

@@ -40,7 +40,8 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
 
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce) {
-  const std::vector<double> tension = assembler.elementTension(state);
+  std::vector<element::BeamSectionForces> beamForces;
+  const std::vector<double> tension = assembler.elementTension(state, &beamForces);
   const model::DofMap& dofs = model.dofs();
   const double depth = model.environment().waterDepth;
   std::vector<LineSnapshot> out;
@@ -67,8 +68,7 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
       ++count[e];
       ++count[e + 1];
       if (el.beam) {
-        const element::BeamSectionForces f = el.beam->sectionForces(
-            state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2]);
+        const element::BeamSectionForces& f = beamForces[line.firstElement + e];
         s.bendingMomentVector[e] += f.moment1;
         s.bendingMomentVector[e + 1] += f.moment2;
         s.torque[e] += f.torque;
