@@ -8,6 +8,22 @@ namespace tangle::solver {
 
 namespace {
 constexpr std::ptrdiff_t kUpper = std::numeric_limits<std::ptrdiff_t>::min();
+
+/// sum_k a[k] b[k] over k in [0, n), in four independent partial sums: the rows of a line's band are 3 to
+/// 11 long, and one running sum makes each product wait for the previous one (the forward substitution
+/// was latency-bound).
+inline double dot(const double* a, const double* b, std::ptrdiff_t n) {
+  double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+  std::ptrdiff_t k = 0;
+  for (; k + 3 < n; k += 4) {
+    s0 += a[k] * b[k];
+    s1 += a[k + 1] * b[k + 1];
+    s2 += a[k + 2] * b[k + 2];
+    s3 += a[k + 3] * b[k + 3];
+  }
+  for (; k < n; ++k) s0 += a[k] * b[k];
+  return (s0 + s1) + (s2 + s3);
+}
 }  // namespace
 
 std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
@@ -63,9 +79,8 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
     for (int j = fi; j < i; ++j) {
       const int fj = m_first[j];
       const std::ptrdiff_t rowJ = rowBase(j);
-      double s = v[rowI + j];
-      for (int q = std::max(fi, fj); q < j; ++q) s -= v[rowI + q] * v[rowJ + q];
-      v[rowI + j] = s;
+      const int q0 = std::max(fi, fj);
+      v[rowI + j] -= dot(v + rowI + q0, v + rowJ + q0, j - q0);
     }
     // D(i) = A(i, i) - sum_j w_j L(i, j); L(i, j) = w_j / D(j).
     double d = m_diagonal[i];
@@ -85,9 +100,8 @@ void SkylineLdlt::solveInPlace(VecX& b) const {
   // L y = b
   for (int i = 0; i < m_n; ++i) {
     const std::ptrdiff_t rowI = rowBase(i);
-    double s = b[i];
-    for (int j = m_first[i]; j < i; ++j) s -= v[rowI + j] * b[j];
-    b[i] = s;
+    const int fi = m_first[i];
+    b[i] -= dot(v + rowI + fi, b.data() + fi, i - fi);
   }
   // D z = y
   for (int i = 0; i < m_n; ++i) b[i] /= m_diagonal[i];
