@@ -3,7 +3,7 @@
 set -euo pipefail
 packages=(g++ cmake make libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev libgtest-dev libgmock-dev
           libbenchmark-dev python3-numpy python3-matplotlib clang gcc python3-dev pybind11-dev python3-pytest
-          libhdf5-dev python3-h5py python3-vtk9 openmpi-bin libopenmpi-dev libjs-three chromium)
+          libhdf5-dev python3-h5py python3-paraview openmpi-bin libopenmpi-dev libjs-three chromium)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -73,10 +73,11 @@ void Hdf5File::createGroup(const std::string& path) {
 
 void Hdf5File::writeArray(const std::string& path, const std::vector<double>& data,
                           const std::vector<std::uint64_t>& dims, const std::string& units,
-                          const std::string& description) {
+                          const std::string& description, bool singlePrecision) {
   const std::vector<hsize_t> d = toHsize(dims);
   Id space(H5Screate_simple(static_cast<int>(d.size()), d.data(), nullptr), H5Sclose);
-  Id set(H5Dcreate2(m_file, path.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+  Id set(H5Dcreate2(m_file, path.c_str(), singlePrecision ? H5T_IEEE_F32LE : H5T_IEEE_F64LE, space.get(),
+                    H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
          H5Dclose);
   if (!set.valid()) fail("dataset " + path);
   if (!data.empty() && H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0)
@@ -98,7 +99,8 @@ void Hdf5File::writeIntArray(const std::string& path, const std::vector<int>& da
   setAttribute(path, "description", description);
 }
 
-void Hdf5File::setAttribute(const std::string& objectPath, const std::string& name, const std::string& value) {
+void Hdf5File::setAttribute(const std::string& objectPath, const std::string& name,
+                            const std::string& value) {
   // Variable-length UTF-8: h5py reads it as str.
   Id type(H5Tcopy(H5T_C_S1), H5Tclose);
   H5Tset_size(type.get(), H5T_VARIABLE);
@@ -114,22 +116,24 @@ void Hdf5File::setAttribute(const std::string& objectPath, const std::string& na
 
 void Hdf5File::setAttribute(const std::string& objectPath, const std::string& name, double value) {
   Id space(H5Screate(H5S_SCALAR), H5Sclose);
-  Id attr(H5Acreate_by_name(m_file, objectPath.c_str(), name.c_str(), H5T_IEEE_F64LE, space.get(), H5P_DEFAULT,
-                            H5P_DEFAULT, H5P_DEFAULT),
+  Id attr(H5Acreate_by_name(m_file, objectPath.c_str(), name.c_str(), H5T_IEEE_F64LE, space.get(),
+                            H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
           H5Aclose);
   if (!attr.valid() || H5Awrite(attr.get(), H5T_NATIVE_DOUBLE, &value) < 0)
     fail(fmt::format("attribute {} of {}", name, objectPath));
 }
 
-int Hdf5File::createSeries(const std::string& path, const std::vector<std::uint64_t>& rowDims, const std::string& units,
-                           const std::string& description, int chunkRows, bool singlePrecision) {
+int Hdf5File::createSeries(const std::string& path, const std::vector<std::uint64_t>& rowDims,
+                           const std::string& units, const std::string& description, int chunkRows,
+                           bool singlePrecision) {
   Series s;
   s.path = path;
   s.rowDims = rowDims;
   s.rowSize = std::accumulate(rowDims.begin(), rowDims.end(), std::size_t{1}, std::multiplies<>());
   std::vector<hsize_t> dims{0}, maxDims{H5S_UNLIMITED}, chunk;
-  const auto rows = static_cast<hsize_t>(std::max<std::size_t>(
-      static_cast<std::size_t>(chunkRows), (kMinChunkValues + s.rowSize - 1) / std::max<std::size_t>(s.rowSize, 1)));
+  const auto rows = static_cast<hsize_t>(
+      std::max<std::size_t>(static_cast<std::size_t>(chunkRows),
+                            (kMinChunkValues + s.rowSize - 1) / std::max<std::size_t>(s.rowSize, 1)));
   chunk.push_back(rows);
   for (std::uint64_t d : rowDims) {
     dims.push_back(d);
@@ -177,7 +181,8 @@ void Hdf5File::writeBuffered(Series& s) {
   Id fileSpace(H5Dget_space(s.dataset), H5Sclose);
   H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start.data(), nullptr, block.data(), nullptr);
   Id memSpace(H5Screate_simple(static_cast<int>(block.size()), block.data(), nullptr), H5Sclose);
-  if (H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memSpace.get(), fileSpace.get(), H5P_DEFAULT, s.buffer.data()) < 0)
+  if (H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memSpace.get(), fileSpace.get(), H5P_DEFAULT, s.buffer.data()) <
+      0)
     fail("dataset " + s.path);
   s.written += count;
   s.buffer.clear();

@@ -22,19 +22,22 @@ class Hdf5File {
 
   /// Creates a group and its missing parents (absolute path, e.g. "/dynamics/lines/riser").
   void createGroup(const std::string& path);
-  /// A fixed array of doubles of shape `dims` (row-major) with `units` and `description` attributes.
-  void writeArray(const std::string& path, const std::vector<double>& data, const std::vector<std::uint64_t>& dims,
-                  const std::string& units, const std::string& description);
+  /// A fixed array of doubles of shape `dims` (row-major) with `units` and `description` attributes,
+  /// stored in double or (`singlePrecision`) in single precision.
+  void writeArray(const std::string& path, const std::vector<double>& data,
+                  const std::vector<std::uint64_t>& dims, const std::string& units,
+                  const std::string& description, bool singlePrecision = false);
   /// A fixed array of 32-bit integers (connectivity).
-  void writeIntArray(const std::string& path, const std::vector<int>& data, const std::vector<std::uint64_t>& dims,
-                     const std::string& description);
+  void writeIntArray(const std::string& path, const std::vector<int>& data,
+                     const std::vector<std::uint64_t>& dims, const std::string& description);
   void setAttribute(const std::string& objectPath, const std::string& name, const std::string& value);
   void setAttribute(const std::string& objectPath, const std::string& name, double value);
 
   /// A series of rows of shape `rowDims` growing along a new first dimension (time), stored in chunks of
   /// `chunkRows` rows, in single precision (7 significant digits, as the CSV files). @return its handle
-  int createSeries(const std::string& path, const std::vector<std::uint64_t>& rowDims, const std::string& units,
-                   const std::string& description, int chunkRows = 64, bool singlePrecision = true);
+  int createSeries(const std::string& path, const std::vector<std::uint64_t>& rowDims,
+                   const std::string& units, const std::string& description, int chunkRows = 64,
+                   bool singlePrecision = true);
   /// Appends one row (product of rowDims values); buffered, written a chunk at a time.
   void append(int series, const double* row);
   /// Rows appended to a series so far.
@@ -51,7 +54,7 @@ class Hdf5File {
     std::int64_t dataset = -1;
     std::vector<std::uint64_t> rowDims;
     std::size_t rowSize = 1;
-    std::uint64_t written = 0;  ///< rows in the file
+    std::uint64_t written = 0;   ///< rows in the file
     std::vector<double> buffer;  ///< rows not yet written
     std::string path;
   };

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <functional>
 
 #include "tangle/io/OutputFile.hpp"
 #include "tangle/io/ResultWriter.hpp"
@@ -17,7 +18,17 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Series of one line, in this order in Hdf5Results::m_lineSeries.
-enum LineSeries { kPosition, kTension, kMoment, kMomentVector, kCurvature, kTorque, kEndTension, kEndForce, kCount };
+enum LineSeries {
+  kPosition,
+  kTension,
+  kMoment,
+  kMomentVector,
+  kCurvature,
+  kTorque,
+  kEndTension,
+  kEndForce,
+  kCount
+};
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {
   std::vector<double> out;
@@ -38,7 +49,8 @@ Hdf5Results::Hdf5Results(const fs::path& dir, const model::Model& model, const s
   m_file->setAttribute("/", "title", model.spec().title);
   m_file->setAttribute("/", "model_file", model.spec().sourceFile);
   m_file->setAttribute("/", "model_text", modelText);
-  m_file->setAttribute("/", "units", "SI: m, kg, N, s; angles in degrees; every dataset has a 'units' attribute");
+  m_file->setAttribute("/", "units",
+                       "SI: m, kg, N, s; angles in degrees; every dataset has a 'units' attribute");
   m_file->setAttribute("/", "layout", "docs/results-hdf5.md");
   std::vector<std::string> names;
   for (const model::Line& l : model.lines()) {
@@ -51,8 +63,10 @@ Hdf5Results::Hdf5Results(const fs::path& dir, const model::Model& model, const s
     m_file->createGroup(g);
     m_file->setAttribute(g, "line", names[l]);
     std::vector<int> segments;
-    for (std::size_t i = 0; i + 1 < m_nodes[l]; ++i) segments.insert(segments.end(), {static_cast<int>(i), static_cast<int>(i + 1)});
-    m_file->writeIntArray(g + "/segments", segments, {m_nodes[l] - 1, 2}, "node indices of each element (polyline)");
+    for (std::size_t i = 0; i + 1 < m_nodes[l]; ++i)
+      segments.insert(segments.end(), {static_cast<int>(i), static_cast<int>(i + 1)});
+    m_file->writeIntArray(g + "/segments", segments, {m_nodes[l] - 1, 2},
+                          "node indices of each element (polyline)");
   }
 }
 
@@ -82,7 +96,8 @@ void Hdf5Results::writeStatics(const std::vector<solver::LineSnapshot>& lines) {
                        "node triad as a rotation vector from the global axes (zero for cable nodes)");
     m_file->setAttribute(g, "end_a_tension_N", s.endTensionA);
     m_file->setAttribute(g, "end_b_tension_N", s.endTensionB);
-    m_file->setAttribute(g, "touchdown_arc_length_m", s.touchdownArcLength >= 0.0 ? s.touchdownArcLength : std::nan(""));
+    m_file->setAttribute(g, "touchdown_arc_length_m",
+                         s.touchdownArcLength >= 0.0 ? s.touchdownArcLength : std::nan(""));
   }
   m_hasStatics = true;
   m_file->flush();
@@ -96,11 +111,15 @@ void Hdf5Results::beginDynamics(const std::vector<solver::LineSnapshot>& initial
     const std::uint64_t n = m_nodes[l];
     m_file->createGroup(g);
     m_file->setAttribute(g, "line", initial[l].name);
-    m_file->writeArray(g + "/arc_length", initial[l].arcLength, {n}, "m", "unstretched arc length from end A");
+    m_file->writeArray(g + "/arc_length", initial[l].arcLength, {n}, "m",
+                       "unstretched arc length from end A");
     std::vector<int> series(kCount);
-    series[kPosition] = m_file->createSeries(g + "/position", {n, 3}, "m", "node positions [time, node, xyz]");
-    series[kTension] = m_file->createSeries(g + "/effective_tension", {n}, "N", "effective tension [time, node]");
-    series[kMoment] = m_file->createSeries(g + "/bending_moment", {n}, "N m", "bending moment magnitude [time, node]");
+    series[kPosition] =
+        m_file->createSeries(g + "/position", {n, 3}, "m", "node positions [time, node, xyz]");
+    series[kTension] =
+        m_file->createSeries(g + "/effective_tension", {n}, "N", "effective tension [time, node]");
+    series[kMoment] =
+        m_file->createSeries(g + "/bending_moment", {n}, "N m", "bending moment magnitude [time, node]");
     series[kMomentVector] = m_file->createSeries(g + "/bending_moment_vector", {n, 3}, "N m",
                                                  "bending moment, global axes [time, node, xyz]");
     series[kCurvature] = m_file->createSeries(g + "/curvature", {n}, "1/m", "curvature [time, node]");
@@ -114,9 +133,10 @@ void Hdf5Results::beginDynamics(const std::vector<solver::LineSnapshot>& initial
   for (const auto& v : m_model->vessels()) {
     const std::string g = "/dynamics/vessels/" + v.name;
     m_file->createGroup(g);
-    m_vesselSeries.push_back(m_file->createSeries(g + "/motion", {6}, "m, m, m, deg, deg, deg",
-                                                  "reference point x, y, z and rotation vector rx, ry, rz from the "
-                                                  "initial attitude [time, 6]"));
+    m_vesselSeries.push_back(
+        m_file->createSeries(g + "/motion", {6}, "m, m, m, deg, deg, deg",
+                             "reference point x, y, z and rotation vector rx, ry, rz from the "
+                             "initial attitude [time, 6]"));
   }
 }
 
@@ -139,7 +159,31 @@ void Hdf5Results::record(double time, const std::vector<solver::LineSnapshot>& l
     const double forces[6] = {a.x(), a.y(), a.z(), b.x(), b.y(), b.z()};
     m_file->append(k[kEndForce], forces);
   }
-  for (std::size_t v = 0; v < m_vesselSeries.size(); ++v) m_file->append(m_vesselSeries[v], vesselMotion.data() + 6 * v);
+  for (std::size_t v = 0; v < m_vesselSeries.size(); ++v)
+    m_file->append(m_vesselSeries[v], vesselMotion.data() + 6 * v);
+  if (time >= m_nextFrame - 1e-9) {
+    writeFrame(lines);
+    m_nextFrame += m_model->spec().output.vtkInterval;
+  }
+}
+
+void Hdf5Results::writeFrame(const std::vector<solver::LineSnapshot>& lines) {
+  // ParaView's XDMF 3 readers do not read HyperSlab data items (they skip the array: no points), so the
+  // frames ParaView shows are stored as plain datasets, single precision as the time series.
+  const std::size_t k = m_times.size() - 1;
+  m_frames.push_back(k);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const solver::LineSnapshot& s = lines[l];
+    const std::string g = fmt::format("/xdmf/{}/t{}", m_stems[l], k);
+    const std::uint64_t n = m_nodes[l];
+    m_file->createGroup(g);
+    m_file->setAttribute(g, "time_s", m_times[k]);
+    m_file->writeArray(g + "/position", flatten(s.position), {n, 3}, "m", "node position", true);
+    m_file->writeArray(g + "/effective_tension", s.tension, {n}, "N", "effective tension", true);
+    m_file->writeArray(g + "/bending_moment", s.bendingMoment, {n}, "N m", "bending moment magnitude", true);
+    m_file->writeArray(g + "/curvature", s.curvature, {n}, "1/m", "curvature", true);
+    m_file->writeArray(g + "/torque", s.torque, {n}, "N m", "torque", true);
+  }
 }
 
 void Hdf5Results::writeRanges(const DynamicRecorder& recorder) {
@@ -158,13 +202,16 @@ void Hdf5Results::writeRanges(const DynamicRecorder& recorder) {
     };
     m_file->writeArray(g + "/effective_tension_min", r.tensionMin, {n}, "N", "minimum effective tension");
     m_file->writeArray(g + "/effective_tension_max", r.tensionMax, {n}, "N", "maximum effective tension");
-    m_file->writeArray(g + "/effective_tension_mean", mean(r.tensionSum, r.tensionMin), {n}, "N", "mean effective tension");
+    m_file->writeArray(g + "/effective_tension_mean", mean(r.tensionSum, r.tensionMin), {n}, "N",
+                       "mean effective tension");
     m_file->writeArray(g + "/bending_moment_min", r.momentMin, {n}, "N m", "minimum bending moment");
     m_file->writeArray(g + "/bending_moment_max", r.momentMax, {n}, "N m", "maximum bending moment");
-    m_file->writeArray(g + "/bending_moment_mean", mean(r.momentSum, r.momentMin), {n}, "N m", "mean bending moment");
+    m_file->writeArray(g + "/bending_moment_mean", mean(r.momentSum, r.momentMin), {n}, "N m",
+                       "mean bending moment");
     m_file->writeArray(g + "/curvature_min", r.curvatureMin, {n}, "1/m", "minimum curvature");
     m_file->writeArray(g + "/curvature_max", r.curvatureMax, {n}, "1/m", "maximum curvature");
-    m_file->writeArray(g + "/curvature_mean", mean(r.curvatureSum, r.curvatureMin), {n}, "1/m", "mean curvature");
+    m_file->writeArray(g + "/curvature_mean", mean(r.curvatureSum, r.curvatureMin), {n}, "1/m",
+                       "mean curvature");
   }
 }
 
@@ -181,22 +228,29 @@ void Hdf5Results::writeContactEvents(const std::vector<contact::ContactEvent>& e
     for (const contact::ContactEvent& e : events) v.push_back(get(e));
     m_file->writeArray(g + "/" + name, v, {n}, units, description);
   };
-  column("line_1", "-", "index of line 1 in the line_names attribute", [](const auto& e) { return double(e.lineA); });
-  column("line_2", "-", "index of line 2 in the line_names attribute", [](const auto& e) { return double(e.lineB); });
+  column("line_1", "-", "index of line 1 in the line_names attribute",
+         [](const auto& e) { return double(e.lineA); });
+  column("line_2", "-", "index of line 2 in the line_names attribute",
+         [](const auto& e) { return double(e.lineB); });
   column("start_time", "s", "start of the event", [](const auto& e) { return e.startTime; });
   column("end_time", "s", "end of the event", [](const auto& e) { return e.endTime; });
   column("arc_1", "m", "where it began along line 1", [](const auto& e) { return e.arcAStart; });
   column("arc_2", "m", "where it began along line 2", [](const auto& e) { return e.arcBStart; });
   std::vector<double> where;
-  for (const contact::ContactEvent& e : events) where.insert(where.end(), {e.positionStart.x(), e.positionStart.y(), e.positionStart.z()});
+  for (const contact::ContactEvent& e : events)
+    where.insert(where.end(), {e.positionStart.x(), e.positionStart.y(), e.positionStart.z()});
   m_file->writeArray(g + "/position", where, {n, 3}, "m", "where it began (on line 1)");
-  column("impact_velocity", "m/s", "relative normal approach speed at first contact", [](const auto& e) { return e.impactVelocity; });
-  column("impact_energy", "J", "1/2 m v^2 with the energy mass", [](const auto& e) { return e.impactEnergy; });
+  column("impact_velocity", "m/s", "relative normal approach speed at first contact",
+         [](const auto& e) { return e.impactVelocity; });
+  column("impact_energy", "J", "1/2 m v^2 with the energy mass",
+         [](const auto& e) { return e.impactEnergy; });
   column("peak_force", "N", "largest total contact force", [](const auto& e) { return e.peakForce; });
-  column("peak_force_per_length", "N/m", "largest contact force per unit length", [](const auto& e) { return e.peakForcePerLength; });
+  column("peak_force_per_length", "N/m", "largest contact force per unit length",
+         [](const auto& e) { return e.peakForcePerLength; });
   column("impulse", "N s", "integral of the contact force", [](const auto& e) { return e.impulse; });
   column("max_penetration", "m", "deepest penetration", [](const auto& e) { return e.maxPenetration; });
-  column("impact", "-", "1: an impact, 0: sustained contact only", [](const auto& e) { return e.impact ? 1.0 : 0.0; });
+  column("impact", "-", "1: an impact, 0: sustained contact only",
+         [](const auto& e) { return e.impact ? 1.0 : 0.0; });
   column("sustained", "-", "1: sustained contact", [](const auto& e) { return e.sustained ? 1.0 : 0.0; });
 }
 
@@ -208,8 +262,10 @@ void Hdf5Results::writeClearance(const contact::ClearanceEnvelope& envelope) {
     const std::uint64_t n = s.staticClearance.size();
     m_file->createGroup(g);
     m_file->writeArray(g + "/arc_length", line.arcLength, {n}, "m", "arc length along the line");
-    m_file->writeArray(g + "/static_clearance", s.staticClearance, {n}, "m", "surface clearance to the other line, statics");
-    m_file->writeArray(g + "/min_clearance", s.dynamicClearance, {n}, "m", "smallest clearance over every accepted step");
+    m_file->writeArray(g + "/static_clearance", s.staticClearance, {n}, "m",
+                       "surface clearance to the other line, statics");
+    m_file->writeArray(g + "/min_clearance", s.dynamicClearance, {n}, "m",
+                       "smallest clearance over every accepted step");
     m_file->writeArray(g + "/time_of_min", s.timeOfMinimum, {n}, "s", "time of the smallest clearance");
   }
 }
@@ -222,62 +278,53 @@ void Hdf5Results::close() {
 }
 
 void Hdf5Results::writeXdmf() const {
-  // XDMF 3 (xdmf.org): a temporal collection of spatial collections, one polyline grid per line, whose
-  // geometry and fields are hyperslabs of the time series in results.h5.
-  const bool dynamic = m_time >= 0 && !m_times.empty();
+  // XDMF 3 (xdmf.org): a temporal collection of spatial collections, one polyline grid per line. Its data
+  // items are whole datasets: the statics, or the frames written every output.vtk_interval (writeFrame).
+  // Read by ParaView's "XDMF Reader" and "Xdmf3 Reader S/T" alike (hyperslabs of the time series were not:
+  // the Xdmf3 readers skipped them and showed no points).
+  const bool dynamic = m_time >= 0 && !m_frames.empty();
   if (!dynamic && !m_hasStatics) return;
   std::string x = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n";
-  const auto grid = [&](const std::string& root, std::size_t step, std::size_t steps) {
+  const auto grid = [&](const std::function<std::string(std::size_t)>& group, int precision) {
     std::string out;
     for (std::size_t l = 0; l < m_stems.size(); ++l) {
       const std::uint64_t n = m_nodes[l];
-      const std::string g = linePath(root, m_stems[l]);
       const auto item = [&](const std::string& name, std::uint64_t width) {
         const std::string dims = width > 1 ? fmt::format("{} {}", n, width) : fmt::format("{}", n);
-        if (!dynamic)
-          return fmt::format("<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
-                             "results.h5:{}/{}</DataItem>",
-                             dims, g, name);
-        const std::string all = width > 1 ? fmt::format("{} {} {}", steps, n, width) : fmt::format("{} {}", steps, n);
-        const std::string slab = width > 1 ? fmt::format("{} 0 0 1 1 1 1 {} {}", step, n, width)
-                                           : fmt::format("{} 0 1 1 1 {}", step, n);
-        return fmt::format("<DataItem ItemType=\"HyperSlab\" Dimensions=\"{}\" Type=\"HyperSlab\">"
-                           "<DataItem Dimensions=\"3 {}\" Format=\"XML\">{}</DataItem>"
-                           "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">"
-                           "results.h5:{}/{}</DataItem></DataItem>",
-                           dims, width > 1 ? 3 : 2, slab, all, g, name);
+        return fmt::format(
+            "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"{}\" Format=\"HDF\">"
+            "results.h5:{}/{}</DataItem>",
+            dims, precision, group(l), name);
       };
       out += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", m_stems[l]);
-      out += fmt::format("     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">"
-                         "<DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"HDF\">results.h5:/xdmf/{}/segments"
-                         "</DataItem></Topology>\n",
-                         n - 1, n - 1, m_stems[l]);
+      out += fmt::format(
+          "     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">"
+          "<DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"HDF\">results.h5:/xdmf/{}/segments"
+          "</DataItem></Topology>\n",
+          n - 1, n - 1, m_stems[l]);
       out += "     <Geometry GeometryType=\"XYZ\">" + item("position", 3) + "</Geometry>\n";
       for (const char* f : {"effective_tension", "bending_moment", "curvature", "torque"})
-        out += fmt::format("     <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">{}</Attribute>\n", f,
-                           item(f, 1));
+        out += fmt::format(
+            "     <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">{}</Attribute>\n", f,
+            item(f, 1));
       out += "    </Grid>\n";
     }
     return out;
   };
   if (dynamic) {
     x += "  <Grid Name=\"lines\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    // ParaView frames every output.vtk_interval (as the .pvd series): one grid per frame costs ~2 kB of XML
-    // per line, which at every output time would rival the data itself.
-    const double interval = m_model->spec().output.vtkInterval;
-    double nextFrame = 0.0;
-    for (std::size_t k = 0; k < m_times.size(); ++k) {
-      if (m_times[k] < nextFrame - 1e-9) continue;
-      nextFrame += interval;
-      x += fmt::format("   <Grid Name=\"t{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time Value=\"{:.9g}\"/>\n", k,
-                       m_times[k]);
-      x += grid("/dynamics", k, m_times.size());
+    for (const std::size_t k : m_frames) {
+      x += fmt::format(
+          "   <Grid Name=\"t{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time "
+          "Value=\"{:.9g}\"/>\n",
+          k, m_times[k]);
+      x += grid([&](std::size_t l) { return fmt::format("/xdmf/{}/t{}", m_stems[l], k); }, 4);
       x += "   </Grid>\n";
     }
     x += "  </Grid>\n";
   } else {
     x += "  <Grid Name=\"statics\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
-    x += grid("/statics", 0, 1);
+    x += grid([&](std::size_t l) { return linePath("/statics", m_stems[l]); }, 8);
     x += "  </Grid>\n";
   }
   x += " </Domain>\n</Xdmf>\n";

@@ -11,10 +11,13 @@
 ///     /dynamics/time          [time]
 ///     /dynamics/lines/<line>/ position [time, node, xyz], effective_tension, bending_moment, curvature,
 ///                             torque [time, node], bending_moment_vector [time, node, xyz],
-///                             end_tension [time, end], end_force [time, end, xyz], range/<quantity>_{min,max,mean}
+///                             end_tension [time, end], end_force [time, end, xyz],
+///                             range/<quantity>_{min,max,mean}
 ///     /dynamics/vessels/<vessel>/motion [time, (x, y, z, rx, ry, rz)]
 ///     /contact/events/<field> [event], /clearance/<line>/<other>/... [node]
 ///     /xdmf/<line>/segments   [element, 2] node indices (the XDMF polyline topology)
+///     /xdmf/<line>/t<k>/      position, effective_tension, bending_moment, curvature, torque at output k,
+///                             every output.vtk_interval (the frames results.xdmf shows in ParaView)
 ///
 /// Rows are written a chunk at a time and the file is flushed at every chunk, so a run that stops midway
 /// (or crashes) keeps everything up to the last chunk; a run that fails with an error keeps all of it.
@@ -43,7 +46,8 @@ class Hdf5Results {
   /// Starts the time series (call once, before the first record).
   void beginDynamics(const std::vector<solver::LineSnapshot>& initial);
   /// One output time: the lines and, per vessel, (x, y, z [m], rx, ry, rz [deg]).
-  void record(double time, const std::vector<solver::LineSnapshot>& lines, const std::vector<double>& vesselMotion);
+  void record(double time, const std::vector<solver::LineSnapshot>& lines,
+              const std::vector<double>& vesselMotion);
   /// Range graphs accumulated by the CSV recorder (same numbers as dynamics/<line>/range.csv).
   void writeRanges(const DynamicRecorder& recorder);
   void writeContactEvents(const std::vector<contact::ContactEvent>& events);
@@ -53,6 +57,8 @@ class Hdf5Results {
 
  private:
   void writeXdmf() const;
+  /// The lines at output time m_times.back() as plain datasets /xdmf/<line>/t<k>/... for the XDMF.
+  void writeFrame(const std::vector<solver::LineSnapshot>& lines);
 
   std::filesystem::path m_dir;
   const model::Model* m_model;
@@ -64,6 +70,8 @@ class Hdf5Results {
   std::vector<std::vector<int>> m_lineSeries;  ///< per line: series handles (see the .cpp)
   std::vector<int> m_vesselSeries;             ///< per vessel: its motion series
   std::vector<double> m_times;
+  std::vector<std::size_t> m_frames;  ///< output indices written as XDMF frames (every output.vtk_interval)
+  double m_nextFrame = 0.0;           ///< s, time of the next XDMF frame
 };
 
 }  // namespace tangle::io
