@@ -9,8 +9,9 @@ Tolerances: the time series are stored in single precision (7 significant digits
 2e-7 relative). Statics and range graphs are stored in double precision: equal to the CSV's rounding.
 The XDMF is checked twice: by parsing it (every HDF5 reference exists with the declared dimensions and
 every frame equals the time series at its output time) and by opening it in ParaView (Debian's
-python3-paraview: pvpython, with the "XDMF Reader" and the "Xdmf3 Reader S"; Debian's python3-vtk9 has
-no XDMF reader): the number of frames, the points and the tension range of a frame against results.h5.
+python3-paraview, which replaces python3-vtk9, whose VTK has no XDMF reader: pvpython, with the "XDMF
+Reader" and the "Xdmf3 Reader S"): the number of frames, the points and the tension range of a frame
+against results.h5.
 """
 
 from __future__ import annotations

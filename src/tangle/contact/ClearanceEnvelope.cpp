@@ -46,12 +46,23 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
       s.staticClearance.assign(n, std::nan(""));
       s.dynamicClearance.assign(n, kInf);
       s.timeOfMinimum.assign(n, std::nan(""));
+      s.knownClearance.assign(n, -kInf);
+      s.knownPosition.assign(n, Vec3::Zero());
+      s.knownTravel.assign(n, 0.0);
       m_sides.push_back(std::move(s));
     }
+  const auto& diameter = model.nodeContactDiameter();
+  for (const model::Line& l : model.lines()) {
+    double jump = 0.0;
+    for (int n = l.firstNode; n + 1 < l.firstNode + l.nodeCount; ++n)
+      jump = std::max(jump, 0.5 * std::abs(diameter[n + 1] - diameter[n]));
+    m_radiusJump.push_back(jump);
+  }
 }
 
 std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, int line, int other,
-                                                     const std::vector<double>* onlyBelow) const {
+                                                     const std::vector<double>* onlyBelow,
+                                                     const std::vector<char>* skip) const {
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
   const auto& diameter = m_model->nodeContactDiameter();
@@ -66,8 +77,8 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
     return (x - (p + s * axis)).norm() - radius;
   };
   // Bounding spheres of blocks of kBlock segments: no segment of a block is nearer to x than
-  // |x - centre| - sphere radius - the block's largest contact radius, so a block whose bound is not below the
-  // best distance so far is skipped. The minimum is exactly the brute-force one (same expression on the
+  // |x - centre| - sphere radius - the block's largest contact radius, so a block whose bound is not below
+  // the best distance so far is skipped. The minimum is exactly the brute-force one (same expression on the
   // segments that can attain it). The segment nearest at the previous call (the lines move little between
   // steps) gives a first best distance close to the final one, so nearly every block is skipped on one
   // squared distance. The brute-force search was 30 % of the drilling-riser run.
@@ -91,12 +102,23 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
     centre[static_cast<std::size_t>(k)] = c;
     reach[static_cast<std::size_t>(k)] = r + contact;
   }
+  // Per segment: its middle and the radius of its bounding sphere plus its larger contact radius.
+  std::vector<Vec3> segmentMiddle(static_cast<std::size_t>(std::max(segments, 0)));
+  std::vector<double> segmentReach(segmentMiddle.size());
+  for (int j = 0; j < segments; ++j) {
+    const int m1 = b.firstNode + j;
+    const Vec3& p = state.position[m1];
+    const Vec3& q = state.position[m1 + 1];
+    segmentMiddle[static_cast<std::size_t>(j)] = 0.5 * (p + q);
+    segmentReach[static_cast<std::size_t>(j)] =
+        0.5 * (q - p).norm() + 0.5 * std::max(diameter[m1], diameter[m1 + 1]);
+  }
   std::vector<int>& hint = m_hint[{line, other}];
   hint.resize(static_cast<std::size_t>(a.nodeCount), 0);
   std::vector<double> out(static_cast<std::size_t>(a.nodeCount), kInf);
   // With a threshold, whole blocks of kBlock nodes of line a are skipped first: no node within the sphere
   // (ca, ra) of a block is nearer to segment block k than |ca - c_k| - ra - reach_k.
-  std::vector<char> skipNode(static_cast<std::size_t>(a.nodeCount), 0);
+  std::vector<char> skipNode = skip ? *skip : std::vector<char>(static_cast<std::size_t>(a.nodeCount), 0);
   if (onlyBelow) {
     for (int first = 0; first < a.nodeCount; first += kBlock) {
       const int last = std::min(first + kBlock, a.nodeCount);
@@ -109,13 +131,16 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
         threshold = std::max(threshold, (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[n]);
       }
       if (!std::isfinite(threshold)) continue;
+      if (std::all_of(skipNode.begin() + first, skipNode.begin() + last, [](char c) { return c != 0; }))
+        continue;
       const Vec3 ca = 0.5 * (lo + hi);
       double ra = 0.0;
       for (int i = first; i < last; ++i) ra = std::max(ra, (state.position[a.firstNode + i] - ca).norm());
       bool reachable = false;
       for (int k = 0; k < blocks && !reachable; ++k)
-        reachable = (ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <
-                    threshold;
+        reachable =
+            (ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <
+            threshold;
       if (!reachable) std::fill(skipNode.begin() + first, skipNode.begin() + last, 1);
     }
   }
@@ -147,6 +172,11 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
       if (limit > 0.0 && (x - centre[static_cast<std::size_t>(k)]).squaredNorm() >= limit * limit) continue;
       const int end = std::min((k + 1) * kBlock, segments);
       for (int j = k * kBlock; j < end; ++j) {
+        // The same test on the segment's own bounding sphere (no root, no projection) before its distance.
+        const double segmentLimit = best + segmentReach[static_cast<std::size_t>(j)];
+        if (segmentLimit > 0.0 &&
+            (x - segmentMiddle[static_cast<std::size_t>(j)]).squaredNorm() >= segmentLimit * segmentLimit)
+          continue;
         const double d = segmentDistance(x, j);
         if (d < best) {
           best = d;
@@ -166,13 +196,49 @@ void ClearanceEnvelope::recordStatic(const model::State& state) {
 
 void ClearanceEnvelope::record(const model::State& state) {
   m_dynamic = true;
+  // How far each line has moved since the last call (an upper bound of any of its points' displacement).
+  const auto& lines = m_model->lines();
+  if (m_lastPosition.empty()) {
+    m_travel.assign(lines.size(), 0.0);
+  } else {
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      double largest = 0.0;
+      for (int n = lines[l].firstNode; n < lines[l].firstNode + lines[l].nodeCount; ++n)
+        largest = std::max(largest, (state.position[n] - m_lastPosition[n]).squaredNorm());
+      m_travel[l] += std::sqrt(largest);
+    }
+  }
+  m_lastPosition = state.position;
+  std::vector<char> skip;
   for (Side& s : m_sides) {
-    const std::vector<double> c = nodeClearance(state, s.line, s.other, &s.dynamicClearance);
-    for (std::size_t i = 0; i < c.size(); ++i)
+    // The clearance of a node to a polyline is 1-Lipschitz in the node's position and in the polyline's
+    // nodes (each point of a segment moves at most as far as its farther node), except for the radius
+    // switch at segment middles. So since the node's last exact clearance c0 it is at least
+    // c0 - |x - x0| - (travel of the other line since) - radius jump; a node whose bound is not below its
+    // envelope cannot set a new minimum and needs no search (most nodes at most steps: the lines move
+    // millimetres per step). The result is the same as searching every node.
+    const model::Line& a = lines[static_cast<std::size_t>(s.line)];
+    const double travel = m_travel[static_cast<std::size_t>(s.other)];
+    const double jump = m_radiusJump[static_cast<std::size_t>(s.other)];
+    skip.assign(static_cast<std::size_t>(a.nodeCount), 0);
+    for (std::size_t i = 0; i < skip.size(); ++i) {
+      const Vec3& x = state.position[a.firstNode + static_cast<int>(i)];
+      const double now =
+          s.knownClearance[i] - (x - s.knownPosition[i]).norm() - (travel - s.knownTravel[i]) - jump;
+      skip[i] = now >= s.dynamicClearance[i] ? 1 : 0;
+    }
+    const std::vector<double> c = nodeClearance(state, s.line, s.other, &s.dynamicClearance, &skip);
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      if (std::isfinite(c[i])) {  // searched: its exact clearance
+        s.knownClearance[i] = c[i];
+        s.knownPosition[i] = state.position[a.firstNode + static_cast<int>(i)];
+        s.knownTravel[i] = travel;
+      }
       if (c[i] < s.dynamicClearance[i]) {
         s.dynamicClearance[i] = c[i];
         s.timeOfMinimum[i] = state.time;
       }
+    }
   }
 }
 

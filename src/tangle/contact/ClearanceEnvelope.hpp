@@ -12,8 +12,8 @@
 
 #include <array>
 #include <filesystem>
-#include <map>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -40,14 +40,21 @@ class ClearanceEnvelope {
   /// Clearance [m] of every node of line `line` to line `other` at a state (the quantity of the file
   /// comment). With `onlyBelow` (one value per node [m]), a node whose clearance is provably not below its
   /// value gets +inf instead of the exact clearance (the dynamic envelope needs only new minima).
+  /// With `skip` (one flag per node), flagged nodes get +inf without any search.
   std::vector<double> nodeClearance(const model::State& state, int line, int other,
-                                    const std::vector<double>* onlyBelow = nullptr) const;
+                                    const std::vector<double>* onlyBelow = nullptr,
+                                    const std::vector<char>* skip = nullptr) const;
 
   struct Side {
     int line = -1, other = -1;
     std::vector<double> staticClearance;   ///< per node of `line` [m] (NaN before recordStatic)
     std::vector<double> dynamicClearance;  ///< per node, minimum over the run [m] (+inf before record)
     std::vector<double> timeOfMinimum;     ///< per node [s]
+    // Last exact clearance of each node (-inf: none yet), where the node was then [m], and how far line
+    // `other` had travelled by then (m_travel) [m]: a lower bound of the clearance now (record()).
+    std::vector<double> knownClearance;
+    std::vector<Vec3> knownPosition;
+    std::vector<double> knownTravel;
   };
   const std::vector<Side>& sides() const { return m_sides; }  ///< two per pair (A to B, B to A)
 
@@ -69,6 +76,13 @@ class ClearanceEnvelope {
   /// Per (line, other): the segment of `other` nearest to each node of `line` at the last call (a first
   /// guess that lets nodeClearance skip most of `other`; a cache, not part of the result).
   mutable std::map<std::array<int, 2>, std::vector<int>> m_hint;
+  /// Node positions at the last record() call, and per line the sum over calls of its largest node
+  /// displacement [m]: no point of the line has moved farther since any earlier call than the difference.
+  std::vector<Vec3> m_lastPosition;
+  std::vector<double> m_travel;
+  /// Per line, the largest difference of contact radius between the two nodes of a segment [m]: the
+  /// clearance to a segment switches radius at its middle, the one place it is not 1-Lipschitz in x.
+  std::vector<double> m_radiusJump;
 };
 
 }  // namespace tangle::contact

@@ -17,12 +17,12 @@
 /// minima of the distance over neighbouring pairs are kept, so a contact point crossing a node (where
 /// two neighbouring pairs report the same point) gives one force, continuous across the node.
 
-#include <limits>
 #include <array>
+#include <limits>
 #include <map>
-#include <string>
 #include <memory>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -37,24 +37,24 @@ namespace tangle::contact {
 
 /// One contact point at the current (trial) state.
 struct ContactPoint {
-  int lineA = 0, lineB = 0;        ///< line indices, lineA < lineB (or equal for self contact)
-  int elementA = 0, elementB = 0;  ///< global element indices
-  double s = 0.0, t = 0.0;         ///< segment parameters of the closest points [-]
-  Vec3 pointA, pointB;             ///< closest points on the centrelines [m]
-  Vec3 normal;                     ///< unit normal from B to A
-  double gap = 0.0;                ///< distance minus the contact radii [m] (< 0: penetration)
-  double gapRate = 0.0;            ///< d(gap)/dt: relative normal velocity [m/s] (< 0 approaching)
-  double normalForce = 0.0;        ///< [N], >= 0
+  int lineA = 0, lineB = 0;           ///< line indices, lineA < lineB (or equal for self contact)
+  int elementA = 0, elementB = 0;     ///< global element indices
+  double s = 0.0, t = 0.0;            ///< segment parameters of the closest points [-]
+  Vec3 pointA, pointB;                ///< closest points on the centrelines [m]
+  Vec3 normal;                        ///< unit normal from B to A
+  double gap = 0.0;                   ///< distance minus the contact radii [m] (< 0: penetration)
+  double gapRate = 0.0;               ///< d(gap)/dt: relative normal velocity [m/s] (< 0 approaching)
+  double normalForce = 0.0;           ///< [N], >= 0
   Vec3 frictionForce = Vec3::Zero();  ///< friction force on A [N]
-  double arcA = 0.0, arcB = 0.0;   ///< arc length of the contact point along each line [m]
+  double arcA = 0.0, arcB = 0.0;      ///< arc length of the contact point along each line [m]
   double lumpedMassA = 0.0, lumpedMassB = 0.0;  ///< instantaneous effective masses at the point [kg]
-  double pairMass = 0.0;           ///< effective mass used by the dashpot [kg]
-  double stiffness = 0.0;          ///< [N/m]
-  double damping = 0.0;            ///< [N s/m]
-  int track = -1;                  ///< index of the committed contact it continues, -1 if new
-  double sign = 1.0;               ///< -1 when the centrelines have passed each other (normal kept)
-  bool sFree = true, tFree = true; ///< closest point inside the segment (free projection parameter)
-  double weight = 1.0;             ///< point-to-point weight of the ABC blending [-]
+  double pairMass = 0.0;                        ///< effective mass used by the dashpot [kg]
+  double stiffness = 0.0;                       ///< [N/m]
+  double damping = 0.0;                         ///< [N s/m]
+  int track = -1;                               ///< index of the committed contact it continues, -1 if new
+  double sign = 1.0;                ///< -1 when the centrelines have passed each other (normal kept)
+  bool sFree = true, tFree = true;  ///< closest point inside the segment (free projection parameter)
+  double weight = 1.0;              ///< point-to-point weight of the ABC blending [-]
   /// Closest points on the smooth (C1) centrelines (SmoothCentreline.hpp): s, t above are its
   /// parameters (a little outside [0, 1] near an interior node), forces go to its stencil nodes.
   CentrelineDistance curve;
@@ -65,57 +65,57 @@ struct ContactPoint {
 struct LineSample {
   int lineA = 0, lineB = 0;
   int elementA = 0, elementB = 0;
-  double xi = 0.0, t = 0.0;         ///< parameters on the slave and master element [-]
-  Vec3 normal;                      ///< unit normal from B to A (closest-point direction)
-  double gap = 0.0;                 ///< surface gap [m] (< 0 in contact)
-  double gapRate = 0.0;             ///< [m/s]
-  double length = 0.0;              ///< integration weight: Gauss weight x Jacobian x (1 - ptp weight) [m]
-  double lineForce = 0.0;           ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
-  double slope = 0.0;               ///< d lineForce / d penetration [N/m^2]
-  double damping = 0.0;             ///< dashpot per unit length [N s/m^2]
-  double arcA = 0.0, arcB = 0.0;    ///< [m]
+  double xi = 0.0, t = 0.0;       ///< parameters on the slave and master element [-]
+  Vec3 normal;                    ///< unit normal from B to A (closest-point direction)
+  double gap = 0.0;               ///< surface gap [m] (< 0 in contact)
+  double gapRate = 0.0;           ///< [m/s]
+  double length = 0.0;            ///< integration weight: Gauss weight x Jacobian x (1 - ptp weight) [m]
+  double lineForce = 0.0;         ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
+  double slope = 0.0;             ///< d lineForce / d penetration [N/m^2]
+  double damping = 0.0;           ///< dashpot per unit length [N s/m^2]
+  double arcA = 0.0, arcB = 0.0;  ///< [m]
 };
 
 /// Elastic-stick friction state of the contact of one slave element with one master line.
 struct FrictionAnchor {
-  double arcA = 0.0, arcB = 0.0;    ///< material points on A and B it refers to [m]
-  Vec3 offset = Vec3::Zero();       ///< x_A(arcA) - x_B(arcB) - elastic tangential offset, at commit [m]
+  double arcA = 0.0, arcB = 0.0;  ///< material points on A and B it refers to [m]
+  Vec3 offset = Vec3::Zero();     ///< x_A(arcA) - x_B(arcB) - elastic tangential offset, at commit [m]
 };
 
 /// Line-to-line friction of one slave element with one master line at the trial state.
 struct FrictionPatch {
   int lineA = 0, lineB = 0, elementA = 0;
-  double length = 0.0;               ///< contact length [m]
-  double normalLoad = 0.0;           ///< mean normal force per unit length [N/m]
+  double length = 0.0;      ///< contact length [m]
+  double normalLoad = 0.0;  ///< mean normal force per unit length [N/m]
   Vec3 normal = Vec3::UnitZ();
-  Vec3 force = Vec3::Zero();         ///< total friction force on A [N]
+  Vec3 force = Vec3::Zero();  ///< total friction force on A [N]
   bool slipping = false;
-  FrictionAnchor trial;              ///< anchor after the return map (committed by commitStatic/commitStep)
+  FrictionAnchor trial;  ///< anchor after the return map (committed by commitStatic/commitStep)
   int nodeA[2] = {0, 0}, nodeB[2] = {0, 0};
-  double wA = 0.0, wB = 0.0;         ///< parameters of the anchor points on their elements
-  Vec3 elastic = Vec3::Zero();       ///< trial tangential offset delta_t [m]
+  double wA = 0.0, wB = 0.0;    ///< parameters of the anchor points on their elements
+  Vec3 elastic = Vec3::Zero();  ///< trial tangential offset delta_t [m]
 };
 
 /// A contact followed through time (committed data).
 struct TrackedContact {
   int lineA = 0, lineB = 0;
-  double arcA = 0.0, arcB = 0.0;     ///< last arc lengths [m]
-  double startTime = 0.0;            ///< [s]
-  double impactVelocity = 0.0;       ///< relative normal approach speed at first contact [m/s] (>= 0)
-  double impulse = 0.0;              ///< integral of the normal force over time so far [N s]
-  double pairMass = 0.0;             ///< effective pair mass used by the dashpot [kg]
-  double peakForce = 0.0;            ///< [N]
-  double lastForce = 0.0;            ///< force at the last committed state [N]
-  double lastGapRate = 0.0;          ///< [m/s]
+  double arcA = 0.0, arcB = 0.0;      ///< last arc lengths [m]
+  double startTime = 0.0;             ///< [s]
+  double impactVelocity = 0.0;        ///< relative normal approach speed at first contact [m/s] (>= 0)
+  double impulse = 0.0;               ///< integral of the normal force over time so far [N s]
+  double pairMass = 0.0;              ///< effective pair mass used by the dashpot [kg]
+  double peakForce = 0.0;             ///< [N]
+  double lastForce = 0.0;             ///< force at the last committed state [N]
+  double lastGapRate = 0.0;           ///< [m/s]
   Vec3 lastVelocityA = Vec3::Zero();  ///< velocity of the contact point on A at the last commit [m/s]
   Vec3 lastVelocityB = Vec3::Zero();
   Vec3 startVelocityA = Vec3::Zero();  ///< velocity of the point on A at impact [m/s]
   Vec3 startVelocityB = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ();        ///< normal at impact
+  Vec3 normal = Vec3::UnitZ();  ///< normal at impact
   double lumpedMassA = 0.0, lumpedMassB = 0.0;
   std::vector<std::array<double, 3>> path;  ///< (time, arcA, arcB) samples along the event
-  double minGap = 0.0;               ///< deepest penetration (most negative gap) [m]
-  double jumpImpulse = 0.0;          ///< impulse of the impulse-model velocity jump [N s]
+  double minGap = 0.0;                      ///< deepest penetration (most negative gap) [m]
+  double jumpImpulse = 0.0;                 ///< impulse of the impulse-model velocity jump [N s]
 };
 
 /// The contact model, as a load contributor of the assembler.
@@ -159,7 +159,8 @@ class LineContact final : public solver::LoadContributor {
   const std::vector<ContactPatch>& patches() const { return m_eventTracker.patches(); }
   /// Smallest surface gap [m] between lines A and B over arc ranges [a0, a1] on A and [b0, b1] on B
   /// (polyline; +inf if no element of either range).
-  double gapBetween(const model::State& state, int lineA, int lineB, double a0, double a1, double b0, double b1) const;
+  double gapBetween(const model::State& state, int lineA, int lineB, double a0, double a1, double b0,
+                    double b1) const;
 
   /// Largest step [s] from this state so that no approaching pair closes by more than a fifth of its
   /// contact radii (no tunnelling) and every active impact is resolved with at least 20 steps.
@@ -244,6 +245,10 @@ class LineContact final : public solver::LoadContributor {
   BroadPhase m_broadPhase;
   std::vector<SegmentProxy> m_proxies;
   std::vector<CandidatePair> m_candidates;
+  /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] of the proxies at m_verletProxies.
+  std::vector<CandidatePair> m_verletPairs;
+  std::vector<SegmentProxy> m_verletProxies;
+  double m_verletMargin = -1.0;
   double m_candidateTime = std::numeric_limits<double>::quiet_NaN();
   double m_margin = 0.0;
   std::vector<ContactPoint> m_trial;
@@ -255,11 +260,14 @@ class LineContact final : public solver::LoadContributor {
   double m_time = 0.0;
   std::vector<LineSample> m_samples;
   std::vector<FrictionPatch> m_patches;
-  std::map<std::pair<int, int>, FrictionAnchor> m_anchors;  // (slave element, master line) -> committed anchor
-  std::map<std::pair<int, int>, FrictionAnchor> m_pendingAnchors;  // anchors of patches new in this step / solve
-  std::map<std::pair<int, int>, std::vector<std::array<double, 4>>> m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
+  std::map<std::pair<int, int>, FrictionAnchor>
+      m_anchors;  // (slave element, master line) -> committed anchor
+  std::map<std::pair<int, int>, FrictionAnchor>
+      m_pendingAnchors;  // anchors of patches new in this step / solve
+  std::map<std::pair<int, int>, std::vector<std::array<double, 4>>>
+      m_zones;                          // (lineA, lineB) -> zones on A [from, to] and B [from, to]
   std::vector<Vec3> m_staticReference;  // positions at the last committed static state
-  bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
+  bool m_debug = false;                 // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
 };
 
 }  // namespace tangle::contact

@@ -12,14 +12,18 @@ namespace tangle::model {
 /// Positions and triads per node; velocities and accelerations per full DOF
 /// (translational [m/s], [m/s^2]; spatial angular [rad/s], [rad/s^2]).
 struct State {
-  double time = 0.0;              ///< [s]
-  std::vector<Vec3> position;     ///< node positions, global axes [m]
-  std::vector<Mat3> triad;        ///< node triads (beam nodes; identity for bar nodes)
-  VecX velocity;                  ///< per full DOF
-  VecX acceleration;              ///< per full DOF
+  double time = 0.0;           ///< [s]
+  std::vector<Vec3> position;  ///< node positions, global axes [m]
+  std::vector<Mat3> triad;     ///< node triads (beam nodes; identity for bar nodes)
+  VecX velocity;               ///< per full DOF
+  VecX acceleration;           ///< per full DOF
 
   /// Applies an increment given per full DOF: x += du, Q <- exp(dtheta) Q (multiplicative, spatial).
-  void applyIncrement(const DofMap& dofs, const VecX& fullIncrement);
+  /// With `orthonormalise`, each updated triad is re-orthonormalised (round-off drift over many updates);
+  /// a caller that applies several trial increments to the same start may do it once, on the result.
+  void applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool orthonormalise = true);
+  /// Re-orthonormalises every triad (nearest rotation through the quaternion).
+  void orthonormaliseTriads(const DofMap& dofs);
 };
 
 }  // namespace tangle::model

@@ -109,6 +109,7 @@ class GeneralizedAlpha {
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   double m_factorStep = 0.0;     // the time step that factorisation was made for [s]
+  double m_lastStep = 0.0;       // the last converged step [s]
   bool m_frozen = false;         // freezeEnvironment was called
   double m_frozenTime = 0.0;     // [s]
 };

@@ -407,7 +407,8 @@ TEST_F(VtkWriterTest, PvdWithoutExplicitCloseIsComplete) {
   EXPECT_EQ(arrayValues(section(last, "Cells"), "types"), (std::vector<double>{1, 1}));
 }
 
-// The reader ParaView uses, when Debian's python3-vtk9 happens to be installed (not a dependency).
+// The reader ParaView uses: VTK's Python module (from Debian's python3-paraview, installed by
+// scripts/install-deps.sh, or python3-vtk9); skipped when neither is installed.
 TEST_F(VtkWriterTest, VtkReaderLoadsFilesIfAvailable) {
   if (!fs::exists("/usr/bin/python3") ||
       std::system("/usr/bin/python3 -c 'import vtk' > /dev/null 2>&1") != 0) {
