@@ -43,12 +43,13 @@ class VesselSystem final : public solver::LoadContributor {
 
   /// State of one tensioner (issue 13: a tensioner resting on its stop must show in the results).
   struct TensionerReading {
-    int line = 0;          ///< line index
-    int end = 0;           ///< 0: end A, 1: end B
-    double stroke = 0.0;   ///< displacement from mid-stroke along the tensioner axis, positive down/out [m]
+    int line = 0;         ///< line index
+    int end = 0;          ///< 0: end A, 1: end B
+    double stroke = 0.0;  ///< displacement from mid-stroke along the tensioner axis, positive down/out [m]
     double halfStroke = 0.0;  ///< stroke / 2: |stroke| beyond it rests on an end stop [m]
-    double force = 0.0;    ///< force of the tensioner on the line end along its axis [N]
-    double stopForce = 0.0;  ///< part of `force` carried by the end stop (force - gas-spring force T + k_g s) [N]
+    double force = 0.0;       ///< force of the tensioner on the line end along its axis [N]
+    double stopForce =
+        0.0;  ///< part of `force` carried by the end stop (force - gas-spring force T + k_g s) [N]
   };
   /// The tensioners' strokes and forces at a state.
   std::vector<TensionerReading> tensionerReadings(const model::State& state, double time) const;
@@ -59,11 +60,14 @@ class VesselSystem final : public solver::LoadContributor {
  private:
   struct Connection {
     int vessel = 0;
-    int node = 0;            ///< line end node
-    Vec3 offset;             ///< fairlead in vessel axes [m]
+    int node = 0;                ///< line end node
+    Vec3 offset;                 ///< fairlead in vessel axes [m]
     double linkStiffness = 0.0;  ///< [N/m]
     model::TensionerSpec tensioner;
     double flexStiffness = 0.0;  ///< [N m/rad] (0: no rotational coupling)
+    /// Extra stiffness against twisting about the end's axis (the triad's first axis) [N m/rad]: a pinned
+    /// end on a vessel is free to bend, not to spin.
+    double twistStiffness = 0.0;
     Mat3 endTriad0 = Mat3::Identity();  ///< triad of the end node at t = 0
   };
   struct VesselData {
@@ -79,8 +83,8 @@ class VesselSystem final : public solver::LoadContributor {
   time::MotionValue prescribedPose(int vessel, double t) const;
   /// RAO displacement/velocity/acceleration of a vessel point (vessel axes offset) at t.
   time::MotionValue raoPointMotion(int vessel, const Mat3& rotation, const Vec3& offset, double t) const;
-  void addLink(const model::State& state, const Connection& c, const solver::AssemblyRequest& request, VecX& force,
-               solver::SystemMatrix* matrix) const;
+  void addLink(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,
+               VecX& force, solver::SystemMatrix* matrix) const;
   void addFlexJoint(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,
                     VecX& force, solver::SystemMatrix* matrix) const;
 
