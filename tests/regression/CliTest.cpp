@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "TestPaths.hpp"
 
@@ -24,8 +25,10 @@ struct Outcome {
 
 Outcome runCli(const std::string& arguments) {
   // One log per test: ctest runs the tests of this file in parallel processes.
-  const fs::path log = fs::temp_directory_path() /
-                       ("tangle_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + ".log");
+  const fs::path log =
+      fs::temp_directory_path() /
+      ("tangle_cli_test_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) +
+       ".log");
   const std::string cmd = std::string(TANGLE_CLI_PATH) + " " + arguments + " > " + log.string() + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(log);
@@ -50,19 +53,52 @@ TEST(Cli, EveryExampleValidates) {
 TEST(Cli, StaticRunWritesResults) {
   const fs::path out = fs::temp_directory_path() / "tangle_cli_catenary";
   fs::remove_all(out);
-  const Outcome o = runCli("run " + std::string(tangle::test::kExamplesDir) + "/catenary-mooring/model.yaml -o " +
-                           out.string() + " --no-plots -q");
+  const Outcome o = runCli("run " + std::string(tangle::test::kExamplesDir) +
+                           "/catenary-mooring/model.yaml -o " + out.string() + " --no-plots -q");
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_TRUE(fs::exists(out / "summary.json"));
   std::ifstream csv(out / "statics" / "mooring1.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(header,
-            "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,bending_moment_x_Nm,"
-            "bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,rotation_y_deg,rotation_z_deg");
+  EXPECT_EQ(
+      header,
+      "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,bending_moment_x_Nm,"
+      "bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,rotation_y_deg,rotation_z_deg");
   int rows = 0;
   for (std::string row; std::getline(csv, row);) ++rows;
   EXPECT_EQ(rows, 201);  // 200 elements
+}
+
+// Where statics put each vessel: statics/vessels.csv, and the free vessel's position in the log. The fixed
+// production unit stays where the model puts it (offset 0 to the printed digits); the free drilling unit
+// settles somewhere finite under its riser and the current.
+TEST(Cli, StaticsReportsWhereTheVesselsAre) {
+  const fs::path out = fs::temp_directory_path() / "tangle_cli_vessels";
+  fs::remove_all(out);
+  const Outcome o =
+      runCli("run " + std::string(tangle::test::kExamplesDir) +
+             "/drilling-riser-drift/model.yaml --statics-only --no-plots --no-report -o " + out.string());
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("vessel 'drilling_unit': static position ("), std::string::npos) << o.output;
+  std::ifstream csv(out / "statics" / "vessels.csv");
+  std::string header, fixedRow, freeRow;
+  std::getline(csv, header);
+  std::getline(csv, fixedRow);
+  std::getline(csv, freeRow);
+  EXPECT_EQ(header,
+            "vessel,mode,x_m,y_m,z_m,heading_deg,offset_x_m,offset_y_m,offset_z_m,heading_change_deg");
+  EXPECT_EQ(fixedRow.rfind("production_unit,fixed,", 0), 0u) << fixedRow;
+  std::vector<double> fixedValues;
+  {
+    std::stringstream fields(fixedRow);
+    std::string field;
+    for (int k = 0; std::getline(fields, field, ','); ++k)
+      if (k >= 6) fixedValues.push_back(std::stod(field));
+  }
+  ASSERT_EQ(fixedValues.size(), 4u) << fixedRow;
+  for (double v : fixedValues) EXPECT_NEAR(v, 0.0, 1e-4) << fixedRow;  // offsets [m] and heading change [deg]
+  EXPECT_EQ(freeRow.rfind("drilling_unit,free,", 0), 0u) << freeRow;
+  EXPECT_EQ(freeRow.find("nan"), std::string::npos) << freeRow;
 }
 
 // Issue 9: the riser-interference example end to end: the wake closes the gap between the risers, the
@@ -70,8 +106,8 @@ TEST(Cli, StaticRunWritesResults) {
 TEST(Cli, RiserInterferenceExampleWritesTheClearanceCheck) {
   const fs::path out = fs::temp_directory_path() / "tangle_cli_riser_interference";
   fs::remove_all(out);
-  const Outcome o = runCli("run " + std::string(tangle::test::kExamplesDir) + "/riser-interference/model.yaml -o " +
-                           out.string() + " --no-plots -q");
+  const Outcome o = runCli("run " + std::string(tangle::test::kExamplesDir) +
+                           "/riser-interference/model.yaml -o " + out.string() + " --no-plots -q");
   ASSERT_EQ(o.code, 0) << o.output;
   std::ifstream csv(out / "clearance" / "envelope.csv");
   std::string header;
@@ -140,11 +176,12 @@ TEST(Cli, StrayCommaModelIsRefusedQuickly) {
 
 TEST(Cli, BadInputExitsWithOneAndNamesFileLineAndKey) {
   const fs::path bad = fs::temp_directory_path() / "tangle_cli_bad.yaml";
-  std::ofstream(bad) << "environment:\n  water_depth: 100\nline_types:\n  - name: a\n    outer_diameter: 0.1\n"
-                        "    mass_per_length: 10\n    axial_stiffness: 1e8\nlines:\n  - name: l\n"
-                        "    end_a: {type: anchored, position: [0, 0, -100]}\n"
-                        "    end_b: {type: fixed, position: [50, 0, -10]}\n"
-                        "    sections:\n      - {type: a, lenght: 100, elements: 10}\n";
+  std::ofstream(bad)
+      << "environment:\n  water_depth: 100\nline_types:\n  - name: a\n    outer_diameter: 0.1\n"
+         "    mass_per_length: 10\n    axial_stiffness: 1e8\nlines:\n  - name: l\n"
+         "    end_a: {type: anchored, position: [0, 0, -100]}\n"
+         "    end_b: {type: fixed, position: [50, 0, -10]}\n"
+         "    sections:\n      - {type: a, lenght: 100, elements: 10}\n";
   const Outcome o = runCli("run " + bad.string() + " --no-plots");
   EXPECT_EQ(o.code, 1) << o.output;
   EXPECT_NE(o.output.find(bad.string() + ":13"), std::string::npos) << o.output;

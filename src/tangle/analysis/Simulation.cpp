@@ -35,6 +35,11 @@ solver::StaticResult Simulation::solveStatics() {
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
   solver::StaticResult result = solver.solve(m_state);
   if (!result.converged && !core::interruptRequested()) relaxThenSolve(result);
+  if (!result.converged && core::interruptRequested())
+    result.message =
+        "static analysis interrupted by the user (Ctrl-C or SIGTERM) before it converged; where it "
+        "stood: " +
+        result.message;
   // Contacts at rest in the static equilibrium become the starting contacts of the dynamics.
   if (m_contact && result.converged) m_contact->commitStep(m_state, 0.0);
   return result;
@@ -64,6 +69,7 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   const bool debug = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
   model::State relaxed = m_state;
   const int newtonIterations = result.iterations;
+  int lastRound = 0;
   for (int round = 0; round < kRounds; ++round) {
     const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
     if (debug) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
@@ -75,14 +81,21 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
     if (again.converged) {
       again.iterations += newtonIterations;
       again.message += fmt::format(
-          ", from the shape at rest after dynamic relaxation ({} round(s), damping {:.3g} 1/s; {} Newton iterations "
+          ", from the shape at rest after dynamic relaxation ({} round(s), damping {:.3g} 1/s; {} Newton "
+          "iterations "
           "in all)",
           round + 1, relaxation.damping(), again.iterations);
       result = again;
       m_state = trial;
       return true;
     }
+    lastRound = round + 1;
   }
+  if (lastRound > 0)
+    result.message += fmt::format(
+        "; dynamic relaxation was tried as well ({} round(s)) and Newton did not converge "
+        "from the shape it reached either",
+        lastRound);
   return false;
 }
 
@@ -120,8 +133,9 @@ time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observe
   if (m_vessels) dynamics.addPrescribed(m_vessels->prescribedNodes());
   if (m_contact) {
     dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });
-    dynamics.setStepValidator(
-        [this](const model::State& before, const model::State& after) { return m_contact->acceptStep(before, after); });
+    dynamics.setStepValidator([this](const model::State& before, const model::State& after) {
+      return m_contact->acceptStep(before, after);
+    });
     dynamics.setStepHook([this](model::State& s, double dt) { m_contact->commitStep(s, dt); });
   }
   // The run advances m_state itself, so snapshot() inside the observer sees the output state.

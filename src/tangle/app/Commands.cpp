@@ -1,18 +1,20 @@
 #include "tangle/app/Commands.hpp"
 
-#include <array>
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sstream>
-#include <cmath>
 
 #include "tangle/analysis/Simulation.hpp"
+#include "tangle/app/RunLog.hpp"
 #include "tangle/contact/ClashReport.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/StaticContactReport.hpp"
@@ -28,7 +30,6 @@
 #include "tangle/io/OutputFolder.hpp"
 #include "tangle/io/ResultWriter.hpp"
 #include "tangle/io/VtkWriter.hpp"
-#include "tangle/app/RunLog.hpp"
 #include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle::app {
@@ -39,29 +40,40 @@ namespace {
 
 const char* endKindName(model::EndKind k) {
   switch (k) {
-    case model::EndKind::Anchored: return "anchored";
-    case model::EndKind::Fixed: return "fixed";
-    case model::EndKind::Pinned: return "pinned";
-    case model::EndKind::Free: return "free";
-    case model::EndKind::Vessel: return "vessel";
+    case model::EndKind::Anchored:
+      return "anchored";
+    case model::EndKind::Fixed:
+      return "fixed";
+    case model::EndKind::Pinned:
+      return "pinned";
+    case model::EndKind::Free:
+      return "free";
+    case model::EndKind::Vessel:
+      return "vessel";
   }
   return "?";
 }
 
 const char* waveStretchingName(model::WaveStretching s) {
   switch (s) {
-    case model::WaveStretching::None: return "none";
-    case model::WaveStretching::Wheeler: return "wheeler";
-    case model::WaveStretching::Extrapolation: return "vertical_extrapolation";
+    case model::WaveStretching::None:
+      return "none";
+    case model::WaveStretching::Wheeler:
+      return "wheeler";
+    case model::WaveStretching::Extrapolation:
+      return "vertical_extrapolation";
   }
   return "?";
 }
 
 const char* vesselModeName(model::VesselMode mode) {
   switch (mode) {
-    case model::VesselMode::Fixed: return "fixed";
-    case model::VesselMode::Prescribed: return "prescribed";
-    case model::VesselMode::Free: return "free";
+    case model::VesselMode::Fixed:
+      return "fixed";
+    case model::VesselMode::Prescribed:
+      return "prescribed";
+    case model::VesselMode::Free:
+      return "free";
   }
   return "?";
 }
@@ -77,16 +89,20 @@ std::string modelSummary(const model::Model& m) {
                      env.waterDepth, env.waterDensity, env.gravity);
   const model::WaveSpec& w = env.waves;
   switch (w.kind) {
-    case model::WaveKind::None: out += "waves: none\n"; break;
+    case model::WaveKind::None:
+      out += "waves: none\n";
+      break;
     case model::WaveKind::Airy:
-      out += fmt::format("waves: regular (Airy), H = {:.2f} m, T = {:.2f} s, towards {:.1f} deg, stretching {}\n",
-                         w.height, w.period, radToDeg(w.azimuth), waveStretchingName(w.stretching));
+      out += fmt::format(
+          "waves: regular (Airy), H = {:.2f} m, T = {:.2f} s, towards {:.1f} deg, stretching {}\n", w.height,
+          w.period, radToDeg(w.azimuth), waveStretchingName(w.stretching));
       break;
     case model::WaveKind::Jonswap:
-      out += fmt::format("waves: JONSWAP, Hs = {:.2f} m, Tp = {:.2f} s, gamma {:.2f}, {} components (seed {}), "
-                         "towards {:.1f} deg, stretching {}\n",
-                         w.significantHeight, w.peakPeriod, w.gamma, w.components, w.seed, radToDeg(w.azimuth),
-                         waveStretchingName(w.stretching));
+      out += fmt::format(
+          "waves: JONSWAP, Hs = {:.2f} m, Tp = {:.2f} s, gamma {:.2f}, {} components (seed {}), "
+          "towards {:.1f} deg, stretching {}\n",
+          w.significantHeight, w.peakPeriod, w.gamma, w.components, w.seed, radToDeg(w.azimuth),
+          waveStretchingName(w.stretching));
       break;
   }
   if (env.current.empty()) {
@@ -100,14 +116,16 @@ std::string modelSummary(const model::Model& m) {
   if (env.windSpeed > 0.0)
     out += fmt::format("wind: {:.2f} m/s towards {:.1f} deg\n", env.windSpeed, radToDeg(env.windAzimuth));
   for (const model::VesselSpec& v : spec.vessels)
-    out += fmt::format("  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg, mass {:.1f} t{}\n",
-                       v.name, vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
-                       radToDeg(v.heading), v.mass / 1000.0, v.heldInStatics ? ", held in statics" : "");
+    out +=
+        fmt::format("  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg, mass {:.1f} t{}\n",
+                    v.name, vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
+                    radToDeg(v.heading), v.mass / 1000.0, v.heldInStatics ? ", held in statics" : "");
   int beams = 0;
   for (const auto& el : m.elements()) beams += el.isBeam() ? 1 : 0;
-  out += fmt::format("{} line(s), {} elements ({} beam, {} bar), {} nodes, {} DOFs ({} free)\n", m.lines().size(),
-                     m.elements().size(), beams, static_cast<int>(m.elements().size()) - beams, m.nodeCount(),
-                     m.dofs().fullDofCount(), m.dofs().equationCount());
+  out +=
+      fmt::format("{} line(s), {} elements ({} beam, {} bar), {} nodes, {} DOFs ({} free)\n",
+                  m.lines().size(), m.elements().size(), beams, static_cast<int>(m.elements().size()) - beams,
+                  m.nodeCount(), m.dofs().fullDofCount(), m.dofs().equationCount());
   for (int i = 0; i < static_cast<int>(m.lines().size()); ++i) {
     const model::Line& line = m.lines()[i];
     double weight = 0.0;
@@ -115,16 +133,18 @@ std::string modelSummary(const model::Model& m) {
       const auto& el = m.elements()[line.firstElement + e];
       weight += el.type->submergedWeight(env.waterDensity, env.gravity) * el.restLength;
     }
-    out += fmt::format("  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t, submerged weight "
-                       "{:.1f} kN, end A {}, end B {}\n",
-                       line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
-                       weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
+    out += fmt::format(
+        "  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t, submerged weight "
+        "{:.1f} kN, end A {}, end B {}\n",
+        line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
+        weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
   }
   if (!spec.contact.enabled) {
     out += "contact: off\n";
   } else if (spec.contact.pairs.empty()) {
-    out += fmt::format("contact: every pair of lines{}, restitution {:.2f}\n",
-                       spec.contact.selfContact ? " and each line with itself" : "", spec.contact.restitution);
+    out +=
+        fmt::format("contact: every pair of lines{}, restitution {:.2f}\n",
+                    spec.contact.selfContact ? " and each line with itself" : "", spec.contact.restitution);
   } else {
     out += fmt::format("contact: {} pair(s):", spec.contact.pairs.size());
     for (const auto& [a, b] : spec.contact.pairs) out += fmt::format(" {}-{};", a, b);
@@ -153,7 +173,8 @@ std::string warningText(const model::ModelSpec& spec) {
 
 /// Largest axial strain T / EA along each line [-] above `limit`: a line much shorter than its span
 /// converges to a strain no real line survives, silently.
-std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines, double limit) {
+std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines,
+                           double limit) {
   std::string out;
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const model::Line& line = m.lines()[l];
@@ -168,21 +189,24 @@ std::string strainWarnings(const model::Model& m, const std::vector<solver::Line
       }
     }
     if (worst > limit)
-      out += fmt::format("warning: line '{}': axial strain {:.2f} % at {:.1f} m from end A (above {:.0f} %): check "
-                         "the line length against the distance between its ends, and axial_stiffness\n",
-                         line.name, 100.0 * worst, where, 100.0 * limit);
+      out += fmt::format(
+          "warning: line '{}': axial strain {:.2f} % at {:.1f} m from end A (above {:.0f} %): check "
+          "the line length against the distance between its ends, and axial_stiffness\n",
+          line.name, 100.0 * worst, where, 100.0 * limit);
   }
   return out;
 }
 
 /// Tensioner strokes and stop forces, one line each.
-std::string tensionerText(const model::Model& m, const std::vector<vessel::VesselSystem::TensionerReading>& readings) {
+std::string tensionerText(const model::Model& m,
+                          const std::vector<vessel::VesselSystem::TensionerReading>& readings) {
   std::string out;
   for (const auto& r : readings) {
     const bool onStop = std::abs(r.stroke) > r.halfStroke;
-    out += fmt::format("  tensioner of line '{}' end {}: stroke {:+.3f} m of +-{:.3f} m, force {:.1f} kN{}\n",
-                       m.lines()[r.line].name, r.end == 0 ? 'A' : 'B', r.stroke, r.halfStroke, r.force / 1000.0,
-                       onStop ? fmt::format(", ON ITS END STOP (stop force {:.1f} kN)", r.stopForce / 1000.0) : "");
+    out += fmt::format(
+        "  tensioner of line '{}' end {}: stroke {:+.3f} m of +-{:.3f} m, force {:.1f} kN{}\n",
+        m.lines()[r.line].name, r.end == 0 ? 'A' : 'B', r.stroke, r.halfStroke, r.force / 1000.0,
+        onStop ? fmt::format(", ON ITS END STOP (stop force {:.1f} kN)", r.stopForce / 1000.0) : "");
   }
   return out;
 }
@@ -230,8 +254,8 @@ void makePlots(const fs::path& outDir, RunLog& log) {
     log.info(fmt::format("plots skipped: /usr/bin/python3 or {} not found\n", script.string()));
     return;
   }
-  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' > '{}' 2>&1", script.string(), outDir.string(),
-                                      (outDir / "plots.log").string());
+  const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' > '{}' 2>&1", script.string(),
+                                      outDir.string(), (outDir / "plots.log").string());
   if (std::system(cmd.c_str()) != 0) {
     log.error(fmt::format("warning: plotting failed, see {}\n", (outDir / "plots.log").string()));
   } else {
@@ -247,10 +271,14 @@ struct ResultFiles {
 ResultFiles resultFiles(const model::Model& m, bool staticsOnly) {
   const model::OutputSpec& o = m.spec().output;
   switch (o.format) {
-    case model::ResultFormat::Csv: return {true, false};
-    case model::ResultFormat::Hdf5: return {false, true};
-    case model::ResultFormat::Both: return {true, true};
-    case model::ResultFormat::Auto: break;
+    case model::ResultFormat::Csv:
+      return {true, false};
+    case model::ResultFormat::Hdf5:
+      return {false, true};
+    case model::ResultFormat::Both:
+      return {true, true};
+    case model::ResultFormat::Auto:
+      break;
   }
   const model::DynamicSpec& d = m.spec().dynamics;
   if (!d.enabled || staticsOnly) return {true, true};
@@ -324,7 +352,8 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   std::unique_ptr<io::Hdf5Results> h5;
   if (files.hdf5) {
     std::ifstream modelCopy(outDir / "model.yaml", std::ios::binary);
-    const std::string modelText((std::istreambuf_iterator<char>(modelCopy)), std::istreambuf_iterator<char>());
+    const std::string modelText((std::istreambuf_iterator<char>(modelCopy)),
+                                std::istreambuf_iterator<char>());
     h5 = std::make_unique<io::Hdf5Results>(outDir, m, modelText);
     h5->writeStatics(lines);
   }
@@ -353,19 +382,45 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   }
   for (const auto& s : lines) {
     std::string text = fmt::format(
-        "  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m", s.name,
-        s.endTensionA / 1000.0, s.endTensionB / 1000.0,
+        "  line '{}': end A tension {:.1f} kN, end B tension {:.1f} kN, max bending moment {:.2f} kN m",
+        s.name, s.endTensionA / 1000.0, s.endTensionB / 1000.0,
         *std::max_element(s.bendingMoment.begin(), s.bendingMoment.end()) / 1000.0);
-    if (s.touchdownArcLength >= 0.0) text += fmt::format(", touchdown at {:.1f} m from end A", s.touchdownArcLength);
+    if (s.touchdownArcLength >= 0.0)
+      text += fmt::format(", touchdown at {:.1f} m from end A", s.touchdownArcLength);
     log.info(text + "\n");
   }
   const vessel::VesselSystem* vessels = sim.vessels();
   if (vessels) log.info(tensionerText(m, vessels->tensionerReadings(sim.state(), 0.0)));
+  // Where the static solve put each vessel (a free vessel settles under its lines and the current).
+  if (!m.vessels().empty()) {
+    io::OutputFile vesselFile(outDir / "statics" / "vessels.csv");
+    vesselFile.write(
+        "vessel,mode,x_m,y_m,z_m,heading_deg,offset_x_m,offset_y_m,offset_z_m,heading_change_deg\n");
+    for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
+      const model::VesselSpec& spec = m.spec().vessels[static_cast<std::size_t>(v)];
+      const int node = m.vesselNode(v);
+      const Vec3& p = sim.state().position[node];
+      const Vec3 xAxis = sim.state().triad[node].col(0);
+      const double heading = std::atan2(xAxis.y(), xAxis.x()) * 180.0 / kPi;
+      const double change = std::remainder(heading - spec.heading * 180.0 / kPi, 360.0);
+      const Vec3 offset = p - spec.position;
+      vesselFile.write(fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n",
+                                   spec.name, vesselModeName(spec.mode), p.x(), p.y(), p.z(), heading,
+                                   offset.x(), offset.y(), offset.z(), change));
+      if (spec.mode == model::VesselMode::Free)
+        log.info(
+            fmt::format("  vessel '{}': static position ({:.2f}, {:.2f}, {:.2f}) m, offset {:.2f} m "
+                        "horizontally from its model position, heading {:.2f} deg ({:+.2f} deg)\n",
+                        spec.name, p.x(), p.y(), p.z(), std::hypot(offset.x(), offset.y()), heading, change));
+    }
+    vesselFile.close();
+  }
   log.error(strainWarnings(m, lines, kStrainWarning));
 
   int code = 0;
   if (m.spec().dynamics.enabled && !options.staticsOnly) {
-    io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0, files.csv);
+    io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0,
+                                 files.csv);
     if (h5) h5->beginDynamics(lines);
     std::vector<double> vesselMotion(6 * m.vessels().size());
     std::unique_ptr<contact::ClashReport> clash;
@@ -393,8 +448,8 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       std::string header = "time_s";
       const std::vector<std::string> stems = io::lineFileStems(lines);
       for (const auto& r : vessels->tensionerReadings(sim.state(), 0.0))
-        header += fmt::format(",{0}_end_{1}_stroke_m,{0}_end_{1}_force_N,{0}_end_{1}_stop_force_N", stems[r.line],
-                              r.end == 0 ? 'a' : 'b');
+        header += fmt::format(",{0}_end_{1}_stroke_m,{0}_end_{1}_force_N,{0}_end_{1}_stop_force_N",
+                              stems[r.line], r.end == 0 ? 'a' : 'b');
       tensionerFile->write(header + "\n");
     }
     if (report) {
@@ -418,8 +473,9 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", s.time);
             for (std::size_t k = 0; k < vesselMotion.size(); k += 6)
-              row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", vesselMotion[k], vesselMotion[k + 1],
-                                 vesselMotion[k + 2], vesselMotion[k + 3], vesselMotion[k + 4], vesselMotion[k + 5]);
+              row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", vesselMotion[k],
+                                 vesselMotion[k + 1], vesselMotion[k + 2], vesselMotion[k + 3],
+                                 vesselMotion[k + 4], vesselMotion[k + 5]);
             vesselFile->write(row + "\n");
             vesselFile->flush();
           }
@@ -427,13 +483,15 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
         !options.quiet,
         [&](const model::State& s, double dt) {
           recorder.accumulate(sim.sectionSnapshot(), dt);  // ranges need no support reactions
-          if (envelope) envelope->record(s);  // every step: the minimum clearance must not fall between outputs
+          if (envelope)
+            envelope->record(s);  // every step: the minimum clearance must not fall between outputs
           if (tensionerFile) {
             // Every step: a tensioner touching its stop between two output times must show.
             const auto readings = vessels->tensionerReadings(s, s.time);
             for (const auto& r : readings) maxStopForce = std::max(maxStopForce, std::abs(r.stopForce));
             std::string row = fmt::format("{:.6f}", s.time);
-            for (const auto& r : readings) row += fmt::format(",{:.6f},{:.6e},{:.6e}", r.stroke, r.force, r.stopForce);
+            for (const auto& r : readings)
+              row += fmt::format(",{:.6f},{:.6e},{:.6e}", r.stroke, r.force, r.stopForce);
             tensionerFile->write(row + "\n");
           }
         });
@@ -459,9 +517,10 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     }
     writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce);
     if (maxStopForce > 0.0)
-      log.error(fmt::format("warning: a tensioner reached its end stop during the dynamics (largest stop force "
-                            "{:.1f} kN, see dynamics/tensioners.csv)\n",
-                            maxStopForce / 1000.0));
+      log.error(
+          fmt::format("warning: a tensioner reached its end stop during the dynamics (largest stop force "
+                      "{:.1f} kN, see dynamics/tensioners.csv)\n",
+                      maxStopForce / 1000.0));
     if (!dyn.completed) {
       log.error("error: " + dyn.message + "\n");
       log.error(fmt::format("results up to t = {:.4g} s are in {}\n", dyn.endTime, outDir.string()));
@@ -482,12 +541,13 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   if (report) {
     if (envelope) report->setEnvelope(*envelope);
     if (code == 0)
-      report->setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)" : "completed");
+      report->setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
+                                                                          : "completed");
     writeReport(*report, outDir, log, reportTime);
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (code == 0) folder.setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
-                                                                                      : "completed");
+  if (code == 0)
+    folder.setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)" : "completed");
   log.info(fmt::format("results written to {} ({:.2f} s)\n", outDir.string(), seconds));
   return code;
 }
@@ -498,7 +558,8 @@ int runCheck(const CheckOptions& options) {
   model::Model m(io::readModelFile(options.modelPath));
   fmt::print("{}", modelSummary(m));
   std::cerr << warningText(m.spec());
-  fmt::print("model is valid{}\n", m.spec().warnings.empty() ? "" : fmt::format(" ({} warning(s))", m.spec().warnings.size()));
+  fmt::print("model is valid{}\n",
+             m.spec().warnings.empty() ? "" : fmt::format(" ({} warning(s))", m.spec().warnings.size()));
   return 0;
 }
 

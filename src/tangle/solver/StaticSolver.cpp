@@ -10,6 +10,7 @@
 #include <numbers>
 
 #include "tangle/core/Error.hpp"
+#include "tangle/core/Interrupt.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/solver/LinearSolver.hpp"
 #include "tangle/solver/ResidualNorm.hpp"
@@ -409,6 +410,10 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   double lastShift = 0.0;
   bool lastCapped = false;
   for (int it = 0; it < maxIterations; ++it) {
+    if (core::interruptRequested()) {  // Ctrl-C / SIGTERM: stop now, not after every remaining stage
+      out.failure = "interrupted by the user";
+      return out;
+    }
     if (!std::isfinite(out.residual)) {
       out.failure = "the out-of-balance force is not finite";
       return out;
@@ -420,8 +425,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     // the coordinates, so the residual is whatever round-off leaves (seen with fine beam meshes).
     // Only a full (unshifted) Newton step counts: a step made tiny by the pseudo-transient shift says
     // nothing about convergence.
-    const bool roundoff =
-        stalled >= 2 && (out.residual <= floor || (lastStep <= 1e-12 * lref && lastShift == 0.0 && !lastCapped));
+    const bool roundoff = stalled >= 2 && (out.residual <= floor ||
+                                           (lastStep <= 1e-12 * lref && lastShift == 0.0 && !lastCapped));
     if (balanced || roundoff) {
       if (!m_assembler->updateActiveSet()) {
         out.converged = true;
