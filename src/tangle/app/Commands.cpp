@@ -66,18 +66,6 @@ const char* waveStretchingName(model::WaveStretching s) {
   return "?";
 }
 
-const char* vesselModeName(model::VesselMode mode) {
-  switch (mode) {
-    case model::VesselMode::Fixed:
-      return "fixed";
-    case model::VesselMode::Prescribed:
-      return "prescribed";
-    case model::VesselMode::Free:
-      return "free";
-  }
-  return "?";
-}
-
 /// The model summary of `check` and `run`: environment, waves, current, vessels, lines, contact.
 std::string modelSummary(const model::Model& m) {
   std::string out;
@@ -118,7 +106,7 @@ std::string modelSummary(const model::Model& m) {
   for (const model::VesselSpec& v : spec.vessels)
     out +=
         fmt::format("  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg, mass {:.1f} t{}\n",
-                    v.name, vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
+                    v.name, model::vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
                     radToDeg(v.heading), v.mass / 1000.0, v.heldInStatics ? ", held in statics" : "");
   int beams = 0;
   for (const auto& el : m.elements()) beams += el.isBeam() ? 1 : 0;
@@ -405,7 +393,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       const double change = std::remainder(heading - spec.heading * 180.0 / kPi, 360.0);
       const Vec3 offset = p - spec.position;
       vesselFile.write(fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n",
-                                   spec.name, vesselModeName(spec.mode), p.x(), p.y(), p.z(), heading,
+                                   spec.name, model::vesselModeName(spec.mode), p.x(), p.y(), p.z(), heading,
                                    offset.x(), offset.y(), offset.z(), change));
       if (spec.mode == model::VesselMode::Free)
         log.info(

@@ -31,6 +31,16 @@ LinePairFilter allowLinePairs(const std::vector<std::pair<int, int>>& allowed) {
   };
 }
 
+ProxyBox proxyBox(const SegmentProxy& p, double margin) {
+  const double w = p.radius + 0.5 * margin;
+  return {p.a.cwiseMin(p.b).array() - w, p.a.cwiseMax(p.b).array() + w};
+}
+
+bool boxesOverlap(const ProxyBox& a, const ProxyBox& b) {
+  return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() && b.lo.y() <= a.hi.y() &&
+         a.lo.z() <= b.hi.z() && b.lo.z() <= a.hi.z();
+}
+
 BroadPhase::BroadPhase(BroadPhaseOptions options) : m_options(std::move(options)) {
   if (!(m_options.margin >= 0.0) || !std::isfinite(m_options.margin)) {
     throw Error("BroadPhase: margin must be finite and >= 0, got " + std::to_string(m_options.margin));
@@ -46,7 +56,6 @@ BroadPhase::BroadPhase(BroadPhaseOptions options) : m_options(std::move(options)
 }
 
 void BroadPhase::buildBoxes(const std::vector<SegmentProxy>& proxies) {
-  const double halfMargin = 0.5 * m_options.margin;
   m_boxes.resize(proxies.size());
   for (std::size_t i = 0; i < proxies.size(); ++i) {
     const SegmentProxy& p = proxies[i];
@@ -57,9 +66,7 @@ void BroadPhase::buildBoxes(const std::vector<SegmentProxy>& proxies) {
       throw Error("BroadPhase: " + describe(p, i) + " has an invalid contact radius " +
                   std::to_string(p.radius));
     }
-    const double w = p.radius + halfMargin;
-    m_boxes[i].lo = p.a.cwiseMin(p.b).array() - w;
-    m_boxes[i].hi = p.a.cwiseMax(p.b).array() + w;
+    static_cast<ProxyBox&>(m_boxes[i]) = proxyBox(p, m_options.margin);
     m_boxes[i].line = p.line;
     m_boxes[i].element = p.element;
   }
@@ -114,10 +121,7 @@ void BroadPhase::findPairs(const std::vector<SegmentProxy>& proxies, std::vector
 
   const int n = static_cast<int>(proxies.size());
   auto overlap = [this](int i, int j) {
-    const Box& bi = m_boxes[static_cast<std::size_t>(i)];
-    const Box& bj = m_boxes[static_cast<std::size_t>(j)];
-    return bi.lo.x() <= bj.hi.x() && bj.lo.x() <= bi.hi.x() && bi.lo.y() <= bj.hi.y() &&
-           bj.lo.y() <= bi.hi.y() && bi.lo.z() <= bj.hi.z() && bj.lo.z() <= bi.hi.z();
+    return boxesOverlap(m_boxes[static_cast<std::size_t>(i)], m_boxes[static_cast<std::size_t>(j)]);
   };
   auto filterAccepts = [this](int i, int j) {
     if (!m_options.linePairFilter) return true;

@@ -62,6 +62,14 @@ struct SegmentProxy {
   double radius = 0.0;
 };
 
+/// Axis-aligned box of a proxy: its end points' bounds grown on every side by its radius plus half the
+/// margin [m]. Two proxies are a broad-phase pair when their boxes overlap (touching counts).
+struct ProxyBox {
+  Vec3 lo, hi;
+};
+ProxyBox proxyBox(const SegmentProxy& p, double margin);
+bool boxesOverlap(const ProxyBox& a, const ProxyBox& b);
+
 /// A candidate pair: indices into the proxy array, first < second.
 struct CandidatePair {
   /// Index of the first proxy.
@@ -140,8 +148,7 @@ class BroadPhase {
 
  private:
   // Inflated box of a proxy, with the proxy's line and element (kept together for locality).
-  struct Box {
-    Vec3 lo, hi;
+  struct Box : ProxyBox {
     int line, element;
   };
   struct CellEntry {

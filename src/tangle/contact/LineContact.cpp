@@ -158,15 +158,6 @@ std::vector<CandidatePair> LineContact::pairsWithin(const model::State& state, d
   // so the earlier list holds every pair overlapping now; the box test below keeps exactly those, in the
   // broad phase's order: the same pairs as a fresh search. (The search was 4.5 % of the drilling-riser run,
   // twice per step.)
-  const auto boxesOverlap = [&](const SegmentProxy& a, const SegmentProxy& b) {
-    const double wa = a.radius + 0.5 * margin, wb = b.radius + 0.5 * margin;
-    for (int k = 0; k < 3; ++k) {
-      const double loA = std::min(a.a[k], a.b[k]) - wa, hiA = std::max(a.a[k], a.b[k]) + wa;
-      const double loB = std::min(b.a[k], b.b[k]) - wb, hiB = std::max(b.a[k], b.b[k]) + wb;
-      if (loA > hiB || loB > hiA) return false;
-    }
-    return true;
-  };
   bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
   if (reuse) {
     double moved = 0.0;
@@ -195,7 +186,8 @@ std::vector<CandidatePair> LineContact::pairsWithin(const model::State& state, d
   }
   std::vector<CandidatePair> pairs;
   for (const CandidatePair& c : m_verletPairs)
-    if (boxesOverlap(m_proxies[c.first], m_proxies[c.second])) pairs.push_back(c);
+    if (boxesOverlap(proxyBox(m_proxies[c.first], margin), proxyBox(m_proxies[c.second], margin)))
+      pairs.push_back(c);
   return pairs;
 }
 

@@ -102,18 +102,6 @@ Vec3 pointAt(const solver::LineSnapshot& s, double arc) {
   return (1.0 - w) * s.position[i - 1] + w * s.position[i];
 }
 
-const char* modeName(model::VesselMode m) {
-  switch (m) {
-    case model::VesselMode::Fixed:
-      return "fixed";
-    case model::VesselMode::Prescribed:
-      return "prescribed";
-    case model::VesselMode::Free:
-      return "free";
-  }
-  return "?";
-}
-
 std::string readText(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);
   if (!in) return {};
@@ -325,8 +313,8 @@ std::string HtmlReport::json() const {
                   const bool sized = a.x() > 0.0 && a.y() > 0.0 && a.z() > 0.0;
                   return fmt::format(
                       "{{\"name\":{},\"mode\":{},\"length\":{},\"breadth\":{},\"draft\":{},\"sized\":{}}}",
-                      quote(s.name), quote(modeName(s.mode)), fixed(length, 2), fixed(breadth, 2),
-                      fixed(draft, 2), sized ? "true" : "false");
+                      quote(s.name), quote(model::vesselModeName(s.mode)), fixed(length, 2),
+                      fixed(breadth, 2), fixed(draft, 2), sized ? "true" : "false");
                 }) +
           ",");
   f.write("\"current\":" +

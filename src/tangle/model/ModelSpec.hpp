@@ -77,6 +77,19 @@ enum class VesselMode {
   Free         ///< 6-DOF rigid body solved together with its lines (same implicit solve)
 };
 
+/// The model file's name of a vessel mode ("fixed", "prescribed", "free").
+inline const char* vesselModeName(VesselMode mode) {
+  switch (mode) {
+    case VesselMode::Fixed:
+      return "fixed";
+    case VesselMode::Prescribed:
+      return "prescribed";
+    case VesselMode::Free:
+      return "free";
+  }
+  return "?";
+}
+
 /// A coefficient table against relative heading (OCIMF style): per heading, surge, sway and yaw coefficients.
 struct HeadingTable {
   std::vector<double> heading;  ///< relative heading of the flow in vessel axes, ascending, in [0, 2 pi) [rad]

@@ -4,6 +4,11 @@
 
 namespace tangle::model {
 
+namespace {
+/// The rotation nearest to a triad that round-off has moved off SO(3) (through the unit quaternion).
+Mat3 orthonormalised(const Mat3& triad) { return Eigen::Quaterniond(triad).normalized().toRotationMatrix(); }
+}  // namespace
+
 void State::applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool orthonormalise) {
   for (int n = 0; n < dofs.nodeCount(); ++n) {
     const int d = dofs.firstDof(n);
@@ -12,11 +17,8 @@ void State::applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool o
       const Vec3 dtheta = fullIncrement.segment<3>(d + 3);
       if (dtheta.squaredNorm() > 0.0) {
         triad[n] = geometry::expMap(dtheta) * triad[n];
-        if (orthonormalise) {
-          // Re-orthonormalise to stop round-off drift over many steps.
-          const Eigen::Quaterniond q(triad[n]);
-          triad[n] = q.normalized().toRotationMatrix();
-        }
+        // Re-orthonormalise to stop round-off drift over many steps.
+        if (orthonormalise) triad[n] = orthonormalised(triad[n]);
       }
     }
   }
@@ -24,7 +26,7 @@ void State::applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool o
 
 void State::orthonormaliseTriads(const DofMap& dofs) {
   for (int n = 0; n < dofs.nodeCount(); ++n)
-    if (dofs.hasRotations(n)) triad[n] = Eigen::Quaterniond(triad[n]).normalized().toRotationMatrix();
+    if (dofs.hasRotations(n)) triad[n] = orthonormalised(triad[n]);
 }
 
 }  // namespace tangle::model
