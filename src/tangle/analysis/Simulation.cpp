@@ -7,7 +7,9 @@
 #include <iostream>
 #include <numbers>
 
+#include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
+#include "tangle/geometry/Rotation.hpp"
 #include "tangle/time/DynamicRelaxation.hpp"
 
 namespace tangle::analysis {
@@ -34,6 +36,8 @@ Simulation::~Simulation() = default;
 solver::StaticResult Simulation::solveStatics() {
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
   solver::StaticResult result = solver.solve(m_state);
+  // Fallbacks, cheapest first: the same model on a coarser mesh, then dynamic relaxation.
+  if (!result.converged && !core::interruptRequested() && m_coarseFallback) solveFromCoarserMesh(result);
   if (!result.converged && !core::interruptRequested()) relaxThenSolve(result);
   if (!result.converged && core::interruptRequested())
     result.message =
@@ -97,6 +101,100 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
         "from the shape it reached either",
         lastRound);
   return false;
+}
+
+bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
+  // A fine mesh has the coarse one's equilibrium to within its discretisation error, but Newton may not
+  // reach it from the start shape: soft modes (a buoyant hump swinging across a current) make every
+  // load increment crawl, the more so the more nodes share the mode. The coarse mesh reaches it, and
+  // from the interpolated coarse equilibrium the fine Newton has only the discretisation to correct.
+  constexpr int kFactor = 4;
+  model::ModelSpec coarseSpec = m_model->spec();
+  bool coarser = false;
+  for (model::LineSpec& line : coarseSpec.lines)
+    for (model::SectionSpec& s : line.sections) {
+      const int n = std::max(1, (s.elements + kFactor - 1) / kFactor);
+      if (n < s.elements && s.elements >= 2 * kFactor) {
+        s.elements = n;
+        coarser = true;
+      }
+    }
+  if (!coarser) return false;
+  const bool debug = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
+  std::unique_ptr<Simulation> coarse;
+  try {
+    coarse = std::make_unique<Simulation>(std::move(coarseSpec));
+  } catch (const Error&) {
+    return false;  // e.g. an attachment that the coarse mesh cannot place
+  }
+  coarse->m_coarseFallback = false;
+  const solver::StaticResult coarseResult = coarse->solveStatics();
+  if (debug) std::cerr << "  coarse mesh (1/" << kFactor << " of the elements): " << coarseResult.message << "\n";
+  if (!coarseResult.converged) {
+    result.message += "; the model with a quarter of the elements did not converge either";
+    return false;
+  }
+  // Interpolate the coarse equilibrium onto this mesh: a cubic Hermite curve in unstretched arc length
+  // through the coarse nodes (tangents by central differences), so that the fine elements keep the coarse
+  // strain instead of cutting the corners at the coarse nodes (with linear interpolation the 40 m lazy-wave
+  // mesh put the 10 m one in 7e7 N of compression at the hump). Heights are kept within the two coarse
+  // nodes' range below (no dip into the seabed at touchdown). Beam triads: slerp of the coarse ones,
+  // turned so that their first axis follows the curve.
+  const model::Model& cm = coarse->model();
+  const model::State& cs = coarse->m_state;
+  model::State start = m_state;
+  for (std::size_t l = 0; l < m_model->lines().size(); ++l) {
+    const model::Line& fine = m_model->lines()[l];
+    const model::Line& rough = cm.lines()[l];
+    const auto& arc = rough.arcLength;
+    const int last = rough.nodeCount - 1;
+    auto slope = [&](int k) {  // dx/ds at coarse node k [-]
+      const int a = std::max(k - 1, 0), b = std::min(k + 1, last);
+      return Vec3((cs.position[rough.firstNode + b] - cs.position[rough.firstNode + a]) /
+                  (arc[static_cast<std::size_t>(b)] - arc[static_cast<std::size_t>(a)]));
+    };
+    int k = 0;
+    for (int j = 0; j < fine.nodeCount; ++j) {
+      const double s = fine.arcLength[static_cast<std::size_t>(j)];
+      while (k + 1 < last && arc[static_cast<std::size_t>(k + 1)] < s) ++k;
+      const double s0 = arc[static_cast<std::size_t>(k)], h = arc[static_cast<std::size_t>(k + 1)] - s0;
+      const double a = std::clamp((s - s0) / h, 0.0, 1.0);
+      const int n0 = rough.firstNode + k, n1 = n0 + 1;
+      const Vec3 &p0 = cs.position[n0], &p1 = cs.position[n1];
+      const Vec3 m0 = h * slope(k), m1 = h * slope(k + 1);
+      const double a2 = a * a, a3 = a2 * a;
+      Vec3 x = (2 * a3 - 3 * a2 + 1) * p0 + (a3 - 2 * a2 + a) * m0 + (-2 * a3 + 3 * a2) * p1 + (a3 - a2) * m1;
+      x.z() = std::max(x.z(), std::min(p0.z(), p1.z()));
+      const Vec3 dx = (6 * a2 - 6 * a) * p0 + (3 * a2 - 4 * a + 1) * m0 + (-6 * a2 + 6 * a) * p1 + (3 * a2 - 2 * a) * m1;
+      const int n = fine.firstNode + j;
+      start.position[n] = x;
+      const Eigen::Quaterniond q0(cs.triad[n0]), q1(cs.triad[n1]);
+      Mat3 triad = q0.slerp(a, q1).normalized().toRotationMatrix();
+      if (dx.norm() > 0.0) triad = geometry::rotationBetween(triad.col(0), dx.normalized()) * triad;
+      start.triad[n] = triad;
+    }
+  }
+  for (std::size_t v = 0; v < m_model->vessels().size(); ++v) {
+    const int n = m_model->vesselNode(static_cast<int>(v)), c = cm.vesselNode(static_cast<int>(v));
+    if (n < 0 || c < 0) continue;
+    start.position[n] = cs.position[c];
+    start.triad[n] = cs.triad[c];
+  }
+  solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
+  solver::StaticResult again = solver.solve(start);
+  if (!again.converged) {
+    result.message += "; from the equilibrium of the model with a quarter of the elements it did not "
+                      "converge either";
+    return false;
+  }
+  again.iterations += result.iterations + coarseResult.iterations;
+  again.message += fmt::format(
+      ", from the equilibrium of the same model with a quarter of the elements ({} Newton iterations in "
+      "all)",
+      again.iterations);
+  result = again;
+  m_state = start;
+  return true;
 }
 
 std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {

@@ -53,6 +53,11 @@ class Simulation {
  private:
   /// The dynamic-relaxation fallback of solveStatics: on success replaces `result` and m_state.
   bool relaxThenSolve(solver::StaticResult& result);
+  /// The mesh-continuation fallback of solveStatics: solves the same model with sections of about a
+  /// quarter of the elements, interpolates that equilibrium onto this mesh (positions linearly in
+  /// unstretched arc length, triads by slerp) and solves from there. On success replaces `result` and
+  /// m_state.
+  bool solveFromCoarserMesh(solver::StaticResult& result);
 
   std::unique_ptr<model::Model> m_model;
   std::unique_ptr<solver::Assembler> m_assembler;
@@ -60,6 +65,7 @@ class Simulation {
   std::unique_ptr<contact::LineContact> m_contact;
   std::unique_ptr<vessel::VesselSystem> m_vessels;
   model::State m_state;
+  bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)
 };
 
 }  // namespace tangle::analysis

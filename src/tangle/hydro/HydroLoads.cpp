@@ -128,7 +128,9 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
       fluid.acceleration = m_fluid[e].acceleration;
     }
     const bool wakeTangent = m_wake && matrix && m_wake->isDownstream(static_cast<int>(e));
-    const MorisonElementLoad load = morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet, wantDamping);
+    const bool wantStiffness = matrix && request.dragStiffness;
+    const MorisonElementLoad load =
+        morisonElementLoad(x1, x2, v1, v2, fluid, *el.type, rho, wet, wantDamping, wantStiffness);
     // Out-of-balance convention: external loads are subtracted.
     force.segment<3>(d1) -= load.force1;
     force.segment<3>(d2) -= load.force2;
@@ -151,6 +153,15 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
       matrix->add3x3(d1, d2, k, request.kf);
       matrix->add3x3(d2, d1, k, request.kf);
       matrix->add3x3(d2, d2, k, request.kf);
+    }
+    if (wantStiffness) {
+      // The drag turns with the element (theory 6.4): d(force_i)/d(x2) = G_i = -d(force_i)/d(x1); the
+      // out-of-balance subtracts the force. Without it a limp line across a current (a lazy wave's
+      // buoyant hump) has almost no lateral stiffness in the tangent and Newton crawls.
+      matrix->add3x3(d1, d1, load.positionJacobian1, request.kf);
+      matrix->add3x3(d1, d2, load.positionJacobian1, -request.kf);
+      matrix->add3x3(d2, d1, load.positionJacobian2, request.kf);
+      matrix->add3x3(d2, d2, load.positionJacobian2, -request.kf);
     }
     m_addedMass[e] = load.addedMassPerNode;
     if (wantDamping) {

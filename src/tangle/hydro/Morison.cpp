@@ -43,11 +43,28 @@ inline void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, M
   if (vnNorm > 0.0) *jacobian += (kn / vnNorm) * (vn * vn.transpose());
 }
 
+/// d(L q_d)/dd of the drag per unit length times the element length L, with respect to the element vector
+/// d = x2 - x1 (formulas in Morison.hpp, morisonElementLoad).
+inline Mat3 dragPositionJacobian(const Vec3& vr, const Vec3& t, double kn, double ka) {
+  const double s = t.dot(vr);
+  const Vec3 wn = vr - s * t;
+  const double wnNorm = wn.norm();
+  const Mat3 p = Mat3::Identity() - t * t.transpose();
+  Mat3 g = ka * (std::abs(s) * s * (t * t.transpose()) + 2.0 * std::abs(s) * t * (vr.transpose() * p) +
+                 std::abs(s) * s * p);
+  if (wnNorm > 0.0) {
+    const Mat3 jn = wnNorm * Mat3::Identity() + (wn * wn.transpose()) / wnNorm;
+    g += kn * (wnNorm * wn * t.transpose() - jn * (t * vr.transpose() + s * Mat3::Identity()) * p);
+  }
+  return g;
+}
+
 }  // namespace
 
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const section::LineType& type, double rho,
-                                      double wettedFraction, bool wantDamping) {
+                                      double wettedFraction, bool wantDamping,
+                                      bool wantPositionJacobian) {
   require(wettedFraction >= 0.0 && wettedFraction <= 1.0, "submerged fraction [-]", "in [0, 1]",
           wettedFraction);
   require(std::isfinite(rho) && rho >= 0.0, "fluid density [kg/m^3]", "finite and >= 0", rho);
@@ -90,6 +107,11 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
   if (wantDamping) {
     load.damping1 = halfLength * j1;  // d force1/d v1 = -halfLength * j1
     load.damping2 = halfLength * j2;
+  }
+  if (wantPositionJacobian) {
+    const double half = 0.5 * wettedFraction;
+    load.positionJacobian1 = half * dragPositionJacobian(fluid.velocity - v1, t, kn, ka);
+    load.positionJacobian2 = half * dragPositionJacobian(fluid.velocity - v2, t, kn, ka);
   }
   load.addedMassPerNode.tangent = t;
   load.addedMassPerNode.normal = halfLength * normalMass;

@@ -47,6 +47,12 @@ struct MorisonElementLoad {
   /// force1 does not depend on v2 and force2 not on v1 (nodal lumping, see morisonElementLoad).
   Mat3 damping1 = Mat3::Zero();
   Mat3 damping2 = Mat3::Zero();  ///< C_2 = -d(force2)/d(v2) [N s/m], symmetric positive semi-definite
+  /// Drag's dependence on the node positions through the element direction and length [N/m]:
+  /// G_1 = d(force1)/d(x2) = -d(force1)/d(x1) (force1 depends on x1, x2 only through d = x2 - x1), with the
+  /// fluid velocity and the submerged fraction held. Not symmetric (a follower load: the normal drag turns
+  /// with the element). Filled only when asked for (statics, see morisonElementLoad).
+  Mat3 positionJacobian1 = Mat3::Zero();
+  Mat3 positionJacobian2 = Mat3::Zero();  ///< G_2 = d(force2)/d(x2) = -d(force2)/d(x1) [N/m]
   /// Added mass of each node (the same for both) [kg]: f L/2 rho A (Can (I - t t^T) + Caa t t^T).
   AddedMass addedMassPerNode;
 };
@@ -56,7 +62,13 @@ struct MorisonElementLoad {
 /// kinematics given (one point per element) and the node's own velocity v_i. Hence
 ///   force_i = f L/2 [q_dn(u - v_i) + q_da(u - v_i) + q_i],  C_i = f L/2 d(q_dn + q_da)/d(v_r) at u - v_i,
 /// which is the exact derivative of force_i with respect to v_i (d force_i / d v_j = 0 for j != i).
-/// The derivatives with respect to the node positions (through t and L) are not returned.
+/// With wantPositionJacobian, the drag's derivatives with respect to the node positions through t and L
+/// (fluid velocity and submerged fraction held): with d = x2 - x1, w = u - v_i, s = t.w, w_n = w - s t,
+/// P = I - t t^T and L q_d = L kn |w_n| w_n + L ka |s| s t,
+///   d(L q_dn)/dd = kn (|w_n| w_n t^T - J_n (t w^T + s I) P),  J_n = |w_n| I + w_n w_n^T / |w_n|
+///   d(L q_da)/dd = ka (|s| s t t^T + 2 |s| t w^T P + |s| s P)
+/// (from dt/dd = P / L, dL/dd = t^T), G_i = f/2 (sum). The fluid inertia's is not included (it vanishes
+/// in statics, where this is used).
 /// @param x1,x2 node positions [m], distinct
 /// @param v1,v2 node velocities [m/s]
 /// @param fluid total fluid kinematics (current + waves) for the element, usually at its midpoint, or
@@ -68,10 +80,12 @@ struct MorisonElementLoad {
 ///        every load, damping and added mass is proportional to it
 /// @param wantDamping compute damping1 / damping2 (left zero otherwise: an assembly without a matrix
 ///        needs the forces alone)
+/// @param wantPositionJacobian compute positionJacobian1 / positionJacobian2
 /// @throws tangle::Error for coincident nodes, f outside [0, 1], rho < 0 or negative diameters
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const section::LineType& type, double rho,
-                                      double wettedFraction, bool wantDamping = true);
+                                      double wettedFraction, bool wantDamping = true,
+                                      bool wantPositionJacobian = false);
 
 /// Fraction [-] of the segment z1-z2 [m] lying below the surface level surfaceElevation [m], assuming a
 /// straight segment and a locally flat surface: 1 if both ends are at or below it, 0 if both are at or

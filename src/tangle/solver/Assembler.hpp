@@ -28,6 +28,9 @@ struct AssemblyRequest {
   double kf = 1.0;          ///< factor on the stiffness dF/dq in H
   double cf = 0.0;          ///< factor on the damping dF/dv in H
   bool wantMatrix = true;   ///< assemble H
+  /// Statics: include the drag's follower stiffness (its dependence on the element directions, Morison.hpp)
+  /// in H. It makes H non-symmetric: the caller must solve with a general (LU) factorisation.
+  bool dragStiffness = false;
 };
 
 /// A source of forces that is not a structural element (hydrodynamics, contact, vessels...).

@@ -16,13 +16,23 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
     m_inner.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
     m_analysed = true;
     m_ldltAnalysed = false;
+    m_luAnalysed = false;
     m_bandedSuits = false;
-    if (m_allowBanded && k.rows() > 0) {
+    if (m_allowBanded && !m_nonSymmetric && k.rows() > 0) {
       // The envelope suits when one factorisation costs no more than a few multiply-adds per stored
       // entry of the matrix (a band: ~3 per entry), i.e. the coupling between distant equations is rare.
       m_skyline.analyzePattern(k);
       m_bandedSuits = m_skyline.factorizationCost() <= 8.0 * static_cast<double>(k.nonZeros()) + 64.0;
     }
+  }
+  if (m_nonSymmetric) {
+    m_method = Method::Lu;
+    if (!m_luAnalysed) {
+      m_lu.analyzePattern(k);
+      m_luAnalysed = true;
+    }
+    m_lu.factorize(k);
+    return m_lu.info() == Eigen::Success;
   }
   if (m_bandedSuits && m_skyline.factorize(k)) {
     m_method = Method::Banded;
@@ -43,6 +53,7 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
   if (useLu) {
     m_method = Method::Lu;
     m_lu.compute(k);
+    m_luAnalysed = true;
     return m_lu.info() == Eigen::Success;
   }
   m_method = Method::Ldlt;

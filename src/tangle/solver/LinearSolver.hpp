@@ -35,6 +35,13 @@ class LinearSolver {
     m_allowBanded = allow;
     m_analysed = false;
   }
+  /// Treats the next matrices as non-symmetric (statics with the drag's follower stiffness): a sparse LU
+  /// with COLAMD ordering, its symbolic analysis reused while the pattern does not change. The symmetric
+  /// methods read one triangle only, so they must not see a non-symmetric matrix.
+  void setNonSymmetric(bool nonSymmetric) {
+    if (nonSymmetric != m_nonSymmetric) m_analysed = false;
+    m_nonSymmetric = nonSymmetric;
+  }
   /// True when the last factorisation is the banded one.
   bool usedBanded() const { return m_method == Method::Banded; }
 
@@ -48,6 +55,8 @@ class LinearSolver {
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> m_lu;
   bool m_analysed = false;      // pattern recorded (and the envelope analysed when allowed)
   bool m_ldltAnalysed = false;  // Eigen's symbolic analysis done for the recorded pattern
+  bool m_luAnalysed = false;    // the LU's symbolic analysis done for the recorded pattern
+  bool m_nonSymmetric = false;
   Eigen::Index m_rows = -1;
   std::vector<int> m_outer;
   std::vector<int> m_inner;

@@ -37,6 +37,13 @@ bool debugStatics() {
   static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
   return on;
 }
+
+/// True when the environment has a current of non-zero speed at some level.
+bool hasCurrent(const model::Model& model) {
+  for (const model::CurrentLevel& c : model.environment().current)
+    if (c.speed != 0.0) return true;
+  return false;
+}
 }  // namespace
 
 StaticResult StaticSolver::solve(model::State& state, double time) {
@@ -385,10 +392,13 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   AssemblyRequest request;
   request.time = time;
   request.dynamic = false;
+  // In a current, the drag's follower stiffness (theory 6.4) goes into the tangent, solved by LU.
+  request.dragStiffness = hasCurrent(model) && !std::getenv("TANGLE_SYMMETRIC_STATICS");
   SystemMatrix matrix(dofs);
   SparseMatrix kAccepted;
   SparseMatrix k;
   LinearSolver solver;
+  solver.setNonSymmetric(request.dragStiffness);
   VecX force;
   VecX r(neq), rTrial(neq);
   m_assembler->beginStep();
@@ -402,6 +412,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   matrix.build(kAccepted);
 
   out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
+  if (debugStatics() && out.worstNode >= 0)
+    std::cerr << fmt::format("   start |r| {:.4e} N at {}\n", out.residual, model.describeNode(out.worstNode));
   double mu = 0.0;
   int stalled = 0;
   double best = out.residual;
@@ -477,6 +489,29 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       continue;
     }
     const VecX dq = -solver.solve(r);
+    if (std::getenv("TANGLE_DEBUG_TANGENT")) {
+      // Consistency of the tangent: K d against the central difference of the residual along d.
+      const VecX d = dq / std::max(dq.cwiseAbs().maxCoeff(), 1e-300);
+      VecX fullD = VecX::Zero(dofs.fullDofCount());
+      for (int i = 0; i < neq; ++i) fullD[eqDofs[i]] = d[i];
+      const double eps = 1e-5;
+      model::State plus = state, minus = state;
+      plus.applyIncrement(dofs, eps * fullD);
+      minus.applyIncrement(dofs, -eps * fullD);
+      VecX fp, fm, rp(neq), rm(neq);
+      m_assembler->assemble(plus, request, fp, nullptr);
+      m_assembler->assemble(minus, request, fm, nullptr);
+      gatherResidual(fp, offset, rp);
+      gatherResidual(fm, offset, rm);
+      const VecX fd = (rp - rm) / (2 * eps);
+      const VecX kd = kAccepted * d;
+      Eigen::Index worst = 0;
+      (fd - kd).cwiseAbs().maxCoeff(&worst);
+      std::cerr << fmt::format("    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}, worst at {} (K {:.4e} fd {:.4e})\n",
+                               kd.norm(), fd.norm(), (kd - fd).norm(),
+                               model.describeNode(dofs.nodeOf(eqDofs[worst])), kd[worst], fd[worst]);
+      m_assembler->assemble(state, request, force, nullptr);
+    }
     double largestT = 0.0, largestR = 0.0;
     int largestNode = -1;
     for (int i = 0; i < neq; ++i) {

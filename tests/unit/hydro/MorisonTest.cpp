@@ -92,6 +92,52 @@ TEST(Morison, ObliqueRelativeVelocityDecomposition) {
 }
 
 // Source: the damping returned must be the exact derivative of the returned force:
+// G_i = d force_i / d x2 = -d force_i / d x1 (the drag's follower stiffness used in statics), checked by
+// central finite differences of the force in the node positions with the fluid velocity and the
+// submerged fraction held (no fluid acceleration: the inertia term is not in G). Step 1e-6 m on a 7 m
+// element: truncation O(h^2) ~ 1e-12 relative, rounding ~1e-16 * 1e3 N / 1e-6 m ~ 1e-7 N/m; tolerance 1e-6
+// of max |G| (~1e2 N/m), plus 1e-5 N/m for the flow along the element, where the normal drag |w_n| w_n
+// (w_n = O(h)) has a kink in its second derivative and central differences err by about
+// f L/2 kn (|u| / L)^2 h = 2.8 * 61.5 * 0.034 * 1e-6 = 6e-6 N/m. Cases: oblique flow (normal and axial drag), flow along the element (no normal
+// part), flow normal to it (no axial part), with node velocities.
+TEST(Morison, PositionJacobianEqualsFiniteDifferenceOfForce) {
+  const section::LineType type = testType();
+  const Vec3 x1(0.3, -1.0, -30.0), x2(6.0, 2.0, -26.0);
+  const Vec3 axis = (x2 - x1).normalized();
+  const Vec3 normal = axis.cross(Vec3::UnitZ()).normalized();
+  const Vec3 v1(0.1, 0.4, -0.2), v2(-0.5, 0.2, 0.6);
+  for (const Vec3& u : {Vec3(0.8, -0.6, 0.3), Vec3(1.3 * axis), Vec3(-0.9 * normal)}) {
+    for (const bool moving : {false, true}) {
+      const Vec3 w1 = moving ? v1 : Vec3::Zero(), w2 = moving ? v2 : Vec3::Zero();
+      const MorisonElementLoad load =
+          morisonElementLoad(x1, x2, w1, w2, flow(u), type, kRho, 0.8, false, true);
+      const double scale = std::max(load.positionJacobian1.norm(), load.positionJacobian2.norm());
+      ASSERT_GT(scale, 1.0);
+      const double h = 1e-6;
+      for (int node = 0; node < 2; ++node) {
+        for (int j = 0; j < 3; ++j) {
+          Vec3 dx = Vec3::Zero();
+          dx[j] = h;
+          const MorisonElementLoad plus =
+              node == 0 ? morisonElementLoad(x1 + dx, x2, w1, w2, flow(u), type, kRho, 0.8)
+                        : morisonElementLoad(x1, x2 + dx, w1, w2, flow(u), type, kRho, 0.8);
+          const MorisonElementLoad minus =
+              node == 0 ? morisonElementLoad(x1 - dx, x2, w1, w2, flow(u), type, kRho, 0.8)
+                        : morisonElementLoad(x1, x2 - dx, w1, w2, flow(u), type, kRho, 0.8);
+          const double sign = node == 0 ? -1.0 : 1.0;  // d/dx1 = -G, d/dx2 = +G
+          const Vec3 dF1 = (plus.force1 - minus.force1) / (2 * h);
+          const Vec3 dF2 = (plus.force2 - minus.force2) / (2 * h);
+          const double tolerance = 1e-6 * scale + 1e-5;
+          EXPECT_LT((dF1 - sign * load.positionJacobian1.col(j)).norm(), tolerance)
+              << "u " << u.transpose() << " node " << node << " column " << j;
+          EXPECT_LT((dF2 - sign * load.positionJacobian2.col(j)).norm(), tolerance)
+              << "u " << u.transpose() << " node " << node << " column " << j;
+        }
+      }
+    }
+  }
+}
+
 // C_i = -d force_i / d v_i and d force_i / d v_j = 0 (i != j), checked by central finite differences
 // (step 1e-6 m/s on velocities of O(1): truncation O(h^2) ~ 1e-12, rounding ~1e-16 * 1e3 N / 1e-6 ~ 1e-7;
 // tolerance 1e-5 relative to max |C| ~ 1e2).

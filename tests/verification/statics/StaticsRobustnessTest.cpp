@@ -454,6 +454,49 @@ INSTANTIATE_TEST_SUITE_P(LazyAndSteep, WaveRiser, ::testing::Values(true, false)
                            return p.param ? "LazyWave" : "SteepWave";
                          });
 
+// The lazy wave of a new user's trial in a current across its plane (1 m/s at the surface, 0.2 m/s at
+// the seabed, towards +y) on a 10 m mesh: the continuation stalls on the buoyancy hump swinging across the
+// current (Newton proposes tens of metres on a few hundred newtons); statics reaches it through the
+// same model on a quarter of the elements (theory 7.6). Checks, independent of the friction path: the
+// vertical end forces carry the suspended weight (friction acts in the seabed plane) within two elements'
+// weight (the touchdown element is counted whole or not at all), and the hump is pushed downstream.
+TEST(WaveRiser, LazyWaveAcrossTheCurrentOnAFineMesh) {
+  Solved s = solveYaml(R"(
+environment:
+  water_depth: 1000
+  seabed: {normal_stiffness: 1.0e5, friction_coefficient: 0.5}
+  current: [{z: 0, speed: 1.0, azimuth: 90}, {z: -300, speed: 0.5, azimuth: 90}, {z: -1000, speed: 0.2, azimuth: 90}]
+line_types:
+  - {name: flex8, outer_diameter: 0.35, mass_per_length: 160, axial_stiffness: 7.0e8, bending_stiffness: 4.0e4, torsional_stiffness: 3.0e4, drag_normal: 1.2}
+  - {name: buoy, outer_diameter: 1.1, mass_per_length: 870, axial_stiffness: 7.0e8, bending_stiffness: 4.0e4, torsional_stiffness: 3.0e4, drag_normal: 1.0}
+lines:
+  - name: riser
+    end_a: {type: anchored, position: [1100, 0, -1000]}
+    end_b: {type: pinned, position: [0, 0, -10]}
+    sections:
+      - {type: flex8, length: 900, elements: 90}
+      - {type: buoy, length: 300, elements: 30}
+      - {type: flex8, length: 800, elements: 80}
+)");
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  const solver::LineSnapshot& line = s.lines[0];
+  const double g = 9.80665, rho = 1025.0;
+  const auto weight = [&](double mass, double d) { return (mass - rho * M_PI / 4.0 * d * d) * g; };
+  const double wRiser = weight(160.0, 0.35), wBuoy = weight(870.0, 1.1);  // N/m
+  double suspended = 0.0, apexY = 0.0;
+  const double clear = -1000.0 + 0.5 * 0.35 + 0.01;
+  for (std::size_t i = 0; i + 1 < line.position.size(); ++i) {
+    const double mid = 0.5 * (line.arcLength[i] + line.arcLength[i + 1]);
+    const bool buoy = mid > 900.0 && mid < 1200.0;
+    if (std::min(line.position[i].z(), line.position[i + 1].z()) > clear)
+      suspended += (buoy ? wBuoy : wRiser) * (line.arcLength[i + 1] - line.arcLength[i]);
+    if (buoy) apexY = std::max(apexY, line.position[i].y());
+  }
+  const Vec3 ends = line.endTensionForceA + line.endTensionForceB;
+  EXPECT_NEAR(std::abs(ends.z()), suspended, 2.0 * wRiser * 10.0);
+  EXPECT_GT(apexY, 10.0);  // downstream, towards +y
+}
+
 // A steel catenary riser hung from a fixed vessel without a flex joint is pinned there: it must give the
 // equilibrium of the same riser with a pinned top end, and as directly. (Its twist about its own axis was
 // held only by a 1e-6 EI / L spring: a nearly singular mode that made statics take 8 000 iterations and
