@@ -35,8 +35,25 @@ Simulation::~Simulation() = default;
 
 solver::StaticResult Simulation::solveStatics() {
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
+  const model::State start = m_state;
   solver::StaticResult result = solver.solve(m_state);
-  // Fallbacks, cheapest first: the same model on a coarser mesh, then dynamic relaxation.
+  // Fallbacks, cheapest first: in a current, the tangent with the drag's follower stiffness (theory 6.4);
+  // the same model on a coarser mesh; dynamic relaxation.
+  if (!result.converged && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model)) {
+    model::State trial = start;
+    solver::StaticSolver withDrag(*m_assembler, m_model->spec().statics);
+    withDrag.setDragStiffness(true);
+    solver::StaticResult again = withDrag.solve(trial);
+    if (std::getenv("TANGLE_DEBUG_STATICS"))
+      std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
+    if (again.converged) {
+      again.iterations += result.iterations;
+      again.message += fmt::format(", with the drag's stiffness in the tangent ({} Newton iterations in all)",
+                                   again.iterations);
+      result = again;
+      m_state = trial;
+    }
+  }
   if (!result.converged && !core::interruptRequested() && m_coarseFallback) solveFromCoarserMesh(result);
   if (!result.converged && !core::interruptRequested()) relaxThenSolve(result);
   if (!result.converged && core::interruptRequested())

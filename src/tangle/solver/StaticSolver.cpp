@@ -37,14 +37,13 @@ bool debugStatics() {
   static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
   return on;
 }
+}  // namespace
 
-/// True when the environment has a current of non-zero speed at some level.
-bool hasCurrent(const model::Model& model) {
+bool StaticSolver::hasCurrent(const model::Model& model) {
   for (const model::CurrentLevel& c : model.environment().current)
     if (c.speed != 0.0) return true;
   return false;
 }
-}  // namespace
 
 StaticResult StaticSolver::solve(model::State& state, double time) {
   StaticResult result;
@@ -393,7 +392,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   request.time = time;
   request.dynamic = false;
   // In a current, the drag's follower stiffness (theory 6.4) goes into the tangent, solved by LU.
-  request.dragStiffness = hasCurrent(model) && !std::getenv("TANGLE_SYMMETRIC_STATICS");
+  // In a current, when asked for: the drag's follower stiffness (theory 6.4) in the tangent, solved by LU.
+  request.dragStiffness = m_dragStiffness && hasCurrent(model);
   SystemMatrix matrix(dofs);
   SparseMatrix kAccepted;
   SparseMatrix k;
@@ -507,9 +507,25 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       const VecX kd = kAccepted * d;
       Eigen::Index worst = 0;
       (fd - kd).cwiseAbs().maxCoeff(&worst);
-      std::cerr << fmt::format("    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}, worst at {} (K {:.4e} fd {:.4e})\n",
-                               kd.norm(), fd.norm(), (kd - fd).norm(),
-                               model.describeNode(dofs.nodeOf(eqDofs[worst])), kd[worst], fd[worst]);
+      {
+        std::vector<std::pair<double, int>> errs;
+        for (int i = 0; i < neq; ++i) errs.emplace_back(std::abs(fd[i] - kd[i]), i);
+        std::partial_sort(errs.begin(), errs.begin() + std::min<int>(8, neq), errs.end(), std::greater<>());
+        for (int j = 0; j < std::min<int>(8, neq); ++j) {
+          const int i = errs[static_cast<std::size_t>(j)].second;
+          const int nd = dofs.nodeOf(eqDofs[i]);
+          std::cerr << fmt::format("      {} dof {} K {:.4e} fd {:.4e}\n", model.describeNode(nd),
+                                   eqDofs[i] - dofs.firstDof(nd), kd[i], fd[i]);
+        }
+      }
+      const int worstDof = eqDofs[worst];
+      const int worstNode = dofs.nodeOf(worstDof);
+      std::cerr << fmt::format(
+          "    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}, worst at {} dof {} at ({:.3f}, {:.3f}, {:.4f}) "
+          "(K {:.4e} fd {:.4e})\n",
+          kd.norm(), fd.norm(), (kd - fd).norm(), model.describeNode(worstNode), worstDof - dofs.firstDof(worstNode),
+          state.position[worstNode].x(), state.position[worstNode].y(), state.position[worstNode].z(), kd[worst],
+          fd[worst]);
       m_assembler->assemble(state, request, force, nullptr);
     }
     double largestT = 0.0, largestR = 0.0;
