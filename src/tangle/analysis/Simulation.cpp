@@ -67,9 +67,9 @@ solver::StaticResult Simulation::solveStatics() {
 }
 
 bool Simulation::relaxThenSolve(solver::StaticResult& result) {
-  // Not (yet) with line contact (the relaxation's impacts would enter the clash report) nor with free
-  // vessels (a DP unit held in statics would drift off during the relaxation).
-  if (m_contact) return false;
+  // Not with free vessels (a DP unit held in statics would drift off during the relaxation). With line
+  // contact the contact acts as in dynamics (penalty, no step passes lines through each other) but no
+  // step is committed to it, so the relaxation leaves no events in the clash report.
   for (const model::VesselSpec& v : m_model->spec().vessels)
     if (v.mode == model::VesselMode::Free) return false;
   double longest = 0.0;
@@ -82,6 +82,10 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   if (m_vessels)
     for (time::PrescribedNode& n : m_vessels->prescribedNodes()) prescribed.push_back(std::move(n));
   time::DynamicRelaxation relaxation(*m_assembler, m_model->spec().dynamics, std::move(prescribed), longest);
+  if (m_contact)
+    relaxation.setStepValidator([this](const model::State& before, const model::State& after) {
+      return m_contact->acceptStep(before, after);
+    });
   // Rounds of two periods of the slowest (pendulum) mode, each followed by a Newton solve from the shape
   // reached; at rest means slower than 1 mm/s.
   const double period = 2.0 * std::numbers::pi / (0.5 * relaxation.damping());

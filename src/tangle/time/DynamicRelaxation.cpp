@@ -55,6 +55,7 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
   stepper.initialize(state);
   double dt = kFirstRelaxationStep;
   int successes = 0;
+  model::State before;
   auto maxSpeed = [&](const model::State& s) {
     double v = 0.0;
     for (int n = 0; n < nodes; ++n) v = std::max(v, s.velocity.segment<3>(dofs.firstDof(n)).norm());
@@ -66,8 +67,11 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
       break;
     }
     const double h = std::min(dt, duration - state.time);
+    if (m_validator) before = state;
     const StepOutcome o = stepper.step(state, h);
-    if (!o.converged) {
+    const bool invalid = o.converged && m_validator && !m_validator(before, state);
+    if (invalid) state = before;  // a converged step that the validator refuses: back to its start
+    if (!o.converged || invalid) {
       dt *= 0.25;
       successes = 0;
       if (dt < kMinRelaxationStep) {

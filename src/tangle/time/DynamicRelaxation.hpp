@@ -50,7 +50,14 @@ class DynamicRelaxation {
   /// Mass-proportional damping used [1/s].
   double damping() const { return m_settings.rayleighAlpha; }
 
+  /// A step is accepted only if `validator(before, after)` is true (otherwise it is cut four-fold), e.g.
+  /// the line contact's check that no two lines passed through each other (LineContact::acceptStep).
+  void setStepValidator(std::function<bool(const model::State&, const model::State&)> validator) {
+    m_validator = std::move(validator);
+  }
+
  private:
+  std::function<bool(const model::State&, const model::State&)> m_validator;
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
   std::vector<PrescribedNode> m_prescribed;

@@ -25,6 +25,7 @@
 #include "support/Elastica.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
+#include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/io/ModelReader.hpp"
 #include "tangle/solver/ElasticCatenary.hpp"
 
@@ -495,6 +496,55 @@ lines:
   const Vec3 ends = line.endTensionForceA + line.endTensionForceB;
   EXPECT_NEAR(std::abs(ends.z()), suspended, 2.0 * wRiser * 10.0);
   EXPECT_GT(apexY, 10.0);  // downstream, towards +y
+}
+
+// A flexible riser and an SCR 8 m apart at the top in a 1 m/s current across both (a new user's trial,
+// here on 20 m elements). Newton's continuation pushes the flexible against the SCR and stalls there;
+// the dynamic relaxation, now used with contact (theory 7.6), finds the equilibrium, in which the two do
+// not touch. Independent check: the same model without contact converges directly, and with the lines
+// apart the two equilibria must agree. Tolerances: top tensions 1e-3 (the seabed friction holding the
+// laid lengths depends on the path, relaxation or Newton, which moves the anchor tensions by up to 2 %
+// but not what the suspended lengths hang from); the lines' surfaces at least 1 cm apart everywhere.
+std::string riserPairYaml(bool contact) {
+  return fmt::format(R"(
+environment:
+  water_depth: 1000
+  seabed: {{normal_stiffness: 1.0e5, friction_coefficient: 0.5}}
+  current: [{{z: 0, speed: 1.0, azimuth: 90}}, {{z: -1000, speed: 0.4, azimuth: 90}}]
+line_types:
+  - {{name: flex8, outer_diameter: 0.35, mass_per_length: 160, axial_stiffness: 7.0e8, bending_stiffness: 4.0e4, torsional_stiffness: 3.0e4, drag_normal: 1.2}}
+  - {{name: scr10, outer_diameter: 0.2731, mass_per_length: 139.7, axial_stiffness: 2.659e9, bending_stiffness: 2.208e7, drag_normal: 1.0}}
+lines:
+  - name: flexible
+    end_a: {{type: anchored, position: [1100, 0, -1000]}}
+    end_b: {{type: pinned, position: [0, 0, -20]}}
+    sections:
+      - {{type: flex8, length: 1700, elements: 85}}
+  - name: scr
+    end_a: {{type: anchored, position: [1400, 8, -1000]}}
+    end_b: {{type: pinned, position: [0, 8, -20]}}
+    sections:
+      - {{type: scr10, length: 2000, elements: 100}}
+{}
+)",
+                     contact ? "contact:\n  clearance_margin: 100" : "");
+}
+
+TEST(RiserPairInCurrent, StaticsWithContactFindsTheEquilibriumWithoutContact) {
+  Solved free = solveYaml(riserPairYaml(false));
+  ASSERT_TRUE(free.result.converged) << free.result.message;
+  Solved touching = solveYaml(riserPairYaml(true));
+  ASSERT_TRUE(touching.result.converged) << touching.result.message;
+  for (std::size_t l = 0; l < 2; ++l)
+    EXPECT_NEAR(touching.lines[l].endTensionB, free.lines[l].endTensionB, 1e-3 * free.lines[l].endTensionB)
+        << "line " << l;
+  const auto& a = touching.lines[0].position;
+  const auto& b = touching.lines[1].position;
+  double nearest = 1e30;
+  for (std::size_t i = 0; i + 1 < a.size(); ++i)
+    for (std::size_t j = 0; j + 1 < b.size(); ++j)
+      nearest = std::min(nearest, geometry::segmentDistance(a[i], a[i + 1], b[j], b[j + 1]).distance);
+  EXPECT_GT(nearest - 0.5 * (0.35 + 0.2731), 0.01);
 }
 
 // A steel catenary riser hung from a fixed vessel without a flex joint is pinned there: it must give the
