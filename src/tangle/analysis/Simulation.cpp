@@ -52,6 +52,8 @@ solver::StaticResult Simulation::solveStatics() {
                                    again.iterations);
       result = again;
       m_state = trial;
+    } else {
+      result.message += "; the retry with the drag's stiffness in the tangent did not converge either";
     }
   }
   if (!result.converged && !core::interruptRequested() && m_coarseFallback) solveFromCoarserMesh(result);
