@@ -203,11 +203,15 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
     start.position[n] = cs.position[c];
     start.triad[n] = cs.triad[c];
   }
+  const model::State interpolated = start;
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
   solver::StaticResult again = solver.solve(start);
   if (!again.converged) {
     result.message += "; from the equilibrium of the model with a quarter of the elements it did not "
                       "converge either";
+    // The dynamic relaxation that comes next starts from there: near the equilibrium, not from where the
+    // continuation stalled.
+    m_state = interpolated;
     return false;
   }
   again.iterations += result.iterations + coarseResult.iterations;
