@@ -14,6 +14,13 @@
 
 namespace tangle::analysis {
 
+namespace {
+bool debugStatics() {
+  static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
+  return on;
+}
+}  // namespace
+
 Simulation::Simulation(model::ModelSpec spec)
     : m_model(std::make_unique<model::Model>(std::move(spec))),
       m_assembler(std::make_unique<solver::Assembler>(*m_model)),
@@ -39,23 +46,8 @@ solver::StaticResult Simulation::solveStatics() {
   solver::StaticResult result = solver.solve(m_state);
   // Fallbacks, cheapest first: in a current, the tangent with the drag's follower stiffness (theory 6.4);
   // the same model on a coarser mesh; dynamic relaxation.
-  if (!result.converged && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model)) {
-    model::State trial = start;
-    solver::StaticSolver withDrag(*m_assembler, m_model->spec().statics);
-    withDrag.setDragStiffness(true);
-    solver::StaticResult again = withDrag.solve(trial);
-    if (std::getenv("TANGLE_DEBUG_STATICS"))
-      std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
-    if (again.converged) {
-      again.iterations += result.iterations;
-      again.message += fmt::format(", with the drag's stiffness in the tangent ({} Newton iterations in all)",
-                                   again.iterations);
-      result = again;
-      m_state = trial;
-    } else {
-      result.message += "; the retry with the drag's stiffness in the tangent did not converge either";
-    }
-  }
+  if (!result.converged && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model))
+    solveWithDragStiffness(start, result);
   if (!result.converged && !core::interruptRequested() && m_coarseFallback) solveFromCoarserMesh(result);
   if (!result.converged && !core::interruptRequested()) relaxThenSolve(result);
   if (!result.converged && core::interruptRequested())
@@ -66,6 +58,24 @@ solver::StaticResult Simulation::solveStatics() {
   // Contacts at rest in the static equilibrium become the starting contacts of the dynamics.
   if (m_contact && result.converged) m_contact->commitStep(m_state, 0.0);
   return result;
+}
+
+bool Simulation::solveWithDragStiffness(const model::State& start, solver::StaticResult& result) {
+  model::State trial = start;
+  solver::StaticSolver withDrag(*m_assembler, m_model->spec().statics);
+  withDrag.setDragStiffness(true);
+  solver::StaticResult again = withDrag.solve(trial);
+  if (debugStatics()) std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
+  if (!again.converged) {
+    result.message += "; the retry with the drag's stiffness in the tangent did not converge either";
+    return false;
+  }
+  again.iterations += result.iterations;
+  again.message +=
+      fmt::format(", with the drag's stiffness in the tangent ({} Newton iterations in all)", again.iterations);
+  result = again;
+  m_state = trial;
+  return true;
 }
 
 bool Simulation::relaxThenSolve(solver::StaticResult& result) {
@@ -93,13 +103,12 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   const double period = 2.0 * std::numbers::pi / (0.5 * relaxation.damping());
   constexpr int kRounds = 4;
   constexpr double kRestSpeed = 1e-3;
-  const bool debug = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
   model::State relaxed = m_state;
   const int newtonIterations = result.iterations;
   int lastRound = 0;
   for (int round = 0; round < kRounds; ++round) {
     const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
-    if (debug) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
+    if (debugStatics()) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
     if (core::interruptRequested()) return false;
     if (r.steps == 0) break;  // the relaxation cannot move: Newton would start where it failed
     model::State trial = relaxed;
@@ -143,7 +152,6 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
       }
     }
   if (!coarser) return false;
-  const bool debug = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
   std::unique_ptr<Simulation> coarse;
   try {
     coarse = std::make_unique<Simulation>(std::move(coarseSpec));
@@ -152,7 +160,8 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
   }
   coarse->m_coarseFallback = false;
   const solver::StaticResult coarseResult = coarse->solveStatics();
-  if (debug) std::cerr << "  coarse mesh (1/" << kFactor << " of the elements): " << coarseResult.message << "\n";
+  if (debugStatics())
+    std::cerr << "  coarse mesh (1/" << kFactor << " of the elements): " << coarseResult.message << "\n";
   if (!coarseResult.converged) {
     result.message += "; the model with a quarter of the elements did not converge either";
     return false;
@@ -188,9 +197,11 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
       const double a2 = a * a, a3 = a2 * a;
       Vec3 x = (2 * a3 - 3 * a2 + 1) * p0 + (a3 - 2 * a2 + a) * m0 + (-2 * a3 + 3 * a2) * p1 + (a3 - a2) * m1;
       x.z() = std::max(x.z(), std::min(p0.z(), p1.z()));
-      const Vec3 dx = (6 * a2 - 6 * a) * p0 + (3 * a2 - 4 * a + 1) * m0 + (-6 * a2 + 6 * a) * p1 + (3 * a2 - 2 * a) * m1;
       const int n = fine.firstNode + j;
       start.position[n] = x;
+      if (!m_model->dofs().hasRotations(n)) continue;  // bar nodes keep the identity triad
+      const Vec3 dx =
+          (6 * a2 - 6 * a) * p0 + (3 * a2 - 4 * a + 1) * m0 + (-6 * a2 + 6 * a) * p1 + (3 * a2 - 2 * a) * m1;
       const Eigen::Quaterniond q0(cs.triad[n0]), q1(cs.triad[n1]);
       Mat3 triad = q0.slerp(a, q1).normalized().toRotationMatrix();
       if (dx.norm() > 0.0) triad = geometry::rotationBetween(triad.col(0), dx.normalized()) * triad;

@@ -53,10 +53,14 @@ class Simulation {
  private:
   /// The dynamic-relaxation fallback of solveStatics: on success replaces `result` and m_state.
   bool relaxThenSolve(solver::StaticResult& result);
+  /// The first fallback of solveStatics in a current: solves again from `start` with the drag's follower
+  /// stiffness in the tangent (StaticSolver::setDragStiffness). On success replaces `result` and m_state.
+  bool solveWithDragStiffness(const model::State& start, solver::StaticResult& result);
   /// The mesh-continuation fallback of solveStatics: solves the same model with sections of about a
-  /// quarter of the elements, interpolates that equilibrium onto this mesh (positions linearly in
-  /// unstretched arc length, triads by slerp) and solves from there. On success replaces `result` and
-  /// m_state.
+  /// quarter of the elements, interpolates that equilibrium onto this mesh (positions on a cubic Hermite
+  /// curve in unstretched arc length, beam triads by slerp turned onto its tangent) and solves from there.
+  /// On success replaces `result` and m_state; on failure m_state is the interpolated shape (where the
+  /// relaxation fallback starts).
   bool solveFromCoarserMesh(solver::StaticResult& result);
 
   std::unique_ptr<model::Model> m_model;

@@ -389,8 +389,8 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       const int node = m.vesselNode(v);
       const Vec3& p = sim.state().position[node];
       const Vec3 xAxis = sim.state().triad[node].col(0);
-      const double heading = std::atan2(xAxis.y(), xAxis.x()) * 180.0 / kPi;
-      const double change = std::remainder(heading - spec.heading * 180.0 / kPi, 360.0);
+      const double heading = radToDeg(std::atan2(xAxis.y(), xAxis.x()));
+      const double change = std::remainder(heading - radToDeg(spec.heading), 360.0);
       const Vec3 offset = p - spec.position;
       vesselFile.write(fmt::format("{},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f}\n",
                                    spec.name, model::vesselModeName(spec.mode), p.x(), p.y(), p.z(), heading,

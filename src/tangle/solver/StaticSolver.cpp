@@ -37,6 +37,11 @@ bool debugStatics() {
   static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
   return on;
 }
+
+bool debugTangent() {
+  static const bool on = std::getenv("TANGLE_DEBUG_TANGENT") != nullptr;
+  return on;
+}
 }  // namespace
 
 bool StaticSolver::hasCurrent(const model::Model& model) {
@@ -391,7 +396,6 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   AssemblyRequest request;
   request.time = time;
   request.dynamic = false;
-  // In a current, the drag's follower stiffness (theory 6.4) goes into the tangent, solved by LU.
   // In a current, when asked for: the drag's follower stiffness (theory 6.4) in the tangent, solved by LU.
   request.dragStiffness = m_dragStiffness && hasCurrent(model);
   SystemMatrix matrix(dofs);
@@ -489,45 +493,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       continue;
     }
     const VecX dq = -solver.solve(r);
-    if (std::getenv("TANGLE_DEBUG_TANGENT")) {
-      // Consistency of the tangent: K d against the central difference of the residual along d.
-      const VecX d = dq / std::max(dq.cwiseAbs().maxCoeff(), 1e-300);
-      VecX fullD = VecX::Zero(dofs.fullDofCount());
-      for (int i = 0; i < neq; ++i) fullD[eqDofs[i]] = d[i];
-      const double eps = 1e-5;
-      model::State plus = state, minus = state;
-      plus.applyIncrement(dofs, eps * fullD);
-      minus.applyIncrement(dofs, -eps * fullD);
-      VecX fp, fm, rp(neq), rm(neq);
-      m_assembler->assemble(plus, request, fp, nullptr);
-      m_assembler->assemble(minus, request, fm, nullptr);
-      gatherResidual(fp, offset, rp);
-      gatherResidual(fm, offset, rm);
-      const VecX fd = (rp - rm) / (2 * eps);
-      const VecX kd = kAccepted * d;
-      Eigen::Index worst = 0;
-      (fd - kd).cwiseAbs().maxCoeff(&worst);
-      {
-        std::vector<std::pair<double, int>> errs;
-        for (int i = 0; i < neq; ++i) errs.emplace_back(std::abs(fd[i] - kd[i]), i);
-        std::partial_sort(errs.begin(), errs.begin() + std::min<int>(8, neq), errs.end(), std::greater<>());
-        for (int j = 0; j < std::min<int>(8, neq); ++j) {
-          const int i = errs[static_cast<std::size_t>(j)].second;
-          const int nd = dofs.nodeOf(eqDofs[i]);
-          std::cerr << fmt::format("      {} dof {} K {:.4e} fd {:.4e}\n", model.describeNode(nd),
-                                   eqDofs[i] - dofs.firstDof(nd), kd[i], fd[i]);
-        }
-      }
-      const int worstDof = eqDofs[worst];
-      const int worstNode = dofs.nodeOf(worstDof);
-      std::cerr << fmt::format(
-          "    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}, worst at {} dof {} at ({:.3f}, {:.3f}, {:.4f}) "
-          "(K {:.4e} fd {:.4e})\n",
-          kd.norm(), fd.norm(), (kd - fd).norm(), model.describeNode(worstNode), worstDof - dofs.firstDof(worstNode),
-          state.position[worstNode].x(), state.position[worstNode].y(), state.position[worstNode].z(), kd[worst],
-          fd[worst]);
-      m_assembler->assemble(state, request, force, nullptr);
-    }
+    if (debugTangent()) checkTangent(state, request, offset, kAccepted, dq);
     double largestT = 0.0, largestR = 0.0;
     int largestNode = -1;
     for (int i = 0; i < neq; ++i) {
@@ -659,6 +625,46 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   }
   out.failure = fmt::format("not converged in {} iterations", maxIterations);
   return out;
+}
+
+void StaticSolver::checkTangent(const model::State& state, const AssemblyRequest& request, const VecX& offset,
+                                const SparseMatrix& tangent, const VecX& step) {
+  // K d against the central difference of the residual along d (the step scaled to a largest component
+  // of 1), printed for the eight DOFs that differ most. Leaves the assembler's path-dependent trial data
+  // as it was at `state`.
+  const model::Model& model = m_assembler->model();
+  const model::DofMap& dofs = model.dofs();
+  const auto& eqDofs = dofs.equationDofs();
+  const int neq = dofs.equationCount();
+  const VecX d = step / std::max(step.cwiseAbs().maxCoeff(), 1e-300);
+  VecX fullD = VecX::Zero(dofs.fullDofCount());
+  for (int i = 0; i < neq; ++i) fullD[eqDofs[i]] = d[i];
+  constexpr double eps = 1e-5;
+  model::State plus = state, minus = state;
+  plus.applyIncrement(dofs, eps * fullD);
+  minus.applyIncrement(dofs, -eps * fullD);
+  VecX force, rPlus(neq), rMinus(neq);
+  m_assembler->assemble(plus, request, force, nullptr);
+  gatherResidual(force, offset, rPlus);
+  m_assembler->assemble(minus, request, force, nullptr);
+  gatherResidual(force, offset, rMinus);
+  m_assembler->assemble(state, request, force, nullptr);
+  const VecX fd = (rPlus - rMinus) / (2 * eps);
+  const VecX kd = tangent * d;
+  std::vector<std::pair<double, int>> errors;
+  for (int i = 0; i < neq; ++i) errors.emplace_back(std::abs(fd[i] - kd[i]), i);
+  const int shown = std::min(8, neq);
+  std::partial_sort(errors.begin(), errors.begin() + shown, errors.end(), std::greater<>());
+  std::cerr << fmt::format("    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}; largest differences:\n",
+                           kd.norm(), fd.norm(), (kd - fd).norm());
+  for (int j = 0; j < shown; ++j) {
+    const int i = errors[static_cast<std::size_t>(j)].second;
+    const int node = dofs.nodeOf(eqDofs[i]);
+    const Vec3& x = state.position[node];
+    std::cerr << fmt::format("      {} dof {} at ({:.3f}, {:.3f}, {:.4f}): K {:.4e} fd {:.4e}\n",
+                             model.describeNode(node), eqDofs[i] - dofs.firstDof(node), x.x(), x.y(), x.z(), kd[i],
+                             fd[i]);
+  }
 }
 
 void StaticSolver::gatherResidual(const VecX& force, const VecX& offset, VecX& r) const {

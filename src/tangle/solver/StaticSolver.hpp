@@ -101,6 +101,11 @@ class StaticSolver {
   /// Failure message: where, how large, and what the user can change.
   std::string diagnose(const model::State& state, const StaticResult& result, const std::string& why) const;
 
+  /// Debug (TANGLE_DEBUG_TANGENT): prints how far `tangent` times the Newton `step` is from central
+  /// differences of the residual along it.
+  void checkTangent(const model::State& state, const AssemblyRequest& request, const VecX& offset,
+                    const SparseMatrix& tangent, const VecX& step);
+
   Assembler* m_assembler;
   model::StaticSpec m_settings;
   double m_forceScale = 1.0;

@@ -12,13 +12,13 @@
 /// of the longest line, plus the full numerical dissipation of generalized-alpha (rho_inf = 0) at long
 /// steps; both vanish at rest, so the rested shape is an equilibrium of the undamped problem.
 
-#include <functional>
 #include <string>
 #include <vector>
 
 #include "tangle/model/ModelSpec.hpp"
 #include "tangle/model/State.hpp"
 #include "tangle/solver/Assembler.hpp"
+#include "tangle/time/DynamicAnalysis.hpp"
 #include "tangle/time/GeneralizedAlpha.hpp"
 
 namespace tangle::time {
@@ -52,12 +52,10 @@ class DynamicRelaxation {
 
   /// A step is accepted only if `validator(before, after)` is true (otherwise it is cut four-fold), e.g.
   /// the line contact's check that no two lines passed through each other (LineContact::acceptStep).
-  void setStepValidator(std::function<bool(const model::State&, const model::State&)> validator) {
-    m_validator = std::move(validator);
-  }
+  void setStepValidator(DynamicAnalysis::StepValidator validator) { m_validator = std::move(validator); }
 
  private:
-  std::function<bool(const model::State&, const model::State&)> m_validator;
+  DynamicAnalysis::StepValidator m_validator;
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
   std::vector<PrescribedNode> m_prescribed;
