@@ -24,6 +24,23 @@ void State::applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool o
   }
 }
 
+void State::setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement) {
+  time = from.time;
+  const int nodes = dofs.nodeCount();
+  position.resize(static_cast<std::size_t>(nodes));
+  // Nodes without rotations keep the identity triad in every state (the struct's contract): copied only
+  // when this state has none yet.
+  if (triad.size() != from.triad.size()) triad = from.triad;
+  for (int n = 0; n < nodes; ++n) {
+    const int d = dofs.firstDof(n);
+    position[n] = from.position[n] + fullIncrement.segment<3>(d);
+    if (dofs.hasRotations(n)) {
+      const Vec3 dtheta = fullIncrement.segment<3>(d + 3);
+      triad[n] = dtheta.squaredNorm() > 0.0 ? Mat3(geometry::expMap(dtheta) * from.triad[n]) : from.triad[n];
+    }
+  }
+}
+
 void State::orthonormaliseTriads(const DofMap& dofs) {
   for (int n = 0; n < dofs.nodeCount(); ++n)
     if (dofs.hasRotations(n)) triad[n] = orthonormalised(triad[n]);

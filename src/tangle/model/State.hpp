@@ -22,6 +22,11 @@ struct State {
   /// With `orthonormalise`, each updated triad is re-orthonormalised (round-off drift over many updates);
   /// a caller that applies several trial increments to the same start may do it once, on the result.
   void applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool orthonormalise = true);
+  /// Positions and triads of `from` with the increment applied (as applyIncrement without the
+  /// re-orthonormalisation) and its time; velocity and acceleration are left for the caller to set (a Newton
+  /// iterate of a time step computes both from the increment: copying them, and every bar node's identity
+  /// triad, per iterate was 2 % of a mooring run).
+  void setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement);
   /// Re-orthonormalises every triad (nearest rotation through the quaternion).
   void orthonormaliseTriads(const DofMap& dofs);
 };

@@ -92,19 +92,42 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
     if (!(std::abs(d) > tiny)) return false;  // also NaN
     m_diagonal[i] = d;
   }
+  // L by columns for the forward substitution (see solveInPlace) and 1 / D.
+  m_columnStart.assign(static_cast<std::size_t>(m_n) + 1, 0);
+  for (int i = 0; i < m_n; ++i)
+    for (int j = m_first[i]; j < i; ++j) ++m_columnStart[static_cast<std::size_t>(j) + 1];
+  for (int j = 0; j < m_n; ++j) m_columnStart[j + 1] += m_columnStart[j];
+  m_columnRow.resize(m_values.size());
+  m_columnValue.resize(m_values.size());
+  std::vector<std::size_t> next(m_columnStart.begin(), m_columnStart.end() - 1);
+  for (int i = 0; i < m_n; ++i) {
+    const std::ptrdiff_t rowI = rowBase(i);
+    for (int j = m_first[i]; j < i; ++j) {
+      const std::size_t q = next[static_cast<std::size_t>(j)]++;
+      m_columnRow[q] = i;
+      m_columnValue[q] = v[rowI + j];
+    }
+  }
+  m_inverseDiagonal.resize(m_n);
+  for (int i = 0; i < m_n; ++i) m_inverseDiagonal[i] = 1.0 / m_diagonal[i];
   return true;
 }
 
 void SkylineLdlt::solveInPlace(VecX& b) const {
   const double* v = m_values.data();
-  // L y = b
-  for (int i = 0; i < m_n; ++i) {
-    const std::ptrdiff_t rowI = rowBase(i);
-    const int fi = m_first[i];
-    b[i] -= dot(v + rowI + fi, b.data() + fi, i - fi);
+  double* x = b.data();
+  // L y = b by columns, then z = D^-1 y: y_j is final once column j-1 is applied, and each column's
+  // updates are independent, so the chain from one unknown to the next is one multiply-add (by rows, each
+  // unknown waited for a dot product over its row: the substitution was latency-bound, 12 % of a mooring
+  // run).
+  const std::size_t* start = m_columnStart.data();
+  const int* row = m_columnRow.data();
+  const double* value = m_columnValue.data();
+  for (int j = 0; j < m_n; ++j) {
+    const double yj = x[j];
+    for (std::size_t q = start[j]; q < start[j + 1]; ++q) x[row[q]] -= value[q] * yj;
+    x[j] = yj * m_inverseDiagonal[j];
   }
-  // D z = y
-  for (int i = 0; i < m_n; ++i) b[i] /= m_diagonal[i];
   // L^T x = z
   for (int i = m_n - 1; i >= 0; --i) {
     const std::ptrdiff_t rowI = rowBase(i);

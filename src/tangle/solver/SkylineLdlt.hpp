@@ -49,6 +49,12 @@ class SkylineLdlt {
   std::vector<std::ptrdiff_t> m_map;  // each stored value of the input: index in m_values, -1 - row for the
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
+  // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1])) and
+  // 1 / D, set by factorize for solveInPlace's forward pass.
+  std::vector<std::size_t> m_columnStart;
+  std::vector<int> m_columnRow;
+  std::vector<double> m_columnValue;
+  std::vector<double> m_inverseDiagonal;
 };
 
 }  // namespace tangle::solver

@@ -217,11 +217,10 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   bool haveResidual = false;
   for (int it = 0; it < m_settings.maxIterations; ++it) {
     outcome.iterations = it + 1;
-    state = start;
-    state.time = t1;
     // Every iterate is exp(dtheta) of the step's start triad (orthonormal): one re-orthonormalisation of the
     // converged state is enough (it was 2-3 per step, ~2 % of a beam-riser run).
-    state.applyIncrement(dofs, dq, false);
+    state.setIncremented(start, dofs, dq);
+    state.time = t1;
     // Newmark relations for the free DOFs (and any unprescribed constrained DOF: zero motion).
     state.acceleration = (dq - dt * v0 - dt * dt * (0.5 - p.beta) * a0) / (p.beta * dt * dt);
     state.velocity = v0 + dt * ((1.0 - p.gamma) * a0 + p.gamma * state.acceleration);
