@@ -32,7 +32,7 @@ inline void require(bool ok, const char* what, const char* requirement, double v
 /// J = kn (|v_rn| (I - t t^T) + v_rn v_rn^T / |v_rn|) + 2 ka |t.v_r| t t^T; the normal part tends to 0 as
 /// v_rn -> 0 (|x| x is continuously differentiable), so J = 2 ka |t.v_r| t t^T there.
 /// The Jacobian only when asked for (most assemblies need the force alone).
-inline void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, Mat3* jacobian) {
+[[gnu::always_inline]] inline void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, Mat3* jacobian) {
   const double va = t.dot(vr);
   const Vec3 vn = vr - va * t;
   const double vnNorm = vn.norm();
