@@ -253,9 +253,10 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   return solver::computeLineResults(*m_model, *m_assembler, m_state, force);
 }
 
-std::vector<solver::LineSnapshot> Simulation::sectionSnapshot() const {
-  const VecX noReactions = VecX::Zero(m_model->dofs().fullDofCount());
-  return solver::computeLineResults(*m_model, *m_assembler, m_state, noReactions);
+const std::vector<solver::LineSnapshot>& Simulation::sectionSnapshot() const {
+  if (m_noReactions.size() != m_model->dofs().fullDofCount()) m_noReactions = VecX::Zero(m_model->dofs().fullDofCount());
+  solver::computeLineResults(*m_model, *m_assembler, m_state, m_noReactions, m_sectionSnapshot);
+  return m_sectionSnapshot;
 }
 
 time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observer& observer, bool progress,

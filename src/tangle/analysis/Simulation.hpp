@@ -41,8 +41,9 @@ class Simulation {
   std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
   /// The same results without the support reactions (endForceA/B are zero): tensions, moments,
   /// curvatures and end tensions come from the elements alone, so no force assembly is needed. For
-  /// per-step work such as range graphs, where a full assembly per step would be wasted.
-  std::vector<solver::LineSnapshot> sectionSnapshot() const;
+  /// per-step work such as range graphs, where a full assembly per step would be wasted. The reference is
+  /// to a buffer of this Simulation, valid until the next call (no allocation per step).
+  const std::vector<solver::LineSnapshot>& sectionSnapshot() const;
   /// Runs the dynamic analysis from the current state (the static equilibrium); `observer` gets every
   /// output time, `stepObserver` (optional) every accepted step. `progress` prints a progress line on stderr.
   /// `stop` (optional) is asked before every step; true ends the run as an interruption.
@@ -70,6 +71,9 @@ class Simulation {
   std::unique_ptr<vessel::VesselSystem> m_vessels;
   model::State m_state;
   bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)
+  // sectionSnapshot's buffers: the snapshot and a zero force vector (no support reactions).
+  mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;
+  mutable VecX m_noReactions;
 };
 
 }  // namespace tangle::analysis

@@ -40,13 +40,24 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
 
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce) {
+  std::vector<LineSnapshot> out;
+  computeLineResults(model, assembler, state, fullForce, out);
+  return out;
+}
+
+void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
+                        const VecX& fullForce, std::vector<LineSnapshot>& out) {
   std::vector<element::BeamSectionForces> beamForces;
   const std::vector<double> tension = assembler.elementTension(state, &beamForces);
   const model::DofMap& dofs = model.dofs();
   const double depth = model.environment().waterDepth;
-  std::vector<LineSnapshot> out;
-  for (const model::Line& line : model.lines()) {
-    LineSnapshot s;
+  out.resize(model.lines().size());
+  std::vector<int> count;
+  std::vector<double> ei;
+  std::vector<char> grounded;
+  for (std::size_t l = 0; l < model.lines().size(); ++l) {
+    const model::Line& line = model.lines()[l];
+    LineSnapshot& s = out[l];
     s.name = line.name;
     s.arcLength = line.arcLength;
     const int n = line.nodeCount;
@@ -57,8 +68,10 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
     s.curvature.assign(n, 0.0);
     s.torque.assign(n, 0.0);
     s.rotation.assign(n, Vec3::Zero());
-    std::vector<int> count(n, 0);
-    std::vector<double> ei(n, 0.0);
+    s.touchdownArcLength = -1.0;
+    s.seabedNodes = 0;
+    count.assign(n, 0);
+    ei.assign(n, 0.0);
     for (int i = 0; i < n; ++i) s.position[i] = state.position[line.firstNode + i];
     for (int e = 0; e < line.elementCount; ++e) {
       const model::LineElement& el = model.elements()[line.firstElement + e];
@@ -119,7 +132,7 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
       s.endTensionB = signB * s.endTensionForceB.norm();
     }
     // Touchdown: last node (from end A) of the first grounded stretch that is followed by suspended line.
-    std::vector<bool> grounded(n);
+    grounded.assign(n, 0);
     for (int i = 0; i < n; ++i) {
       const double r = 0.5 * model.nodeContactDiameter()[line.firstNode + i];
       grounded[i] = s.position[i].z() - r <= -depth + 1e-6;
@@ -154,9 +167,7 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
       s.touchdownArcLength = td;
       break;
     }
-    out.push_back(std::move(s));
   }
-  return out;
 }
 
 }  // namespace tangle::solver

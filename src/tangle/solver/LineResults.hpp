@@ -52,5 +52,9 @@ struct LineSnapshot {
 /// support reactions: the force the line pulls its support with is minus that).
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce);
+/// The same into `out` (one snapshot per line; the vectors keep their capacity, so a caller that computes
+/// the results at every step allocates nothing after the first).
+void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
+                        const VecX& fullForce, std::vector<LineSnapshot>& out);
 
 }  // namespace tangle::solver
