@@ -1,5 +1,8 @@
 #include "tangle/io/DynamicRecorder.hpp"
 
+#include <cmath>
+#include <string_view>
+
 #include <algorithm>
 #include <fmt/compile.h>
 #include <fmt/format.h>
@@ -99,8 +102,17 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
       // mooring run (format parsing and a string per value).
       fmt::memory_buffer row;
       fmt::format_to(std::back_inserter(row), FMT_COMPILE("{:.6f}"), time);
-      for (std::size_t i = 0; i < s.arcLength.size(); ++i)
-        fmt::format_to(std::back_inserter(row), FMT_COMPILE(",{:.6e}"), quantity(s, static_cast<int>(q), i));
+      for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
+        const double value = quantity(s, static_cast<int>(q), i);
+        // Exact zeros (the moments and torque of cable lines: 5 of the 11 quantities) as the text fmt would
+        // give, without formatting them.
+        if (value == 0.0 && !std::signbit(value)) {
+          constexpr std::string_view kZero = ",0.000000e+00";
+          row.append(kZero.data(), kZero.data() + kZero.size());
+        } else {
+          fmt::format_to(std::back_inserter(row), FMT_COMPILE(",{:.6e}"), value);
+        }
+      }
       row.push_back('\n');
       m_streams[l][q]->write(std::string_view(row.data(), row.size()));
       m_streams[l][q]->flush();
