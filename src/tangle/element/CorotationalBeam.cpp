@@ -136,9 +136,13 @@ V3<T> localRotation(const std::array<V3<T>, 3>& e, const Mat3& q, int offset) {
         "on itself (mesh too coarse or load step too large)");
   }
   // The series branch of thetaOverSin is also valid for c slightly above 1 (round-off), so no clamp.
-  const ThetaOverSin g = thetaOverSin(cv);
-  const T half = chainRule(c, 0.5 * g.value, 0.5 * g.first, 0.5 * g.second);
-  return scaled(v, half);
+  if constexpr (std::is_same_v<T, double>) {
+    return scaled(v, 0.5 * thetaOverSinValue(cv));
+  } else {
+    const ThetaOverSin g = thetaOverSin(cv);
+    const T half = chainRule(c, 0.5 * g.value, 0.5 * g.first, 0.5 * g.second);
+    return scaled(v, half);
+  }
 }
 
 /// Co-rotated frame and local deformations (Crisfield 1990; Battini & Pacoste 2002, eqs. 3-9):

@@ -171,6 +171,19 @@ TEST(RotationLogFactorTest, SmoothAndConsistentAcrossBranches) {
   }
 }
 
+// The value-only factor of the internal force (series summed while its terms exceed 1e-17) equals the
+// value of the full evaluation (all 18 terms, or the closed form) to round-off: the omitted terms sum to
+// less than 1e-18, so 2 ulp (4.4e-16 relative) covers the different order of summation. Includes c a hair
+// above 1 (round-off of the trace) and both sides of the switch.
+TEST(RotationLogFactorTest, ValueOnlyEqualsFullEvaluation) {
+  const double cSwitch = 1.0 - kLogSeriesLimit;
+  for (const double c : {1.0 + 2e-16, 1.0, 1.0 - 1e-16, 1.0 - 1e-12, 1.0 - 5e-7, 1.0 - 1e-4, 0.999, 0.99,
+                         0.95, cSwitch + 1e-15, cSwitch - 1e-15, 0.7, 0.0, -0.9}) {
+    const double full = thetaOverSin(c).value;
+    EXPECT_NEAR(thetaOverSinValue(c), full, 4.4e-16 * full) << c;
+  }
+}
+
 // ---------------------------------------------------------------------------------------------
 // Construction and degenerate input
 
