@@ -92,7 +92,7 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
     if (!(std::abs(d) > tiny)) return false;  // also NaN
     m_diagonal[i] = d;
   }
-  // L by columns for the forward substitution (see solveInPlace) and 1 / D.
+  // L by columns for the backward substitution (see solveInPlace) and 1 / D.
   m_columnStart.assign(static_cast<std::size_t>(m_n) + 1, 0);
   for (int i = 0; i < m_n; ++i)
     for (int j = m_first[i]; j < i; ++j) ++m_columnStart[static_cast<std::size_t>(j) + 1];

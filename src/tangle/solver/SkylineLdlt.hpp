@@ -50,7 +50,7 @@ class SkylineLdlt {
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
   // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1])) and
-  // 1 / D, set by factorize for solveInPlace's forward pass.
+  // 1 / D, set by factorize for solveInPlace (the backward pass reads L by columns).
   std::vector<std::size_t> m_columnStart;
   std::vector<int> m_columnRow;
   std::vector<double> m_columnValue;
