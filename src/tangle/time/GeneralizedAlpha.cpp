@@ -165,7 +165,9 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   const double t1 = state.time + dt;
   const double rayleighAlpha = m_settings.rayleighAlpha;
 
-  const model::State start = state;
+  // Work space kept from step to step (no allocation per step once sized).
+  m_start = state;
+  const model::State& start = m_start;
   const VecX& v0 = start.velocity;
   const VecX& a0 = start.acceleration;
 
@@ -174,10 +176,12 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   // accelerations of an impact resolved with tiny steps land far beyond the next state; at an unchanged step
   // the constant-acceleration guess removes the O(dt^2 a) error of the free nodes next to a prescribed end,
   // the largest predictor residual of a moored line: 7.5 % fewer residual assemblies on the mooring example.)
-  VecX dq = dt * v0;
+  VecX& dq = m_dq;
+  dq = dt * v0;
   if (sameStep(dt, m_lastStep)) dq += 0.5 * dt * dt * a0;
   // Prescribed DOFs follow their motion exactly.
-  model::State target = start;
+  model::State& target = m_target;
+  target = start;
   applyPrescribed(target, environmentTime(t1));
   for (const PrescribedNode& pn : m_prescribed) {
     const int d = dofs.firstDof(pn.node);
@@ -218,7 +222,12 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   }
 
   StepOutcome outcome;
-  VecX combo(nfull), inertia(nfull), r(neq);
+  VecX& combo = m_combo;
+  VecX& inertia = m_inertia;
+  VecX& r = m_residual;
+  combo.resize(nfull);
+  inertia.resize(nfull);
+  r.resize(neq);
   m_assembler->beginStep();
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, or when the step size changed.

@@ -102,6 +102,10 @@ class GeneralizedAlpha {
   solver::LinearSolver m_solver{true};  // banded when the pattern suits (LinearSolver.hpp)
   SparseMatrix m_k;
   VecX m_forceOld;  // F(q_n, v_n, t_n)
+  // step()'s work space: the state at the step's start, the prescribed target, the increment over the step
+  // (full DOFs), the mass combination, the inertia force and the residual (equations).
+  model::State m_start, m_target;
+  VecX m_dq, m_combo, m_inertia, m_residual;
   VecX m_force;
   std::vector<bool> m_prescribedDof;
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
