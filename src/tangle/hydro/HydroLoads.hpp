@@ -57,6 +57,7 @@ class HydroLoads final : public solver::LoadContributor {
   std::vector<FluidKinematics> m_fluid;  // per element, at the cached time
   std::vector<double> m_surface;         // per element
   std::vector<AddedMass> m_addedMass;    // per element, per node
+  std::vector<MorisonCoefficients> m_coefficients;  // per element (validated once, at construction)
   std::unique_ptr<WakeInterference> m_wake;  // nullptr without wake_interference
   std::vector<ElementWake> m_elementWake;    // per element, from the last addForces()
 };

@@ -61,41 +61,59 @@ inline Mat3 dragPositionJacobian(const Vec3& vr, const Vec3& t, double kn, doubl
 
 }  // namespace
 
+MorisonCoefficients morisonCoefficients(const section::LineType& type, double rho) {
+  require(std::isfinite(rho) && rho >= 0.0, "fluid density [kg/m^3]", "finite and >= 0", rho);
+  require(std::isfinite(type.outerDiameter) && type.outerDiameter >= 0.0, "outerDiameter [m] of line type",
+          "finite and >= 0", type.outerDiameter);
+  require(std::isfinite(type.buoyancyDiameter) && type.buoyancyDiameter >= 0.0,
+          "buoyancyDiameter [m] of line type", "finite and >= 0", type.buoyancyDiameter);
+  MorisonCoefficients c;
+  const double d = type.outerDiameter;
+  const double area = 0.25 * kPi * d * d;                                                           // A [m^2]
+  const double displacedArea = type.buoyancyDiameter > 0.0 ? type.displacedAreaPerLength() : area;  // A_b
+  c.normalDrag = 0.5 * rho * type.dragNormal * d;
+  c.axialDrag = 0.5 * rho * type.dragAxial * kPi * d;
+  c.normalMass = rho * area * type.addedMassNormal;
+  c.axialMass = rho * area * type.addedMassAxial;
+  c.displacedMass = rho * displacedArea;
+  c.wet = rho != 0.0;
+  return c;
+}
+
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const section::LineType& type, double rho,
                                       double wettedFraction, bool wantDamping,
                                       bool wantPositionJacobian) {
   require(wettedFraction >= 0.0 && wettedFraction <= 1.0, "submerged fraction [-]", "in [0, 1]",
           wettedFraction);
-  require(std::isfinite(rho) && rho >= 0.0, "fluid density [kg/m^3]", "finite and >= 0", rho);
-  require(std::isfinite(type.outerDiameter) && type.outerDiameter >= 0.0, "outerDiameter [m] of line type",
-          "finite and >= 0", type.outerDiameter);
-  require(std::isfinite(type.buoyancyDiameter) && type.buoyancyDiameter >= 0.0,
-          "buoyancyDiameter [m] of line type", "finite and >= 0", type.buoyancyDiameter);
+  return morisonElementLoad(x1, x2, v1, v2, fluid, morisonCoefficients(type, rho), wettedFraction, wantDamping,
+                            wantPositionJacobian);
+}
+
+MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
+                                      const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
+                                      double wettedFraction, bool wantDamping, bool wantPositionJacobian) {
   const Vec3 axis = x2 - x1;
   const double length = axis.norm();
   require(std::isfinite(length) && length > 0.0, "element length [m]", "finite and > 0 (distinct nodes)",
           length);
 
   MorisonElementLoad load;
-  if (wettedFraction == 0.0 || rho == 0.0) return load;
+  if (wettedFraction == 0.0 || !coefficients.wet) return load;
 
   const Vec3 t = axis / length;
   const double halfLength = 0.5 * wettedFraction * length;  // wetted length lumped on each node [m]
-  const double d = type.outerDiameter;
-  const double area = 0.25 * kPi * d * d;                                                           // A [m^2]
-  const double displacedArea = type.buoyancyDiameter > 0.0 ? type.displacedAreaPerLength() : area;  // A_b
-  const double kn = 0.5 * rho * type.dragNormal * d;       // [kg/m^2]
-  const double ka = 0.5 * rho * type.dragAxial * kPi * d;  // [kg/m^2]
+  const double kn = coefficients.normalDrag;
+  const double ka = coefficients.axialDrag;
   // Added mass per unit length rho A (Can (I - t t^T) + Caa t t^T), kept as t and two masses.
-  const double normalMass = rho * area * type.addedMassNormal;  // [kg/m]
-  const double axialMass = rho * area * type.addedMassAxial;    // [kg/m]
+  const double normalMass = coefficients.normalMass;
+  const double axialMass = coefficients.axialMass;
 
   // Fluid inertia per unit length: Froude-Krylov + added-mass part of the fluid acceleration.
   Vec3 inertia = Vec3::Zero();
   if (!fluid.acceleration.isZero(0.0)) {
     const Vec3& af = fluid.acceleration;
-    inertia = (rho * displacedArea + normalMass) * af + ((axialMass - normalMass) * t.dot(af)) * t;
+    inertia = (coefficients.displacedMass + normalMass) * af + ((axialMass - normalMass) * t.dot(af)) * t;
   }
 
   Vec3 q1, q2;

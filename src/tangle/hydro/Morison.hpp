@@ -87,6 +87,29 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
                                       double wettedFraction, bool wantDamping = true,
                                       bool wantPositionJacobian = false);
 
+/// The per-unit-length coefficients of one line type in one fluid (formulas in the file comment), validated
+/// once so that the per-element evaluation in the assembly loop checks nothing but its own geometry
+/// (issue 8: the argument checks of every call were part of the Morison cost).
+struct MorisonCoefficients {
+  double normalDrag = 0.0;      ///< kn = 1/2 rho Cdn D [kg/m^2]
+  double axialDrag = 0.0;       ///< ka = 1/2 rho Cda pi D [kg/m^2]
+  double normalMass = 0.0;      ///< rho A Can [kg/m]
+  double axialMass = 0.0;       ///< rho A Caa [kg/m]
+  double displacedMass = 0.0;   ///< rho A_b [kg/m] (Froude-Krylov)
+  bool wet = false;             ///< rho > 0 (a dry fluid gives no load)
+};
+
+/// Coefficients of `type` in a fluid of density rho [kg/m^3].
+/// @throws tangle::Error for rho < 0 or not finite, or negative or non-finite diameters
+MorisonCoefficients morisonCoefficients(const section::LineType& type, double rho);
+
+/// morisonElementLoad with coefficients made by morisonCoefficients and a wetted fraction already in
+/// [0, 1] (not checked here).
+/// @throws tangle::Error for coincident nodes
+MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
+                                      const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
+                                      double wettedFraction, bool wantDamping, bool wantPositionJacobian);
+
 /// Fraction [-] of the segment z1-z2 [m] lying below the surface level surfaceElevation [m], assuming a
 /// straight segment and a locally flat surface: 1 if both ends are at or below it, 0 if both are at or
 /// above it (a horizontal segment exactly on the surface counts as submerged), linear in between.
