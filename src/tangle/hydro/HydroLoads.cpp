@@ -1,5 +1,7 @@
 #include "tangle/hydro/HydroLoads.hpp"
 
+#include <algorithm>
+
 #include "tangle/hydro/AiryWave.hpp"
 #include "tangle/hydro/JonswapSea.hpp"
 #include "tangle/hydro/Morison.hpp"
@@ -59,9 +61,16 @@ HydroLoads::HydroLoads(const model::Model& model)
   m_fluid.resize(n);
   m_surface.assign(n, 0.0);
   m_addedMass.assign(n, AddedMass{});
-  m_coefficients.reserve(n);
-  for (const model::LineElement& el : model.elements())
-    m_coefficients.push_back(morisonCoefficients(*el.type, model.environment().waterDensity));
+  std::vector<const section::LineType*> types;
+  m_coefficientIndex.reserve(n);
+  for (const model::LineElement& el : model.elements()) {
+    const auto found = std::find(types.begin(), types.end(), el.type);
+    if (found == types.end()) {
+      types.push_back(el.type);
+      m_coefficients.push_back(morisonCoefficients(*el.type, model.environment().waterDensity));
+    }
+    m_coefficientIndex.push_back(static_cast<int>(std::find(types.begin(), types.end(), el.type) - types.begin()));
+  }
   if (!model.spec().wakes.empty()) {
     m_wake = std::make_unique<WakeInterference>(model, m_current);
     if (m_wake->empty()) m_wake.reset();
@@ -133,7 +142,7 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     const bool wakeTangent = m_wake && matrix && m_wake->isDownstream(static_cast<int>(e));
     const bool wantStiffness = matrix && request.dragStiffness;
     const MorisonElementLoad load =
-        morisonElementLoad(x1, x2, v1, v2, fluid, m_coefficients[e], wet, wantDamping, wantStiffness);
+        morisonElementLoad(x1, x2, v1, v2, fluid, m_coefficients[static_cast<std::size_t>(m_coefficientIndex[e])], wet, wantDamping, wantStiffness);
     // Out-of-balance convention: external loads are subtracted.
     force.segment<3>(d1) -= load.force1;
     force.segment<3>(d2) -= load.force2;

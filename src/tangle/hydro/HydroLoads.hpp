@@ -57,7 +57,10 @@ class HydroLoads final : public solver::LoadContributor {
   std::vector<FluidKinematics> m_fluid;  // per element, at the cached time
   std::vector<double> m_surface;         // per element
   std::vector<AddedMass> m_addedMass;    // per element, per node
-  std::vector<MorisonCoefficients> m_coefficients;  // per element (validated once, at construction)
+  // Morison coefficients per line type (validated once, at construction) and each element's index into
+  // them: a few entries that stay in cache, not one per element.
+  std::vector<MorisonCoefficients> m_coefficients;
+  std::vector<int> m_coefficientIndex;
   std::unique_ptr<WakeInterference> m_wake;  // nullptr without wake_interference
   std::vector<ElementWake> m_elementWake;    // per element, from the last addForces()
 };
