@@ -14,13 +14,6 @@
 
 namespace tangle::analysis {
 
-namespace {
-bool debugStatics() {
-  static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
-  return on;
-}
-}  // namespace
-
 Simulation::Simulation(model::ModelSpec spec)
     : m_model(std::make_unique<model::Model>(std::move(spec))),
       m_assembler(std::make_unique<solver::Assembler>(*m_model)),
@@ -65,7 +58,7 @@ bool Simulation::solveWithDragStiffness(const model::State& start, solver::Stati
   solver::StaticSolver withDrag(*m_assembler, m_model->spec().statics);
   withDrag.setDragStiffness(true);
   solver::StaticResult again = withDrag.solve(trial);
-  if (debugStatics()) std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
+  if (solver::StaticSolver::debugOutput()) std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
   if (!again.converged) {
     result.message += "; the retry with the drag's stiffness in the tangent did not converge either";
     return false;
@@ -108,7 +101,7 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   int lastRound = 0;
   for (int round = 0; round < kRounds; ++round) {
     const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
-    if (debugStatics()) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
+    if (solver::StaticSolver::debugOutput()) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
     if (core::interruptRequested()) return false;
     if (r.steps == 0) break;  // the relaxation cannot move: Newton would start where it failed
     model::State trial = relaxed;
@@ -160,7 +153,7 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
   }
   coarse->m_coarseFallback = false;
   const solver::StaticResult coarseResult = coarse->solveStatics();
-  if (debugStatics())
+  if (solver::StaticSolver::debugOutput())
     std::cerr << "  coarse mesh (1/" << kFactor << " of the elements): " << coarseResult.message << "\n";
   if (!coarseResult.converged) {
     result.message += "; the model with a quarter of the elements did not converge either";

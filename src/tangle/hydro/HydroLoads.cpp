@@ -64,12 +64,12 @@ HydroLoads::HydroLoads(const model::Model& model)
   std::vector<const section::LineType*> types;
   m_coefficientIndex.reserve(n);
   for (const model::LineElement& el : model.elements()) {
-    const auto found = std::find(types.begin(), types.end(), el.type);
-    if (found == types.end()) {
+    const auto index = static_cast<int>(std::find(types.begin(), types.end(), el.type) - types.begin());
+    if (index == static_cast<int>(types.size())) {
       types.push_back(el.type);
       m_coefficients.push_back(morisonCoefficients(*el.type, model.environment().waterDensity));
     }
-    m_coefficientIndex.push_back(static_cast<int>(std::find(types.begin(), types.end(), el.type) - types.begin()));
+    m_coefficientIndex.push_back(index);
   }
   if (!model.spec().wakes.empty()) {
     m_wake = std::make_unique<WakeInterference>(model, m_current);

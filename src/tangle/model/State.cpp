@@ -10,18 +10,12 @@ Mat3 orthonormalised(const Mat3& triad) { return Eigen::Quaterniond(triad).norma
 }  // namespace
 
 void State::applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool orthonormalise) {
-  for (int n = 0; n < dofs.nodeCount(); ++n) {
-    const int d = dofs.firstDof(n);
-    position[n] += fullIncrement.segment<3>(d);
-    if (dofs.hasRotations(n)) {
-      const Vec3 dtheta = fullIncrement.segment<3>(d + 3);
-      if (dtheta.squaredNorm() > 0.0) {
-        triad[n] = geometry::expMap(dtheta) * triad[n];
-        // Re-orthonormalise to stop round-off drift over many steps.
-        if (orthonormalise) triad[n] = orthonormalised(triad[n]);
-      }
-    }
-  }
+  setIncremented(*this, dofs, fullIncrement);
+  if (!orthonormalise) return;
+  // Re-orthonormalise the updated triads to stop round-off drift over many steps.
+  for (int n = 0; n < dofs.nodeCount(); ++n)
+    if (dofs.hasRotations(n) && fullIncrement.segment<3>(dofs.firstDof(n) + 3).squaredNorm() > 0.0)
+      triad[n] = orthonormalised(triad[n]);
 }
 
 void State::setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement) {
@@ -36,6 +30,7 @@ void State::setIncremented(const State& from, const DofMap& dofs, const VecX& fu
     position[n] = from.position[n] + fullIncrement.segment<3>(d);
     if (dofs.hasRotations(n)) {
       const Vec3 dtheta = fullIncrement.segment<3>(d + 3);
+      // The product is evaluated before it is assigned, so `from` may be this state (applyIncrement).
       triad[n] = dtheta.squaredNorm() > 0.0 ? Mat3(geometry::expMap(dtheta) * from.triad[n]) : from.triad[n];
     }
   }

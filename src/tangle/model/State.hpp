@@ -26,6 +26,7 @@ struct State {
   /// re-orthonormalisation) and its time; velocity and acceleration are left for the caller to set (a Newton
   /// iterate of a time step computes both from the increment: copying them, and every bar node's identity
   /// triad, per iterate was 2 % of a mooring run).
+  /// `from` may be this state.
   void setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement);
   /// Re-orthonormalises every triad (nearest rotation through the quaternion).
   void orthonormaliseTriads(const DofMap& dofs);

@@ -33,16 +33,16 @@ constexpr int kMaxPerturbedRestarts = 2;
 /// a slack bar may first straighten freely (its strain counts from max(strain, 0)).
 constexpr double kMaxStrainStep = 0.01;
 
-bool debugStatics() {
-  static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
-  return on;
-}
-
 bool debugTangent() {
   static const bool on = std::getenv("TANGLE_DEBUG_TANGENT") != nullptr;
   return on;
 }
 }  // namespace
+
+bool StaticSolver::debugOutput() {
+  static const bool on = std::getenv("TANGLE_DEBUG_STATICS") != nullptr;
+  return on;
+}
 
 bool StaticSolver::hasCurrent(const model::Model& model) {
   for (const model::CurrentLevel& c : model.environment().current)
@@ -75,7 +75,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     model::State hanging = start;
     StaticResult stage = result;
     if (hangFreeLines(hanging)) {
-      if (debugStatics()) std::cerr << "  restart with the free lines hanging from their held ends\n";
+      if (debugOutput()) std::cerr << "  restart with the free lines hanging from their held ends\n";
       // Its own allowance: the attempt from the given shape may have used the whole budget.
       budget = std::max(budget, 5 * m_settings.maxIterations);
       if (solveFrom(hanging, time, stage, budget)) {
@@ -101,7 +101,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       const bool last = f < 1e-6;
       m_assembler->setSlackFactor(last ? 0.0 : f);
       staged = solveFrom(linear, time, stage, budget);
-      if (debugStatics())
+      if (debugOutput())
         std::cerr << fmt::format("  cable compression factor {:.0e}: {}\n", last ? 0.0 : f,
                                  staged ? "ok" : "failed");
       if (last) break;
@@ -133,7 +133,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     if (slackElements.empty()) break;
     // A slack line without bending stiffness is on an unstable or indifferent branch (e.g. a buoyant cable
     // pushed straight): start again from a shape bulged the way its load pushes it.
-    if (debugStatics())
+    if (debugOutput())
       std::cerr << fmt::format("  {} slack cable elements: restart from a bulged shape\n",
                                slackElements.size());
     model::State again = trial;
@@ -227,7 +227,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
     m_assembler->commitStatics(state);
     return true;
   }
-  if (debugStatics())
+  if (debugOutput())
     std::cerr << "  full load failed (" << full.failure << "): continuation from the start shape\n";
 
   // 2. Continuation from lambda = 0 (the start shape) to 1 in the residual and in length:
@@ -238,7 +238,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   //    the state the start shape balances, like a line paid out onto its final position.
   std::string failure = full.failure;
   if (budget > 0 && continuation(state, start, time, result, budget, tautStart, failure)) return true;
-  if (debugStatics()) std::cerr << "  continuation failed (" << failure << ")\n";
+  if (debugOutput()) std::cerr << "  continuation failed (" << failure << ")\n";
   state = start;
   result.message = diagnose(state, result, failure);
   return false;
@@ -323,7 +323,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
         step.failure = why;
       }
     }
-    if (debugStatics())
+    if (debugOutput())
       std::cerr << fmt::format("  continuation lambda {:.5f} -> {}, {} iterations\n", target,
                                step.converged ? "ok" : step.failure, step.iterations);
     if (step.converged) {
@@ -361,7 +361,7 @@ StaticSolver::NewtonOutcome StaticSolver::newtonWithFallback(model::State& state
       state = trial;
       break;
     }
-    if (debugStatics())
+    if (debugOutput())
       std::cerr << "   Newton mode " << static_cast<int>(mode) << " failed: " << out.failure << "\n";
   }
   out.iterations = used;
@@ -390,7 +390,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       std::max(std::min(0.05 * lref, std::max(10.0, 5.0 * maxElement)), 2.0 * minElement);
   const double maxRotation = 0.5;
   const double floor = m_assembler->roundoffFloor(state);
-  if (debugStatics())
+  if (debugOutput())
     std::cerr << fmt::format("   round-off floor {:.3g} N, tolerance {:.3g} N\n", floor, tolerance);
 
   AssemblyRequest request;
@@ -416,7 +416,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   matrix.build(kAccepted);
 
   out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
-  if (debugStatics() && out.worstNode >= 0)
+  if (debugOutput() && out.worstNode >= 0)
     std::cerr << fmt::format("   start |r| {:.4e} N at {}\n", out.residual, model.describeNode(out.worstNode));
   double mu = 0.0;
   int stalled = 0;
@@ -502,7 +502,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       if (translation && std::abs(dq[i]) > largestT) largestNode = dofs.nodeOf(dof);
       (translation ? largestT : largestR) = std::max(translation ? largestT : largestR, std::abs(dq[i]));
     }
-    if (debugStatics() && largestNode >= 0)
+    if (debugOutput() && largestNode >= 0)
       std::cerr << fmt::format("    largest step {:.3e} m at {}\n", largestT,
                                model.describeNode(largestNode));
     double scale = 1.0;
@@ -560,12 +560,12 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     double theta = std::numeric_limits<double>::infinity();
     if (evaluated) {
       gatherResidual(force, offset, rTrial);
-      if (rTrial.allFinite() && (!plain || debugStatics())) {  // plain Newton does not need it
+      if (rTrial.allFinite() && (!plain || debugOutput())) {  // plain Newton does not need it
         const VecX correction = solver.solve(rTrial);
         theta = correction.norm() / std::max(scale * dq.norm(), 1e-300);
       }
     }
-    if (debugStatics())
+    if (debugOutput())
       std::cerr << fmt::format("    it {:3d} |r| {:.4e} step {:.3e} scale {:.3g} mu {:.2e} theta {:.3g}\n",
                                it, out.residual, scale * largestT, scale, mu, theta);
     if (plain && (!evaluated || !rTrial.allFinite())) {

@@ -57,6 +57,9 @@ class StaticSolver {
   void setDragStiffness(bool on) { m_dragStiffness = on; }
   /// True when the model has a current of non-zero speed at some level (so setDragStiffness matters).
   static bool hasCurrent(const model::Model& model);
+  /// True when TANGLE_DEBUG_STATICS is set: statics and its fallbacks (Simulation::solveStatics) print their
+  /// progress on stderr.
+  static bool debugOutput();
 
  private:
   struct NewtonOutcome {
