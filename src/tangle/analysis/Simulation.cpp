@@ -58,14 +58,15 @@ bool Simulation::solveWithDragStiffness(const model::State& start, solver::Stati
   solver::StaticSolver withDrag(*m_assembler, m_model->spec().statics);
   withDrag.setDragStiffness(true);
   solver::StaticResult again = withDrag.solve(trial);
-  if (solver::StaticSolver::debugOutput()) std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
+  if (solver::StaticSolver::debugOutput())
+    std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
   if (!again.converged) {
     result.message += "; the retry with the drag's stiffness in the tangent did not converge either";
     return false;
   }
   again.iterations += result.iterations;
-  again.message +=
-      fmt::format(", with the drag's stiffness in the tangent ({} Newton iterations in all)", again.iterations);
+  again.message += fmt::format(", with the drag's stiffness in the tangent ({} Newton iterations in all)",
+                               again.iterations);
   result = again;
   m_state = trial;
   return true;
@@ -101,7 +102,8 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   int lastRound = 0;
   for (int round = 0; round < kRounds; ++round) {
     const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
-    if (solver::StaticSolver::debugOutput()) std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
+    if (solver::StaticSolver::debugOutput())
+      std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
     if (core::interruptRequested()) return false;
     if (r.steps == 0) break;  // the relaxation cannot move: Newton would start where it failed
     model::State trial = relaxed;
@@ -211,8 +213,9 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
   solver::StaticResult again = solver.solve(start);
   if (!again.converged) {
-    result.message += "; from the equilibrium of the model with a quarter of the elements it did not "
-                      "converge either";
+    result.message +=
+        "; from the equilibrium of the model with a quarter of the elements it did not "
+        "converge either";
     // The dynamic relaxation that comes next starts from there: near the equilibrium, not from where the
     // continuation stalled.
     m_state = interpolated;
@@ -247,7 +250,8 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
 }
 
 const std::vector<solver::LineSnapshot>& Simulation::sectionSnapshot() const {
-  if (m_noReactions.size() != m_model->dofs().fullDofCount()) m_noReactions = VecX::Zero(m_model->dofs().fullDofCount());
+  if (m_noReactions.size() != m_model->dofs().fullDofCount())
+    m_noReactions = VecX::Zero(m_model->dofs().fullDofCount());
   solver::computeLineResults(*m_model, *m_assembler, m_state, m_noReactions, m_sectionSnapshot);
   return m_sectionSnapshot;
 }

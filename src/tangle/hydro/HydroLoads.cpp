@@ -141,8 +141,9 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     }
     const bool wakeTangent = m_wake && matrix && m_wake->isDownstream(static_cast<int>(e));
     const bool wantStiffness = matrix && request.dragStiffness;
-    const MorisonElementLoad load =
-        morisonElementLoad(x1, x2, v1, v2, fluid, m_coefficients[static_cast<std::size_t>(m_coefficientIndex[e])], wet, wantDamping, wantStiffness);
+    const MorisonElementLoad load = morisonElementLoad(
+        x1, x2, v1, v2, fluid, m_coefficients[static_cast<std::size_t>(m_coefficientIndex[e])], wet,
+        wantDamping, wantStiffness);
     // Out-of-balance convention: external loads are subtracted.
     force.segment<3>(d1) -= load.force1;
     force.segment<3>(d2) -= load.force2;

@@ -32,7 +32,8 @@ inline void require(bool ok, const char* what, const char* requirement, double v
 /// J = kn (|v_rn| (I - t t^T) + v_rn v_rn^T / |v_rn|) + 2 ka |t.v_r| t t^T; the normal part tends to 0 as
 /// v_rn -> 0 (|x| x is continuously differentiable), so J = 2 ka |t.v_r| t t^T there.
 /// The Jacobian only when asked for (most assemblies need the force alone).
-[[gnu::always_inline]] inline void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q, Mat3* jacobian) {
+[[gnu::always_inline]] inline void drag(const Vec3& vr, const Vec3& t, double kn, double ka, Vec3& q,
+                                        Mat3* jacobian) {
   const double va = t.dot(vr);
   const Vec3 vn = vr - va * t;
   const double vnNorm = vn.norm();
@@ -82,12 +83,11 @@ MorisonCoefficients morisonCoefficients(const section::LineType& type, double rh
 
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const section::LineType& type, double rho,
-                                      double wettedFraction, bool wantDamping,
-                                      bool wantPositionJacobian) {
+                                      double wettedFraction, bool wantDamping, bool wantPositionJacobian) {
   require(wettedFraction >= 0.0 && wettedFraction <= 1.0, "submerged fraction [-]", "in [0, 1]",
           wettedFraction);
-  return morisonElementLoad(x1, x2, v1, v2, fluid, morisonCoefficients(type, rho), wettedFraction, wantDamping,
-                            wantPositionJacobian);
+  return morisonElementLoad(x1, x2, v1, v2, fluid, morisonCoefficients(type, rho), wettedFraction,
+                            wantDamping, wantPositionJacobian);
 }
 
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,

@@ -91,12 +91,12 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
 /// once so that the per-element evaluation in the assembly loop checks nothing but its own geometry
 /// (issue 8: the argument checks of every call were part of the Morison cost).
 struct MorisonCoefficients {
-  double normalDrag = 0.0;      ///< kn = 1/2 rho Cdn D [kg/m^2]
-  double axialDrag = 0.0;       ///< ka = 1/2 rho Cda pi D [kg/m^2]
-  double normalMass = 0.0;      ///< rho A Can [kg/m]
-  double axialMass = 0.0;       ///< rho A Caa [kg/m]
-  double displacedMass = 0.0;   ///< rho A_b [kg/m] (Froude-Krylov)
-  bool wet = false;             ///< rho > 0 (a dry fluid gives no load)
+  double normalDrag = 0.0;     ///< kn = 1/2 rho Cdn D [kg/m^2]
+  double axialDrag = 0.0;      ///< ka = 1/2 rho Cda pi D [kg/m^2]
+  double normalMass = 0.0;     ///< rho A Can [kg/m]
+  double axialMass = 0.0;      ///< rho A Caa [kg/m]
+  double displacedMass = 0.0;  ///< rho A_b [kg/m] (Froude-Krylov)
+  bool wet = false;            ///< rho > 0 (a dry fluid gives no load)
 };
 
 /// Coefficients of `type` in a fluid of density rho [kg/m^3].

@@ -1,14 +1,13 @@
 #include "tangle/io/DynamicRecorder.hpp"
 
-#include <cmath>
-#include <string_view>
-
-#include <algorithm>
 #include <fmt/compile.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <limits>
+#include <string_view>
 
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ResultWriter.hpp"

@@ -417,7 +417,8 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
 
   out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
   if (debugOutput() && out.worstNode >= 0)
-    std::cerr << fmt::format("   start |r| {:.4e} N at {}\n", out.residual, model.describeNode(out.worstNode));
+    std::cerr << fmt::format("   start |r| {:.4e} N at {}\n", out.residual,
+                             model.describeNode(out.worstNode));
   double mu = 0.0;
   int stalled = 0;
   double best = out.residual;
@@ -655,15 +656,16 @@ void StaticSolver::checkTangent(const model::State& state, const AssemblyRequest
   for (int i = 0; i < neq; ++i) errors.emplace_back(std::abs(fd[i] - kd[i]), i);
   const int shown = std::min(8, neq);
   std::partial_sort(errors.begin(), errors.begin() + shown, errors.end(), std::greater<>());
-  std::cerr << fmt::format("    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}; largest differences:\n",
-                           kd.norm(), fd.norm(), (kd - fd).norm());
+  std::cerr << fmt::format(
+      "    tangent check: |Kd| {:.4e} |fd| {:.4e} |Kd-fd| {:.4e}; largest differences:\n", kd.norm(),
+      fd.norm(), (kd - fd).norm());
   for (int j = 0; j < shown; ++j) {
     const int i = errors[static_cast<std::size_t>(j)].second;
     const int node = dofs.nodeOf(eqDofs[i]);
     const Vec3& x = state.position[node];
     std::cerr << fmt::format("      {} dof {} at ({:.3f}, {:.3f}, {:.4f}): K {:.4e} fd {:.4e}\n",
-                             model.describeNode(node), eqDofs[i] - dofs.firstDof(node), x.x(), x.y(), x.z(), kd[i],
-                             fd[i]);
+                             model.describeNode(node), eqDofs[i] - dofs.firstDof(node), x.x(), x.y(), x.z(),
+                             kd[i], fd[i]);
   }
 }
 
