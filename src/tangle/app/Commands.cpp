@@ -209,6 +209,7 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
   j.field("steps", r.steps);
   j.field("step_cutbacks", r.cutbacks);
   j.field("newton_iterations", static_cast<double>(r.newtonIterations));
+  j.field("newton_iterations_on_parts", static_cast<double>(r.partIterations));
   j.field("wall_time_s", r.wallSeconds);
   j.field("real_time_factor", r.endTime / std::max(r.wallSeconds, 1e-9));
   j.field("message", r.message);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "tangle/core/ForEachIndex.hpp"
 #include "tangle/hydro/AiryWave.hpp"
 #include "tangle/hydro/JonswapSea.hpp"
 #include "tangle/hydro/Morison.hpp"
@@ -96,15 +97,12 @@ FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const
   return k;
 }
 
-void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
-                           solver::SystemMatrix* matrix) {
-  const auto& elements = m_model->elements();
-  const model::DofMap& dofs = m_model->dofs();
-  const double rho = m_model->environment().waterDensity;
+bool HydroLoads::prepareWaves(const model::State& state, const solver::AssemblyRequest& request) {
   const bool waves = request.dynamic && request.waves && m_waves && time::ramp(request.time, m_rampTime).value > 0.0;
   if (waves && (request.time != m_cacheTime || !m_cacheDynamic)) {
     // Wave kinematics (the costly part) once per time value; the current is cheap and is evaluated
     // at the current midpoint every call.
+    const auto& elements = m_model->elements();
     const double r = time::ramp(request.time, m_rampTime).value;
     for (std::size_t e = 0; e < elements.size(); ++e) {
       const Vec3 mid = 0.5 * (state.position[elements[e].node1] + state.position[elements[e].node2]);
@@ -116,17 +114,40 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
     m_cacheTime = request.time;
     m_cacheDynamic = true;
   }
-  if (m_wake) m_wake->evaluate(state, rho, m_elementWake);
+  return waves;
+}
+
+void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                           solver::SystemMatrix* matrix) {
+  const bool waves = prepareWaves(state, request);
+  if (m_wake) m_wake->evaluate(state, m_model->environment().waterDensity, m_elementWake);
+  addElementForces(state, request, waves, force, matrix, nullptr);
+  addAttachmentDrag(state, request, force, matrix, nullptr);
+}
+
+void HydroLoads::addPartForces(const model::State& state, const solver::AssemblyRequest& request,
+                               const solver::AssemblyPart& part, VecX& force) {
+  const bool waves = prepareWaves(state, request);
+  addElementForces(state, request, waves, force, nullptr, &part.elements);
+  addAttachmentDrag(state, request, force, nullptr, &part.attachments);
+}
+
+void HydroLoads::addElementForces(const model::State& state, const solver::AssemblyRequest& request,
+                                  bool waves, VecX& force, solver::SystemMatrix* matrix,
+                                  const std::vector<int>* list) {
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  const double rho = m_model->environment().waterDensity;
   const Vec3 zero = Vec3::Zero();
   const bool wantDamping = matrix && request.dynamic && request.cf != 0.0;
-  for (std::size_t e = 0; e < elements.size(); ++e) {
+  forEachIndex(list, elements.size(), [&](std::size_t e) {
     const model::LineElement& el = elements[e];
     const Vec3& x1 = state.position[el.node1];
     const Vec3& x2 = state.position[el.node2];
     const double wet = submergedFraction(x1.z(), x2.z(), waves ? m_surface[e] : 0.0);
     if (wet <= 0.0) {
       m_addedMass[e] = AddedMass{};
-      continue;
+      return;
     }
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
@@ -181,21 +202,22 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
       matrix->add3x3(d1, d1, load.damping1, request.cf);
       matrix->add3x3(d2, d2, load.damping2, request.cf);
     }
-  }
-  addAttachmentDrag(state, request, force, matrix);
+  });
 }
 
-void HydroLoads::addAttachmentDrag(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
-                                   solver::SystemMatrix* matrix) const {
+void HydroLoads::addAttachmentDrag(const model::State& state, const solver::AssemblyRequest& request,
+                                   VecX& force, solver::SystemMatrix* matrix,
+                                   const std::vector<int>* list) const {
   // Drag of point bodies (clumps, buoys, the LMRP as an attachment): F = 1/2 rho (Cd A) |u - v| (u - v)
   // with the fluid velocity at the node; damping -dF/dv = 1/2 rho CdA (|w| I + w w^T / |w|), w = u - v.
   const model::DofMap& dofs = m_model->dofs();
   const double rho = m_model->environment().waterDensity;
-  for (const model::NodeAttachment& a : m_model->attachments()) {
-    if (a.spec.dragArea <= 0.0) continue;
+  forEachIndex(list, m_model->attachments().size(), [&](std::size_t i) {
+    const model::NodeAttachment& a = m_model->attachments()[i];
+    if (a.spec.dragArea <= 0.0) return;
     const Vec3& x = state.position[a.node];
     const bool withWaves = request.dynamic && request.waves;
-    if (x.z() > surfaceAt(x.x(), x.y(), request.time, withWaves)) continue;
+    if (x.z() > surfaceAt(x.x(), x.y(), request.time, withWaves)) return;
     const int d = dofs.firstDof(a.node);
     const Vec3 v = request.dynamic ? Vec3(state.velocity.segment<3>(d)) : Vec3::Zero();
     const Vec3 w = fluidAt(x, request.time, withWaves).velocity - v;
@@ -204,14 +226,24 @@ void HydroLoads::addAttachmentDrag(const model::State& state, const solver::Asse
     force.segment<3>(d) -= k * speed * w;
     if (matrix && request.dynamic && request.cf != 0.0 && speed > 0.0)
       matrix->add3x3(d, d, Mat3(k * (speed * Mat3::Identity() + w * w.transpose() / speed)), request.cf);
-  }
+  });
 }
 
 void HydroLoads::addMass(const model::State&, double mf, solver::SystemMatrix* matrix,
                          const VecX* acceleration, VecX* out) {
+  addElementMass(mf, matrix, acceleration, out, nullptr);
+}
+
+void HydroLoads::addPartMass(const model::State&, const solver::AssemblyPart& part, const VecX& acceleration,
+                             VecX& out) {
+  addElementMass(0.0, nullptr, &acceleration, &out, &part.elements);
+}
+
+void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const VecX* acceleration, VecX* out,
+                                const std::vector<int>* list) const {
   const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();
-  for (std::size_t e = 0; e < elements.size(); ++e) {
+  forEachIndex(list, elements.size(), [&](std::size_t e) {
     const AddedMass& ma = m_addedMass[e];
     const Mat3 m = matrix ? ma.matrix() : Mat3::Zero();
     for (int node : {elements[e].node1, elements[e].node2}) {
@@ -219,7 +251,7 @@ void HydroLoads::addMass(const model::State&, double mf, solver::SystemMatrix* m
       if (matrix) matrix->add3x3(d, d, m, mf);
       if (out) out->segment<3>(d) += ma * Vec3(acceleration->segment<3>(d));
     }
-  }
+  });
 }
 
 }  // namespace tangle::hydro

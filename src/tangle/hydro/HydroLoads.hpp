@@ -35,6 +35,12 @@ class HydroLoads final : public solver::LoadContributor {
                  solver::SystemMatrix* matrix) override;
   void addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
                VecX* out) override;
+  /// Local to elements and attachments but for wakes (a wake couples an element with those upstream).
+  bool supportsParts() const override { return !m_wake; }
+  void addPartForces(const model::State& state, const solver::AssemblyRequest& request,
+                     const solver::AssemblyPart& part, VecX& force) override;
+  void addPartMass(const model::State& state, const solver::AssemblyPart& part, const VecX& acceleration,
+                   VecX& out) override;
 
   /// Total fluid kinematics (current + ramped waves) at a point [m] and time [s].
   FluidKinematics fluidAt(const Vec3& p, double t, bool dynamic) const;
@@ -45,8 +51,15 @@ class HydroLoads final : public solver::LoadContributor {
   const std::vector<ElementWake>& elementWake() const { return m_elementWake; }
 
  private:
+  /// Fills the wave kinematics cache for request.time if waves act (returns whether they do).
+  bool prepareWaves(const model::State& state, const solver::AssemblyRequest& request);
+  // The loops of addForces and addMass, over the listed elements (attachments) or all of them.
+  void addElementForces(const model::State& state, const solver::AssemblyRequest& request, bool waves,
+                        VecX& force, solver::SystemMatrix* matrix, const std::vector<int>* elements);
   void addAttachmentDrag(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
-                         solver::SystemMatrix* matrix) const;
+                         solver::SystemMatrix* matrix, const std::vector<int>* attachments) const;
+  void addElementMass(double mf, solver::SystemMatrix* matrix, const VecX* acceleration, VecX* out,
+                      const std::vector<int>* elements) const;
 
   const model::Model* m_model;
   CurrentProfile m_current;

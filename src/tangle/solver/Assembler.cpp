@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "tangle/core/ForEachIndex.hpp"
 #include "tangle/seabed/FlatSeabed.hpp"
 
 namespace tangle::solver {
@@ -130,10 +131,10 @@ void Assembler::assemble(const model::State& state, const AssemblyRequest& reque
 }
 
 void Assembler::addElements(const model::State& state, const AssemblyRequest& request, VecX& force,
-                            SystemMatrix* matrix) {
+                            SystemMatrix* matrix, const std::vector<int>* elements) {
   const model::DofMap& dofs = m_model->dofs();
   const double beta = request.dynamic ? m_model->spec().dynamics.rayleighBeta : 0.0;
-  for (std::size_t e = 0; e < m_model->elements().size(); ++e) {
+  forEachIndex(elements, m_model->elements().size(), [&](std::size_t e) {
     const model::LineElement& el = m_model->elements()[e];
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
@@ -157,7 +158,8 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       }
       for (int i = 0; i < 6; ++i) force[map[i]] += f[i];
       if (matrix) matrix->addBlock(map, 6, k, request.kf + request.cf * beta);
-      if (request.dynamic && el.type->axialDamping > 0.0) addAxialDamping(state, el, d1, d2, request, force, matrix);
+      if (request.dynamic && el.type->axialDamping > 0.0)
+        addAxialDamping(state, el, d1, d2, request, force, matrix);
     } else {
       Vec12 f;
       Mat12 k;
@@ -172,9 +174,10 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       }
       for (int i = 0; i < 12; ++i) force[map[i]] += f[i];
       if (matrix) matrix->addBlock(map, 12, k, request.kf + request.cf * beta);
-      if (request.dynamic && el.type->axialDamping > 0.0) addAxialDamping(state, el, d1, d2, request, force, matrix);
+      if (request.dynamic && el.type->axialDamping > 0.0)
+        addAxialDamping(state, el, d1, d2, request, force, matrix);
     }
-  }
+  });
 }
 
 void Assembler::addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
@@ -196,39 +199,43 @@ void Assembler::addAxialDamping(const model::State& state, const model::LineElem
   }
 }
 
-void Assembler::addWeight(const model::State& state, const AssemblyRequest& request, VecX& force) {
+void Assembler::addWeight(const model::State& state, const AssemblyRequest& request, VecX& force,
+                          const std::vector<int>* elements, const std::vector<int>* attachments) {
   const model::DofMap& dofs = m_model->dofs();
   const auto& env = m_model->environment();
   const double g = env.gravity;
   const double rho = env.waterDensity;
-  for (const model::LineElement& el : m_model->elements()) {
+  forEachIndex(elements, m_model->elements().size(), [&](std::size_t e) {
+    const model::LineElement& el = m_model->elements()[e];
     const double frac = submergedFraction(state.position[el.node1].z(), state.position[el.node2].z());
     const double weight =
         (el.type->massPerLength - rho * el.type->displacedAreaPerLength() * frac) * g * el.restLength;
     // Out-of-balance force: F = f_int - f_ext, and the external load is -weight/2 * z at each node.
     force[dofs.firstDof(el.node1) + 2] += 0.5 * weight * request.loadFactor;
     force[dofs.firstDof(el.node2) + 2] += 0.5 * weight * request.loadFactor;
-  }
-  for (const model::NodeAttachment& a : m_model->attachments()) {
+  });
+  forEachIndex(attachments, m_model->attachments().size(), [&](std::size_t i) {
+    const model::NodeAttachment& a = m_model->attachments()[i];
     const double submerged = state.position[a.node].z() < 0.0 ? 1.0 : 0.0;
     const double weight = (a.spec.mass - rho * a.spec.volume * submerged) * g;
     force[dofs.firstDof(a.node) + 2] += weight * request.loadFactor;
-  }
+  });
 }
 
 void Assembler::addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force,
-                          SystemMatrix* matrix) {
+                          SystemMatrix* matrix, const std::vector<int>* nodes) {
   const model::DofMap& dofs = m_model->dofs();
   const auto& env = m_model->environment();
   const seabed::FlatSeabed bed(env.seabed, env.waterDepth);
   const auto& trib = m_model->tributaryLength();
   const auto& diameter = m_model->nodeContactDiameter();
   const bool staticFriction = !request.dynamic && env.seabed.frictionCoefficient > 0.0;
-  for (int n = 0; n < m_model->nodeCount(); ++n) {
+  forEachIndex(nodes, static_cast<std::size_t>(m_model->nodeCount()), [&](std::size_t node) {
+    const int n = static_cast<int>(node);
     const int d = dofs.firstDof(n);
     // A node held in all three translations (an anchor) takes its support from the constraint: a seabed
     // spring there would only add a phantom vertical load to the anchor reaction.
-    if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) continue;
+    if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) return;
     const Vec3 v = state.velocity.segment<3>(d);
     seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
     if (r.penetration <= 0.0) {
@@ -240,7 +247,7 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
         matrix->add3x3(d, d, Mat3::Zero());
         if (request.cf != 0.0) matrix->add3x3(d, d, Mat3::Zero());
       }
-      continue;
+      return;
     }
     if (staticFriction) {
       // The as-laid anchor, or for a node that touched down since the last commit its position then.
@@ -256,20 +263,29 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
       matrix->add3x3(d, d, r.stiffness, request.kf);
       if (request.cf != 0.0) matrix->add3x3(d, d, r.damping, request.cf);
     }
-  }
+  });
 }
 
 void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matrix, const VecX* acceleration,
                         VecX* out) {
+  addOwnMass(mf, matrix, acceleration, out);
+  for (LoadContributor* c : m_contributors) c->addMass(state, mf, matrix, acceleration, out);
+}
+
+void Assembler::addOwnMass(double mf, SystemMatrix* matrix, const VecX* acceleration, VecX* out,
+                           const std::vector<int>* elements, const std::vector<int>* nodes,
+                           const std::vector<int>* attachments) const {
   const model::DofMap& dofs = m_model->dofs();
   const auto& mass = m_model->nodeMass();
   const auto& inertia = m_model->nodeRotationalInertia();
+  const auto& attached = m_model->attachments();
   const bool consistent = !m_model->spec().dynamics.lumpedMass;
   if (consistent) {
     // Consistent translational mass of each element (linear shape functions: m L / 6 [2 1; 1 2],
     // e.g. Cook et al. 2002, "Concepts and applications of FE analysis", sec. 11.3); attachments stay
     // point masses; rotational inertia stays lumped.
-    for (const model::LineElement& el : m_model->elements()) {
+    forEachIndex(elements, m_model->elements().size(), [&](std::size_t e) {
+      const model::LineElement& el = m_model->elements()[e];
       const double m = el.type->massPerLength * el.restLength;
       const int d1 = dofs.firstDof(el.node1), d2 = dofs.firstDof(el.node2);
       for (int k = 0; k < 3; ++k) {
@@ -284,16 +300,18 @@ void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matr
           (*out)[d2 + k] += m / 6.0 * (*acceleration)[d1 + k] + m / 3.0 * (*acceleration)[d2 + k];
         }
       }
-    }
-    for (const model::NodeAttachment& a : m_model->attachments()) {
+    });
+    forEachIndex(attachments, attached.size(), [&](std::size_t i) {
+      const model::NodeAttachment& a = attached[i];
       const int d = dofs.firstDof(a.node);
       for (int k = 0; k < 3; ++k) {
         if (matrix) matrix->add(d + k, d + k, mf * a.spec.mass);
         if (out) (*out)[d + k] += a.spec.mass * (*acceleration)[d + k];
       }
-    }
+    });
   }
-  for (int n = 0; n < m_model->nodeCount(); ++n) {
+  forEachIndex(nodes, static_cast<std::size_t>(m_model->nodeCount()), [&](std::size_t node) {
+    const int n = static_cast<int>(node);
     const int d = dofs.firstDof(n);
     for (int k = 0; k < 3 && !consistent; ++k) {
       if (matrix) matrix->add(d + k, d + k, mf * mass[n]);
@@ -305,15 +323,107 @@ void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matr
         if (out) (*out)[d + k] += inertia[n] * (*acceleration)[d + k];
       }
     }
-  }
-  for (const model::NodeAttachment& a : m_model->attachments()) {
+  });
+  forEachIndex(attachments, attached.size(), [&](std::size_t i) {
+    const model::NodeAttachment& a = attached[i];
     const int d = dofs.firstDof(a.node);
     for (int k = 0; k < 3; ++k) {
       if (matrix) matrix->add(d + k, d + k, mf * a.spec.addedMass);
       if (out) (*out)[d + k] += a.spec.addedMass * (*acceleration)[d + k];
     }
+  });
+}
+
+bool Assembler::supportsParts() const {
+  return std::all_of(m_contributors.begin(), m_contributors.end(),
+                     [](const LoadContributor* c) { return c->supportsParts(); });
+}
+
+void Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
+  const auto& elements = m_model->elements();
+  const auto& attached = m_model->attachments();
+  const auto nodeCount = static_cast<std::size_t>(m_model->nodeCount());
+  if (m_nodeElements.size() != nodeCount) {
+    m_nodeElements.assign(nodeCount, {});
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      m_nodeElements[static_cast<std::size_t>(elements[e].node1)].push_back(static_cast<int>(e));
+      m_nodeElements[static_cast<std::size_t>(elements[e].node2)].push_back(static_cast<int>(e));
+    }
   }
-  for (LoadContributor* c : m_contributors) c->addMass(state, mf, matrix, acceleration, out);
+  // Marks, then scans in index order (ascending lists without sorting): nodes 1 = of the part, 2 = written
+  // only; elements and attachments 1 = of the part.
+  m_nodeMark.assign(nodeCount, 0);
+  m_elementMark.assign(elements.size(), 0);
+  for (const int n : moved)
+    for (const int e : m_nodeElements[static_cast<std::size_t>(n)]) {
+      m_nodeMark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node1)] = 1;
+      m_nodeMark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node2)] = 1;
+    }
+  for (const int n : moved) m_nodeMark[static_cast<std::size_t>(n)] = 1;
+  part.nodes.clear();
+  for (std::size_t n = 0; n < nodeCount; ++n) {
+    if (m_nodeMark[n] != 1) continue;
+    part.nodes.push_back(static_cast<int>(n));
+    for (const int e : m_nodeElements[n]) m_elementMark[static_cast<std::size_t>(e)] = 1;
+  }
+  part.elements.clear();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    if (!m_elementMark[e]) continue;
+    part.elements.push_back(static_cast<int>(e));
+    for (const int n : {elements[e].node1, elements[e].node2})
+      if (m_nodeMark[static_cast<std::size_t>(n)] == 0) m_nodeMark[static_cast<std::size_t>(n)] = 2;
+  }
+  part.attachments.clear();
+  for (std::size_t a = 0; a < attached.size(); ++a)
+    if (m_nodeMark[static_cast<std::size_t>(attached[a].node)] == 1)
+      part.attachments.push_back(static_cast<int>(a));
+  part.writtenNodes.clear();
+  for (std::size_t n = 0; n < nodeCount; ++n)
+    if (m_nodeMark[n] != 0) part.writtenNodes.push_back(static_cast<int>(n));
+}
+
+namespace {
+/// Zeroes the entries of `work` at `nodes` (all their DOFs).
+void zeroNodes(const model::DofMap& dofs, const std::vector<int>& nodes, VecX& work) {
+  for (const int n : nodes) {
+    const int d = dofs.firstDof(n);
+    const int count = dofs.hasRotations(n) ? 6 : 3;
+    for (int k = 0; k < count; ++k) work[d + k] = 0.0;
+  }
+}
+/// Copies the entries of `from` at `nodes` into `to`.
+void copyNodes(const model::DofMap& dofs, const std::vector<int>& nodes, const VecX& from, VecX& to) {
+  for (const int n : nodes) {
+    const int d = dofs.firstDof(n);
+    const int count = dofs.hasRotations(n) ? 6 : 3;
+    for (int k = 0; k < count; ++k) to[d + k] = from[d + k];
+  }
+}
+}  // namespace
+
+void Assembler::assemblePart(const model::State& state, const AssemblyRequest& request,
+                             const AssemblyPart& part, VecX& force) {
+  const model::DofMap& dofs = m_model->dofs();
+  // The part's terms are summed into a work vector in the order of assemble(); the entries of part.nodes,
+  // which receive every term they receive in assemble(), are then copied. Entries of other written nodes
+  // hold only some of their terms and are dropped.
+  m_partWork.resize(dofs.fullDofCount());
+  zeroNodes(dofs, part.writtenNodes, m_partWork);
+  addElements(state, request, m_partWork, nullptr, &part.elements);
+  addWeight(state, request, m_partWork, &part.elements, &part.attachments);
+  addSeabed(state, request, m_partWork, nullptr, &part.nodes);
+  for (LoadContributor* c : m_contributors) c->addPartForces(state, request, part, m_partWork);
+  copyNodes(dofs, part.nodes, m_partWork, force);
+}
+
+void Assembler::addPartMass(const model::State& state, const AssemblyPart& part, const VecX& acceleration,
+                            VecX& out) {
+  const model::DofMap& dofs = m_model->dofs();
+  m_partWork.resize(dofs.fullDofCount());
+  zeroNodes(dofs, part.writtenNodes, m_partWork);
+  addOwnMass(0.0, nullptr, &acceleration, &m_partWork, &part.elements, &part.nodes, &part.attachments);
+  for (LoadContributor* c : m_contributors) c->addPartMass(state, part, acceleration, m_partWork);
+  copyNodes(dofs, part.nodes, m_partWork, out);
 }
 
 std::vector<double> Assembler::elementTension(const model::State& state,

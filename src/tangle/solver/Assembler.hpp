@@ -33,6 +33,22 @@ struct AssemblyRequest {
   bool dragStiffness = false;
 };
 
+/// The part of the model whose out-of-balance forces change when only some nodes move: a modified Newton
+/// iteration that corrects a few nodes (the touchdown zone of a mooring line) re-evaluates this part
+/// instead of the whole model (GeneralizedAlpha; theory manual 8.2). Built by Assembler::selectPart.
+struct AssemblyPart {
+  /// Nodes whose entries of F and M a are recomputed: the moved nodes and every node that shares an
+  /// element with one (ascending).
+  std::vector<int> nodes;
+  /// Every element with a node in `nodes` (ascending, so that each entry sums the same terms in the same
+  /// order as a full assembly).
+  std::vector<int> elements;
+  /// Indices into Model::attachments() of the attachments at a node in `nodes` (ascending).
+  std::vector<int> attachments;
+  /// Every node of `elements` (ascending): the work space entries the part writes.
+  std::vector<int> writtenNodes;
+};
+
 /// A source of forces that is not a structural element (hydrodynamics, contact, vessels...).
 class LoadContributor {
  public:
@@ -44,6 +60,17 @@ class LoadContributor {
   /// Adds mf * M_contributor to matrix (if not null) and M_contributor * acceleration to out (if not null).
   virtual void addMass(const model::State& /*state*/, double /*mf*/, SystemMatrix* /*matrix*/,
                        const VecX* /*acceleration*/, VecX* /*out*/) {}
+  /// True if addPartForces and addPartMass give this contributor's terms of a part (its forces at a node
+  /// depend only on the elements and attachments at that node). A contributor that couples distant nodes
+  /// (a vessel, line-to-line contact, wakes) returns false, and the whole model is assembled each time.
+  virtual bool supportsParts() const { return false; }
+  /// As addForces without a matrix, for the elements and attachments of `part` only (Assembler::assemblePart
+  /// keeps the entries of part.nodes; what lands elsewhere is discarded).
+  virtual void addPartForces(const model::State& /*state*/, const AssemblyRequest& /*request*/,
+                             const AssemblyPart& /*part*/, VecX& /*force*/) {}
+  /// As addMass without a matrix, for the elements and attachments of `part` only.
+  virtual void addPartMass(const model::State& /*state*/, const AssemblyPart& /*part*/,
+                           const VecX& /*acceleration*/, VecX& /*out*/) {}
   /// A new step (or load increment, or retry of a step) starts: reset per-step active sets.
   virtual void beginStep() {}
   /// Newton has converged with the current active set; return true if the contributor changed it
@@ -83,6 +110,21 @@ class Assembler {
 
   /// F (full DOFs) and, if requested, H (equations). `force` is resized and zeroed.
   void assemble(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+
+  /// True when assemblePart and addPartMass can stand for assemble and addMass: every contributor's
+  /// forces are local to elements and nodes (LoadContributor::supportsParts).
+  bool supportsParts() const;
+  /// The part to re-evaluate after the nodes `moved` (ascending, each once) moved and no other did.
+  void selectPart(const std::vector<int>& moved, AssemblyPart& part);
+  /// Sets the entries of `force` (full DOFs) at part.nodes to what assemble(state, request, force, nullptr)
+  /// would give them, bit for bit (the same terms summed in the same order); the other entries are kept.
+  /// Correct when `force` holds a full assembly at a state that differs from `state` only at nodes whose
+  /// elements are all in the part (the moved nodes of selectPart). Requires supportsParts().
+  void assemblePart(const model::State& state, const AssemblyRequest& request, const AssemblyPart& part,
+                    VecX& force);
+  /// Sets the entries of `out` at part.nodes to those of M * acceleration (addMass with out zeroed),
+  /// keeping the others. Requires supportsParts().
+  void addPartMass(const model::State& state, const AssemblyPart& part, const VecX& acceleration, VecX& out);
 
   /// Statics length continuation: element e is given the unstretched length restLengths[e] [m] instead of
   /// its own (NaN keeps its own); an empty vector restores every element. Weight stays the nominal one.
@@ -144,11 +186,19 @@ class Assembler {
   const model::Model& model() const { return *m_model; }
 
  private:
-  void addElements(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
-  void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force);
+  // The loops of assemble and addMass; with lists, over those elements, nodes and attachments only
+  // (assemblePart, addPartMass).
+  void addElements(const model::State& state, const AssemblyRequest& request, VecX& force,
+                   SystemMatrix* matrix, const std::vector<int>* elements = nullptr);
+  void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force,
+                 const std::vector<int>* elements = nullptr, const std::vector<int>* attachments = nullptr);
   void addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
                        const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const;
-  void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
+  void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix,
+                 const std::vector<int>* nodes = nullptr);
+  void addOwnMass(double mf, SystemMatrix* matrix, const VecX* acceleration, VecX* out,
+                  const std::vector<int>* elements = nullptr, const std::vector<int>* nodes = nullptr,
+                  const std::vector<int>* attachments = nullptr) const;
   /// Element e's bar or beam, or, under the statics length continuation (setRestLengths), a copy with the
   /// overriding unstretched length built in `copy`; no copy in the common case.
   const element::Bar& barOf(std::size_t e, std::optional<element::Bar>& copy) const;
@@ -170,6 +220,11 @@ class Assembler {
   std::vector<double> m_restLength;  // statics length continuation (setRestLengths)
   double m_slackFactor = 0.0;
   double m_roundoffForce = 0.0;
+  // Parts: the elements at each node, marks per node and element, and the work space of assemblePart.
+  std::vector<std::vector<int>> m_nodeElements;
+  std::vector<char> m_nodeMark;
+  std::vector<char> m_elementMark;
+  VecX m_partWork;
 };
 
 }  // namespace tangle::solver

@@ -99,6 +99,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     if (m_validator || errorControl) before = state;
     StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
+    result.partIterations += o.partIterations;
     bool rejected = false;
     if (o.converged && m_validator && !m_validator(before, state)) {
       // Converged but not acceptable (e.g. lines passed through each other): undo and cut.

@@ -48,6 +48,7 @@ struct PrescribedNode {
 struct StepOutcome {
   bool converged = false;
   int iterations = 0;
+  int partIterations = 0;  ///< of those, evaluated on a part of the model (Assembler::assemblePart)
   double residual = 0.0;  ///< last max out-of-balance force [N]
   int worstNode = -1;     ///< node with the largest out-of-balance force
 };
@@ -87,6 +88,13 @@ class GeneralizedAlpha {
 
  private:
   void applyPrescribed(model::State& state, double t) const;
+  /// Sets the moved nodes (m_moved) of `state` from the step's start and increment dq: positions, triads,
+  /// and the Newmark velocities and accelerations of their free DOFs; the other nodes keep theirs.
+  void moveNodes(model::State& state, const model::State& start, const VecX& dq, double dt) const;
+  /// Applies the Newton correction m_delta to dq: only at the nodes where it changes a force by more than
+  /// kNegligibleCorrection of the allowed out-of-balance, when those are few (true: m_moved and m_part
+  /// are set for an iteration on a part), else everywhere (false).
+  bool applyCorrection(VecX& dq, bool partsAllowed);
   /// Time at which loads and prescribed motions are evaluated for a state at time t [s].
   double environmentTime(double t) const { return m_frozen ? m_frozenTime : t; }
 
@@ -108,6 +116,14 @@ class GeneralizedAlpha {
   VecX m_dq, m_combo, m_inertia, m_residual;
   VecX m_force;
   std::vector<bool> m_prescribedDof;
+  // Iterations on a part (theory manual 8.2): the nodes the last correction moved, the part of the model
+  // re-evaluated for them, a mark per node, and the diagonal of the factorised matrix [N/m, N m/rad].
+  std::vector<int> m_moved;
+  std::vector<char> m_movedMark;
+  std::vector<int> m_equationNode;  // node of each equation
+  solver::AssemblyPart m_part;
+  VecX m_kDiagonal;
+  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: never iterate on a part (for comparison)
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
   bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step

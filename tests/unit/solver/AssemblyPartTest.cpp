@@ -1,0 +1,156 @@
+// Unit tests of the assembly of a part of the model (Assembler::selectPart / assemblePart / addPartMass):
+// after some nodes move, re-evaluating the part gives every entry of F and of M a that a whole assembly
+// gives, bit for bit (the same terms summed in the same order), so that the integrator's convergence test
+// on a part is the whole model's test. One case per kind of term: bars and beams (Rayleigh and axial
+// damping), weight and buoyancy across the water surface, the seabed, Morison loads in current and waves,
+// point attachments (weight, drag, added mass), lumped and consistent mass.
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "support/ModelFactory.hpp"
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/core/Units.hpp"
+#include "tangle/geometry/Rotation.hpp"
+
+namespace tangle {
+namespace {
+
+/// A chain lying partly on the seabed (100 m water) and rising to the surface, with a clump and a buoy,
+/// and a steel beam across the water surface; current and a regular wave.
+model::ModelSpec partModel(bool lumped) {
+  model::ModelSpec spec;
+  spec.sourceFile = "assembly part (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.environment.current = {{0.0, 1.0, degToRad(30.0)}, {-100.0, 0.3, degToRad(60.0)}};
+  spec.environment.waves.kind = model::WaveKind::Airy;
+  spec.environment.waves.height = 4.0;
+  spec.environment.waves.period = 9.0;
+  section::LineType chain = test::cableType("chain", 0.15, 120.0, 5.0e8);
+  chain.dragNormal = 2.4;
+  chain.dragAxial = 1.1;
+  chain.addedMassNormal = 1.0;
+  chain.addedMassAxial = 0.5;
+  chain.axialDamping = 2.0e5;
+  spec.lineTypes[chain.name] = chain;
+  section::LineType rod = test::solidRodType("rod", 0.3, 2.1e11, 7850.0);
+  rod.dragNormal = 1.0;
+  rod.addedMassNormal = 1.0;
+  spec.lineTypes[rod.name] = rod;
+  model::LineSpec mooring = test::simpleLine("mooring", "chain", 160.0, 16, model::EndKind::Anchored,
+                                             Vec3(0, 0, -100.0), model::EndKind::Pinned, Vec3(120, 10, -2.0));
+  mooring.attachments.push_back({40.0, 2000.0, 0.1, 1.5, 300.0});   // clump
+  mooring.attachments.push_back({120.0, 500.0, 3.0, 2.0, 2500.0});  // buoy
+  spec.lines.push_back(mooring);
+  spec.lines.push_back(test::simpleLine("beam", "rod", 30.0, 6, model::EndKind::Fixed, Vec3(0, 40, -10.0),
+                                        model::EndKind::Fixed, Vec3(0, 70, 3.0)));
+  spec.dynamics.lumpedMass = lumped;
+  spec.dynamics.rayleighAlpha = 0.05;
+  spec.dynamics.rayleighBeta = 1e-3;
+  return spec;
+}
+
+/// A state with every node displaced, moving and accelerating (deterministic pseudo-random values), the
+/// chain's first nodes pressed into the seabed.
+void stir(model::State& s, const model::DofMap& dofs, unsigned seed) {
+  unsigned x = seed;
+  const auto next = [&x]() {
+    x = x * 1664525u + 1013904223u;
+    return static_cast<double>(x >> 8) / static_cast<double>(1u << 24) - 0.5;  // [-0.5, 0.5)
+  };
+  for (int n = 0; n < dofs.nodeCount(); ++n) {
+    for (int k = 0; k < 3; ++k) s.position[n][k] += 0.05 * next();
+    if (dofs.hasRotations(n))
+      s.triad[n] = geometry::expMap(Vec3(0.01 * next(), 0.01 * next(), 0.01 * next())) * s.triad[n];
+  }
+  for (int n = 0; n < 4; ++n) s.position[n].z() = -100.0 + 0.075 - 0.02 * (n + 1);  // radius 0.075 m
+  for (Eigen::Index i = 0; i < s.velocity.size(); ++i) {
+    s.velocity[i] = 0.4 * next();
+    s.acceleration[i] = 2.0 * next();
+  }
+}
+
+void expectPartEqualsWhole(bool lumped, const std::vector<int>& moved) {
+  analysis::Simulation sim(partModel(lumped));
+  solver::Assembler& assembler = sim.assembler();
+  const model::DofMap& dofs = sim.model().dofs();
+  ASSERT_TRUE(assembler.supportsParts());
+  solver::AssemblyRequest request;
+  request.time = 3.7;
+  request.dynamic = true;
+  request.wantMatrix = false;
+
+  model::State before = sim.state();
+  stir(before, dofs, 7);
+  VecX force, inertia = VecX::Zero(dofs.fullDofCount());
+  assembler.assemble(before, request, force, nullptr);
+  assembler.addMass(before, 0.0, nullptr, &before.acceleration, &inertia);
+
+  // Only `moved` change: position, triad, velocity, acceleration.
+  model::State after = before;
+  model::State stirred = before;
+  stir(stirred, dofs, 99);
+  for (const int n : moved) {
+    after.position[n] = stirred.position[n];
+    after.triad[n] = stirred.triad[n];
+    const int d = dofs.firstDof(n);
+    const int count = dofs.hasRotations(n) ? 6 : 3;
+    after.velocity.segment(d, count) = stirred.velocity.segment(d, count);
+    after.acceleration.segment(d, count) = stirred.acceleration.segment(d, count);
+  }
+  solver::AssemblyPart part;
+  assembler.selectPart(moved, part);
+  VecX partForce = force, partInertia = inertia;
+  assembler.assemblePart(after, request, part, partForce);
+  assembler.addPartMass(after, part, after.acceleration, partInertia);
+
+  VecX wholeForce, wholeInertia = VecX::Zero(dofs.fullDofCount());
+  assembler.assemble(after, request, wholeForce, nullptr);
+  assembler.addMass(after, 0.0, nullptr, &after.acceleration, &wholeInertia);
+  ASSERT_NE(wholeForce, force) << "the moved nodes must change the forces, or the test proves nothing";
+  for (Eigen::Index i = 0; i < wholeForce.size(); ++i) {
+    // Bit for bit: the convergence test on a part must be the whole model's test.
+    EXPECT_EQ(partForce[i], wholeForce[i])
+        << "force at full DOF " << i << " (node " << dofs.nodeOf(static_cast<int>(i)) << ")";
+    EXPECT_EQ(partInertia[i], wholeInertia[i]) << "inertia at full DOF " << i;
+  }
+}
+
+TEST(AssemblyPart, SeabedNodesAndClumpOfTheChainLumpedMass) { expectPartEqualsWhole(true, {1, 2, 3, 5}); }
+
+TEST(AssemblyPart, NodesAtTheSurfaceWithTheBuoyConsistentMass) { expectPartEqualsWhole(false, {11, 12, 13}); }
+
+TEST(AssemblyPart, BeamNodesAndTheChainsLastFreeNode) {
+  // The chain has 17 nodes (0-16), the beam 7 (17-23).
+  expectPartEqualsWhole(true, {15, 18, 19, 22});
+  expectPartEqualsWhole(false, {15, 18, 19, 22});
+}
+
+TEST(AssemblyPart, SelectPartTakesTheNeighboursAndTheirElements) {
+  analysis::Simulation sim(partModel(true));
+  solver::AssemblyPart part;
+  sim.assembler().selectPart({5}, part);
+  // Node 5 of the chain: nodes 4-6 are recomputed through elements 3-6; nodes 3-7 are written.
+  EXPECT_EQ(part.nodes, (std::vector<int>{4, 5, 6}));
+  EXPECT_EQ(part.elements, (std::vector<int>{3, 4, 5, 6}));
+  EXPECT_EQ(part.writtenNodes, (std::vector<int>{3, 4, 5, 6, 7}));
+  // The clump at 40 m of 160 m (16 elements of 10 m) sits on node 4.
+  EXPECT_EQ(part.attachments, (std::vector<int>{0}));
+}
+
+TEST(AssemblyPart, NotOfferedWhenAContributorCouplesDistantNodes) {
+  // A wake makes each element of the downstream line depend on the upstream line.
+  model::ModelSpec spec = partModel(true);
+  spec.lines.push_back(test::simpleLine("downstream", "chain", 160.0, 16, model::EndKind::Anchored,
+                                        Vec3(0, 5, -100.0), model::EndKind::Pinned, Vec3(120, 15, -2.0)));
+  model::WakeSpec wake;
+  wake.upstream = "mooring";
+  wake.downstream = "downstream";
+  spec.wakes.push_back(wake);
+  analysis::Simulation sim(std::move(spec));
+  EXPECT_FALSE(sim.assembler().supportsParts());
+}
+
+}  // namespace
+}  // namespace tangle
