@@ -245,10 +245,9 @@ void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const V
   const model::DofMap& dofs = m_model->dofs();
   forEachIndex(list, elements.size(), [&](std::size_t e) {
     const AddedMass& ma = m_addedMass[e];
-    const Mat3 m = matrix ? ma.matrix() : Mat3::Zero();
     for (int node : {elements[e].node1, elements[e].node2}) {
       const int d = dofs.firstDof(node);
-      if (matrix) matrix->add3x3(d, d, m, mf);
+      if (matrix) matrix->add3x3(d, d, ma.matrix(), mf);
       if (out) out->segment<3>(d) += ma * Vec3(acceleration->segment<3>(d));
     }
   });

@@ -7,7 +7,7 @@ namespace tangle::seabed {
 SeabedNodeReaction FlatSeabed::reaction(const Vec3& position, const Vec3& velocity, double tributaryLength,
                                         double radius, bool dynamic) const {
   SeabedNodeReaction r;
-  r.penetration = -m_depth - (position.z() - radius);
+  r.penetration = penetration(position, radius);
   if (r.penetration <= 0.0) return r;
   const double k = m_spec.normalStiffness * tributaryLength;
   // C1 onset over the first kSmoothPenetration of penetration (quadratic, then linear and offset by half

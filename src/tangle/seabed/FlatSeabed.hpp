@@ -56,6 +56,9 @@ class FlatSeabed {
   double shearStiffness() const { return m_spec.shearStiffness > 0.0 ? m_spec.shearStiffness : m_spec.normalStiffness; }
 
   double depth() const { return m_depth; }  ///< [m]
+  /// Penetration [m] of a node of contact radius `radius` [m] at `position` (> 0: touching): the
+  /// quantity reaction() starts from, for callers that skip the nodes clear of the seabed cheaply.
+  double penetration(const Vec3& position, double radius) const { return -m_depth - (position.z() - radius); }
 
   /// Penetration over which the normal reaction sets in smoothly (C1 quadratic onset) [m].
   static constexpr double kSmoothPenetration = 0.002;
