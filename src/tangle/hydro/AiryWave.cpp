@@ -60,12 +60,21 @@ double solveDispersion(double omega, double depth, double gravity) {
   return y / depth;
 }
 
-DepthAttenuation depthAttenuation(double k, double zPrime, double depth) {
+namespace {
+/// 1 / (1 - e^{-2kh}) [-], the denominator of depthAttenuation: a constant of a wave.
+double attenuationScale(double k, double depth) { return -1.0 / std::expm1(-2.0 * k * depth); }
+
+/// depthAttenuation with its denominator given.
+DepthAttenuation scaledAttenuation(double k, double zPrime, double depth, double inverseDenominator) {
   const double z = std::clamp(zPrime, -depth, 0.0);
-  const double e1 = std::exp(k * z);                                      // e^{kz} <= 1
-  const double em = std::expm1(-2.0 * k * (z + depth));                   // e^{-2k(z+h)} - 1, in (-1, 0]
-  const double inverseDenominator = -1.0 / std::expm1(-2.0 * k * depth);  // 1 / (1 - e^{-2kh})
+  const double e1 = std::exp(k * z);                     // e^{kz} <= 1
+  const double em = std::expm1(-2.0 * k * (z + depth));  // e^{-2k(z+h)} - 1, in (-1, 0]
   return {e1 * (2.0 + em) * inverseDenominator, -e1 * em * inverseDenominator};
+}
+}  // namespace
+
+DepthAttenuation depthAttenuation(double k, double zPrime, double depth) {
+  return scaledAttenuation(k, zPrime, depth, attenuationScale(k, depth));
 }
 
 double stretchedLevel(double z, double eta, double depth, Stretching stretching) {
@@ -104,6 +113,7 @@ AiryWave::AiryWave(double height, double period, double azimuth, double waterDep
           0.5 * height);
   m_omega = 2.0 * kPi / period;
   m_k = solveDispersion(m_omega, waterDepth, gravity);
+  m_attenuationScale = attenuationScale(m_k, waterDepth);
   m_cosAzimuth = std::cos(azimuth);
   m_sinAzimuth = std::sin(azimuth);
 }
@@ -117,16 +127,22 @@ double AiryWave::elevation(double x, double y, double t) const {
 }
 
 FluidKinematics AiryWave::kinematics(const Vec3& p, double t) const {
+  double eta = 0.0;
+  return kinematics(p, t, eta);
+}
+
+FluidKinematics AiryWave::kinematics(const Vec3& p, double t, double& elevation) const {
   const double theta = phaseAngle(p.x(), p.y(), t);
   const double c = std::cos(theta);
   const double s = std::sin(theta);
   const double amplitude = 0.5 * m_height;
-  const double eta = amplitude * c;
+  const double eta = amplitude * c;  // = elevation(p.x, p.y, t), the same operations
+  elevation = eta;
   FluidKinematics result;
   if (!wetForKinematics(p.z(), eta, m_stretching)) return result;  // dry point: no fluid
 
   const double zPrime = stretchedLevel(p.z(), eta, m_depth, m_stretching);
-  const DepthAttenuation att = depthAttenuation(m_k, zPrime, m_depth);
+  const DepthAttenuation att = scaledAttenuation(m_k, zPrime, m_depth, m_attenuationScale);
   const double aw = amplitude * m_omega;
   const double aw2 = aw * m_omega;
   const double uh = aw * att.horizontal * c;

@@ -65,6 +65,7 @@ class AiryWave final : public WaveField {
   double elevation(double x, double y, double t) const override;
   /// Velocity [m/s] and local acceleration [m/s^2] (formulas in the class comment); zero above the surface.
   FluidKinematics kinematics(const Vec3& p, double t) const override;
+  FluidKinematics kinematics(const Vec3& p, double t, double& elevation) const override;
 
   double height() const { return m_height; }              ///< H [m]
   double period() const { return m_period; }              ///< T [s]
@@ -90,6 +91,7 @@ class AiryWave final : public WaveField {
   Stretching m_stretching;
   double m_omega;
   double m_k;
+  double m_attenuationScale;  // 1 / (1 - e^{-2kh}) [-] (depthAttenuation's denominator)
   double m_cosAzimuth;
   double m_sinAzimuth;
 };

@@ -106,8 +106,9 @@ bool HydroLoads::prepareWaves(const model::State& state, const solver::AssemblyR
     const double r = time::ramp(request.time, m_rampTime).value;
     for (std::size_t e = 0; e < elements.size(); ++e) {
       const Vec3 mid = 0.5 * (state.position[elements[e].node1] + state.position[elements[e].node2]);
-      m_surface[e] = r * m_waves->elevation(mid.x(), mid.y(), request.time);
-      const FluidKinematics w = m_waves->kinematics(mid, request.time);
+      double eta = 0.0;
+      const FluidKinematics w = m_waves->kinematics(mid, request.time, eta);
+      m_surface[e] = r * eta;
       m_fluid[e].velocity = r * w.velocity;
       m_fluid[e].acceleration = r * w.acceleration;
     }

@@ -127,6 +127,11 @@ double JonswapSea::elevation(double x, double y, double t) const {
 }
 
 FluidKinematics JonswapSea::kinematics(const Vec3& p, double t) const {
+  double eta = 0.0;
+  return kinematics(p, t, eta);
+}
+
+FluidKinematics JonswapSea::kinematics(const Vec3& p, double t, double& elevation) const {
   const std::size_t n = m_omega.size();
   const double s = phaseOffset(p.x(), p.y());
   const double depth = m_parameters.waterDepth;
@@ -148,6 +153,7 @@ FluidKinematics JonswapSea::kinematics(const Vec3& p, double t) const {
     cs[2 * i + 1] = std::sin(theta);
     eta += m_amplitude[i] * c;
   }
+  elevation = eta;  // = this->elevation(p.x, p.y, t): the same terms in the same order
   FluidKinematics result;
   if (!wetForKinematics(p.z(), eta, m_parameters.stretching)) return result;  // dry point
 

@@ -62,6 +62,7 @@ class JonswapSea final : public WaveField {
   /// Sum of the component kinematics at the stretched level; zero above the surface.
   /// Cost: one sin/cos pair, one exp and one expm1 per component.
   FluidKinematics kinematics(const Vec3& p, double t) const override;
+  FluidKinematics kinematics(const Vec3& p, double t, double& elevation) const override;
 
   /// Target JONSWAP spectral density S(omega) [m^2 s / rad], one-sided, in angular frequency omega [rad/s];
   /// 0 for omega <= 0.

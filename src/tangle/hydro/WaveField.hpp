@@ -48,6 +48,14 @@ class WaveField {
   /// (p.z() > eta(p.x(), p.y(), t)); below the seabed (p.z() < -depth) the seabed values are returned.
   virtual FluidKinematics kinematics(const Vec3& p, double t) const = 0;
 
+  /// kinematics(p, t), with the elevation at (p.x, p.y) [m] in `elevation`, equal to elevation(p.x, p.y, t).
+  /// The Morison loads need both at every element midpoint and step, and the kinematics find the
+  /// elevation anyway (for the stretching): implementations evaluate the phases once.
+  virtual FluidKinematics kinematics(const Vec3& p, double t, double& elevation) const {
+    elevation = this->elevation(p.x(), p.y(), t);
+    return kinematics(p, t);
+  }
+
  protected:
   WaveField() = default;
   WaveField(const WaveField&) = default;

@@ -211,3 +211,35 @@ TEST(JonswapSea, RejectsInvalidParameters) {
 
 }  // namespace
 }  // namespace tangle::hydro
+
+namespace tangle::hydro {
+namespace {
+
+// kinematics(p, t, elevation) is what the Morison loads call at every element midpoint and step: it must
+// give exactly the separate elevation() and kinematics() (the same operations; bit for bit), under a
+// crest, in a trough, at depth and at dry points above the surface, for both wave fields.
+void expectCombinedEqualsSeparate(const WaveField& field) {
+  for (const Vec3& p : {Vec3(0, 0, -1.0), Vec3(13.0, -4.0, -30.0), Vec3(-50.0, 20.0, -99.0), Vec3(7.0, 3.0, 0.8),
+                        Vec3(-21.0, 8.0, 2.5)})
+    for (const double t : {0.0, 3.3, 17.9}) {
+      double eta = -1.0;
+      const FluidKinematics combined = field.kinematics(p, t, eta);
+      const FluidKinematics separate = field.kinematics(p, t);
+      EXPECT_EQ(eta, field.elevation(p.x(), p.y(), t)) << p.transpose() << " at " << t << " s";
+      EXPECT_EQ(combined.velocity, separate.velocity) << p.transpose() << " at " << t << " s";
+      EXPECT_EQ(combined.acceleration, separate.acceleration) << p.transpose() << " at " << t << " s";
+    }
+}
+
+TEST(WaveField, KinematicsWithElevationEqualsTheSeparateCallsAiry) {
+  expectCombinedEqualsSeparate(AiryWave(3.0, 9.0, degToRad(30.0), 100.0));
+}
+
+TEST(WaveField, KinematicsWithElevationEqualsTheSeparateCallsJonswap) {
+  JonswapSea::Parameters p = baseParameters();
+  p.waterDepth = 100.0;
+  expectCombinedEqualsSeparate(JonswapSea(p));
+}
+
+}  // namespace
+}  // namespace tangle::hydro
