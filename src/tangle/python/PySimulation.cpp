@@ -181,7 +181,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
       }
     };
     const auto stepObserver = [&](const model::State& s, double dt) {
-      const std::vector<solver::LineSnapshot> snap = m_sim->sectionSnapshot();
+      const std::vector<solver::LineSnapshot>& snap = m_sim->sectionSnapshot();
       for (std::size_t l = 0; l < lineCount; ++l) {
         const solver::LineSnapshot& x = snap[l];
         LineHistory& h = hist[l];

@@ -46,7 +46,8 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
 }
 
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
-                        const VecX& fullForce, std::vector<LineSnapshot>& out) {
+                        const VecX& fullForce, std::vector<LineSnapshot>& out, LineResultDetail detail) {
+  const bool all = detail == LineResultDetail::All;
   std::vector<element::BeamSectionForces> beamForces;
   const std::vector<double> tension = assembler.elementTension(state, &beamForces);
   const model::DofMap& dofs = model.dofs();
@@ -96,7 +97,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       s.torque[i] /= count[i];
       // Cable nodes have no rotation: zero without the logarithm (which, with its atan2, was 6 % of a
       // mooring run through the per-step range graphs).
-      if (dofs.hasRotations(line.firstNode + i))
+      if (all && dofs.hasRotations(line.firstNode + i))
         s.rotation[i] = geometry::logMap(state.triad[line.firstNode + i]) * (180.0 / kPi);
       ei[i] /= count[i];
       s.bendingMoment[i] = s.bendingMomentVector[i].norm();
@@ -131,6 +132,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       s.endTensionA = signA * s.endTensionForceA.norm();
       s.endTensionB = signB * s.endTensionForceB.norm();
     }
+    if (!all) continue;
     // Touchdown: last node (from end A) of the first grounded stretch that is followed by suspended line.
     grounded.assign(n, 0);
     for (int i = 0; i < n; ++i) {

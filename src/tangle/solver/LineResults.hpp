@@ -47,6 +47,12 @@ struct LineSnapshot {
   int seabedNodes = 0;               ///< nodes in contact with the seabed
 };
 
+/// What computeLineResults fills in.
+enum class LineResultDetail {
+  All,            ///< every field of LineSnapshot
+  SectionForces,  ///< all but `rotation` (left zero) and the touchdown (-1, 0 nodes): the range graphs'
+};
+
 /// Computes the snapshot of every line. `fullForce` is the assembled out-of-balance force at `state`
 /// without the forces of whatever holds the line ends (then its values at the end nodes are the
 /// support reactions: the force the line pulls its support with is minus that).
@@ -55,6 +61,7 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
 /// The same into `out` (one snapshot per line; the vectors keep their capacity, so a caller that computes
 /// the results at every step allocates nothing after the first).
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
-                        const VecX& fullForce, std::vector<LineSnapshot>& out);
+                        const VecX& fullForce, std::vector<LineSnapshot>& out,
+                        LineResultDetail detail = LineResultDetail::All);
 
 }  // namespace tangle::solver
