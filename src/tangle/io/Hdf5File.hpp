@@ -57,6 +57,7 @@ class Hdf5File {
     std::uint64_t written = 0;   ///< rows in the file
     std::vector<double> buffer;  ///< rows not yet written
     std::string path;
+    bool singlePrecision = false;  ///< stored as float (rounded before the write: see writeArray)
   };
   void writeBuffered(Series& s);
   [[noreturn]] void fail(const std::string& what) const;
