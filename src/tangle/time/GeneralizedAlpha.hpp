@@ -49,8 +49,8 @@ struct StepOutcome {
   bool converged = false;
   int iterations = 0;
   int partIterations = 0;  ///< of those, evaluated on a part of the model (Assembler::assemblePart)
-  double residual = 0.0;  ///< last max out-of-balance force [N]
-  int worstNode = -1;     ///< node with the largest out-of-balance force
+  double residual = 0.0;  ///< last max out-of-balance force [N] of a failed step (0 for a converged one)
+  int worstNode = -1;     ///< node with the largest out-of-balance force (of a failed step)
 };
 
 /// Generalized-alpha stepper.
