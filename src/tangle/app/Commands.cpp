@@ -11,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <memory>
 #include <sstream>
 
 #include "tangle/analysis/Simulation.hpp"
@@ -21,6 +22,7 @@
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
+#include "tangle/io/BackgroundWriter.hpp"
 #include "tangle/io/DynamicRecorder.hpp"
 #include "tangle/io/Hdf5Results.hpp"
 #include "tangle/io/HtmlReport.hpp"
@@ -429,7 +431,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
         header += fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", v);
       vesselFile->write(header + "\n");
     }
-    // Tensioners: stroke and stop force against time.
+    // Tensioners: stroke and stop force against time (written every step, on this thread).
     std::unique_ptr<io::OutputFile> tensionerFile;
     double maxStopForce = 0.0;
     if (vessels && !vessels->tensionerReadings(sim.state(), 0.0).empty()) {
@@ -441,14 +443,19 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
                               stems[r.line], r.end == 0 ? 'a' : 'b');
       tensionerFile->write(header + "\n");
     }
+    // The CSV rows, results.h5 and vessels.csv of each output time are formatted, compressed and written on
+    // a background thread while the integration goes on (BackgroundWriter's contract: each job gets copies
+    // of what it writes; the recorder's range accumulation, on this thread, touches none of its files).
+    // Declared after the files it writes, so that it finishes its jobs before they are closed.
+    io::BackgroundWriter writer;
     if (report) {
       const auto& d = m.spec().dynamics;
       report->planFrames(static_cast<int>(std::ceil(d.duration / std::max(d.outputInterval, 1e-12))) + 1);
     }
     const time::DynamicResult dyn = sim.runDynamics(
         [&](const model::State& s, const VecX&) {
-          const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
-          recorder.record(s.time, snap);
+          auto shared = std::make_shared<const std::vector<solver::LineSnapshot>>(sim.snapshot(true));
+          const std::vector<solver::LineSnapshot>& snap = *shared;
           if (report) timed([&] { report->recordOutput(snap, s, sim.contact(), envelope.get()); });
           if (clash) clash->recordClearance(s);
           for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
@@ -458,16 +465,18 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
             std::copy_n(std::array<double, 6>{p.x(), p.y(), p.z(), r.x(), r.y(), r.z()}.data(), 6,
                         vesselMotion.begin() + 6 * v);
           }
-          if (h5) h5->record(s.time, snap, vesselMotion);
-          if (vesselFile) {
-            std::string row = fmt::format("{:.4f}", s.time);
-            for (std::size_t k = 0; k < vesselMotion.size(); k += 6)
-              row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", vesselMotion[k],
-                                 vesselMotion[k + 1], vesselMotion[k + 2], vesselMotion[k + 3],
-                                 vesselMotion[k + 4], vesselMotion[k + 5]);
-            vesselFile->write(row + "\n");
-            vesselFile->flush();
-          }
+          writer.submit([&, shared, time = s.time, motion = vesselMotion] {
+            recorder.record(time, *shared);
+            if (h5) h5->record(time, *shared, motion);
+            if (vesselFile) {
+              std::string row = fmt::format("{:.4f}", time);
+              for (std::size_t k = 0; k < motion.size(); k += 6)
+                row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", motion[k], motion[k + 1],
+                                   motion[k + 2], motion[k + 3], motion[k + 4], motion[k + 5]);
+              vesselFile->write(row + "\n");
+              vesselFile->flush();
+            }
+          });
         },
         !options.quiet,
         [&](const model::State& s, double dt) {
@@ -484,6 +493,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
             tensionerFile->write(row + "\n");
           }
         });
+    writer.finish();  // every output time written (rethrows a write error)
     recorder.writeRanges();
     recorder.close();
     if (h5 && recorder.stepCount() > 0) h5->writeRanges(recorder);

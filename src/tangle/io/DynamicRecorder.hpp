@@ -36,7 +36,8 @@ class DynamicRecorder {
   DynamicRecorder(const DynamicRecorder&) = delete;
   DynamicRecorder& operator=(const DynamicRecorder&) = delete;
 
-  /// Appends one output time to the time histories (flushed to disk at once).
+  /// Appends one output time to the time histories (flushed to disk at once). May run on another thread
+  /// than accumulate() (the run command's background writer): the two share no member.
   void record(double time, const std::vector<solver::LineSnapshot>& lines);
   /// Adds one accepted step (of length dt [s]; dt = 0 for the initial state) to the ranges and extremes.
   void accumulate(const std::vector<solver::LineSnapshot>& lines, double dt);
