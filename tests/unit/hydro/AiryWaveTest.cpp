@@ -228,6 +228,32 @@ TEST(AiryWave, KinematicsMatchClosedFormulas) {
   }
 }
 
+// Source: closedForm, from shallow water (kh ~ 0.3) to the drilling-riser example's deep water (kh ~ 14),
+// 41 levels from the trough down to the seabed (where the vertical ratio vanishes and the exponential form
+// must stay exact absolutely). Tolerance as above, 1e-12 of the amplitude a omega (a omega^2).
+TEST(AiryWave, KinematicsMatchClosedFormulasFromShallowToDeepWater) {
+  struct Case {
+    double period, depth;
+  };
+  for (const Case c : {Case{30.0, 10.0}, Case{10.0, 50.0}, Case{10.0, 345.0}, Case{7.0, 1000.0}}) {
+    const AiryWave wave(2.0, c.period, 0.0, c.depth, kG, 0.0, Stretching::Vertical);
+    const double k = wave.waveNumber(), omega = wave.angularFrequency(), h = c.depth;
+    ASSERT_LT(k * h, 300.0);  // std::sinh in closedForm stays finite
+    const double scaleV = omega / std::tanh(k * h), scaleA = scaleV * omega;  // H/2 = 1 m
+    for (int i = 0; i <= 40; ++i) {
+      const double z = -1.0 - (h - 1.0) * (i / 40.0) * (i / 40.0);  // below the trough, denser up there
+      for (const double t : {0.0, 0.27 * c.period, 0.61 * c.period}) {
+        const Closed e = closedForm(2.0, omega, k, h, z, -omega * t);
+        const FluidKinematics kin = wave.kinematics(Vec3(0, 0, z), t);
+        EXPECT_NEAR(kin.velocity.x(), e.uh, 1e-12 * scaleV) << "T " << c.period << " h " << h << " z " << z;
+        EXPECT_NEAR(kin.velocity.z(), e.w, 1e-12 * scaleV) << "T " << c.period << " h " << h << " z " << z;
+        EXPECT_NEAR(kin.acceleration.x(), e.duh, 1e-12 * scaleA) << "T " << c.period << " h " << h << " z " << z;
+        EXPECT_NEAR(kin.acceleration.z(), e.dw, 1e-12 * scaleA) << "T " << c.period << " h " << h << " z " << z;
+      }
+    }
+  }
+}
+
 // Source: horizontal velocity amplitude pi H / T cosh(k(z+h))/sinh(kh) (Dean & Dalrymple 1991, ch. 4),
 // reached under the crest; vertical amplitude pi H / T sinh(k(z+h))/sinh(kh) a quarter period later.
 // Tolerance 1e-12 relative.
