@@ -191,6 +191,29 @@ std::vector<CandidatePair> LineContact::pairsWithin(const model::State& state, d
   return pairs;
 }
 
+bool LineContact::markLoadedNodes(std::vector<char>& mark) const {
+  const auto& elements = m_model->elements();
+  const auto markAround = [&](int element) {
+    const int line = m_model->lineOfNode(elements[static_cast<std::size_t>(element)].node1);
+    const model::Line& l = m_model->lines()[static_cast<std::size_t>(line)];
+    for (int e = std::max(element - 1, l.firstElement);
+         e <= std::min(element + 1, l.firstElement + l.elementCount - 1); ++e) {
+      mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node1)] = 1;
+      mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node2)] = 1;
+    }
+  };
+  for (const CandidatePair& cp : m_candidates) {
+    markAround(m_proxies[static_cast<std::size_t>(cp.first)].element);
+    markAround(m_proxies[static_cast<std::size_t>(cp.second)].element);
+  }
+  // The contact points found (on candidate elements; their stencils' nodes, to be sure).
+  for (const ContactPoint& c : m_trial) {
+    markAround(c.elementA);
+    markAround(c.elementB);
+  }
+  return true;
+}
+
 void LineContact::buildProxies(const model::State& state) {
   m_proxies.clear();
   for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {

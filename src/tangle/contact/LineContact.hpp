@@ -127,6 +127,12 @@ class LineContact final : public solver::LoadContributor {
   void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
                  solver::SystemMatrix* matrix) override;
   void beginStep() override;
+  /// Parts of the model away from every candidate pair leave contact out: it marks the nodes of the
+  /// candidate elements and of their neighbours (the smooth centreline's stencils reach one node further).
+  /// The candidates are this step's (found at its first, whole, assembly), and no contact arises outside
+  /// them within the step.
+  bool supportsParts() const override { return true; }
+  bool markLoadedNodes(std::vector<char>& mark) const override;
   bool updateActiveSet() override;
   double limitIncrement(const model::State& state, const VecX& fullIncrement) override;
   std::string rejectState(const model::State& state) override;

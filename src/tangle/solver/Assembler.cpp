@@ -341,7 +341,7 @@ bool Assembler::supportsParts() const {
                      [](const LoadContributor* c) { return c->supportsParts(); });
 }
 
-void Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
+bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
   const auto& elements = m_model->elements();
   const auto& attached = m_model->attachments();
   const auto nodeCount = static_cast<std::size_t>(m_model->nodeCount());
@@ -382,6 +382,14 @@ void Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
   part.writtenNodes.clear();
   for (std::size_t n = 0; n < nodeCount; ++n)
     if (m_nodeMark[n] != 0) part.writtenNodes.push_back(static_cast<int>(n));
+  // Contributors left out of parts: none of their nodes may be in the part.
+  bool marked = false;
+  m_loadedMark.assign(nodeCount, 0);
+  for (const LoadContributor* c : m_contributors) marked = c->markLoadedNodes(m_loadedMark) || marked;
+  if (marked)
+    for (const int n : part.nodes)
+      if (m_loadedMark[static_cast<std::size_t>(n)]) return false;
+  return true;
 }
 
 namespace {

@@ -60,10 +60,19 @@ class LoadContributor {
   /// Adds mf * M_contributor to matrix (if not null) and M_contributor * acceleration to out (if not null).
   virtual void addMass(const model::State& /*state*/, double /*mf*/, SystemMatrix* /*matrix*/,
                        const VecX* /*acceleration*/, VecX* /*out*/) {}
-  /// True if addPartForces and addPartMass give this contributor's terms of a part (its forces at a node
-  /// depend only on the elements and attachments at that node). A contributor that couples distant nodes
-  /// (a vessel, line-to-line contact, wakes) returns false, and the whole model is assembled each time.
+  /// True if a part of the model can be assembled with this contributor: either addPartForces and
+  /// addPartMass give its terms of the part (its forces at a node depend only on the elements and
+  /// attachments at that node: HydroLoads), or its loads act at a few nodes that it marks in
+  /// markLoadedNodes (a vessel and the line ends tied to it; the elements near a contact), and parts that
+  /// hold none of them leave it out. A contributor that couples nodes otherwise (wakes) returns false, and
+  /// the whole model is assembled each time.
   virtual bool supportsParts() const { return false; }
+  /// The second way above: sets mark[node] = 1 for every node this contributor loads or whose state it
+  /// reads in this step (called after the step's first whole assembly) and returns true; the contributor
+  /// is then left out of parts, which Assembler::selectPart refuses when they hold a marked node (its loads
+  /// are zero at the part's nodes and unchanged elsewhere, since no node it reads moved). False (the
+  /// default): the contributor's terms come from addPartForces / addPartMass.
+  virtual bool markLoadedNodes(std::vector<char>& /*mark*/) const { return false; }
   /// As addForces without a matrix, for the elements and attachments of `part` only (Assembler::assemblePart
   /// keeps the entries of part.nodes; what lands elsewhere is discarded).
   virtual void addPartForces(const model::State& /*state*/, const AssemblyRequest& /*request*/,
@@ -114,8 +123,10 @@ class Assembler {
   /// True when assemblePart and addPartMass can stand for assemble and addMass: every contributor's
   /// forces are local to elements and nodes (LoadContributor::supportsParts).
   bool supportsParts() const;
-  /// The part to re-evaluate after the nodes `moved` (ascending, each once) moved and no other did.
-  void selectPart(const std::vector<int>& moved, AssemblyPart& part);
+  /// The part to re-evaluate after the nodes `moved` (ascending, each once) moved and no other did; false
+  /// (part unusable: assemble the whole model) when it holds a node a contributor marks as loaded
+  /// (LoadContributor::markLoadedNodes).
+  bool selectPart(const std::vector<int>& moved, AssemblyPart& part);
   /// Sets the entries of `force` (full DOFs) at part.nodes to what assemble(state, request, force, nullptr)
   /// would give them, bit for bit (the same terms summed in the same order); the other entries are kept.
   /// Correct when `force` holds a full assembly at a state that differs from `state` only at nodes whose
@@ -224,6 +235,7 @@ class Assembler {
   std::vector<std::vector<int>> m_nodeElements;
   std::vector<char> m_nodeMark;
   std::vector<char> m_elementMark;
+  std::vector<char> m_loadedMark;  // nodes loaded by contributors left out of parts (markLoadedNodes)
   VecX m_partWork;
 };
 

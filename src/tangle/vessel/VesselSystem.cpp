@@ -96,6 +96,13 @@ VesselSystem::VesselSystem(const model::Model& model, const hydro::HydroLoads& h
 
 VesselSystem::~VesselSystem() = default;
 
+bool VesselSystem::markLoadedNodes(std::vector<char>& mark) const {
+  // addForces and addMass write only at these nodes and read only their states.
+  for (const VesselData& d : m_vessels) mark[static_cast<std::size_t>(d.node)] = 1;
+  for (const Connection& c : m_connections) mark[static_cast<std::size_t>(c.node)] = 1;
+  return true;
+}
+
 Vec3 VesselSystem::vesselPoint(const model::State& state, int vessel, const Vec3& offset) const {
   const int node = m_vessels[vessel].node;
   return state.position[node] + state.triad[node] * offset;

@@ -30,6 +30,10 @@ class VesselSystem final : public solver::LoadContributor {
                  solver::SystemMatrix* matrix) override;
   void addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
                VecX* out) override;
+  /// Parts of the model away from the vessels leave this contributor out (its loads act at the vessel
+  /// nodes and the line ends tied to them, which it marks).
+  bool supportsParts() const override { return true; }
+  bool markLoadedNodes(std::vector<char>& mark) const override;
 
   /// Held nodes that move: prescribed vessels and the line ends on fixed/prescribed vessels (RAO motion).
   std::vector<time::PrescribedNode> prescribedNodes() const;
