@@ -121,6 +121,8 @@ class GeneralizedAlpha {
   std::vector<int> m_moved;
   std::vector<char> m_movedMark;
   std::vector<int> m_equationNode;  // node of each equation
+  int m_futileTries = 0;            // corrections in a row that tried a part and found none
+  int m_partsPaused = 0;            // corrections left that do not try (applyCorrection)
   solver::AssemblyPart m_part;
   VecX m_kDiagonal;
   bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: never iterate on a part (for comparison)
