@@ -123,11 +123,22 @@ void Assembler::assemble(const model::State& state, const AssemblyRequest& reque
                          SystemMatrix* matrix) {
   force.setZero(m_model->dofs().fullDofCount());
   if (matrix) matrix->clear();
-  SystemMatrix* m = request.wantMatrix ? matrix : nullptr;
-  addElements(state, request, force, m);
-  addWeight(state, request, force);
-  addSeabed(state, request, force, m);
-  for (LoadContributor* c : m_contributors) c->addForces(state, request, force, m);
+  addAll(state, request, force, request.wantMatrix ? matrix : nullptr, nullptr);
+}
+
+void Assembler::addAll(const model::State& state, const AssemblyRequest& request, VecX& force,
+                       SystemMatrix* matrix, const AssemblyPart* part) {
+  // One sequence for the whole model and for a part: each entry of a part's nodes then sums the same
+  // terms in the same order as in a whole assembly (assemblePart's contract: bit for bit).
+  addElements(state, request, force, matrix, part ? &part->elements : nullptr);
+  addWeight(state, request, force, part ? &part->elements : nullptr, part ? &part->attachments : nullptr);
+  addSeabed(state, request, force, matrix, part ? &part->nodes : nullptr);
+  for (LoadContributor* c : m_contributors) {
+    if (part)
+      c->addPartForces(state, request, *part, force);
+    else
+      c->addForces(state, request, force, matrix);
+  }
 }
 
 void Assembler::addElements(const model::State& state, const AssemblyRequest& request, VecX& force,
@@ -270,8 +281,20 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
 
 void Assembler::addMass(const model::State& state, double mf, SystemMatrix* matrix, const VecX* acceleration,
                         VecX* out) {
-  addOwnMass(mf, matrix, acceleration, out);
-  for (LoadContributor* c : m_contributors) c->addMass(state, mf, matrix, acceleration, out);
+  addAllMass(state, mf, matrix, acceleration, out, nullptr);
+}
+
+void Assembler::addAllMass(const model::State& state, double mf, SystemMatrix* matrix, const VecX* acceleration,
+                           VecX* out, const AssemblyPart* part) {
+  // As addAll: one sequence for the whole model and for a part.
+  addOwnMass(mf, matrix, acceleration, out, part ? &part->elements : nullptr, part ? &part->nodes : nullptr,
+             part ? &part->attachments : nullptr);
+  for (LoadContributor* c : m_contributors) {
+    if (part)
+      c->addPartMass(state, *part, *acceleration, *out);
+    else
+      c->addMass(state, mf, matrix, acceleration, out);
+  }
 }
 
 void Assembler::addOwnMass(double mf, SystemMatrix* matrix, const VecX* acceleration, VecX* out,
@@ -419,10 +442,7 @@ void Assembler::assemblePart(const model::State& state, const AssemblyRequest& r
   // hold only some of their terms and are dropped.
   m_partWork.resize(dofs.fullDofCount());
   zeroNodes(dofs, part.writtenNodes, m_partWork);
-  addElements(state, request, m_partWork, nullptr, &part.elements);
-  addWeight(state, request, m_partWork, &part.elements, &part.attachments);
-  addSeabed(state, request, m_partWork, nullptr, &part.nodes);
-  for (LoadContributor* c : m_contributors) c->addPartForces(state, request, part, m_partWork);
+  addAll(state, request, m_partWork, nullptr, &part);
   copyNodes(dofs, part.nodes, m_partWork, force);
 }
 
@@ -431,8 +451,7 @@ void Assembler::addPartMass(const model::State& state, const AssemblyPart& part,
   const model::DofMap& dofs = m_model->dofs();
   m_partWork.resize(dofs.fullDofCount());
   zeroNodes(dofs, part.writtenNodes, m_partWork);
-  addOwnMass(0.0, nullptr, &acceleration, &m_partWork, &part.elements, &part.nodes, &part.attachments);
-  for (LoadContributor* c : m_contributors) c->addPartMass(state, part, acceleration, m_partWork);
+  addAllMass(state, 0.0, nullptr, &acceleration, &m_partWork, &part);
   copyNodes(dofs, part.nodes, m_partWork, out);
 }
 

@@ -197,8 +197,13 @@ class Assembler {
   const model::Model& model() const { return *m_model; }
 
  private:
-  // The loops of assemble and addMass; with lists, over those elements, nodes and attachments only
-  // (assemblePart, addPartMass).
+  // Every term of F (of M a) in a fixed order, of the whole model or (with `part`) of a part: assemble and
+  // assemblePart (addMass and addPartMass) share it.
+  void addAll(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix,
+              const AssemblyPart* part);
+  void addAllMass(const model::State& state, double mf, SystemMatrix* matrix, const VecX* acceleration,
+                  VecX* out, const AssemblyPart* part);
+  // The loops of addAll and addAllMass; with lists, over those elements, nodes and attachments only.
   void addElements(const model::State& state, const AssemblyRequest& request, VecX& force,
                    SystemMatrix* matrix, const std::vector<int>* elements = nullptr);
   void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force,
