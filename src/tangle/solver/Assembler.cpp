@@ -420,7 +420,7 @@ namespace {
 void zeroNodes(const model::DofMap& dofs, const std::vector<int>& nodes, VecX& work) {
   for (const int n : nodes) {
     const int d = dofs.firstDof(n);
-    const int count = dofs.hasRotations(n) ? 6 : 3;
+    const int count = dofs.dofCount(n);
     for (int k = 0; k < count; ++k) work[d + k] = 0.0;
   }
 }
@@ -428,7 +428,7 @@ void zeroNodes(const model::DofMap& dofs, const std::vector<int>& nodes, VecX& w
 void copyNodes(const model::DofMap& dofs, const std::vector<int>& nodes, const VecX& from, VecX& to) {
   for (const int n : nodes) {
     const int d = dofs.firstDof(n);
-    const int count = dofs.hasRotations(n) ? 6 : 3;
+    const int count = dofs.dofCount(n);
     for (int k = 0; k < count; ++k) to[d + k] = from[d + k];
   }
 }

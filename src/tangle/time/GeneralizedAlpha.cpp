@@ -84,8 +84,8 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_params(AlphaParameters::from(settings.integrator, settings.spectralRadius)),
       m_matrix(assembler.model().dofs()),
       m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr),
-      m_modifiedNewton(std::getenv("TANGLE_FULL_NEWTON") == nullptr) {
-  m_wholeAssembly = std::getenv("TANGLE_WHOLE_ASSEMBLY") != nullptr;
+      m_modifiedNewton(std::getenv("TANGLE_FULL_NEWTON") == nullptr),
+      m_wholeAssembly(std::getenv("TANGLE_WHOLE_ASSEMBLY") != nullptr) {
   const model::DofMap& dofs = assembler.model().dofs();
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
@@ -173,7 +173,7 @@ void GeneralizedAlpha::moveNodes(model::State& state, const model::State& start,
           dtheta.squaredNorm() > 0.0 ? Mat3(geometry::expMap(dtheta) * start.triad[n]) : start.triad[n];
     }
     // The Newmark relations of step(), entry by entry.
-    for (int dof = d; dof < d + (dofs.hasRotations(n) ? 6 : 3); ++dof) {
+    for (int dof = d; dof < d + dofs.dofCount(n); ++dof) {
       if (dofs.equation(dof) < 0) continue;
       state.acceleration[dof] =
           (dq[dof] - dt * v0[dof] - dt * dt * (0.5 - p.beta) * a0[dof]) / (p.beta * dt * dt);
@@ -366,7 +366,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       m_assembler->addPartMass(state, m_part, combo, inertia);
       for (const int node : m_part.nodes) {
         const int d = dofs.firstDof(node);
-        for (int dof = d; dof < d + (dofs.hasRotations(node) ? 6 : 3); ++dof) {
+        for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
           const int i = dofs.equation(dof);
           if (i >= 0) r[i] = inertia[dof] + (1.0 - p.alphaF) * m_force[dof] + p.alphaF * m_forceOld[dof];
         }

@@ -125,9 +125,9 @@ class GeneralizedAlpha {
   int m_partsPaused = 0;            // corrections left that do not try (applyCorrection)
   solver::AssemblyPart m_part;
   VecX m_kDiagonal;
-  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: never iterate on a part (for comparison)
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
   bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
+  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: never iterate on a part (for comparison)
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   double m_factorStep = 0.0;     // the time step that factorisation was made for [s]
