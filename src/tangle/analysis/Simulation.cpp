@@ -250,9 +250,7 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
 }
 
 const std::vector<solver::LineSnapshot>& Simulation::sectionSnapshot() const {
-  if (m_noReactions.size() != m_model->dofs().fullDofCount())
-    m_noReactions = VecX::Zero(m_model->dofs().fullDofCount());
-  solver::computeLineResults(*m_model, *m_assembler, m_state, m_noReactions, m_sectionSnapshot,
+  solver::computeLineResults(*m_model, *m_assembler, m_state, nullptr, m_sectionSnapshot,
                              solver::LineResultDetail::SectionForces);
   return m_sectionSnapshot;
 }

@@ -73,9 +73,7 @@ class Simulation {
   std::unique_ptr<vessel::VesselSystem> m_vessels;
   model::State m_state;
   bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)
-  // sectionSnapshot's buffers: the snapshot and a zero force vector (no support reactions).
-  mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;
-  mutable VecX m_noReactions;
+  mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;  // sectionSnapshot's buffer
 };
 
 }  // namespace tangle::analysis

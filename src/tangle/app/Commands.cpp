@@ -451,7 +451,6 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     // below is the writer's alone; the report's frames (this thread) measure clearances with their own
     // envelope object (ClearanceEnvelope keeps a search cache).
     std::vector<solver::LineSnapshot> stepSnapshot;
-    const VecX noReactions = VecX::Zero(m.dofs().fullDofCount());
     std::unique_ptr<contact::ClearanceEnvelope> frameEnvelope;
     if (envelope)
       frameEnvelope = std::make_unique<contact::ClearanceEnvelope>(
@@ -475,7 +474,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       writer.submit([&, steps = std::move(pendingSteps)] {
         for (const StepCopy& c : *steps) {
           // Ranges need no support reactions (as Simulation::sectionSnapshot, from the copy).
-          solver::computeLineResults(m, sim.assembler(), c.state, noReactions, stepSnapshot,
+          solver::computeLineResults(m, sim.assembler(), c.state, nullptr, stepSnapshot,
                                      solver::LineResultDetail::SectionForces);
           recorder.accumulate(stepSnapshot, c.dt);
           if (envelope) envelope->record(c.state);  // every step: the minimum must not fall between outputs

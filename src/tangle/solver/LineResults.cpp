@@ -41,12 +41,12 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce) {
   std::vector<LineSnapshot> out;
-  computeLineResults(model, assembler, state, fullForce, out);
+  computeLineResults(model, assembler, state, &fullForce, out);
   return out;
 }
 
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
-                        const VecX& fullForce, std::vector<LineSnapshot>& out, LineResultDetail detail) {
+                        const VecX* fullForce, std::vector<LineSnapshot>& out, LineResultDetail detail) {
   const bool all = detail == LineResultDetail::All;
   std::vector<element::BeamSectionForces> beamForces;
   const std::vector<double> tension = assembler.elementTension(state, &beamForces);
@@ -113,8 +113,8 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
     }
     // Support reactions: the out-of-balance force at a held end is the reaction on the line; the line
     // pulls its support with the opposite force.
-    s.endForceA = -fullForce.segment<3>(dofs.firstDof(line.firstNode));
-    s.endForceB = -fullForce.segment<3>(dofs.firstDof(line.lastNode()));
+    s.endForceA = fullForce ? Vec3(-fullForce->segment<3>(dofs.firstDof(line.firstNode))) : Vec3::Zero();
+    s.endForceB = fullForce ? Vec3(-fullForce->segment<3>(dofs.firstDof(line.lastNode()))) : Vec3::Zero();
     {
       const auto& els = model.elements();
       const int first = line.firstElement;

@@ -59,9 +59,10 @@ enum class LineResultDetail {
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce);
 /// The same into `out` (one snapshot per line; the vectors keep their capacity, so a caller that computes
-/// the results at every step allocates nothing after the first).
+/// the results at every step allocates nothing after the first). Without `fullForce` (null) the support
+/// reactions endForceA/B are zero (the section results come from the elements alone).
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
-                        const VecX& fullForce, std::vector<LineSnapshot>& out,
+                        const VecX* fullForce, std::vector<LineSnapshot>& out,
                         LineResultDetail detail = LineResultDetail::All);
 
 }  // namespace tangle::solver
