@@ -20,6 +20,16 @@ constexpr std::size_t kMinChunkValues = 4096;
 /// Deflate level: 4 is within a few percent of 9 in size on floating-point series and much faster.
 constexpr unsigned kDeflateLevel = 4;
 
+/// H5Dwrite of `count` doubles into `dataset`, stored in single precision when `single`. Rounded here:
+/// HDF5 would convert through a type-conversion buffer that it allocates and zeroes (1 MB) on every write
+/// (2 % of the mooring example, which writes a frame per output time).
+herr_t writeDoubles(hid_t dataset, hid_t memSpace, hid_t fileSpace, const double* data, std::size_t count,
+                    bool single) {
+  if (!single) return H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT, data);
+  const std::vector<float> rounded(data, data + count);
+  return H5Dwrite(dataset, H5T_NATIVE_FLOAT, memSpace, fileSpace, H5P_DEFAULT, rounded.data());
+}
+
 /// Closes an HDF5 identifier when it goes out of scope.
 class Id {
  public:
@@ -80,16 +90,9 @@ void Hdf5File::writeArray(const std::string& path, const std::vector<double>& da
                     H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
          H5Dclose);
   if (!set.valid()) fail("dataset " + path);
-  if (singlePrecision && !data.empty()) {
-    // Rounded here: HDF5 would convert through a type-conversion buffer that it allocates and zeroes (1 MB)
-    // on every write (2 % of the mooring example, which writes a frame per output time).
-    const std::vector<float> single(data.begin(), data.end());
-    if (H5Dwrite(set.get(), H5T_NATIVE_FLOAT, H5S_ALL, H5S_ALL, H5P_DEFAULT, single.data()) < 0)
-      fail("dataset " + path);
-  } else if (!data.empty() &&
-             H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) {
+  if (!data.empty() &&
+      writeDoubles(set.get(), H5S_ALL, H5S_ALL, data.data(), data.size(), singlePrecision) < 0)
     fail("dataset " + path);
-  }
   setAttribute(path, "units", units);
   setAttribute(path, "description", description);
 }
@@ -190,14 +193,9 @@ void Hdf5File::writeBuffered(Series& s) {
   Id fileSpace(H5Dget_space(s.dataset), H5Sclose);
   H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start.data(), nullptr, block.data(), nullptr);
   Id memSpace(H5Screate_simple(static_cast<int>(block.size()), block.data(), nullptr), H5Sclose);
-  herr_t status = 0;
-  if (s.singlePrecision) {
-    const std::vector<float> single(s.buffer.begin(), s.buffer.end());  // see writeArray
-    status = H5Dwrite(s.dataset, H5T_NATIVE_FLOAT, memSpace.get(), fileSpace.get(), H5P_DEFAULT, single.data());
-  } else {
-    status = H5Dwrite(s.dataset, H5T_NATIVE_DOUBLE, memSpace.get(), fileSpace.get(), H5P_DEFAULT, s.buffer.data());
-  }
-  if (status < 0) fail("dataset " + s.path);
+  if (writeDoubles(s.dataset, memSpace.get(), fileSpace.get(), s.buffer.data(), s.buffer.size(),
+                   s.singlePrecision) < 0)
+    fail("dataset " + s.path);
   s.written += count;
   s.buffer.clear();
 }
