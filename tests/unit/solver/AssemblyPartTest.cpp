@@ -74,15 +74,21 @@ void stir(model::State& s, const model::DofMap& dofs, unsigned seed) {
   }
 }
 
+/// A residual of the dynamics at time t [s] (no matrix), as the integrator's iterations request it.
+solver::AssemblyRequest dynamicResidual(double t) {
+  solver::AssemblyRequest request;
+  request.time = t;
+  request.dynamic = true;
+  request.wantMatrix = false;
+  return request;
+}
+
 void expectPartEqualsWhole(bool lumped, const std::vector<int>& moved) {
   analysis::Simulation sim(partModel(lumped));
   solver::Assembler& assembler = sim.assembler();
   const model::DofMap& dofs = sim.model().dofs();
   ASSERT_TRUE(assembler.supportsParts());
-  solver::AssemblyRequest request;
-  request.time = 3.7;
-  request.dynamic = true;
-  request.wantMatrix = false;
+  const solver::AssemblyRequest request = dynamicResidual(3.7);
 
   model::State before = sim.state();
   stir(before, dofs, 7);
@@ -210,10 +216,7 @@ TEST(AssemblyPart, EveryPartAllowedNextToAContactIsExact) {
   solver::Assembler& assembler = sim.assembler();
   const model::DofMap& dofs = sim.model().dofs();
   ASSERT_TRUE(assembler.supportsParts());
-  solver::AssemblyRequest request;
-  request.time = 1.0;
-  request.dynamic = true;
-  request.wantMatrix = false;
+  const solver::AssemblyRequest request = dynamicResidual(1.0);
   const model::State base = sim.state();
   VecX force;
   assembler.assemble(base, request, force, nullptr);  // finds this time's contact candidates
