@@ -206,13 +206,9 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     // unconverged state. Measured (theory manual 8.2): 0.5 saved most on the 200-bar mooring example but
     // cost 16 % more iterations on 800 bars, where the dropped corrections add up; 0.2 costs 1 % there.
     constexpr double kNegligibleCorrection = 0.2;
-    if (m_equationNode.size() != static_cast<std::size_t>(neq)) {
-      m_equationNode.resize(static_cast<std::size_t>(neq));
-      for (int i = 0; i < neq; ++i) m_equationNode[static_cast<std::size_t>(i)] = dofs.nodeOf(eqDofs[i]);
-    }
     m_movedMark.assign(static_cast<std::size_t>(nodes), 0);
     for (int i = 0; i < neq; ++i)
-      m_movedMark[static_cast<std::size_t>(m_equationNode[static_cast<std::size_t>(i)])] |= static_cast<char>(
+      m_movedMark[static_cast<std::size_t>(dofs.nodeOf(eqDofs[i]))] |= static_cast<char>(
           std::abs(m_delta[i] * m_kDiagonal[i]) * m_inverseAllowed[i] > kNegligibleCorrection);
     m_moved.clear();
     for (int n = 0; n < nodes; ++n)
@@ -225,7 +221,7 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     if (!m_moved.empty() && 2 * m_moved.size() <= static_cast<std::size_t>(nodes) &&
         m_assembler->selectPart(m_moved, m_part)) {
       for (int i = 0; i < neq; ++i)
-        if (m_movedMark[static_cast<std::size_t>(m_equationNode[static_cast<std::size_t>(i)])])
+        if (m_movedMark[static_cast<std::size_t>(dofs.nodeOf(eqDofs[i]))])
           dq[eqDofs[i]] += m_delta[i];
       if (m_debug) std::cerr << "      correction at " << m_moved.size() << " of " << nodes << " nodes\n";
       m_futileTries = 0;

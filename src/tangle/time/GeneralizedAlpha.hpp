@@ -120,7 +120,6 @@ class GeneralizedAlpha {
   // re-evaluated for them, a mark per node, and the diagonal of the factorised matrix [N/m, N m/rad].
   std::vector<int> m_moved;
   std::vector<char> m_movedMark;
-  std::vector<int> m_equationNode;  // node of each equation
   int m_futileTries = 0;            // corrections in a row that tried a part and found none
   int m_partsPaused = 0;            // corrections left that do not try (applyCorrection)
   solver::AssemblyPart m_part;
