@@ -202,14 +202,10 @@ bool LineContact::markLoadedNodes(std::vector<char>& mark) const {
       mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node2)] = 1;
     }
   };
+  // Every contact point and line-to-line sample comes from a candidate pair (findContacts' narrow phase).
   for (const CandidatePair& cp : m_candidates) {
     markAround(m_proxies[static_cast<std::size_t>(cp.first)].element);
     markAround(m_proxies[static_cast<std::size_t>(cp.second)].element);
-  }
-  // The contact points found (on candidate elements; their stencils' nodes, to be sure).
-  for (const ContactPoint& c : m_trial) {
-    markAround(c.elementA);
-    markAround(c.elementB);
   }
   return true;
 }
