@@ -314,7 +314,10 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   r.resize(neq);
   m_assembler->beginStep();
   // Iterations on a part: with a kept matrix (modified Newton) and forces local to elements and nodes.
-  const bool partsAllowed = m_modifiedNewton && !m_wholeAssembly && m_assembler->supportsParts();
+  // Not in dynamic relaxation (a statics method): there line contact's active set, which grows with every
+  // whole assembly of a step, took a different path with parts, and the lazy-wave SCR in contact of the
+  // statics trials (converged in 147 s with whole assemblies) no longer converged.
+  const bool partsAllowed = m_modifiedNewton && !m_wholeAssembly && !m_frozen && m_assembler->supportsParts();
   bool onPart = false;  // this iterate differs from the last evaluated one only at the nodes m_moved
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, or when the step size changed.
