@@ -13,6 +13,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#include <vector>
 
 #include "tangle/core/Types.hpp"
 #include "tangle/solver/SkylineLdlt.hpp"
@@ -41,6 +42,20 @@ class LinearSolver {
   void setNonSymmetric(bool nonSymmetric) {
     if (nonSymmetric != m_nonSymmetric) m_analysed = false;
     m_nonSymmetric = nonSymmetric;
+  }
+  /// Independent blocks of the last factorisation (SkylineLdlt::blockCount): consecutive equation ranges
+  /// not coupled to each other. With the general methods one block, the whole system.
+  int blockCount() const { return m_method == Method::Banded ? m_skyline.blockCount() : 1; }
+  /// First equation of block k (k = blockCount(): the equation count).
+  int blockStart(int k) const {
+    if (m_method == Method::Banded) return m_skyline.blockStart(k);
+    return k == 0 ? 0 : static_cast<int>(m_rows);
+  }
+  /// Overwrites the listed blocks' entries of b (ascending block indices) with those of the solution; the
+  /// others are left as they are. Solving all blocks is solveInPlace.
+  void solveBlocksInPlace(VecX& b, const std::vector<int>& blocks) const {
+    if (m_method == Method::Banded) m_skyline.solveBlocksInPlace(b, blocks);
+    else if (!blocks.empty()) solveInPlace(b);
   }
   /// True when the last factorisation is the banded one.
   bool usedBanded() const { return m_method == Method::Banded; }

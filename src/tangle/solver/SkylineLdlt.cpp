@@ -51,6 +51,19 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
       if (r == c) m_map[p] = -1 - r;
       else if (r > c) m_map[p] = static_cast<std::ptrdiff_t>(m_start[r] + static_cast<std::size_t>(c - m_first[r]));
     }
+  // Independent blocks: a block starts at b when no row at or after b reaches back before b (the factor
+  // keeps that structure: L has no entry outside the envelope).
+  m_blockStart.clear();
+  {
+    int reach = m_n;  // smallest first column of the rows from i on
+    std::vector<int> starts;
+    for (int i = m_n - 1; i >= 0; --i) {
+      reach = std::min(reach, m_first[i]);
+      if (reach == i) starts.push_back(i);
+    }
+    m_blockStart.assign(starts.rbegin(), starts.rend());
+    m_blockStart.push_back(m_n);
+  }
   // Cost: for each entry (i, j) of the envelope, a dot product over the overlap of rows i and j.
   m_cost = 0.0;
   for (int i = 0; i < m_n; ++i)
@@ -113,17 +126,30 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
   return true;
 }
 
-void SkylineLdlt::solveInPlace(VecX& b) const {
+void SkylineLdlt::solveInPlace(VecX& b) const { solveRange(b.data(), 0, m_n); }
+
+void SkylineLdlt::solveBlocksInPlace(VecX& b, const std::vector<int>& blocks) const {
+  // Consecutive blocks are solved as one range (the same arithmetic: no entry crosses a block boundary).
+  std::size_t k = 0;
+  while (k < blocks.size()) {
+    std::size_t last = k;
+    while (last + 1 < blocks.size() && blocks[last + 1] == blocks[last] + 1) ++last;
+    solveRange(b.data(), blockStart(blocks[k]), blockStart(blocks[last] + 1));
+    k = last + 1;
+  }
+}
+
+void SkylineLdlt::solveRange(double* x, int begin, int end) const {
   const double* v = m_values.data();
-  double* x = b.data();
   // Both substitutions as dot products in which the unknown found just before is held apart: the rest of
   // the row (unknowns found two or more rows earlier) is summed while that one is still being computed, so
   // the chain from one unknown to the next is a single multiply-add. Written as plain row (or column)
   // sweeps, each unknown waited for the store and reload of the previous one, or for a whole dot product:
   // the solve was latency-bound, 12 % of a mooring run.
-  // L y = b by rows of L, then z = D^-1 y.
+  // L y = b by rows of L, then z = D^-1 y. (Rows of [begin, end) reach no column before begin; the first
+  // row of a block has an empty row, so `previous` is never read across a block boundary.)
   double previous = 0.0;
-  for (int i = 0; i < m_n; ++i) {
+  for (int i = begin; i < end; ++i) {
     const std::ptrdiff_t rowI = rowBase(i);
     const int fi = m_first[i];
     double y = x[i];
@@ -134,20 +160,20 @@ void SkylineLdlt::solveInPlace(VecX& b) const {
     x[i] = y;
     previous = y;
   }
-  for (int i = 0; i < m_n; ++i) x[i] *= m_inverseDiagonal[i];
-  // L^T x = z by columns of L (rows of L^T), rows ascending within each column.
+  for (int i = begin; i < end; ++i) x[i] *= m_inverseDiagonal[i];
+  // L^T x = z by columns of L (rows of L^T), rows ascending within each column (all inside the range).
   const std::size_t* start = m_columnStart.data();
   const int* row = m_columnRow.data();
   const double* value = m_columnValue.data();
   double next = 0.0;
-  for (int i = m_n - 1; i >= 0; --i) {
+  for (int i = end - 1; i >= begin; --i) {
     std::size_t q = start[i];
-    const std::size_t end = start[i + 1];
+    const std::size_t stop = start[i + 1];
     double xi = x[i];
     double nextTerm = 0.0;
-    if (q < end && row[q] == i + 1) nextTerm = value[q++] * next;
+    if (q < stop && row[q] == i + 1) nextTerm = value[q++] * next;
     double sum = 0.0;
-    for (; q < end; ++q) sum += value[q] * x[row[q]];
+    for (; q < stop; ++q) sum += value[q] * x[row[q]];
     xi -= sum;
     xi -= nextTerm;
     x[i] = xi;

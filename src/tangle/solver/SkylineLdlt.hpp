@@ -37,7 +37,20 @@ class SkylineLdlt {
   /// Overwrites b with the solution x of K x = b.
   void solveInPlace(VecX& b) const;
 
+  /// Independent blocks of the analysed pattern: consecutive equation ranges [blockStart(k),
+  /// blockStart(k + 1)) with no entry coupling one block to another (lines not coupled to each other, e.g.
+  /// moorings with prescribed fairleads). K is block diagonal, so each block's part of x depends on its
+  /// part of b only. At least one block (the whole matrix) once analysed.
+  int blockCount() const { return static_cast<int>(m_blockStart.size()) - 1; }
+  /// First equation of block k; blockStart(blockCount()) is the equation count.
+  int blockStart(int k) const { return m_blockStart[static_cast<std::size_t>(k)]; }
+  /// Solves K x = b for the listed blocks only (ascending block indices): their entries of b become those
+  /// of x, the other entries are left as they are. The same arithmetic as solveInPlace on those entries.
+  void solveBlocksInPlace(VecX& b, const std::vector<int>& blocks) const;
+
  private:
+  /// The substitutions over equations [begin, end), a union of whole blocks.
+  void solveRange(double* x, int begin, int end) const;
   /// Offset o of row i such that entry (i, j) of L is m_values[o + j].
   std::ptrdiff_t rowBase(int i) const { return static_cast<std::ptrdiff_t>(m_start[i]) - m_first[i]; }
 
@@ -49,6 +62,7 @@ class SkylineLdlt {
   std::vector<std::ptrdiff_t> m_map;  // each stored value of the input: index in m_values, -1 - row for the
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
+  std::vector<int> m_blockStart;      // first equation of each independent block, then m_n
   // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1])) and
   // 1 / D, set by factorize for solveInPlace (the backward pass reads L by columns).
   std::vector<std::size_t> m_columnStart;

@@ -100,6 +100,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
     result.partIterations += o.partIterations;
+    result.blocksLeft += o.blocksLeft;
     bool rejected = false;
     if (o.converged && m_validator && !m_validator(before, state)) {
       // Converged but not acceptable (e.g. lines passed through each other): undo and cut.

@@ -14,6 +14,7 @@
 /// consistent treatment of the rotational inertia, which is tiny for slender lines).
 
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 #include "tangle/model/ModelSpec.hpp"
@@ -49,6 +50,7 @@ struct StepOutcome {
   bool converged = false;
   int iterations = 0;
   int partIterations = 0;  ///< of those, evaluated on a part of the model (Assembler::assemblePart)
+  int blocksLeft = 0;      ///< converged independent blocks not solved at a correction (solveCorrection)
   double residual = 0.0;  ///< last max out-of-balance force [N] of a failed step (0 for a converged one)
   int worstNode = -1;     ///< node with the largest out-of-balance force (of a failed step)
 };
@@ -95,6 +97,17 @@ class GeneralizedAlpha {
   /// kNegligibleCorrection of the allowed out-of-balance, when those are few (true: m_moved and m_part
   /// are set for an iteration on a part), else everywhere (false).
   bool applyCorrection(VecX& dq, bool partsAllowed);
+  /// Sets m_delta to the Newton correction for the out-of-balance r (equations) with the kept
+  /// factorisation, in the independent blocks of the matrix that have not converged (all of it when it is
+  /// one block, or with TANGLE_WHOLE_ASSEMBLY), and m_activeRanges to their equations; m_delta is not set
+  /// outside them. Returns the number of blocks left out.
+  int solveCorrection(const VecX& r);
+  /// Largest out-of-balance relative to what each equation is allowed (NaN if r holds a NaN); with
+  /// independent blocks in the kept matrix also each block's (m_blockRatio), recomputed on a part
+  /// (`onPart`) only for the blocks holding one of its nodes.
+  double residualRatio(const VecX& r, bool onPart);
+  /// True when m_blockStart is the kept matrix's block partition.
+  bool sameBlocks() const;
   /// Time at which loads and prescribed motions are evaluated for a state at time t [s].
   double environmentTime(double t) const { return m_frozen ? m_frozenTime : t; }
 
@@ -118,6 +131,11 @@ class GeneralizedAlpha {
   std::vector<bool> m_prescribedDof;
   // Iterations on a part (theory manual 8.2): the nodes the last correction moved, the part of the model
   // re-evaluated for them, a mark per node, and the diagonal of the factorised matrix [N/m, N m/rad].
+  std::vector<int> m_blockStart;       // block partition m_blockRatio is for (empty: one block)
+  std::vector<double> m_blockRatio;    // largest out-of-balance / allowed in each block
+  std::vector<char> m_blockTouched;    // work space of residualRatio
+  std::vector<int> m_activeBlocks;                   // blocks solved by the last solveCorrection
+  std::vector<std::pair<int, int>> m_activeRanges;   // their equations [begin, end), ascending
   std::vector<int> m_moved;
   std::vector<char> m_movedMark;
   int m_futileTries = 0;            // corrections in a row that tried a part and found none
@@ -126,7 +144,8 @@ class GeneralizedAlpha {
   VecX m_kDiagonal;
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
   bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
-  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: never iterate on a part (for comparison)
+  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: every iteration on the whole model: no part, every
+                                 // independent block solved (for comparison)
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   double m_factorStep = 0.0;     // the time step that factorisation was made for [s]

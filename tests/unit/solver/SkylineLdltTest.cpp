@@ -98,6 +98,78 @@ TEST(SkylineLdlt, ZeroPivotIsReportedNotSolved) {
   EXPECT_FALSE(s.factorize(k));
 }
 
+/// The matrices along the diagonal of one matrix, plus optional couplings (i, j) between them.
+SparseMatrix blockDiagonal(const std::vector<SparseMatrix>& blocks, const std::vector<std::pair<int, int>>& extra) {
+  std::vector<Triplet> t;
+  int offset = 0;
+  for (const SparseMatrix& b : blocks) {
+    for (int c = 0; c < b.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(b, c); it; ++it) t.emplace_back(offset + it.row(), offset + it.col(), it.value());
+    offset += static_cast<int>(b.rows());
+  }
+  for (const auto& [i, j] : extra) {
+    t.emplace_back(i, j, 0.1);
+    t.emplace_back(j, i, 0.1);
+  }
+  SparseMatrix k(offset, offset);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  return k;
+}
+
+TEST(SkylineLdlt, IndependentLinesAreBlocksSolvedAlone) {
+  // Three lines not coupled to each other (moorings with prescribed fairleads); the second has an arrow
+  // (its last node coupled to its first), which keeps it one block.
+  std::vector<std::pair<int, int>> arrow;
+  for (int i = 0; i < 3; ++i) arrow.emplace_back(39 * 3 + i, i);
+  const SparseMatrix k = blockDiagonal({lineMatrix(30, 3, {}, 11), lineMatrix(40, 3, arrow, 12),
+                                        lineMatrix(20, 3, {}, 13)}, {});
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_EQ(s.blockCount(), 3);
+  EXPECT_EQ(s.blockStart(0), 0);
+  EXPECT_EQ(s.blockStart(1), 90);
+  EXPECT_EQ(s.blockStart(2), 210);
+  EXPECT_EQ(s.blockStart(3), 270);
+  ASSERT_TRUE(s.factorize(k));
+  const VecX b = VecX::Random(270);
+  VecX whole = b;
+  s.solveInPlace(whole);
+  EXPECT_LT(relativeResidual(k, whole, b), 1e-13);
+  // Blocks 0 and 2: their entries are the whole solve's, bit for bit (the same arithmetic); block 1 keeps b.
+  VecX part = b;
+  s.solveBlocksInPlace(part, {0, 2});
+  for (int i = 0; i < 270; ++i) {
+    if (i >= 90 && i < 210) EXPECT_EQ(part[i], b[i]) << i;
+    else EXPECT_EQ(part[i], whole[i]) << i;
+  }
+  // Consecutive blocks in one call, and all blocks: the whole solve.
+  VecX all = b;
+  s.solveBlocksInPlace(all, {0, 1, 2});
+  EXPECT_EQ((all - whole).cwiseAbs().maxCoeff(), 0.0);
+  VecX last = b;
+  s.solveBlocksInPlace(last, {1, 2});
+  EXPECT_EQ((last.tail(180) - whole.tail(180)).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_EQ((last.head(90) - b.head(90)).cwiseAbs().maxCoeff(), 0.0);
+}
+
+TEST(SkylineLdlt, CouplingAcrossLinesJoinsTheBlocksBetween) {
+  // Lines 1 and 3 coupled (a contact): the envelope of line 3's rows reaches into line 1, so lines 1-3 are
+  // one block (blocks are ranges of equations); a fourth, free line stays a block of its own.
+  const SparseMatrix k = blockDiagonal(
+      {lineMatrix(10, 3, {}, 21), lineMatrix(10, 3, {}, 22), lineMatrix(10, 3, {}, 23), lineMatrix(10, 3, {}, 24)},
+      {{75, 3}});
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_EQ(s.blockCount(), 2);
+  EXPECT_EQ(s.blockStart(1), 90);
+  ASSERT_TRUE(s.factorize(k));
+  const VecX b = VecX::Random(120);
+  VecX x = b;
+  s.solveBlocksInPlace(x, {0, 1});
+  EXPECT_LT(relativeResidual(k, x, b), 1e-13);
+}
+
 TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {
   // A band: the banded method.
   const SparseMatrix band = lineMatrix(200, 3, {}, 4);
@@ -119,6 +191,20 @@ TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {
   solver::LinearSolver general(false);
   ASSERT_TRUE(general.factorize(band));
   EXPECT_FALSE(general.usedBanded());
+  // Blocks: the banded method reports the envelope's; the general method one block, the whole system,
+  // and solving it (its only block) is the whole solve.
+  EXPECT_EQ(banded.blockCount(), 1);
+  EXPECT_EQ(general.blockCount(), 1);
+  EXPECT_EQ(general.blockStart(0), 0);
+  EXPECT_EQ(general.blockStart(1), 600);
+  VecX x = b;
+  general.solveBlocksInPlace(x, {0});
+  EXPECT_LT(relativeResidual(band, x, b), 1e-12);
+  const SparseMatrix two = blockDiagonal({lineMatrix(50, 3, {}, 6), lineMatrix(50, 3, {}, 7)}, {});
+  ASSERT_TRUE(banded.factorize(two));
+  ASSERT_TRUE(banded.usedBanded());
+  EXPECT_EQ(banded.blockCount(), 2);
+  EXPECT_EQ(banded.blockStart(1), 150);
 }
 
 TEST(LinearSolver, SingularMatrixFallsBackAndReportsFailure) {
