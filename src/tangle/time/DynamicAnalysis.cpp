@@ -101,6 +101,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     result.newtonIterations += o.iterations;
     result.partIterations += o.partIterations;
     result.blocksLeft += o.blocksLeft;
+    result.matrixRefreshes += o.refreshes;
     bool rejected = false;
     if (o.converged && m_validator && !m_validator(before, state)) {
       // Converged but not acceptable (e.g. lines passed through each other): undo and cut.

@@ -51,6 +51,7 @@ struct StepOutcome {
   int iterations = 0;
   int partIterations = 0;  ///< of those, evaluated on a part of the model (Assembler::assemblePart)
   int blocksLeft = 0;      ///< converged independent blocks not solved at a correction (solveCorrection)
+  int refreshes = 0;       ///< iteration matrices assembled and factorised in this step
   double residual = 0.0;  ///< last max out-of-balance force [N] of a failed step (0 for a converged one)
   int worstNode = -1;     ///< node with the largest out-of-balance force (of a failed step)
 };
@@ -102,6 +103,9 @@ class GeneralizedAlpha {
   /// one block, or with TANGLE_WHOLE_ASSEMBLY), and m_activeRanges to their equations; m_delta is not set
   /// outside them. Returns the number of blocks left out.
   int solveCorrection(const VecX& r);
+  /// After a converged step: whether the next step refreshes the kept matrix (m_refreshDue), from the
+  /// residual evaluations of the steps since the last refresh (`refreshed`: this step made one).
+  void planRefresh(const StepOutcome& outcome, bool refreshed);
   /// Largest out-of-balance relative to what each equation is allowed (NaN if r holds a NaN); with
   /// independent blocks in the kept matrix also each block's (m_blockRatio), recomputed on a part
   /// (`onPart`) only for the blocks holding one of its nodes.
@@ -149,6 +153,10 @@ class GeneralizedAlpha {
                                  // independent block solved (for comparison)
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
+  int m_stepsSinceRefresh = 0;            // converged steps with the kept matrix (planRefresh)
+  double m_evaluationsSinceRefresh = 0.0;  // their residual evaluations (parts count half)
+  double m_recentEvaluations = 0.0;        // smoothed evaluations of the latest steps
+  bool m_refreshDue = false;               // the next step refreshes the matrix
   double m_factorStep = 0.0;     // the time step that factorisation was made for [s]
   double m_lastStep = 0.0;       // the last converged step [s]
   bool m_frozen = false;         // freezeEnvironment was called

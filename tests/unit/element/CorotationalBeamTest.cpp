@@ -246,11 +246,11 @@ TEST(CorotationalBeamTest, InternalForceIsGradientOfStrainEnergy) {
   }
 }
 
-// Source: the closed-form force (analyticForce, used when no tangent is requested) and the automatic
-// derivative of the same energy (the tangent path) are two evaluations of one gradient, so they must agree
-// to round-off: 1e-12 of max|f| for a steel riser section (EA / EI ~ 250 m^-2, so the axial and bending
-// parts differ by orders of magnitude), local rotations from 1e-9 rad (the series branch of the inverse
-// Jacobian) to 1.2 rad, after rigid rotations up to pi.
+// Source: the closed-form force (analyticForce) and the automatic derivative of the energy by second-order
+// jets (referenceTangent) are two evaluations of one gradient, so they must agree to round-off: 1e-12 of
+// max|f| for a steel riser section (EA / EI ~ 250 m^-2, so the axial and bending parts differ by orders of
+// magnitude), local rotations from 1e-9 rad (the series branch of the inverse Jacobian) to 1.2 rad, after
+// rigid rotations up to pi. The tangent path (compute with a tangent) gives the closed-form force too.
 TEST(CorotationalBeamTest, ClosedFormForceEqualsAutomaticDerivative) {
   const CorotationalBeam beam(kRiserProps, kL0);
   std::mt19937 rng(2026);
@@ -259,9 +259,46 @@ TEST(CorotationalBeamTest, ClosedFormForceEqualsAutomaticDerivative) {
       const State s = randomState(rng, 1e-3, angle);
       const Vec12 f = forceOf(beam, s);
       Vec12 fAd;
-      tangentOf(beam, s, &fAd);
+      Mat12 kAd;
+      beam.referenceTangent(s.x1, s.q1, s.x2, s.q2, fAd, kAd);
       EXPECT_LE((f - fAd).cwiseAbs().maxCoeff(), 1e-12 * fAd.cwiseAbs().maxCoeff() + 1e-300)
           << "local angle " << angle;
+      Vec12 fTangentPath;
+      tangentOf(beam, s, &fTangentPath);
+      EXPECT_LE((f - fTangentPath).cwiseAbs().maxCoeff(), 1e-14 * f.cwiseAbs().maxCoeff() + 1e-300);
+    }
+  }
+}
+
+// Source: compute's tangent is the symmetric part of the closed-form force differentiated by first-order
+// jets; referenceTangent is the Hessian of the energy by second-order jets. By the Baker-Campbell-Hausdorff
+// formula the force's derivative is the Hessian plus skew terms, so the two must agree to round-off,
+// here 1e-13 of max|K| (measured: at most 1.1e-15), for comparable axial, bending and torsion stiffnesses
+// (unit section) and for the riser section, whose rotation blocks (bending, torsion; 1e-3 of its axial
+// entries) are also compared against their own largest entry (1e-12), at local rotations from 0 (the series
+// of the inverse Jacobian's factor and of its slope) over 0.05 rad (their switch to the closed forms) to
+// 1.2 rad.
+TEST(CorotationalBeamTest, TangentEqualsReferenceHessian) {
+  std::mt19937 rng(4711);
+  for (const BeamProperties& props : {kUnitProps, kRiserProps}) {
+    const CorotationalBeam beam(props, kL0);
+    for (double angle : {0.0, 1e-9, 1e-4, 0.03, 0.049, 0.051, 0.07, 0.3, 1.2}) {
+      for (int k = 0; k < 20; ++k) {
+        const State s = randomState(rng, 1e-3, angle);
+        Vec12 f, fRef;
+        Mat12 kRef;
+        const Mat12 kNew = tangentOf(beam, s, &f);
+        beam.referenceTangent(s.x1, s.q1, s.x2, s.q2, fRef, kRef);
+        EXPECT_EQ(kNew, kNew.transpose());
+        EXPECT_LE(maxAbs(kNew - kRef), 1e-13 * maxAbs(kRef)) << "local angle " << angle;
+        // The rotation-rotation blocks (bending and torsion) against their own scale.
+        for (const int b : {3, 9}) {
+          const Mat3 blockRef = kRef.block<3, 3>(b, b);
+          EXPECT_LE((kNew.block<3, 3>(b, b) - blockRef).cwiseAbs().maxCoeff(),
+                    1e-12 * blockRef.cwiseAbs().maxCoeff() + 1e-300)
+              << "local angle " << angle << " block " << b;
+        }
+      }
     }
   }
 }
