@@ -64,6 +64,26 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
     m_blockStart.assign(starts.rbegin(), starts.rend());
     m_blockStart.push_back(m_n);
   }
+  // The envelope by columns (rows ascending within a column) for the backward substitution: its
+  // structure here, the values copied by factorize.
+  m_columnStart.assign(static_cast<std::size_t>(m_n) + 1, 0);
+  for (int i = 0; i < m_n; ++i)
+    for (int j = m_first[i]; j < i; ++j) ++m_columnStart[static_cast<std::size_t>(j) + 1];
+  for (int j = 0; j < m_n; ++j) m_columnStart[j + 1] += m_columnStart[j];
+  m_columnRow.resize(m_values.size());
+  m_columnSource.resize(m_values.size());
+  m_columnValue.assign(m_values.size(), 0.0);
+  {
+    std::vector<std::size_t> next(m_columnStart.begin(), m_columnStart.end() - 1);
+    for (int i = 0; i < m_n; ++i) {
+      const std::ptrdiff_t rowI = rowBase(i);
+      for (int j = m_first[i]; j < i; ++j) {
+        const std::size_t q = next[static_cast<std::size_t>(j)]++;
+        m_columnRow[q] = i;
+        m_columnSource[q] = static_cast<std::size_t>(rowI + j);
+      }
+    }
+  }
   // Cost: for each entry (i, j) of the envelope, a dot product over the overlap of rows i and j.
   m_cost = 0.0;
   for (int i = 0; i < m_n; ++i)
@@ -105,22 +125,9 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
     if (!(std::abs(d) > tiny)) return false;  // also NaN
     m_diagonal[i] = d;
   }
-  // L by columns for the backward substitution (see solveInPlace) and 1 / D.
-  m_columnStart.assign(static_cast<std::size_t>(m_n) + 1, 0);
-  for (int i = 0; i < m_n; ++i)
-    for (int j = m_first[i]; j < i; ++j) ++m_columnStart[static_cast<std::size_t>(j) + 1];
-  for (int j = 0; j < m_n; ++j) m_columnStart[j + 1] += m_columnStart[j];
-  m_columnRow.resize(m_values.size());
-  m_columnValue.resize(m_values.size());
-  std::vector<std::size_t> next(m_columnStart.begin(), m_columnStart.end() - 1);
-  for (int i = 0; i < m_n; ++i) {
-    const std::ptrdiff_t rowI = rowBase(i);
-    for (int j = m_first[i]; j < i; ++j) {
-      const std::size_t q = next[static_cast<std::size_t>(j)]++;
-      m_columnRow[q] = i;
-      m_columnValue[q] = v[rowI + j];
-    }
-  }
+  // L by columns for the backward substitution (see solveInPlace; the structure is the pattern's, set by
+  // analyzePattern) and 1 / D.
+  for (std::size_t q = 0; q < m_columnValue.size(); ++q) m_columnValue[q] = v[m_columnSource[q]];
   m_inverseDiagonal.resize(m_n);
   for (int i = 0; i < m_n; ++i) m_inverseDiagonal[i] = 1.0 / m_diagonal[i];
   return true;

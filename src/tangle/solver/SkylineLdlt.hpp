@@ -63,11 +63,13 @@ class SkylineLdlt {
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
   std::vector<int> m_blockStart;      // first equation of each independent block, then m_n
-  // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1])) and
-  // 1 / D, set by factorize for solveInPlace (the backward pass reads L by columns).
+  // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1]); the
+  // structure set by analyzePattern, the values by factorize) and
+  // 1 / D, for solveInPlace (the backward pass reads L by columns).
   std::vector<std::size_t> m_columnStart;
   std::vector<int> m_columnRow;
   std::vector<double> m_columnValue;
+  std::vector<std::size_t> m_columnSource;  // index in m_values of each column-ordered entry
   std::vector<double> m_inverseDiagonal;
 };
 

@@ -10,19 +10,34 @@
 
 namespace tangle::solver {
 
-/// Triplet collector over equation numbers.
+/// Sparse matrix assembly over equation numbers, in two modes (issue 8: rebuilding the matrix cost more
+/// than factorising it):
+/// - recording: every add() is kept as a triplet and the (row, column) of every call in order; build()
+///   sums the triplets (setFromTriplets) and remembers, for each call, where its entry lies in the built
+///   matrix's value array;
+/// - replaying: after a build, the next assembly usually makes the same calls in the same order (elements do
+///   not change, contacts rarely). Each add() is then checked against the recorded call and its value
+///   summed straight into that position; build() copies the values. The values are summed in call order
+///   either way, so both modes give the same matrix bit for bit. A call that differs from the recorded one
+///   (a contact appears, a pattern changes) turns the assembly back into recording, with the entries
+///   summed so far as triplets.
 class SystemMatrix {
  public:
   explicit SystemMatrix(const model::DofMap& dofs) : m_dofs(&dofs) {}
-  /// Removes all entries (keeps capacity).
-  void clear() { m_triplets.clear(); }
+  /// Starts a new assembly: no entries (keeps capacity; replays the last recorded sequence if any).
+  void clear();
   /// Adds v at (full DOF row, full DOF column); ignored when either DOF is constrained.
   void add(int row, int col, double v) {
-    const int r = m_dofs->equation(row);
-    const int c = m_dofs->equation(col);
-    // Exact zeros are kept: dropping them would make the sparsity pattern depend on the values (e.g.
-    // two grounded nodes at the same height) and force a new symbolic factorisation.
-    if (r >= 0 && c >= 0) m_triplets.emplace_back(r, c, v);
+    // The replayed call inline (a few loads and one sum); anything else out of line.
+    if (m_cursor < m_replayCount) {
+      const Call& c = m_calls[m_cursor];
+      if (c.row == row && c.col == col) {
+        ++m_cursor;
+        if (c.position >= 0) m_values[static_cast<std::size_t>(c.position)] += v;
+        return;
+      }
+    }
+    addRecorded(row, col, v);
   }
   /// Adds a dense block: rows/cols are the full DOF indices of the block's rows/columns.
   template <class Derived>
@@ -39,21 +54,38 @@ class SystemMatrix {
     for (int j = 0; j < 3; ++j)
       for (int i = 0; i < 3; ++i) add(rowFirst + i, colFirst + j, scale * m(i, j));
   }
-  /// Builds the compressed sparse matrix (duplicates summed). When the entries come in the same
-  /// positions as at the last build into the same matrix (the usual case: elements do not change,
-  /// contacts rarely), the values are scattered into the existing pattern through a map computed once,
-  /// instead of sorting the triplets again (issue 8: the rebuild cost more than the factorisation).
-  void build(SparseMatrix& out) const;
-  const std::vector<Triplet>& triplets() const { return m_triplets; }
+  /// Builds the compressed sparse matrix of this assembly (duplicates summed; may be called more than once,
+  /// into any matrix).
+  void build(SparseMatrix& out);
+  /// True while the current assembly replays the recorded sequence (for tests).
+  bool replaying() const { return m_replaying; }
 
  private:
+  /// One call of the sequence: full DOF row and column, and the position of its entry in the recorded
+  /// matrix's value array (-1: a constrained DOF; set by build).
+  struct Call {
+    int row;
+    int col;
+    int position;
+  };
+  /// add() outside a replay: leaves the replay if one was running (the call differs from the recorded
+  /// one), then keeps the call and, unless a DOF is constrained, a triplet.
+  [[gnu::noinline]] void addRecorded(int row, int col, double v);
+  /// Leaves replaying at the current call: the calls replayed so far stay in the sequence and their
+  /// summed entries become triplets.
+  void startRecording();
+
   const model::DofMap* m_dofs;
-  std::vector<Triplet> m_triplets;
-  // Scatter cache of the last build: the (row, column) of every triplet, its index in the value array
-  // of `m_built`, and that matrix's number of non-zeros.
-  mutable std::vector<int> m_rows, m_cols, m_scatter;
-  mutable const SparseMatrix* m_built = nullptr;
-  mutable Eigen::Index m_builtNonZeros = -1;
+  bool m_replaying = false;
+  std::size_t m_cursor = 0;       // next call of the sequence (replaying)
+  std::size_t m_replayCount = 0;  // calls to replay (0 while recording)
+  std::vector<Call> m_calls;      // every call, in order
+  std::vector<Triplet> m_triplets;  // recording: the entries
+  // The recorded sequence's matrix: pattern (compressed columns) and the values summed while replaying;
+  // m_recorded once a build ended a sequence.
+  std::vector<int> m_outer, m_inner;
+  std::vector<double> m_values;
+  bool m_recorded = false;
 };
 
 }  // namespace tangle::solver

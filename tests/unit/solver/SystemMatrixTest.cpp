@@ -1,7 +1,7 @@
-// SystemMatrix::build: the scatter map reused for entries in the same order must give exactly the
-// matrix a fresh setFromTriplets gives, and a changed pattern, a changed entry order or another target
-// matrix must fall back to a full build (issue 8). Exact equality: the values are summed in the same
-// order either way.
+// SystemMatrix: an assembly that replays the recorded sequence of calls (values summed straight into the
+// built matrix's positions) must give exactly the matrix a fresh assembly gives, and a changed pattern, a
+// changed entry order, fewer calls or another target matrix must still give it (issue 8). Exact equality:
+// the values are summed in the same order either way.
 
 #include <gtest/gtest.h>
 
@@ -21,13 +21,7 @@ model::DofMap threeNodes() {
   return dofs;
 }
 
-Eigen::MatrixXd fresh(const solver::SystemMatrix& m, int n) {
-  SparseMatrix k(n, n);
-  k.setFromTriplets(m.triplets().begin(), m.triplets().end());
-  return Eigen::MatrixXd(k);
-}
-
-void fill(solver::SystemMatrix& m, double scale, bool extra) {
+void fill(solver::SystemMatrix& m, double scale, bool extra, bool reordered = false, bool fewer = false) {
   m.clear();
   Mat3 block;
   block << 4, 1, 0, 1, 5, 2, 0, 2, 6;
@@ -35,33 +29,70 @@ void fill(solver::SystemMatrix& m, double scale, bool extra) {
   m.add3x3(3, 3, block);
   m.add3x3(0, 3, scale * block);  // duplicates summed with the next one
   m.add3x3(0, 3, block);
-  m.add3x3(3, 0, block.transpose());
+  if (reordered) {
+    m.add3x3(6, 6, block);
+    m.add3x3(3, 0, block.transpose());
+  } else {
+    m.add3x3(3, 0, block.transpose());
+    if (!fewer) m.add3x3(6, 6, block);
+  }
   if (extra) m.add3x3(6, 3, 2.0 * block);
 }
 
-TEST(SystemMatrix, ReusedPatternGivesTheSameMatrixAsAFreshBuild) {
+/// The same assembly in a new SystemMatrix (recorded from scratch, built by setFromTriplets).
+Eigen::MatrixXd fresh(const model::DofMap& dofs, double scale, bool extra, bool reordered = false,
+                      bool fewer = false) {
+  solver::SystemMatrix m(dofs);
+  fill(m, scale, extra, reordered, fewer);
+  EXPECT_FALSE(m.replaying());
+  SparseMatrix k;
+  m.build(k);
+  return Eigen::MatrixXd(k);
+}
+
+TEST(SystemMatrix, ReplayedAssemblyGivesTheSameMatrixAsAFreshOne) {
   const model::DofMap dofs = threeNodes();
-  const int n = dofs.equationCount();
   solver::SystemMatrix m(dofs);
   SparseMatrix k;
   fill(m, 1.0, false);
+  EXPECT_FALSE(m.replaying());
   m.build(k);
-  EXPECT_EQ(Eigen::MatrixXd(k), fresh(m, n));
-  // Same entries, new values: scattered into the existing pattern.
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 1.0, false));
+  // Same calls, new values: replayed into the existing pattern.
   fill(m, -3.5, false);
+  EXPECT_TRUE(m.replaying());
   m.build(k);
-  EXPECT_EQ(Eigen::MatrixXd(k), fresh(m, n));
-  // A new entry (the pattern grows): a full build.
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, -3.5, false));
+  // A new entry at the end (the pattern grows): recorded again from there.
   fill(m, 2.0, true);
+  EXPECT_FALSE(m.replaying());
   m.build(k);
-  EXPECT_EQ(Eigen::MatrixXd(k), fresh(m, n));
-  // Back to the smaller pattern, and into another matrix object.
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 2.0, true));
+  fill(m, 2.5, true);
+  EXPECT_TRUE(m.replaying());
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 2.5, true));
+  // Fewer calls (the last block left out): the shorter sequence, the smaller pattern.
   fill(m, 7.0, false);
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 7.0, false));
+  // Into another matrix object, then into the first one, from one assembly.
+  fill(m, 1.5, false);
+  EXPECT_TRUE(m.replaying());
   SparseMatrix other;
   m.build(other);
-  EXPECT_EQ(Eigen::MatrixXd(other), fresh(m, n));
+  EXPECT_EQ(Eigen::MatrixXd(other), fresh(dofs, 1.5, false));
   m.build(k);
-  EXPECT_EQ(Eigen::MatrixXd(k), fresh(m, n));
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 1.5, false));
+  // The same entries in another order: recorded again at the first call that differs.
+  fill(m, 0.5, false, true);
+  EXPECT_FALSE(m.replaying());
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 0.5, false, true));
+  // A sequence that stops early.
+  fill(m, 0.5, false, false, true);
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 0.5, false, false, true));
 }
 
 }  // namespace
