@@ -31,7 +31,8 @@ struct ElementState {
 
 ElementState deformedState() {
   const Mat3 rigid = tangle::geometry::expMap(Vec3(0.4, -1.1, 0.7));
-  const Mat3 frame = tangle::geometry::frameFromTangent(Vec3(1.0, 0.2, -0.1).normalized(), Vec3(0.0, 0.0, 1.0));
+  const Mat3 frame =
+      tangle::geometry::frameFromTangent(Vec3(1.0, 0.2, -0.1).normalized(), Vec3(0.0, 0.0, 1.0));
   ElementState s;
   s.x1 = Vec3(10.0, -3.0, -150.0);
   s.x2 = s.x1 + rigid * (3.3 * Vec3(1.0, 0.2, -0.1).normalized());

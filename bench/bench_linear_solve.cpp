@@ -78,9 +78,9 @@ void runSolve(benchmark::State& state, const SparseMatrix& k) {
     benchmark::ClobberMemory();
   }
   state.counters["equations"] = static_cast<double>(k.rows());
-  state.counters["ns_per_equation"] = benchmark::Counter(static_cast<double>(k.rows()),
-                                                         benchmark::Counter::kIsIterationInvariantRate |
-                                                             benchmark::Counter::kInvert);
+  state.counters["ns_per_equation"] =
+      benchmark::Counter(static_cast<double>(k.rows()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
 void BM_SkylineSolveBarLine(benchmark::State& state) {

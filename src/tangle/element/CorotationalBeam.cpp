@@ -231,7 +231,9 @@ double inverseJacobianFactorSlope(double theta) {
 }
 
 /// a(|phi|) of inverseJacobianFactor for a plain vector.
-double inverseJacobianFactorOf(const V3<double>& phi) { return inverseJacobianFactor(std::sqrt(dot(phi, phi))); }
+double inverseJacobianFactorOf(const V3<double>& phi) {
+  return inverseJacobianFactor(std::sqrt(dot(phi, phi)));
+}
 
 /// a(|phi|) as a jet, through s = phi . phi (so that it stays differentiable at phi = 0).
 template <int N, int Order>
@@ -366,7 +368,8 @@ void CorotationalBeam::compute(const Vec3& x1, const Mat3& q1, const Vec3& x2, c
   // A quarter of the work of the energy's second-order jets (referenceTangent), which were 58 % of a
   // drilling-riser run with a matrix refresh at every step.
   const Vec3 dv = x2 - x1;
-  const V3<ForceJet> d{ForceJet::variable(dv.x(), 0), ForceJet::variable(dv.y(), 1), ForceJet::variable(dv.z(), 2)};
+  const V3<ForceJet> d{ForceJet::variable(dv.x(), 0), ForceJet::variable(dv.y(), 1),
+                       ForceJet::variable(dv.z(), 2)};
   const ForceTerms<ForceJet> t = forceTerms(d, q1, q2, m_props, m_l0);
   // Force (and its jet) of each energy variable: dE/dd, dE/dtheta1, dE/dtheta2.
   const std::array<const ForceJet*, kNumVars> byVariable{&t.d[0],      &t.d[1],      &t.d[2],

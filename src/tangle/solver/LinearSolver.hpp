@@ -54,8 +54,10 @@ class LinearSolver {
   /// Overwrites the listed blocks' entries of b (ascending block indices) with those of the solution; the
   /// others are left as they are. Solving all blocks is solveInPlace.
   void solveBlocksInPlace(VecX& b, const std::vector<int>& blocks) const {
-    if (m_method == Method::Banded) m_skyline.solveBlocksInPlace(b, blocks);
-    else if (!blocks.empty()) solveInPlace(b);
+    if (m_method == Method::Banded)
+      m_skyline.solveBlocksInPlace(b, blocks);
+    else if (!blocks.empty())
+      solveInPlace(b);
   }
   /// True when the last factorisation is the banded one.
   bool usedBanded() const { return m_method == Method::Banded; }

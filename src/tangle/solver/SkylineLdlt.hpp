@@ -62,7 +62,7 @@ class SkylineLdlt {
   std::vector<std::ptrdiff_t> m_map;  // each stored value of the input: index in m_values, -1 - row for the
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
-  std::vector<int> m_blockStart;      // first equation of each independent block, then m_n
+  std::vector<int> m_blockStart;  // first equation of each independent block, then m_n
   // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1]); the
   // structure set by analyzePattern, the values by factorize) and
   // 1 / D, for solveInPlace (the backward pass reads L by columns).

@@ -9,8 +9,10 @@ void SystemMatrix::clear() {
   m_cursor = 0;
   m_replaying = m_recorded;
   m_replayCount = m_replaying ? m_calls.size() : 0;
-  if (m_replaying) std::fill(m_values.begin(), m_values.end(), 0.0);
-  else m_calls.clear();
+  if (m_replaying)
+    std::fill(m_values.begin(), m_values.end(), 0.0);
+  else
+    m_calls.clear();
 }
 
 void SystemMatrix::addRecorded(int row, int col, double v) {

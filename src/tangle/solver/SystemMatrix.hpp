@@ -77,9 +77,9 @@ class SystemMatrix {
 
   const model::DofMap* m_dofs;
   bool m_replaying = false;
-  std::size_t m_cursor = 0;       // next call of the sequence (replaying)
-  std::size_t m_replayCount = 0;  // calls to replay (0 while recording)
-  std::vector<Call> m_calls;      // every call, in order
+  std::size_t m_cursor = 0;         // next call of the sequence (replaying)
+  std::size_t m_replayCount = 0;    // calls to replay (0 while recording)
+  std::vector<Call> m_calls;        // every call, in order
   std::vector<Triplet> m_triplets;  // recording: the entries
   // The recorded sequence's matrix: pattern (compressed columns) and the values summed while replaying;
   // m_recorded once a build ended a sequence.

@@ -88,7 +88,8 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
   m_equationNode.resize(static_cast<std::size_t>(dofs.equationCount()));
-  for (int i = 0; i < dofs.equationCount(); ++i) m_equationNode[static_cast<std::size_t>(i)] = dofs.nodeOf(dofs.equationDofs()[i]);
+  for (int i = 0; i < dofs.equationCount(); ++i)
+    m_equationNode[static_cast<std::size_t>(i)] = dofs.nodeOf(dofs.equationDofs()[i]);
   m_prescribedDof.assign(dofs.fullDofCount(), false);
   for (const PrescribedNode& p : m_prescribed) {
     const int d = dofs.firstDof(p.node);
@@ -214,8 +215,8 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     m_moved.clear();
     for (const auto& [begin, end] : m_activeRanges) {
       for (int i = begin; i < end; ++i)
-        m_movedMark[static_cast<std::size_t>(m_equationNode[i])] |=
-            static_cast<char>(std::abs(m_delta[i] * m_kDiagonal[i]) * m_inverseAllowed[i] > kNegligibleCorrection);
+        m_movedMark[static_cast<std::size_t>(m_equationNode[i])] |= static_cast<char>(
+            std::abs(m_delta[i] * m_kDiagonal[i]) * m_inverseAllowed[i] > kNegligibleCorrection);
       for (int n = m_equationNode[begin]; n <= m_equationNode[end - 1]; ++n)
         if (m_movedMark[static_cast<std::size_t>(n)]) m_moved.push_back(n);
     }
@@ -279,7 +280,8 @@ double GeneralizedAlpha::residualRatio(const VecX& r, bool onPart) {
       for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
         const int eq = dofs.equation(dof);
         if (eq < 0) continue;
-        const auto k = std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
+        const auto k =
+            std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
         m_blockTouched[static_cast<std::size_t>(k)] = 1;
         break;
       }
@@ -324,8 +326,10 @@ int GeneralizedAlpha::solveCorrection(const VecX& r) {
     if (!(m_blockRatio[static_cast<std::size_t>(k)] <= 1.0)) {
       m_activeBlocks.push_back(k);
       m_delta.segment(begin, end - begin) = -r.segment(begin, end - begin);
-      if (!m_activeRanges.empty() && m_activeRanges.back().second == begin) m_activeRanges.back().second = end;
-      else m_activeRanges.emplace_back(begin, end);
+      if (!m_activeRanges.empty() && m_activeRanges.back().second == begin)
+        m_activeRanges.back().second = end;
+      else
+        m_activeRanges.emplace_back(begin, end);
     } else if (m_debug) {
       m_delta.segment(begin, end - begin).setZero();
     }
@@ -465,7 +469,8 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
         const int d = dofs.firstDof(node);
         for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
           double c = (1.0 - p.alphaM) * state.acceleration[dof] + p.alphaM * a0[dof];
-          if (rayleighAlpha > 0.0) c += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity[dof] + p.alphaF * v0[dof]);
+          if (rayleighAlpha > 0.0)
+            c += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity[dof] + p.alphaF * v0[dof]);
           combo[dof] = c;
         }
       }
@@ -565,13 +570,13 @@ void GeneralizedAlpha::planRefresh(const StepOutcome& outcome, bool refreshed) {
   // step with a matrix made at every step's predictor, 3.6 with one kept as long as it converges 4x per
   // iteration). A refresh costs about kRefreshCost evaluations (measured on the mooring example: 2.8 with
   // the replayed matrix assembly, 4.7 before it; the times of that example and of the drilling riser
-  // differ by under 2 % for any value from 2 to 5, against 7 % and 17 % without the rule). Keeping the matrix for n steps that
-  // take I_1..I_n evaluations costs (kRefreshCost + sum I_k) / n per step; that average is least when
-  // the evaluations of the latest steps reach it (the renewal rule of replacement theory, e.g. Ross 1996,
-  // "Stochastic processes", sec. 3.6), so the matrix is refreshed at the next step from then on. The
-  // latest steps' count is smoothed (exponential average over about 3 steps); a step on a part counts half
-  // (its assembly is local, its solve whole). Not in dynamic relaxation (statics), where the matrix keeps
-  // the old rule (line contact's active set follows the iteration path there).
+  // differ by under 2 % for any value from 2 to 5, against 7 % and 17 % without the rule). Keeping the matrix
+  // for n steps that take I_1..I_n evaluations costs (kRefreshCost + sum I_k) / n per step; that average is
+  // least when the evaluations of the latest steps reach it (the renewal rule of replacement theory, e.g.
+  // Ross 1996, "Stochastic processes", sec. 3.6), so the matrix is refreshed at the next step from then on.
+  // The latest steps' count is smoothed (exponential average over about 3 steps); a step on a part counts
+  // half (its assembly is local, its solve whole). Not in dynamic relaxation (statics), where the matrix
+  // keeps the old rule (line contact's active set follows the iteration path there).
   constexpr double kRefreshCost = 3.0;
   constexpr double kSmoothing = 0.3;
   const double evaluations = outcome.iterations - 0.5 * outcome.partIterations;

@@ -120,7 +120,7 @@ class GeneralizedAlpha {
   std::vector<PrescribedNode> m_prescribed;
   AlphaParameters m_params;
   std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
-  std::vector<int> m_equationNode;      // node of each equation
+  std::vector<int> m_equationNode;  // node of each equation
   std::vector<int> m_constrainedDofs;  // full DOFs without an equation
   VecX m_delta;                     // Newton correction of the equations [m, rad]
   VecX m_inverseAllowed;                   // 1 / allowed out-of-balance of each equation this step [1/N or 1/(N m)]
@@ -136,11 +136,11 @@ class GeneralizedAlpha {
   std::vector<bool> m_prescribedDof;
   // Iterations on a part (theory manual 8.2): the nodes the last correction moved, the part of the model
   // re-evaluated for them, a mark per node, and the diagonal of the factorised matrix [N/m, N m/rad].
-  std::vector<int> m_blockStart;       // block partition m_blockRatio is for (empty: one block)
-  std::vector<double> m_blockRatio;    // largest out-of-balance / allowed in each block
-  std::vector<char> m_blockTouched;    // work space of residualRatio
-  std::vector<int> m_activeBlocks;                   // blocks solved by the last solveCorrection
-  std::vector<std::pair<int, int>> m_activeRanges;   // their equations [begin, end), ascending
+  std::vector<int> m_blockStart;                    // block partition m_blockRatio is for (empty: one block)
+  std::vector<double> m_blockRatio;                 // largest out-of-balance / allowed in each block
+  std::vector<char> m_blockTouched;                 // work space of residualRatio
+  std::vector<int> m_activeBlocks;                  // blocks solved by the last solveCorrection
+  std::vector<std::pair<int, int>> m_activeRanges;  // their equations [begin, end), ascending
   std::vector<int> m_moved;
   std::vector<char> m_movedMark;
   int m_futileTries = 0;            // corrections in a row that tried a part and found none
@@ -149,11 +149,11 @@ class GeneralizedAlpha {
   VecX m_kDiagonal;
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
   bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
-  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: every iteration on the whole model: no part, every
-                                 // independent block solved (for comparison)
+  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: every iteration on the whole model: no part,
+                                 // every independent block solved (for comparison)
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
-  int m_stepsSinceRefresh = 0;            // converged steps with the kept matrix (planRefresh)
+  int m_stepsSinceRefresh = 0;     // converged steps with the kept matrix (planRefresh)
   double m_evaluationsSinceRefresh = 0.0;  // their residual evaluations (parts count half)
   double m_recentEvaluations = 0.0;        // smoothed evaluations of the latest steps
   bool m_refreshDue = false;               // the next step refreshes the matrix

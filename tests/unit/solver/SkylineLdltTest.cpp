@@ -99,12 +99,14 @@ TEST(SkylineLdlt, ZeroPivotIsReportedNotSolved) {
 }
 
 /// The matrices along the diagonal of one matrix, plus optional couplings (i, j) between them.
-SparseMatrix blockDiagonal(const std::vector<SparseMatrix>& blocks, const std::vector<std::pair<int, int>>& extra) {
+SparseMatrix blockDiagonal(const std::vector<SparseMatrix>& blocks,
+                           const std::vector<std::pair<int, int>>& extra) {
   std::vector<Triplet> t;
   int offset = 0;
   for (const SparseMatrix& b : blocks) {
     for (int c = 0; c < b.outerSize(); ++c)
-      for (SparseMatrix::InnerIterator it(b, c); it; ++it) t.emplace_back(offset + it.row(), offset + it.col(), it.value());
+      for (SparseMatrix::InnerIterator it(b, c); it; ++it)
+        t.emplace_back(offset + it.row(), offset + it.col(), it.value());
     offset += static_cast<int>(b.rows());
   }
   for (const auto& [i, j] : extra) {
@@ -122,8 +124,8 @@ TEST(SkylineLdlt, IndependentLinesAreBlocksSolvedAlone) {
   // (its last node coupled to its first), which keeps it one block.
   std::vector<std::pair<int, int>> arrow;
   for (int i = 0; i < 3; ++i) arrow.emplace_back(39 * 3 + i, i);
-  const SparseMatrix k = blockDiagonal({lineMatrix(30, 3, {}, 11), lineMatrix(40, 3, arrow, 12),
-                                        lineMatrix(20, 3, {}, 13)}, {});
+  const SparseMatrix k =
+      blockDiagonal({lineMatrix(30, 3, {}, 11), lineMatrix(40, 3, arrow, 12), lineMatrix(20, 3, {}, 13)}, {});
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   ASSERT_EQ(s.blockCount(), 3);
@@ -140,8 +142,10 @@ TEST(SkylineLdlt, IndependentLinesAreBlocksSolvedAlone) {
   VecX part = b;
   s.solveBlocksInPlace(part, {0, 2});
   for (int i = 0; i < 270; ++i) {
-    if (i >= 90 && i < 210) EXPECT_EQ(part[i], b[i]) << i;
-    else EXPECT_EQ(part[i], whole[i]) << i;
+    if (i >= 90 && i < 210)
+      EXPECT_EQ(part[i], b[i]) << i;
+    else
+      EXPECT_EQ(part[i], whole[i]) << i;
   }
   // Consecutive blocks in one call, and all blocks: the whole solve.
   VecX all = b;
@@ -156,9 +160,9 @@ TEST(SkylineLdlt, IndependentLinesAreBlocksSolvedAlone) {
 TEST(SkylineLdlt, CouplingAcrossLinesJoinsTheBlocksBetween) {
   // Lines 1 and 3 coupled (a contact): the envelope of line 3's rows reaches into line 1, so lines 1-3 are
   // one block (blocks are ranges of equations); a fourth, free line stays a block of its own.
-  const SparseMatrix k = blockDiagonal(
-      {lineMatrix(10, 3, {}, 21), lineMatrix(10, 3, {}, 22), lineMatrix(10, 3, {}, 23), lineMatrix(10, 3, {}, 24)},
-      {{75, 3}});
+  const SparseMatrix k = blockDiagonal({lineMatrix(10, 3, {}, 21), lineMatrix(10, 3, {}, 22),
+                                        lineMatrix(10, 3, {}, 23), lineMatrix(10, 3, {}, 24)},
+                                       {{75, 3}});
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   ASSERT_EQ(s.blockCount(), 2);
