@@ -23,72 +23,19 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <string>
-#include <vector>
 
-#include "TestPaths.hpp"
-#include "tangle/analysis/Simulation.hpp"
-#include "tangle/io/ModelReader.hpp"
+#include "support/MooringExampleRun.hpp"
 
 namespace tangle {
 namespace {
 
-constexpr std::array<double, 3> kAzimuthDeg{0.0, 120.0, 250.0};
-
-struct ThreeLineRun {
-  time::DynamicResult result;
-  std::vector<double> time;
-  std::array<std::vector<double>, 3> tension;  // fairlead tension of each line at every step [N]
-};
-
-ThreeLineRun runThreeLines(bool wholeAssembly) {
-  if (wholeAssembly)
-    setenv("TANGLE_WHOLE_ASSEMBLY", "1", 1);
-  else
-    unsetenv("TANGLE_WHOLE_ASSEMBLY");
-  model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/mooring-dynamics/model.yaml");
-  const model::LineSpec base = spec.lines.at(0);
-  spec.lines.clear();
-  for (std::size_t k = 0; k < kAzimuthDeg.size(); ++k) {
-    model::LineSpec line = base;
-    line.name = "line" + std::to_string(k + 1);
-    const double az = kAzimuthDeg[k] * 3.141592653589793 / 180.0;
-    const Vec3 out(std::cos(az), std::sin(az), 0.0);
-    line.endB.position = Vec3(0.0, 0.0, base.endB.position.z()) + 20.0 * out;
-    line.endA.position = Vec3(0.0, 0.0, base.endA.position.z()) + 1020.0 * out;
-    spec.lines.push_back(line);
-  }
-  spec.dynamics.duration = 30.0;
-  spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
-  spec.output.vtk = false;
-  spec.output.plots = false;
-  analysis::Simulation sim(std::move(spec));
-  const solver::StaticResult statics = sim.solveStatics();
-  EXPECT_TRUE(statics.converged) << statics.message;
-  ThreeLineRun run;
-  run.result = sim.runDynamics([&](const model::State& state, const VecX&) {
-    run.time.push_back(state.time);
-    const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
-    for (std::size_t l = 0; l < 3; ++l) run.tension[l].push_back(snap.at(l).endForceB.norm());
-  });
-  unsetenv("TANGLE_WHOLE_ASSEMBLY");
-  return run;
-}
-
-double rangeAfter(const ThreeLineRun& r, std::size_t line, double start) {
-  double lo = 1e300, hi = -1e300;
-  for (std::size_t i = 0; i < r.time.size(); ++i)
-    if (r.time[i] >= start - 1e-9) {
-      lo = std::min(lo, r.tension[line][i]);
-      hi = std::max(hi, r.tension[line][i]);
-    }
-  return hi - lo;
-}
+using test::rangeAfter;
 
 TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceTolerance) {
-  const ThreeLineRun whole = runThreeLines(true);
-  const ThreeLineRun blocks = runThreeLines(false);
+  const std::vector<double> azimuths{0.0, 120.0, 250.0};  // [deg]
+  const test::FairleadRun whole = test::runMooringExample(30.0, true, azimuths);
+  const test::FairleadRun blocks = test::runMooringExample(30.0, false, azimuths);
   ASSERT_TRUE(whole.result.completed) << whole.result.message;
   ASSERT_TRUE(blocks.result.completed) << blocks.result.message;
   // The switch works both ways: every block solved without it; with it, converged lines are left out.

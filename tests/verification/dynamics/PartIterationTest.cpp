@@ -19,57 +19,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <string>
-#include <vector>
 
-#include "TestPaths.hpp"
-#include "tangle/analysis/Simulation.hpp"
-#include "tangle/io/ModelReader.hpp"
+#include "support/MooringExampleRun.hpp"
 
 namespace tangle {
 namespace {
 
-struct MooringRun {
-  time::DynamicResult result;
-  std::vector<double> time, tension;  // every step [s], fairlead tension [N]
-};
-
-MooringRun runMooring(bool wholeAssembly) {
-  if (wholeAssembly)
-    setenv("TANGLE_WHOLE_ASSEMBLY", "1", 1);
-  else
-    unsetenv("TANGLE_WHOLE_ASSEMBLY");
-  model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/mooring-dynamics/model.yaml");
-  spec.dynamics.duration = 30.0;
-  spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
-  spec.output.vtk = false;
-  spec.output.plots = false;
-  analysis::Simulation sim(std::move(spec));
-  const solver::StaticResult statics = sim.solveStatics();
-  EXPECT_TRUE(statics.converged) << statics.message;
-  MooringRun run;
-  run.result = sim.runDynamics([&](const model::State& state, const VecX&) {
-    run.time.push_back(state.time);
-    run.tension.push_back(sim.snapshot(true).at(0).endForceB.norm());
-  });
-  unsetenv("TANGLE_WHOLE_ASSEMBLY");
-  return run;
-}
-
-double rangeAfter(const MooringRun& r, double start) {
-  double lo = 1e300, hi = -1e300;
-  for (std::size_t i = 0; i < r.time.size(); ++i)
-    if (r.time[i] >= start - 1e-9) {
-      lo = std::min(lo, r.tension[i]);
-      hi = std::max(hi, r.tension[i]);
-    }
-  return hi - lo;
-}
+using test::rangeAfter;
 
 TEST(PartIterationTest, MooringLineSameResponseWithinTheConvergenceTolerance) {
-  const MooringRun whole = runMooring(true);
-  const MooringRun parts = runMooring(false);
+  const test::FairleadRun whole = test::runMooringExample(30.0, true);
+  const test::FairleadRun parts = test::runMooringExample(30.0, false);
   ASSERT_TRUE(whole.result.completed) << whole.result.message;
   ASSERT_TRUE(parts.result.completed) << parts.result.message;
   // The switch works both ways: no part without it; with it, a good share of the iterations on parts
@@ -77,12 +38,12 @@ TEST(PartIterationTest, MooringLineSameResponseWithinTheConvergenceTolerance) {
   EXPECT_EQ(whole.result.partIterations, 0);
   EXPECT_GT(parts.result.partIterations, parts.result.newtonIterations / 10);
   ASSERT_EQ(whole.time.size(), parts.time.size());
-  const double range = rangeAfter(whole, 20.0);
-  EXPECT_NEAR(rangeAfter(parts, 20.0), range, 1e-3 * range);
+  const double range = rangeAfter(whole, 0, 20.0);
+  EXPECT_NEAR(rangeAfter(parts, 0, 20.0), range, 1e-3 * range);
   double worst = 0.0;
   for (std::size_t i = 0; i < whole.time.size(); ++i) {
     ASSERT_EQ(whole.time[i], parts.time[i]);
-    worst = std::max(worst, std::abs(whole.tension[i] - parts.tension[i]));
+    worst = std::max(worst, std::abs(whole.tension[0][i] - parts.tension[0][i]));
   }
   EXPECT_LT(worst, 3e-3 * range);
   RecordProperty("largest_tension_difference_N", std::to_string(worst));

@@ -1,0 +1,80 @@
+#pragma once
+// Dynamic runs of the mooring example (examples/mooring-dynamics) recording the fairlead tension of every
+// line at every step, with or without TANGLE_WHOLE_ASSEMBLY (every Newton iteration on the whole model):
+// the set-up of the verification tests of the iterations on a part and by independent blocks (issue 8).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "TestPaths.hpp"
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/io/ModelReader.hpp"
+
+namespace tangle::test {
+
+/// A run: its result, the time of every step [s] and each line's fairlead (end B) tension then [N].
+struct FairleadRun {
+  time::DynamicResult result;
+  std::vector<double> time;
+  std::vector<std::vector<double>> tension;
+};
+
+/// Runs the mooring example for `duration` s with output at every step. With azimuths [deg], its line is
+/// copied around a point instead: fairleads on a 20 m circle, anchors 1000 m further out, each fairlead
+/// moved as the example's (5 m / 10 s along x).
+inline FairleadRun runMooringExample(double duration, bool wholeAssembly,
+                                     const std::vector<double>& azimuthsDeg = {}) {
+  if (wholeAssembly)
+    setenv("TANGLE_WHOLE_ASSEMBLY", "1", 1);
+  else
+    unsetenv("TANGLE_WHOLE_ASSEMBLY");
+  model::ModelSpec spec = io::readModelFile(std::string(kExamplesDir) + "/mooring-dynamics/model.yaml");
+  if (!azimuthsDeg.empty()) {
+    const model::LineSpec base = spec.lines.at(0);
+    spec.lines.clear();
+    for (std::size_t k = 0; k < azimuthsDeg.size(); ++k) {
+      model::LineSpec line = base;
+      line.name = "line" + std::to_string(k + 1);
+      const double az = azimuthsDeg[k] * 3.141592653589793 / 180.0;
+      const Vec3 out(std::cos(az), std::sin(az), 0.0);
+      line.endB.position = Vec3(0.0, 0.0, base.endB.position.z()) + 20.0 * out;
+      line.endA.position = Vec3(0.0, 0.0, base.endA.position.z()) + 1020.0 * out;
+      spec.lines.push_back(line);
+    }
+  }
+  spec.dynamics.duration = duration;
+  spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
+  spec.output.vtk = false;
+  spec.output.plots = false;
+  const std::size_t lines = spec.lines.size();
+  analysis::Simulation sim(std::move(spec));
+  const solver::StaticResult statics = sim.solveStatics();
+  EXPECT_TRUE(statics.converged) << statics.message;
+  FairleadRun run;
+  run.tension.resize(lines);
+  run.result = sim.runDynamics([&](const model::State& state, const VecX&) {
+    run.time.push_back(state.time);
+    const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
+    for (std::size_t l = 0; l < lines; ++l) run.tension[l].push_back(snap.at(l).endForceB.norm());
+  });
+  unsetenv("TANGLE_WHOLE_ASSEMBLY");
+  return run;
+}
+
+/// Range (max - min) of a line's fairlead tension from time `start` on [N].
+inline double rangeAfter(const FairleadRun& r, std::size_t line, double start) {
+  double lo = 1e300, hi = -1e300;
+  for (std::size_t i = 0; i < r.time.size(); ++i)
+    if (r.time[i] >= start - 1e-9) {
+      lo = std::min(lo, r.tension[line][i]);
+      hi = std::max(hi, r.tension[line][i]);
+    }
+  return hi - lo;
+}
+
+}  // namespace tangle::test
