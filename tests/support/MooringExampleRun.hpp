@@ -1,7 +1,9 @@
 #pragma once
 // Dynamic runs of the mooring example (examples/mooring-dynamics) recording the fairlead tension of every
-// line at every step, with or without TANGLE_WHOLE_ASSEMBLY (every Newton iteration on the whole model):
-// the set-up of the verification tests of the iterations on a part and by independent blocks (issue 8).
+// line at every step, optionally with one of the solver's comparison switches set (TANGLE_WHOLE_ASSEMBLY:
+// every Newton iteration on the whole model; TANGLE_KEEP_MATRIX: no refresh by the renewal rule): the set-up
+// of the verification tests of the iterations on a part, by independent blocks and of the refresh rule
+// (issue 8).
 
 #include <gtest/gtest.h>
 
@@ -26,13 +28,13 @@ struct FairleadRun {
 
 /// Runs the mooring example for `duration` s with output at every step. With azimuths [deg], its line is
 /// copied around a point instead: fairleads on a 20 m circle, anchors 1000 m further out, each fairlead
-/// moved as the example's (5 m / 10 s along x).
-inline FairleadRun runMooringExample(double duration, bool wholeAssembly,
+/// moved as the example's (5 m / 10 s along x). `environmentSwitch`: the variable set during the run (empty:
+/// none).
+inline FairleadRun runMooringExample(double duration, const std::string& environmentSwitch = "",
                                      const std::vector<double>& azimuthsDeg = {}) {
-  if (wholeAssembly)
-    setenv("TANGLE_WHOLE_ASSEMBLY", "1", 1);
-  else
-    unsetenv("TANGLE_WHOLE_ASSEMBLY");
+  unsetenv("TANGLE_WHOLE_ASSEMBLY");
+  unsetenv("TANGLE_KEEP_MATRIX");
+  if (!environmentSwitch.empty()) setenv(environmentSwitch.c_str(), "1", 1);
   model::ModelSpec spec = io::readModelFile(std::string(kExamplesDir) + "/mooring-dynamics/model.yaml");
   if (!azimuthsDeg.empty()) {
     const model::LineSpec base = spec.lines.at(0);
@@ -62,7 +64,7 @@ inline FairleadRun runMooringExample(double duration, bool wholeAssembly,
     const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
     for (std::size_t l = 0; l < lines; ++l) run.tension[l].push_back(snap.at(l).endForceB.norm());
   });
-  unsetenv("TANGLE_WHOLE_ASSEMBLY");
+  if (!environmentSwitch.empty()) unsetenv(environmentSwitch.c_str());
   return run;
 }
 

@@ -83,7 +83,8 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_matrix(assembler.model().dofs()),
       m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr),
       m_modifiedNewton(std::getenv("TANGLE_FULL_NEWTON") == nullptr),
-      m_wholeAssembly(std::getenv("TANGLE_WHOLE_ASSEMBLY") != nullptr) {
+      m_wholeAssembly(std::getenv("TANGLE_WHOLE_ASSEMBLY") != nullptr),
+      m_refreshRule(std::getenv("TANGLE_KEEP_MATRIX") == nullptr) {
   const model::DofMap& dofs = assembler.model().dofs();
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
@@ -589,7 +590,7 @@ void GeneralizedAlpha::planRefresh(const StepOutcome& outcome, bool refreshed) {
   ++m_stepsSinceRefresh;
   m_evaluationsSinceRefresh += evaluations;
   m_recentEvaluations += kSmoothing * (evaluations - m_recentEvaluations);
-  if (m_frozen || !m_modifiedNewton) return;
+  if (m_frozen || !m_modifiedNewton || !m_refreshRule) return;
   const double average = (kRefreshCost + m_evaluationsSinceRefresh) / m_stepsSinceRefresh;
   m_refreshDue = m_stepsSinceRefresh >= 2 && m_recentEvaluations > average;
 }

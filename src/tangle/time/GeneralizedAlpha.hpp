@@ -151,6 +151,7 @@ class GeneralizedAlpha {
   bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
   bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: every iteration on the whole model: no part,
                                  // every independent block solved (for comparison)
+  bool m_refreshRule = true;     // TANGLE_KEEP_MATRIX unset: planRefresh may refresh (else only slow steps do)
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   int m_stepsSinceRefresh = 0;     // converged steps with the kept matrix (planRefresh)
