@@ -11,6 +11,7 @@ the tolerances are the rounding of the CSV, not a physical tolerance.
 from __future__ import annotations
 
 import csv
+import json
 import os
 import subprocess
 import threading
@@ -120,6 +121,11 @@ def test_statics_and_dynamics_equal_the_cli(mooring: tangle.Model, tmp_path: Pat
         np.testing.assert_allclose(graph[k], rng[:, col[f"tension_{k}_N"]], rtol=RTOL)
     # Progress at every output time, with the duration.
     assert len(calls) == len(run.time_s) and calls[-1] == pytest.approx((12.0, 12.0))
+    # The solver counters, as the CLI's dynamics/summary.json (the same iterations: the same results).
+    summary = json.loads((out / "dynamics" / "summary.json").read_text())
+    for key in ("newton_iterations", "newton_iterations_on_parts", "matrix_refreshes", "converged_blocks_left_out"):
+        assert getattr(run, key) == summary[key], key
+    assert run.matrix_refreshes > 0
 
 
 def test_contact_events_and_clearance_equal_the_cli(tmp_path: Path) -> None:

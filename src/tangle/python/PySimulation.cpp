@@ -222,6 +222,9 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   out["steps"] = result.steps;
   out["step_cutbacks"] = result.cutbacks;
   out["newton_iterations"] = result.newtonIterations;
+  out["newton_iterations_on_parts"] = result.partIterations;
+  out["matrix_refreshes"] = result.matrixRefreshes;
+  out["converged_blocks_left_out"] = result.blocksLeft;
   out["wall_time_s"] = result.wallSeconds;
   out["message"] = result.message;
   const auto nt = static_cast<py::ssize_t>(times.size());
