@@ -124,6 +124,7 @@ void Assembler::assemble(const model::State& state, const AssemblyRequest& reque
   force.setZero(m_model->dofs().fullDofCount());
   if (matrix) matrix->clear();
   addAll(state, request, force, request.wantMatrix ? matrix : nullptr, nullptr);
+  m_loadedMarkValid = false;  // the contributors' loaded nodes may have changed (contact candidates)
 }
 
 void Assembler::addAll(const model::State& state, const AssemblyRequest& request, VecX& force,
@@ -405,11 +406,16 @@ bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
   part.writtenNodes.clear();
   for (std::size_t n = 0; n < nodeCount; ++n)
     if (m_nodeMark[n] != 0) part.writtenNodes.push_back(static_cast<int>(n));
-  // Contributors left out of parts: none of their nodes may be in the part.
-  bool marked = false;
-  m_loadedMark.assign(nodeCount, 0);
-  for (const LoadContributor* c : m_contributors) marked = c->markLoadedNodes(m_loadedMark) || marked;
-  if (marked)
+  // Contributors left out of parts: none of their nodes may be in the part. Their marks change only with a
+  // whole assembly (line contact's candidates), so they are gathered once after each.
+  if (!m_loadedMarkValid) {
+    m_anyLoadedMark = false;
+    m_loadedMark.assign(nodeCount, 0);
+    for (const LoadContributor* c : m_contributors)
+      m_anyLoadedMark = c->markLoadedNodes(m_loadedMark) || m_anyLoadedMark;
+    m_loadedMarkValid = true;
+  }
+  if (m_anyLoadedMark)
     for (const int n : part.nodes)
       if (m_loadedMark[static_cast<std::size_t>(n)]) return false;
   return true;

@@ -68,8 +68,8 @@ class LoadContributor {
   /// the whole model is assembled each time.
   virtual bool supportsParts() const { return false; }
   /// The second way above: sets mark[node] = 1 for every node this contributor loads or whose state it
-  /// reads in this step (called after the step's first whole assembly) and returns true; the contributor
-  /// is then left out of parts, which Assembler::selectPart refuses when they hold a marked node (its loads
+  /// reads in this step (called once after each whole assembly that a part follows) and returns true; the
+  /// contributor is then left out of parts, which Assembler::selectPart refuses when they hold a marked node (its loads
   /// are zero at the part's nodes and unchanged elsewhere, since no node it reads moved). False (the
   /// default): the contributor's terms come from addPartForces / addPartMass.
   virtual bool markLoadedNodes(std::vector<char>& /*mark*/) const { return false; }
@@ -241,6 +241,8 @@ class Assembler {
   std::vector<char> m_nodeMark;
   std::vector<char> m_elementMark;
   std::vector<char> m_loadedMark;  // nodes loaded by contributors left out of parts (markLoadedNodes)
+  bool m_anyLoadedMark = false;    // some contributor marked nodes
+  bool m_loadedMarkValid = false;  // m_loadedMark gathered since the last whole assembly
   VecX m_partWork;
 };
 
