@@ -88,9 +88,6 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
   const model::DofMap& dofs = assembler.model().dofs();
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
-  m_equationNode.resize(static_cast<std::size_t>(dofs.equationCount()));
-  for (int i = 0; i < dofs.equationCount(); ++i)
-    m_equationNode[static_cast<std::size_t>(i)] = dofs.nodeOf(dofs.equationDofs()[i]);
   m_prescribedDof.assign(dofs.fullDofCount(), false);
   for (const PrescribedNode& p : m_prescribed) {
     const int d = dofs.firstDof(p.node);
@@ -216,9 +213,9 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     m_moved.clear();
     for (const auto& [begin, end] : m_activeRanges) {
       for (int i = begin; i < end; ++i)
-        m_movedMark[static_cast<std::size_t>(m_equationNode[i])] |= static_cast<char>(
+        m_movedMark[static_cast<std::size_t>(dofs.nodeOf(eqDofs[i]))] |= static_cast<char>(
             std::abs(m_delta[i] * m_kDiagonal[i]) * m_inverseAllowed[i] > kNegligibleCorrection);
-      for (int n = m_equationNode[begin]; n <= m_equationNode[end - 1]; ++n)
+      for (int n = dofs.nodeOf(eqDofs[begin]); n <= dofs.nodeOf(eqDofs[end - 1]); ++n)
         if (m_movedMark[static_cast<std::size_t>(n)]) m_moved.push_back(n);
     }
     // A part pays while it is clearly smaller than the model (its assembly also re-evaluates the moved

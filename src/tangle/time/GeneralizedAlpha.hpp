@@ -120,7 +120,6 @@ class GeneralizedAlpha {
   std::vector<PrescribedNode> m_prescribed;
   AlphaParameters m_params;
   std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
-  std::vector<int> m_equationNode;  // node of each equation
   std::vector<int> m_constrainedDofs;  // full DOFs without an equation
   VecX m_delta;                     // Newton correction of the equations [m, rad]
   VecX m_inverseAllowed;                   // 1 / allowed out-of-balance of each equation this step [1/N or 1/(N m)]
