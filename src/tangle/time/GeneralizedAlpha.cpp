@@ -460,21 +460,19 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       if (m_debug) std::cerr << "    assembly failed: " << e.what() << "\n";
       break;
     }
-    // Every mass term is M times one combination of accelerations and velocities.
+    // Every mass term is M times one combination of accelerations and velocities; on a part only the
+    // moved nodes' velocities and accelerations changed, so only their entries are computed again.
+    const auto setCombination = [&](int dof) {
+      double c = (1.0 - p.alphaM) * state.acceleration[dof] + p.alphaM * a0[dof];
+      if (rayleighAlpha > 0.0) c += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity[dof] + p.alphaF * v0[dof]);
+      combo[dof] = c;
+    };
     if (onPart) {
-      // Only the moved nodes' velocities and accelerations changed: their entries, as below.
-      for (const int node : m_moved) {
-        const int d = dofs.firstDof(node);
-        for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
-          double c = (1.0 - p.alphaM) * state.acceleration[dof] + p.alphaM * a0[dof];
-          if (rayleighAlpha > 0.0)
-            c += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity[dof] + p.alphaF * v0[dof]);
-          combo[dof] = c;
-        }
-      }
+      for (const int node : m_moved)
+        for (int dof = dofs.firstDof(node); dof < dofs.firstDof(node) + dofs.dofCount(node); ++dof)
+          setCombination(dof);
     } else {
-      combo = (1.0 - p.alphaM) * state.acceleration + p.alphaM * a0;
-      if (rayleighAlpha > 0.0) combo += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity + p.alphaF * v0);
+      for (int dof = 0; dof < nfull; ++dof) setCombination(dof);
     }
     if (onPart) {
       m_assembler->addPartMass(state, m_part, combo, inertia);
