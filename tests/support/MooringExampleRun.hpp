@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,19 @@ inline double rangeAfter(const FairleadRun& r, std::size_t line, double start) {
       hi = std::max(hi, r.tension[line][i]);
     }
   return hi - lo;
+}
+
+/// Largest difference [N] of a line's fairlead tension between two runs, step by step. The runs must have
+/// taken the same steps (a failure is recorded otherwise, and the difference is infinite).
+inline double largestTensionDifference(const FairleadRun& a, const FairleadRun& b, std::size_t line) {
+  if (a.time != b.time) {
+    ADD_FAILURE() << "the runs took different steps (" << a.time.size() << " and " << b.time.size() << ")";
+    return std::numeric_limits<double>::infinity();
+  }
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.time.size(); ++i)
+    worst = std::max(worst, std::abs(a.tension[line][i] - b.tension[line][i]));
+  return worst;
 }
 
 }  // namespace tangle::test
