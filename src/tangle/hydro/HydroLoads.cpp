@@ -163,12 +163,17 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     }
     const bool wakeTangent = m_wake && matrix && m_wake->isDownstream(static_cast<int>(e));
     const bool wantStiffness = matrix && request.dragStiffness;
-    const MorisonElementLoad load = morisonElementLoad(
-        x1, x2, v1, v2, fluid, m_coefficients[static_cast<std::size_t>(m_coefficientIndex[e])], wet,
-        wantDamping, wantStiffness);
-    // Out-of-balance convention: external loads are subtracted.
-    force.segment<3>(d1) -= load.force1;
-    force.segment<3>(d2) -= load.force2;
+    const MorisonCoefficients& coefficients = m_coefficients[static_cast<std::size_t>(m_coefficientIndex[e])];
+    if (!coefficients.wet) {
+      m_addedMass[e] = AddedMass{};
+      return;
+    }
+    // Out-of-balance convention: external loads are subtracted. (The matrices' call only when a matrix is
+    // assembled.)
+    const MorisonNodeForces forces = morisonNodeForces(x1, x2, v1, v2, fluid, coefficients, wet);
+    force.segment<3>(d1) -= forces.force1;
+    force.segment<3>(d2) -= forces.force2;
+    m_addedMass[e] = forces.addedMassPerNode;
     if (m_wake && !m_elementWake[e].liftPerLength.isZero(0.0)) {
       // Wake lift (Blevins) on the wetted length, half on each node.
       const Vec3 lift = 0.5 * wet * (x2 - x1).norm() * m_elementWake[e].liftPerLength;
@@ -189,6 +194,9 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
       matrix->add3x3(d2, d1, k, request.kf);
       matrix->add3x3(d2, d2, k, request.kf);
     }
+    if (!wantDamping && !wantStiffness) return;
+    const MorisonElementLoad load =
+        morisonElementLoad(x1, x2, v1, v2, fluid, coefficients, wet, wantDamping, wantStiffness);
     if (wantStiffness) {
       // The drag turns with the element (theory 6.4): d(force_i)/d(x2) = G_i = -d(force_i)/d(x1); the
       // out-of-balance subtracts the force. Without it a limp line across a current (a lazy wave's
@@ -198,7 +206,6 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
       matrix->add3x3(d2, d1, load.positionJacobian2, request.kf);
       matrix->add3x3(d2, d2, load.positionJacobian2, -request.kf);
     }
-    m_addedMass[e] = load.addedMassPerNode;
     if (wantDamping) {
       matrix->add3x3(d1, d1, load.damping1, request.cf);
       matrix->add3x3(d2, d2, load.damping2, request.cf);

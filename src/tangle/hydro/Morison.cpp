@@ -90,31 +90,65 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
                             wantDamping, wantPositionJacobian);
 }
 
+namespace {
+
+/// Element tangent and length of x1-x2 [-], [m]; throws for coincident nodes.
+inline Vec3 unitTangent(const Vec3& x1, const Vec3& x2, double& length) {
+  const Vec3 axis = x2 - x1;
+  length = axis.norm();
+  require(std::isfinite(length) && length > 0.0, "element length [m]", "finite and > 0 (distinct nodes)",
+          length);
+  return axis / length;
+}
+
+/// Fluid inertia per unit length [N/m]: Froude-Krylov + added-mass part of the fluid acceleration.
+inline Vec3 fluidInertia(const FluidKinematics& fluid, const MorisonCoefficients& c, const Vec3& t) {
+  if (fluid.acceleration.isZero(0.0)) return Vec3::Zero();
+  const Vec3& af = fluid.acceleration;
+  return (c.displacedMass + c.normalMass) * af + ((c.axialMass - c.normalMass) * t.dot(af)) * t;
+}
+
+/// Added mass per unit length rho A (Can (I - t t^T) + Caa t t^T) on the length lumped at a node [kg].
+inline AddedMass lumpedAddedMass(const MorisonCoefficients& c, const Vec3& t, double halfLength) {
+  AddedMass m;
+  m.tangent = t;
+  m.normal = halfLength * c.normalMass;
+  m.axial = halfLength * c.axialMass;
+  return m;
+}
+
+}  // namespace
+
+MorisonNodeForces morisonNodeForces(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
+                                    const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
+                                    double wettedFraction) {
+  double length = 0.0;
+  const Vec3 t = unitTangent(x1, x2, length);
+  const double halfLength = 0.5 * wettedFraction * length;  // wetted length lumped on each node [m]
+  const Vec3 inertia = fluidInertia(fluid, coefficients, t);
+  Vec3 q1, q2;
+  drag(fluid.velocity - v1, t, coefficients.normalDrag, coefficients.axialDrag, q1, nullptr);
+  drag(fluid.velocity - v2, t, coefficients.normalDrag, coefficients.axialDrag, q2, nullptr);
+  MorisonNodeForces out;
+  out.force1 = halfLength * (q1 + inertia);
+  out.force2 = halfLength * (q2 + inertia);
+  out.addedMassPerNode = lumpedAddedMass(coefficients, t, halfLength);
+  return out;
+}
+
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                       const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
                                       double wettedFraction, bool wantDamping, bool wantPositionJacobian) {
-  const Vec3 axis = x2 - x1;
-  const double length = axis.norm();
-  require(std::isfinite(length) && length > 0.0, "element length [m]", "finite and > 0 (distinct nodes)",
-          length);
+  double length = 0.0;
+  const Vec3 t = unitTangent(x1, x2, length);
 
   MorisonElementLoad load;
   if (wettedFraction == 0.0 || !coefficients.wet) return load;
 
-  const Vec3 t = axis / length;
   const double halfLength = 0.5 * wettedFraction * length;  // wetted length lumped on each node [m]
   const double kn = coefficients.normalDrag;
   const double ka = coefficients.axialDrag;
-  // Added mass per unit length rho A (Can (I - t t^T) + Caa t t^T), kept as t and two masses.
-  const double normalMass = coefficients.normalMass;
-  const double axialMass = coefficients.axialMass;
-
-  // Fluid inertia per unit length: Froude-Krylov + added-mass part of the fluid acceleration.
-  Vec3 inertia = Vec3::Zero();
-  if (!fluid.acceleration.isZero(0.0)) {
-    const Vec3& af = fluid.acceleration;
-    inertia = (coefficients.displacedMass + normalMass) * af + ((axialMass - normalMass) * t.dot(af)) * t;
-  }
+  const Vec3 inertia = fluidInertia(fluid, coefficients, t);
 
   Vec3 q1, q2;
   Mat3 j1, j2;
@@ -131,9 +165,7 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
     load.positionJacobian1 = half * dragPositionJacobian(fluid.velocity - v1, t, kn, ka);
     load.positionJacobian2 = half * dragPositionJacobian(fluid.velocity - v2, t, kn, ka);
   }
-  load.addedMassPerNode.tangent = t;
-  load.addedMassPerNode.normal = halfLength * normalMass;
-  load.addedMassPerNode.axial = halfLength * axialMass;
+  load.addedMassPerNode = lumpedAddedMass(coefficients, t, halfLength);
   return load;
 }
 

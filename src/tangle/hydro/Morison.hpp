@@ -110,6 +110,22 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
                                       const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
                                       double wettedFraction, bool wantDamping, bool wantPositionJacobian);
 
+/// The forces and added mass of morisonElementLoad without its matrices (most assemblies of a dynamic
+/// run ask for the out-of-balance alone; building and zeroing the four 3x3 blocks of MorisonElementLoad
+/// was half the cost of the call, issue 8).
+struct MorisonNodeForces {
+  Vec3 force1;                 ///< drag + fluid inertia on node 1 [N] (without the added-mass term)
+  Vec3 force2;                 ///< drag + fluid inertia on node 2 [N] (without the added-mass term)
+  AddedMass addedMassPerNode;  ///< added mass of each node [kg] (as MorisonElementLoad's)
+};
+
+/// force1, force2 and addedMassPerNode of morisonElementLoad (same arguments, same formulas), with a wetted
+/// fraction in (0, 1] and a wet fluid (coefficients.wet); the caller skips dry elements.
+/// @throws tangle::Error for coincident nodes
+MorisonNodeForces morisonNodeForces(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
+                                    const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
+                                    double wettedFraction);
+
 /// Fraction [-] of the segment z1-z2 [m] lying below the surface level surfaceElevation [m], assuming a
 /// straight segment and a locally flat surface: 1 if both ends are at or below it, 0 if both are at or
 /// above it (a horizontal segment exactly on the surface counts as submerged), linear in between.
