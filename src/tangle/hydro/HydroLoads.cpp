@@ -251,12 +251,27 @@ void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const V
                                 const std::vector<int>* list) const {
   const auto& elements = m_model->elements();
   const model::DofMap& dofs = m_model->dofs();
+  if (matrix) {
+    forEachIndex(list, elements.size(), [&](std::size_t e) {
+      const Mat3 m = m_addedMass[e].matrix();
+      matrix->add3x3(dofs.firstDof(elements[e].node1), dofs.firstDof(elements[e].node1), m, mf);
+      matrix->add3x3(dofs.firstDof(elements[e].node2), dofs.firstDof(elements[e].node2), m, mf);
+    });
+  }
+  if (!out) return;
+  // The inertia force of every assembly (the matrix of few): a loop of its own, without the matrix's
+  // branches (it was 7 % of the mooring example's run).
+  double* f = out->data();
+  const double* a = acceleration->data();
   forEachIndex(list, elements.size(), [&](std::size_t e) {
     const AddedMass& ma = m_addedMass[e];
-    for (int node : {elements[e].node1, elements[e].node2}) {
-      const int d = dofs.firstDof(node);
-      if (matrix) matrix->add3x3(d, d, ma.matrix(), mf);
-      if (out) out->segment<3>(d) += ma * Vec3(acceleration->segment<3>(d));
+    const Vec3& t = ma.tangent;
+    const double dm = ma.axial - ma.normal;
+    for (const int d : {dofs.firstDof(elements[e].node1), dofs.firstDof(elements[e].node2)}) {
+      const double c = dm * (t.x() * a[d] + t.y() * a[d + 1] + t.z() * a[d + 2]);
+      f[d] += ma.normal * a[d] + c * t.x();
+      f[d + 1] += ma.normal * a[d + 1] + c * t.y();
+      f[d + 2] += ma.normal * a[d + 2] + c * t.z();
     }
   });
 }

@@ -122,8 +122,11 @@ void Assembler::commitStatics(const model::State& state) {
 void Assembler::assemble(const model::State& state, const AssemblyRequest& request, VecX& force,
                          SystemMatrix* matrix) {
   force.setZero(m_model->dofs().fullDofCount());
-  if (matrix) matrix->clear();
-  addAll(state, request, force, request.wantMatrix ? matrix : nullptr, nullptr);
+  // The matrix is cleared only when it is assembled (an assembly for the out-of-balance alone leaves the
+  // last one as it is: zeroing its values at every iteration was 6 % of the 12-line run).
+  SystemMatrix* const assembled = request.wantMatrix ? matrix : nullptr;
+  if (assembled) assembled->clear();
+  addAll(state, request, force, assembled, nullptr);
   m_loadedMarkValid = false;  // the contributors' loaded nodes may have changed (contact candidates)
 }
 

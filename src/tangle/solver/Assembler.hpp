@@ -117,7 +117,8 @@ class Assembler {
   /// last assembly) and forwards LoadContributor::commitStatic.
   void commitStatics(const model::State& state);
 
-  /// F (full DOFs) and, if requested, H (equations). `force` is resized and zeroed.
+  /// F (full DOFs) and, if request.wantMatrix and matrix is given, H (equations). `force` is resized and
+  /// zeroed; `matrix` is cleared and assembled only when request.wantMatrix (else left as it was).
   void assemble(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
 
   /// True when assemblePart and addPartMass can stand for assemble and addMass: every contributor's
