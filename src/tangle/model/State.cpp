@@ -36,6 +36,19 @@ void State::setIncremented(const State& from, const DofMap& dofs, const VecX& fu
   }
 }
 
+void State::assignFrom(const State& from, const DofMap& dofs) {
+  time = from.time;
+  position = from.position;
+  velocity = from.velocity;
+  acceleration = from.acceleration;
+  if (triad.size() != from.triad.size()) {
+    triad = from.triad;
+    return;
+  }
+  for (int n = 0; n < dofs.nodeCount(); ++n)
+    if (dofs.hasRotations(n)) triad[n] = from.triad[n];
+}
+
 void State::orthonormaliseTriads(const DofMap& dofs) {
   for (int n = 0; n < dofs.nodeCount(); ++n)
     if (dofs.hasRotations(n)) triad[n] = orthonormalised(triad[n]);

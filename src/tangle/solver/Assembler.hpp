@@ -229,6 +229,8 @@ class Assembler {
   std::vector<LoadContributor*> m_contributors;
   double m_forceScale = 1.0;
   std::vector<double> m_nodeForceScale;
+  std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
+  std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
   // Seabed friction in statics: committed anchor (x, y) per node (NaN: none) and the trial anchors of the
   // last assembly; positions (x, y) at the last commit, anchors of nodes that touch down later.
   std::vector<Vec2> m_anchor;

@@ -347,7 +347,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   const double rayleighAlpha = m_settings.rayleighAlpha;
 
   // Work space kept from step to step (no allocation per step once sized).
-  m_start = state;
+  m_start.assignFrom(state, dofs);
   const model::State& start = m_start;
   const VecX& v0 = start.velocity;
   const VecX& a0 = start.acceleration;
