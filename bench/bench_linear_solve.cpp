@@ -10,12 +10,15 @@
 /// dominant with the pattern of the line (the values do not change the work).
 ///
 /// Measured (release build, this 2-core machine): 4.4 us per solve of the 603-equation bar line (7.4 ns per
-/// equation), 6.4 us for the 600-equation beam line, 6.6 us for the arrow. The substitutions are bound by
-/// the latency of their recurrence (one multiply and one subtraction per unknown on the critical path,
-/// about 8 cycles, twice), not by loop overhead: fixed-size kernels per node (3x3 and 6x6 blocks, unrolled,
-/// the backward pass by rows) gained 6 % on the bar line and 12 % on the beam line and lost 20 % on the
-/// arrow, and were dropped. What would shorten the chain: a factor stored as y_a = T_a^-1 b_a - M_a y_(a-1)
-/// per node (one 3x3 product on the critical path per node instead of three dependent updates).
+/// equation), 6.4 us for the 600-equation beam line, 6.6 us for the arrow. Fixed-size kernels per node (3x3
+/// and 6x6 blocks, unrolled, the backward pass by rows) gained 6 % on the bar line and 12 % on the beam line
+/// and lost 20 % on the arrow, and were dropped.
+/// Stop 25: the envelope's rows stored again as a fixed-width band (SkylineLdlt::bandWidth: 5 for bar
+/// lines, 11 for beam lines; every row's products a fixed count, no column index array): 6.2 -> 4.6 ns per
+/// equation on the bar line, 9.1 -> 7.5 on the beam line, measured side by side (same build, the band
+/// switched off and on); the arrow keeps the envelope. Tried and dropped: the chain's multiply and
+/// subtraction as one fused multiply-add (a run-time dispatched FMA build of the kernel): slower on both
+/// storages (6.2 -> 7.1, 4.6 -> 5.5 ns), so the chain's latency is not all that bounds the solve.
 
 #include <benchmark/benchmark.h>
 

@@ -24,6 +24,61 @@ inline double dot(const double* a, const double* b, std::ptrdiff_t n) {
   for (; k < n; ++k) s0 += a[k] * b[k];
   return (s0 + s1) + (s2 + s3);
 }
+
+/// Both substitutions over equations [begin, end) with L stored as a band of fixed width W: row i holds
+/// L(i, i - W) ... L(i, i - 1) at band[i W + 0 .. W - 1], zero outside the envelope. The rows' products
+/// have a fixed count (no loop over a row's varying length, no index array for the columns), and the
+/// unknown found just before is held apart as in SkylineLdlt::solveRange. Reads stay inside [begin, end).
+template <int W>
+void bandSubstitutions(double* x, int begin, int end, const double* band, const double* inverseDiagonal) {
+  double previous = 0.0;
+  for (int i = begin; i < end; ++i) {
+    const double* row = band + static_cast<std::ptrdiff_t>(i) * W;  // row[W - d] = L(i, i - d)
+    const int reach = std::min(W, i - begin);
+    double sum = 0.0;
+    if (reach == W) {
+      for (int d = W; d >= 2; --d) sum += row[W - d] * x[i - d];
+    } else {
+      for (int d = reach; d >= 2; --d) sum += row[W - d] * x[i - d];
+    }
+    const double y = reach >= 1 ? (x[i] - sum) - row[W - 1] * previous : x[i];
+    x[i] = y;
+    previous = y;
+  }
+  for (int i = begin; i < end; ++i) x[i] *= inverseDiagonal[i];
+  double next = 0.0;
+  for (int i = end - 1; i >= begin; --i) {
+    const int reach = std::min(W, end - 1 - i);
+    double sum = 0.0;
+    if (reach == W) {
+      for (int d = 2; d <= W; ++d) sum += band[static_cast<std::ptrdiff_t>(i + d) * W + W - d] * x[i + d];
+    } else {
+      for (int d = 2; d <= reach; ++d) sum += band[static_cast<std::ptrdiff_t>(i + d) * W + W - d] * x[i + d];
+    }
+    const double xi =
+        reach >= 1 ? (x[i] - sum) - band[static_cast<std::ptrdiff_t>(i + 1) * W + W - 1] * next : x[i];
+    x[i] = xi;
+    next = xi;
+  }
+}
+
+/// bandSubstitutions for the band width w in [1, SkylineLdlt::kMaxBandWidth].
+void bandSubstitutions(int w, double* x, int begin, int end, const double* band, const double* inverseDiagonal) {
+  switch (w) {
+    case 1: return bandSubstitutions<1>(x, begin, end, band, inverseDiagonal);
+    case 2: return bandSubstitutions<2>(x, begin, end, band, inverseDiagonal);
+    case 3: return bandSubstitutions<3>(x, begin, end, band, inverseDiagonal);
+    case 4: return bandSubstitutions<4>(x, begin, end, band, inverseDiagonal);
+    case 5: return bandSubstitutions<5>(x, begin, end, band, inverseDiagonal);
+    case 6: return bandSubstitutions<6>(x, begin, end, band, inverseDiagonal);
+    case 7: return bandSubstitutions<7>(x, begin, end, band, inverseDiagonal);
+    case 8: return bandSubstitutions<8>(x, begin, end, band, inverseDiagonal);
+    case 9: return bandSubstitutions<9>(x, begin, end, band, inverseDiagonal);
+    case 10: return bandSubstitutions<10>(x, begin, end, band, inverseDiagonal);
+    case 11: return bandSubstitutions<11>(x, begin, end, band, inverseDiagonal);
+    default: return bandSubstitutions<12>(x, begin, end, band, inverseDiagonal);
+  }
+}
 }  // namespace
 
 std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
@@ -84,6 +139,15 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
       }
     }
   }
+  // A narrow band (lines: 5 for bar nodes, 11 for beam nodes) is also kept as a fixed-width band for the
+  // substitutions, when its padding costs at most as much storage as the envelope itself.
+  int width = 0;
+  for (int i = 0; i < m_n; ++i) width = std::max(width, i - m_first[i]);
+  m_bandWidth = width >= 1 && width <= kMaxBandWidth &&
+                        static_cast<std::size_t>(width) * static_cast<std::size_t>(m_n) <= 2 * m_values.size()
+                    ? width
+                    : 0;
+  m_band.assign(static_cast<std::size_t>(m_bandWidth) * static_cast<std::size_t>(m_n), 0.0);
   // Cost: for each entry (i, j) of the envelope, a dot product over the overlap of rows i and j.
   m_cost = 0.0;
   for (int i = 0; i < m_n; ++i)
@@ -128,6 +192,14 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
   // L by columns for the backward substitution (see solveInPlace; the structure is the pattern's, set by
   // analyzePattern) and 1 / D.
   for (std::size_t q = 0; q < m_columnValue.size(); ++q) m_columnValue[q] = v[m_columnSource[q]];
+  if (m_bandWidth > 0) {
+    const int w = m_bandWidth;
+    for (int i = 0; i < m_n; ++i) {
+      double* row = m_band.data() + static_cast<std::ptrdiff_t>(i) * w;  // row[w - d] = L(i, i - d)
+      const std::ptrdiff_t rowI = rowBase(i);
+      for (int j = m_first[i]; j < i; ++j) row[w - (i - j)] = v[rowI + j];
+    }
+  }
   m_inverseDiagonal.resize(m_n);
   for (int i = 0; i < m_n; ++i) m_inverseDiagonal[i] = 1.0 / m_diagonal[i];
   return true;
@@ -147,6 +219,12 @@ void SkylineLdlt::solveBlocksInPlace(VecX& b, const std::vector<int>& blocks) co
 }
 
 void SkylineLdlt::solveRange(double* x, int begin, int end) const {
+  if (m_bandWidth > 0) {
+    // The same substitutions on the fixed-width band (bandSubstitutions): 25 % faster on a bar line
+    // (bench/bench_linear_solve.cpp: 6.2 -> 4.6 ns per equation on 201 nodes).
+    bandSubstitutions(m_bandWidth, x, begin, end, m_band.data(), m_inverseDiagonal.data());
+    return;
+  }
   const double* v = m_values.data();
   // Both substitutions as dot products in which the unknown found just before is held apart: the rest of
   // the row (unknowns found two or more rows earlier) is summed while that one is still being computed, so

@@ -28,6 +28,12 @@ class SkylineLdlt {
   /// Envelope of the lower triangle of `k` (square, compressed column storage). Returns the number of
   /// stored entries (diagonal included).
   std::size_t analyzePattern(const SparseMatrix& k);
+  /// Widest envelope row (i - first column) kept also as a fixed-width band for the substitutions.
+  static constexpr int kMaxBandWidth = 12;
+  /// Width of the fixed-width band the substitutions use (0: they run on the envelope). A line's pattern
+  /// gives 5 (bar nodes) or 11 (beam nodes); kept when at most kMaxBandWidth and its padding at most
+  /// doubles the envelope's storage.
+  int bandWidth() const { return m_bandWidth; }
   /// Entries inside the envelope [-] (0 before analyzePattern).
   std::size_t envelopeSize() const { return m_values.size(); }
   /// Multiply-adds one factorisation takes with this envelope [-] (a cost estimate for choosing a method).
@@ -71,6 +77,10 @@ class SkylineLdlt {
   std::vector<double> m_columnValue;
   std::vector<std::size_t> m_columnSource;  // index in m_values of each column-ordered entry
   std::vector<double> m_inverseDiagonal;
+  // L as a band of fixed width m_bandWidth (0: not kept; the envelope is too wide or too ragged): row i
+  // holds L(i, i - w) ... L(i, i - 1), zero outside the envelope (solveRange).
+  int m_bandWidth = 0;
+  std::vector<double> m_band;
 };
 
 }  // namespace tangle::solver

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -75,6 +76,57 @@ TEST(SkylineLdlt, EqualsDenseLdltOnBeamLineWithArrowCoupling) {
   const Eigen::MatrixXd dense(k);
   const VecX reference = dense.ldlt().solve(b);
   EXPECT_LT((x - reference).norm() / reference.norm(), 1e-12);
+}
+
+TEST(SkylineLdlt, FixedWidthBandOfLinesEqualsDenseLdlt) {
+  // Bar line (3 DOFs per node: band 5) and beam line (6: band 11) solve on the fixed-width band; both agree
+  // with the dense LDL^T, also for a range of blocks solved alone (reads stay inside the range: the
+  // entries of the other blocks are NaN here and must not leak in).
+  for (const int dofsPerNode : {3, 6}) {
+    const int nodes = 40, n = 40 * dofsPerNode;
+    const SparseMatrix k = lineMatrix(nodes, dofsPerNode, {}, 3);
+    solver::SkylineLdlt s;
+    s.analyzePattern(k);
+    EXPECT_EQ(s.bandWidth(), 2 * dofsPerNode - 1);
+    ASSERT_TRUE(s.factorize(k));
+    const VecX b = VecX::Random(n);
+    VecX x = b;
+    s.solveInPlace(x);
+    const VecX reference = Eigen::MatrixXd(k).ldlt().solve(b);
+    EXPECT_LT((x - reference).norm() / reference.norm(), 1e-12) << dofsPerNode << " DOFs per node";
+  }
+  // Two independent bar lines: the second block alone, the first one's entries NaN.
+  const SparseMatrix one = lineMatrix(30, 3, {}, 4);
+  std::vector<Triplet> t;
+  for (int copy = 0; copy < 2; ++copy)
+    for (int c = 0; c < one.outerSize(); ++c)
+      for (SparseMatrix::InnerIterator it(one, c); it; ++it)
+        t.emplace_back(copy * 90 + static_cast<int>(it.row()), copy * 90 + static_cast<int>(it.col()), it.value());
+  SparseMatrix k(180, 180);
+  k.setFromTriplets(t.begin(), t.end());
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_EQ(s.blockCount(), 2);
+  EXPECT_EQ(s.bandWidth(), 5);
+  ASSERT_TRUE(s.factorize(k));
+  VecX b = VecX::Random(180);
+  b.head(90).setConstant(std::numeric_limits<double>::quiet_NaN());
+  const VecX rhs = b.tail(90);
+  s.solveBlocksInPlace(b, {1});
+  const VecX x = b.tail(90);
+  const VecX reference = Eigen::MatrixXd(one).ldlt().solve(rhs);
+  EXPECT_TRUE(x.allFinite());
+  EXPECT_LT((x - reference).norm() / reference.norm(), 1e-12);
+}
+
+TEST(SkylineLdlt, WideEnvelopeKeepsTheEnvelopeSubstitutions) {
+  // An arrow coupling (last node to first) makes the last rows span the matrix: no fixed-width band.
+  std::vector<std::pair<int, int>> extra;
+  for (int i = 0; i < 3; ++i) extra.emplace_back(39 * 3 + i, i);
+  const SparseMatrix k = lineMatrix(40, 3, extra, 5);
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  EXPECT_EQ(s.bandWidth(), 0);
 }
 
 TEST(SkylineLdlt, IndefiniteMatrixWithoutZeroPivotsIsSolved) {
