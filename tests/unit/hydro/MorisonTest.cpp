@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
@@ -270,6 +272,38 @@ TEST(Morison, SubmergedFraction) {
   EXPECT_DOUBLE_EQ(submergedFraction(-1.0, 3.0, 1.0), 0.5);   // wave crest at z = 1
   EXPECT_EQ(submergedFraction(-2.0, -2.0, -1.0), 1.0);        // horizontal, below a trough
   EXPECT_EQ(submergedFraction(-2.0, -2.0, -3.0), 0.0);        // horizontal, above the surface
+}
+
+// Source: the reference formulas of morisonElementLoad. morisonNodeForces (the assembly's force-only call)
+// arranges them for a shorter dependency chain: forces and added mass equal to round-off (1e-13 of the
+// largest force), over random elements (lengths 0.1-20 m, any orientation), relative velocities (normal,
+// axial and mixed, including a zero one), fluid accelerations and wetted fractions. Coincident nodes throw.
+TEST(Morison, NodeForcesEqualElementLoad) {
+  const MorisonCoefficients c = morisonCoefficients(testType(), kRho);
+  std::srand(7);
+  const auto random = [] { return 2.0 * std::rand() / RAND_MAX - 1.0; };
+  for (int trial = 0; trial < 200; ++trial) {
+    const Vec3 x1(random() * 50.0, random() * 50.0, -100.0 + random() * 50.0);
+    const Vec3 axis = Vec3(random(), random(), random()).normalized() * (0.1 + 10.0 * (1.0 + random()));
+    const Vec3 x2 = x1 + axis;
+    const Vec3 u(random(), random(), 0.2 * random());
+    Vec3 v1(random(), random(), random()), v2(random(), random(), random());
+    if (trial % 5 == 1) v1 = u;                                  // no relative velocity at node 1
+    if (trial % 5 == 2) v2 = u + 0.7 * axis.normalized();        // purely axial at node 2
+    const FluidKinematics f = flow(u, trial % 2 ? Vec3(random(), random(), random()) : Vec3::Zero());
+    const double wet = trial % 3 ? 1.0 : 0.5 * (1.0 + random());
+    const MorisonElementLoad reference = morisonElementLoad(x1, x2, v1, v2, f, c, wet, false, false);
+    const MorisonNodeForces forces = morisonNodeForces(x1, x2, v1, v2, f, c, wet);
+    const double scale = std::max({reference.force1.norm(), reference.force2.norm(), 1e-3});
+    EXPECT_LT((forces.force1 - reference.force1).norm(), 1e-13 * scale) << "trial " << trial;
+    EXPECT_LT((forces.force2 - reference.force2).norm(), 1e-13 * scale) << "trial " << trial;
+    EXPECT_LT((forces.addedMassPerNode.tangent - reference.addedMassPerNode.tangent).norm(), 1e-15);
+    EXPECT_NEAR(forces.addedMassPerNode.normal, reference.addedMassPerNode.normal,
+                1e-14 * reference.addedMassPerNode.normal);
+    EXPECT_NEAR(forces.addedMassPerNode.axial, reference.addedMassPerNode.axial, 1e-14 * c.axialMass * 20.0);
+  }
+  EXPECT_THROW(morisonNodeForces(Vec3(1, 2, -3), Vec3(1, 2, -3), Vec3::Zero(), Vec3::Zero(), flow(Vec3::Zero()), c, 1.0),
+               Error);
 }
 
 TEST(Morison, RejectsInvalidArguments) {
