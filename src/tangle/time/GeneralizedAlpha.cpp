@@ -394,14 +394,20 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   // step where 3.5 give the same tension ranges to 1.5e-4).
   m_assembler->nodeRoundoffFloor(start, m_nodeFloor);
   {
+    // Per node (its equations are consecutive: DofMap numbers them in node order): two divisions for a
+    // beam node, one for a bar node, instead of one per equation.
     const std::vector<double>& scale = m_assembler->nodeForceScale();
     m_inverseAllowed.resize(neq);
-    for (int i = 0; i < neq; ++i) {
-      const int dof = eqDofs[i];
-      const int node = dofs.nodeOf(dof);
-      double allowed = std::max(m_settings.tolerance * scale[node], m_nodeFloor[node]);
-      if (dof - dofs.firstDof(node) >= 3) allowed *= std::max(model.momentScale(node), 1e-6);
-      m_inverseAllowed[i] = 1.0 / allowed;
+    int i = 0;
+    while (i < neq) {
+      const int node = dofs.nodeOf(eqDofs[i]);
+      const int first = dofs.firstDof(node);
+      const double allowed = std::max(m_settings.tolerance * scale[node], m_nodeFloor[node]);
+      const double inverseForce = 1.0 / allowed;
+      const double inverseMoment =
+          dofs.hasRotations(node) ? 1.0 / (allowed * std::max(model.momentScale(node), 1e-6)) : 0.0;
+      for (; i < neq && eqDofs[i] < first + dofs.dofCount(node); ++i)
+        m_inverseAllowed[i] = eqDofs[i] - first >= 3 ? inverseMoment : inverseForce;
     }
   }
 
