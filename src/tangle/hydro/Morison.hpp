@@ -119,8 +119,9 @@ struct MorisonNodeForces {
   AddedMass addedMassPerNode;  ///< added mass of each node [kg] (as MorisonElementLoad's)
 };
 
-/// force1, force2 and addedMassPerNode of morisonElementLoad (same arguments, same formulas), with a wetted
-/// fraction in (0, 1] and a wet fluid (coefficients.wet); the caller skips dry elements.
+/// force1, force2 and addedMassPerNode of morisonElementLoad (same arguments; its formulas arranged for a
+/// shorter chain of dependent operations, equal to round-off), with a wetted fraction in (0, 1] and a wet
+/// fluid (coefficients.wet); the caller skips dry elements.
 /// @throws tangle::Error for coincident nodes
 MorisonNodeForces morisonNodeForces(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
                                     const FluidKinematics& fluid, const MorisonCoefficients& coefficients,

@@ -53,7 +53,9 @@ void BackgroundWriter::run() {
   for (;;) {
     // Sleep until enough jobs wait (or a flush or the stop asks for the rest); once awake, run the queue
     // empty before sleeping again.
-    const auto awake = [this] { return m_stop || (m_flush && !m_queue.empty()) || m_queue.size() >= m_wakeAt; };
+    const auto awake = [this] {
+      return m_stop || (m_flush && !m_queue.empty()) || m_queue.size() >= m_wakeAt;
+    };
     if (!awake()) {
       m_writerWaiting = true;
       m_work.wait(lock, awake);
@@ -77,9 +79,9 @@ void BackgroundWriter::run() {
         if (!m_error) m_error = error;
         m_queue.clear();
       }
-      if (m_submitterWaiting) m_done.notify_one();
+      if (m_submitterWaiting) m_done.notify_all();
     }
-    if (m_submitterWaiting) m_done.notify_one();
+    if (m_submitterWaiting) m_done.notify_all();
     if (m_stop) return;  // stopping, nothing left
   }
 }

@@ -43,14 +43,14 @@ class BackgroundWriter {
 
   std::size_t m_maxQueued;
   std::mutex m_mutex;
-  std::size_t m_wakeAt;               // queued jobs that wake the writer
-  std::condition_variable m_work;     // for the writer: jobs to run, a flush asked for, or stop
-  std::condition_variable m_done;     // for the submitter: room in the queue, or everything run
+  std::size_t m_wakeAt;            // queued jobs that wake the writer
+  std::condition_variable m_work;  // for the writer: jobs to run, a flush asked for, or stop
+  std::condition_variable m_done;  // for the submitter: room in the queue, or everything run
   std::deque<std::function<void()>> m_queue;
   bool m_running = false;  // a job is running (popped from the queue, not finished)
-  bool m_writerWaiting = false;  // the writer sleeps on m_work
+  bool m_writerWaiting = false;     // the writer sleeps on m_work
   bool m_submitterWaiting = false;  // submit() or finish() sleeps on m_done
-  bool m_flush = false;    // finish() waits: run every queued job without waiting for more
+  bool m_flush = false;             // finish() waits: run every queued job without waiting for more
   bool m_stop = false;
   std::exception_ptr m_error;
   std::thread m_thread;  // last: started when everything it uses exists

@@ -31,7 +31,8 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
     // Half of the element's weight in air and of its buoyancy when submerged, per node (constants of the
     // model: the line type's lookups per element and assembly were 2 % of a mooring run).
     m_halfWeight.push_back(0.5 * wAir);
-    m_halfBuoyancy.push_back(0.5 * env.waterDensity * el.type->displacedAreaPerLength() * env.gravity * el.restLength);
+    m_halfBuoyancy.push_back(0.5 * env.waterDensity * el.type->displacedAreaPerLength() * env.gravity *
+                             el.restLength);
   }
   for (const model::NodeAttachment& a : model.attachments()) {
     const int line = model.lineOfNode(a.node);

@@ -63,20 +63,33 @@ void bandSubstitutions(double* x, int begin, int end, const double* band, const 
 }
 
 /// bandSubstitutions for the band width w in [1, SkylineLdlt::kMaxBandWidth].
-void bandSubstitutions(int w, double* x, int begin, int end, const double* band, const double* inverseDiagonal) {
+void bandSubstitutions(int w, double* x, int begin, int end, const double* band,
+                       const double* inverseDiagonal) {
   switch (w) {
-    case 1: return bandSubstitutions<1>(x, begin, end, band, inverseDiagonal);
-    case 2: return bandSubstitutions<2>(x, begin, end, band, inverseDiagonal);
-    case 3: return bandSubstitutions<3>(x, begin, end, band, inverseDiagonal);
-    case 4: return bandSubstitutions<4>(x, begin, end, band, inverseDiagonal);
-    case 5: return bandSubstitutions<5>(x, begin, end, band, inverseDiagonal);
-    case 6: return bandSubstitutions<6>(x, begin, end, band, inverseDiagonal);
-    case 7: return bandSubstitutions<7>(x, begin, end, band, inverseDiagonal);
-    case 8: return bandSubstitutions<8>(x, begin, end, band, inverseDiagonal);
-    case 9: return bandSubstitutions<9>(x, begin, end, band, inverseDiagonal);
-    case 10: return bandSubstitutions<10>(x, begin, end, band, inverseDiagonal);
-    case 11: return bandSubstitutions<11>(x, begin, end, band, inverseDiagonal);
-    default: return bandSubstitutions<12>(x, begin, end, band, inverseDiagonal);
+    case 1:
+      return bandSubstitutions<1>(x, begin, end, band, inverseDiagonal);
+    case 2:
+      return bandSubstitutions<2>(x, begin, end, band, inverseDiagonal);
+    case 3:
+      return bandSubstitutions<3>(x, begin, end, band, inverseDiagonal);
+    case 4:
+      return bandSubstitutions<4>(x, begin, end, band, inverseDiagonal);
+    case 5:
+      return bandSubstitutions<5>(x, begin, end, band, inverseDiagonal);
+    case 6:
+      return bandSubstitutions<6>(x, begin, end, band, inverseDiagonal);
+    case 7:
+      return bandSubstitutions<7>(x, begin, end, band, inverseDiagonal);
+    case 8:
+      return bandSubstitutions<8>(x, begin, end, band, inverseDiagonal);
+    case 9:
+      return bandSubstitutions<9>(x, begin, end, band, inverseDiagonal);
+    case 10:
+      return bandSubstitutions<10>(x, begin, end, band, inverseDiagonal);
+    case 11:
+      return bandSubstitutions<11>(x, begin, end, band, inverseDiagonal);
+    default:
+      return bandSubstitutions<12>(x, begin, end, band, inverseDiagonal);
   }
 }
 }  // namespace

@@ -20,7 +20,8 @@ double cableSnapStepLimit(const model::Model& model, const model::State& state, 
     // Only a bar at its kink can snap: one stretched beyond maxStrainStep is on its linear branch. Bars
     // just taut (0 <= strain < maxStrainStep) stay limited: left free, the 40 s snap run of
     // docs/theory.md 8.3 reached 2.95e5 N at the anchor instead of 2.1e5 N.
-    const double linearFrom = el.restLength * (1.0 + maxStrainStep);  // length where strain = maxStrainStep [m]
+    const double linearFrom =
+        el.restLength * (1.0 + maxStrainStep);  // length where strain = maxStrainStep [m]
     if (chord.squaredNorm() >= linearFrom * linearFrom) continue;
     const double length = chord.norm();
     const double rate = lengthening / (length * el.restLength);  // [1/s]

@@ -288,8 +288,8 @@ TEST(Morison, NodeForcesEqualElementLoad) {
     const Vec3 x2 = x1 + axis;
     const Vec3 u(random(), random(), 0.2 * random());
     Vec3 v1(random(), random(), random()), v2(random(), random(), random());
-    if (trial % 5 == 1) v1 = u;                                  // no relative velocity at node 1
-    if (trial % 5 == 2) v2 = u + 0.7 * axis.normalized();        // purely axial at node 2
+    if (trial % 5 == 1) v1 = u;                            // no relative velocity at node 1
+    if (trial % 5 == 2) v2 = u + 0.7 * axis.normalized();  // purely axial at node 2
     const FluidKinematics f = flow(u, trial % 2 ? Vec3(random(), random(), random()) : Vec3::Zero());
     const double wet = trial % 3 ? 1.0 : 0.5 * (1.0 + random());
     const MorisonElementLoad reference = morisonElementLoad(x1, x2, v1, v2, f, c, wet, false, false);
@@ -302,7 +302,8 @@ TEST(Morison, NodeForcesEqualElementLoad) {
                 1e-14 * reference.addedMassPerNode.normal);
     EXPECT_NEAR(forces.addedMassPerNode.axial, reference.addedMassPerNode.axial, 1e-14 * c.axialMass * 20.0);
   }
-  EXPECT_THROW(morisonNodeForces(Vec3(1, 2, -3), Vec3(1, 2, -3), Vec3::Zero(), Vec3::Zero(), flow(Vec3::Zero()), c, 1.0),
+  EXPECT_THROW(morisonNodeForces(Vec3(1, 2, -3), Vec3(1, 2, -3), Vec3::Zero(), Vec3::Zero(),
+                                 flow(Vec3::Zero()), c, 1.0),
                Error);
 }
 

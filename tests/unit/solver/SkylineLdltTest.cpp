@@ -47,6 +47,14 @@ SparseMatrix lineMatrix(int nodes, int dofsPerNode, const std::vector<std::pair<
   return k;
 }
 
+/// Couplings of the last node of a line of `nodes` nodes to its first (an arrow: two lines joined at a vessel
+/// numbered last), DOF by DOF.
+std::vector<std::pair<int, int>> lastToFirst(int nodes, int dofsPerNode) {
+  std::vector<std::pair<int, int>> extra;
+  for (int i = 0; i < dofsPerNode; ++i) extra.emplace_back((nodes - 1) * dofsPerNode + i, i);
+  return extra;
+}
+
 double relativeResidual(const SparseMatrix& k, const VecX& x, const VecX& b) { return (k * x - b).norm() / b.norm(); }
 
 TEST(SkylineLdlt, BarLineIsABandWithFiveSubDiagonals) {
@@ -64,9 +72,7 @@ TEST(SkylineLdlt, BarLineIsABandWithFiveSubDiagonals) {
 
 TEST(SkylineLdlt, EqualsDenseLdltOnBeamLineWithArrowCoupling) {
   // 6 DOFs per node; the last node coupled to the first (two lines joined at a vessel numbered last).
-  std::vector<std::pair<int, int>> extra;
-  for (int i = 0; i < 6; ++i) extra.emplace_back(59 * 6 + i, i);
-  const SparseMatrix k = lineMatrix(60, 6, extra, 2);
+  const SparseMatrix k = lineMatrix(60, 6, lastToFirst(60, 6), 2);
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   ASSERT_TRUE(s.factorize(k));
@@ -101,7 +107,8 @@ TEST(SkylineLdlt, FixedWidthBandOfLinesEqualsDenseLdlt) {
   for (int copy = 0; copy < 2; ++copy)
     for (int c = 0; c < one.outerSize(); ++c)
       for (SparseMatrix::InnerIterator it(one, c); it; ++it)
-        t.emplace_back(copy * 90 + static_cast<int>(it.row()), copy * 90 + static_cast<int>(it.col()), it.value());
+        t.emplace_back(copy * 90 + static_cast<int>(it.row()), copy * 90 + static_cast<int>(it.col()),
+                       it.value());
   SparseMatrix k(180, 180);
   k.setFromTriplets(t.begin(), t.end());
   solver::SkylineLdlt s;
@@ -121,9 +128,7 @@ TEST(SkylineLdlt, FixedWidthBandOfLinesEqualsDenseLdlt) {
 
 TEST(SkylineLdlt, WideEnvelopeKeepsTheEnvelopeSubstitutions) {
   // An arrow coupling (last node to first) makes the last rows span the matrix: no fixed-width band.
-  std::vector<std::pair<int, int>> extra;
-  for (int i = 0; i < 3; ++i) extra.emplace_back(39 * 3 + i, i);
-  const SparseMatrix k = lineMatrix(40, 3, extra, 5);
+  const SparseMatrix k = lineMatrix(40, 3, lastToFirst(40, 3), 5);
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   EXPECT_EQ(s.bandWidth(), 0);
