@@ -141,7 +141,6 @@ class GeneralizedAlpha {
   std::vector<int> m_activeBlocks;                  // blocks solved by the last solveCorrection
   std::vector<std::pair<int, int>> m_activeRanges;  // their equations [begin, end), ascending
   std::vector<int> m_moved;
-  std::vector<char> m_movedMark;
   int m_futileTries = 0;            // corrections in a row that tried a part and found none
   int m_partsPaused = 0;            // corrections left that do not try (applyCorrection)
   solver::AssemblyPart m_part;
