@@ -19,10 +19,13 @@ void DofMap::constrain(int dof) { m_equation.at(dof) = -1; }
 void DofMap::finalize() {
   m_equationCount = 0;
   m_equationDof.clear();
+  m_firstEquation.assign(m_firstDof.size() + 1, 0);
   for (int dof = 0; dof < fullDofCount(); ++dof) {
-    if (m_equation[dof] == -1) continue;
-    m_equation[dof] = m_equationCount++;
-    m_equationDof.push_back(dof);
+    if (m_equation[dof] != -1) {
+      m_equation[dof] = m_equationCount++;
+      m_equationDof.push_back(dof);
+    }
+    m_firstEquation[static_cast<std::size_t>(m_dofNode[dof]) + 1] = m_equationCount;
   }
 }
 

@@ -4,6 +4,7 @@
 /// nodes: translations then rotations) consecutive "full" DOFs; each full DOF is either free (it has
 /// an equation number) or constrained (its value is prescribed and it has no equation).
 
+#include <cstddef>
 #include <vector>
 
 namespace tangle::model {
@@ -30,6 +31,9 @@ class DofMap {
   int nodeOf(int dof) const { return m_dofNode[dof]; }
   /// Full DOF of each equation.
   const std::vector<int>& equationDofs() const { return m_equationDof; }
+  /// First equation of node `node` (0 <= node <= nodeCount()): the equations are numbered in node order, so
+  /// the node's are [firstEquation(node), firstEquation(node + 1)), empty for a node held in every DOF.
+  int firstEquation(int node) const { return m_firstEquation[static_cast<std::size_t>(node)]; }
 
  private:
   std::vector<int> m_firstDof;
@@ -37,6 +41,7 @@ class DofMap {
   std::vector<int> m_equation;  // -1 constrained, -2 free before finalize
   std::vector<int> m_equationDof;
   std::vector<int> m_dofNode;
+  std::vector<int> m_firstEquation;  // per node, then the equation count (finalize)
   int m_equationCount = 0;
 };
 

@@ -205,19 +205,16 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     // unconverged state. Measured (theory manual 8.2): 0.5 saved most on the 200-bar mooring example but
     // cost 16 % more iterations on 800 bars, where the dropped corrections add up; 0.2 costs 1 % there.
     constexpr double kNegligibleCorrection = 0.2;
-    // Node by node in ascending order (AssemblyPart's): equations are numbered in node order (DofMap) and a
-    // node's equations are consecutive and lie in one block, so the nodes of a range of equations are those
-    // between its first and last equation's. A node's test is formed without branches (whether a
-    // correction is negligible does not follow a pattern) over its equations and stored once (an update
-    // of the node's mark per equation waited on the store of the one before: 2 % of a mooring run).
+    // Node by node in ascending order (AssemblyPart's): a node's equations are consecutive (DofMap) and lie
+    // in one block, so the nodes of a range of equations are those between its first and last equation's.
+    // A node's test is formed without branches (whether a correction is negligible does not follow a
+    // pattern) over its equations and stored once (an update of a mark per equation waited on the store of
+    // the one before: 2 % of a mooring run).
     m_moved.clear();
     for (const auto& [begin, end] : m_activeRanges) {
-      int i = begin;
-      while (i < end) {
-        const int node = dofs.nodeOf(eqDofs[i]);
-        const int past = dofs.firstDof(node) + dofs.dofCount(node);  // first full DOF of the next node
+      for (int node = dofs.nodeOf(eqDofs[begin]); node <= dofs.nodeOf(eqDofs[end - 1]); ++node) {
         bool moved = false;
-        for (; i < end && eqDofs[i] < past; ++i)
+        for (int i = dofs.firstEquation(node); i < dofs.firstEquation(node + 1); ++i)
           moved |= std::abs(m_delta[i] * m_kDiagonal[i]) * m_inverseAllowed[i] > kNegligibleCorrection;
         if (moved) m_moved.push_back(node);
       }
@@ -278,15 +275,10 @@ double GeneralizedAlpha::residualRatio(const VecX& r, bool onPart) {
   if (onPart) {
     const model::DofMap& dofs = m_assembler->model().dofs();
     for (const int node : m_part.nodes) {
-      const int d = dofs.firstDof(node);
-      for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
-        const int eq = dofs.equation(dof);
-        if (eq < 0) continue;
-        const auto k =
-            std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
-        m_blockTouched[static_cast<std::size_t>(k)] = 1;
-        break;
-      }
+      const int eq = dofs.firstEquation(node);
+      if (eq == dofs.firstEquation(node + 1)) continue;  // held in every DOF
+      const auto k = std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
+      m_blockTouched[static_cast<std::size_t>(k)] = 1;
     }
   }
   double ratio = 0.0;
@@ -398,19 +390,17 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   // step where 3.5 give the same tension ranges to 1.5e-4).
   m_assembler->nodeRoundoffFloor(start, m_nodeFloor);
   {
-    // Per node (its equations are consecutive: DofMap numbers them in node order): two divisions for a
-    // beam node, one for a bar node, instead of one per equation.
+    // Per node (its equations are consecutive, DofMap::firstEquation): two divisions for a beam node, one
+    // for a bar node, instead of one per equation.
     const std::vector<double>& scale = m_assembler->nodeForceScale();
     m_inverseAllowed.resize(neq);
-    int i = 0;
-    while (i < neq) {
-      const int node = dofs.nodeOf(eqDofs[i]);
+    for (int node = 0; node < dofs.nodeCount(); ++node) {
       const int first = dofs.firstDof(node);
       const double allowed = std::max(m_settings.tolerance * scale[node], m_nodeFloor[node]);
       const double inverseForce = 1.0 / allowed;
       const double inverseMoment =
           dofs.hasRotations(node) ? 1.0 / (allowed * std::max(model.momentScale(node), 1e-6)) : 0.0;
-      for (; i < neq && eqDofs[i] < first + dofs.dofCount(node); ++i)
+      for (int i = dofs.firstEquation(node); i < dofs.firstEquation(node + 1); ++i)
         m_inverseAllowed[i] = eqDofs[i] - first >= 3 ? inverseMoment : inverseForce;
     }
   }

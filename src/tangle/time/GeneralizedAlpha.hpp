@@ -133,8 +133,9 @@ class GeneralizedAlpha {
   VecX m_dq, m_combo, m_inertia, m_residual;
   VecX m_force;
   std::vector<bool> m_prescribedDof;
-  // Iterations on a part (theory manual 8.2): the nodes the last correction moved, the part of the model
-  // re-evaluated for them, a mark per node, and the diagonal of the factorised matrix [N/m, N m/rad].
+  // Independent blocks (theory manual 8.2): the block partition and each block's state; iterations on a
+  // part: the nodes the last correction moved, the part of the model re-evaluated for them, and the
+  // diagonal of the factorised matrix [N/m, N m/rad].
   std::vector<int> m_blockStart;                    // block partition m_blockRatio is for (empty: one block)
   std::vector<double> m_blockRatio;                 // largest out-of-balance / allowed in each block
   std::vector<char> m_blockTouched;                 // work space of residualRatio
