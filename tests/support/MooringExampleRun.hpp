@@ -93,4 +93,17 @@ inline double largestTensionDifference(const FairleadRun& a, const FairleadRun& 
   return worst;
 }
 
+/// The check of a solver switch's verification tests (parts, blocks, refresh rule): `other` has the response
+/// of `reference` on a line within the convergence tolerance's latitude: its fairlead tension range over the
+/// last 10 s of the 30 s runs (from 20 s) within 1e-3 of the reference's, and every step's tension within
+/// `stepBound` [N]. Returns the largest step difference [N].
+inline double expectSameFairleadResponse(const FairleadRun& reference, const FairleadRun& other, std::size_t line,
+                                         double stepBound) {
+  const double range = rangeAfter(reference, line, 20.0);
+  EXPECT_NEAR(rangeAfter(other, line, 20.0), range, 1e-3 * range) << "line " << line + 1;
+  const double worst = largestTensionDifference(reference, other, line);
+  EXPECT_LT(worst, stepBound) << "line " << line + 1;
+  return worst;
+}
+
 }  // namespace tangle::test

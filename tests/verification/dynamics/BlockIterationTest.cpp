@@ -45,10 +45,7 @@ TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceToleran
   ASSERT_EQ(whole.time.size(), blocks.time.size());
   const std::array<double, 3> stepBound{3e-3 * rangeAfter(whole, 0, 20.0), 10.0, 10.0};  // [N], see above
   for (std::size_t l = 0; l < 3; ++l) {
-    const double range = rangeAfter(whole, l, 20.0);
-    EXPECT_NEAR(rangeAfter(blocks, l, 20.0), range, 1e-3 * range) << "line " << l + 1;
-    const double worst = test::largestTensionDifference(whole, blocks, l);
-    EXPECT_LT(worst, stepBound[l]) << "line " << l + 1;
+    const double worst = test::expectSameFairleadResponse(whole, blocks, l, stepBound[l]);
     RecordProperty("largest_tension_difference_N_line" + std::to_string(l + 1), std::to_string(worst));
   }
 }
