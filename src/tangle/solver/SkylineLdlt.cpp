@@ -29,6 +29,8 @@ inline double dot(const double* a, const double* b, std::ptrdiff_t n) {
 /// L(i, i - W) ... L(i, i - 1) at band[i W + 0 .. W - 1], zero outside the envelope. The rows' products
 /// have a fixed count (no loop over a row's varying length, no index array for the columns), and the
 /// unknown found just before is held apart as in SkylineLdlt::solveRange. Reads stay inside [begin, end).
+/// The full rows take a loop of constant count, apart from the first (last) W rows of the range: one loop
+/// over the varying reach for all rows made the solve 45 % slower (4.8 -> 7.1 ns per equation, bar line).
 template <int W>
 void bandSubstitutions(double* x, int begin, int end, const double* band, const double* inverseDiagonal) {
   double previous = 0.0;
