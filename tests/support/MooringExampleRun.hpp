@@ -97,8 +97,8 @@ inline double largestTensionDifference(const FairleadRun& a, const FairleadRun& 
 /// of `reference` on a line within the convergence tolerance's latitude: its fairlead tension range over the
 /// last 10 s of the 30 s runs (from 20 s) within 1e-3 of the reference's, and every step's tension within
 /// `stepBound` [N]. Returns the largest step difference [N].
-inline double expectSameFairleadResponse(const FairleadRun& reference, const FairleadRun& other, std::size_t line,
-                                         double stepBound) {
+inline double expectSameFairleadResponse(const FairleadRun& reference, const FairleadRun& other,
+                                         std::size_t line, double stepBound) {
   const double range = rangeAfter(reference, line, 20.0);
   EXPECT_NEAR(rangeAfter(other, line, 20.0), range, 1e-3 * range) << "line " << line + 1;
   const double worst = largestTensionDifference(reference, other, line);

@@ -277,7 +277,8 @@ double GeneralizedAlpha::residualRatio(const VecX& r, bool onPart) {
     for (const int node : m_part.nodes) {
       const int eq = dofs.firstEquation(node);
       if (eq == dofs.firstEquation(node + 1)) continue;  // held in every DOF
-      const auto k = std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
+      const auto k =
+          std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
       m_blockTouched[static_cast<std::size_t>(k)] = 1;
     }
   }
