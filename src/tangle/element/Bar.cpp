@@ -25,7 +25,7 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tan
   // K = [k, -k; -k, k], k = EA / L0 e e^T + N / l (I - e e^T).
   const Vec3 d = x2 - x1;
   const double l = d.norm();
-  if (!(l > 0.0)) throw Error("Bar: the two nodes coincide (zero current length)");
+  if (!(l > 0.0)) throwCoincidentNodes();
   const Vec3 e = d / l;
   // A slack bar (l < L0) may be given a reduced compression stiffness (compressionFactor < 1).
   const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
@@ -41,6 +41,8 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tan
   tangent->topRightCorner<3, 3>() = -k;
   tangent->bottomLeftCorner<3, 3>() = -k;
 }
+
+void Bar::throwCoincidentNodes() { throw Error("Bar: the two nodes coincide (zero current length)"); }
 
 double Bar::axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor) const {
   const double l = (x2 - x1).norm();

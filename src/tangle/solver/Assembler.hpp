@@ -231,6 +231,20 @@ class Assembler {
   std::vector<double> m_nodeForceScale;
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
+  // Per full DOF, the node's own diagonal mass term of addOwnMass's node loop: its lumped mass [kg] at a
+  // translation (0 with consistent mass, whose translations the element loop adds), its rotational
+  // inertia [kg m^2] at a rotation (0 at DOFs the node does not have).
+  std::vector<double> m_nodeDiagonalMass;
+  // Per element, the constants of nodeRoundoffFloor: 16 EA eps and 16 EI eps (0 for a bar) [N m, N m^2],
+  // the rest length [m] and the force resolution 10e-14 EA [N] (the line type's lookups per element and
+  // step were 1.2 % of a mooring run's instructions).
+  struct RoundoffConstants {
+    double axial;
+    double bending;
+    double length;
+    double resolution;
+  };
+  std::vector<RoundoffConstants> m_roundoff;
   // Seabed friction in statics: committed anchor (x, y) per node (NaN: none) and the trial anchors of the
   // last assembly; positions (x, y) at the last commit, anchors of nodes that touch down later.
   std::vector<Vec2> m_anchor;
