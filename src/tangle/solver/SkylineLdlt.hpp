@@ -34,6 +34,15 @@ class SkylineLdlt {
   /// gives 5 (bar nodes) or 11 (beam nodes); kept when at most kMaxBandWidth and its padding at most
   /// doubles the envelope's storage.
   int bandWidth() const { return m_bandWidth; }
+  /// A block of at least kMinTwistedBlock band widths of equations on the fixed-width band is also
+  /// factorised from its bottom end and solved from both ends at once (twisted; see factorizeTwists).
+  static constexpr int kMinTwistedBlock = 8;
+  /// Blocks solved twisted after the last factorize [-].
+  int twistedBlockCount() const {
+    int count = 0;
+    for (const int m : m_twistRow) count += m >= 0 ? 1 : 0;
+    return count;
+  }
   /// Entries inside the envelope [-] (0 before analyzePattern).
   std::size_t envelopeSize() const { return m_values.size(); }
   /// Multiply-adds one factorisation takes with this envelope [-] (a cost estimate for choosing a method).
@@ -57,6 +66,11 @@ class SkylineLdlt {
  private:
   /// The substitutions over equations [begin, end), a union of whole blocks.
   void solveRange(double* x, int begin, int end) const;
+  /// The twisted factors of the long blocks (m_twistRow, m_bandUp, m_twistFactor and the inverse pivots of
+  /// their bottom and separator rows), from the top-down factor and K (m_original); `tiny` as factorize's.
+  void factorizeTwists(double tiny);
+  /// Entry (i, j) of K as factorised (0 outside the envelope).
+  double originalEntry(int i, int j) const;
   /// Offset o of row i such that entry (i, j) of L is m_values[o + j].
   std::ptrdiff_t rowBase(int i) const { return static_cast<std::ptrdiff_t>(m_start[i]) - m_first[i]; }
 
@@ -81,6 +95,14 @@ class SkylineLdlt {
   // holds L(i, i - w) ... L(i, i - 1), zero outside the envelope (solveRange).
   int m_bandWidth = 0;
   std::vector<double> m_band;
+  // Twisted blocks: per block the first separator row m (-1: solved top-down), the bottom part's factor L'
+  // (row j: L'(j, j + d) at m_bandUp[j w + w - d], separator rows hold their entries in the bottom part's
+  // columns) and the separator's unit lower factor (w x w per block); K's envelope and diagonal.
+  std::vector<int> m_twistRow;
+  std::vector<double> m_bandUp;
+  std::vector<double> m_twistFactor;
+  std::vector<double> m_original;
+  std::vector<double> m_originalDiagonal;
 };
 
 }  // namespace tangle::solver

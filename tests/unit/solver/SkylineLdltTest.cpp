@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <random>
 #include <vector>
@@ -126,6 +128,52 @@ TEST(SkylineLdlt, FixedWidthBandOfLinesEqualsDenseLdlt) {
   EXPECT_LT((x - reference).norm() / reference.norm(), 1e-12);
 }
 
+/// A symmetric band matrix of n equations with every entry within `width` of the diagonal set (random in
+/// [-1, 1]), positive definite by diagonal dominance unless `indefinite` (then every 5th pivot negative).
+SparseMatrix bandMatrix(int n, int width, unsigned seed, bool indefinite = false) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Triplet> t;
+  for (int i = 0; i < n; ++i) {
+    for (int j = std::max(0, i - width); j < i; ++j) {
+      const double v = u(rng);
+      t.emplace_back(i, j, v);
+      t.emplace_back(j, i, v);
+    }
+    const double d = 2.0 * width + 2.0 + u(rng);
+    t.emplace_back(i, i, indefinite && i % 5 == 2 ? -d : d);
+  }
+  SparseMatrix k(n, n);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  return k;
+}
+
+TEST(SkylineLdlt, TwistedBlocksEqualDenseLdlt) {
+  // A block of at least kMinTwistedBlock band widths is factorised from both ends and solved twisted; one
+  // shorter stays top-down. Every band width the fixed-width band takes (1-12), lengths at and around the
+  // threshold (odd and even, so the two parts differ by one row or not), definite and indefinite.
+  for (int width = 1; width <= solver::SkylineLdlt::kMaxBandWidth; ++width) {
+    const int threshold = solver::SkylineLdlt::kMinTwistedBlock * width;
+    for (const int n : {threshold - 1, threshold, threshold + 1, threshold + width, 3 * threshold + 7}) {
+      for (const bool indefinite : {false, true}) {
+        const SparseMatrix k = bandMatrix(n, width, static_cast<unsigned>(100 * width + n), indefinite);
+        solver::SkylineLdlt s;
+        s.analyzePattern(k);
+        ASSERT_EQ(s.bandWidth(), width);
+        ASSERT_TRUE(s.factorize(k)) << "width " << width << ", " << n << " equations";
+        EXPECT_EQ(s.twistedBlockCount(), n >= threshold ? 1 : 0) << "width " << width << ", " << n;
+        const VecX b = VecX::Random(n);
+        VecX x = b;
+        s.solveInPlace(x);
+        const VecX reference = Eigen::MatrixXd(k).ldlt().solve(b);
+        EXPECT_LT((x - reference).norm() / reference.norm(), 1e-12)
+            << "width " << width << ", " << n << " equations" << (indefinite ? ", indefinite" : "");
+      }
+    }
+  }
+}
+
 TEST(SkylineLdlt, WideEnvelopeKeepsTheEnvelopeSubstitutions) {
   // An arrow coupling (last node to first) makes the last rows span the matrix: no fixed-width band.
   const SparseMatrix k = lineMatrix(40, 3, lastToFirst(40, 3), 5);
@@ -229,6 +277,42 @@ TEST(SkylineLdlt, CouplingAcrossLinesJoinsTheBlocksBetween) {
   VecX x = b;
   s.solveBlocksInPlace(x, {0, 1});
   EXPECT_LT(relativeResidual(k, x, b), 1e-13);
+}
+
+TEST(SkylineLdlt, TwistedAndTopDownBlocksSolvedAlone) {
+  // Lines of 60, 10 and 50 bar nodes: the first and last blocks twisted, the short one top-down. Any set of
+  // blocks is solved alone: the others' entries (NaN here) are neither read nor written.
+  const SparseMatrix k =
+      blockDiagonal({lineMatrix(60, 3, {}, 31), lineMatrix(10, 3, {}, 32), lineMatrix(50, 3, {}, 33)}, {});
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_EQ(s.blockCount(), 3);
+  ASSERT_EQ(s.bandWidth(), 5);
+  ASSERT_TRUE(s.factorize(k));
+  EXPECT_EQ(s.twistedBlockCount(), 2);
+  const VecX b = VecX::Random(360);
+  VecX whole = b;
+  s.solveInPlace(whole);
+  EXPECT_LT(relativeResidual(k, whole, b), 1e-13);
+  const std::vector<std::vector<int>> subsets{{0}, {1}, {2}, {0, 1}, {1, 2}, {0, 2}};
+  for (const std::vector<int>& blocks : subsets) {
+    VecX x = VecX::Constant(360, std::numeric_limits<double>::quiet_NaN());
+    for (const int block : blocks) {
+      const int begin = s.blockStart(block), end = s.blockStart(block + 1);
+      x.segment(begin, end - begin) = b.segment(begin, end - begin);
+    }
+    s.solveBlocksInPlace(x, blocks);
+    for (int block = 0; block < 3; ++block) {
+      const int begin = s.blockStart(block), end = s.blockStart(block + 1);
+      const bool solved = std::find(blocks.begin(), blocks.end(), block) != blocks.end();
+      for (int i = begin; i < end; ++i) {
+        if (solved)
+          EXPECT_EQ(x[i], whole[i]) << "block " << block << ", equation " << i;
+        else
+          EXPECT_TRUE(std::isnan(x[i])) << "block " << block << ", equation " << i;
+      }
+    }
+  }
 }
 
 TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {
