@@ -69,8 +69,7 @@ CurrentProfile CurrentProfile::uniform(double speed, double azimuth) {
   return CurrentProfile({CurrentLevel{0.0, speed, azimuth}});
 }
 
-Vec3 CurrentProfile::velocity(double z) const {
-  if (m_levels.empty()) return Vec3::Zero();
+Vec3 CurrentProfile::profileVelocity(double z) const {
   if (z <= m_levels.front().z) {
     const double speed = m_levels.front().speed;
     return Vec3(speed * m_frontDirection.x(), speed * m_frontDirection.y(), 0.0);

@@ -38,7 +38,7 @@ class CurrentProfile {
 
   /// Horizontal current velocity [m/s] at global level z [m] (see the class comment for z outside the
   /// levels).
-  Vec3 velocity(double z) const;
+  Vec3 velocity(double z) const { return m_levels.empty() ? Vec3::Zero() : profileVelocity(z); }
 
   /// The levels, sorted by increasing z (deepest first); empty for no current.
   const std::vector<CurrentLevel>& levels() const { return m_levels; }
@@ -47,6 +47,8 @@ class CurrentProfile {
   bool isZero() const;
 
  private:
+  /// velocity() with at least one level.
+  Vec3 profileVelocity(double z) const;
   std::vector<CurrentLevel> m_levels;
   std::vector<double> m_unwrappedAzimuth;  // level azimuths made continuous along the shorter arcs [rad]
   std::vector<Vec2> m_unwrappedDirection;  // (cos, sin) of m_unwrappedAzimuth [-]

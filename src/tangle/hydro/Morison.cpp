@@ -101,54 +101,10 @@ inline Vec3 unitTangent(const Vec3& x1, const Vec3& x2, double& length) {
   return (1.0 / length) * axis;  // one division, not three (the call is latency-bound)
 }
 
-/// Fluid inertia per unit length [N/m]: Froude-Krylov + added-mass part of the fluid acceleration.
-inline Vec3 fluidInertia(const FluidKinematics& fluid, const MorisonCoefficients& c, const Vec3& t) {
-  if (fluid.acceleration.isZero(0.0)) return Vec3::Zero();
-  const Vec3& af = fluid.acceleration;
-  return (c.displacedMass + c.normalMass) * af + ((c.axialMass - c.normalMass) * t.dot(af)) * t;
-}
-
-/// Added mass per unit length rho A (Can (I - t t^T) + Caa t t^T) on the length lumped at a node [kg].
-inline AddedMass lumpedAddedMass(const MorisonCoefficients& c, const Vec3& t, double halfLength) {
-  AddedMass m;
-  m.tangent = t;
-  m.normal = halfLength * c.normalMass;
-  m.axial = halfLength * c.axialMass;
-  return m;
-}
-
 }  // namespace
 
-MorisonNodeForces morisonNodeForces(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
-                                    const FluidKinematics& fluid, const MorisonCoefficients& coefficients,
-                                    double wettedFraction) {
-  // The formulas of morisonElementLoad arranged for a short dependency chain (the call is latency-bound:
-  // square root, division and square root in a row were 15 % of a mooring run): with the element vector
-  // a = x2 - x1, the normal relative velocity is v_r - (a.v_r / a.a) a and the axial one (a.v_r) / L, so
-  // 1 / a.a (a division) and L (a square root) run side by side instead of one after the other.
-  const Vec3 axis = x2 - x1;
-  const double squaredLength = axis.squaredNorm();
-  const double length = std::sqrt(squaredLength);
-  require(std::isfinite(length) && length > 0.0, "element length [m]", "finite and > 0 (distinct nodes)",
-          length);
-  const double inverseSquared = 1.0 / squaredLength;
-  const double inverseLength = length * inverseSquared;
-  const Vec3 t = inverseLength * axis;
-  const double halfLength = 0.5 * wettedFraction * length;  // wetted length lumped on each node [m]
-  const Vec3 inertia = fluidInertia(fluid, coefficients, t);
-  const double kn = coefficients.normalDrag, ka = coefficients.axialDrag;
-  const auto nodeForce = [&](const Vec3& v) {
-    const Vec3 vr = fluid.velocity - v;
-    const double along = axis.dot(vr);  // L v_ra [m^2/s]
-    const Vec3 vn = vr - (along * inverseSquared) * axis;
-    const double va = along * inverseLength;
-    return Vec3(halfLength * ((kn * vn.norm() * vn + ka * std::abs(va) * va * t) + inertia));
-  };
-  MorisonNodeForces out;
-  out.force1 = nodeForce(v1);
-  out.force2 = nodeForce(v2);
-  out.addedMassPerNode = lumpedAddedMass(coefficients, t, halfLength);
-  return out;
+void detail::failCoincidentNodes(double length) {
+  fail("element length [m]", "finite and > 0 (distinct nodes)", length);
 }
 
 MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3& v1, const Vec3& v2,
@@ -163,7 +119,7 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
   const double halfLength = 0.5 * wettedFraction * length;  // wetted length lumped on each node [m]
   const double kn = coefficients.normalDrag;
   const double ka = coefficients.axialDrag;
-  const Vec3 inertia = fluidInertia(fluid, coefficients, t);
+  const Vec3 inertia = detail::fluidInertia(fluid, coefficients, t);
 
   Vec3 q1, q2;
   Mat3 j1, j2;
@@ -180,16 +136,8 @@ MorisonElementLoad morisonElementLoad(const Vec3& x1, const Vec3& x2, const Vec3
     load.positionJacobian1 = half * dragPositionJacobian(fluid.velocity - v1, t, kn, ka);
     load.positionJacobian2 = half * dragPositionJacobian(fluid.velocity - v2, t, kn, ka);
   }
-  load.addedMassPerNode = lumpedAddedMass(coefficients, t, halfLength);
+  load.addedMassPerNode = detail::lumpedAddedMass(coefficients, t, halfLength);
   return load;
-}
-
-double submergedFraction(double z1, double z2, double surfaceElevation) {
-  const double lo = std::min(z1, z2);
-  const double hi = std::max(z1, z2);
-  if (hi <= surfaceElevation) return 1.0;
-  if (lo >= surfaceElevation) return 0.0;
-  return (surfaceElevation - lo) / (hi - lo);
 }
 
 }  // namespace tangle::hydro

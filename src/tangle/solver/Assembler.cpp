@@ -70,12 +70,6 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
   m_committedXY.assign(n, Vec2::Zero());
 }
 
-const element::Bar& Assembler::barOf(std::size_t e, std::optional<element::Bar>& copy) const {
-  const model::LineElement& el = m_model->elements()[e];
-  if (m_restLength.empty() || std::isnan(m_restLength[e])) return *el.bar;
-  return copy.emplace(el.bar->axialStiffness(), m_restLength[e]);
-}
-
 const element::CorotationalBeam& Assembler::beamOf(std::size_t e, std::optional<element::CorotationalBeam>& copy) const {
   const model::LineElement& el = m_model->elements()[e];
   if (m_restLength.empty() || std::isnan(m_restLength[e])) return *el.beam;
@@ -176,7 +170,6 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
     std::optional<element::Bar> barCopy;
-    std::optional<element::CorotationalBeam> beamCopy;
     if (el.bar && !matrix && beta == 0.0) {
       // The force alone (Bar::forceOnNode2: the same arithmetic as compute's, inline).
       const Vec3 f2 =
@@ -209,6 +202,7 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     } else {
       Vec12 f;
       Mat12 k;
+      std::optional<element::CorotationalBeam> beamCopy;
       const element::CorotationalBeam& beam = beamOf(e, beamCopy);
       beam.compute(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2], f,
                    matrix || beta > 0.0 ? &k : nullptr);

@@ -218,7 +218,11 @@ class Assembler {
                   const std::vector<int>* attachments = nullptr) const;
   /// Element e's bar or beam, or, under the statics length continuation (setRestLengths), a copy with the
   /// overriding unstretched length built in `copy`; no copy in the common case.
-  const element::Bar& barOf(std::size_t e, std::optional<element::Bar>& copy) const;
+  /// (Inline: called for every bar of every assembly.)
+  const element::Bar& barOf(std::size_t e, std::optional<element::Bar>& copy) const {
+    if (m_restLength.empty() || std::isnan(m_restLength[e])) return *m_model->elements()[e].bar;
+    return copy.emplace(m_model->elements()[e].bar->axialStiffness(), m_restLength[e]);
+  }
   const element::CorotationalBeam& beamOf(std::size_t e, std::optional<element::CorotationalBeam>& copy) const;
   /// Fraction of EA a slack cable element keeps: its type's, raised to the statics continuation's bound.
   double compressionFactor(const model::LineElement& el) const {
