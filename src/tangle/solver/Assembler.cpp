@@ -501,24 +501,32 @@ void Assembler::addPartMass(const model::State& state, const AssemblyPart& part,
 std::vector<double> Assembler::elementTension(const model::State& state,
                                               std::vector<element::BeamSectionForces>* beamForces) const {
   std::vector<double> t;
-  t.reserve(m_model->elements().size());
   if (beamForces) beamForces->assign(m_model->elements().size(), element::BeamSectionForces{});
-  for (std::size_t e = 0; e < m_model->elements().size(); ++e) {
-    const model::LineElement& el = m_model->elements()[e];
-    std::optional<element::Bar> barCopy;
-    std::optional<element::CorotationalBeam> beamCopy;
+  elementTension(state, t, beamForces);
+  return t;
+}
+
+void Assembler::elementTension(const model::State& state, std::vector<double>& t,
+                               std::vector<element::BeamSectionForces>* beamForces) const {
+  const auto& elements = m_model->elements();
+  t.resize(elements.size());
+  if (beamForces) beamForces->resize(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const model::LineElement& el = elements[e];
     if (el.bar) {
-      const element::Bar& bar = barOf(e, barCopy);
-      t.push_back(bar.axialForce(state.position[el.node1], state.position[el.node2], compressionFactor(el)));
+      std::optional<element::Bar> barCopy;
+      t[e] = barOf(e, barCopy)
+                 .axialForce(state.position[el.node1], state.position[el.node2], compressionFactor(el));
     } else {
-      const element::CorotationalBeam& beam = beamOf(e, beamCopy);
+      std::optional<element::CorotationalBeam> beamCopy;
       const element::BeamSectionForces f =
-          beam.sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2]);
-      t.push_back(f.axialForce);
+          beamOf(e, beamCopy)
+              .sectionForces(state.position[el.node1], state.triad[el.node1], state.position[el.node2],
+                             state.triad[el.node2]);
+      t[e] = f.axialForce;
       if (beamForces) (*beamForces)[e] = f;
     }
   }
-  return t;
 }
 
 }  // namespace tangle::solver

@@ -48,8 +48,10 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
                         const VecX* fullForce, std::vector<LineSnapshot>& out, LineResultDetail detail) {
   const bool all = detail == LineResultDetail::All;
-  std::vector<element::BeamSectionForces> beamForces;
-  const std::vector<double> tension = assembler.elementTension(state, &beamForces);
+  // Work space of the calling thread (the writer computes the range graphs at every step).
+  thread_local std::vector<element::BeamSectionForces> beamForces;
+  thread_local std::vector<double> tension;
+  assembler.elementTension(state, tension, &beamForces);
   const model::DofMap& dofs = model.dofs();
   const double depth = model.environment().waterDepth;
   out.resize(model.lines().size());

@@ -210,12 +210,20 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     // A node's test is formed without branches (whether a correction is negligible does not follow a
     // pattern) over its equations and stored once (an update of a mark per equation waited on the store of
     // the one before: 2 % of a mooring run).
+    // The equations' tests first, in one pass without branches that the compiler vectorises, then their OR
+    // per node (the tests inside the loop over nodes, scalar, were 3 % of a mooring run).
     m_moved.clear();
+    m_equationMoved.resize(static_cast<std::size_t>(neq));
     for (const auto& [begin, end] : m_activeRanges) {
+      const double* delta = m_delta.data();
+      const double* diagonal = m_kDiagonal.data();
+      const double* inverseAllowed = m_inverseAllowed.data();
+      unsigned char* flag = m_equationMoved.data();
+      for (int i = begin; i < end; ++i)
+        flag[i] = std::abs(delta[i] * diagonal[i]) * inverseAllowed[i] > kNegligibleCorrection ? 1 : 0;
       for (int node = dofs.nodeOf(eqDofs[begin]); node <= dofs.nodeOf(eqDofs[end - 1]); ++node) {
-        bool moved = false;
-        for (int i = dofs.firstEquation(node); i < dofs.firstEquation(node + 1); ++i)
-          moved |= std::abs(m_delta[i] * m_kDiagonal[i]) * m_inverseAllowed[i] > kNegligibleCorrection;
+        unsigned char moved = 0;
+        for (int i = dofs.firstEquation(node); i < dofs.firstEquation(node + 1); ++i) moved |= flag[i];
         if (moved) m_moved.push_back(node);
       }
     }

@@ -141,6 +141,8 @@ class GeneralizedAlpha {
   std::vector<char> m_blockTouched;                 // work space of residualRatio
   std::vector<int> m_activeBlocks;                  // blocks solved by the last solveCorrection
   std::vector<std::pair<int, int>> m_activeRanges;  // their equations [begin, end), ascending
+  std::vector<unsigned char>
+      m_equationMoved;  // applyCorrection: 1 where an equation's correction is not negligible
   std::vector<int> m_moved;
   int m_futileTries = 0;            // corrections in a row that tried a part and found none
   int m_partsPaused = 0;            // corrections left that do not try (applyCorrection)
