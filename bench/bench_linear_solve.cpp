@@ -19,6 +19,12 @@
 /// switched off and on); the arrow keeps the envelope. Tried and dropped: the chain's multiply and
 /// subtraction as one fused multiply-add (a run-time dispatched FMA build of the kernel): slower on both
 /// storages (6.2 -> 7.1, 4.6 -> 5.5 ns), so the chain's latency is not all that bounds the solve.
+/// Stop 26: a long block solved twisted (from both ends at once, SkylineLdlt::kMinTwistedBlock): 5.5 -> 3.1
+/// ns per equation on the bar line, 8.6 -> 5.4 on the beam line (same run, the commit before against this
+/// one). BM_SkylineFactorize*: one factorisation (SkylineLdlt::factorize, the refresh of the kept matrix).
+/// Stop 26: on the band (one division per row) and twisted (both ends' rows side by side): 35.8 -> 19.5 us on
+/// the bar line of 201 nodes, 78.8 -> 42.0 us on the beam line of 100 (same run, envelope against band); the
+/// fill from the compressed matrix and the copy of K for the bottom-up rows are part of it.
 
 #include <benchmark/benchmark.h>
 
@@ -86,6 +92,21 @@ void runSolve(benchmark::State& state, const SparseMatrix& k) {
                          benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
+void runFactorize(benchmark::State& state, const SparseMatrix& k) {
+  tangle::solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  for (auto _ : state) {
+    if (!s.factorize(k)) {
+      state.SkipWithError("factorisation failed");
+      return;
+    }
+    benchmark::ClobberMemory();
+  }
+  state.counters["ns_per_equation"] =
+      benchmark::Counter(static_cast<double>(k.rows()),
+                         benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void BM_SkylineSolveBarLine(benchmark::State& state) {
   runSolve(state, linesMatrix(1, static_cast<int>(state.range(0)), 3, 0));
 }
@@ -93,11 +114,19 @@ void BM_SkylineSolveBeamLine(benchmark::State& state) {
   runSolve(state, linesMatrix(1, static_cast<int>(state.range(0)), 6, 0));
 }
 void BM_SkylineSolveArrow(benchmark::State& state) { runSolve(state, linesMatrix(2, 100, 3, 6)); }
+void BM_SkylineFactorizeBarLine(benchmark::State& state) {
+  runFactorize(state, linesMatrix(1, static_cast<int>(state.range(0)), 3, 0));
+}
+void BM_SkylineFactorizeBeamLine(benchmark::State& state) {
+  runFactorize(state, linesMatrix(1, static_cast<int>(state.range(0)), 6, 0));
+}
 
 }  // namespace
 
 BENCHMARK(BM_SkylineSolveBarLine)->Arg(201)->Arg(801);
 BENCHMARK(BM_SkylineSolveBeamLine)->Arg(100);
 BENCHMARK(BM_SkylineSolveArrow);
+BENCHMARK(BM_SkylineFactorizeBarLine)->Arg(201);
+BENCHMARK(BM_SkylineFactorizeBeamLine)->Arg(100);
 
 BENCHMARK_MAIN();

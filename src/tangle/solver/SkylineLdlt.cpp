@@ -1,6 +1,7 @@
 #include "tangle/solver/SkylineLdlt.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -234,6 +235,97 @@ void twistedSubstitutions(int w, double* x, int b0, int b1, int m, const double*
       return twistedSubstitutions<12>(x, b0, b1, m, band, bandUp, twist, inverseDiagonal);
   }
 }
+
+/// One row i of the band LDL^T, top-down (the envelope's Crout row with a fixed count of products and one
+/// division per row: the entries of L multiplied by 1 / D). band[i W + W - d] = K(i, i - d) on entry, L(i, i
+/// - d) on return, for the columns i - d in [low, i) (the others are left as they are); rows before `low` are
+/// not read. Without `pivot`, the row's own pivot is not formed (a separator row: its entries in the columns
+/// before the separator only). False on |D(i)| <= tiny (or NaN).
+template <int W>
+inline bool bandRowDown(double* band, double* diagonal, double* inverseDiagonal, int i, int low, bool pivot,
+                        double tiny) {
+  double* row = band + static_cast<std::ptrdiff_t>(i) * W;
+  const int reach = std::min(W, i - low);
+  // row[W - d] <- w = L(i, i - d) D(i - d) = K(i, i - d) - sum_{d' > d} w(i - d') L(i - d, i - d')
+  for (int d = reach; d >= 1; --d) {
+    const double* rowJ = band + static_cast<std::ptrdiff_t>(i - d) * W;
+    double v = row[W - d];
+    for (int e = reach; e > d; --e) v -= row[W - e] * rowJ[W - (e - d)];
+    row[W - d] = v;
+  }
+  double d0 = diagonal[i];
+  for (int d = reach; d >= 1; --d) {
+    const double l = row[W - d] * inverseDiagonal[i - d];
+    d0 -= l * row[W - d];
+    row[W - d] = l;
+  }
+  if (!pivot) return true;
+  if (!(std::abs(d0) > tiny)) return false;
+  diagonal[i] = d0;
+  inverseDiagonal[i] = 1.0 / d0;
+  return true;
+}
+
+/// The mirror of bandRowDown for the factorisation from the bottom: row j's entries L'(j, j + d) at
+/// up[j W + W - d] for the columns j + d in (j, high] from K (original[k W + W - (k - j)] = K(k, j)), using
+/// the rows after j; rows after `high` are not read.
+template <int W>
+inline bool bandRowUp(double* up, const double* original, double* diagonal, double* inverseDiagonal, int j,
+                      int high, int lowColumn, bool pivot, double tiny) {
+  double* row = up + static_cast<std::ptrdiff_t>(j) * W;
+  const int reach = std::min(W, high - j);
+  const int first = std::max(1, lowColumn - j);  // separator rows: the bottom part's columns only
+  for (int d = reach; d >= first; --d) row[W - d] = original[static_cast<std::ptrdiff_t>(j + d) * W + W - d];
+  for (int d = reach; d >= first; --d) {
+    const double* rowK = up + static_cast<std::ptrdiff_t>(j + d) * W;
+    double v = row[W - d];
+    for (int e = reach; e > d; --e) v -= row[W - e] * rowK[W - (e - d)];
+    row[W - d] = v;
+  }
+  double d0 = diagonal[j];
+  for (int d = reach; d >= first; --d) {
+    const double l = row[W - d] * inverseDiagonal[j + d];
+    d0 -= l * row[W - d];
+    row[W - d] = l;
+  }
+  if (!pivot) return true;
+  if (!(std::abs(d0) > tiny)) return false;
+  diagonal[j] = d0;
+  inverseDiagonal[j] = 1.0 / d0;
+  return true;
+}
+
+/// Top-down LDL^T of the rows [begin, end) (a block) on the band (bandRowDown).
+template <int W>
+bool bandFactorizeRows(double* band, double* diagonal, double* inverseDiagonal, int begin, int end,
+                       double tiny) {
+  for (int i = begin; i < end; ++i)
+    if (!bandRowDown<W>(band, diagonal, inverseDiagonal, i, begin, true, tiny)) return false;
+  return true;
+}
+
+/// The two ends of a twisted block [b0, b1) with separator [m, m + W), side by side (two independent chains
+/// of rows, as twistedSubstitutions): rows [b0, m) and the separator rows' entries in their columns
+/// top-down into `band`, rows [m + W, b1) and the separator rows' entries in theirs bottom-up into `up`, the
+/// pivots of both parts into diagonal / inverseDiagonal. False on a vanishing pivot.
+template <int W>
+bool twistedFactorizeEnds(double* band, double* up, const double* original, double* diagonal,
+                          double* inverseDiagonal, int b0, int b1, int m, double tiny) {
+  const int t1 = m + W;
+  const int lenTop = t1 - b0, lenBottom = b1 - m;
+  const int count = std::max(lenTop, lenBottom);
+  for (int k = 0; k < count; ++k) {
+    if (k < lenTop) {
+      const int i = b0 + k;
+      if (!bandRowDown<W>(band, diagonal, inverseDiagonal, i, b0, i < m, tiny)) return false;
+    }
+    if (k < lenBottom) {
+      const int j = b1 - 1 - k;
+      if (!bandRowUp<W>(up, original, diagonal, inverseDiagonal, j, b1 - 1, t1, j >= t1, tiny)) return false;
+    }
+  }
+  return true;
+}
 }  // namespace
 
 std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
@@ -303,6 +395,20 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
                     ? width
                     : 0;
   m_band.assign(static_cast<std::size_t>(m_bandWidth) * static_cast<std::size_t>(m_n), 0.0);
+  // Where each stored value of the input lies in the band (factorize's band path): as m_map, with the
+  // band's index of a lower entry.
+  m_bandMap.clear();
+  if (m_bandWidth > 0) {
+    m_bandMap.assign(m_map.size(), kUpper);
+    for (int c = 0; c < m_n; ++c)
+      for (int p = outer[c]; p < columnEnd(c); ++p) {
+        const int r = inner[p];
+        if (r == c)
+          m_bandMap[p] = -1 - r;
+        else if (r > c)
+          m_bandMap[p] = static_cast<std::ptrdiff_t>(r) * m_bandWidth + (m_bandWidth - (r - c));
+      }
+  }
   // Cost: for each entry (i, j) of the envelope, a dot product over the overlap of rows i and j.
   m_cost = 0.0;
   for (int i = 0; i < m_n; ++i)
@@ -311,6 +417,7 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
 }
 
 bool SkylineLdlt::factorize(const SparseMatrix& k) {
+  if (m_bandWidth > 0) return factorizeBand(k);
   std::fill(m_values.begin(), m_values.end(), 0.0);
   std::fill(m_diagonal.begin(), m_diagonal.end(), 0.0);
   const double* a = k.valuePtr();
@@ -323,10 +430,6 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
   double largest = 0.0;
   for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
   const double tiny = 1e-14 * largest;
-  if (m_bandWidth > 0) {  // K itself, for the factorisation from the bottom (factorizeTwists)
-    m_original = m_values;
-    m_originalDiagonal = m_diagonal;
-  }
   double* v = m_values.data();
   for (int i = 0; i < m_n; ++i) {
     const int fi = m_first[i];
@@ -351,114 +454,140 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
   // L by columns for the backward substitution (see solveInPlace; the structure is the pattern's, set by
   // analyzePattern) and 1 / D.
   for (std::size_t q = 0; q < m_columnValue.size(); ++q) m_columnValue[q] = v[m_columnSource[q]];
-  if (m_bandWidth > 0) {
-    const int w = m_bandWidth;
-    for (int i = 0; i < m_n; ++i) {
-      double* row = m_band.data() + static_cast<std::ptrdiff_t>(i) * w;  // row[w - d] = L(i, i - d)
-      const std::ptrdiff_t rowI = rowBase(i);
-      for (int j = m_first[i]; j < i; ++j) row[w - (i - j)] = v[rowI + j];
-    }
-  }
   m_inverseDiagonal.resize(m_n);
   for (int i = 0; i < m_n; ++i) m_inverseDiagonal[i] = 1.0 / m_diagonal[i];
-  if (m_bandWidth > 0) factorizeTwists(tiny);
+  return true;
+}
+
+bool SkylineLdlt::factorizeBand(const SparseMatrix& k) {
+  // The envelope's Crout rows on the fixed-width band (bandRowDown): a fixed count of products per row and
+  // one division per row, where the envelope's loops over varying row lengths took a division per entry. A
+  // long block is factorised from both ends at once (twisted, see twistedSubstitutions): two independent
+  // chains of rows, as the substitutions.
+  std::fill(m_band.begin(), m_band.end(), 0.0);
+  std::fill(m_diagonal.begin(), m_diagonal.end(), 0.0);
+  const double* a = k.valuePtr();
+  const std::size_t stored = m_bandMap.size();
+  for (std::size_t p = 0; p < stored; ++p) {
+    const std::ptrdiff_t m = m_bandMap[p];
+    if (m >= 0)
+      m_band[static_cast<std::size_t>(m)] += a[p];
+    else if (m != kUpper)
+      m_diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
+  }
+  double largest = 0.0;
+  for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
+  const double tiny = 1e-14 * largest;
+  m_original = m_band;  // K itself: the bottom-up rows read it, and a failed twist starts again from it
+  m_originalDiagonal = m_diagonal;
+  m_inverseDiagonal.resize(m_n);
+  switch (m_bandWidth) {
+#define TANGLE_BAND_BLOCKS_CASE(W) \
+  case W:                          \
+    return factorizeBandBlocks<W>(tiny);
+    TANGLE_BAND_BLOCKS_CASE(1)
+    TANGLE_BAND_BLOCKS_CASE(2)
+    TANGLE_BAND_BLOCKS_CASE(3)
+    TANGLE_BAND_BLOCKS_CASE(4)
+    TANGLE_BAND_BLOCKS_CASE(5)
+    TANGLE_BAND_BLOCKS_CASE(6)
+    TANGLE_BAND_BLOCKS_CASE(7)
+    TANGLE_BAND_BLOCKS_CASE(8)
+    TANGLE_BAND_BLOCKS_CASE(9)
+    TANGLE_BAND_BLOCKS_CASE(10)
+    TANGLE_BAND_BLOCKS_CASE(11)
+#undef TANGLE_BAND_BLOCKS_CASE
+    default:
+      return factorizeBandBlocks<12>(tiny);
+  }
+}
+
+template <int W>
+bool SkylineLdlt::factorizeBandBlocks(double tiny) {
+  const int blocks = blockCount();
+  m_twistRow.assign(static_cast<std::size_t>(blocks), -1);
+  m_bandUp.resize(m_band.size());
+  m_twistFactor.resize(static_cast<std::size_t>(blocks) * static_cast<std::size_t>(W * W));
+  double* band = m_band.data();
+  double* diagonal = m_diagonal.data();
+  double* inverse = m_inverseDiagonal.data();
+  for (int block = 0; block < blocks; ++block) {
+    const int b0 = blockStart(block), b1 = blockStart(block + 1);
+    if (b1 - b0 >= kMinTwistedBlock * W) {
+      const int m = b0 + (b1 - b0 - W) / 2;
+      if (twistedFactorizeEnds<W>(band, m_bandUp.data(), m_original.data(), diagonal, inverse, b0, b1, m,
+                                  tiny) &&
+          factorizeSeparator(block, m, tiny)) {
+        m_twistRow[static_cast<std::size_t>(block)] = m;
+        continue;
+      }
+      // A vanishing pivot in the twisted order: the block top-down, from K again.
+      const auto from = static_cast<std::ptrdiff_t>(b0) * W, to = static_cast<std::ptrdiff_t>(b1) * W;
+      std::copy(m_original.begin() + from, m_original.begin() + to, m_band.begin() + from);
+      std::copy(m_originalDiagonal.begin() + b0, m_originalDiagonal.begin() + b1, m_diagonal.begin() + b0);
+    }
+    if (!bandFactorizeRows<W>(band, diagonal, inverse, b0, b1, tiny)) return false;
+  }
+  return true;
+}
+
+bool SkylineLdlt::factorizeSeparator(int block, int m, double tiny) {
+  // The separator [m, m + w) takes the Schur complement of both ends,
+  //   S = K_ss - sum_{k < m} L(s, k) D_k L(s', k) - sum_{k >= m + w} L'(s, k) D'_k L'(s', k),
+  // factorised densely (row-oriented Crout, as factorize); its unit lower factor into m_twistFactor, its
+  // pivots' inverses into m_inverseDiagonal.
+  const int w = m_bandWidth;
+  const int b0 = blockStart(block), b1 = blockStart(block + 1);
+  const int t1 = m + w;
+  std::array<double, kMaxBandWidth * kMaxBandWidth> schur{};
+  std::array<double, kMaxBandWidth> pivot{};
+  for (int a = 0; a < w; ++a)
+    for (int b = 0; b <= a; ++b) {
+      const int s = m + a, r = m + b;
+      double v = originalEntry(s, r);
+      const double* rowS = m_band.data() + static_cast<std::ptrdiff_t>(s) * w;
+      const double* rowR = m_band.data() + static_cast<std::ptrdiff_t>(r) * w;
+      for (int k = std::max(s - w, b0); k < m; ++k)
+        v -= rowS[w - (s - k)] * m_diagonal[static_cast<std::size_t>(k)] * rowR[w - (r - k)];
+      const double* upS = m_bandUp.data() + static_cast<std::ptrdiff_t>(s) * w;
+      const double* upR = m_bandUp.data() + static_cast<std::ptrdiff_t>(r) * w;
+      for (int k = t1; k <= std::min(r + w, b1 - 1); ++k)
+        v -= upS[w - (k - s)] * m_diagonal[static_cast<std::size_t>(k)] * upR[w - (k - r)];
+      schur[static_cast<std::size_t>(a * w + b)] = v;
+    }
+  for (int a = 0; a < w; ++a) {
+    double* rowA = schur.data() + a * w;
+    for (int b = 0; b < a; ++b) {
+      double v = rowA[b];
+      for (int c = 0; c < b; ++c) v -= rowA[c] * schur[static_cast<std::size_t>(b * w + c)];
+      rowA[b] = v;  // w_b = L(a, b) D_b
+    }
+    double d = rowA[a];
+    for (int b = 0; b < a; ++b) {
+      const double l = rowA[b] / pivot[static_cast<std::size_t>(b)];
+      d -= l * rowA[b];
+      rowA[b] = l;
+    }
+    if (!(std::abs(d) > tiny)) return false;
+    pivot[static_cast<std::size_t>(a)] = d;
+  }
+  double* factor = m_twistFactor.data() + static_cast<std::ptrdiff_t>(block) * w * w;
+  for (int a = 0; a < w; ++a)
+    for (int b = 0; b < a; ++b) factor[a * w + b] = schur[static_cast<std::size_t>(a * w + b)];
+  for (int a = 0; a < w; ++a) {
+    m_diagonal[static_cast<std::size_t>(m + a)] = pivot[static_cast<std::size_t>(a)];
+    m_inverseDiagonal[m + a] = 1.0 / pivot[static_cast<std::size_t>(a)];
+  }
   return true;
 }
 
 double SkylineLdlt::originalEntry(int i, int j) const {
   if (i == j) return m_originalDiagonal[static_cast<std::size_t>(i)];
   if (i < j) std::swap(i, j);
-  return j >= m_first[i] ? m_original[static_cast<std::size_t>(rowBase(i) + j)] : 0.0;
-}
-
-void SkylineLdlt::factorizeTwists(double tiny) {
-  // Each long block is also factorised from its bottom, rows [m, b1) in descending order, with the same
-  // Crout formulas mirrored (L'(j, k), k > j); the top-down factor of rows [b0, m) and of the separator rows'
-  // entries in columns before m is the one factorize computed (a row's entries depend only on the rows
-  // before it). The separator [m, m + W) then takes the Schur complement
-  //   S = K_ss - sum_{k < m} L(s, k) D_k L(s', k) - sum_{k >= m + W} L'(s, k) D'_k L'(s', k),
-  // factorised densely. A vanishing pivot of that order leaves the block to the top-down factor.
   const int w = m_bandWidth;
-  const int blocks = blockCount();
-  m_twistRow.assign(static_cast<std::size_t>(blocks), -1);
-  m_bandUp.assign(m_band.size(), 0.0);
-  m_twistFactor.assign(static_cast<std::size_t>(blocks) * static_cast<std::size_t>(w * w), 0.0);
-  std::vector<double> diagonalUp(static_cast<std::size_t>(m_n), 0.0);
-  std::vector<double> schur(static_cast<std::size_t>(w * w));
-  for (int block = 0; block < blocks; ++block) {
-    const int b0 = blockStart(block), b1 = blockStart(block + 1);
-    if (b1 - b0 < kMinTwistedBlock * w) continue;
-    const int m = b0 + (b1 - b0 - w) / 2;
-    const int t1 = m + w;
-    bool regular = true;
-    for (int j = b1 - 1; j >= m && regular; --j) {
-      double* up = m_bandUp.data() + static_cast<std::ptrdiff_t>(j) * w;  // up[w - d] = L'(j, j + d)
-      const int last = std::min(j + w, b1 - 1);
-      const int low = j >= t1 ? j + 1 : t1;  // separator rows: the bottom part's columns only
-      for (int k = last; k >= low; --k) {
-        double v = originalEntry(k, j);
-        const double* upK = m_bandUp.data() + static_cast<std::ptrdiff_t>(k) * w;
-        for (int l = k + 1; l <= std::min(last, k + w); ++l) v -= up[w - (l - j)] * upK[w - (l - k)];
-        up[w - (k - j)] = v;
-      }
-      if (j < t1) continue;  // a separator row keeps w_k = L'(j, k) D'_k (divided below)
-      double d = originalEntry(j, j);
-      for (int k = low; k <= last; ++k) {
-        const double l = up[w - (k - j)] / diagonalUp[static_cast<std::size_t>(k)];
-        d -= l * up[w - (k - j)];
-        up[w - (k - j)] = l;
-      }
-      if (!(std::abs(d) > tiny)) regular = false;
-      diagonalUp[static_cast<std::size_t>(j)] = d;
-    }
-    if (!regular) continue;
-    // Separator rows: L'(s, k) = w_k / D'_k; the Schur complement from both parts.
-    for (int s = m; s < t1; ++s) {
-      double* up = m_bandUp.data() + static_cast<std::ptrdiff_t>(s) * w;
-      for (int k = t1; k <= std::min(s + w, b1 - 1); ++k)
-        up[w - (k - s)] /= diagonalUp[static_cast<std::size_t>(k)];
-    }
-    for (int a = 0; a < w; ++a)
-      for (int b = 0; b <= a; ++b) {
-        const int s = m + a, r = m + b;
-        double v = originalEntry(s, r);
-        const double* rowS = m_band.data() + static_cast<std::ptrdiff_t>(s) * w;
-        const double* rowR = m_band.data() + static_cast<std::ptrdiff_t>(r) * w;
-        for (int k = std::max(s - w, b0); k < m; ++k)
-          if (k >= r - w)
-            v -= rowS[w - (s - k)] * m_diagonal[static_cast<std::size_t>(k)] * rowR[w - (r - k)];
-        const double* upS = m_bandUp.data() + static_cast<std::ptrdiff_t>(s) * w;
-        const double* upR = m_bandUp.data() + static_cast<std::ptrdiff_t>(r) * w;
-        for (int k = t1; k <= std::min(r + w, b1 - 1); ++k)
-          v -= upS[w - (k - s)] * diagonalUp[static_cast<std::size_t>(k)] * upR[w - (k - r)];
-        schur[static_cast<std::size_t>(a * w + b)] = v;
-      }
-    // Dense LDL^T of S (row-oriented Crout, as factorize).
-    std::vector<double> pivot(static_cast<std::size_t>(w));
-    for (int a = 0; a < w && regular; ++a) {
-      double* rowA = schur.data() + a * w;
-      for (int b = 0; b < a; ++b) {
-        double v = rowA[b];
-        for (int c = 0; c < b; ++c) v -= rowA[c] * schur[static_cast<std::size_t>(b * w + c)];
-        rowA[b] = v;  // w_b = L(a, b) D_b
-      }
-      double d = rowA[a];
-      for (int b = 0; b < a; ++b) {
-        const double l = rowA[b] / pivot[static_cast<std::size_t>(b)];
-        d -= l * rowA[b];
-        rowA[b] = l;
-      }
-      if (!(std::abs(d) > tiny)) regular = false;
-      pivot[static_cast<std::size_t>(a)] = d;
-    }
-    if (!regular) continue;
-    double* factor = m_twistFactor.data() + static_cast<std::ptrdiff_t>(block) * w * w;
-    for (int a = 0; a < w; ++a)
-      for (int b = 0; b < a; ++b) factor[a * w + b] = schur[static_cast<std::size_t>(a * w + b)];
-    for (int j = t1; j < b1; ++j) m_inverseDiagonal[j] = 1.0 / diagonalUp[static_cast<std::size_t>(j)];
-    for (int a = 0; a < w; ++a) m_inverseDiagonal[m + a] = 1.0 / pivot[static_cast<std::size_t>(a)];
-    m_twistRow[static_cast<std::size_t>(block)] = m;
-  }
+  return i - j <= w ? m_original[static_cast<std::size_t>(i) * static_cast<std::size_t>(w) +
+                                 static_cast<std::size_t>(w - (i - j))]
+                    : 0.0;
 }
 
 void SkylineLdlt::solveInPlace(VecX& b) const { solveRange(b.data(), 0, m_n); }

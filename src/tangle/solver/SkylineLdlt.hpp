@@ -35,7 +35,7 @@ class SkylineLdlt {
   /// doubles the envelope's storage.
   int bandWidth() const { return m_bandWidth; }
   /// A block of at least kMinTwistedBlock band widths of equations on the fixed-width band is also
-  /// factorised from its bottom end and solved from both ends at once (twisted; see factorizeTwists).
+  /// factorised and solved from both ends at once (twisted; see factorizeBandBlocks).
   static constexpr int kMinTwistedBlock = 8;
   /// Blocks solved twisted after the last factorize [-].
   int twistedBlockCount() const {
@@ -66,10 +66,16 @@ class SkylineLdlt {
  private:
   /// The substitutions over equations [begin, end), a union of whole blocks.
   void solveRange(double* x, int begin, int end) const;
-  /// The twisted factors of the long blocks (m_twistRow, m_bandUp, m_twistFactor and the inverse pivots of
-  /// their bottom and separator rows), from the top-down factor and K (m_original); `tiny` as factorize's.
-  void factorizeTwists(double tiny);
-  /// Entry (i, j) of K as factorised (0 outside the envelope).
+  /// factorizeBand's blocks, band width W: long ones twisted (twistedFactorizeEnds and factorizeSeparator;
+  /// m_twistRow, m_bandUp, m_twistFactor), the others top-down.
+  template <int W>
+  bool factorizeBandBlocks(double tiny);
+  /// The separator of twisted block `block` at rows [m, m + w): Schur complement and its dense LDL^T. False
+  /// on a vanishing pivot.
+  bool factorizeSeparator(int block, int m, double tiny);
+  /// factorize on the fixed-width band (m_bandWidth > 0): m_band, m_diagonal and m_inverseDiagonal.
+  bool factorizeBand(const SparseMatrix& k);
+  /// Entry (i, j) of K as factorised (0 outside the band; band mode only).
   double originalEntry(int i, int j) const;
   /// Offset o of row i such that entry (i, j) of L is m_values[o + j].
   std::ptrdiff_t rowBase(int i) const { return static_cast<std::ptrdiff_t>(m_start[i]) - m_first[i]; }
@@ -101,8 +107,9 @@ class SkylineLdlt {
   std::vector<int> m_twistRow;
   std::vector<double> m_bandUp;
   std::vector<double> m_twistFactor;
-  std::vector<double> m_original;
+  std::vector<double> m_original;  // K's band (as m_band): the bottom-up rows read it
   std::vector<double> m_originalDiagonal;
+  std::vector<std::ptrdiff_t> m_bandMap;  // as m_map, with a lower entry's index in the band
 };
 
 }  // namespace tangle::solver

@@ -174,6 +174,32 @@ TEST(SkylineLdlt, TwistedBlocksEqualDenseLdlt) {
   }
 }
 
+TEST(SkylineLdlt, VanishingPivotOfTheTwistFallsBackToTopDown) {
+  // Tridiagonal (band width 1), 8 equations: twisted at the threshold. Its trailing 2 x 2 block
+  // [[1, 1], [1, 1]] is singular, so the factorisation from the bottom meets a zero pivot at row 6, while the
+  // top-down pivots (4, 3.75, ..., 0.732, -0.366) do not vanish: the block is factorised top-down.
+  const double diagonal[8] = {4, 4, 4, 4, 4, 4, 1, 1};
+  std::vector<Triplet> t;
+  for (int i = 0; i < 8; ++i) {
+    t.emplace_back(i, i, diagonal[i]);
+    if (i > 0) {
+      t.emplace_back(i, i - 1, 1.0);
+      t.emplace_back(i - 1, i, 1.0);
+    }
+  }
+  SparseMatrix k(8, 8);
+  k.setFromTriplets(t.begin(), t.end());
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_EQ(s.bandWidth(), 1);
+  ASSERT_TRUE(s.factorize(k));
+  EXPECT_EQ(s.twistedBlockCount(), 0);
+  const VecX b = VecX::Random(8);
+  VecX x = b;
+  s.solveInPlace(x);
+  EXPECT_LT(relativeResidual(k, x, b), 1e-13);
+}
+
 TEST(SkylineLdlt, WideEnvelopeKeepsTheEnvelopeSubstitutions) {
   // An arrow coupling (last node to first) makes the last rows span the matrix: no fixed-width band.
   const SparseMatrix k = lineMatrix(40, 3, lastToFirst(40, 3), 5);
