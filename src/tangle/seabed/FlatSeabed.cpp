@@ -57,6 +57,32 @@ SeabedNodeReaction FlatSeabed::reaction(const Vec3& position, const Vec3& veloci
   return r;
 }
 
+Vec3 FlatSeabed::reactionForce(const Vec3& position, const Vec3& velocity, double tributaryLength, double radius,
+                               bool dynamic) const {
+  // reaction()'s force, step by step (its comments give the reasons).
+  const double penetration = this->penetration(position, radius);
+  if (penetration <= 0.0) return Vec3::Zero();
+  const double k = m_spec.normalStiffness * tributaryLength;
+  double normal = penetration < kSmoothPenetration ? 0.5 * k * penetration * penetration / kSmoothPenetration
+                                                   : k * (penetration - 0.5 * kSmoothPenetration);
+  if (dynamic && m_spec.damping > 0.0) {
+    const double damped = normal - m_spec.damping * tributaryLength * velocity.z();
+    normal = damped > 0.0 ? damped : 0.0;
+  }
+  Vec3 force(0.0, 0.0, normal);
+  if (dynamic && m_spec.frictionCoefficient > 0.0 && normal > 0.0) {
+    const Vec3 vt(velocity.x(), velocity.y(), 0.0);
+    const double speed = vt.norm();
+    const double mu = m_spec.frictionCoefficient;
+    const double vreg = m_spec.frictionVelocity;
+    if (speed <= vreg)
+      force -= mu * normal / vreg * vt;
+    else
+      force -= mu * normal * (vt / speed);
+  }
+  return force;
+}
+
 StaticFrictionResult FlatSeabed::staticFriction(const Vec3& position, const Vec2& anchor, double normal,
                                                 double normalStiffness, double tributaryLength) const {
   StaticFrictionResult r;

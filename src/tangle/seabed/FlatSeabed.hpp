@@ -45,6 +45,11 @@ class FlatSeabed {
   SeabedNodeReaction reaction(const Vec3& position, const Vec3& velocity, double tributaryLength, double radius,
                               bool dynamic) const;
 
+  /// reaction(...).force alone, by the same arithmetic (no derivatives: the assemblies without a matrix, most
+  /// of a dynamic run's; building and zeroing the two 3x3 blocks per grounded node was most of the seabed's
+  /// cost there).
+  Vec3 reactionForce(const Vec3& position, const Vec3& velocity, double tributaryLength, double radius,
+                     bool dynamic) const;
   /// Friction in statics on a node in contact (see StaticFrictionResult).
   /// @param position node position [m]; @param anchor committed anchor (x, y) [m]
   /// @param normal normal reaction N [N] (> 0); @param normalStiffness dN/d(penetration) [N/m]

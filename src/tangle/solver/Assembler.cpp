@@ -289,6 +289,10 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
       return;
     }
     const Vec3 v = state.velocity.segment<3>(d);
+    if (!matrix && !staticFriction) {
+      force.segment<3>(d) -= bed.reactionForce(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
+      return;
+    }
     seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
     if (staticFriction) {
       // The as-laid anchor, or for a node that touched down since the last commit its position then.
