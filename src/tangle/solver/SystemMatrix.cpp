@@ -17,7 +17,7 @@ void SystemMatrix::clear() {
 
 void SystemMatrix::addRecorded(int row, int col, double v) {
   if (m_replaying) startRecording();
-  m_calls.push_back({row, col, -1});
+  m_calls.push_back({row, col, {-1, -1, -1}, false});
   const int r = m_dofs->equation(row);
   const int c = m_dofs->equation(col);
   // Exact zeros are kept: dropping them would make the sparsity pattern depend on the values (e.g.
@@ -25,17 +25,42 @@ void SystemMatrix::addRecorded(int row, int col, double v) {
   if (r >= 0 && c >= 0) m_triplets.emplace_back(r, c, v);
 }
 
+void SystemMatrix::add3x3Recorded(int rowFirst, int colFirst, const Mat3& m) {
+  if (m_replaying) startRecording();
+  const int r = m_dofs->equation(rowFirst), c = m_dofs->equation(colFirst);
+  bool whole = r >= 0 && c >= 0;
+  for (int k = 1; k < 3 && whole; ++k)
+    whole = m_dofs->equation(rowFirst + k) == r + k && m_dofs->equation(colFirst + k) == c + k;
+  if (!whole) {
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) addRecorded(rowFirst + i, colFirst + j, m(i, j));
+    return;
+  }
+  m_calls.push_back({rowFirst, colFirst, {-1, -1, -1}, true});
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) m_triplets.emplace_back(r + i, c + j, m(i, j));
+}
+
 void SystemMatrix::startRecording() {
   // The entries the replayed calls summed, once each (in the order of their first call; the sums are
   // already formed, so build adds nothing else to them).
   m_triplets.clear();
   std::vector<char> taken(m_values.size(), 0);
-  for (std::size_t k = 0; k < m_cursor; ++k) {
-    const int p = m_calls[k].position;
-    if (p < 0 || taken[static_cast<std::size_t>(p)]) continue;
+  const auto take = [&](int p, int row, int col) {
+    if (p < 0 || taken[static_cast<std::size_t>(p)]) return;
     taken[static_cast<std::size_t>(p)] = 1;
-    m_triplets.emplace_back(m_dofs->equation(m_calls[k].row), m_dofs->equation(m_calls[k].col),
+    m_triplets.emplace_back(m_dofs->equation(row), m_dofs->equation(col),
                             m_values[static_cast<std::size_t>(p)]);
+  };
+  for (std::size_t k = 0; k < m_cursor; ++k) {
+    const Call& call = m_calls[k];
+    if (!call.block) {
+      take(call.position[0], call.row, call.col);
+      continue;
+    }
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i)
+        take(call.position[static_cast<std::size_t>(j)] + i, call.row + i, call.col + j);
   }
   m_calls.resize(m_cursor);
   m_replaying = false;
@@ -66,14 +91,18 @@ void SystemMatrix::build(SparseMatrix& out) {
   m_outer.assign(out.outerIndexPtr(), out.outerIndexPtr() + n + 1);
   m_inner.assign(out.innerIndexPtr(), out.innerIndexPtr() + out.nonZeros());
   m_values.assign(out.valuePtr(), out.valuePtr() + out.nonZeros());
+  const auto positionOf = [&](int r, int c) {
+    const int* found = std::lower_bound(m_inner.data() + m_outer[c], m_inner.data() + m_outer[c + 1], r);
+    return static_cast<int>(found - m_inner.data());
+  };
   for (Call& call : m_calls) {
     const int r = m_dofs->equation(call.row), c = m_dofs->equation(call.col);
-    if (r < 0 || c < 0) {
-      call.position = -1;
+    if (call.block) {
+      // Rows r, r + 1, r + 2 are in each of the columns, consecutive in its sorted row list.
+      for (int j = 0; j < 3; ++j) call.position[static_cast<std::size_t>(j)] = positionOf(r, c + j);
       continue;
     }
-    const int* found = std::lower_bound(m_inner.data() + m_outer[c], m_inner.data() + m_outer[c + 1], r);
-    call.position = static_cast<int>(found - m_inner.data());
+    call.position[0] = r < 0 || c < 0 ? -1 : positionOf(r, c);
   }
   m_recorded = true;
 }

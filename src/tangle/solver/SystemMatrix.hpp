@@ -3,6 +3,7 @@
 /// Collects matrix contributions given in full-DOF numbering into a sparse matrix over the
 /// equations (constrained DOFs dropped), and assembles residual vectors.
 
+#include <array>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
@@ -31,17 +32,26 @@ class SystemMatrix {
     // The replayed call inline (a few loads and one sum); anything else out of line.
     if (m_cursor < m_replayCount) {
       const Call& c = m_calls[m_cursor];
-      if (c.row == row && c.col == col) {
+      if (!c.block && c.row == row && c.col == col) {
         ++m_cursor;
-        if (c.position >= 0) m_values[static_cast<std::size_t>(c.position)] += v;
+        if (c.position[0] >= 0) m_values[static_cast<std::size_t>(c.position[0])] += v;
         return;
       }
     }
     addRecorded(row, col, v);
   }
-  /// Adds a dense block: rows/cols are the full DOF indices of the block's rows/columns.
+  /// Adds a dense block: rows/cols are the full DOF indices of the block's rows/columns. A block of whole
+  /// nodes' translations or rotations (n a multiple of 3, each 3 consecutive DOFs) goes in 3x3 blocks.
   template <class Derived>
   void addBlock(const int* dofs, int n, const Eigen::MatrixBase<Derived>& block, double scale = 1.0) {
+    bool triples = n % 3 == 0;
+    for (int a = 0; a < n && triples; a += 3)
+      triples = dofs[a + 1] == dofs[a] + 1 && dofs[a + 2] == dofs[a] + 2;
+    if (triples) {
+      for (int b = 0; b < n; b += 3)
+        for (int a = 0; a < n; a += 3) add3x3(dofs[a], dofs[b], block.template block<3, 3>(a, b), scale);
+      return;
+    }
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) add(dofs[i], dofs[j], scale * block(i, j));
   }
@@ -49,10 +59,31 @@ class SystemMatrix {
   void addDiagonal3(int first, double s) {
     for (int k = 0; k < 3; ++k) add(first + k, first + k, s);
   }
-  /// Adds a 3x3 block at (rowFirst.., colFirst..).
-  void add3x3(int rowFirst, int colFirst, const Mat3& m, double scale = 1.0) {
-    for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) add(rowFirst + i, colFirst + j, scale * m(i, j));
+  /// Adds a 3x3 block at (rowFirst.., colFirst..). One call of the sequence when its three rows and three
+  /// columns are free equations numbered consecutively (a node's translations or rotations): replayed as
+  /// nine sums at three recorded positions, one per column (issue 8: nine calls checked one by one were
+  /// most of a matrix assembly); otherwise nine scalar calls. Either way each entry sums the same values in
+  /// the same order.
+  template <class Derived>
+  void add3x3(int rowFirst, int colFirst, const Eigen::MatrixBase<Derived>& m, double scale = 1.0) {
+    if (m_cursor < m_replayCount) {
+      const Call& c = m_calls[m_cursor];
+      if (c.block && c.row == rowFirst && c.col == colFirst) {
+        ++m_cursor;
+        for (int j = 0; j < 3; ++j) {
+          double* v = m_values.data() + c.position[static_cast<std::size_t>(j)];
+          for (int i = 0; i < 3; ++i) v[i] += scale * m(i, j);
+        }
+        return;
+      }
+      if (!c.block) {  // recorded as scalar calls (a constrained DOF), or a changed sequence
+        for (int j = 0; j < 3; ++j)
+          for (int i = 0; i < 3; ++i) add(rowFirst + i, colFirst + j, scale * m(i, j));
+        return;
+      }
+    }
+    const Mat3 scaled = scale * m;
+    add3x3Recorded(rowFirst, colFirst, scaled);
   }
   /// Builds the compressed sparse matrix of this assembly (duplicates summed; may be called more than once,
   /// into any matrix).
@@ -64,13 +95,17 @@ class SystemMatrix {
   /// One call of the sequence: full DOF row and column, and the position of its entry in the recorded
   /// matrix's value array (-1: a constrained DOF; set by build).
   struct Call {
-    int row;
+    int row;  // a block's first row and column
     int col;
-    int position;
+    std::array<int, 3> position;  // a block: the position of (row, col + j) for each column j
+    bool block;
   };
   /// add() outside a replay: leaves the replay if one was running (the call differs from the recorded
   /// one), then keeps the call and, unless a DOF is constrained, a triplet.
   [[gnu::noinline]] void addRecorded(int row, int col, double v);
+  /// add3x3 outside a replay: leaves the replay if one was running, then keeps one block call (three free
+  /// consecutive rows and columns) or nine scalar calls. `m` holds the scaled values.
+  [[gnu::noinline]] void add3x3Recorded(int rowFirst, int colFirst, const Mat3& m);
   /// Leaves replaying at the current call: the calls replayed so far stay in the sequence and their
   /// summed entries become triplets.
   void startRecording();

@@ -95,5 +95,61 @@ TEST(SystemMatrix, ReplayedAssemblyGivesTheSameMatrixAsAFreshOne) {
   EXPECT_EQ(Eigen::MatrixXd(k), fresh(dofs, 0.5, false, false, true));
 }
 
+/// Blocks of whole free nodes (one call each), a block over a constrained DOF (nine calls), scalar calls
+/// into the same entries, a 6x6 element block; `variant` 1 gives one block's values as nine scalar calls
+/// instead, 2 a scalar call as a block: the same matrix, another sequence.
+void fillMixed(solver::SystemMatrix& m, double scale, int variant) {
+  m.clear();
+  Mat3 block;
+  block << 4, 1, 0, 1, 5, 2, 0, 2, 6;
+  m.add3x3(3, 3, scale * block);
+  if (variant == 1) {
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) m.add(6 + i, 3 + j, 2.0 * block(i, j));
+  } else {
+    m.add3x3(6, 3, 2.0 * block);
+  }
+  m.add3x3(0, 0, block);  // node 0 has a constrained DOF
+  if (variant == 2)
+    m.add3x3(3, 3, Mat3(scale * Mat3::Identity()));
+  else
+    for (int i = 0; i < 3; ++i) m.add(3 + i, 3 + i, scale);
+  Eigen::Matrix<double, 6, 6> element;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j) element(i, j) = 1.0 + i + 10.0 * j;
+  const int map[6] = {3, 4, 5, 6, 7, 8};
+  m.addBlock(map, 6, element, scale);
+}
+
+TEST(SystemMatrix, BlockCallsReplayAsTheirScalarSums) {
+  const model::DofMap dofs = threeNodes();
+  const auto freshMixed = [&](double scale, int variant) {
+    solver::SystemMatrix m(dofs);
+    fillMixed(m, scale, variant);
+    SparseMatrix k;
+    m.build(k);
+    return Eigen::MatrixXd(k);
+  };
+  solver::SystemMatrix m(dofs);
+  SparseMatrix k;
+  fillMixed(m, 1.0, 0);
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), freshMixed(1.0, 0));
+  fillMixed(m, 2.5, 0);
+  EXPECT_TRUE(m.replaying());
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), freshMixed(2.5, 0));
+  // A block given as scalar calls, then a scalar call given as a block: recorded again from there.
+  for (const int variant : {1, 2, 0}) {
+    fillMixed(m, -1.5, variant);
+    m.build(k);
+    EXPECT_EQ(Eigen::MatrixXd(k), freshMixed(-1.5, variant)) << "variant " << variant;
+    fillMixed(m, 0.75, variant);
+    EXPECT_TRUE(m.replaying()) << "variant " << variant;
+    m.build(k);
+    EXPECT_EQ(Eigen::MatrixXd(k), freshMixed(0.75, variant)) << "variant " << variant;
+  }
+}
+
 }  // namespace
 }  // namespace tangle
