@@ -475,17 +475,28 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     }
     // Every mass term is M times one combination of accelerations and velocities; on a part only the
     // moved nodes' velocities and accelerations changed, so only their entries are computed again.
+    // (The coefficients and arrays in locals: a store into combo or r may alias the parameters' doubles,
+    // which were loaded again at every entry; the same arithmetic.)
+    const double newAcceleration = 1.0 - p.alphaM, oldAcceleration = p.alphaM;
+    const double newForce = 1.0 - p.alphaF, oldForce = p.alphaF;
+    const double* acceleration = state.acceleration.data();
+    const double* velocity = state.velocity.data();
+    double* comboData = combo.data();
     const auto setCombination = [&](int dof) {
-      double c = (1.0 - p.alphaM) * state.acceleration[dof] + p.alphaM * a0[dof];
-      if (rayleighAlpha > 0.0) c += rayleighAlpha * ((1.0 - p.alphaF) * state.velocity[dof] + p.alphaF * v0[dof]);
-      combo[dof] = c;
+      double c = newAcceleration * acceleration[dof] + oldAcceleration * a0[dof];
+      if (rayleighAlpha > 0.0) c += rayleighAlpha * (newForce * velocity[dof] + oldForce * v0[dof]);
+      comboData[dof] = c;
     };
     if (onPart) {
       for (const int node : m_moved)
         for (int dof = dofs.firstDof(node); dof < dofs.firstDof(node) + dofs.dofCount(node); ++dof)
           setCombination(dof);
-    } else {
+    } else if (rayleighAlpha > 0.0) {
       for (int dof = 0; dof < nfull; ++dof) setCombination(dof);
+    } else {
+      const double* a0Data = a0.data();
+      for (int dof = 0; dof < nfull; ++dof)
+        comboData[dof] = newAcceleration * acceleration[dof] + oldAcceleration * a0Data[dof];
     }
     if (onPart) {
       m_assembler->addPartMass(state, m_part, combo, inertia);
@@ -499,9 +510,14 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     } else {
       inertia.setZero();
       m_assembler->addMass(state, mf, refresh ? &m_matrix : nullptr, &combo, &inertia);
+      const double* inertiaData = inertia.data();
+      const double* force = m_force.data();
+      const double* forceOld = m_forceOld.data();
+      const int* equationDof = eqDofs.data();
+      double* residual = r.data();
       for (int i = 0; i < neq; ++i) {
-        const int dof = eqDofs[i];
-        r[i] = inertia[dof] + (1.0 - p.alphaF) * m_force[dof] + p.alphaF * m_forceOld[dof];
+        const int dof = equationDof[i];
+        residual[i] = inertiaData[dof] + newForce * force[dof] + oldForce * forceOld[dof];
       }
     }
     haveResidual = true;
