@@ -23,13 +23,9 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tan
   // Crisfield 1991, vol. 1, sec. 3.3: with d = x2 - x1, l = |d|, e = d / l and N = EA (l - L0) / L0,
   // the internal force is [-N e, N e] and its exact derivative is
   // K = [k, -k; -k, k], k = EA / L0 e e^T + N / l (I - e e^T).
-  const Vec3 d = x2 - x1;
-  const double l = d.norm();
-  if (!(l > 0.0)) throwCoincidentNodes();
-  const Vec3 e = d / l;
-  // A slack bar (l < L0) may be given a reduced compression stiffness (compressionFactor < 1).
-  const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
-  const double n = ea * (l - m_l0) / m_l0;
+  const Axial a = axial(x1, x2, compressionFactor);
+  const Vec3& e = a.direction;
+  const double l = a.length, ea = a.stiffness, n = a.force;
   internalForce.head<3>() = -n * e;
   internalForce.tail<3>() = n * e;
   if (!tangent) return;

@@ -34,13 +34,8 @@ class Bar {
   /// tangent arguments was 9 % of a mooring run's instructions with the assembly around it).
   /// @throws tangle::Error when the two nodes coincide
   Vec3 forceOnNode2(const Vec3& x1, const Vec3& x2, double compressionFactor = 1.0) const {
-    const Vec3 d = x2 - x1;
-    const double l = d.norm();
-    if (!(l > 0.0)) throwCoincidentNodes();
-    const Vec3 e = d / l;
-    const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
-    const double n = ea * (l - m_l0) / m_l0;
-    return n * e;
+    const Axial a = axial(x1, x2, compressionFactor);
+    return a.force * a.direction;
   }
   /// Axial force N = EA (l - L0) / L0 [N], positive in tension, negative in compression.
   /// @param compressionFactor as in compute()
@@ -50,6 +45,22 @@ class Bar {
   double restLength() const { return m_l0; }      ///< L0 [m]
 
  private:
+  /// The chord's direction e, current length l [m], the axial stiffness in force ea [N] and the axial force
+  /// N = ea (l - L0) / L0 [N] (Crisfield 1991, vol. 1, sec. 3.3; compute() and forceOnNode2 share it).
+  struct Axial {
+    Vec3 direction;
+    double length;
+    double stiffness;
+    double force;
+  };
+  Axial axial(const Vec3& x1, const Vec3& x2, double compressionFactor) const {
+    const Vec3 d = x2 - x1;
+    const double l = d.norm();
+    if (!(l > 0.0)) throwCoincidentNodes();
+    // A slack bar (l < L0) may be given a reduced compression stiffness (compressionFactor < 1).
+    const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
+    return {d / l, l, ea, ea * (l - m_l0) / m_l0};
+  }
   [[noreturn]] static void throwCoincidentNodes();
   double m_ea;
   double m_l0;

@@ -26,43 +26,55 @@ inline double dot(const double* a, const double* b, std::ptrdiff_t n) {
   return (s0 + s1) + (s2 + s3);
 }
 
+/// One row of the forward substitution L y = b on a band of fixed width W: row i's entries L(i, i + Direction
+/// d) at rows[i W + W - d] (Direction -1: top-down, +1: the mirror, from the bottom), `reach` of them; the
+/// unknown found just before (`previous`, distance 1) held apart, so one multiply-add lies on the chain from
+/// one unknown to the next. A full row (reach W) takes a loop of constant count: one loop over the varying
+/// reach for all rows made the solve 45 % slower (4.8 -> 7.1 ns per equation, bar line). Returns y_i.
+template <int W, int Direction>
+inline double forwardRow(const double* rows, double* x, int i, int reach, double previous) {
+  const double* row = rows + static_cast<std::ptrdiff_t>(i) * W;
+  double sum = 0.0;
+  if (reach == W) {
+    for (int d = W; d >= 2; --d) sum += row[W - d] * x[i + Direction * d];
+  } else {
+    for (int d = reach; d >= 2; --d) sum += row[W - d] * x[i + Direction * d];
+  }
+  const double y = reach >= 1 ? (x[i] - sum) - row[W - 1] * previous : x[i];
+  x[i] = y;
+  return y;
+}
+
+/// One row of the backward substitution L^T x = z on the same band: x_i = z_i - sum_d L(i - Direction d, i)
+/// x_{i - Direction d}, the entries read from the rows after (Direction -1) or before (+1) row i, `reach` of
+/// them, the one at distance 1 (`next`) held apart. Returns x_i.
+template <int W, int Direction>
+inline double backwardRow(const double* rows, double* x, int i, int reach, double next) {
+  const auto entry = [&](int d) { return rows[static_cast<std::ptrdiff_t>(i - Direction * d) * W + W - d]; };
+  double sum = 0.0;
+  if (reach == W) {
+    for (int d = 2; d <= W; ++d) sum += entry(d) * x[i - Direction * d];
+  } else {
+    for (int d = 2; d <= reach; ++d) sum += entry(d) * x[i - Direction * d];
+  }
+  const double xi = reach >= 1 ? (x[i] - sum) - entry(1) * next : x[i];
+  x[i] = xi;
+  return xi;
+}
+
 /// Both substitutions over equations [begin, end) with L stored as a band of fixed width W: row i holds
 /// L(i, i - W) ... L(i, i - 1) at band[i W + 0 .. W - 1], zero outside the envelope. The rows' products
 /// have a fixed count (no loop over a row's varying length, no index array for the columns), and the
 /// unknown found just before is held apart as in SkylineLdlt::solveRange. Reads stay inside [begin, end).
-/// The full rows take a loop of constant count, apart from the first (last) W rows of the range: one loop
-/// over the varying reach for all rows made the solve 45 % slower (4.8 -> 7.1 ns per equation, bar line).
 template <int W>
 void bandSubstitutions(double* x, int begin, int end, const double* band, const double* inverseDiagonal) {
   double previous = 0.0;
-  for (int i = begin; i < end; ++i) {
-    const double* row = band + static_cast<std::ptrdiff_t>(i) * W;  // row[W - d] = L(i, i - d)
-    const int reach = std::min(W, i - begin);
-    double sum = 0.0;
-    if (reach == W) {
-      for (int d = W; d >= 2; --d) sum += row[W - d] * x[i - d];
-    } else {
-      for (int d = reach; d >= 2; --d) sum += row[W - d] * x[i - d];
-    }
-    const double y = reach >= 1 ? (x[i] - sum) - row[W - 1] * previous : x[i];
-    x[i] = y;
-    previous = y;
-  }
+  for (int i = begin; i < end; ++i)
+    previous = forwardRow<W, -1>(band, x, i, std::min(W, i - begin), previous);
   for (int i = begin; i < end; ++i) x[i] *= inverseDiagonal[i];
   double next = 0.0;
-  for (int i = end - 1; i >= begin; --i) {
-    const int reach = std::min(W, end - 1 - i);
-    double sum = 0.0;
-    if (reach == W) {
-      for (int d = 2; d <= W; ++d) sum += band[static_cast<std::ptrdiff_t>(i + d) * W + W - d] * x[i + d];
-    } else {
-      for (int d = 2; d <= reach; ++d) sum += band[static_cast<std::ptrdiff_t>(i + d) * W + W - d] * x[i + d];
-    }
-    const double xi =
-        reach >= 1 ? (x[i] - sum) - band[static_cast<std::ptrdiff_t>(i + 1) * W + W - 1] * next : x[i];
-    x[i] = xi;
-    next = xi;
-  }
+  for (int i = end - 1; i >= begin; --i)
+    next = backwardRow<W, -1>(band, x, i, std::min(W, end - 1 - i), next);
 }
 
 /// bandSubstitutions for the band width w in [1, SkylineLdlt::kMaxBandWidth].
@@ -114,30 +126,10 @@ void twistedSubstitutions(double* x, int b0, int b1, int m, const double* band, 
   const int common = std::min(lenT, lenB);
   double previousTop = 0.0, previousBottom = 0.0;
   const auto forwardTop = [&](int i) {
-    const double* row = band + static_cast<std::ptrdiff_t>(i) * W;
-    const int reach = std::min(W, i - b0);
-    double sum = 0.0;
-    if (reach == W) {
-      for (int d = W; d >= 2; --d) sum += row[W - d] * x[i - d];
-    } else {
-      for (int d = reach; d >= 2; --d) sum += row[W - d] * x[i - d];
-    }
-    const double y = reach >= 1 ? (x[i] - sum) - row[W - 1] * previousTop : x[i];
-    x[i] = y;
-    previousTop = y;
+    previousTop = forwardRow<W, -1>(band, x, i, std::min(W, i - b0), previousTop);
   };
   const auto forwardBottom = [&](int j) {
-    const double* row = bandUp + static_cast<std::ptrdiff_t>(j) * W;
-    const int reach = std::min(W, b1 - 1 - j);
-    double sum = 0.0;
-    if (reach == W) {
-      for (int d = W; d >= 2; --d) sum += row[W - d] * x[j + d];
-    } else {
-      for (int d = reach; d >= 2; --d) sum += row[W - d] * x[j + d];
-    }
-    const double y = reach >= 1 ? (x[j] - sum) - row[W - 1] * previousBottom : x[j];
-    x[j] = y;
-    previousBottom = y;
+    previousBottom = forwardRow<W, 1>(bandUp, x, j, std::min(W, b1 - 1 - j), previousBottom);
   };
   for (int k = 0; k < common; ++k) {
     forwardTop(b0 + k);
@@ -177,32 +169,10 @@ void twistedSubstitutions(double* x, int b0, int b1, int m, const double* band, 
   // Back from the separator to both ends, side by side.
   double nextTop = 0.0, nextBottom = 0.0;
   const auto backwardTop = [&](int i) {
-    const int reach = std::min(W, m - 1 - i);
-    double sum = 0.0;
-    if (reach == W) {
-      for (int d = 2; d <= W; ++d) sum += band[static_cast<std::ptrdiff_t>(i + d) * W + W - d] * x[i + d];
-    } else {
-      for (int d = 2; d <= reach; ++d) sum += band[static_cast<std::ptrdiff_t>(i + d) * W + W - d] * x[i + d];
-    }
-    const double xi =
-        reach >= 1 ? (x[i] - sum) - band[static_cast<std::ptrdiff_t>(i + 1) * W + W - 1] * nextTop : x[i];
-    x[i] = xi;
-    nextTop = xi;
+    nextTop = backwardRow<W, -1>(band, x, i, std::min(W, m - 1 - i), nextTop);
   };
   const auto backwardBottom = [&](int j) {
-    const int reach = std::min(W, j - t1);
-    double sum = 0.0;
-    if (reach == W) {
-      for (int d = 2; d <= W; ++d) sum += bandUp[static_cast<std::ptrdiff_t>(j - d) * W + W - d] * x[j - d];
-    } else {
-      for (int d = 2; d <= reach; ++d)
-        sum += bandUp[static_cast<std::ptrdiff_t>(j - d) * W + W - d] * x[j - d];
-    }
-    const double xj = reach >= 1
-                          ? (x[j] - sum) - bandUp[static_cast<std::ptrdiff_t>(j - 1) * W + W - 1] * nextBottom
-                          : x[j];
-    x[j] = xj;
-    nextBottom = xj;
+    nextBottom = backwardRow<W, 1>(bandUp, x, j, std::min(W, j - t1), nextBottom);
   };
   for (int k = 0; k < common; ++k) {
     backwardTop(m - 1 - k);
@@ -236,26 +206,27 @@ void twistedSubstitutions(int w, double* x, int b0, int b1, int m, const double*
   }
 }
 
-/// One row i of the band LDL^T, top-down (the envelope's Crout row with a fixed count of products and one
-/// division per row: the entries of L multiplied by 1 / D). band[i W + W - d] = K(i, i - d) on entry, L(i, i
-/// - d) on return, for the columns i - d in [low, i) (the others are left as they are); rows before `low` are
-/// not read. Without `pivot`, the row's own pivot is not formed (a separator row: its entries in the columns
-/// before the separator only). False on |D(i)| <= tiny (or NaN).
-template <int W>
-inline bool bandRowDown(double* band, double* diagonal, double* inverseDiagonal, int i, int low, bool pivot,
-                        double tiny) {
-  double* row = band + static_cast<std::ptrdiff_t>(i) * W;
-  const int reach = std::min(W, i - low);
-  // row[W - d] <- w = L(i, i - d) D(i - d) = K(i, i - d) - sum_{d' > d} w(i - d') L(i - d, i - d')
-  for (int d = reach; d >= 1; --d) {
-    const double* rowJ = band + static_cast<std::ptrdiff_t>(i - d) * W;
+/// One row i of the band LDL^T (the envelope's Crout row with a fixed count of products and one division per
+/// row: the entries of L multiplied by 1 / D). Direction -1: top-down, rows[i W + W - d] = K(i, i - d) on
+/// entry and L(i, i - d) on return; +1: from the bottom, the mirror (entries (i, i + d), using the rows after
+/// i). Columns at distance d in [first, reach] only (a separator row's entries in one part's columns); rows
+/// further than `reach` are not read. Without `pivot`, the row's own pivot is not formed (a separator row).
+/// False on |D(i)| <= tiny (or NaN).
+template <int W, int Direction>
+inline bool bandRow(double* rows, double* diagonal, double* inverseDiagonal, int i, int first, int reach,
+                    bool pivot, double tiny) {
+  double* row = rows + static_cast<std::ptrdiff_t>(i) * W;
+  // row[W - d] <- w = L(i, n(d)) D(n(d)) = K(i, n(d)) - sum_{d' > d} w(n(d')) L(n(d), n(d')), n(d) = i +
+  // Direction d
+  for (int d = reach; d >= first; --d) {
+    const double* neighbour = rows + static_cast<std::ptrdiff_t>(i + Direction * d) * W;
     double v = row[W - d];
-    for (int e = reach; e > d; --e) v -= row[W - e] * rowJ[W - (e - d)];
+    for (int e = reach; e > d; --e) v -= row[W - e] * neighbour[W - (e - d)];
     row[W - d] = v;
   }
   double d0 = diagonal[i];
-  for (int d = reach; d >= 1; --d) {
-    const double l = row[W - d] * inverseDiagonal[i - d];
+  for (int d = reach; d >= first; --d) {
+    const double l = row[W - d] * inverseDiagonal[i + Direction * d];
     d0 -= l * row[W - d];
     row[W - d] = l;
   }
@@ -266,33 +237,24 @@ inline bool bandRowDown(double* band, double* diagonal, double* inverseDiagonal,
   return true;
 }
 
-/// The mirror of bandRowDown for the factorisation from the bottom: row j's entries L'(j, j + d) at
-/// up[j W + W - d] for the columns j + d in (j, high] from K (original[k W + W - (k - j)] = K(k, j)), using
-/// the rows after j; rows after `high` are not read.
+/// Top-down row i of a block starting at `low` (bandRow), up to column `lastColumn`.
+template <int W>
+inline bool bandRowDown(double* band, double* diagonal, double* inverseDiagonal, int i, int low,
+                        int lastColumn, bool pivot, double tiny) {
+  return bandRow<W, -1>(band, diagonal, inverseDiagonal, i, std::max(1, i - lastColumn), std::min(W, i - low),
+                        pivot, tiny);
+}
+
+/// Bottom-up row j of a block ending at `high` (bandRow), from column `firstColumn`: its entries L'(j, j + d)
+/// at up[j W + W - d], started from K (original[k W + W - (k - j)] = K(k, j)).
 template <int W>
 inline bool bandRowUp(double* up, const double* original, double* diagonal, double* inverseDiagonal, int j,
-                      int high, int lowColumn, bool pivot, double tiny) {
-  double* row = up + static_cast<std::ptrdiff_t>(j) * W;
+                      int high, int firstColumn, bool pivot, double tiny) {
   const int reach = std::min(W, high - j);
-  const int first = std::max(1, lowColumn - j);  // separator rows: the bottom part's columns only
+  const int first = std::max(1, firstColumn - j);
+  double* row = up + static_cast<std::ptrdiff_t>(j) * W;
   for (int d = reach; d >= first; --d) row[W - d] = original[static_cast<std::ptrdiff_t>(j + d) * W + W - d];
-  for (int d = reach; d >= first; --d) {
-    const double* rowK = up + static_cast<std::ptrdiff_t>(j + d) * W;
-    double v = row[W - d];
-    for (int e = reach; e > d; --e) v -= row[W - e] * rowK[W - (e - d)];
-    row[W - d] = v;
-  }
-  double d0 = diagonal[j];
-  for (int d = reach; d >= first; --d) {
-    const double l = row[W - d] * inverseDiagonal[j + d];
-    d0 -= l * row[W - d];
-    row[W - d] = l;
-  }
-  if (!pivot) return true;
-  if (!(std::abs(d0) > tiny)) return false;
-  diagonal[j] = d0;
-  inverseDiagonal[j] = 1.0 / d0;
-  return true;
+  return bandRow<W, 1>(up, diagonal, inverseDiagonal, j, first, reach, pivot, tiny);
 }
 
 /// Top-down LDL^T of the rows [begin, end) (a block) on the band (bandRowDown).
@@ -300,7 +262,7 @@ template <int W>
 bool bandFactorizeRows(double* band, double* diagonal, double* inverseDiagonal, int begin, int end,
                        double tiny) {
   for (int i = begin; i < end; ++i)
-    if (!bandRowDown<W>(band, diagonal, inverseDiagonal, i, begin, true, tiny)) return false;
+    if (!bandRowDown<W>(band, diagonal, inverseDiagonal, i, begin, i - 1, true, tiny)) return false;
   return true;
 }
 
@@ -317,7 +279,8 @@ bool twistedFactorizeEnds(double* band, double* up, const double* original, doub
   for (int k = 0; k < count; ++k) {
     if (k < lenTop) {
       const int i = b0 + k;
-      if (!bandRowDown<W>(band, diagonal, inverseDiagonal, i, b0, i < m, tiny)) return false;
+      if (!bandRowDown<W>(band, diagonal, inverseDiagonal, i, b0, std::min(i, m) - 1, i < m, tiny))
+        return false;
     }
     if (k < lenBottom) {
       const int j = b1 - 1 - k;
@@ -325,6 +288,21 @@ bool twistedFactorizeEnds(double* band, double* up, const double* original, doub
     }
   }
   return true;
+}
+/// K's stored values summed into `lower` (at the index `map` gives a lower entry) and `diagonal` (map -1 -
+/// row), both zeroed first; the upper triangle (kUpper) skipped.
+void scatterValues(const SparseMatrix& k, const std::vector<std::ptrdiff_t>& map, std::vector<double>& lower,
+                   std::vector<double>& diagonal) {
+  std::fill(lower.begin(), lower.end(), 0.0);
+  std::fill(diagonal.begin(), diagonal.end(), 0.0);
+  const double* a = k.valuePtr();
+  for (std::size_t p = 0; p < map.size(); ++p) {
+    const std::ptrdiff_t m = map[p];
+    if (m >= 0)
+      lower[static_cast<std::size_t>(m)] += a[p];
+    else if (m != kUpper)
+      diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
+  }
 }
 }  // namespace
 
@@ -418,15 +396,7 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
 
 bool SkylineLdlt::factorize(const SparseMatrix& k) {
   if (m_bandWidth > 0) return factorizeBand(k);
-  std::fill(m_values.begin(), m_values.end(), 0.0);
-  std::fill(m_diagonal.begin(), m_diagonal.end(), 0.0);
-  const double* a = k.valuePtr();
-  const std::size_t stored = m_map.size();
-  for (std::size_t p = 0; p < stored; ++p) {
-    const std::ptrdiff_t m = m_map[p];
-    if (m >= 0) m_values[static_cast<std::size_t>(m)] += a[p];
-    else if (m != kUpper) m_diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
-  }
+  scatterValues(k, m_map, m_values, m_diagonal);
   double largest = 0.0;
   for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
   const double tiny = 1e-14 * largest;
@@ -464,17 +434,7 @@ bool SkylineLdlt::factorizeBand(const SparseMatrix& k) {
   // one division per row, where the envelope's loops over varying row lengths took a division per entry. A
   // long block is factorised from both ends at once (twisted, see twistedSubstitutions): two independent
   // chains of rows, as the substitutions.
-  std::fill(m_band.begin(), m_band.end(), 0.0);
-  std::fill(m_diagonal.begin(), m_diagonal.end(), 0.0);
-  const double* a = k.valuePtr();
-  const std::size_t stored = m_bandMap.size();
-  for (std::size_t p = 0; p < stored; ++p) {
-    const std::ptrdiff_t m = m_bandMap[p];
-    if (m >= 0)
-      m_band[static_cast<std::size_t>(m)] += a[p];
-    else if (m != kUpper)
-      m_diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
-  }
+  scatterValues(k, m_bandMap, m_band, m_diagonal);
   double largest = 0.0;
   for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
   const double tiny = 1e-14 * largest;
