@@ -333,8 +333,6 @@ void Assembler::addOwnMass(double mf, SystemMatrix* matrix, const VecX* accelera
                            const std::vector<int>* elements, const std::vector<int>* nodes,
                            const std::vector<int>* attachments) const {
   const model::DofMap& dofs = m_model->dofs();
-  const auto& mass = m_model->nodeMass();
-  const auto& inertia = m_model->nodeRotationalInertia();
   const auto& attached = m_model->attachments();
   const bool consistent = !m_model->spec().dynamics.lumpedMass;
   if (consistent) {
@@ -367,28 +365,29 @@ void Assembler::addOwnMass(double mf, SystemMatrix* matrix, const VecX* accelera
       }
     });
   }
-  if (!nodes && !matrix && out && m_nodeDiagonalMass.size() == static_cast<std::size_t>(out->size())) {
-    // The whole model's inertia force without a matrix (every residual of a step): one pass over the DOFs
-    // with the nodes' diagonal masses, the same products summed in the same order as the node loop below
-    // (a zero mass adds +0). The loop, with its per-node branches, was 3.5 % of a mooring run's instructions.
+  // The nodes' own diagonal masses (m_nodeDiagonalMass: lumped translational mass, rotational inertia). Their
+  // inertia force by DOF: for the whole model one pass over every DOF without branches (every residual of a
+  // step; the loop over nodes with its per-node branches was 3.5 % of a mooring run's instructions), a zero
+  // mass adding +0; for a part, its nodes' DOFs.
+  const double* diagonal = m_nodeDiagonalMass.data();
+  if (out) {
     double* f = out->data();
     const double* a = acceleration->data();
-    const double* m = m_nodeDiagonalMass.data();
-    for (Eigen::Index dof = 0; dof < out->size(); ++dof) f[dof] += m[dof] * a[dof];
-  } else {
+    if (!nodes) {
+      for (Eigen::Index dof = 0; dof < out->size(); ++dof) f[dof] += diagonal[dof] * a[dof];
+    } else {
+      for (const int n : *nodes)
+        for (int dof = dofs.firstDof(n); dof < dofs.firstDof(n) + dofs.dofCount(n); ++dof)
+          f[dof] += diagonal[dof] * a[dof];
+    }
+  }
+  if (matrix) {
     forEachIndex(nodes, static_cast<std::size_t>(m_model->nodeCount()), [&](std::size_t node) {
       const int n = static_cast<int>(node);
       const int d = dofs.firstDof(n);
-      for (int k = 0; k < 3 && !consistent; ++k) {
-        if (matrix) matrix->add(d + k, d + k, mf * mass[n]);
-        if (out) (*out)[d + k] += mass[n] * (*acceleration)[d + k];
-      }
-      if (dofs.hasRotations(n)) {
-        for (int k = 3; k < 6; ++k) {
-          if (matrix) matrix->add(d + k, d + k, mf * inertia[n]);
-          if (out) (*out)[d + k] += inertia[n] * (*acceleration)[d + k];
-        }
-      }
+      for (int k = 0; k < 3 && !consistent; ++k) matrix->add(d + k, d + k, mf * diagonal[d + k]);
+      if (dofs.hasRotations(n))
+        for (int k = 3; k < 6; ++k) matrix->add(d + k, d + k, mf * diagonal[d + k]);
     });
   }
   forEachIndex(attachments, attached.size(), [&](std::size_t i) {
