@@ -1,9 +1,9 @@
 #include "tangle/solver/SkylineLdlt.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace tangle::solver {
 
@@ -24,6 +24,38 @@ inline double dot(const double* a, const double* b, std::ptrdiff_t n) {
   }
   for (; k < n; ++k) s0 += a[k] * b[k];
   return (s0 + s1) + (s2 + s3);
+}
+
+/// Calls f(std::integral_constant<int, W>{}) for the band width w in [1, SkylineLdlt::kMaxBandWidth] (the
+/// kernels are compiled per width: their rows' products a fixed count).
+template <class F>
+decltype(auto) withBandWidth(int w, F&& f) {
+  switch (w) {
+    case 1:
+      return f(std::integral_constant<int, 1>{});
+    case 2:
+      return f(std::integral_constant<int, 2>{});
+    case 3:
+      return f(std::integral_constant<int, 3>{});
+    case 4:
+      return f(std::integral_constant<int, 4>{});
+    case 5:
+      return f(std::integral_constant<int, 5>{});
+    case 6:
+      return f(std::integral_constant<int, 6>{});
+    case 7:
+      return f(std::integral_constant<int, 7>{});
+    case 8:
+      return f(std::integral_constant<int, 8>{});
+    case 9:
+      return f(std::integral_constant<int, 9>{});
+    case 10:
+      return f(std::integral_constant<int, 10>{});
+    case 11:
+      return f(std::integral_constant<int, 11>{});
+    default:
+      return f(std::integral_constant<int, 12>{});
+  }
 }
 
 /// One row of the forward substitution L y = b on a band of fixed width W: row i's entries L(i, i + Direction
@@ -77,41 +109,11 @@ void bandSubstitutions(double* x, int begin, int end, const double* band, const 
     next = backwardRow<W, -1>(band, x, i, std::min(W, end - 1 - i), next);
 }
 
-/// bandSubstitutions for the band width w in [1, SkylineLdlt::kMaxBandWidth].
-void bandSubstitutions(int w, double* x, int begin, int end, const double* band,
-                       const double* inverseDiagonal) {
-  switch (w) {
-    case 1:
-      return bandSubstitutions<1>(x, begin, end, band, inverseDiagonal);
-    case 2:
-      return bandSubstitutions<2>(x, begin, end, band, inverseDiagonal);
-    case 3:
-      return bandSubstitutions<3>(x, begin, end, band, inverseDiagonal);
-    case 4:
-      return bandSubstitutions<4>(x, begin, end, band, inverseDiagonal);
-    case 5:
-      return bandSubstitutions<5>(x, begin, end, band, inverseDiagonal);
-    case 6:
-      return bandSubstitutions<6>(x, begin, end, band, inverseDiagonal);
-    case 7:
-      return bandSubstitutions<7>(x, begin, end, band, inverseDiagonal);
-    case 8:
-      return bandSubstitutions<8>(x, begin, end, band, inverseDiagonal);
-    case 9:
-      return bandSubstitutions<9>(x, begin, end, band, inverseDiagonal);
-    case 10:
-      return bandSubstitutions<10>(x, begin, end, band, inverseDiagonal);
-    case 11:
-      return bandSubstitutions<11>(x, begin, end, band, inverseDiagonal);
-    default:
-      return bandSubstitutions<12>(x, begin, end, band, inverseDiagonal);
-  }
-}
-
 /// Both substitutions of a block [b0, b1) factorised from both ends (SkylineLdlt::factorize, "twisted"):
 /// rows [b0, m) top-down with L in `band` (row i: L(i, i - d) at band[i W + W - d]), rows [m + W, b1)
 /// bottom-up with L' in `bandUp` (row j: L'(j, j + d) at bandUp[j W + W - d]), the W rows [m, m + W) last,
-/// their Schur complement's unit lower factor in `twist` (W x W, row-major) and its pivots' inverses in
+/// their Schur complement's unit lower factor in `twist` (as a band of width W: row a holds L_S(a, a - d) at
+/// twist[a W + W - d]) and its pivots' inverses in
 /// inverseDiagonal with the others. The two ends' rows are independent chains, walked side by side: the
 /// substitution of one row waits on the row before it (a multiply and a subtraction), so two chains
 /// interleaved take about the time of one (bench/bench_linear_solve.cpp, same run: 5.5 -> 3.1 ns per equation
@@ -145,13 +147,13 @@ void twistedSubstitutions(double* x, int b0, int b1, int m, const double* band, 
     for (int k = std::max(t - W, b0); k < m; ++k) y -= row[W - (t - k)] * x[k];
     const double* up = bandUp + static_cast<std::ptrdiff_t>(t) * W;
     for (int k = t1; k <= std::min(t + W, b1 - 1); ++k) y -= up[W - (k - t)] * x[k];
-    for (int c = 0; c < a; ++c) y -= twist[a * W + c] * x[m + c];
+    for (int c = 0; c < a; ++c) y -= twist[a * W + W - (a - c)] * x[m + c];
     x[t] = y;
   }
   for (int i = b0; i < b1; ++i) x[i] *= inverseDiagonal[i];
   for (int a = W - 1; a >= 0; --a) {
     double z = x[m + a];
-    for (int c = a + 1; c < W; ++c) z -= twist[c * W + a] * x[m + c];
+    for (int c = a + 1; c < W; ++c) z -= twist[c * W + W - (c - a)] * x[m + c];
     x[m + a] = z;
   }
   for (int k = std::max(m - W, b0); k < m; ++k) {
@@ -180,30 +182,6 @@ void twistedSubstitutions(double* x, int b0, int b1, int m, const double* band, 
   }
   for (int k = common; k < lenT; ++k) backwardTop(m - 1 - k);
   for (int k = common; k < lenB; ++k) backwardBottom(t1 + k);
-}
-
-/// twistedSubstitutions for the band width w in [1, SkylineLdlt::kMaxBandWidth].
-void twistedSubstitutions(int w, double* x, int b0, int b1, int m, const double* band, const double* bandUp,
-                          const double* twist, const double* inverseDiagonal) {
-  switch (w) {
-#define TANGLE_TWISTED_CASE(W) \
-  case W:                      \
-    return twistedSubstitutions<W>(x, b0, b1, m, band, bandUp, twist, inverseDiagonal);
-    TANGLE_TWISTED_CASE(1)
-    TANGLE_TWISTED_CASE(2)
-    TANGLE_TWISTED_CASE(3)
-    TANGLE_TWISTED_CASE(4)
-    TANGLE_TWISTED_CASE(5)
-    TANGLE_TWISTED_CASE(6)
-    TANGLE_TWISTED_CASE(7)
-    TANGLE_TWISTED_CASE(8)
-    TANGLE_TWISTED_CASE(9)
-    TANGLE_TWISTED_CASE(10)
-    TANGLE_TWISTED_CASE(11)
-#undef TANGLE_TWISTED_CASE
-    default:
-      return twistedSubstitutions<12>(x, b0, b1, m, band, bandUp, twist, inverseDiagonal);
-  }
 }
 
 /// One row i of the band LDL^T (the envelope's Crout row with a fixed count of products and one division per
@@ -441,25 +419,8 @@ bool SkylineLdlt::factorizeBand(const SparseMatrix& k) {
   m_original = m_band;  // K itself: the bottom-up rows read it, and a failed twist starts again from it
   m_originalDiagonal = m_diagonal;
   m_inverseDiagonal.resize(m_n);
-  switch (m_bandWidth) {
-#define TANGLE_BAND_BLOCKS_CASE(W) \
-  case W:                          \
-    return factorizeBandBlocks<W>(tiny);
-    TANGLE_BAND_BLOCKS_CASE(1)
-    TANGLE_BAND_BLOCKS_CASE(2)
-    TANGLE_BAND_BLOCKS_CASE(3)
-    TANGLE_BAND_BLOCKS_CASE(4)
-    TANGLE_BAND_BLOCKS_CASE(5)
-    TANGLE_BAND_BLOCKS_CASE(6)
-    TANGLE_BAND_BLOCKS_CASE(7)
-    TANGLE_BAND_BLOCKS_CASE(8)
-    TANGLE_BAND_BLOCKS_CASE(9)
-    TANGLE_BAND_BLOCKS_CASE(10)
-    TANGLE_BAND_BLOCKS_CASE(11)
-#undef TANGLE_BAND_BLOCKS_CASE
-    default:
-      return factorizeBandBlocks<12>(tiny);
-  }
+  return withBandWidth(m_bandWidth,
+                       [&](auto width) { return factorizeBandBlocks<decltype(width)::value>(tiny); });
 }
 
 template <int W>
@@ -477,7 +438,7 @@ bool SkylineLdlt::factorizeBandBlocks(double tiny) {
       const int m = b0 + (b1 - b0 - W) / 2;
       if (twistedFactorizeEnds<W>(band, m_bandUp.data(), m_original.data(), diagonal, inverse, b0, b1, m,
                                   tiny) &&
-          factorizeSeparator(block, m, tiny)) {
+          factorizeSeparator<W>(block, m, tiny)) {
         m_twistRow[static_cast<std::size_t>(block)] = m;
         continue;
       }
@@ -491,53 +452,36 @@ bool SkylineLdlt::factorizeBandBlocks(double tiny) {
   return true;
 }
 
+template <int W>
 bool SkylineLdlt::factorizeSeparator(int block, int m, double tiny) {
-  // The separator [m, m + w) takes the Schur complement of both ends,
-  //   S = K_ss - sum_{k < m} L(s, k) D_k L(s', k) - sum_{k >= m + w} L'(s, k) D'_k L'(s', k),
-  // factorised densely (row-oriented Crout, as factorize); its unit lower factor into m_twistFactor, its
-  // pivots' inverses into m_inverseDiagonal.
-  const int w = m_bandWidth;
+  // The separator [m, m + W) takes the Schur complement of both ends,
+  //   S = K_ss - sum_{k < m} L(s, k) D_k L(s', k) - sum_{k >= m + W} L'(s, k) D'_k L'(s', k),
+  // held as a band of width W (row a: S(a, a - d) at factor[a W + W - d]; dense: every row reaches back to
+  // the first) and factorised by the band's own Crout rows (bandRow); its unit lower factor stays there, its
+  // pivots go into m_diagonal / m_inverseDiagonal with the others.
   const int b0 = blockStart(block), b1 = blockStart(block + 1);
-  const int t1 = m + w;
-  std::array<double, kMaxBandWidth * kMaxBandWidth> schur{};
-  std::array<double, kMaxBandWidth> pivot{};
-  for (int a = 0; a < w; ++a)
+  const int t1 = m + W;
+  double* factor = m_twistFactor.data() + static_cast<std::ptrdiff_t>(block) * W * W;
+  for (int a = 0; a < W; ++a)
     for (int b = 0; b <= a; ++b) {
       const int s = m + a, r = m + b;
       double v = originalEntry(s, r);
-      const double* rowS = m_band.data() + static_cast<std::ptrdiff_t>(s) * w;
-      const double* rowR = m_band.data() + static_cast<std::ptrdiff_t>(r) * w;
-      for (int k = std::max(s - w, b0); k < m; ++k)
-        v -= rowS[w - (s - k)] * m_diagonal[static_cast<std::size_t>(k)] * rowR[w - (r - k)];
-      const double* upS = m_bandUp.data() + static_cast<std::ptrdiff_t>(s) * w;
-      const double* upR = m_bandUp.data() + static_cast<std::ptrdiff_t>(r) * w;
-      for (int k = t1; k <= std::min(r + w, b1 - 1); ++k)
-        v -= upS[w - (k - s)] * m_diagonal[static_cast<std::size_t>(k)] * upR[w - (k - r)];
-      schur[static_cast<std::size_t>(a * w + b)] = v;
+      const double* rowS = m_band.data() + static_cast<std::ptrdiff_t>(s) * W;
+      const double* rowR = m_band.data() + static_cast<std::ptrdiff_t>(r) * W;
+      for (int k = std::max(s - W, b0); k < m; ++k)
+        v -= rowS[W - (s - k)] * m_diagonal[static_cast<std::size_t>(k)] * rowR[W - (r - k)];
+      const double* upS = m_bandUp.data() + static_cast<std::ptrdiff_t>(s) * W;
+      const double* upR = m_bandUp.data() + static_cast<std::ptrdiff_t>(r) * W;
+      for (int k = t1; k <= std::min(r + W, b1 - 1); ++k)
+        v -= upS[W - (k - s)] * m_diagonal[static_cast<std::size_t>(k)] * upR[W - (k - r)];
+      if (a == b)
+        m_diagonal[static_cast<std::size_t>(s)] = v;
+      else
+        factor[a * W + W - (a - b)] = v;
     }
-  for (int a = 0; a < w; ++a) {
-    double* rowA = schur.data() + a * w;
-    for (int b = 0; b < a; ++b) {
-      double v = rowA[b];
-      for (int c = 0; c < b; ++c) v -= rowA[c] * schur[static_cast<std::size_t>(b * w + c)];
-      rowA[b] = v;  // w_b = L(a, b) D_b
-    }
-    double d = rowA[a];
-    for (int b = 0; b < a; ++b) {
-      const double l = rowA[b] / pivot[static_cast<std::size_t>(b)];
-      d -= l * rowA[b];
-      rowA[b] = l;
-    }
-    if (!(std::abs(d) > tiny)) return false;
-    pivot[static_cast<std::size_t>(a)] = d;
-  }
-  double* factor = m_twistFactor.data() + static_cast<std::ptrdiff_t>(block) * w * w;
-  for (int a = 0; a < w; ++a)
-    for (int b = 0; b < a; ++b) factor[a * w + b] = schur[static_cast<std::size_t>(a * w + b)];
-  for (int a = 0; a < w; ++a) {
-    m_diagonal[static_cast<std::size_t>(m + a)] = pivot[static_cast<std::size_t>(a)];
-    m_inverseDiagonal[m + a] = 1.0 / pivot[static_cast<std::size_t>(a)];
-  }
+  for (int a = 0; a < W; ++a)
+    if (!bandRow<W, -1>(factor, m_diagonal.data() + m, m_inverseDiagonal.data() + m, a, 1, a, true, tiny))
+      return false;
   return true;
 }
 
@@ -571,21 +515,26 @@ void SkylineLdlt::solveRange(double* x, int begin, int end) const {
     int block = static_cast<int>(std::upper_bound(m_blockStart.begin(), m_blockStart.end(), begin) -
                                  m_blockStart.begin()) -
                 1;
+    const auto plain = [&](int from, int to) {
+      withBandWidth(m_bandWidth, [&](auto width) {
+        bandSubstitutions<decltype(width)::value>(x, from, to, m_band.data(), m_inverseDiagonal.data());
+      });
+    };
     int plainFrom = begin;  // consecutive blocks without a twist go to bandSubstitutions as one range
     for (; block < blockCount() && blockStart(block) < end; ++block) {
       const int m = m_twistRow.empty() ? -1 : m_twistRow[static_cast<std::size_t>(block)];
       if (m < 0) continue;
       const int b0 = blockStart(block), b1 = blockStart(block + 1);
-      if (plainFrom < b0)
-        bandSubstitutions(m_bandWidth, x, plainFrom, b0, m_band.data(), m_inverseDiagonal.data());
-      twistedSubstitutions(
-          m_bandWidth, x, b0, b1, m, m_band.data(), m_bandUp.data(),
-          m_twistFactor.data() + static_cast<std::ptrdiff_t>(block) * m_bandWidth * m_bandWidth,
-          m_inverseDiagonal.data());
+      if (plainFrom < b0) plain(plainFrom, b0);
+      withBandWidth(m_bandWidth, [&](auto width) {
+        constexpr int W = decltype(width)::value;
+        twistedSubstitutions<W>(x, b0, b1, m, m_band.data(), m_bandUp.data(),
+                                m_twistFactor.data() + static_cast<std::ptrdiff_t>(block) * W * W,
+                                m_inverseDiagonal.data());
+      });
       plainFrom = b1;
     }
-    if (plainFrom < end)
-      bandSubstitutions(m_bandWidth, x, plainFrom, end, m_band.data(), m_inverseDiagonal.data());
+    if (plainFrom < end) plain(plainFrom, end);
     return;
   }
   const double* v = m_values.data();

@@ -72,6 +72,7 @@ class SkylineLdlt {
   bool factorizeBandBlocks(double tiny);
   /// The separator of twisted block `block` at rows [m, m + w): Schur complement and its dense LDL^T. False
   /// on a vanishing pivot.
+  template <int W>
   bool factorizeSeparator(int block, int m, double tiny);
   /// factorize on the fixed-width band (m_bandWidth > 0): m_band, m_diagonal and m_inverseDiagonal.
   bool factorizeBand(const SparseMatrix& k);
