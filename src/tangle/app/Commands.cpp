@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <iterator>
 #include <memory>
@@ -604,8 +605,15 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     log.info(envelope->terminalSummary());
     if (h5) h5->writeClearance(*envelope);
   }
-  if (h5) h5->close();  // results.h5 complete, results.xdmf beside it
-  if (m.spec().output.plots && !options.noPlots) makePlots(outDir, log);
+  // results.h5 is completed (its last chunks compressed and written, results.xdmf beside it) on a second
+  // thread while this one writes the report: one after the other they took 16 and 12-17 ms of the mooring
+  // example's run. The plots read results.h5, so they wait for it. HDF5 is used by one thread at a time.
+  std::future<void> h5Closed;
+  if (h5) h5Closed = std::async(std::launch::async, [&h5] { h5->close(); });
+  if (m.spec().output.plots && !options.noPlots) {
+    if (h5Closed.valid()) h5Closed.get();
+    makePlots(outDir, log);
+  }
   if (report) {
     if (envelope) report->setEnvelope(*envelope);
     if (code == 0)
@@ -613,6 +621,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
                                                                           : "completed");
     writeReport(*report, outDir, log, reportTime);
   }
+  if (h5Closed.valid()) h5Closed.get();  // rethrows a write error of results.h5
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (code == 0)
     folder.setStatus(options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)" : "completed");
