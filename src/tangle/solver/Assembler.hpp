@@ -244,14 +244,14 @@ class Assembler {
   // translation (0 with consistent mass, whose translations the element loop adds), its rotational
   // inertia [kg m^2] at a rotation (0 at DOFs the node does not have).
   std::vector<double> m_nodeDiagonalMass;
-  // Per element, the constants of nodeRoundoffFloor: 16 EA eps and 16 EI eps (0 for a bar) [N m, N m^2],
-  // the rest length [m] and the force resolution 10e-14 EA [N] (the line type's lookups per element and
-  // step were 1.2 % of a mooring run's instructions).
+  // Per element, the constants of nodeRoundoffFloor: 16 EA eps / l and 16 EI eps / l^2 (0 for a bar), the
+  // rest length l and the force resolution 10e-14 EA (the line type's lookups per element and step were
+  // 1.2 % of a mooring run's instructions).
   struct RoundoffConstants {
-    double axial;
-    double bending;
-    double length;
-    double resolution;
+    double axialPerLength;           // 16 eps EA / l [N/m]
+    double bendingPerLengthSquared;  // 16 eps EI / l^2 [N] (0 for a bar)
+    double length;                   // l [m]
+    double resolution;               // [N]
   };
   std::vector<RoundoffConstants> m_roundoff;
   // Seabed friction in statics: committed anchor (x, y) per node (NaN: none) and the trial anchors of the
