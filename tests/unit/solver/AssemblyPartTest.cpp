@@ -148,6 +148,47 @@ TEST(AssemblyPart, SelectPartTakesTheNeighboursAndTheirElements) {
   EXPECT_EQ(part.attachments, (std::vector<int>{0}));
 }
 
+/// The support reactions of Simulation::snapshot, which assembles the line ends as a part, against a whole
+/// assembly (plus M a in dynamics) read at the end nodes: bit for bit (the same terms in the same order).
+void expectSnapshotEndForcesEqualWhole(bool dynamic) {
+  analysis::Simulation sim(partModel(true));
+  const model::DofMap& dofs = sim.model().dofs();
+  stir(sim.state(), dofs, 11);
+  sim.state().time = 2.3;
+  // The part path is the one under test: the four line ends (anchored, pinned, two fixed) are accepted.
+  solver::AssemblyPart part;
+  ASSERT_TRUE(sim.assembler().supportsParts());
+  ASSERT_TRUE(sim.assembler().selectPart({0, 16, 17, 23}, part));
+  solver::AssemblyRequest request;
+  request.time = sim.state().time;
+  request.dynamic = dynamic;
+  request.wantMatrix = false;
+  VecX whole, inertia = VecX::Zero(dofs.fullDofCount());
+  sim.assembler().assemble(sim.state(), request, whole, nullptr);
+  if (dynamic) sim.assembler().addMass(sim.state(), 0.0, nullptr, &sim.state().acceleration, &inertia);
+  whole += inertia;
+  const std::vector<solver::LineSnapshot> lines = sim.snapshot(dynamic);
+  ASSERT_EQ(lines.size(), 2u);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const model::Line& line = sim.model().lines()[l];
+    const Vec3 a = -whole.segment<3>(dofs.firstDof(line.firstNode));
+    const Vec3 b = -whole.segment<3>(dofs.firstDof(line.lastNode()));
+    ASSERT_GT(a.norm(), 0.0) << "a zero reaction would prove nothing";
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(lines[l].endForceA[k], a[k]) << line.name << " end A, component " << k;
+      EXPECT_EQ(lines[l].endForceB[k], b[k]) << line.name << " end B, component " << k;
+    }
+  }
+}
+
+TEST(AssemblyPart, OutputSnapshotSupportReactionsEqualAWholeAssemblyInDynamics) {
+  expectSnapshotEndForcesEqualWhole(true);
+}
+
+TEST(AssemblyPart, OutputSnapshotSupportReactionsEqualAWholeAssemblyInStatics) {
+  expectSnapshotEndForcesEqualWhole(false);
+}
+
 TEST(AssemblyPart, NotOfferedWhenAContributorCouplesDistantNodes) {
   // A wake makes each element of the downstream line depend on the upstream line.
   model::ModelSpec spec = partModel(true);
