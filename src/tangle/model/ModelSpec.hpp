@@ -233,7 +233,7 @@ struct DynamicSpec {
   /// Resolves slack-to-taut snaps in time (see time/CableSnapLimit.hpp).
   double maxCableStrainStep = 1.0e-4;
   /// Error-controlled steps: largest local error per step relative to the step's displacement increment
-  /// (Zienkiewicz & Xie 1991 estimate, docs/theory.md 8.5) [-]; 0: fixed steps of timeStep (default).
+  /// (Zienkiewicz & Xie 1991 estimate, docs/theory.md 8.3) [-]; 0: fixed steps of timeStep (default).
   double errorTolerance = 0.0;
   /// Largest step with error control [s] (0: the output interval).
   double maxTimeStep = 0.0;
