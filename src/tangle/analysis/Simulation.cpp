@@ -241,13 +241,14 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   // as a whole assembly does (the same terms in the same order). A whole assembly at every output time
   // was 2 % of the mooring example's solver thread. Not with line contact, whose whole assemblies also
   // gather its candidates, nor where selectPart refuses (an end held by a vessel).
-  m_snapshotEnds.clear();
-  for (const model::Line& line : m_model->lines()) {
-    m_snapshotEnds.push_back(line.firstNode);
-    if (line.lastNode() != line.firstNode) m_snapshotEnds.push_back(line.lastNode());
+  if (m_snapshotEnds.empty()) {  // the model's lines do not change: gathered at the first call
+    for (const model::Line& line : m_model->lines()) {
+      m_snapshotEnds.push_back(line.firstNode);
+      m_snapshotEnds.push_back(line.lastNode());
+    }
+    std::sort(m_snapshotEnds.begin(), m_snapshotEnds.end());
+    m_snapshotEnds.erase(std::unique(m_snapshotEnds.begin(), m_snapshotEnds.end()), m_snapshotEnds.end());
   }
-  std::sort(m_snapshotEnds.begin(), m_snapshotEnds.end());
-  m_snapshotEnds.erase(std::unique(m_snapshotEnds.begin(), m_snapshotEnds.end()), m_snapshotEnds.end());
   const bool ends =
       !m_contact && m_assembler->supportsParts() && m_assembler->selectPart(m_snapshotEnds, m_snapshotPart);
   VecX force;

@@ -74,7 +74,7 @@ class Simulation {
   model::State m_state;
   bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)
   mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;  // sectionSnapshot's buffer
-  std::vector<int> m_snapshotEnds;      // snapshot's work space: the lines' end nodes (ascending)
+  std::vector<int> m_snapshotEnds;      // the lines' end nodes (ascending; snapshot fills it once)
   solver::AssemblyPart m_snapshotPart;  // and the part assembled for them
 };
 

@@ -95,8 +95,16 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
         ei[e + 1] += el.beam->properties().bendingStiffness;
       }
     }
-    // Discrete curvature of the polyline at an inner node: turning angle / mean length of its segments.
+    // Discrete curvature of the polyline at an inner node: turning angle / mean length of its segments. The
+    // segments' lengths are formed once per line, when first needed (a beam line with EI at every node
+    // never needs them).
+    bool haveSegmentLengths = false;
     const auto polylineCurvature = [&](int i) {
+      if (!haveSegmentLengths) {
+        segmentLength.resize(static_cast<std::size_t>(std::max(n - 1, 0)));
+        for (int k = 0; k + 1 < n; ++k) segmentLength[k] = (s.position[k + 1] - s.position[k]).norm();
+        haveSegmentLengths = true;
+      }
       const Vec3 a = s.position[i] - s.position[i - 1];
       const Vec3 b = s.position[i + 1] - s.position[i];
       // atan(|a x b| / a.b) where the turn is below 90 degrees: within 2 ulp of atan2 and a third of its
@@ -105,8 +113,6 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const double angle = cosine > 0.0 ? std::atan(sine / cosine) : std::atan2(sine, cosine);
       return angle / (0.5 * (segmentLength[i - 1] + segmentLength[i]));
     };
-    segmentLength.resize(static_cast<std::size_t>(std::max(n - 1, 0)));
-    for (int i = 0; i + 1 < n; ++i) segmentLength[i] = (s.position[i + 1] - s.position[i]).norm();
     if (!anyBeam) {
       // A cable line (bars only) has no bending moment, torque or rotation (all stay zero) and its
       // curvature is the polyline's: the same values as the general loop below, without its work per node

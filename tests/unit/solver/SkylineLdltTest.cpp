@@ -17,6 +17,14 @@
 namespace tangle {
 namespace {
 
+/// The n x n sparse matrix of the triplets `t` (duplicates summed), compressed.
+SparseMatrix fromTriplets(int n, const std::vector<Triplet>& t) {
+  SparseMatrix k(n, n);
+  k.setFromTriplets(t.begin(), t.end());
+  k.makeCompressed();
+  return k;
+}
+
 /// A symmetric matrix from dense blocks along the diagonal (a "line" of nodes with `dofsPerNode` DOFs,
 /// neighbours coupled), positive definite by diagonal dominance, plus optional couplings (i, j).
 SparseMatrix lineMatrix(int nodes, int dofsPerNode, const std::vector<std::pair<int, int>>& extra, unsigned seed,
@@ -43,10 +51,7 @@ SparseMatrix lineMatrix(int nodes, int dofsPerNode, const std::vector<std::pair<
     const double d = 4.0 * dofsPerNode + 2.0 + u(rng);
     t.emplace_back(i, i, indefinite && i % 7 == 3 ? -d : d);
   }
-  SparseMatrix k(n, n);
-  k.setFromTriplets(t.begin(), t.end());
-  k.makeCompressed();
-  return k;
+  return fromTriplets(n, t);
 }
 
 /// Couplings of the last node of a line of `nodes` nodes to its first (an arrow: two lines joined at a vessel
@@ -111,8 +116,7 @@ TEST(SkylineLdlt, FixedWidthBandOfLinesEqualsDenseLdlt) {
       for (SparseMatrix::InnerIterator it(one, c); it; ++it)
         t.emplace_back(copy * 90 + static_cast<int>(it.row()), copy * 90 + static_cast<int>(it.col()),
                        it.value());
-  SparseMatrix k(180, 180);
-  k.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix k = fromTriplets(180, t);
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   ASSERT_EQ(s.blockCount(), 2);
@@ -143,10 +147,7 @@ SparseMatrix bandMatrix(int n, int width, unsigned seed, bool indefinite = false
     const double d = 2.0 * width + 2.0 + u(rng);
     t.emplace_back(i, i, indefinite && i % 5 == 2 ? -d : d);
   }
-  SparseMatrix k(n, n);
-  k.setFromTriplets(t.begin(), t.end());
-  k.makeCompressed();
-  return k;
+  return fromTriplets(n, t);
 }
 
 TEST(SkylineLdlt, TwistedBlocksEqualDenseLdlt) {
@@ -187,8 +188,7 @@ TEST(SkylineLdlt, VanishingPivotOfTheTwistFallsBackToTopDown) {
       t.emplace_back(i - 1, i, 1.0);
     }
   }
-  SparseMatrix k(8, 8);
-  k.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix k = fromTriplets(8, t);
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   ASSERT_EQ(s.bandWidth(), 1);
@@ -222,8 +222,7 @@ TEST(SkylineLdlt, IndefiniteMatrixWithoutZeroPivotsIsSolved) {
 TEST(SkylineLdlt, ZeroPivotIsReportedNotSolved) {
   // [[1, 1], [1, 1]]: the second pivot is 0.
   std::vector<Triplet> t{{0, 0, 1.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 1.0}};
-  SparseMatrix k(2, 2);
-  k.setFromTriplets(t.begin(), t.end());
+  const SparseMatrix k = fromTriplets(2, t);
   solver::SkylineLdlt s;
   s.analyzePattern(k);
   EXPECT_FALSE(s.factorize(k));
@@ -244,10 +243,7 @@ SparseMatrix blockDiagonal(const std::vector<SparseMatrix>& blocks,
     t.emplace_back(i, j, 0.1);
     t.emplace_back(j, i, 0.1);
   }
-  SparseMatrix k(offset, offset);
-  k.setFromTriplets(t.begin(), t.end());
-  k.makeCompressed();
-  return k;
+  return fromTriplets(offset, t);
 }
 
 TEST(SkylineLdlt, IndependentLinesAreBlocksSolvedAlone) {
@@ -380,9 +376,7 @@ TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {
 
 TEST(LinearSolver, SingularMatrixFallsBackAndReportsFailure) {
   std::vector<Triplet> t{{0, 0, 1.0}, {0, 1, 1.0}, {1, 0, 1.0}, {1, 1, 1.0}};
-  SparseMatrix k(2, 2);
-  k.setFromTriplets(t.begin(), t.end());
-  k.makeCompressed();
+  const SparseMatrix k = fromTriplets(2, t);
   solver::LinearSolver s(true);
   EXPECT_FALSE(s.factorize(k));
 }
