@@ -90,7 +90,7 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   time::DynamicRelaxation relaxation(*m_assembler, m_model->spec().dynamics, std::move(prescribed), longest);
   if (m_contact)
     relaxation.setStepValidator([this](const model::State& before, const model::State& after) {
-      return m_contact->acceptStep(before, after);
+      return m_contact->stepRejection(before, after);
     });
   // Rounds of two periods of the slowest (pendulum) mode, each followed by a Newton solve from the shape
   // reached; at rest means slower than 1 mm/s.
@@ -290,7 +290,7 @@ time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observe
   if (m_contact) {
     dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });
     dynamics.setStepValidator([this](const model::State& before, const model::State& after) {
-      return m_contact->acceptStep(before, after);
+      return m_contact->stepRejection(before, after);
     });
     dynamics.setStepHook([this](model::State& s, double dt) { m_contact->commitStep(s, dt); });
   }

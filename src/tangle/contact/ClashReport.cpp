@@ -1,8 +1,9 @@
 #include "tangle/contact/ClashReport.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <limits>
 
@@ -80,20 +81,27 @@ void ClashReport::write(const fs::path& dir) const {
   {
     io::OutputFile file(out / "events.csv");
     std::ostream& f = file.stream();
-    f << "event,line_1,line_2,kind,start_time_s,end_time_s,x_start_m,y_start_m,z_start_m,arc_1_start_m,arc_2_start_m,"
+    f << "event,line_1,line_2,kind,start_time_s,end_time_s,x_start_m,y_start_m,z_start_m,arc_1_start_m,arc_2_"
+         "start_m,"
          "arc_1_min_m,arc_1_max_m,arc_2_min_m,arc_2_max_m,peak_force_N,peak_force_per_length_N_per_m,"
-         "max_contact_length_m,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,energy_mass_kg,energy_mass_basis,"
-         "effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open\n";
+         "max_contact_length_m,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,energy_mass_kg,energy_mass_"
+         "basis,"
+         "effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open,impact_phase_end_s,impact_phase_end,"
+         "impact_phase_impulse_Ns,eq5_mass_kg,absorbed_energy_J,work_mass_kg,event_eq5_mass_kg,mass_lower_"
+         "bound_kg,"
+         "mass_upper_bound_kg,energy_warning\n";
     for (std::size_t i = 0; i < events.size(); ++i) {
       const ContactEvent& e = events[i];
-      f << fmt::format("{},{},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.6e},"
-                       "{:.6e},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{}\n",
-                       i, lines[e.lineA].name, lines[e.lineB].name, e.kind(), e.startTime, e.endTime,
-                       e.positionStart.x(), e.positionStart.y(), e.positionStart.z(), e.arcAStart, e.arcBStart,
-                       e.arcAMin, e.arcAMax, e.arcBMin, e.arcBMax, e.peakForce, e.peakForcePerLength,
-                       e.maxContactLength, e.impulse, e.impactVelocity, e.impactEnergy, e.energyMass,
-                       e.energyMassBasis, e.effectiveMassA, e.effectiveMassB, e.maxPenetration,
-                       e.open ? "true" : "false");
+      f << fmt::format(
+          "{},{},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.6e},"
+          "{:.6e},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{},{:.6f},{},{:.6e},{:.6e},"
+          "{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},\"{}\"\n",
+          i, lines[e.lineA].name, lines[e.lineB].name, e.kind(), e.startTime, e.endTime, e.positionStart.x(),
+          e.positionStart.y(), e.positionStart.z(), e.arcAStart, e.arcBStart, e.arcAMin, e.arcAMax, e.arcBMin,
+          e.arcBMax, e.peakForce, e.peakForcePerLength, e.maxContactLength, e.impulse, e.impactVelocity,
+          e.impactEnergy, e.energyMass, e.energyMassBasis, e.effectiveMassA, e.effectiveMassB,
+          e.maxPenetration, e.open ? "true" : "false", e.phaseEndTime, e.phaseEnd, e.phaseImpulse, e.eq5Mass,
+          e.phaseWork, e.workMass, e.eventEq5Mass, e.massLowerBound, e.massUpperBound, e.energyWarning);
     }
     file.close();
   }
@@ -131,7 +139,8 @@ void ClashReport::write(const fs::path& dir) const {
   io::OutputFile summary(out / "summary.json");
   io::JsonWriter j(summary.stream());
   j.beginObject();
-  j.field("model", m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");
+  j.field("model",
+          m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");
   j.field("restitution", m_contact->spec().restitution);
   j.field("damping_ratio", m_contact->dampingRatio());
   j.field("clearance_margin_m", m_contact->spec().clearanceMargin);
@@ -140,8 +149,8 @@ void ClashReport::write(const fs::path& dir) const {
   j.beginArray();
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
     const int a = m_pairs[p][0], b = m_pairs[p][1];
-    std::vector<double> velocity, energy, force;
-    int sustained = 0;
+    std::vector<double> velocity, energy, absorbed, force;
+    int sustained = 0, doubtful = 0;
     double peakSustained = 0.0, contactTime = 0.0;
     for (const ContactEvent& e : events) {
       if (e.lineA != a || e.lineB != b) continue;
@@ -153,7 +162,9 @@ void ClashReport::write(const fs::path& dir) const {
       if (!e.impact) continue;  // the distributions are over impacts only
       velocity.push_back(e.impactVelocity);
       energy.push_back(e.impactEnergy);
+      absorbed.push_back(e.phaseWork);
       force.push_back(e.peakForce);
+      if (!e.energyWarning.empty()) ++doubtful;
     }
     const ClearanceSample* worst = nullptr;
     for (const ClearanceSample& s : m_samples)
@@ -168,6 +179,8 @@ void ClashReport::write(const fs::path& dir) const {
     j.field("time_in_contact_s", contactTime);
     writeStats(j, "impact_velocity_m_per_s", velocity);
     writeStats(j, "impact_energy_J", energy);
+    writeStats(j, "absorbed_energy_J", absorbed);
+    j.field("impacts_with_energy_warning", doubtful);
     writeStats(j, "peak_force_N", force);
     j.key("min_clearance");
     j.beginObject();
@@ -202,11 +215,18 @@ std::string ClashReport::terminalSummary() const {
     double minClear = std::numeric_limits<double>::infinity();
     for (const ClearanceSample& c : m_samples)
       if (c.pair == p) minClear = std::min(minClear, c.clearance);
-    s += fmt::format("  {} / {}: {} impact(s), {} sustained contact(s), max impact velocity {:.3f} m/s, max impact energy {:.4g} J, "
-                     "max contact force {:.4g} kN, min clearance {}\n",
-                     lines[a].name, lines[b].name, count, sustained, vmax, emax, fmax / 1000.0,
-                     std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
+    s += fmt::format(
+        "  {} / {}: {} impact(s), {} sustained contact(s), max impact velocity {:.3f} m/s, max impact energy "
+        "{:.4g} J, "
+        "max contact force {:.4g} kN, min clearance {}\n",
+        lines[a].name, lines[b].name, count, sustained, vmax, emax, fmax / 1000.0,
+        std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
   }
+  for (const ContactEvent& e : m_contact->events())
+    if (!e.energyWarning.empty())
+      s += fmt::format(
+          "  warning: impact of {} / {} at t = {:.3f} s: {} (contact/events.csv; docs/theory.md 9.10)\n",
+          lines[e.lineA].name, lines[e.lineB].name, e.startTime, e.energyWarning);
   return s;
 }
 

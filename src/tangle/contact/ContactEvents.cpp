@@ -1,5 +1,7 @@
 #include "tangle/contact/ContactEvents.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -19,7 +21,10 @@ struct Patch {
   double aMin = kInf, aMax = -kInf, bMin = kInf, bMax = -kInf;
   double reach = 0.0, approach = 0.0, penetration = 0.0, jumpImpulse = 0.0;
   double lineMass = 0.0, lineStiffness = 0.0;  // sums over Gauss spots
-  Vec3 position = Vec3::Zero();                // force centroid on line A
+  double power = 0.0;             // sum of force x closing speed [W] (work against the relative motion)
+  double relativeVelocity = 0.0;  // force-weighted relative normal velocity (< 0 approaching) [m/s]
+  double jumpWork = 0.0;          // compression work of impulse-model jumps at this state [J]
+  Vec3 position = Vec3::Zero();   // force centroid on line A
   const ContactSpot* strongest = nullptr;
 };
 
@@ -40,7 +45,8 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     if (s.force > 0.0) byPair[{s.lineA, s.lineB}].push_back(&s);
   std::vector<Patch> patches;
   for (auto& [pair, list] : byPair) {
-    std::sort(list.begin(), list.end(), [](const ContactSpot* a, const ContactSpot* b) { return a->arcA < b->arcA; });
+    std::sort(list.begin(), list.end(),
+              [](const ContactSpot* a, const ContactSpot* b) { return a->arcA < b->arcA; });
     Patch current;
     const ContactSpot* previous = nullptr;
     for (const ContactSpot* s : list) {
@@ -71,6 +77,15 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       p.approach = std::max(p.approach, s->approachSpeed);
       p.penetration = std::max(p.penetration, -s->gap);
       p.jumpImpulse += s->jumpImpulse;
+      const double u = s->normal.dot(s->velocityA - s->velocityB);
+      p.power -= s->force * u;
+      p.relativeVelocity += s->force * u;
+      if (s->jumpImpulse > 0.0) {
+        // A velocity jump from u_before < 0 to u_after: the part of its impulse that stops the approach,
+        // I u_before / (u_before - u_after), does the work 1/2 I_c |u_before| (a constant force).
+        const double before = s->normal.dot(s->velocityBeforeA - s->velocityBeforeB);
+        if (before < 0.0 && u > before) p.jumpWork += 0.5 * s->jumpImpulse * before * before / (u - before);
+      }
       if (s->length > 0.0) {
         p.lineMass += s->pairMass;
         p.lineStiffness += s->stiffness;
@@ -82,11 +97,13 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     }
     p.arcA /= p.force;
     p.arcB /= p.force;
+    p.relativeVelocity /= p.force;
     p.position /= p.force;
   }
 
   // Match patches to open events; the forces of several patches of one event add up.
-  std::vector<double> eventForce(m_open.size(), 0.0);
+  std::vector<double> eventForce(m_open.size(), 0.0), eventPower(m_open.size(), 0.0),
+      eventMomentum(m_open.size(), 0.0), eventJump(m_open.size(), 0.0), eventJumpWork(m_open.size(), 0.0);
   std::vector<bool> continued(m_open.size(), false);
   m_patches.clear();
   for (const Patch& p : patches) {
@@ -96,7 +113,8 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       const ContactEvent& e = m_open[k];
       if (e.lineA != s.lineA || e.lineB != s.lineB) continue;
       const double r = std::max(e.reach, p.reach);
-      if (overlaps(p.aMin, p.aMax, e.lastAMin - r, e.lastAMax + r) && overlaps(p.bMin, p.bMax, e.lastBMin - r, e.lastBMax + r))
+      if (overlaps(p.aMin, p.aMax, e.lastAMin - r, e.lastAMax + r) &&
+          overlaps(p.bMin, p.bMax, e.lastBMin - r, e.lastBMax + r))
         match = static_cast<int>(k);
     }
     if (match < 0) {
@@ -125,8 +143,16 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.lumpedMassA = e.lumpedMassB = 0.0;
       e.impact = dynamic && e.impactVelocity > m_impactVelocity;
       e.sustained = !dynamic;
+      e.phaseOpen = dynamic;
+      e.lastRelativeVelocity = -e.impactVelocity;
+      e.massLowerBound = s.elementPairMass;
+      e.massUpperBound = s.linePairMass;
       m_open.push_back(std::move(e));
       eventForce.push_back(0.0);
+      eventPower.push_back(0.0);
+      eventMomentum.push_back(0.0);
+      eventJump.push_back(0.0);
+      eventJumpWork.push_back(0.0);
       continued.push_back(false);
       match = static_cast<int>(m_open.size()) - 1;
     }
@@ -146,6 +172,10 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.lastBMax = std::max(e.lastBMax, p.bMax);
     }
     eventForce[match] += p.force;
+    eventPower[match] += p.power;
+    eventMomentum[match] += p.force * p.relativeVelocity;
+    eventJump[match] += p.jumpImpulse;
+    eventJumpWork[match] += p.jumpWork;
     e.arcAMin = std::min(e.arcAMin, p.aMin);
     e.arcAMax = std::max(e.arcAMax, p.aMax);
     e.arcBMin = std::min(e.arcBMin, p.bMin);
@@ -163,7 +193,14 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     if (!continued[k]) continue;
     ContactEvent& e = m_open[k];
     e.impulse += 0.5 * (e.lastForce + eventForce[k]) * dt;
+    const double u = eventMomentum[k] / eventForce[k];  // force-weighted relative normal velocity
+    if (e.phaseOpen) {
+      e.phaseImpulse += 0.5 * (e.lastForce + eventForce[k]) * dt + eventJump[k];
+      e.phaseWork += 0.5 * (e.lastPower + eventPower[k]) * dt + eventJumpWork[k];
+    }
     e.lastForce = eventForce[k];
+    e.lastPower = eventPower[k];
+    e.lastRelativeVelocity = u;
     e.peakForce = std::max(e.peakForce, eventForce[k]);
     e.endTime = time;
     e.lastContactTime = time;
@@ -171,29 +208,50 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     if (std::isfinite(e.pairMass) && e.pairMass > 0.0 && e.stiffness > 0.0 &&
         time - e.startTime > kSustainedDurations * kPi * std::sqrt(e.pairMass / e.stiffness))
       e.sustained = true;
+    if (e.phaseOpen && u >= 0.0) {
+      endPhase(e, time, u, "reversed");
+    } else if (e.phaseOpen && e.sustained) {
+      endPhase(e, time, u, "sustained");
+    }
   }
   // Events no patch continued: closed once the surfaces have parted (see the file comment).
   for (std::size_t k = m_open.size(); k-- > 0;) {
     if (continued[k]) continue;
     ContactEvent& e = m_open[k];
     const double r = e.reach;
-    const double gap = gapIn(e.lineA, e.lineB, e.lastAMin - r, e.lastAMax + r, e.lastBMin - r, e.lastBMax + r);
+    const double gap =
+        gapIn(e.lineA, e.lineB, e.lastAMin - r, e.lastAMax + r, e.lastBMin - r, e.lastBMax + r);
     const double closing = 0.5 * e.lastForce * dt;
     if (gap > kSeparationFraction * e.radii || time - e.lastContactTime > m_separationTime) {
-      close(k, time, closing);
+      close(k, time, closing, "separated");
     } else {
       e.impulse += closing;
       e.lastForce = 0.0;
+      e.lastPower = 0.0;
+      // The force is gone while the surfaces stay close (a resting contact that breathes): whatever the
+      // impact was, it is over at the last state with contact.
+      if (e.phaseOpen) endPhase(e, e.lastContactTime, e.lastRelativeVelocity, "separated");
     }
   }
 }
 
-void ContactEventTracker::close(std::size_t openIndex, double time, double closingImpulse) {
+void ContactEventTracker::endPhase(ContactEvent& e, double time, double u, const char* why) {
+  e.phaseOpen = false;
+  e.phaseEndTime = time;
+  e.phaseEnd = why;
+  e.phaseVelocityChange = u + e.impactVelocity;  // from -v0 at first contact to u
+}
+
+void ContactEventTracker::close(std::size_t openIndex, double time, double closingImpulse,
+                                const char* phaseEnd) {
   ContactEvent e = std::move(m_open[openIndex]);
   m_open.erase(m_open.begin() + static_cast<std::ptrdiff_t>(openIndex));
   e.endTime = time;
   e.impulse += closingImpulse + e.jumpImpulse;
   e.jumpImpulse = 0.0;
+  // An impact phase still open ends at the last state with contact (its impulse and velocity belong
+  // together; the closing half step's impulse has no velocity to go with it).
+  if (e.phaseOpen) endPhase(e, e.lastContactTime, e.lastRelativeVelocity, phaseEnd);
   // Paper Eq. 5 per line: the impulse over the change of the normal velocity of the line's contact point.
   const double dva = std::abs(e.normalStart.dot(e.lastVelocityA - e.startVelocityA));
   const double dvb = std::abs(e.normalStart.dot(e.lastVelocityB - e.startVelocityB));
@@ -201,23 +259,54 @@ void ContactEventTracker::close(std::size_t openIndex, double time, double closi
   // the velocity does not change): NaN otherwise.
   e.effectiveMassA = !e.impact ? std::nan("") : dva > 1e-12 ? e.impulse / dva : kInf;
   e.effectiveMassB = !e.impact ? std::nan("") : dvb > 1e-12 ? e.impulse / dvb : kInf;
-  // Energy mass: Eq. 5 pair mass where the impact changed the relative normal velocity measurably.
-  const double dvRelative = std::abs(e.normalStart.dot((e.lastVelocityA - e.lastVelocityB) - (e.startVelocityA - e.startVelocityB)));
-  if (e.pointStart && e.impact && e.impactVelocity > 0.0 && dvRelative > 0.05 * e.impactVelocity) {
-    e.energyMass = e.impulse / dvRelative;
+  // The paper's Eq. 5 pair mass over the whole event, as the paper defines it (kept for reference: over
+  // a sustained contact the impulse grows without the velocity changing, and so does this quotient).
+  const double dvRelative = std::abs(
+      e.normalStart.dot((e.lastVelocityA - e.lastVelocityB) - (e.startVelocityA - e.startVelocityB)));
+  e.eventEq5Mass = e.impact && dvRelative > 0.05 * e.impactVelocity ? e.impulse / dvRelative : std::nan("");
+  // Impact phase: Eq. 5 where the phase changed the relative normal velocity measurably, the work
+  // estimate where it did not (a graze), the lumped FE pair mass where neither has anything to measure.
+  const double v0 = e.impactVelocity;
+  e.eq5Mass = v0 > 0.0 && e.phaseVelocityChange > 0.05 * v0 && e.phaseImpulse > 0.0
+                  ? e.phaseImpulse / e.phaseVelocityChange
+                  : std::nan("");
+  e.workMass = v0 > 0.0 && e.phaseWork > 0.0 ? 2.0 * e.phaseWork / (v0 * v0) : std::nan("");
+  if (std::isfinite(e.eq5Mass)) {
+    e.energyMass = e.eq5Mass;
     e.energyMassBasis = "eq5";
+  } else if (std::isfinite(e.workMass)) {
+    e.energyMass = e.workMass;
+    e.energyMassBasis = "work";
   } else {
     e.energyMass = std::isfinite(e.pairMass) ? e.pairMass : 0.0;
-    e.energyMassBasis = e.pointStart ? "lumped" : "line";
+    e.energyMassBasis = "lumped";
   }
-  e.impactEnergy = 0.5 * e.energyMass * e.impactVelocity * e.impactVelocity;
+  e.impactEnergy = 0.5 * e.energyMass * v0 * v0;
+  if (e.impact) {
+    if (std::isfinite(e.eq5Mass) && std::isfinite(e.workMass) &&
+        (e.eq5Mass > kEnergyAgreement * e.workMass || e.workMass > kEnergyAgreement * e.eq5Mass))
+      e.energyWarning = fmt::format(
+          "the impact energy by Eq. 5 ({:.4g} J) and the work absorbed in the impact "
+          "phase ({:.4g} J) differ by more than a factor {:g}",
+          e.impactEnergy, e.phaseWork, kEnergyAgreement);
+    else if (e.massUpperBound > 0.0 && e.energyMass > e.massUpperBound * (1.0 + 1e-9))
+      e.energyWarning = fmt::format(
+          "the impact's effective mass {:.4g} kg exceeds the two whole lines' reduced "
+          "mass with added mass ({:.4g} kg)",
+          e.energyMass, e.massUpperBound);
+    else if (e.energyMass < e.massLowerBound * (1.0 - 1e-9))
+      e.energyWarning = fmt::format(
+          "the impact's effective mass {:.4g} kg is below the reduced mass of one "
+          "element of each line ({:.4g} kg)",
+          e.energyMass, e.massLowerBound);
+  }
   m_closed.push_back(std::move(e));
 }
 
 void ContactEventTracker::finish(double time) {
   while (!m_open.empty()) {
     m_open.back().open = true;
-    close(m_open.size() - 1, time, 0.0);
+    close(m_open.size() - 1, time, 0.0, "run end");
     m_closed.back().endTime = time;
   }
   std::stable_sort(m_closed.begin(), m_closed.end(),

@@ -17,11 +17,15 @@
 /// - An event is an impact when its first approach speed v0 exceeds `contact.impact_velocity_threshold`
 ///   in a dynamic run; it is sustained when it lasts longer than kSustainedDurations contact durations
 ///   pi sqrt(m / k) (or is a static contact). The clash statistics are over impacts only.
-/// - Impact energy 1/2 m v0^2 with the mass stated: the paper's Eq. 5 pair mass (impulse over the change
-///   of the relative normal velocity) where the impact changed the velocity measurably (a point impact
-///   that ends or rebounds); otherwise the lumped FE pair mass at the impact point, or for a contact along
-///   a length the reduced mass per unit length of the two lines times the contact length (the kinetic
-///   energy of the relative normal motion of the contacting lengths).
+/// - Impact energy (docs/theory.md 9.10): the paper's Eq. 5 taken over the impact phase only, from first
+///   contact until the relative normal velocity has reversed (the surfaces stop approaching), the event
+///   turned sustained, or it ended: m_eq5 = impulse of the phase / change of the relative normal
+///   velocity over it, energy 1/2 m_eq5 v0^2. Beside it an independent estimate from energy, the work
+///   the contact force did against the relative normal motion over the same phase (the kinetic energy
+///   of approach the contact absorbed): equal for two rigid bodies, and a warning when the two differ by
+///   more than a factor of 2, or when the mass lies outside [one element of each line, the whole lines
+///   with added mass] (reduced pair masses). The paper's Eq. 5 over the whole event stays available
+///   (eventEq5Mass), as the paper defines it.
 
 #include <array>
 #include <functional>
@@ -36,6 +40,8 @@ namespace tangle::contact {
 inline constexpr double kSeparationFraction = 0.05;
 /// Contact durations after which an event counts as sustained [-].
 inline constexpr double kSustainedDurations = 10.0;
+/// Factor beyond which the Eq. 5 and the work estimates of an impact energy are said to disagree [-].
+inline constexpr double kEnergyAgreement = 2.0;
 
 /// One contact spot at a committed state (built by LineContact).
 struct ContactSpot {
@@ -56,6 +62,8 @@ struct ContactSpot {
   double radii = 0.0;               ///< sum of the contact radii [m]
   double minRadius = 0.0;           ///< the smaller contact radius [m]
   double elementLength = 0.0;       ///< the larger element length at the spot [m]
+  double elementPairMass = 0.0;     ///< reduced structural mass of the two elements at the spot [kg]
+  double linePairMass = 0.0;        ///< reduced mass of the two whole lines, added mass included [kg]
 };
 
 /// A contact event (open or closed).
@@ -73,7 +81,21 @@ struct ContactEvent {
   double impactVelocity = 0.0;     ///< relative normal approach speed at first contact [m/s]
   double impactEnergy = 0.0;       ///< 1/2 energyMass impactVelocity^2 [J]
   double energyMass = 0.0;         ///< mass used for the impact energy [kg]
-  std::string energyMassBasis;     ///< "eq5", "lumped" or "line" (see the file comment)
+  /// "eq5" (impact phase), "work" (2 W / v0^2 where the phase changed the velocity by less than 5 % of
+  /// v0), "lumped" (FE pair mass at the point: no work either).
+  std::string energyMassBasis;
+  // Impact phase (see the file comment).
+  double phaseEndTime = 0.0;         ///< end of the impact phase [s]
+  std::string phaseEnd;              ///< "reversed", "separated", "sustained" or "run end"
+  double phaseImpulse = 0.0;         ///< impulse of the contact force over the phase [N s]
+  double phaseVelocityChange = 0.0;  ///< change of the relative normal velocity over the phase [m/s]
+  double phaseWork = 0.0;            ///< work of the contact force against the relative normal motion [J]
+  double eq5Mass = 0.0;              ///< phaseImpulse / phaseVelocityChange [kg] (NaN if not measurable)
+  double workMass = 0.0;             ///< 2 phaseWork / v0^2 [kg] (NaN without approach speed)
+  double eventEq5Mass = 0.0;         ///< the paper's Eq. 5 over the whole event [kg]
+  double massLowerBound = 0.0;       ///< reduced pair mass of one element of each line at the start [kg]
+  double massUpperBound = 0.0;       ///< reduced pair mass of the two whole lines with added mass [kg]
+  std::string energyWarning;         ///< empty, or why the impact energy is doubtful (file comment)
   double effectiveMassA = 0.0;     ///< Eq. 5: impulse / normal velocity change of line A at the point [kg] (NaN unless an impact)
   double effectiveMassB = 0.0;     ///< Eq. 5 for line B [kg]
   double lumpedMassA = 0.0, lumpedMassB = 0.0;  ///< (unused for line contacts) [kg]
@@ -96,6 +118,9 @@ struct ContactEvent {
   Vec3 lastVelocityA = Vec3::Zero(), lastVelocityB = Vec3::Zero();
   bool pointStart = true;          ///< the strongest spot at the start was a point contact
   double jumpImpulse = 0.0;        ///< [N s]
+  bool phaseOpen = true;           ///< the impact phase has not ended
+  double lastPower = 0.0;          ///< contact force x closing speed at the last commit [W]
+  double lastRelativeVelocity = 0.0;  ///< force-weighted relative normal velocity at the last commit [m/s]
 };
 
 /// One patch of a line pair at a committed state (for the force histories).
@@ -131,7 +156,9 @@ class ContactEventTracker {
   const std::vector<ContactPatch>& patches() const { return m_patches; }
 
  private:
-  void close(std::size_t openIndex, double time, double closingImpulse);
+  void close(std::size_t openIndex, double time, double closingImpulse, const char* phaseEnd);
+  /// Ends the impact phase of an event at `time` with the relative normal velocity u [m/s] reached.
+  static void endPhase(ContactEvent& e, double time, double u, const char* why);
 
   double m_impactVelocity, m_separationTime;
   std::vector<ContactEvent> m_open, m_closed;

@@ -26,6 +26,13 @@ constexpr double kAutoStiffnessFactor = 0.1;
 /// step through the spring, about (pi / steps)^2 / 4 of the impact energy): 20 steps gave rebound
 /// heights 0.6 to 0.8 % high in the paper's free-fall case (6.2), 40 steps below 0.15 %.
 constexpr double kImpactSteps = 40.0;
+constexpr double kPi = 3.141592653589793;
+/// Reduced mass m_a m_b / (m_a + m_b) [kg]; an immovable side (+inf) leaves the other.
+double reducedMass(double a, double b) {
+  if (std::isinf(a)) return b;
+  if (std::isinf(b)) return a;
+  return a + b > 0.0 ? a * b / (a + b) : 0.0;
+}
 }  // namespace
 
 LineContact::LineContact(const model::Model& model, const model::ContactSpec& spec, double timeStep)
@@ -38,6 +45,8 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
   const int nLines = static_cast<int>(model.lines().size());
   m_lineEnabled.resize(nLines);
   m_lineStiffness.assign(nLines, kInf);
+  m_lineMassWithAdded.assign(nLines, 0.0);
+  const double rho = model.environment().waterDensity;
   for (int l = 0; l < nLines; ++l) {
     const model::Line& line = model.lines()[l];
     m_lineEnabled[l] = line.spec->contact;
@@ -45,8 +54,15 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
       const model::LineElement& el = model.elements()[line.firstElement + e];
       m_lineStiffness[l] =
           std::min(m_lineStiffness[l], kAutoStiffnessFactor * el.type->axialStiffness / el.restLength);
+      // Normal added mass Can rho pi/4 D^2 per unit length over the whole line, submerged or not: the
+      // upper bound of the mass an impact can engage (ContactEvents.hpp).
+      const double d = el.type->outerDiameter;
+      m_lineMassWithAdded[l] += el.type->addedMassNormal * rho * 0.25 * kPi * d * d * el.restLength;
     }
+    for (int n = line.firstNode; n <= line.lastNode(); ++n) m_lineMassWithAdded[l] += model.nodeMass()[n];
   }
+  for (const model::NodeAttachment& a : model.attachments())
+    m_lineMassWithAdded[model.lineOfNode(a.node)] += a.spec.addedMass;
   m_allowed.assign(nLines, std::vector<bool>(nLines, false));
   if (spec.pairs.empty()) {
     for (int a = 0; a < nLines; ++a)
@@ -97,6 +113,12 @@ double LineContact::nodeTransverseMass(int node) const {
   const model::DofMap& dofs = m_model->dofs();
   if (dofs.equation(dofs.firstDof(node)) < 0) return kInf;  // held node: immovable
   return m_model->nodeMass()[node];
+}
+
+double LineContact::elementMass(int element) const {
+  const model::LineElement& el = m_model->elements()[element];
+  const bool held = std::isinf(nodeTransverseMass(el.node1)) && std::isinf(nodeTransverseMass(el.node2));
+  return held ? kInf : el.type->massPerLength * el.restLength;
 }
 
 double LineContact::lumpedMass(int element, double w) const {
@@ -370,15 +392,11 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     const bool tHeld = !r.curve.tFree && (t < 0.0 || t > 1.0);
     return sHeld || tHeld;
   };
-  const auto heldCable = [&](const Raw& r) {
-    return (!r.smoothA && !r.curve.sFree) || (!r.smoothB && !r.curve.tFree);
-  };
   m_trial.clear();
   for (std::size_t i = 0; i < raw.size(); ++i) {
     const SegmentProxy& a = m_proxies[raw[i].proxyA];
     const SegmentProxy& b = m_proxies[raw[i].proxyB];
     if (raw[i].weight <= 0.0 || heldAtOverlap(raw[i])) continue;
-    const bool twoCables = !raw[i].smoothA && !raw[i].smoothB;
     bool keep = true;
     const double same = 0.01 * (a.radius + b.radius);
     for (std::size_t j = 0; j < raw.size() && keep; ++j) {
@@ -392,7 +410,13 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
       if (!before) continue;
       const bool samePoint = (raw[j].curve.pointA - raw[i].curve.pointA).norm() <= same &&
                              (raw[j].curve.pointB - raw[i].curve.pointB).norm() <= same;
-      if (twoCables || samePoint || heldCable(raw[i])) keep = false;
+      // A cable side held at a segment end is not a minimum when the pair across that node (the same
+      // element on the other line) is closer: the minimum is there. A closer pair on another element of
+      // the other line is a distinct minimum (the two legs of a cable folded over a wire's node).
+      const bool heldA = !raw[i].smoothA && !raw[i].curve.sFree;
+      const bool heldB = !raw[i].smoothB && !raw[i].curve.tFree;
+      const bool acrossHeldNode = (heldA && b2.element == b.element) || (heldB && a2.element == a.element);
+      if (samePoint || acrossHeldNode) keep = false;
     }
     if (!keep) continue;
     const CentrelineDistance& d = raw[i].curve;
@@ -413,18 +437,26 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     c.arcB = arcOf(c.lineB, c.elementB, c.t);
     // Normal: the direction of the true closest points (never an approximate normal built from
     // smoothed tangents, which is not the closest-point direction on curved lines and gave phantom
-    // forces at positive gaps). The sign follows the contact's previous normal, so that lines which
-    // have passed through each other are pushed back to the side they came from.
+    // forces at positive gaps). Its sign is -1 when this element pair has passed through each other
+    // since the last committed state (a Newton iterate that overshot), so that the lines are pushed back
+    // to the side they came from. Committed states are never crossed (acceptStep, rejectState), so the
+    // pair's own chords at that state tell the side. (Comparing with the normal of a contact tracked
+    // nearby along the lines is wrong where the normal turns legitimately: the two legs of a cable
+    // folded over a wire touch it from sides 90-180 deg apart, and a foot passing from one leg to the
+    // other read as a crossing: a gap of minus the distance minus the radii, 80 kN on a 1.6 kg/m wire.)
     const Vec3 diff = c.pointA - c.pointB;
-    const Vec3* previous = nullptr;
-    for (const TrackedContact& tr : m_tracked)
-      if (tr.lineA == a.line && tr.lineB == b.line &&
-          std::abs(tr.arcA - c.arcA) + std::abs(tr.arcB - c.arcB) <
-              2.0 * (elements[c.elementA].restLength + elements[c.elementB].restLength))
-        previous = &tr.normal;
-    c.sign = (previous && diff.dot(*previous) < 0.0) ? -1.0 : 1.0;
-    c.normal =
-        diff.norm() > 1e-12 ? Vec3(c.sign * diff.normalized()) : (previous ? *previous : Vec3(Vec3::UnitZ()));
+    c.sign = 1.0;
+    if (!m_reference.empty()) {
+      const model::LineElement& ea = elements[c.elementA];
+      const model::LineElement& eb = elements[c.elementB];
+      const geometry::SegmentDistanceResult before = geometry::segmentDistance(
+          m_reference[ea.node1], m_reference[ea.node2], m_reference[eb.node1], m_reference[eb.node2]);
+      const geometry::SegmentDistanceResult now =
+          geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
+                                    state.position[eb.node1], state.position[eb.node2]);
+      if (before.distance > 1e-12 && passedThrough(c.elementA, c.elementB, before, now)) c.sign = -1.0;
+    }
+    c.normal = diff.norm() > 1e-12 ? Vec3(c.sign * diff.normalized()) : Vec3(Vec3::UnitZ());
     c.gap = c.sign * diff.norm() - a.radius - b.radius;
     const Vec3 va = stencilValue(state.velocity, d.a);
     const Vec3 vb = stencilValue(state.velocity, d.b);
@@ -464,9 +496,9 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     // make it pull again until the release rounds run out and then pull for the whole step.
     // The point slides from pair to pair across nodes, so membership is by neighbourhood.
     const std::pair<int, int> key{c.elementA, c.elementB};
-    const bool sticky = inNeighbourhood(key, m_sticky);
-    const bool released = inNeighbourhood(key, m_released);
     const double radii = a.radius + b.radius;
+    const bool sticky = sameContact(key, c.pointA, c.pointB, radii, m_sticky);
+    const bool released = sameContact(key, c.pointA, c.pointB, radii, m_released);
     const bool pushes = c.stiffness * -c.gap + c.damping * -c.gapRate > 0.0;
     const bool touching = c.gap < 0.0 && (!released || (pushes && c.gap < -0.01 * radii));
     if (m_debug)
@@ -474,7 +506,7 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
           "        raw e{}-e{} s {:.6f} t {:.6f} dist-r {:.4e} gap {:.4e} sticky {} released {}\n",
           c.elementA, c.elementB, c.s, c.t, d.distance - radii, c.gap, sticky, released);
     if (!sticky && !touching) continue;
-    if (trial) m_sticky.insert(key);
+    if (trial) m_sticky[key] = ActiveMark{c.pointA, c.pointB};
     c.normalForce = c.stiffness * -c.gap + c.damping * -c.gapRate;  // may be < 0 until released
     if (dynamic && m_spec.frictionCoefficient > 0.0 && c.normalForce > 0.0) {
       const Vec3 vrel = va - vb;
@@ -538,10 +570,18 @@ bool LineContact::neighbours(const std::pair<int, int>& a, const std::pair<int, 
          std::abs(a.first - b.first) <= 1 && std::abs(a.second - b.second) <= 1;
 }
 
-bool LineContact::inNeighbourhood(const std::pair<int, int>& key,
-                                  const std::set<std::pair<int, int>>& set) const {
-  for (const auto& k : set)
-    if (neighbours(k, key)) return true;
+bool LineContact::inNeighbourhood(const std::pair<int, int>& key, const ActiveSet& set) const {
+  for (const auto& entry : set)
+    if (neighbours(entry.first, key)) return true;
+  return false;
+}
+
+bool LineContact::sameContact(const std::pair<int, int>& key, const Vec3& pA, const Vec3& pB, double radii,
+                              const ActiveSet& set) const {
+  for (const auto& [k, mark] : set)
+    if (neighbours(k, key) && (mark.pointA - pA).norm() < 0.5 * radii &&
+        (mark.pointB - pB).norm() < 0.5 * radii)
+      return true;
   return false;
 }
 
@@ -560,9 +600,12 @@ bool LineContact::updateActiveSet() {
   for (const ContactPoint& c : m_trial) {
     if (c.normalForce >= 0.0) continue;
     const std::pair<int, int> key{c.elementA, c.elementB};
+    const double radii = m_radius[c.elementA] + m_radius[c.elementB];
     for (auto it = m_sticky.begin(); it != m_sticky.end();)
-      it = neighbours(*it, key) ? m_sticky.erase(it) : std::next(it);
-    m_released.insert(key);
+      it = sameContact(it->first, it->second.pointA, it->second.pointB, radii, {{key, {c.pointA, c.pointB}}})
+               ? m_sticky.erase(it)
+               : std::next(it);
+    m_released[key] = ActiveMark{c.pointA, c.pointB};
     changed = true;
   }
   return changed;
@@ -648,7 +691,7 @@ void LineContact::applyImpulse(model::State& state, const ContactPoint& c, doubl
   }
 }
 
-bool LineContact::acceptStep(const model::State& before, const model::State& after) {
+std::string LineContact::stepRejection(const model::State& before, const model::State& after) {
   const auto& elements = m_model->elements();
   for (const CandidatePair& cp : m_candidates) {
     const SegmentProxy& a = m_proxies[cp.first];
@@ -662,18 +705,35 @@ bool LineContact::acceptStep(const model::State& before, const model::State& aft
         geometry::segmentDistance(after.position[ea.node1], after.position[ea.node2],
                                   after.position[eb.node1], after.position[eb.node2]);
     const double radii = a.radius + b.radius;
-    if (d1.distance - radii < -0.5 * radii) return false;  // far too deep: the step was too long
-    const Vec3 n0 = d0.closest0 - d0.closest1;
-    if (d0.distance - radii > 0.0 && n0.norm() > 1e-12) {
-      // Tunnelling: the centrelines crossed (the separation vector reversed) within both segments.
-      if (passedThrough(a.element, b.element, d0, d1)) return false;
-    }
+    const bool tooDeep = d1.distance - radii < -0.5 * radii;  // far too deep: the step was too long
+    // Tunnelling: the centrelines crossed (the separation vector reversed) within both segments, from a
+    // separated state or from one in contact (every committed state is uncrossed: findContacts tells the
+    // side of a pair from its chords at the last committed state).
+    const bool crossed = !tooDeep && d0.distance > 1e-12 && passedThrough(a.element, b.element, d0, d1);
+    if (!tooDeep && !crossed) continue;
+    const model::Line& la = m_model->lines()[ea.line];
+    const model::Line& lb = m_model->lines()[eb.line];
+    const Vec3 where = d1.closest0;
+    return fmt::format(
+        "lines '{}' and '{}' {} at {:.3f} m along '{}' and {:.3f} m along '{}' (x, y, z = {:.3f}, {:.3f}, "
+        "{:.3f} m; "
+        "surface gap {:.4g} m, sum of contact radii {:.4g} m, change of distance {:.3g} m/s). Remedies: a "
+        "larger contact.stiffness "
+        "(now {:.4g} N/m), larger contact diameters, finer elements where they touch, or a smaller "
+        "dynamics.min_time_step",
+        la.name, lb.name,
+        tooDeep ? "overlap by more than half their contact radii" : "pass through each other",
+        arcOf(ea.line, a.element, d1.s), la.name, arcOf(eb.line, b.element, d1.t), lb.name, where.x(),
+        where.y(), where.z(), d1.distance - radii, radii,
+        (d1.distance - d0.distance) / std::max(after.time - before.time, 1e-300),
+        stiffness(ea.line, eb.line));
   }
-  return true;
+  return {};
 }
 
 void LineContact::commitStep(model::State& state, double dt) {
   m_time = state.time;
+  m_reference = state.position;
   commitFriction();
   const bool dynamic = dt > 0.0;
   findContacts(state, dynamic, false, false);
@@ -703,6 +763,8 @@ void LineContact::commitStep(model::State& state, double dt) {
     spot.radii = m_radius[c.elementA] + m_radius[c.elementB];
     spot.minRadius = std::min(m_radius[c.elementA], m_radius[c.elementB]);
     spot.elementLength = std::max(elements[c.elementA].restLength, elements[c.elementB].restLength);
+    spot.elementPairMass = reducedMass(elementMass(c.elementA), elementMass(c.elementB));
+    spot.linePairMass = reducedMass(m_lineMassWithAdded[c.lineA], m_lineMassWithAdded[c.lineB]);
     if (c.track >= 0 && !seen[c.track]) {
       seen[c.track] = true;
       TrackedContact tr = m_tracked[c.track];
@@ -815,6 +877,8 @@ void LineContact::commitStep(model::State& state, double dt) {
     spot.radii = m_radius[smp.elementA] + m_radius[smp.elementB];
     spot.minRadius = std::min(m_radius[smp.elementA], m_radius[smp.elementB]);
     spot.elementLength = std::max(elements[smp.elementA].restLength, elements[smp.elementB].restLength);
+    spot.elementPairMass = reducedMass(elementMass(smp.elementA), elementMass(smp.elementB));
+    spot.linePairMass = reducedMass(m_lineMassWithAdded[smp.lineA], m_lineMassWithAdded[smp.lineB]);
     spots.push_back(spot);
   }
   m_eventTracker.update(state.time, dt, dynamic, spots,

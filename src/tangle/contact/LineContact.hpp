@@ -138,7 +138,7 @@ class LineContact final : public solver::LoadContributor {
   std::string rejectState(const model::State& state) override;
   void commitStatic(const model::State& state) override;
   void beginStatic(const model::State& state) override {
-    m_staticReference = state.position;
+    m_reference = state.position;
     m_pendingAnchors.clear();
   }
 
@@ -174,7 +174,12 @@ class LineContact final : public solver::LoadContributor {
   /// True unless the step from `before` to `after` let a pair pass through each other (the normal of a
   /// pair flipped while its closest points stayed inside both segments) or penetrate deeper than half
   /// the contact radii: then the step must be cut.
-  bool acceptStep(const model::State& before, const model::State& after);
+  bool acceptStep(const model::State& before, const model::State& after) {
+    return stepRejection(before, after).empty();
+  }
+  /// Empty when acceptStep() holds, otherwise the reason: which two lines, where (arc lengths and
+  /// position), how deep, and what the user can change.
+  std::string stepRejection(const model::State& before, const model::State& after);
   /// Commits the contacts of the accepted state `state` reached with step dt: updates impulses, Eq. 5
   /// effective masses, events. Call after every accepted step (and once after the static solve with dt = 0).
   /// With the impulse model, new impacts change the velocities of `state` (momentum-conserving jump).
@@ -208,9 +213,24 @@ class LineContact final : public solver::LoadContributor {
   std::vector<CandidatePair> pairsWithin(const model::State& state, double margin);
   void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;
   double lumpedMass(int element, double w) const;
+  /// Structural mass of an element [kg] (+inf when both its nodes are held).
+  double elementMass(int element) const;
   /// Element pairs (A, B) that are the same or adjacent along both lines.
   bool neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const;
-  bool inNeighbourhood(const std::pair<int, int>& key, const std::set<std::pair<int, int>>& set) const;
+  /// Where a contact of the active set (or a released one) was: its closest points on both lines [m].
+  struct ActiveMark {
+    Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();
+  };
+  using ActiveSet = std::map<std::pair<int, int>, ActiveMark>;
+  /// Whether an element pair of `set` is a neighbour of `key` along both lines.
+  bool inNeighbourhood(const std::pair<int, int>& key, const ActiveSet& set) const;
+  /// Whether `set` holds the same physical contact as the point pA, pB of element pair `key`: a neighbour
+  /// along both lines (the point slides from pair to pair across nodes) whose points are within half the
+  /// radii sum `radii` [m] on both lines. Two distinct minima on neighbouring pairs (the two legs of a
+  /// cable folded over a wire) are different contacts: releasing one that pulls must not release the
+  /// other, nor make the other pull.
+  bool sameContact(const std::pair<int, int>& key, const Vec3& pA, const Vec3& pB, double radii,
+                   const ActiveSet& set) const;
   double nodeTransverseMass(int node) const;
   /// A per-DOF field (velocity [m/s], acceleration [m/s^2]) at parameter w of an element (linear).
   Vec3 pointValue(const VecX& field, int element, double w) const;
@@ -245,9 +265,10 @@ class LineContact final : public solver::LoadContributor {
   double m_zeta;
   std::vector<bool> m_lineEnabled;
   std::vector<std::vector<bool>> m_allowed;
-  std::vector<double> m_lineStiffness;  // automatic stiffness per line [N/m]
-  std::vector<double> m_radius;         // contact radius per element [m]
-  double m_maxRadius = 0.0;             // largest of m_radius [m]
+  std::vector<double> m_lineStiffness;      // automatic stiffness per line [N/m]
+  std::vector<double> m_lineMassWithAdded;  // structural + attachment + normal added mass per line [kg]
+  std::vector<double> m_radius;             // contact radius per element [m]
+  double m_maxRadius = 0.0;                 // largest of m_radius [m]
   BroadPhase m_broadPhase;
   std::vector<SegmentProxy> m_proxies;
   std::vector<CandidatePair> m_candidates;
@@ -258,8 +279,8 @@ class LineContact final : public solver::LoadContributor {
   double m_candidateTime = std::numeric_limits<double>::quiet_NaN();
   double m_margin = 0.0;
   std::vector<ContactPoint> m_trial;
-  std::set<std::pair<int, int>> m_sticky;    // element pairs active in this step's iterations
-  std::set<std::pair<int, int>> m_released;  // element pairs released in this step (they pulled)
+  ActiveSet m_sticky;    // element pairs active in this step's iterations
+  ActiveSet m_released;  // element pairs released in this step (they pulled)
   int m_releaseRounds = 0;
   std::vector<TrackedContact> m_tracked;
   ContactEventTracker m_eventTracker;
@@ -271,9 +292,11 @@ class LineContact final : public solver::LoadContributor {
   std::map<std::pair<int, int>, FrictionAnchor>
       m_pendingAnchors;  // anchors of patches new in this step / solve
   std::map<std::pair<int, int>, std::vector<std::array<double, 4>>>
-      m_zones;                          // (lineA, lineB) -> zones on A [from, to] and B [from, to]
-  std::vector<Vec3> m_staticReference;  // positions at the last committed static state
-  bool m_debug = false;                 // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
+      m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
+  /// Positions at the last committed state (statics: its start or last converged increment; dynamics: the
+  /// last accepted step). Contact normals point to the side the lines were on there (findContacts).
+  std::vector<Vec3> m_reference;
+  bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
 };
 
 }  // namespace tangle::contact

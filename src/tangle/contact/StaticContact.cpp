@@ -78,13 +78,13 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
 }
 
 std::string LineContact::rejectState(const model::State& state) {
-  if (m_staticReference.empty()) m_staticReference = m_model->initialState().position;
+  if (m_reference.empty()) m_reference = m_model->initialState().position;
   const auto& elements = m_model->elements();
   // Pairs within reach of each other now or at the reference state: the radii plus the largest move
   // of a node since the reference (a line that passed right through another is no longer near it).
   double largestMove = 0.0;
   for (int n = 0; n < m_model->nodeCount(); ++n)
-    largestMove = std::max(largestMove, (state.position[n] - m_staticReference[n]).norm());
+    largestMove = std::max(largestMove, (state.position[n] - m_reference[n]).norm());
   const std::vector<CandidatePair> pairs = pairsWithin(state, m_maxRadius + largestMove);
   m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
   for (const CandidatePair& cp : pairs) {
@@ -101,7 +101,7 @@ std::string LineContact::rejectState(const model::State& state) {
       return fmt::format("{} overlap by {:.3f} m, more than half the sum of their radii ({:.3f} m)", where,
                          radii - d.distance, radii);
     const geometry::SegmentDistanceResult r = geometry::segmentDistance(
-        m_staticReference[ea.node1], m_staticReference[ea.node2], m_staticReference[eb.node1], m_staticReference[eb.node2]);
+        m_reference[ea.node1], m_reference[ea.node2], m_reference[eb.node1], m_reference[eb.node2]);
     if (r.distance > 0.5 * radii && r.distance < radii + largestMove && passedThrough(a.element, b.element, r, d))
       return fmt::format("{} have passed through each other", where);
   }
@@ -109,7 +109,7 @@ std::string LineContact::rejectState(const model::State& state) {
 }
 
 void LineContact::commitStatic(const model::State& state) {
-  m_staticReference = state.position;
+  m_reference = state.position;
   commitFriction();
 }
 

@@ -242,8 +242,13 @@ void Hdf5Results::writeContactEvents(const std::vector<contact::ContactEvent>& e
   m_file->writeArray(g + "/position", where, {n, 3}, "m", "where it began (on line 1)");
   column("impact_velocity", "m/s", "relative normal approach speed at first contact",
          [](const auto& e) { return e.impactVelocity; });
-  column("impact_energy", "J", "1/2 m v^2 with the energy mass",
+  column("impact_energy", "J", "1/2 m v^2 with the energy mass (Eq. 5 over the impact phase)",
          [](const auto& e) { return e.impactEnergy; });
+  column("energy_mass", "kg", "mass of the impact energy", [](const auto& e) { return e.energyMass; });
+  column("absorbed_energy", "J", "work of the contact force against the approach over the impact phase",
+         [](const auto& e) { return e.phaseWork; });
+  column("energy_warning", "-", "1: the two energy estimates or the mass bounds disagree",
+         [](const auto& e) { return e.energyWarning.empty() ? 0.0 : 1.0; });
   column("peak_force", "N", "largest total contact force", [](const auto& e) { return e.peakForce; });
   column("peak_force_per_length", "N/m", "largest contact force per unit length",
          [](const auto& e) { return e.peakForcePerLength; });

@@ -116,10 +116,12 @@ py::list PySimulation::profiles() {
 }
 
 py::dict PySimulation::dynamics(const py::object& progress) {
-  if (!m_staticsConverged) throw std::runtime_error("run the statics first (the dynamics start from the static equilibrium)");
+  if (!m_staticsConverged)
+    throw std::runtime_error("run the statics first (the dynamics start from the static equilibrium)");
   const model::Model& m = m_sim->model();
   if (!m.spec().dynamics.enabled)
-    throw std::runtime_error("the model has no dynamics block (set dynamics.duration and dynamics.time_step)");
+    throw std::runtime_error(
+        "the model has no dynamics block (set dynamics.duration and dynamics.time_step)");
   const std::size_t lineCount = m.lines().size();
   std::vector<LineHistory> hist(lineCount);
   for (std::size_t l = 0; l < lineCount; ++l) {
@@ -165,8 +167,9 @@ py::dict PySimulation::dynamics(const py::object& progress) {
       for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
         // As dynamics/vessels.csv: reference point, and rotation from the initial attitude [deg].
         const int node = m.vesselNode(v);
-        const Vec3 r = geometry::logMap(s.triad[static_cast<std::size_t>(node)] * m.vesselRotation(v).transpose()) *
-                       180.0 / kPi;
+        const Vec3 r =
+            geometry::logMap(s.triad[static_cast<std::size_t>(node)] * m.vesselRotation(v).transpose()) *
+            180.0 / kPi;
         const Vec3& p = s.position[static_cast<std::size_t>(node)];
         vesselMotion.insert(vesselMotion.end(), {p.x(), p.y(), p.z(), r.x(), r.y(), r.z()});
       }
@@ -271,7 +274,8 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     std::vector<double> motion;
     const std::size_t stride = 6 * m.vessels().size();
     for (std::size_t t = 0; t < times.size(); ++t)
-      for (std::size_t k = 0; k < 6; ++k) motion.push_back(vesselMotion[t * stride + 6 * static_cast<std::size_t>(v) + k]);
+      for (std::size_t k = 0; k < 6; ++k)
+        motion.push_back(vesselMotion[t * stride + 6 * static_cast<std::size_t>(v) + k]);
     py::dict d;
     d["name"] = m.vessels()[static_cast<std::size_t>(v)].name;
     d["motion"] = array(motion, {nt, 6});
@@ -300,6 +304,17 @@ py::dict PySimulation::dynamics(const py::object& progress) {
       d["max_penetration_m"] = e.maxPenetration;
       d["effective_mass_1_kg"] = e.effectiveMassA;
       d["effective_mass_2_kg"] = e.effectiveMassB;
+      d["energy_mass_kg"] = e.energyMass;
+      d["energy_mass_basis"] = e.energyMassBasis;
+      d["absorbed_energy_J"] = e.phaseWork;
+      d["eq5_mass_kg"] = e.eq5Mass;
+      d["work_mass_kg"] = e.workMass;
+      d["event_eq5_mass_kg"] = e.eventEq5Mass;
+      d["impact_phase_end_s"] = e.phaseEndTime;
+      d["impact_phase_end"] = e.phaseEnd;
+      d["mass_lower_bound_kg"] = e.massLowerBound;
+      d["mass_upper_bound_kg"] = e.massUpperBound;
+      d["energy_warning"] = e.energyWarning;
       d["impact"] = e.impact;
       d["sustained"] = e.sustained;
       d["open"] = e.open;

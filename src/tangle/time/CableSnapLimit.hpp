@@ -25,8 +25,11 @@
 namespace tangle::time {
 
 /// Largest step [s] for which no bar element of `model` with a strain below `maxStrainStep` [-] is
-/// predicted to stretch by more than `maxStrainStep` beyond max(its strain now, 0); +infinity when none is.
+/// predicted to stretch by more than `maxStrainStep` beyond max(its strain now, 0), and no taut bar
+/// predicted to go slack within `horizon` [s] crosses its kink from a strain above `maxStrainStep` or
+/// overshoots it by more than `maxStrainStep` (the unloading half of a snap); +infinity when none is.
 /// The strain rate of a bar is e . (v2 - v1) / L0 with e the unit chord [1/s].
-double cableSnapStepLimit(const model::Model& model, const model::State& state, double maxStrainStep);
+double cableSnapStepLimit(const model::Model& model, const model::State& state, double maxStrainStep,
+                          double horizon);
 
 }  // namespace tangle::time

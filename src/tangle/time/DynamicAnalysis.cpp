@@ -1,15 +1,15 @@
 #include "tangle/time/DynamicAnalysis.hpp"
 
-#include "tangle/time/CableSnapLimit.hpp"
-
-#include "tangle/core/Interrupt.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fmt/format.h>
 #include <iostream>
 #include <limits>
+
+#include "tangle/core/Interrupt.hpp"
+#include "tangle/time/CableSnapLimit.hpp"
 
 namespace tangle::time {
 
@@ -29,8 +29,8 @@ std::vector<PrescribedNode> prescribedNodes(const model::Model& model) {
   return out;
 }
 
-double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after, double h,
-                          double betaError) {
+double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after,
+                          double h, double betaError) {
   // Zienkiewicz & Xie (1991), Earthquake Eng. Struct. Dyn. 20:871: the Newmark-family displacement update
   // matches a cubic Taylor expansion except for e = (beta - 1/6) h^2 (a_{n+1} - a_n); the relative error is
   // |e| / |u_{n+1} - u_n| over the translational DOFs of every node (2-norms).
@@ -40,7 +40,8 @@ double localErrorEstimate(const model::Model& model, const model::State& before,
     const int d = dofs.firstDof(n);
     const Vec3 da = after.acceleration.segment<3>(d) - before.acceleration.segment<3>(d);
     error2 += da.squaredNorm();
-    increment2 += (after.position[static_cast<std::size_t>(n)] - before.position[static_cast<std::size_t>(n)]).squaredNorm();
+    increment2 += (after.position[static_cast<std::size_t>(n)] - before.position[static_cast<std::size_t>(n)])
+                      .squaredNorm();
   }
   const double error = betaError * h * h * std::sqrt(error2);
   // A model at rest moves by round-off: 1 nm per node is "no motion", not a step to refine.
@@ -75,7 +76,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   // maxStep; otherwise fixed steps of `nominal`, cut on failure and regrown twofold after 4 successes.
   const double tolerance = m_settings.errorTolerance;
   const bool errorControl = tolerance > 0.0;
-  const double maxStep = errorControl ? (m_settings.maxTimeStep > 0.0 ? m_settings.maxTimeStep : out) : nominal;
+  const double maxStep =
+      errorControl ? (m_settings.maxTimeStep > 0.0 ? m_settings.maxTimeStep : out) : nominal;
   const double betaError = std::abs(stepper.parameters().beta - 1.0 / 6.0);
   double dt = nominal;
   int successes = 0;
@@ -91,7 +93,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     }
     double h = std::min({dt, duration - state.time, 2.0 * lastStep});
     if (m_limiter) h = std::min(h, std::max(m_settings.minTimeStep, m_limiter(state)));
-    h = std::min(h, std::max(m_settings.minTimeStep, cableSnapStepLimit(model, state, m_settings.maxCableStrainStep)));
+    h = std::min(h, std::max(m_settings.minTimeStep,
+                             cableSnapStepLimit(model, state, m_settings.maxCableStrainStep, h)));
     // Land exactly on output times.
     if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
     if (h <= eps) h = std::min(dt, duration - state.time);
@@ -103,7 +106,9 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     result.blocksLeft += o.blocksLeft;
     result.matrixRefreshes += o.refreshes;
     bool rejected = false;
-    if (o.converged && m_validator && !m_validator(before, state)) {
+    std::string rejection;
+    if (o.converged && m_validator) rejection = m_validator(before, state);
+    if (!rejection.empty()) {
       // Converged but not acceptable (e.g. lines passed through each other): undo and cut.
       stepper.restore(before);
       state = before;
@@ -117,12 +122,14 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       if (dt < m_settings.minTimeStep) {
         const std::string where = model.describeNode(o.worstNode);
         result.message =
-            rejected ? fmt::format("dynamic analysis stopped at t = {:.6g} s: lines pass through each other even "
-                                   "with the minimum time step {:.3g} s",
-                                   state.time, m_settings.minTimeStep)
-                     : fmt::format("dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the "
-                                   "minimum time step {:.3g} s; largest out-of-balance force {:.4g} N at {}",
-                                   state.time, m_settings.minTimeStep, o.residual, where);
+            rejected ? fmt::format(
+                           "dynamic analysis stopped at t = {:.6g} s: the step is refused even with the "
+                           "minimum time step {:.3g} s: {}",
+                           state.time, m_settings.minTimeStep, rejection)
+                     : fmt::format(
+                           "dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the "
+                           "minimum time step {:.3g} s; largest out-of-balance force {:.4g} N at {}",
+                           state.time, m_settings.minTimeStep, o.residual, where);
         break;
       }
       continue;
@@ -139,7 +146,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
         continue;
       }
       // A step shortened to land on an output time says little about the step the error allows.
-      if (!(clippedForOutput && eta <= tolerance)) dt = std::clamp(h * factor, m_settings.minTimeStep, maxStep);
+      if (!(clippedForOutput && eta <= tolerance))
+        dt = std::clamp(h * factor, m_settings.minTimeStep, maxStep);
     }
     ++result.steps;
     lastStep = errorControl && clippedForOutput ? std::max(h, lastStep) : h;
@@ -160,8 +168,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       const auto now = Clock::now();
       if (std::chrono::duration<double>(now - lastPrint).count() > 2.0) {
         const double wall = std::chrono::duration<double>(now - wallStart).count();
-        std::cerr << fmt::format("  t = {:8.2f} / {:.2f} s ({:3.0f} %), real-time factor {:.1f}\n", state.time,
-                                 duration, 100.0 * state.time / duration, state.time / wall);
+        std::cerr << fmt::format("  t = {:8.2f} / {:.2f} s ({:3.0f} %), real-time factor {:.1f}\n",
+                                 state.time, duration, 100.0 * state.time / duration, state.time / wall);
         lastPrint = now;
       }
     }
@@ -171,7 +179,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
   if (result.completed) {
     result.message = fmt::format(
-        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}), {:.2f} s wall time, real-time "
+        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}), {:.2f} s wall time, "
+        "real-time "
         "factor {:.1f}",
         result.endTime, result.steps, result.cutbacks,
         errorControl ? fmt::format(", {} redone for accuracy, mean step {:.4g} s", result.errorRejections,

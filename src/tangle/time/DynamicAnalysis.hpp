@@ -16,24 +16,24 @@ namespace tangle::time {
 
 /// Outcome of a dynamic run.
 struct DynamicResult {
-  bool completed = false;  ///< reached the requested duration
-  double endTime = 0.0;    ///< last time reached [s]
-  int steps = 0;           ///< accepted steps
-  int cutbacks = 0;        ///< step cuts after Newton failures
-  int errorRejections = 0; ///< steps redone because the local error estimate exceeded the tolerance
+  bool completed = false;   ///< reached the requested duration
+  double endTime = 0.0;     ///< last time reached [s]
+  int steps = 0;            ///< accepted steps
+  int cutbacks = 0;         ///< step cuts after Newton failures
+  int errorRejections = 0;  ///< steps redone because the local error estimate exceeded the tolerance
   long newtonIterations = 0;
-  long partIterations = 0;    ///< Newton iterations evaluated on a part of the model (theory manual 8.2)
-  long blocksLeft = 0;        ///< converged independent blocks left out of a Newton correction (8.2)
-  long matrixRefreshes = 0;   ///< iteration matrices assembled and factorised (modified Newton, 8.2)
-  double wallSeconds = 0.0;   ///< wall-clock time of the run [s]
-  std::string message;        ///< summary or the reason the run stopped (time, line, node)
-  bool interrupted = false;   ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)
+  long partIterations = 0;   ///< Newton iterations evaluated on a part of the model (theory manual 8.2)
+  long blocksLeft = 0;       ///< converged independent blocks left out of a Newton correction (8.2)
+  long matrixRefreshes = 0;  ///< iteration matrices assembled and factorised (modified Newton, 8.2)
+  double wallSeconds = 0.0;  ///< wall-clock time of the run [s]
+  std::string message;       ///< summary or the reason the run stopped (time, line, node)
+  bool interrupted = false;  ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)
 };
 
 /// Local error estimate of a generalized-alpha step [-]: |(beta - 1/6) h^2 (a_{n+1} - a_n)| / |u_{n+1} - u_n|
 /// over the translational DOFs (Zienkiewicz & Xie 1991). `betaError` = |beta - 1/6|, h the step [s].
-double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after, double h,
-                          double betaError);
+double localErrorEstimate(const model::Model& model, const model::State& before, const model::State& after,
+                          double h, double betaError);
 
 /// Drives the time integration.
 class DynamicAnalysis {
@@ -49,9 +49,10 @@ class DynamicAnalysis {
   /// Called after each accepted step (path-dependent models commit their state here; an impact model
   /// may change the velocities).
   using StepHook = std::function<void(model::State&, double dt)>;
-  /// Returns false when a converged step must still be rejected (e.g. two lines passed through each
-  /// other); the step is then cut like a Newton failure.
-  using StepValidator = std::function<bool(const model::State& before, const model::State& after)>;
+  /// Returns an empty string when a converged step is acceptable, otherwise why it must still be
+  /// rejected (e.g. which two lines passed through each other, and where); the step is then cut like a
+  /// Newton failure, and the reason is in the message if the step cannot be cut further.
+  using StepValidator = std::function<std::string(const model::State& before, const model::State& after)>;
   /// Returns true when the caller wants the run to stop before the next step (as Ctrl-C does, but for this
   /// run only: the Python module stops one run when its progress callback raises or Ctrl-C reaches Python).
   using StopRequest = std::function<bool()>;

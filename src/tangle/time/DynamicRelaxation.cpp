@@ -69,7 +69,7 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
     const double h = std::min(dt, duration - state.time);
     if (m_validator) before = state;
     const StepOutcome o = stepper.step(state, h);
-    const bool invalid = o.converged && m_validator && !m_validator(before, state);
+    const bool invalid = o.converged && m_validator && !m_validator(before, state).empty();
     if (invalid) state = before;  // a converged step that the validator refuses: back to its start
     if (!o.converged || invalid) {
       dt *= 0.25;

@@ -50,7 +50,7 @@ class DynamicRelaxation {
   /// Mass-proportional damping used [1/s].
   double damping() const { return m_settings.rayleighAlpha; }
 
-  /// A step is accepted only if `validator(before, after)` is true (otherwise it is cut four-fold), e.g.
+  /// A step is accepted only if `validator(before, after)` returns no reason (otherwise it is cut four-fold), e.g.
   /// the line contact's check that no two lines passed through each other (LineContact::acceptStep).
   void setStepValidator(DynamicAnalysis::StepValidator validator) { m_validator = std::move(validator); }
 
