@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <numbers>
 
 #include "tangle/core/Error.hpp"
@@ -28,6 +30,36 @@ Simulation::Simulation(model::ModelSpec spec)
     m_contact = std::make_unique<contact::LineContact>(*m_model, m_model->spec().contact,
                                                        m_model->spec().dynamics.timeStep);
     m_assembler->addContributor(m_contact.get());
+    checkStartShapes();
+  }
+}
+
+void Simulation::checkStartShapes() const {
+  // A start shape given by the user (lines[].start_shape) must not pass through another line: the static
+  // solve would push the lines apart from the wrong side, or hold them crossed. A catenary start shape
+  // is the program's, and statics separates it (theory 7.4).
+  const auto& lines = m_model->lines();
+  const auto smallestRadius = [&](const model::Line& line) {
+    double r = std::numeric_limits<double>::infinity();
+    for (const model::SectionSpec& sec : line.spec->sections)
+      r = std::min(r, 0.5 * m_model->spec().lineTypes.at(sec.lineType).contactDiameter);
+    return r;
+  };
+  for (const auto& [a, b] : m_contact->allowedPairs()) {
+    if (a == b || (lines[a].spec->startShape.empty() && lines[b].spec->startShape.empty())) continue;
+    const std::array<double, 3> c = m_contact->clearance(m_state, a, b);
+    const double allowed = 0.5 * (smallestRadius(lines[a]) + smallestRadius(lines[b]));
+    if (!(c[0] < -allowed)) continue;
+    const model::Line& shaped = lines[a].spec->startShape.empty() ? lines[b] : lines[a];
+    throw InputError(
+        m_model->spec().sourceFile, 0, "lines[" + shaped.name + "].start_shape",
+        fmt::format(
+            "a start shape that keeps clear of the other lines; line '{}' passes through line '{}' at "
+            "{:.2f} m along '{}' and {:.2f} m along '{}' (the surfaces overlap by {:.3g} m): move the "
+            "start_shape points to the side of '{}' the line should rest on, at least the sum of the "
+            "contact radii from its axis",
+            lines[a].name, lines[b].name, c[1], lines[a].name, c[2], lines[b].name, -c[0],
+            shaped.name == lines[a].name ? lines[b].name : lines[a].name));
   }
 }
 

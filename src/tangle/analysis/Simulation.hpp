@@ -54,6 +54,8 @@ class Simulation {
                                   const time::DynamicAnalysis::StopRequest& stop = {});
 
  private:
+  /// Refuses a user start shape (lines[].start_shape) that passes through another line (InputError).
+  void checkStartShapes() const;
   /// The dynamic-relaxation fallback of solveStatics: on success replaces `result` and m_state.
   bool relaxThenSolve(solver::StaticResult& result);
   /// The first fallback of solveStatics in a current: solves again from `start` with the drag's follower

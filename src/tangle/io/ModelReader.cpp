@@ -786,8 +786,42 @@ model::AttachmentSpec readAttachment(const Value& v, double lineLength) {
   return a;
 }
 
+/// `lines[].start_shape`: intermediate points [x, y, z], or maps {position, arc_length} (all with an arc
+/// length or none), from end A to end B.
+std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength, double waterDepth) {
+  std::vector<model::StartPoint> points;
+  int withArc = 0;
+  for (const Value& item : v.items(1)) {
+    model::StartPoint p;
+    if (item.isSequence()) {
+      p.position = item.position();
+    } else {
+      const Map m(item, {"position", "arc_length"});
+      p.position = m.get("position", "a list of 3 numbers [x, y, z] in m").position();
+      if (const std::optional<Value> arc = m.find("arc_length")) {
+        p.arcLength =
+            arc->number(Range{0.0, lineLength, true, true, "from end A, strictly between the line's ends"});
+        if (!points.empty() && std::isfinite(points.back().arcLength) &&
+            p.arcLength <= points.back().arcLength)
+          arc->fail(fmt::format("arc lengths must increase from end A to end B; the point before is at {} m",
+                                numberText(points.back().arcLength)));
+        ++withArc;
+      }
+    }
+    if (p.position.z() < -waterDepth - kSeabedTolerance)
+      item.fail(fmt::format("the point is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth)",
+                            numberText(p.position.z()), numberText(-waterDepth)));
+    points.push_back(p);
+  }
+  if (withArc != 0 && withArc != static_cast<int>(points.size()))
+    v.fail(fmt::format("{} of the {} points have an arc_length: give it for all of them or for none (then the "
+                       "points share the line's length in proportion to the distances between them)",
+                       withArc, points.size()));
+  return points;
+}
+
 model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& names) {
-  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments"});
+  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments", "start_shape"});
   model::LineSpec line;
   line.name = names.add(m);
   line.contact = m.boolean("contact", line.contact);
@@ -802,18 +836,27 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
 
   if (const std::optional<Value> attachments = m.find("attachments"))
     for (const Value& item : attachments->items(0)) line.attachments.push_back(readAttachment(item, length));
+  if (const std::optional<Value> shape = m.find("start_shape")) line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
 
   // Ends clearly too far apart for the line's length (vessel ends are in vessel axes: not checked here).
   using model::EndKind;
   if (line.endA.kind != EndKind::Vessel && line.endB.kind != EndKind::Vessel) {
-    const double span = (line.endB.position - line.endA.position).norm();
+    double span = (line.endB.position - line.endA.position).norm();
+    if (!line.startShape.empty()) {
+      // Through the start shape's points: the path the line must stretch along.
+      span = (line.startShape.front().position - line.endA.position).norm() +
+             (line.endB.position - line.startShape.back().position).norm();
+      for (std::size_t i = 1; i < line.startShape.size(); ++i)
+        span += (line.startShape[i].position - line.startShape[i - 1].position).norm();
+    }
     if (span > kMaxEndSpanOverLength * length)
       v.fail(fmt::format(
-          "line '{}': its ends are {} m apart but its unstretched length is only {} m (sum of the "
-          "sections); at most {} x the length ({} m) is accepted: check the end positions and "
-          "section lengths",
-          line.name, roundedText(span), roundedText(length), kMaxEndSpanOverLength,
-          roundedText(kMaxEndSpanOverLength * length)));
+          "line '{}': its ends are {} m apart{} but its unstretched length is only {} m (sum of the "
+          "sections); at most {} x the length ({} m) is accepted: check the end positions{} and section "
+          "lengths",
+          line.name, roundedText(span), line.startShape.empty() ? "" : " along its start_shape points",
+          roundedText(length), kMaxEndSpanOverLength, roundedText(kMaxEndSpanOverLength * length),
+          line.startShape.empty() ? "" : ", the start shape"));
   }
   return line;
 }

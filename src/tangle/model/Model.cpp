@@ -1,13 +1,13 @@
 #include "tangle/model/Model.hpp"
 
-#include "tangle/seabed/FlatSeabed.hpp"
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "tangle/core/Error.hpp"
 #include "tangle/geometry/Rotation.hpp"
+#include "tangle/seabed/FlatSeabed.hpp"
 #include "tangle/solver/ElasticCatenary.hpp"
 
 namespace tangle::model {
@@ -72,7 +72,8 @@ std::string Model::describeNode(int node) const {
     return "unknown node";
   }
   const int local = node - m_lines[line].firstNode;
-  return fmt::format("line '{}' node {} (arc length {:.2f} m)", m_lines[line].name, local, m_lines[line].arcLength[local]);
+  return fmt::format("line '{}' node {} (arc length {:.2f} m)", m_lines[line].name, local,
+                     m_lines[line].arcLength[local]);
 }
 
 void Model::buildLine(int lineIndex) {
@@ -99,8 +100,9 @@ void Model::buildLine(int lineIndex) {
       el.type = &type;
       el.restLength = le;
       if (type.isBeam()) {
-        el.beam.emplace(element::BeamProperties{type.axialStiffness, type.bendingStiffness, torsionalStiffnessOf(type)},
-                        le);
+        el.beam.emplace(
+            element::BeamProperties{type.axialStiffness, type.bendingStiffness, torsionalStiffnessOf(type)},
+            le);
       } else {
         el.bar.emplace(type.axialStiffness, le);
       }
@@ -162,8 +164,9 @@ void Model::buildLine(int lineIndex) {
   if (m_dofs.hasRotations(nodeA) && ls.endA.kind != EndKind::Fixed && ls.endB.kind != EndKind::Fixed &&
       ls.endA.kind != EndKind::Vessel && ls.endB.kind != EndKind::Vessel) {
     const int lockNode = heldInTranslation(ls.endA.kind) ? nodeA
-                         : heldInTranslation(ls.endB.kind) && m_dofs.hasRotations(line.lastNode()) ? line.lastNode()
-                                                                                                    : -1;
+                         : heldInTranslation(ls.endB.kind) && m_dofs.hasRotations(line.lastNode())
+                             ? line.lastNode()
+                             : -1;
     if (lockNode >= 0) {
       const Vec3 chord = (endPosition(ls.endB) - endPosition(ls.endA)).cwiseAbs();
       int axis = 0;
@@ -191,7 +194,8 @@ void Model::constrainEnd(int node, const EndSpec& end) {
     case EndKind::Vessel: {
       const int v = vesselIndex(end.vessel);
       if (v < 0)
-        throw InputError(m_spec->sourceFile, end.sourceLine, "end.vessel", "unknown vessel '" + end.vessel + "'");
+        throw InputError(m_spec->sourceFile, end.sourceLine, "end.vessel",
+                         "unknown vessel '" + end.vessel + "'");
       // On a fixed or prescribed vessel the end follows the vessel's point: held (prescribed). On a free
       // vessel it is tied to the vessel node by the vessel contributor's link.
       if (m_spec->vessels[v].mode != VesselMode::Free) {
@@ -201,6 +205,36 @@ void Model::constrainEnd(int node, const EndSpec& end) {
       break;
     }
   }
+}
+
+std::vector<Vec3> Model::startShapePositions(const Line& line, const Vec3& endA, const Vec3& endB) const {
+  // The polyline end A -> points -> end B, parametrised by unstretched arc length: at the points' own
+  // arc lengths where given, otherwise in proportion to the chords (scaled to the line's length). Each node
+  // sits at its arc length along it, linearly between the control points.
+  const std::vector<StartPoint>& shape = line.spec->startShape;
+  std::vector<Vec3> control{endA};
+  for (const StartPoint& p : shape) control.push_back(p.position);
+  control.push_back(endB);
+  std::vector<double> arc(control.size(), 0.0);
+  if (std::isfinite(shape.front().arcLength)) {
+    for (std::size_t k = 0; k < shape.size(); ++k) arc[k + 1] = shape[k].arcLength;
+  } else {
+    for (std::size_t k = 1; k < control.size(); ++k)
+      arc[k] = arc[k - 1] + (control[k] - control[k - 1]).norm();
+    const double total = arc.back();
+    for (double& a : arc) a = total > 0.0 ? a * line.length / total : 0.0;
+  }
+  arc.back() = line.length;
+  std::vector<Vec3> pts(static_cast<std::size_t>(line.nodeCount));
+  std::size_t k = 0;
+  for (int i = 0; i < line.nodeCount; ++i) {
+    const double a = line.arcLength[static_cast<std::size_t>(i)];
+    while (k + 2 < control.size() && a > arc[k + 1]) ++k;
+    const double span = arc[k + 1] - arc[k];
+    const double f = span > 0.0 ? std::clamp((a - arc[k]) / span, 0.0, 1.0) : 0.0;
+    pts[static_cast<std::size_t>(i)] = (1.0 - f) * control[k] + f * control[k + 1];
+  }
+  return pts;
 }
 
 State Model::initialState() const {
@@ -230,7 +264,9 @@ State Model::initialState() const {
     double totalWeight = 0.0;
     for (const auto& sec : sections) totalWeight += sec.weight * sec.length;
     std::vector<Vec3> pts;
-    if (totalWeight < 0.0 && endA.z() < 0.0 && endB.z() < 0.0) {
+    if (!line.spec->startShape.empty()) {
+      pts = startShapePositions(line, endA, endB);
+    } else if (totalWeight < 0.0 && endA.z() < 0.0 && endB.z() < 0.0) {
       // A buoyant line floats up into an inverted catenary: the hanging catenary of the mirrored problem
       // (z -> -z, weight -> -weight, no seabed), mirrored back. A straight start would be a compressed,
       // unstable equilibrium of a cable.
@@ -238,13 +274,21 @@ State Model::initialState() const {
       for (auto& sec : mirrored) sec.weight = -sec.weight;
       const Vec3 flip(1.0, 1.0, -1.0);
       const double noSeabed = 1e3 * std::max(1.0, std::abs(endA.z()) + std::abs(endB.z()) + line.length);
-      pts = solver::initialLineShape(endA.cwiseProduct(flip), endB.cwiseProduct(flip), mirrored, noSeabed, line.arcLength)
+      pts = solver::initialLineShape(endA.cwiseProduct(flip), endB.cwiseProduct(flip), mirrored, noSeabed,
+                                     line.arcLength)
                 .positions;
       for (Vec3& p : pts) p = p.cwiseProduct(flip);
     } else {
       pts = solver::initialLineShape(endA, endB, sections, shapeDepth, line.arcLength).positions;
     }
     for (int i = 0; i < line.nodeCount; ++i) s.position[line.firstNode + i] = pts[i];
+    // A start shape laid on the seabed rests one contact radius above it (as an end does); below that, it
+    // is lifted there.
+    if (!line.spec->startShape.empty()) {
+      shapeDepth = env.waterDepth - radius;
+      for (int i = 1; i + 1 < line.nodeCount; ++i)
+        s.position[line.firstNode + i].z() = std::max(s.position[line.firstNode + i].z(), -shapeDepth);
+    }
     // Grounded nodes start at their static penetration w / k into the seabed, so the seabed springs are
     // active in the first Newton tangent (otherwise a grounded stretch has no vertical stiffness).
     for (int i = 1; i + 1 < line.nodeCount; ++i) {

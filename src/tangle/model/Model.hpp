@@ -18,32 +18,32 @@ namespace tangle::model {
 
 /// One element of a line: a bar (cable sections) or a co-rotational beam.
 struct LineElement {
-  int line = 0;        ///< index of the line
-  int node1 = 0;       ///< global node index at the end-A side
-  int node2 = 0;       ///< global node index at the end-B side
-  const section::LineType* type = nullptr;  ///< section properties (owned by the ModelSpec)
-  double restLength = 0.0;                  ///< unstretched length [m]
-  std::optional<element::Bar> bar;          ///< set for cable elements
+  int line = 0;                                   ///< index of the line
+  int node1 = 0;                                  ///< global node index at the end-A side
+  int node2 = 0;                                  ///< global node index at the end-B side
+  const section::LineType* type = nullptr;        ///< section properties (owned by the ModelSpec)
+  double restLength = 0.0;                        ///< unstretched length [m]
+  std::optional<element::Bar> bar;                ///< set for cable elements
   std::optional<element::CorotationalBeam> beam;  ///< set for beam elements
   bool isBeam() const { return beam.has_value(); }
 };
 
 /// A point mass / buoy at a node.
 struct NodeAttachment {
-  int node = 0;            ///< global node index
-  AttachmentSpec spec;     ///< mass, volume, drag, added mass
+  int node = 0;         ///< global node index
+  AttachmentSpec spec;  ///< mass, volume, drag, added mass
 };
 
 /// A line's mesh: a contiguous range of nodes and elements.
 struct Line {
   std::string name;
   const LineSpec* spec = nullptr;
-  int firstNode = 0;                 ///< global index of the node at end A
-  int nodeCount = 0;                 ///< nodes = elements + 1
-  int firstElement = 0;              ///< global index of the first element
+  int firstNode = 0;     ///< global index of the node at end A
+  int nodeCount = 0;     ///< nodes = elements + 1
+  int firstElement = 0;  ///< global index of the first element
   int elementCount = 0;
-  std::vector<double> arcLength;     ///< unstretched arc length of each node from end A [m]
-  double length = 0.0;               ///< total unstretched length [m]
+  std::vector<double> arcLength;  ///< unstretched arc length of each node from end A [m]
+  double length = 0.0;            ///< total unstretched length [m]
   int lastNode() const { return firstNode + nodeCount - 1; }  ///< global index of the node at end B
 };
 
@@ -55,12 +55,12 @@ class Model {
   Model(const Model&) = delete;
   Model& operator=(const Model&) = delete;
 
-  const ModelSpec& spec() const { return *m_spec; }             ///< the input
+  const ModelSpec& spec() const { return *m_spec; }  ///< the input
   const EnvironmentSpec& environment() const { return m_spec->environment; }
-  const std::vector<Line>& lines() const { return m_lines; }     ///< lines in input order
+  const std::vector<Line>& lines() const { return m_lines; }  ///< lines in input order
   const std::vector<LineElement>& elements() const { return m_elements; }
   const std::vector<NodeAttachment>& attachments() const { return m_attachments; }
-  const DofMap& dofs() const { return m_dofs; }                  ///< DOF numbering
+  const DofMap& dofs() const { return m_dofs; }  ///< DOF numbering
   int nodeCount() const { return m_dofs.nodeCount(); }
   /// Line index owning a node (-1 for a vessel node).
   int lineOfNode(int node) const { return m_nodeLine[node]; }
@@ -97,6 +97,8 @@ class Model {
 
  private:
   void buildLine(int lineIndex);
+  /// Node positions of a line with a start shape (LineSpec::startShape) between its end positions [m].
+  std::vector<Vec3> startShapePositions(const Line& line, const Vec3& endA, const Vec3& endB) const;
   void buildVessel(int vesselIndex);
   void constrainEnd(int node, const EndSpec& end);
 

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <map>
+#include <limits>
 #include <optional>
 #include <string>
 #include <utility>
@@ -194,6 +195,14 @@ struct AttachmentSpec {
   double addedMass = 0.0;  ///< added mass [kg]
 };
 
+/// An intermediate point of a line's starting shape (`lines[].start_shape`).
+struct StartPoint {
+  Vec3 position = Vec3::Zero();  ///< global position [m]
+  /// Unstretched arc length from end A at which the line passes through the point [m]; NaN when not
+  /// given (then the points share the line's length in proportion to the polyline's chords).
+  double arcLength = std::numeric_limits<double>::quiet_NaN();
+};
+
 /// A line: ends, sections from end A to end B, attachments.
 struct LineSpec {
   std::string name;
@@ -202,6 +211,10 @@ struct LineSpec {
   std::vector<SectionSpec> sections;
   std::vector<AttachmentSpec> attachments;
   bool contact = true;  ///< takes part in line-to-line contact
+  /// Starting shape of the static solve through these points (end A, the points, end B, straight between
+  /// them) instead of the analytic catenary between the ends: a line draped over another, over a guide
+  /// or a bollard. Empty: the catenary.
+  std::vector<StartPoint> startShape;
 };
 
 /// Static solver settings.

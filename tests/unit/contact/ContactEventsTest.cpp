@@ -60,9 +60,9 @@ ContactEvent run(const std::function<double(double)>& force, const std::function
 TEST(ContactEvents, ImpactPhaseGivesTheRigidBodyMassAndEnergyNotTheSustainedLoad) {
   const double m = 2.0, k = 8e4, v0 = 1.5, w = std::sqrt(k / m), tc = 0.5 * kPi / w, sustained = 300.0;
   const double dt = tc / 1000.0;
-  const ContactEvent e = run(
-      [&](double t) { return t <= tc ? k * v0 / w * std::sin(w * t) : sustained; },
-      [&](double t) { return t <= tc ? -v0 * std::cos(w * t) : 0.0; }, v0, tc + 0.2, dt);
+  const ContactEvent e =
+      run([&](double t) { return t <= tc ? k * v0 / w * std::sin(w * t) : sustained; },
+          [&](double t) { return t <= tc ? -v0 * std::cos(w * t) : 0.0; }, v0, tc + 0.2, dt);
   EXPECT_TRUE(e.impact);
   EXPECT_EQ(e.phaseEnd, "reversed");
   EXPECT_NEAR(e.phaseEndTime, tc, 2.0 * dt);

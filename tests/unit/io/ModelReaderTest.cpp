@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -1099,6 +1100,59 @@ TEST(ModelReader, RejectsBadWakeAndClearanceInput) {
   expectInputError(wakeModel("", "clearance: {required: -1}\n"), "required: -1", "clearance.required", ">= 0");
   expectInputError(wakeModel("", "clearance: {pairs: [[a, q]]}\n"), "pairs: [[a, q]]", "clearance.pairs[0][1]",
                    "unknown line 'q'");
+}
+
+}  // namespace
+}  // namespace tangle::io
+
+// ----------------------------------------------------------------------------------------------------
+// lines[].start_shape (issue 29)
+
+namespace tangle::io {
+namespace {
+
+const std::string kStartShapeFrom = "    attachments:\n      - arc_length: 250";
+
+TEST(ModelReaderStartShape, ReadsPointsWithAndWithoutArcLengths) {
+  const auto plain = readModelString(
+      edited(kBaseModel, kStartShapeFrom, "    start_shape: [[300, 0, -90], [100, 0, -40]]\n" + kStartShapeFrom),
+      kSource);
+  ASSERT_EQ(plain.lines[0].startShape.size(), 2u);
+  EXPECT_EQ(plain.lines[0].startShape[1].position, Vec3(100, 0, -40));
+  EXPECT_TRUE(std::isnan(plain.lines[0].startShape[0].arcLength));
+  const auto withArcs = readModelString(
+      edited(kBaseModel, kStartShapeFrom,
+             "    start_shape:\n      - {position: [300, 0, -90], arc_length: 120}\n"
+             "      - {position: [100, 0, -40], arc_length: 350}\n" +
+                 kStartShapeFrom),
+      kSource);
+  EXPECT_DOUBLE_EQ(withArcs.lines[0].startShape[1].arcLength, 350.0);
+}
+
+TEST(ModelReaderStartShape, ArcLengthsMustIncreaseWithinTheLine) {
+  expectEditError(kStartShapeFrom,
+                  "    start_shape:\n      - {position: [300, 0, -90], arc_length: 120}\n"
+                  "      - {position: [100, 0, -40], arc_length: 100}\n" +
+                      kStartShapeFrom,
+                  "arc_length: 100}", "lines[moor].start_shape[1].arc_length", "arc lengths must increase");
+  expectEditError(kStartShapeFrom, "    start_shape:\n      - {position: [300, 0, -90], arc_length: 500}\n" + kStartShapeFrom,
+                  "arc_length: 500}", "lines[moor].start_shape[0].arc_length", "strictly between the line's ends");
+}
+
+TEST(ModelReaderStartShape, AllOrNoneOfThePointsHaveAnArcLength) {
+  expectEditError(kStartShapeFrom,
+                  "    start_shape:\n      - {position: [300, 0, -90], arc_length: 120}\n      - [100, 0, -40]\n" +
+                      kStartShapeFrom,
+                  "    start_shape:", "lines[moor].start_shape", "give it for all of them or for none");
+}
+
+TEST(ModelReaderStartShape, PointsBelowTheSeabedOrTooFarAreRefused) {
+  expectEditError(kStartShapeFrom, "    start_shape: [[300, 0, -150]]\n" + kStartShapeFrom, "    start_shape:",
+                  "lines[moor].start_shape[0]", "the point is below the seabed");
+  expectEditError(kStartShapeFrom, "    start_shape: [[300, 5000, -90]]\n" + kStartShapeFrom, "- name: moor",
+                  "lines[moor]", "apart along its start_shape points");
+  expectEditError(kStartShapeFrom, "    start_shape: [[300, 0]]\n" + kStartShapeFrom, "    start_shape:",
+                  "lines[moor].start_shape[0]", "[x, y, z]");
 }
 
 }  // namespace

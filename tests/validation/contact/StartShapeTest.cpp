@@ -1,0 +1,102 @@
+// Start shapes (issue 29): a line's starting shape given by intermediate points, so that a line can be
+// draped over another before the static solve (the analytic catenary between the ends hangs below the
+// other line and never touches it). Read from YAML, end to end.
+//
+// Set-up (in air, gravity 9.80665 m/s2): a taut wire along x, 10 m between pinned ends at z = 20 m
+// (d = 0.1 m, 50 kg/m, EA 1e9 N, 5e5 N pretension); a chain (d = 0.1 m, 100 kg/m, EA 5e8 N, 7.4 m,
+// 40 bars) pinned at y = -3 and 3 m, 2 m below the wire, across it at right angles. Its start shape: one
+// point 0.12 m above the wire's axis (the radii are 0.1 m), so it starts as an inverted V over the wire.
+//
+// Checks:
+// - the initial state is the polyline end A -> point -> end B, each node at its arc length in
+//   proportion to the chords (to round-off);
+// - the static solve settles it on the wire: the chain's highest node above the wire's axis by at least
+//   the radii less the contact's penetration allowance (half the radii: the step validator's bound), and
+//   the contact force equals the weight the contact carries, from the vertical equilibrium of the chain
+//   as a free body with its support reactions (1e-5 of its weight: every nodal equilibrium holds to 1e-6
+//   of the reference force, as StaticContactTest);
+// - without the start shape the catenary hangs below the wire and there is no contact;
+// - a start shape through the wire is refused before the solve, naming the key and both lines.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/core/Error.hpp"
+#include "tangle/io/ModelReader.hpp"
+
+namespace tangle {
+namespace {
+
+std::string model(const std::string& startShape) {
+  return R"(title: chain draped over a taut wire by its start shape
+environment:
+  water_depth: 100
+line_types:
+  - {name: wire, outer_diameter: 0.1, mass_per_length: 50, axial_stiffness: 1.0e9}
+  - {name: chain, outer_diameter: 0.1, mass_per_length: 100, axial_stiffness: 5.0e8}
+lines:
+  - name: wire
+    end_a: {type: pinned, position: [-5, 0, 20]}
+    end_b: {type: pinned, position: [5, 0, 20]}
+    sections: [{type: wire, length: 9.995, elements: 10}]
+  - name: chain
+    end_a: {type: pinned, position: [0, -3, 18]}
+    end_b: {type: pinned, position: [0, 3, 18]}
+    sections: [{type: chain, length: 7.4, elements: 40}]
+)" + startShape +
+         "contact: {}\n";
+}
+
+TEST(StartShape, ChainDrapedOverAWireSettlesOnItInStatics) {
+  analysis::Simulation sim(io::readModelString(model("    start_shape: [[0, 0, 20.12]]\n"), "drape.yaml"));
+  const model::Line& chain = sim.model().lines()[1];
+  // The polyline: both legs 3.6069 m long, the apex at arc 3.7 m (node 20).
+  const double leg = std::hypot(3.0, 2.12);
+  for (int i = 0; i < chain.nodeCount; ++i) {
+    const double s = chain.arcLength[i] * 2.0 * leg / chain.length;
+    const Vec3 expected = s <= leg ? Vec3(0, -3, 18) + s / leg * Vec3(0, 3, 2.12)
+                                   : Vec3(0, 0, 20.12) + (s - leg) / leg * Vec3(0, 3, -2.12);
+    EXPECT_NEAR((sim.state().position[chain.firstNode + i] - expected).norm(), 0.0, 1e-12) << "node " << i;
+  }
+
+  const solver::StaticResult statics = sim.solveStatics();
+  ASSERT_TRUE(statics.converged) << statics.message;
+  double top = -1e30;
+  for (int n = chain.firstNode; n <= chain.lastNode(); ++n) top = std::max(top, sim.state().position[n].z());
+  const double wireZ = sim.state().position[sim.model().lines()[0].firstNode + 5].z();
+  EXPECT_GT(top - wireZ, 0.5 * 0.1);
+
+  const auto lines = sim.snapshot(false);
+  double contactZ = 0.0;
+  for (const contact::ContactPoint& p : sim.contact()->contacts())
+    if (p.normalForce > 0.0) contactZ += -(p.normalForce * p.normal + p.frictionForce).z();  // on the chain
+  const double weight = 100.0 * chain.length * sim.model().environment().gravity;
+  EXPECT_GT(contactZ, 0.5 * weight);
+  EXPECT_NEAR(contactZ, weight + lines[1].endForceA.z() + lines[1].endForceB.z(), 1e-5 * weight);
+}
+
+TEST(StartShape, WithoutItTheCatenaryHangsBelowTheWire) {
+  analysis::Simulation sim(io::readModelString(model(""), "hanging.yaml"));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  for (const contact::ContactPoint& p : sim.contact()->contacts()) EXPECT_LE(p.normalForce, 0.0);
+}
+
+TEST(StartShape, AShapeThroughAnotherLineIsRefused) {
+  try {
+    analysis::Simulation sim(
+        io::readModelString(model("    start_shape: [[0, -0.5, 20.12], [0, 0.5, 19.9]]\n"), "crossed.yaml"));
+    FAIL() << "no InputError for a start shape through the wire";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.key(), "lines[chain].start_shape") << what;
+    EXPECT_NE(what.find("passes through"), std::string::npos) << what;
+    EXPECT_NE(what.find("'wire'"), std::string::npos) << what;
+    EXPECT_NE(what.find("crossed.yaml"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace tangle
