@@ -9,7 +9,9 @@
 /// mu f_n in the direction of delta_t and the anchor is moved back onto the slip surface (return map).
 /// addForces() only computes the trial anchor; commitStatic()/commitStep() make it the committed one, so
 /// rejected iterations or steps need no revert. Friction of the point-to-point part (large crossing
-/// angles) stays the velocity-regularised law of LineContact::findContacts (dynamics only).
+/// angles): in statics the same elastic stick and slip per point contact (its stick spring the contact's
+/// point stiffness, its limit mu F_n; issue 29: a line resting across another was held by nothing in
+/// statics); in dynamics the velocity-regularised law of LineContact::findContacts.
 
 #include <algorithm>
 #include <cmath>
@@ -24,8 +26,6 @@ void LineContact::addFriction(const model::State& state, const solver::AssemblyR
   m_patches.clear();
   const double mu = m_spec.frictionCoefficient;
   if (!(mu > 0.0)) return;
-  const auto& elements = m_model->elements();
-  const model::DofMap& dofs = m_model->dofs();
   // Group the Gauss points by (slave element, master line).
   std::map<std::pair<int, int>, std::vector<const LineSample*>> groups;
   for (const LineSample& s : m_samples)
@@ -50,72 +50,112 @@ void LineContact::addFriction(const model::State& state, const solver::AssemblyR
     arcA /= patch.length;
     arcB /= patch.length;
     const double kt = lineStiffness(samples.front()->elementA, samples.front()->elementB);
-    // Committed anchor; or the one this patch got when it first touched in this step's (or static
-    // solve's) iterations; or a new one at the patch's centre with no elastic offset, kept for the
-    // following iterations (an anchor renewed at every iterate would never resist).
-    const FrictionAnchor* existing = nullptr;
-    if (auto it = m_anchors.find(key); it != m_anchors.end()) {
-      existing = &it->second;
-    } else if (auto jt = m_pendingAnchors.find(key); jt != m_pendingAnchors.end()) {
-      existing = &jt->second;
-    }
-    const bool fresh = existing == nullptr;
-    FrictionAnchor anchor;
-    auto [elA, wA] = pointAtArc(patch.lineA, fresh ? arcA : existing->arcA);
-    auto [elB, wB] = pointAtArc(patch.lineB, fresh ? arcB : existing->arcB);
-    const model::LineElement& ea = elements[elA];
-    const model::LineElement& eb = elements[elB];
-    const Vec3 xa = (1.0 - wA) * state.position[ea.node1] + wA * state.position[ea.node2];
-    const Vec3 xb = (1.0 - wB) * state.position[eb.node1] + wB * state.position[eb.node2];
-    if (fresh) {
-      anchor.arcA = arcA;
-      anchor.arcB = arcB;
-      anchor.offset = xa - xb;
-      m_pendingAnchors[key] = anchor;
-    } else {
-      anchor = *existing;
-    }
-    const Mat3 tp = Mat3::Identity() - patch.normal * patch.normal.transpose();
-    Vec3 delta = tp * (xa - xb - anchor.offset);
-    const double limit = mu * patch.normalLoad;  // [N/m]
-    const double trialNorm = kt * delta.norm();
-    Mat3 stiffness3 = kt * tp;
-    if (trialNorm > limit && trialNorm > 0.0) {
-      patch.slipping = true;
-      const Vec3 dir = delta.normalized();
-      const double elastic = limit / kt;
-      // Return map: the anchor follows so that the elastic offset is back on the slip surface.
-      anchor.offset += (delta.norm() - elastic) * dir;
-      delta = elastic * dir;
-      stiffness3 = limit / trialNorm * kt * (tp - dir * dir.transpose());
-    }
-    patch.elastic = delta;
-    patch.trial = anchor;
-    patch.force = -kt * delta * patch.length;  // on A
-    patch.nodeA[0] = ea.node1;
-    patch.nodeA[1] = ea.node2;
-    patch.nodeB[0] = eb.node1;
-    patch.nodeB[1] = eb.node2;
-    patch.wA = wA;
-    patch.wB = wB;
-    const int node[4] = {ea.node1, ea.node2, eb.node1, eb.node2};
-    const double w[4] = {1.0 - wA, wA, -(1.0 - wB), -wB};
-    for (int i = 0; i < 4; ++i) force.segment<3>(dofs.firstDof(node[i])) -= w[i] * patch.force;
-    if (matrix) {
-      const Mat3 block = request.kf * patch.length * stiffness3;
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) matrix->add3x3(dofs.firstDof(node[i]), dofs.firstDof(node[j]), block, w[i] * w[j]);
-    }
+    stickSlip(state, request, key, arcA, arcB, kt, mu * patch.normalLoad, m_anchors, m_pendingAnchors, patch, force,
+              matrix);
+    m_patches.push_back(patch);
+  }
+}
+
+void LineContact::stickSlip(const model::State& state, const solver::AssemblyRequest& request,
+                            const std::pair<int, int>& key, double arcA, double arcB, double kt, double limit,
+                            const std::map<std::pair<int, int>, FrictionAnchor>& anchors,
+                            std::map<std::pair<int, int>, FrictionAnchor>& pending, FrictionPatch& patch,
+                            VecX& force, solver::SystemMatrix* matrix) const {
+  const auto& elements = m_model->elements();
+  const model::DofMap& dofs = m_model->dofs();
+  // Committed anchor; or the one this patch got when it first touched in this step's (or static
+  // solve's) iterations; or a new one at the patch's centre with no elastic offset, kept for the
+  // following iterations (an anchor renewed at every iterate would never resist).
+  const FrictionAnchor* existing = nullptr;
+  if (auto it = anchors.find(key); it != anchors.end()) {
+    existing = &it->second;
+  } else if (auto jt = pending.find(key); jt != pending.end()) {
+    existing = &jt->second;
+  }
+  const bool fresh = existing == nullptr;
+  FrictionAnchor anchor;
+  auto [elA, wA] = pointAtArc(patch.lineA, fresh ? arcA : existing->arcA);
+  auto [elB, wB] = pointAtArc(patch.lineB, fresh ? arcB : existing->arcB);
+  const model::LineElement& ea = elements[elA];
+  const model::LineElement& eb = elements[elB];
+  const Vec3 xa = (1.0 - wA) * state.position[ea.node1] + wA * state.position[ea.node2];
+  const Vec3 xb = (1.0 - wB) * state.position[eb.node1] + wB * state.position[eb.node2];
+  if (fresh) {
+    anchor.arcA = arcA;
+    anchor.arcB = arcB;
+    anchor.offset = xa - xb;
+    pending[key] = anchor;
+  } else {
+    anchor = *existing;
+  }
+  const Mat3 tp = Mat3::Identity() - patch.normal * patch.normal.transpose();
+  Vec3 delta = tp * (xa - xb - anchor.offset);
+  const double trialNorm = kt * delta.norm();
+  Mat3 stiffness3 = kt * tp;
+  if (trialNorm > limit && trialNorm > 0.0) {
+    patch.slipping = true;
+    const Vec3 dir = delta.normalized();
+    const double elastic = limit / kt;
+    // Return map: the anchor follows so that the elastic offset is back on the slip surface.
+    anchor.offset += (delta.norm() - elastic) * dir;
+    delta = elastic * dir;
+    stiffness3 = limit / trialNorm * kt * (tp - dir * dir.transpose());
+  }
+  patch.elastic = delta;
+  patch.trial = anchor;
+  patch.force = -kt * delta * patch.length;  // on A
+  patch.nodeA[0] = ea.node1;
+  patch.nodeA[1] = ea.node2;
+  patch.nodeB[0] = eb.node1;
+  patch.nodeB[1] = eb.node2;
+  patch.wA = wA;
+  patch.wB = wB;
+  const int node[4] = {ea.node1, ea.node2, eb.node1, eb.node2};
+  const double w[4] = {1.0 - wA, wA, -(1.0 - wB), -wB};
+  for (int i = 0; i < 4; ++i) force.segment<3>(dofs.firstDof(node[i])) -= w[i] * patch.force;
+  if (matrix) {
+    const Mat3 block = request.kf * patch.length * stiffness3;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        matrix->add3x3(dofs.firstDof(node[i]), dofs.firstDof(node[j]), block, w[i] * w[j]);
+  }
+}
+
+void LineContact::addPointFriction(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                                   solver::SystemMatrix* matrix) {
+  const double mu = m_spec.frictionCoefficient;
+  if (!(mu > 0.0) || request.dynamic) return;
+  for (const ContactPoint& c : m_trial) {
+    if (!(c.normalForce > 0.0)) continue;
+    FrictionPatch patch;
+    patch.lineA = c.lineA;
+    patch.lineB = c.lineB;
+    patch.elementA = c.elementA;
+    patch.point = true;
+    patch.elementB = c.elementB;  // the two feet of a fold share an element of A: keyed by both elements
+    patch.length = 1.0;  // a point: the stick spring and the limit are forces, not per length
+    patch.normalLoad = c.normalForce;
+    patch.normal = c.normal;
+    stickSlip(state, request, {c.elementA, c.elementB}, c.arcA, c.arcB, c.stiffness, mu * c.normalForce,
+              m_pointAnchors, m_pendingPointAnchors, patch, force, matrix);
     m_patches.push_back(patch);
   }
 }
 
 void LineContact::commitFriction() {
   // Re-anchor every patch at its trial anchor; patches no longer in contact lose their anchor.
-  std::map<std::pair<int, int>, FrictionAnchor> next;
-  for (const FrictionPatch& p : m_patches) next[{p.elementA, p.lineB}] = p.trial;
+  std::map<std::pair<int, int>, FrictionAnchor> next, nextPoint;
+  for (const FrictionPatch& p : m_patches) {
+    if (p.point) {
+      nextPoint[{p.elementA, p.elementB}] = p.trial;
+    } else {
+      next[{p.elementA, p.lineB}] = p.trial;
+    }
+  }
   m_anchors = std::move(next);
+  m_pointAnchors = std::move(nextPoint);
   m_pendingAnchors.clear();
+  m_pendingPointAnchors.clear();
 }
 
 }  // namespace tangle::contact

@@ -562,6 +562,7 @@ void LineContact::addForces(const model::State& state, const solver::AssemblyReq
     }
   }
   addLineToLineForces(state, request, force, matrix);
+  addPointFriction(state, request, force, matrix);
 }
 
 bool LineContact::neighbours(const std::pair<int, int>& a, const std::pair<int, int>& b) const {
@@ -587,6 +588,7 @@ bool LineContact::sameContact(const std::pair<int, int>& key, const Vec3& pA, co
 
 void LineContact::beginStep() {
   m_pendingAnchors.clear();
+  m_pendingPointAnchors.clear();
   m_sticky.clear();
   m_released.clear();
   m_releaseRounds = 0;

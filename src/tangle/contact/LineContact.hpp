@@ -90,6 +90,8 @@ struct FrictionPatch {
   Vec3 normal = Vec3::UnitZ();
   Vec3 force = Vec3::Zero();  ///< total friction force on A [N]
   bool slipping = false;
+  bool point = false;    ///< the friction of a point contact (statics), not of a line-to-line patch
+  int elementB = -1;     ///< a point contact's element of line B (its anchor's key with elementA)
   FrictionAnchor trial;  ///< anchor after the return map (committed by commitStatic/commitStep)
   int nodeA[2] = {0, 0}, nodeB[2] = {0, 0};
   double wA = 0.0, wB = 0.0;    ///< parameters of the anchor points on their elements
@@ -140,6 +142,7 @@ class LineContact final : public solver::LoadContributor {
   void beginStatic(const model::State& state) override {
     m_reference = state.position;
     m_pendingAnchors.clear();
+    m_pendingPointAnchors.clear();
   }
 
   /// Gauss points of the line-to-line part at the last addForces() call.
@@ -250,6 +253,17 @@ class LineContact final : public solver::LoadContributor {
   void addFriction(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
                    solver::SystemMatrix* matrix);
   void commitFriction();
+  /// Statics: elastic stick and slip of every point contact (ContactFriction.cpp), appended to m_patches.
+  void addPointFriction(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                        solver::SystemMatrix* matrix);
+  /// The stick / slip force of one patch with key `key`, anchored at arc lengths arcA, arcB at first
+  /// touch: stick spring kt [N/m per unit patch length], slip limit [N per unit length]; fills `patch`
+  /// and adds its force (and tangent) to the nodes.
+  void stickSlip(const model::State& state, const solver::AssemblyRequest& request, const std::pair<int, int>& key,
+                 double arcA, double arcB, double kt, double limit,
+                 const std::map<std::pair<int, int>, FrictionAnchor>& anchors,
+                 std::map<std::pair<int, int>, FrictionAnchor>& pending, FrictionPatch& patch, VecX& force,
+                 solver::SystemMatrix* matrix) const;
   void buildExclusions();
   /// Whether elements A and B passed through each other between two states, from their closest points
   /// before and after (StaticContact.cpp).
@@ -291,6 +305,8 @@ class LineContact final : public solver::LoadContributor {
       m_anchors;  // (slave element, master line) -> committed anchor
   std::map<std::pair<int, int>, FrictionAnchor>
       m_pendingAnchors;  // anchors of patches new in this step / solve
+  std::map<std::pair<int, int>, FrictionAnchor> m_pointAnchors;         // point contacts (statics), committed
+  std::map<std::pair<int, int>, FrictionAnchor> m_pendingPointAnchors;  // and new in this solve
   std::map<std::pair<int, int>, std::vector<std::array<double, 4>>>
       m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
   /// Positions at the last committed state (statics: its start or last converged increment; dynamics: the

@@ -98,5 +98,61 @@ TEST(StartShape, AShapeThroughAnotherLineIsRefused) {
   }
 }
 
+// Friction at a crossing in statics (issue 29: point contacts had friction in dynamics only). The same
+// chain draped over the wire, the wire now inclined at 10 deg along its axis (ends at z = 20 -+ 5 tan 10).
+// Without friction the chain slides down the wire until its lean balances the slope component of the
+// contact force (measured: 0.61 m down, x = -0.61 m); with mu = 0.5 > tan 10 deg = 0.18 the elastic
+// stick of the point contacts holds it where it was laid (measured x = +0.02 m, the stick spring's
+// give; both feet stick with 1249 N of friction each against 0.5 x 4806 N). The two feet of the fold lie
+// on one element of the wire: their anchors are keyed by both elements (one anchor for both made the
+// second foot pull from the first's material point: 1300 N out of balance along x). Checks: the
+// contact's position along x; every point contact's friction force within mu times its normal force and
+// not zero; the chain's equilibrium along x as a free body: the contact forces (normal and friction)
+// against its support reactions, to 1e-5 of its weight (every nodal equilibrium holds to 1e-6 of the
+// reference force).
+std::string inclinedModel(double mu) {
+  std::string yaml = model("    start_shape: [[0, 0, 20.12]]\n");
+  const std::string from = "position: [-5, 0, 20]}", to = "position: [5, 0, 20]}";
+  yaml.replace(yaml.find(from), from.size(), "position: [-5, 0, 19.11838]}");
+  yaml.replace(yaml.find(to), to.size(), "position: [5, 0, 20.88162]}");
+  yaml.replace(yaml.find("length: 9.995"), 13, "length: 10.149");
+  yaml.replace(yaml.find("contact: {}"), 11, "contact: {friction_coefficient: " + std::to_string(mu) + "}");
+  return yaml;
+}
+
+double contactX(analysis::Simulation& sim) {
+  double fx = 0.0, f = 0.0;
+  for (const contact::ContactPoint& p : sim.contact()->contacts())
+    if (p.normalForce > 0.0) {
+      fx += p.normalForce * p.pointA.x();
+      f += p.normalForce;
+    }
+  return fx / f;
+}
+
+TEST(StartShape, FrictionAtTheCrossingHoldsTheDrapeOnAnInclinedWire) {
+  analysis::Simulation frictionless(io::readModelString(inclinedModel(0.0), "inclined.yaml"));
+  ASSERT_TRUE(frictionless.solveStatics().converged);
+  EXPECT_LT(contactX(frictionless), -0.3);
+
+  constexpr double kMu = 0.5;
+  analysis::Simulation sim(io::readModelString(inclinedModel(kMu), "inclined-friction.yaml"));
+  const solver::StaticResult statics = sim.solveStatics();
+  ASSERT_TRUE(statics.converged) << statics.message;
+  EXPECT_NEAR(contactX(sim), 0.0, 0.05);
+  const auto lines = sim.snapshot(false);
+  int held = 0;
+  for (const contact::FrictionPatch& p : sim.contact()->frictionPatches()) {
+    if (!p.point) continue;
+    ++held;
+    EXPECT_LE(p.force.norm(), kMu * p.normalLoad * (1.0 + 1e-9));
+    EXPECT_GT(p.force.norm(), 0.01 * p.normalLoad);
+  }
+  EXPECT_GE(held, 1);
+  const Vec3 onChain = -sim.contact()->pairForce(0, 1);
+  const double weight = 100.0 * sim.model().lines()[1].length * sim.model().environment().gravity;
+  EXPECT_NEAR(onChain.x(), lines[1].endForceA.x() + lines[1].endForceB.x(), 1e-5 * weight);
+}
+
 }  // namespace
 }  // namespace tangle
