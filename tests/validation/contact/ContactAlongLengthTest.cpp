@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 
+#include "support/ContactChecks.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
@@ -237,6 +238,7 @@ TEST_P(LoweredOntoLine, RunCompletesWithBoundedPenetrationAndOneRestingEvent) {
   RecordProperty("events", static_cast<int>(events.size()));
   EXPECT_EQ(events.size(), 1u);
   EXPECT_TRUE(events.front().sustained);
+  test::expectImpactEnergiesWithinBounds(events);
 }
 
 INSTANTIATE_TEST_SUITE_P(Restitution, LoweredOntoLine, ::testing::Values(0.5, 1.0),

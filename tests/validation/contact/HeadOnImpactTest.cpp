@@ -213,6 +213,7 @@ TEST(EndOnImpact, BarHittingALineEndFirstReboundsWithTheRestitution) {
     }
     EXPECT_NEAR(p / m, e, 0.02 * e) << "e = " << e;
     EXPECT_NEAR(sim.contact()->events().front().impactVelocity, 1.0, 1e-3) << "e = " << e;
+    test::expectImpactEnergiesWithinBounds(sim.contact()->events());
     RecordProperty(fmt::format("rebound_ratio_relative_error_e{}", static_cast<int>(100 * e)),
                    fmt::format("{:.3e}", p / m / e - 1.0));
   }

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <vector>
 
+#include "support/ContactChecks.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
 
@@ -117,6 +118,7 @@ TEST(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
   for (const contact::ContactEvent& other : events)
     EXPECT_LT(other.startTime, 1.0) << "an event that started during the drag, at t = " << other.startTime << " s";
   EXPECT_GE(ev.arcAMax - ev.arcAMin, 3.0 * elementLength);
+  test::expectImpactEnergiesWithinBounds(events);
   double worstStep = 0.0;
   for (std::size_t i = 1; i < ev.path.size(); ++i) worstStep = std::max(worstStep, std::abs(ev.path[i][1] - ev.path[i - 1][1]));
   EXPECT_LT(worstStep, 0.05 * elementLength);
