@@ -81,15 +81,13 @@ void ClashReport::write(const fs::path& dir) const {
   {
     io::OutputFile file(out / "events.csv");
     std::ostream& f = file.stream();
-    f << "event,line_1,line_2,kind,start_time_s,end_time_s,x_start_m,y_start_m,z_start_m,arc_1_start_m,arc_2_"
-         "start_m,"
+    f << "event,line_1,line_2,kind,start_time_s,end_time_s,x_start_m,y_start_m,z_start_m,arc_1_start_m,"
+         "arc_2_start_m,"
          "arc_1_min_m,arc_1_max_m,arc_2_min_m,arc_2_max_m,peak_force_N,peak_force_per_length_N_per_m,"
-         "max_contact_length_m,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,energy_mass_kg,energy_mass_"
-         "basis,"
-         "effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open,impact_phase_end_s,impact_phase_end,"
-         "impact_phase_impulse_Ns,eq5_mass_kg,absorbed_energy_J,work_mass_kg,event_eq5_mass_kg,mass_lower_"
-         "bound_kg,"
-         "mass_upper_bound_kg,energy_warning\n";
+         "max_contact_length_m,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,energy_mass_kg,"
+         "energy_mass_basis,effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open,impact_phase_end_s,"
+         "impact_phase_end,impact_phase_impulse_Ns,eq5_mass_kg,absorbed_energy_J,work_mass_kg,"
+         "event_eq5_mass_kg,mass_lower_bound_kg,mass_upper_bound_kg,energy_warning\n";
     for (std::size_t i = 0; i < events.size(); ++i) {
       const ContactEvent& e = events[i];
       f << fmt::format(
@@ -217,8 +215,7 @@ std::string ClashReport::terminalSummary() const {
       if (c.pair == p) minClear = std::min(minClear, c.clearance);
     s += fmt::format(
         "  {} / {}: {} impact(s), {} sustained contact(s), max impact velocity {:.3f} m/s, max impact energy "
-        "{:.4g} J, "
-        "max contact force {:.4g} kN, min clearance {}\n",
+        "{:.4g} J, max contact force {:.4g} kN, min clearance {}\n",
         lines[a].name, lines[b].name, count, sustained, vmax, emax, fmax / 1000.0,
         std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
   }

@@ -451,10 +451,8 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
       const model::LineElement& eb = elements[c.elementB];
       const geometry::SegmentDistanceResult before = geometry::segmentDistance(
           m_reference[ea.node1], m_reference[ea.node2], m_reference[eb.node1], m_reference[eb.node2]);
-      const geometry::SegmentDistanceResult now =
-          geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
-                                    state.position[eb.node1], state.position[eb.node2]);
-      if (before.distance > 1e-12 && passedThrough(c.elementA, c.elementB, before, now)) c.sign = -1.0;
+      // raw[i].d: the same chords' closest points at this state.
+      if (before.distance > 1e-12 && passedThrough(c.elementA, c.elementB, before, raw[i].d)) c.sign = -1.0;
     }
     c.normal = diff.norm() > 1e-12 ? Vec3(c.sign * diff.normalized()) : Vec3(Vec3::UnitZ());
     c.gap = c.sign * diff.norm() - a.radius - b.radius;
@@ -578,11 +576,15 @@ bool LineContact::inNeighbourhood(const std::pair<int, int>& key, const ActiveSe
 }
 
 bool LineContact::sameContact(const std::pair<int, int>& key, const Vec3& pA, const Vec3& pB, double radii,
+                              const ActiveSet::value_type& member) const {
+  return neighbours(member.first, key) && (member.second.pointA - pA).norm() < 0.5 * radii &&
+         (member.second.pointB - pB).norm() < 0.5 * radii;
+}
+
+bool LineContact::sameContact(const std::pair<int, int>& key, const Vec3& pA, const Vec3& pB, double radii,
                               const ActiveSet& set) const {
-  for (const auto& [k, mark] : set)
-    if (neighbours(k, key) && (mark.pointA - pA).norm() < 0.5 * radii &&
-        (mark.pointB - pB).norm() < 0.5 * radii)
-      return true;
+  for (const auto& member : set)
+    if (sameContact(key, pA, pB, radii, member)) return true;
   return false;
 }
 
@@ -604,9 +606,7 @@ bool LineContact::updateActiveSet() {
     const std::pair<int, int> key{c.elementA, c.elementB};
     const double radii = m_radius[c.elementA] + m_radius[c.elementB];
     for (auto it = m_sticky.begin(); it != m_sticky.end();)
-      it = sameContact(it->first, it->second.pointA, it->second.pointB, radii, {{key, {c.pointA, c.pointB}}})
-               ? m_sticky.erase(it)
-               : std::next(it);
+      it = sameContact(key, c.pointA, c.pointB, radii, *it) ? m_sticky.erase(it) : std::next(it);
     m_released[key] = ActiveMark{c.pointA, c.pointB};
     changed = true;
   }
@@ -718,11 +718,9 @@ std::string LineContact::stepRejection(const model::State& before, const model::
     const Vec3 where = d1.closest0;
     return fmt::format(
         "lines '{}' and '{}' {} at {:.3f} m along '{}' and {:.3f} m along '{}' (x, y, z = {:.3f}, {:.3f}, "
-        "{:.3f} m; "
-        "surface gap {:.4g} m, sum of contact radii {:.4g} m, change of distance {:.3g} m/s). Remedies: a "
-        "larger contact.stiffness "
-        "(now {:.4g} N/m), larger contact diameters, finer elements where they touch, or a smaller "
-        "dynamics.min_time_step",
+        "{:.3f} m; surface gap {:.4g} m, sum of contact radii {:.4g} m, change of distance {:.3g} m/s). "
+        "Remedies: a larger contact.stiffness (now {:.4g} N/m), larger contact diameters, finer elements "
+        "where they touch, or a smaller dynamics.min_time_step",
         la.name, lb.name,
         tooDeep ? "overlap by more than half their contact radii" : "pass through each other",
         arcOf(ea.line, a.element, d1.s), la.name, arcOf(eb.line, b.element, d1.t), lb.name, where.x(),

@@ -234,6 +234,9 @@ class LineContact final : public solver::LoadContributor {
   /// other, nor make the other pull.
   bool sameContact(const std::pair<int, int>& key, const Vec3& pA, const Vec3& pB, double radii,
                    const ActiveSet& set) const;
+  /// The same test against one member of a set.
+  bool sameContact(const std::pair<int, int>& key, const Vec3& pA, const Vec3& pB, double radii,
+                   const ActiveSet::value_type& member) const;
   double nodeTransverseMass(int node) const;
   /// A per-DOF field (velocity [m/s], acceleration [m/s^2]) at parameter w of an element (linear).
   Vec3 pointValue(const VecX& field, int element, double w) const;

@@ -836,7 +836,8 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
 
   if (const std::optional<Value> attachments = m.find("attachments"))
     for (const Value& item : attachments->items(0)) line.attachments.push_back(readAttachment(item, length));
-  if (const std::optional<Value> shape = m.find("start_shape")) line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
+  if (const std::optional<Value> shape = m.find("start_shape"))
+    line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
 
   // Ends clearly too far apart for the line's length (vessel ends are in vessel axes: not checked here).
   using model::EndKind;

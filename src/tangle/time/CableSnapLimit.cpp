@@ -32,7 +32,7 @@ double cableSnapStepLimit(const model::Model& model, const model::State& state, 
       // kink releases the work of the start force over the whole shortening (trapezoidal), more than
       // the strain energy stored: whipping free cable ends gained energy unload after unload, with the
       // loading half resolved by the rule below and this one not (a short wire draped over another, in
-      // air, e = 1: 3847 J -> 4e8 J in 4 s; docs/theory.md 8.3).
+      // air, e = 1: 3847 J -> 7e8 J in 3.5 s; docs/theory.md 8.3).
       // Without a square root: time to the kink (L^2 - L0^2) / (-2 L L') ~ (L - L0) / (-L') to O(strain).
       const double toKink = (length2 - el.restLength * el.restLength) / (-2.0 * lengthening);
       if (toKink >= horizon) continue;
