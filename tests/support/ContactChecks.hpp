@@ -11,7 +11,8 @@
 namespace tangle::test {
 
 /// Every impact's energy mass lies between the reduced mass of one element of each line at the impact
-/// point and the reduced mass of the two whole lines with their added mass (issue 29: the clash report's
+/// point and the reduced mass of the two whole lines with their added mass (none when a line is held;
+/// docs/theory.md 9.10) (issue 29: the clash report's
 /// impact energy must be an energy an engineer can sign; outside these bounds it is an artefact of the
 /// measurement, as the 0.014 kg and 4.1e6 kg "effective masses" the issue found), and no impact carries
 /// an energy warning (ContactEvents.hpp: Eq. 5 and the absorbed work agree within a factor 2).

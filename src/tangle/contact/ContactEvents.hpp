@@ -94,7 +94,7 @@ struct ContactEvent {
   double workMass = 0.0;             ///< 2 phaseWork / v0^2 [kg] (NaN without approach speed)
   double eventEq5Mass = 0.0;         ///< the paper's Eq. 5 over the whole event [kg]
   double massLowerBound = 0.0;       ///< reduced pair mass of one element of each line at the start [kg]
-  double massUpperBound = 0.0;       ///< reduced pair mass of the two whole lines with added mass [kg]
+  double massUpperBound = 0.0;       ///< reduced pair mass of the two whole lines with added mass; +inf if either is held [kg]
   std::string energyWarning;         ///< empty, or why the impact energy is doubtful (file comment)
   double effectiveMassA = 0.0;     ///< Eq. 5: impulse / normal velocity change of line A at the point [kg] (NaN unless an impact)
   double effectiveMassB = 0.0;     ///< Eq. 5 for line B [kg]

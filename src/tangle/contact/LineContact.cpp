@@ -33,6 +33,11 @@ double reducedMass(double a, double b) {
   if (std::isinf(b)) return a;
   return a + b > 0.0 ? a * b / (a + b) : 0.0;
 }
+/// Upper bound of the mass an impact between two lines engages [kg]: the reduced mass of two free lines,
+/// unbounded (+inf) when either is held (LineContact's constructor).
+double pairMassBound(double a, double b) {
+  return std::isinf(a) || std::isinf(b) ? std::numeric_limits<double>::infinity() : reducedMass(a, b);
+}
 }  // namespace
 
 LineContact::LineContact(const model::Model& model, const model::ContactSpec& spec, double timeStep)
@@ -63,6 +68,14 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
   }
   for (const model::NodeAttachment& a : model.attachments())
     m_lineMassWithAdded[model.lineOfNode(a.node)] += a.spec.addedMass;
+  // A line held at an end (anchored, fixed, pinned, on a vessel) passes impulse on to its support and
+  // springs back from it: the mass an impact engages on a held line has no bound (a bar striking a lump on
+  // a taut wire engages more than its own mass when the wire throws the lump back, ImpactEnergyTest).
+  for (int l = 0; l < nLines; ++l) {
+    const model::LineSpec& ls = *model.lines()[l].spec;
+    if (ls.endA.kind != model::EndKind::Free || ls.endB.kind != model::EndKind::Free)
+      m_lineMassWithAdded[l] = kInf;
+  }
   m_allowed.assign(nLines, std::vector<bool>(nLines, false));
   if (spec.pairs.empty()) {
     for (int a = 0; a < nLines; ++a)
@@ -764,7 +777,7 @@ void LineContact::commitStep(model::State& state, double dt) {
     spot.minRadius = std::min(m_radius[c.elementA], m_radius[c.elementB]);
     spot.elementLength = std::max(elements[c.elementA].restLength, elements[c.elementB].restLength);
     spot.elementPairMass = reducedMass(elementMass(c.elementA), elementMass(c.elementB));
-    spot.linePairMass = reducedMass(m_lineMassWithAdded[c.lineA], m_lineMassWithAdded[c.lineB]);
+    spot.linePairMass = pairMassBound(m_lineMassWithAdded[c.lineA], m_lineMassWithAdded[c.lineB]);
     if (c.track >= 0 && !seen[c.track]) {
       seen[c.track] = true;
       TrackedContact tr = m_tracked[c.track];
@@ -878,7 +891,7 @@ void LineContact::commitStep(model::State& state, double dt) {
     spot.minRadius = std::min(m_radius[smp.elementA], m_radius[smp.elementB]);
     spot.elementLength = std::max(elements[smp.elementA].restLength, elements[smp.elementB].restLength);
     spot.elementPairMass = reducedMass(elementMass(smp.elementA), elementMass(smp.elementB));
-    spot.linePairMass = reducedMass(m_lineMassWithAdded[smp.lineA], m_lineMassWithAdded[smp.lineB]);
+    spot.linePairMass = pairMassBound(m_lineMassWithAdded[smp.lineA], m_lineMassWithAdded[smp.lineB]);
     spots.push_back(spot);
   }
   m_eventTracker.update(state.time, dt, dynamic, spots,

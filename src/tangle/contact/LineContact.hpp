@@ -283,7 +283,7 @@ class LineContact final : public solver::LoadContributor {
   std::vector<bool> m_lineEnabled;
   std::vector<std::vector<bool>> m_allowed;
   std::vector<double> m_lineStiffness;      // automatic stiffness per line [N/m]
-  std::vector<double> m_lineMassWithAdded;  // structural + attachment + normal added mass per line [kg]
+  std::vector<double> m_lineMassWithAdded;  // structural + attachment + normal added mass per line, +inf if held [kg]
   std::vector<double> m_radius;             // contact radius per element [m]
   double m_maxRadius = 0.0;                 // largest of m_radius [m]
   BroadPhase m_broadPhase;
