@@ -7,7 +7,9 @@
 ///
 /// Clearance at node i of line A to line B: min over the elements of B of the distance from x_i to the
 /// element's chord, minus the contact radii (half the contact diameters of node i and of the nearer
-/// node of the element); negative when the surfaces overlap. Written to clearance/envelope.csv and
+/// node of the element); negative when the surfaces overlap. Where B is a beam and x_i is within a
+/// quarter element of its surface, the distance is taken to B's smooth centreline instead (on the
+/// nearest element and its neighbours), the curve contact measures (SmoothCentreline.hpp). Written to clearance/envelope.csv and
 /// clearance/summary.json; a few lines for the terminal.
 
 #include <array>

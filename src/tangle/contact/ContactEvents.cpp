@@ -143,7 +143,13 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.lumpedMassA = e.lumpedMassB = 0.0;
       e.impact = dynamic && e.impactVelocity > m_impactVelocity;
       e.sustained = !dynamic;
-      e.phaseOpen = dynamic;
+      // An impact phase needs an approach: a contact that comes back at rest (a resting contact that
+      // breathes) has none, and its work against a separating motion would read as negative energy.
+      e.phaseOpen = dynamic && e.impactVelocity > 0.0;
+      if (!e.phaseOpen) {
+        e.phaseEnd = "no approach";
+        e.phaseEndTime = time;
+      }
       e.lastRelativeVelocity = -e.impactVelocity;
       e.massLowerBound = s.elementPairMass;
       e.massUpperBound = s.linePairMass;

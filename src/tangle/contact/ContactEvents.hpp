@@ -86,7 +86,7 @@ struct ContactEvent {
   std::string energyMassBasis;
   // Impact phase (see the file comment).
   double phaseEndTime = 0.0;         ///< end of the impact phase [s]
-  std::string phaseEnd;              ///< "reversed", "separated", "sustained" or "run end"
+  std::string phaseEnd;              ///< "reversed", "separated", "sustained", "run end", or "no approach" (no impact phase)
   double phaseImpulse = 0.0;         ///< impulse of the contact force over the phase [N s]
   double phaseVelocityChange = 0.0;  ///< change of the relative normal velocity over the phase [m/s]
   double phaseWork = 0.0;            ///< work of the contact force against the relative normal motion [J]

@@ -106,6 +106,7 @@ struct TrackedContact {
   double impactVelocity = 0.0;        ///< relative normal approach speed at first contact [m/s] (>= 0)
   double impulse = 0.0;               ///< integral of the normal force over time so far [N s]
   double pairMass = 0.0;              ///< effective pair mass used by the dashpot [kg]
+  double firstPairMass = 0.0;         ///< the lumped pair mass at first contact [kg]
   double peakForce = 0.0;             ///< [N]
   double lastForce = 0.0;             ///< force at the last committed state [N]
   double lastGapRate = 0.0;           ///< [m/s]
@@ -199,7 +200,8 @@ class LineContact final : public solver::LoadContributor {
   /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order.
   std::vector<std::array<int, 2>> allowedPairs() const;
   /// Minimum clearance between two lines at a state: (clearance [m], arcA [m], arcB [m]). The clearance is
-  /// the gap between the surfaces (negative in contact); +inf when farther than the clearance margin.
+  /// the gap between the surfaces (negative in contact; beams near contact on their smooth centrelines, as
+  /// contact measures them); +inf when farther than the clearance margin.
   std::array<double, 3> clearance(const model::State& state, int lineA, int lineB) const;
   const model::ContactSpec& spec() const { return m_spec; }
 
