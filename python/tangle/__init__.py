@@ -29,7 +29,7 @@ from ._tangle import ConvergenceError, ModelError, __version__  # noqa: F401
 from . import _tangle
 
 __all__ = ["Model", "StaticResults", "DynamicResults", "ModelError", "ConvergenceError", "Interrupted",
-           "__version__"]
+           "DynamicsFailed", "__version__"]
 
 
 class Interrupted(KeyboardInterrupt):
@@ -37,6 +37,19 @@ class Interrupted(KeyboardInterrupt):
 
     ``results`` holds the DynamicResults up to the step where the run stopped; ``__cause__`` is the
     exception that stopped it.
+    """
+
+    def __init__(self, message: str, results: "DynamicResults"):
+        super().__init__(message)
+        self.results = results
+
+
+class DynamicsFailed(ConvergenceError):
+    """A dynamic run stopped before its end (the solver's diagnosis is the message: a step that does not
+    converge even at the minimum time step, lines passing through each other, ...).
+
+    ``results`` holds the DynamicResults up to the last accepted step, as the command line keeps every
+    result already computed.
     """
 
     def __init__(self, message: str, results: "DynamicResults"):
@@ -186,7 +199,8 @@ class Model:
     def run_dynamics(self, progress: Optional[Callable[[float, float], Any]] = None) -> DynamicResults:
         """Statics, then the dynamic run of the model's dynamics block. ``progress(time_s, duration_s)`` is
         called at every output time. Ctrl-C stops the run at the next step and raises Interrupted, whose
-        ``results`` hold everything up to then."""
+        ``results`` hold everything up to then; a run the solver cannot finish raises DynamicsFailed
+        (a ConvergenceError) with the diagnosis and the results up to the last accepted step."""
         sim = self.simulation()
         sim.run_statics()
         return sim.run_dynamics(progress)
@@ -221,4 +235,6 @@ class Simulation:
         results = DynamicResults(**d)
         if error is not None:
             raise Interrupted(results.message, results) from error
+        if not results.completed:
+            raise DynamicsFailed(results.message, results)
         return results

@@ -32,8 +32,8 @@ set:
   output.vtk: false
 cases:
   - name: intact
-  - name: broken
-    set: {{"lines[mooring1].sections[0].length": -5}}
+  - name: broken                               # a valid model whose dynamics cannot get past t = 0
+    set: {{"dynamics.max_iterations": 1, "dynamics.min_time_step": 0.01}}
 parameters:
   - {{name: heading, key: environment.current.azimuth, values: [0, 90]}}
   - {{name: current, key: environment.current.speed, values: [0.5, 1.5]}}
@@ -71,8 +71,8 @@ def check_rows(table: dict[str, dict[str, str]]) -> None:
             assert ok["heading"] == heading and ok["current"] == current
             bad = table[f"broken_heading={heading}_current={current}"]
             assert bad["status"].startswith("failed"), bad
-            assert bad["exit_code"] == "1"
-            assert "length" in bad["message"], bad
+            assert bad["exit_code"] == "2"
+            assert "did not converge" in bad["message"], bad
 
 
 def test_local_processes_and_rerun(batch_file: Path, tmp_path: Path) -> None:
@@ -127,6 +127,12 @@ def test_bad_batch_file_names_file_and_key(tmp_path: Path) -> None:
     r = run([CLI, "batch", str(p), "-o", str(tmp_path / "out")])
     assert r.returncode == 1
     assert str(p) in r.stderr and "nosuchline" in r.stderr and "mooring1" in r.stderr, r.stderr
+    assert not (tmp_path / "out").exists()
+    # A typo in a key path is refused before any case runs (issue 30: every case failed with "bad input").
+    p.write_text(f"model: {BASE}\nparameters:\n  - {{name: h, key: environment.curent.azimuth, values: [0, 90]}}\n")
+    r = run([CLI, "batch", str(p), "-o", str(tmp_path / "out")])
+    assert r.returncode == 1
+    assert str(p) in r.stderr and "curent" in r.stderr and "h=0" in r.stderr, r.stderr
     assert not (tmp_path / "out").exists()
     p.write_text(f"model: {BASE}\nparameter: []\n")
     r = run([CLI, "batch", str(p)])

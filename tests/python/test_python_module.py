@@ -194,3 +194,26 @@ def test_the_gil_is_released_during_a_run(mooring: tangle.Model) -> None:
         count += 1
     worker.join()
     assert count > 10000
+
+
+def test_a_run_that_stops_early_raises_with_its_results() -> None:
+    # A wire whose end is thrown 40 m at 1 Hz, with no room to cut the step back (min_time_step =
+    # time_step): the step cannot converge. The run must raise, not return with completed = False.
+    m = tangle.Model({
+        "title": "a run that cannot finish",
+        "environment": {"water_depth": 100},
+        "line_types": [{"name": "wire", "outer_diameter": 0.05, "mass_per_length": 10, "axial_stiffness": 1e8}],
+        "lines": [{"name": "wire",
+                   "end_a": {"type": "anchored", "position": [0, 0, -100]},
+                   "end_b": {"type": "pinned", "position": [90, 0, -10],
+                             "motion": {"amplitude": [40, 0, 0], "period": 1}},
+                   "sections": [{"type": "wire", "length": 140, "elements": 20}]}],
+        "dynamics": {"duration": 5, "time_step": 0.1, "min_time_step": 0.1, "ramp_time": 0},
+    }, "stops early (test)")
+    with pytest.raises(tangle.DynamicsFailed) as e:
+        m.run_dynamics()
+    assert isinstance(e.value, tangle.ConvergenceError)
+    partial = e.value.results
+    assert not partial.completed and not partial.interrupted
+    assert partial.message and str(e.value) == partial.message
+    assert partial.time_s[-1] < 5.0

@@ -324,8 +324,13 @@ time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observe
     dynamics.setStepValidator([this](const model::State& before, const model::State& after) {
       return m_contact->stepRejection(before, after);
     });
-    dynamics.setStepHook([this](model::State& s, double dt) { m_contact->commitStep(s, dt); });
   }
+  // Path-dependent states of an accepted step: the seabed friction anchors (carried over from statics,
+  // so a model with no time-varying load stays at its static state) and the contact's.
+  dynamics.setStepHook([this](model::State& s, double dt) {
+    m_assembler->commitStep(s);
+    if (m_contact) m_contact->commitStep(s, dt);
+  });
   // The run advances m_state itself, so snapshot() inside the observer sees the output state.
   const time::DynamicResult result = dynamics.run(m_state);
   if (m_contact) m_contact->finish(m_state.time);

@@ -207,6 +207,17 @@ class BatchReader {
         if (done) break;
       }
     }
+    // Every case is read as a model now, before anything runs: a key path with a typo
+    // (environment.curent.azimuth creates a map the reader does not know) or a value out of range would
+    // otherwise start every case and fail each with "bad input".
+    for (const BatchCase& c : plan.cases) {
+      try {
+        (void)c.model.spec();
+      } catch (const InputError& e) {
+        throw InputError(m_file, 0, "cases",
+                         fmt::format("every case to be a valid model; case '{}' is not: {}", c.name, e.what()));
+      }
+    }
     return plan;
   }
 

@@ -39,9 +39,9 @@ struct BatchPlan {
   std::vector<BatchCase> cases;
 };
 
-/// Reads a batch file and expands its cases. Key paths are checked against the base model here (a path
-/// that does not exist in it is an error of the batch file); the models themselves are checked by the
-/// reader when each case runs, so one invalid case fails alone.
+/// Reads a batch file and expands its cases. Key paths through lists are checked against the base model
+/// as they are applied; then every case is read by the model reader, so a key or value the reader refuses
+/// (a typo in a path creates a key it does not know) is an error of the batch file before anything runs.
 /// @throws InputError naming the batch file, the line, the key and what was expected
 BatchPlan readBatchPlan(const std::string& batchFile);
 

@@ -477,13 +477,16 @@ class NameRegistry {
 void readTitle(const Value& v, ModelSpec& spec) { spec.title = v.text("a title (text)"); }
 
 void readSeabed(const Value& v, model::SeabedSpec& seabed) {
-  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity", "shear_stiffness"});
+  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity", "shear_stiffness",
+                  "friction_model"});
   const model::SeabedSpec d;
   seabed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positiveUpTo(1.0e12));
   seabed.damping = m.number("damping", d.damping, nonNegativeUpTo(1.0e12));
   seabed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegativeUpTo(10.0));
   seabed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positiveUpTo(10.0));
   seabed.shearStiffness = m.number("shear_stiffness", seabed.normalStiffness, positiveUpTo(1.0e12));
+  if (const std::optional<Value> model = m.find("friction_model"))
+    seabed.elasticFriction = model->choice<bool>({{"elastic", true}, {"viscous", false}});
 }
 
 /// A list of levels {z, speed, azimuth}, or one map {speed, azimuth} for a uniform current (stored as a
@@ -821,10 +824,11 @@ std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength,
 }
 
 model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& names) {
-  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments", "start_shape"});
+  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments", "start_shape", "span_check"});
   model::LineSpec line;
   line.name = names.add(m);
   line.contact = m.boolean("contact", line.contact);
+  const bool spanCheck = m.boolean("span_check", true);
   const std::string endExpectation = "a map {type, position} describing the end";
   line.endA = readEnd(m.get("end_a", endExpectation), spec);
   line.endB = readEnd(m.get("end_b", endExpectation), spec);
@@ -839,25 +843,40 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
   if (const std::optional<Value> shape = m.find("start_shape"))
     line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
 
-  // Ends clearly too far apart for the line's length (vessel ends are in vessel axes: not checked here).
+  // Ends clearly too far apart for the line's length: a mistake in the positions or lengths (a line
+  // stretched by half its length ran to its end with 1.25 GN of tension and only a warning). Vessel ends
+  // are placed with their vessel's initial position and heading. `span_check: false` accepts it.
   using model::EndKind;
-  if (line.endA.kind != EndKind::Vessel && line.endB.kind != EndKind::Vessel) {
-    double span = (line.endB.position - line.endA.position).norm();
+  const auto globalEnd = [&](const model::EndSpec& end) -> std::optional<Vec3> {
+    if (end.kind != EndKind::Vessel) return end.position;
+    for (const model::VesselSpec& vessel : spec.vessels) {
+      if (vessel.name != end.vessel) continue;
+      const double c = std::cos(vessel.heading), s = std::sin(vessel.heading);
+      return Vec3(vessel.position.x() + c * end.position.x() - s * end.position.y(),
+                  vessel.position.y() + s * end.position.x() + c * end.position.y(),
+                  vessel.position.z() + end.position.z());
+    }
+    return std::nullopt;  // an unknown vessel is reported where the end is read
+  };
+  const std::optional<Vec3> a = globalEnd(line.endA), b = globalEnd(line.endB);
+  if (spanCheck && a && b) {
+    double span = (*b - *a).norm();
     if (!line.startShape.empty()) {
       // Through the start shape's points: the path the line must stretch along.
-      span = (line.startShape.front().position - line.endA.position).norm() +
-             (line.endB.position - line.startShape.back().position).norm();
+      span = (line.startShape.front().position - *a).norm() + (*b - line.startShape.back().position).norm();
       for (std::size_t i = 1; i < line.startShape.size(); ++i)
         span += (line.startShape[i].position - line.startShape[i - 1].position).norm();
     }
+    const bool vesselEnd = line.endA.kind == EndKind::Vessel || line.endB.kind == EndKind::Vessel;
     if (span > kMaxEndSpanOverLength * length)
       v.fail(fmt::format(
-          "line '{}': its ends are {} m apart{} but its unstretched length is only {} m (sum of the "
-          "sections); at most {} x the length ({} m) is accepted: check the end positions{} and section "
-          "lengths",
-          line.name, roundedText(span), line.startShape.empty() ? "" : " along its start_shape points",
-          roundedText(length), kMaxEndSpanOverLength, roundedText(kMaxEndSpanOverLength * length),
-          line.startShape.empty() ? "" : ", the start shape"));
+          "line '{}': its ends are {} m apart{}{} but its unstretched length is only {} m (sum of the "
+          "sections); at most {} x the length ({} m) is accepted: check the end positions{}{} and section "
+          "lengths, or set span_check: false for a line meant to start stretched that far",
+          line.name, roundedText(span), vesselEnd ? " (vessel ends at the vessels' initial positions)" : "",
+          line.startShape.empty() ? "" : " along its start_shape points", roundedText(length),
+          kMaxEndSpanOverLength, roundedText(kMaxEndSpanOverLength * length),
+          vesselEnd ? ", the vessel positions" : "", line.startShape.empty() ? "" : ", the start shape"));
   }
   return line;
 }

@@ -22,8 +22,13 @@ struct SeabedSpec {
   double normalStiffness = 1.0e5;  ///< penalty stiffness per unit length of line [N/m/m]
   double damping = 0.0;            ///< normal damping per unit length of line [N s/m/m]
   double frictionCoefficient = 0.0;  ///< Coulomb friction coefficient mu [-] (statics and dynamics)
-  double frictionVelocity = 0.01;  ///< dynamics: regularisation velocity, full friction above it [m/s]
-  double shearStiffness = 0.0;     ///< statics: friction spring per unit length of line [N/m/m]; 0: = normalStiffness
+  double frictionVelocity = 0.01;  ///< viscous model, dynamics: regularisation velocity, full friction above it [m/s]
+  double shearStiffness = 0.0;     ///< friction spring per unit length of line [N/m/m]; 0: = normalStiffness
+  /// true (`friction_model: elastic`, the default): in statics and dynamics the friction is a spring to the
+  /// node's anchor point capped at mu N, the anchors carried from statics into dynamics and committed
+  /// with every accepted step; false (`viscous`): in dynamics the velocity-regularised Coulomb law
+  /// mu N v / max(|v|, friction_velocity) instead, which holds nothing at rest.
+  bool elasticFriction = true;
 };
 
 /// One level of a piecewise-linear current profile.

@@ -34,7 +34,7 @@ SeabedNodeReaction FlatSeabed::reaction(const Vec3& position, const Vec3& veloci
     }
   }
   r.force.z() = normal;
-  if (dynamic && m_spec.frictionCoefficient > 0.0 && normal > 0.0) {
+  if (dynamic && !m_spec.elasticFriction && m_spec.frictionCoefficient > 0.0 && normal > 0.0) {
     const Vec3 vt(velocity.x(), velocity.y(), 0.0);
     const double speed = vt.norm();
     const double mu = m_spec.frictionCoefficient;
@@ -70,7 +70,7 @@ Vec3 FlatSeabed::reactionForce(const Vec3& position, const Vec3& velocity, doubl
     normal = damped > 0.0 ? damped : 0.0;
   }
   Vec3 force(0.0, 0.0, normal);
-  if (dynamic && m_spec.frictionCoefficient > 0.0 && normal > 0.0) {
+  if (dynamic && !m_spec.elasticFriction && m_spec.frictionCoefficient > 0.0 && normal > 0.0) {
     const Vec3 vt(velocity.x(), velocity.y(), 0.0);
     const double speed = vt.norm();
     const double mu = m_spec.frictionCoefficient;

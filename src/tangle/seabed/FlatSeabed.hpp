@@ -41,7 +41,8 @@ class FlatSeabed {
   /// @param radius contact radius (half the contact diameter) [m]
   /// @param tangent unit line tangent at the node (for the axial/lateral split of friction; friction is
   ///        isotropic in this version, the tangent is reserved)
-  /// @param dynamic include damping and friction
+  /// @param dynamic include damping, and the velocity-regularised friction unless the seabed's friction is
+  ///        elastic (then the caller adds staticFriction(), in statics and dynamics alike)
   SeabedNodeReaction reaction(const Vec3& position, const Vec3& velocity, double tributaryLength, double radius,
                               bool dynamic) const;
 

@@ -130,11 +130,31 @@ void Assembler::beginStatics(const model::State& state) {
   for (LoadContributor* c : m_contributors) c->beginStatic(state);
 }
 
-void Assembler::commitStatics(const model::State& state) {
-  for (int n = 0; n < m_model->nodeCount(); ++n) {
+void Assembler::commitStep(const model::State& state) {
+  // The anchors of the elastic seabed friction at the accepted state become the committed ones; a
+  // rejected step never gets here, so its trial anchors are dropped. They are evaluated here, at that
+  // state, for every node: the last assembly of the step may have been at an earlier iterate, or of a
+  // part only (Newton on parts leaves the converged blocks out), whose anchors would be stale.
+  const auto& seabed = m_model->environment().seabed;
+  if (!(seabed.frictionCoefficient > 0.0 && seabed.elasticFriction)) return;
+  AssemblyRequest request;
+  request.time = state.time;
+  request.dynamic = true;
+  request.wantMatrix = false;
+  thread_local VecX scratch;
+  scratch.setZero(m_model->dofs().fullDofCount());
+  addSeabed(state, request, scratch, nullptr, nullptr);
+  commitAnchors(state);
+}
+
+void Assembler::commitAnchors(const model::State& state) {
+  for (int n = 0; n < m_model->nodeCount(); ++n)
     m_committedXY[n] = Vec2(state.position[n].x(), state.position[n].y());
-  }
   m_anchor = m_trialAnchor;
+}
+
+void Assembler::commitStatics(const model::State& state) {
+  commitAnchors(state);
   for (LoadContributor* c : m_contributors) c->commitStatic(state);
 }
 
@@ -271,7 +291,10 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
   const seabed::FlatSeabed bed(env.seabed, env.waterDepth);
   const auto& trib = m_model->tributaryLength();
   const auto& diameter = m_model->nodeContactDiameter();
-  const bool staticFriction = !request.dynamic && env.seabed.frictionCoefficient > 0.0;
+  // The elastic friction (a spring to the node's anchor capped at mu N) in statics, and in dynamics too
+  // unless the seabed's friction is viscous (FlatSeabed).
+  const bool staticFriction =
+      env.seabed.frictionCoefficient > 0.0 && (!request.dynamic || env.seabed.elasticFriction);
   forEachIndex(nodes, static_cast<std::size_t>(m_model->nodeCount()), [&](std::size_t node) {
     const int n = static_cast<int>(node);
     const int d = dofs.firstDof(n);

@@ -116,6 +116,9 @@ class Assembler {
   /// A statics load increment converged at `state`: commits the friction anchors (the trial ones of the
   /// last assembly) and forwards LoadContributor::commitStatic.
   void commitStatics(const model::State& state);
+  /// Commits the path-dependent state of an accepted dynamic step (the seabed friction anchors; the
+  /// contributors' own states are committed by their owners).
+  void commitStep(const model::State& state);
 
   /// F (full DOFs) and, if request.wantMatrix and matrix is given, H (equations). `force` is resized and
   /// zeroed; `matrix` is cleared and assembled only when request.wantMatrix (else left as it was).
@@ -203,6 +206,8 @@ class Assembler {
   const model::Model& model() const { return *m_model; }
 
  private:
+  /// Makes the trial friction anchors of the last assembly the committed ones.
+  void commitAnchors(const model::State& state);
   // Every term of F (of M a) in a fixed order, of the whole model or (with `part`) of a part: assemble and
   // assemblePart (addMass and addPartMass) share it.
   void addAll(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix,

@@ -10,11 +10,21 @@ namespace tangle::solver {
 
 namespace {
 
-/// Force vector of an element at its mid-point [N]: effective tension along the chord from node 1 to 2.
-Vec3 elementForce(const model::State& state, const model::LineElement& el, double tension) {
+/// Section force of an element [N]: the force the node-2 side exerts on the node-1 side across a cut,
+/// constant along the element (its loads are lumped at the nodes). A bar carries the effective tension
+/// along its chord; a beam also the shear that its bending moments' gradient implies. With the section
+/// moment M(x) of BeamSectionForces (exerted on the node-1 side by the node-2 side), the moment balance of
+/// the piece [0, x] of the element, -M1 + M(x) + x e x F = 0, gives e x F = -(M2 - M1) / L, whose part
+/// across the chord e is the shear F_s = e x (M2 - M1) / L (L the current chord length).
+Vec3 elementForce(const model::State& state, const model::LineElement& el, double tension,
+                  const element::BeamSectionForces* beam) {
   const Vec3 chord = state.position[el.node2] - state.position[el.node1];
   const double length = chord.norm();
-  return length > 0.0 ? Vec3(tension * chord / length) : Vec3::Zero();
+  if (!(length > 0.0)) return Vec3::Zero();
+  const Vec3 e = chord / length;
+  Vec3 force = tension * e;
+  if (beam) force += e.cross(beam->moment2 - beam->moment1) / length;
+  return force;
 }
 
 /// True when a point load (attachment) sits at `node`.
@@ -25,12 +35,15 @@ bool hasAttachment(const model::Model& model, int node) {
 
 /// Force vector at an end point [N], pointing from node 1 to node 2 of the end element (into the line
 /// at end A, out of it at end B), extrapolated as documented in LineSnapshot::endTensionA.
-/// `end` is the end element, `inner` the one next to it (or nullptr).
+/// `end` is the end element, `inner` the one next to it (or nullptr); `endBeam`, `innerBeam` their beam
+/// section forces (nullptr for bars).
 Vec3 endPointForce(const model::Model& model, const model::State& state, const model::LineElement& end,
-                   double endTension, const model::LineElement* inner, double innerTension, int sharedNode) {
-  const Vec3 fEnd = elementForce(state, end, endTension);
+                   double endTension, const element::BeamSectionForces* endBeam,
+                   const model::LineElement* inner, double innerTension,
+                   const element::BeamSectionForces* innerBeam, int sharedNode) {
+  const Vec3 fEnd = elementForce(state, end, endTension, endBeam);
   if (!inner || inner->type != end.type || hasAttachment(model, sharedNode)) return fEnd;
-  const Vec3 fInner = elementForce(state, *inner, innerTension);
+  const Vec3 fInner = elementForce(state, *inner, innerTension, innerBeam);
   // Mid-points are 0.5 (l_end + l_inner) apart; the end point is 0.5 l_end beyond the end mid-point.
   const double gap = 0.5 * (end.restLength + inner->restLength);
   return fEnd + (fEnd - fInner) * (0.5 * end.restLength / gap);
@@ -154,18 +167,30 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const int last = line.firstElement + line.elementCount - 1;
       const bool two = line.elementCount >= 2;
       // End A: the force on what is at end A points from it into the line (node 1 -> node 2).
-      s.endTensionForceA =
-          endPointForce(model, state, els[first], tension[first], two ? &els[first + 1] : nullptr,
-                        two ? tension[first + 1] : 0.0, line.firstNode + 1);
+      const auto beamOf = [&](int e) { return els[e].beam ? &beamForces[e] : nullptr; };
+      s.endTensionForceA = endPointForce(model, state, els[first], tension[first], beamOf(first),
+                                         two ? &els[first + 1] : nullptr, two ? tension[first + 1] : 0.0,
+                                         two ? beamOf(first + 1) : nullptr, line.firstNode + 1);
       // End B: the element force points from node 1 to node 2, out of the line; the line pulls end B back.
-      s.endTensionForceB =
-          -endPointForce(model, state, els[last], tension[last], two ? &els[last - 1] : nullptr,
-                         two ? tension[last - 1] : 0.0, line.lastNode() - 1);
+      s.endTensionForceB = -endPointForce(model, state, els[last], tension[last], beamOf(last),
+                                          two ? &els[last - 1] : nullptr, two ? tension[last - 1] : 0.0,
+                                          two ? beamOf(last - 1) : nullptr, line.lastNode() - 1);
       // A compressed end element (a line pushed on) gives a negative end tension.
       const double signA = s.tension.front() < 0.0 ? -1.0 : 1.0;
       const double signB = s.tension.back() < 0.0 ? -1.0 : 1.0;
-      s.endTensionA = signA * s.endTensionForceA.norm();
-      s.endTensionB = signB * s.endTensionForceB.norm();
+      // The end tension is the axial quantity (effective tension): the same extrapolation without the
+      // beams' shear. For a bar line the two are one vector.
+      const bool beams = els[first].beam || els[last].beam;
+      const Vec3 axialA = !beams ? s.endTensionForceA
+                                 : endPointForce(model, state, els[first], tension[first], nullptr,
+                                                 two ? &els[first + 1] : nullptr, two ? tension[first + 1] : 0.0,
+                                                 nullptr, line.firstNode + 1);
+      const Vec3 axialB = !beams ? s.endTensionForceB
+                                 : endPointForce(model, state, els[last], tension[last], nullptr,
+                                                 two ? &els[last - 1] : nullptr, two ? tension[last - 1] : 0.0,
+                                                 nullptr, line.lastNode() - 1);
+      s.endTensionA = signA * axialA.norm();
+      s.endTensionB = signB * axialB.norm();
     }
     if (!all) continue;
     // Touchdown: last node (from end A) of the first grounded stretch that is followed by suspended line.

@@ -22,16 +22,18 @@ struct LineSnapshot {
   std::vector<double> torque;        ///< torsional moment about the line axis [N m] (0 for cables)
   std::vector<Vec3> rotation;        ///< orientation of the node triad as a rotation vector from the global
                                      ///< axes [deg] (zero for cable nodes, which carry no rotation)
-  /// End tension: the effective tension at the end point itself [N], the one definition used by the
+  /// End tension: the effective tension at the end point itself [N] (axial: beams' shear excluded), the one definition used by the
   /// terminal, summary.json and end_forces.csv. The element force vectors (tension along each chord) are
   /// taken at the element mid-points and extrapolated linearly in unstretched arc length to the end
   /// node (exact for a uniform catenary, whose force vector is linear in arc length); the element next
   /// to it is used only when no point load sits between the two (same line type, no attachment).
   double endTensionA = 0.0;
   double endTensionB = 0.0;
-  /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N]:
-  /// the extrapolated force vector above, pointing from the end into the line; |endTensionForceA| =
-  /// endTensionA. At a free end with nothing attached both are ~0.
+  /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N],
+  /// pointing from the end into the line: the section force of the end elements extrapolated as above,
+  /// with the shear of beam lines (e x (M2 - M1) / L per element, LineResults.cpp) as well as the
+  /// tension; for bar lines |endTensionForceA| = endTensionA. Equal to minus the support reaction
+  /// endForceA less the loads lumped on the end node itself. At a free end with nothing attached ~0.
   Vec3 endTensionForceA = Vec3::Zero();
   Vec3 endTensionForceB = Vec3::Zero();
   /// Support reaction at the end node: minus the out-of-balance force there, global axes [N]. Differs from

@@ -752,6 +752,22 @@ TEST(ModelReaderErrors, EndsFartherApartThanTheLineLength) {
                   "line 'moor': its ends are 685.93 m apart but its unstretched length is only 500 m");
 }
 
+TEST(ModelReaderErrors, VesselEndFartherThanTheLineLength) {
+  // Issue 30: a vessel end 1.45 x the line's length from the anchor ran to its end with 49.85 % strain.
+  const std::string vessel = "vessels:\n  - name: ship\n    mode: fixed\n    position: [-400, 0, 0]\n    heading: 90\n";
+  std::string yaml = edited(kBaseModel, "lines:\n", vessel + "lines:\n");
+  yaml = edited(yaml, "      type: fixed\n      position: [20, 0, -10]",
+                "      type: vessel\n      vessel: ship\n      position: [0, -100, -10]");
+  yaml = edited(yaml, "      motion:\n        amplitude: [5, 0, 0]\n        period: 10\n", "");
+  // The fairlead is 100 m to starboard of a ship heading +y: at (-300, 0, -10), 705.762 m from the anchor.
+  expectInputError(yaml, "- name: moor", "lines[moor]",
+                   "line 'moor': its ends are 705.762 m apart (vessel ends at the vessels' initial positions)");
+  // Accepted when the user says so.
+  const ModelSpec spec = readModelString(edited(yaml, "    contact: true\n", "    contact: true\n    span_check: false\n"),
+                                         kSource);
+  EXPECT_EQ(spec.lines.front().endB.kind, model::EndKind::Vessel);
+}
+
 TEST(ModelReaderErrors, HarmonicMotionAndTableTogether) {
   expectEditError("        period: 10\n", "        period: 10\n        table: [[0, 0, 0, 0], [1, 0, 0, 0]]\n",
                   "amplitude: [5", "lines[moor].end_b.motion.amplitude", "cannot be combined with 'table'");
