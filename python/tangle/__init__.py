@@ -44,6 +44,18 @@ class Interrupted(KeyboardInterrupt):
         self.results = results
 
 
+def _at_arc_length(arc: np.ndarray, values: np.ndarray, arc_length_m: float, line: str) -> np.ndarray:
+    """``values`` [..., node] at an unstretched arc length [m], linear between the two nodes around it
+    (the last axis is the node axis; a node's value is exact at the node)."""
+    arc = np.asarray(arc, dtype=float)
+    if not (arc[0] - 1e-9 <= arc_length_m <= arc[-1] + 1e-9):
+        raise ValueError(f"arc length {arc_length_m} m is outside line {line!r} (0 to {arc[-1]:g} m)")
+    i = int(np.clip(np.searchsorted(arc, arc_length_m, side="right") - 1, 0, len(arc) - 2))
+    w = (arc_length_m - arc[i]) / (arc[i + 1] - arc[i])
+    values = np.asarray(values)
+    return (1.0 - w) * values[..., i] + w * values[..., i + 1]
+
+
 class DynamicsFailed(ConvergenceError):
     """A dynamic run stopped before its end (the solver's diagnosis is the message: a step that does not
     converge even at the minimum time step, lines passing through each other, ...).
@@ -76,6 +88,18 @@ class StaticResults:
     message: str
     warnings: list[str]
     lines: dict[str, dict[str, Any]]
+
+    def at(self, line: str, quantity: str, arc_length_m: float) -> Any:
+        """A per-node result (``effective_tension_N``, ``bending_moment_Nm``, ``curvature_1_per_m``,
+        ``torque_Nm``, ``position_m``) at an unstretched arc length from end A [m], interpolated linearly
+        between the nodes around it (as OrcFxAPI's results with an arc length)."""
+        d = self.lines[line]
+        if quantity not in d:
+            raise KeyError(f"no result {quantity!r} for line {line!r}")
+        values = np.asarray(d[quantity])
+        if quantity == "position_m":
+            return _at_arc_length(d["arc_length_m"], values.T, arc_length_m, line)
+        return float(_at_arc_length(d["arc_length_m"], values, arc_length_m, line))
 
 
 @dataclass
@@ -111,6 +135,19 @@ class DynamicResults:
     newton_iterations_on_parts: int = 0
     matrix_refreshes: int = 0
     converged_blocks_left_out: int = 0
+
+    def time_history(self, line: str, quantity: str, arc_length_m: float) -> np.ndarray:
+        """Time history [time] of a per-node result (``effective_tension_N``, ``bending_moment_Nm``,
+        ``curvature_1_per_m``, ``torque_Nm``; ``position_m`` gives [time, xyz]) at an unstretched arc length
+        from end A [m], interpolated linearly between the nodes around it (as OrcFxAPI's TimeHistory with an
+        arc length)."""
+        d = self.lines[line]
+        if quantity not in d or quantity in ("arc_length_m", "range", "end_tension_N", "end_force_N"):
+            raise KeyError(f"no per-node time history {quantity!r} for line {line!r}")
+        values = np.asarray(d[quantity])
+        if quantity == "position_m":
+            return _at_arc_length(d["arc_length_m"], np.moveaxis(values, 1, -1), arc_length_m, line)
+        return _at_arc_length(d["arc_length_m"], values, arc_length_m, line)
 
     def range_graph(self, line: str, quantity: str = "effective_tension") -> dict[str, np.ndarray]:
         """Min, max and mean of a quantity along a line: {'arc_length_m', 'min', 'max', 'mean'}."""

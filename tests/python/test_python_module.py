@@ -217,3 +217,25 @@ def test_a_run_that_stops_early_raises_with_its_results() -> None:
     assert not partial.completed and not partial.interrupted
     assert partial.message and str(e.value) == partial.message
     assert partial.time_s[-1] < 5.0
+
+
+def test_results_at_an_arc_length(mooring: tangle.Model) -> None:
+    # Linear interpolation between the nodes around the arc length: exact at a node, the mean halfway.
+    statics = mooring.run_statics()
+    line = statics.lines["mooring1"]
+    arc, tension = line["arc_length_m"], line["effective_tension_N"]
+    assert statics.at("mooring1", "effective_tension_N", arc[7]) == pytest.approx(tension[7], rel=1e-15)
+    half = 0.5 * (arc[7] + arc[8])
+    assert statics.at("mooring1", "effective_tension_N", half) == pytest.approx(0.5 * (tension[7] + tension[8]))
+    np.testing.assert_allclose(statics.at("mooring1", "position_m", half),
+                               0.5 * (line["position_m"][7] + line["position_m"][8]))
+    with pytest.raises(ValueError, match="outside line"):
+        statics.at("mooring1", "effective_tension_N", arc[-1] + 1.0)
+    run = mooring.run_dynamics()
+    d = run.lines["mooring1"]
+    history = run.time_history("mooring1", "effective_tension_N", half)
+    assert history.shape == run.time_s.shape
+    np.testing.assert_allclose(history, 0.5 * (d["effective_tension_N"][:, 7] + d["effective_tension_N"][:, 8]))
+    assert run.time_history("mooring1", "position_m", arc[3]).shape == (len(run.time_s), 3)
+    with pytest.raises(KeyError):
+        run.time_history("mooring1", "end_tension_N", 0.0)
