@@ -15,7 +15,7 @@ struct LineSnapshot {
   std::string name;
   std::vector<double> arcLength;     ///< unstretched arc length from end A [m]
   std::vector<Vec3> position;        ///< [m]
-  std::vector<double> tension;       ///< effective tension [N] (mean of adjacent elements)
+  std::vector<double> tension;       ///< effective tension [N]: mean of the adjacent elements; at the end nodes the end tensions below
   std::vector<double> bendingMoment; ///< magnitude of the bending moment [N m] (0 for cables)
   std::vector<Vec3> bendingMomentVector;  ///< bending moment vector, global axes [N m]
   std::vector<double> curvature;     ///< [1/m]: M/EI for beams, discrete geometric curvature for cables

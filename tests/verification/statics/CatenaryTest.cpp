@@ -96,9 +96,11 @@ TEST(EndTension, FairleadTensionAtTheEndPointMatchesClosedFormAt50Elements) {
   EXPECT_NEAR(f.norm(), lines[0].endTensionB, 1e-9 * t);
   EXPECT_NEAR(std::hypot(f.x(), f.y()), exact.horizontalTension, 5e-4 * t);
   EXPECT_NEAR(-f.z(), exact.verticalTension, 5e-4 * t);
-  // The end element's own tension is the old, half-element-in value: measurably lower, so this test
-  // would fail on it.
-  EXPECT_LT(lines[0].tension.back(), t * (1.0 - 2e-3));
+  // One end tension everywhere (issue 30): the end node's value along the line is the end tension. The
+  // values one element in are measurably lower, so this test would fail on an element's own tension
+  // (the old, half-element-in value).
+  EXPECT_DOUBLE_EQ(lines[0].tension.back(), lines[0].endTensionB);
+  EXPECT_LT(lines[0].tension[lines[0].tension.size() - 2], t * (1.0 - 2e-3));
   // Touchdown interpolated between nodes: within a quarter element of the closed form (was one element).
   EXPECT_NEAR(lines[0].touchdownArcLength, exact.groundedLength, 0.25 * kLength / 50);
 }
