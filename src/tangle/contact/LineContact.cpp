@@ -982,6 +982,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   const model::Line& lb = m_model->lines()[lineB];
   const auto& elements = m_model->elements();
   std::array<double, 3> best{kInf, 0.0, 0.0};
+  int i0 = 0, j0 = 0;  // elements of the nearest pair along each line
   for (int i = 0; i < la.elementCount; ++i) {
     const model::LineElement& ea = elements[la.firstElement + i];
     const Vec3& a0 = state.position[ea.node1];
@@ -1003,6 +1004,8 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
       if (gap < best[0]) {
         best = {gap, la.arcLength[i] + d.s * (la.arcLength[i + 1] - la.arcLength[i]),
                 lb.arcLength[j] + d.t * (lb.arcLength[j + 1] - lb.arcLength[j])};
+        i0 = i;
+        j0 = j;
       }
     }
   }
@@ -1010,16 +1013,6 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   // up to kappa L^2 / 8 (4 cm for a flexible of 10 m elements near its touchdown, an overlap where the
   // contact saw 1 mm). Near the surfaces, the nearest element pair and its neighbours on both lines.
   if (std::isfinite(best[0])) {
-    const int i0 = la.elementCount > 0 ? std::clamp(static_cast<int>(std::upper_bound(la.arcLength.begin(),
-                                                                                       la.arcLength.end(), best[1]) -
-                                                                      la.arcLength.begin()) - 1,
-                                                     0, la.elementCount - 1)
-                                       : 0;
-    const int j0 = lb.elementCount > 0 ? std::clamp(static_cast<int>(std::upper_bound(lb.arcLength.begin(),
-                                                                                       lb.arcLength.end(), best[2]) -
-                                                                      lb.arcLength.begin()) - 1,
-                                                     0, lb.elementCount - 1)
-                                       : 0;
     const int ea0 = la.firstElement + i0, eb0 = lb.firstElement + j0;
     const bool smooth = hasSmoothCentreline(*m_model, ea0) || hasSmoothCentreline(*m_model, eb0);
     const double bulge = 0.25 * std::max(elements[ea0].restLength, elements[eb0].restLength);
