@@ -79,6 +79,9 @@ class StaticResults:
     at the end points), ``end_a_force_N``/``end_b_force_N`` (force the line exerts on what holds its
     ends, xyz), ``end_a_support_reaction_N``/``end_b_support_reaction_N``, ``touchdown_arc_length_m``
     (NaN when none), ``nodes_on_seabed``.
+    equilibrium_audit: one dict per line and free vessel (``kind``, ``name``, ``forces_N`` by source,
+    ``residual_N``, ``reference_force_N``, ``relative_residual``, ``tolerance``), as summary.json's
+    (theory manual 7.8); a body out of balance is also in ``warnings``.
     """
 
     converged: bool
@@ -88,6 +91,21 @@ class StaticResults:
     message: str
     warnings: list[str]
     lines: dict[str, dict[str, Any]]
+    equilibrium_audit: list[dict[str, Any]] = field(default_factory=list)
+
+    def end_angles(self, line: str, end: str) -> dict[str, float]:
+        """Angles of the force the line exerts on what holds end ``"a"`` or ``"b"`` [deg], as summary.json:
+        ``angle_from_horizontal_deg`` (positive when the line pulls its support upward),
+        ``angle_from_vertical_deg`` (90 minus its magnitude) and ``azimuth_deg`` (of the horizontal part,
+        anticlockwise from +x; NaN for a vertical force)."""
+        if end not in ("a", "b"):
+            raise ValueError(f"end must be 'a' or 'b', not {end!r}")
+        f = np.asarray(self.lines[line][f"end_{end}_force_N"], dtype=float)
+        horizontal = float(np.hypot(f[0], f[1]))
+        elevation = float(np.degrees(np.arctan2(f[2], horizontal)))
+        azimuth = float(np.degrees(np.arctan2(f[1], f[0])) % 360.0) if horizontal > 0.0 else float("nan")
+        return {"angle_from_horizontal_deg": elevation, "angle_from_vertical_deg": 90.0 - abs(elevation),
+                "azimuth_deg": azimuth}
 
     def at(self, line: str, quantity: str, arc_length_m: float) -> Any:
         """A per-node result (``effective_tension_N``, ``bending_moment_Nm``, ``curvature_1_per_m``,

@@ -91,6 +91,17 @@ def test_local_processes_and_rerun(batch_file: Path, tmp_path: Path) -> None:
     dyn = json.loads((single / "dynamics" / "summary.json").read_text())
     assert float(table[case]["mooring1_max_tension_N"]) == pytest.approx(dyn["lines"][0]["max_tension_N"], rel=1e-5)
 
+    # One number for one quantity: every column of every case is its own summary's value (the table prints
+    # 6 significant digits), also for the broken cases, whose dynamics stopped at t = 0 with a summary.
+    for name, row in table.items():
+        own = json.loads((out / "cases" / name / "dynamics" / "summary.json").read_text())["lines"][0]
+        for column, key in (("max_tension_N", "max_tension_N"), ("min_tension_N", "min_tension_N"),
+                            ("end_a_max_tension_N", "end_a_max_tension_N"),
+                            ("end_b_max_tension_N", "end_b_max_tension_N"), ("slack_events", "slack_events")):
+            assert float(row["mooring1_" + column]) == pytest.approx(own[key], rel=1e-5, abs=1e-3), (name, column)
+        # The line's maximum includes its ends.
+        assert own["max_tension_N"] >= max(own["end_a_max_tension_N"], own["end_b_max_tension_N"])
+
     # A rerun skips the finished cases and runs the failed ones again.
     stamp = (out / "cases" / case / "summary.json").stat().st_mtime_ns
     r2 = run([CLI, "batch", str(batch_file), "-o", str(out)])
@@ -105,6 +116,33 @@ def test_local_processes_and_rerun(batch_file: Path, tmp_path: Path) -> None:
 
 
 @pytest.mark.skipif(shutil.which("mpirun") is None, reason="mpirun (openmpi-bin) not installed")
+def test_columns_stay_when_every_case_fails(tmp_path: Path) -> None:
+    """A batch whose every case fails has the same columns as one that runs: they come from the models."""
+    batch = tmp_path / "batch.yaml"
+    batch.write_text(f"""
+model: {BASE}
+set:
+  dynamics.duration: 4
+  dynamics.max_iterations: 1
+  dynamics.min_time_step: 0.01
+  environment.current: {{speed: 0.5, azimuth: 0}}
+  output.vtk: false
+parameters:
+  - {{name: current, key: environment.current.speed, values: [0.5, 1.5]}}
+""")
+    out = tmp_path / "out"
+    r = run([CLI, "batch", str(batch), "-o", str(out), "-j", "2"])
+    assert r.returncode == 2, r.stdout + r.stderr
+    with (out / "summary.csv").open() as f:
+        reader = csv.DictReader(f)
+        table = list(reader)
+        header = reader.fieldnames
+    assert len(table) == 2 and all(row["status"].startswith("failed") for row in table), table
+    for column in ("mooring1_max_tension_N", "mooring1_min_tension_N", "mooring1_end_a_max_tension_N",
+                   "mooring1_end_b_max_tension_N", "mooring1_slack_events", "max_offset_m"):
+        assert column in header
+
+
 def test_mpi_ranks_share_the_cases(batch_file: Path, tmp_path: Path) -> None:
     local = tmp_path / "local"
     assert run([CLI, "batch", str(batch_file), "-o", str(local), "-j", "1", "-q"]).returncode == 2

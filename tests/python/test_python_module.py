@@ -108,6 +108,17 @@ def test_statics_and_dynamics_equal_the_cli(mooring: tangle.Model, tmp_path: Pat
     _, x = read_csv(out / "dynamics" / "mooring1" / "x_m.csv")
     # x_m.csv prints 7 significant digits (%.6e), the statics table 1e-6 m (%.6f).
     np.testing.assert_allclose(run.lines["mooring1"]["position_m"][:, :, 0], x[:, 1:], rtol=RTOL, atol=POS_ATOL)
+    # End angles and the equilibrium audit, as the CLI's summary.json.
+    static_summary = json.loads((out / "summary.json").read_text())
+    for end in ("a", "b"):
+        angles = statics.end_angles("mooring1", end)
+        cli_end = static_summary["lines"][0][f"end_{end}"]
+        for key in ("angle_from_horizontal_deg", "angle_from_vertical_deg"):
+            assert angles[key] == pytest.approx(cli_end[key], rel=1e-9, abs=1e-9), (end, key)
+    assert [b["name"] for b in statics.equilibrium_audit] == ["mooring1"]
+    audit = static_summary["equilibrium_audit"]["lines"][0]
+    assert statics.equilibrium_audit[0]["relative_residual"] <= statics.equilibrium_audit[0]["tolerance"]
+    assert statics.equilibrium_audit[0]["relative_residual"] == pytest.approx(audit["relative_residual"], abs=1e-12)
     header, ends = read_csv(out / "dynamics" / "end_forces.csv")
     col = {h: i for i, h in enumerate(header)}
     np.testing.assert_allclose(run.lines["mooring1"]["end_tension_N"][:, 1], ends[:, col["mooring1_end_b_tension_N"]],

@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 
+#include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
 #include "tangle/geometry/Rotation.hpp"
@@ -301,7 +302,11 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   }
   // Ends tied to vessels: take the link forces out, so what remains at the end node is the line's pull.
   if (m_vessels) force -= m_vessels->endConnectionForces(m_state, m_state.time);
-  return solver::computeLineResults(*m_model, *m_assembler, m_state, force);
+  std::vector<solver::LineSnapshot> lines = solver::computeLineResults(*m_model, *m_assembler, m_state, force);
+  // Statics: the exact end forces of the discrete model (the dynamics keep the extrapolated ones, which
+  // the range graphs compute at every step from the elements alone).
+  if (!dynamic) setStaticEndForces(*this, lines);
+  return lines;
 }
 
 const std::vector<solver::LineSnapshot>& Simulation::sectionSnapshot() const {

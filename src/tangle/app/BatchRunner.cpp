@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -306,7 +307,17 @@ int runBatch(const BatchOptions& options) {
     }
     if (row.exitCode != 0) ++failed;
   }
-  const std::string table = writeSummaryTable(dir / "summary.csv", plan.parameterNames, rows);
+  // The line columns come from the models, so a batch whose cases all fail keeps them.
+  std::vector<std::string> lineNames;
+  for (const BatchCase& c : plan.cases) {
+    try {
+      for (const model::LineSpec& l : c.model.spec().lines)
+        if (std::find(lineNames.begin(), lineNames.end(), l.name) == lineNames.end()) lineNames.push_back(l.name);
+    } catch (const InputError&) {
+      // Refused when the plan was read; its row says so.
+    }
+  }
+  const std::string table = writeSummaryTable(dir / "summary.csv", plan.parameterNames, lineNames, rows);
   if (!options.quiet) std::cout << table;
 #ifdef TANGLE_WITH_MPI
   if (ranks.mpi) MPI_Finalize();

@@ -62,10 +62,23 @@ CaseSummary readCaseSummary(const fs::path& caseDir, const fs::path& log) {
   const YAML::Node statics = readJson(caseDir / "summary.json");
   if (statics && statics["statics"]) row.staticsConverged = statics["statics"]["converged"].as<bool>(false);
   const YAML::Node dynamics = readJson(caseDir / "dynamics" / "summary.json");
-  const YAML::Node& tensions = dynamics && dynamics["lines"] ? dynamics : statics;
-  if (tensions && tensions["lines"] && row.staticsConverged)
-    for (const auto& line : tensions["lines"])
-      row.maxTension.emplace_back(line["name"].as<std::string>(), number(line["max_tension_N"]));
+  row.maxOffset = kNaN;
+  if (dynamics && dynamics["lines"] && row.staticsConverged) {
+    for (const auto& line : dynamics["lines"])
+      row.lines.push_back({line["name"].as<std::string>(), number(line["max_tension_N"]),
+                           number(line["min_tension_N"]), number(line["end_a_max_tension_N"]),
+                           number(line["end_b_max_tension_N"]), number(line["slack_events"])});
+    if (dynamics["vessels"])
+      for (const auto& v : dynamics["vessels"]) {
+        const double offset = number(v["max_offset_m"]);
+        if (std::isfinite(offset)) row.maxOffset = std::isfinite(row.maxOffset) ? std::max(row.maxOffset, offset) : offset;
+      }
+  } else if (statics && statics["lines"] && row.staticsConverged) {
+    for (const auto& line : statics["lines"])
+      row.lines.push_back({line["name"].as<std::string>(), number(line["max_tension_N"]),
+                           number(line["min_tension_N"]), number(line["end_a"]["tension_N"]),
+                           number(line["end_b"]["tension_N"]), kNaN});
+  }
   // Clearance: the envelope over every node and step when it exists, else the clash report's samples.
   if (const YAML::Node c = readJson(caseDir / "clearance" / "summary.json"); c && c["pairs"]) {
     for (const auto& p : c["pairs"]) {
@@ -108,9 +121,12 @@ std::string CaseSummary::serialise() const {
   out << YAML::Key << "reused" << YAML::Value << reused;
   out << YAML::Key << "rank" << YAML::Value << rank;
   out << YAML::Key << "statics_converged" << YAML::Value << staticsConverged;
-  out << YAML::Key << "max_tension" << YAML::Value << YAML::BeginSeq;
-  for (const auto& [line, t] : maxTension) out << YAML::Flow << YAML::BeginSeq << line << t << YAML::EndSeq;
+  out << YAML::Key << "lines" << YAML::Value << YAML::BeginSeq;
+  for (const LineRow& l : lines)
+    out << YAML::Flow << YAML::BeginSeq << l.name << l.maxTension << l.minTension << l.endAMax << l.endBMax
+        << l.slackEvents << YAML::EndSeq;
   out << YAML::EndSeq;
+  out << YAML::Key << "max_offset" << YAML::Value << maxOffset;
   out << YAML::Key << "min_clearance" << YAML::Value << minClearance;
   out << YAML::Key << "impacts" << YAML::Value << impacts;
   out << YAML::Key << "max_contact_force" << YAML::Value << maxContactForce;
@@ -130,7 +146,9 @@ CaseSummary CaseSummary::deserialise(const std::string& text) {
   row.reused = n["reused"].as<bool>();
   row.rank = n["rank"].as<int>(0);
   row.staticsConverged = n["statics_converged"].as<bool>();
-  for (const auto& t : n["max_tension"]) row.maxTension.emplace_back(t[0].as<std::string>(), number(t[1]));
+  for (const auto& t : n["lines"])
+    row.lines.push_back({t[0].as<std::string>(), number(t[1]), number(t[2]), number(t[3]), number(t[4]), number(t[5])});
+  row.maxOffset = number(n["max_offset"]);
   row.minClearance = number(n["min_clearance"]);
   row.impacts = n["impacts"].as<int>();
   row.maxContactForce = number(n["max_contact_force"]);
@@ -139,17 +157,20 @@ CaseSummary CaseSummary::deserialise(const std::string& text) {
 }
 
 std::string writeSummaryTable(const fs::path& file, const std::vector<std::string>& parameterNames,
-                              const std::vector<CaseSummary>& rows) {
-  std::vector<std::string> lines;  // union of line names, first-seen order
+                              const std::vector<std::string>& lineNames, const std::vector<CaseSummary>& rows) {
+  std::vector<std::string> lines = lineNames;  // then any a case gave that the models did not name
   for (const CaseSummary& r : rows)
-    for (const auto& [line, t] : r.maxTension)
-      if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+    for (const CaseSummary::LineRow& l : r.lines)
+      if (std::find(lines.begin(), lines.end(), l.name) == lines.end()) lines.push_back(l.name);
   io::OutputFile out(file);
   std::string header = "case";
   for (const std::string& p : parameterNames) header += "," + csvField(p);
   header += ",status,exit_code,statics_converged";
-  for (const std::string& l : lines) header += "," + csvField(l + "_max_tension_N");
-  header += ",min_clearance_m,impacts,max_contact_force_N,wall_time_s,reused,rank,message\n";
+  for (const std::string& l : lines)
+    for (const char* q : {"_max_tension_N", "_min_tension_N", "_end_a_max_tension_N", "_end_b_max_tension_N",
+                          "_slack_events"})
+      header += "," + csvField(l + q);
+  header += ",max_offset_m,min_clearance_m,impacts,max_contact_force_N,wall_time_s,reused,rank,message\n";
   out.write(header);
   std::string table = fmt::format("{:<36} {:<24} {:>14} {:>12} {:>8} {:>9}\n", "case", "status", "max tension kN",
                                   "clearance m", "impacts", "wall s");
@@ -161,13 +182,15 @@ std::string writeSummaryTable(const fs::path& file, const std::vector<std::strin
     row += fmt::format(",{},{},{}", csvField(r.status), r.exitCode, r.staticsConverged ? "true" : "false");
     double worst = kNaN;
     for (const std::string& l : lines) {
-      double t = kNaN;
-      for (const auto& [line, v] : r.maxTension)
-        if (line == l) t = v;
-      if (std::isfinite(t)) worst = std::isfinite(worst) ? std::max(worst, t) : t;
-      row += "," + numberText(t);
+      CaseSummary::LineRow values{l, kNaN, kNaN, kNaN, kNaN, kNaN};
+      for (const CaseSummary::LineRow& v : r.lines)
+        if (v.name == l) values = v;
+      if (std::isfinite(values.maxTension))
+        worst = std::isfinite(worst) ? std::max(worst, values.maxTension) : values.maxTension;
+      for (const double v : {values.maxTension, values.minTension, values.endAMax, values.endBMax, values.slackEvents})
+        row += "," + numberText(v);
     }
-    row += fmt::format(",{},{},{},{:.3f},{},{},{}\n", numberText(r.minClearance), r.impacts,
+    row += fmt::format(",{},{},{},{},{:.3f},{},{},{}\n", numberText(r.maxOffset), numberText(r.minClearance), r.impacts,
                        numberText(r.maxContactForce), r.wallSeconds, r.reused ? "true" : "false", r.rank,
                        csvField(r.message));
     out.write(row);

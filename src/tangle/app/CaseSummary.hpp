@@ -19,7 +19,18 @@ struct CaseSummary {
   bool reused = false;        ///< finished by an earlier batch run with the same model: not run again
   int rank = 0;               ///< MPI rank that ran the case (0 without MPI)
   bool staticsConverged = false;
-  std::vector<std::pair<std::string, double>> maxTension;  ///< per line: largest effective tension [N]
+  /// Per line, the same numbers as the case's own summary (dynamics/summary.json over every accepted step,
+  /// else the statics' summary.json); NaN where the case has none.
+  struct LineRow {
+    std::string name;
+    double maxTension = 0.0;   ///< largest effective tension along the line, ends included [N]
+    double minTension = 0.0;   ///< smallest [N]
+    double endAMax = 0.0;      ///< largest end tension at end A [N]
+    double endBMax = 0.0;      ///< at end B [N]
+    double slackEvents = 0.0;  ///< slack (snap) events of the dynamics (NaN for statics)
+  };
+  std::vector<LineRow> lines;
+  double maxOffset = 0.0;     ///< largest horizontal vessel offset over the dynamics [m] (NaN: no vessel/dynamics)
   double minClearance = 0.0;  ///< smallest clearance over the checked pairs [m] (NaN: none checked)
   int impacts = 0;            ///< contact events counted as impacts
   double maxContactForce = 0.0;  ///< largest contact force of any event [N]
@@ -35,9 +46,11 @@ struct CaseSummary {
 /// for the first "error:" line.
 CaseSummary readCaseSummary(const std::filesystem::path& caseDir, const std::filesystem::path& log);
 
-/// Writes the summary table (CSV, one row per case in plan order; the line columns are the union of the
-/// cases' lines) and returns a short terminal table.
+/// Writes the summary table (CSV, one row per case in plan order) and returns a short terminal table. The
+/// columns are fixed by the batch, not by what the cases gave: per line of `lineNames` (the lines of the
+/// cases' models) `<line>_max_tension_N`, `_min_tension_N`, `_end_a_max_tension_N`, `_end_b_max_tension_N`,
+/// `_slack_events`, then `max_offset_m`; a failed case leaves its cells empty.
 std::string writeSummaryTable(const std::filesystem::path& file, const std::vector<std::string>& parameterNames,
-                              const std::vector<CaseSummary>& rows);
+                              const std::vector<std::string>& lineNames, const std::vector<CaseSummary>& rows);
 
 }  // namespace tangle::app

@@ -14,8 +14,10 @@
 #include <iterator>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
+#include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/app/RunLog.hpp"
 #include "tangle/contact/ClashReport.hpp"
@@ -204,8 +206,18 @@ std::string tensionerText(const model::Model& m,
   return out;
 }
 
+/// Horizontal distance [m] of each vessel's reference point at `state` from its position in the model.
+void updateMaxOffsets(const model::Model& m, const model::State& state, std::vector<double>& maxOffset) {
+  for (std::size_t v = 0; v < maxOffset.size(); ++v) {
+    const Vec3 d = state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] -
+                   m.spec().vessels[v].position;
+    maxOffset[v] = std::max(maxOffset[v], std::hypot(d.x(), d.y()));
+  }
+}
+
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
-                         const std::vector<solver::LineSnapshot>& lines, double maxStopForce) {
+                         const std::vector<solver::LineSnapshot>& lines, double maxStopForce,
+                         const model::Model& m, const std::vector<double>& maxOffset) {
   io::OutputFile out(dir / "dynamics" / "summary.json");
   io::JsonWriter j(out.stream());
   j.beginObject();
@@ -237,6 +249,17 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
     j.field("end_a_min_tension_N", range.endTensionMinA);
     j.field("end_b_max_tension_N", range.endTensionMaxB);
     j.field("end_b_min_tension_N", range.endTensionMinB);
+    j.field("slack_events", range.slackEvents);
+    j.field("slack_time_s", range.slackTime);
+    j.endObject();
+  }
+  j.endArray();
+  j.key("vessels");
+  j.beginArray();
+  for (std::size_t v = 0; v < maxOffset.size(); ++v) {
+    j.beginObject();
+    j.field("name", m.vessels()[v].name);
+    j.field("max_offset_m", maxOffset[v]);
     j.endObject();
   }
   j.endArray();
@@ -327,7 +350,14 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
   const solver::StaticResult result = sim.solveStatics();
   for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
   const auto lines = sim.snapshot();
-  io::writeStaticSummary(outDir, m, result, lines);
+  // The equilibrium audit (theory 7.8) of a converged solution: every force on every line and free vessel
+  // by source; a body out of balance is a result that is not the physics.
+  std::optional<solver::EquilibriumAudit> audit;
+  if (result.converged) {
+    audit = analysis::auditStatics(sim, lines);
+    for (const std::string& w : audit->warnings()) log.error("warning: " + w + "\n");
+  }
+  io::writeStaticSummary(outDir, m, result, lines, audit ? &*audit : nullptr);
   if (!result.converged) {
     log.error("error: " + result.message + "\n");
     log.error(fmt::format("no static results were written; the solver status is in {}\n",
@@ -352,8 +382,14 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
                                 std::istreambuf_iterator<char>());
     h5 = std::make_unique<io::Hdf5Results>(outDir, m, modelText);
     h5->writeStatics(lines);
+    h5->writeAudit(*audit);
   }
   log.info(result.message + "\n");
+  log.info(fmt::format("equilibrium audit: {} lines and {} free vessels {}; largest out-of-balance force {:.2g} of "
+                       "the body's weight or load\n",
+                       audit->lines.size(), audit->vessels.size(),
+                       audit->warnings().empty() ? "in balance" : "NOT in balance (see the warnings)",
+                       audit->worstRelativeResidual()));
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
   std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
       m, sim.contact() ? sim.contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
@@ -418,7 +454,20 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
     io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0,
                                  files.csv);
     if (h5) h5->beginDynamics(lines);
+    {
+      std::vector<std::vector<double>> levels;
+      for (const model::Line& line : m.lines()) {
+        std::vector<double>& level = levels.emplace_back();
+        for (int i = 0; i < line.nodeCount; ++i)
+          // Resting height plus half a diameter: a laid chain pushed about by a current hops by less.
+          level.push_back(-m.environment().waterDepth + m.nodeContactDiameter()[line.firstNode + i]);
+      }
+      recorder.setSeabedLevels(std::move(levels));
+    }
     std::vector<double> vesselMotion(6 * m.vessels().size());
+    // Largest horizontal offset of each vessel over every step, from the static position on [m].
+    std::vector<double> maxOffset(m.vessels().size(), 0.0);
+    updateMaxOffsets(m, sim.state(), maxOffset);
     std::unique_ptr<contact::ClashReport> clash;
     if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact());
     // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
@@ -577,6 +626,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
           b.time.push_back(s.time);
           b.dt.push_back(dt);
           b.positions.insert(b.positions.end(), s.position.begin(), s.position.end());
+          updateMaxOffsets(m, s, maxOffset);
           if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
           if (tensionerFile) {
             // Every step: a tensioner touching its stop between two output times must show.
@@ -608,7 +658,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       clash->write(outDir);
       log.info(clash->terminalSummary());
     }
-    writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce);
+    writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
     if (maxStopForce > 0.0)
       log.error(
           fmt::format("warning: a tensioner reached its end stop during the dynamics (largest stop force "

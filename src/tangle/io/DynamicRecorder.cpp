@@ -84,6 +84,7 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
             std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0)};
     r.endTensionMaxA = r.endTensionMaxB = -inf;
     r.endTensionMinA = r.endTensionMinB = inf;
+    r.retension = std::max(1.0, 0.01 * *std::max_element(s.tension.begin(), s.tension.end()));
     m_ranges.push_back(std::move(r));
   }
   m_endForces->write(header + "\n");
@@ -152,6 +153,16 @@ void DynamicRecorder::accumulate(const std::vector<solver::LineSnapshot>& lines,
     r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
     r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);
     r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < s.tension.size(); ++i)
+      if (m_seabedLevel.empty() || s.position[i].z() > m_seabedLevel[l][i]) lowest = std::min(lowest, s.tension[i]);
+    if (lowest < 0.0) {
+      if (!r.slack) ++r.slackEvents;
+      r.slack = true;
+      r.slackTime += dt;
+    } else if (lowest > r.retension) {
+      r.slack = false;
+    }
   }
   m_weight += dt;
   ++m_steps;

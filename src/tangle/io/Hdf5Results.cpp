@@ -103,6 +103,40 @@ void Hdf5Results::writeStatics(const std::vector<solver::LineSnapshot>& lines) {
   m_file->flush();
 }
 
+void Hdf5Results::writeAudit(const solver::EquilibriumAudit& audit) {
+  const std::string root = "/statics/equilibrium_audit";
+  m_file->createGroup(root);
+  m_file->setAttribute(root, "worst_relative_residual", audit.worstRelativeResidual());
+  const auto write = [&](const std::string& kind, const std::vector<solver::ForceBalance>& bodies) {
+    m_file->createGroup(root + "/" + kind);
+    std::vector<std::string> names;
+    for (const solver::ForceBalance& b : bodies) names.push_back(b.name);
+    const std::vector<std::string> stems = uniqueFileStems(names);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      const solver::ForceBalance& b = bodies[i];
+      const std::string g = root + "/" + kind + "/" + stems[i];
+      m_file->createGroup(g);
+      m_file->setAttribute(g, "name", b.name);
+      std::vector<double> rows;
+      std::string sources;
+      for (const auto& [name, force] : b.terms) {
+        rows.insert(rows.end(), {force.x(), force.y(), force.z()});
+        sources += (sources.empty() ? "" : ";") + name;
+      }
+      m_file->writeArray(g + "/terms", rows, {b.terms.size(), 3}, "N", "force on the body from each source");
+      m_file->setAttribute(g, "sources", sources);
+      m_file->writeArray(g + "/residual", {b.residual.x(), b.residual.y(), b.residual.z()}, {3}, "N",
+                         "sum of the terms");
+      m_file->setAttribute(g, "reference_force_N", b.scale);
+      m_file->setAttribute(g, "relative_residual", b.relativeResidual());
+      m_file->setAttribute(g, "tolerance", b.tolerance);
+    }
+  };
+  write("lines", audit.lines);
+  write("vessels", audit.vessels);
+  m_file->flush();
+}
+
 void Hdf5Results::beginDynamics(const std::vector<solver::LineSnapshot>& initial) {
   m_file->createGroup("/dynamics");
   m_time = m_file->createSeries("/dynamics/time", {}, "s", "output times", 64, false);

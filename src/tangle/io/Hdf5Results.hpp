@@ -32,6 +32,7 @@
 #include "tangle/io/DynamicRecorder.hpp"
 #include "tangle/io/Hdf5File.hpp"
 #include "tangle/model/Model.hpp"
+#include "tangle/solver/ForceBalance.hpp"
 #include "tangle/solver/LineResults.hpp"
 
 namespace tangle::io {
@@ -43,6 +44,10 @@ class Hdf5Results {
   ~Hdf5Results();
 
   void writeStatics(const std::vector<solver::LineSnapshot>& lines);
+  /// The static equilibrium audit: /statics/equilibrium_audit/{lines,vessels}/<name>/terms (one row of
+  /// force per source [N], names in the attribute `sources`), residual [N], attributes reference_force_N and
+  /// relative_residual.
+  void writeAudit(const solver::EquilibriumAudit& audit);
   /// Starts the time series (call once, before the first record).
   void beginDynamics(const std::vector<solver::LineSnapshot>& initial);
   /// One output time: the lines and, per vessel, (x, y, z [m], rx, ry, rz [deg]).

@@ -82,7 +82,7 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
 }
 
 void writeStaticSummary(const fs::path& dir, const model::Model& model, const solver::StaticResult& result,
-                        const std::vector<solver::LineSnapshot>& lines) {
+                        const std::vector<solver::LineSnapshot>& lines, const solver::EquilibriumAudit* audit) {
   fs::create_directories(dir);
   OutputFile file(dir / "summary.json");
   JsonWriter j(file.stream());
@@ -139,6 +139,35 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
     j.endObject();
   }
   j.endArray();
+  if (audit) {
+    j.key("equilibrium_audit");
+    j.beginObject();
+    j.field("definition",
+            "per body the forces on it by source [N] (end forces: minus the reported force_N) and their sum; "
+            "relative residual = |sum| / reference force (a line's submerged weight)");
+    j.field("worst_relative_residual", audit->worstRelativeResidual());
+    const auto bodies = [&j](const char* key, const std::vector<solver::ForceBalance>& list) {
+      j.key(key);
+      j.beginArray();
+      for (const solver::ForceBalance& b : list) {
+        j.beginObject();
+        j.field("name", b.name);
+        j.key("forces_N");
+        j.beginObject();
+        for (const auto& [name, f] : b.terms) j.field(name, std::vector<double>{f.x(), f.y(), f.z()});
+        j.endObject();
+        j.field("residual_N", std::vector<double>{b.residual.x(), b.residual.y(), b.residual.z()});
+        j.field("reference_force_N", b.scale);
+        j.field("relative_residual", b.relativeResidual());
+        j.field("tolerance", b.tolerance);
+        j.endObject();
+      }
+      j.endArray();
+    };
+    bodies("lines", audit->lines);
+    bodies("vessels", audit->vessels);
+    j.endObject();
+  }
   j.endObject();
   file.close();
 }

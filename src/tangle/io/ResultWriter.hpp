@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "tangle/model/Model.hpp"
+#include "tangle/solver/ForceBalance.hpp"
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
 
@@ -34,8 +35,10 @@ std::vector<std::filesystem::path> writeStaticLineTables(const std::filesystem::
 /// Writes `dir/summary.json`: solver outcome, and per line end tensions, end angles, touchdown point,
 /// tension and bending-moment extremes. End tension: LineSnapshot::endTensionA/B (at the end point).
 /// @throws OutputError naming the file when a write fails
+/// With `audit`, also its balances (`equilibrium_audit`).
 void writeStaticSummary(const std::filesystem::path& dir, const model::Model& model,
-                        const solver::StaticResult& result, const std::vector<solver::LineSnapshot>& lines);
+                        const solver::StaticResult& result, const std::vector<solver::LineSnapshot>& lines,
+                        const solver::EquilibriumAudit* audit = nullptr);
 
 /// Angle of a force from the horizontal plane [deg] (positive when the line pulls upward on the support).
 double elevationAngleDeg(const Vec3& force);

@@ -1,6 +1,7 @@
 /// @file PySimulation.cpp
 /// Analyses driven from Python (see PySimulation.hpp).
 
+#include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/python/PySimulation.hpp"
 
 #include <pybind11/numpy.h>
@@ -105,6 +106,28 @@ py::dict PySimulation::statics() {
   d["load_fraction"] = r.loadFraction;
   d["max_out_of_balance_N"] = r.residual;
   d["message"] = r.message;
+  // The equilibrium audit (theory 7.8), as the command line prints and stores it.
+  py::list audit;
+  if (r.converged) {
+    const solver::EquilibriumAudit a = analysis::auditStatics(*m_sim, m_sim->snapshot());
+    for (const std::string& w : a.warnings()) r.warnings.push_back(w);
+    const auto add = [&audit](const solver::ForceBalance& b, const char* kind) {
+      py::dict body;
+      body["kind"] = kind;
+      body["name"] = b.name;
+      py::dict forces;
+      for (const auto& [name, f] : b.terms) forces[py::str(name)] = vec3Array(f);
+      body["forces_N"] = forces;
+      body["residual_N"] = vec3Array(b.residual);
+      body["reference_force_N"] = b.scale;
+      body["relative_residual"] = b.relativeResidual();
+      body["tolerance"] = b.tolerance;
+      audit.append(body);
+    };
+    for (const solver::ForceBalance& b : a.lines) add(b, "line");
+    for (const solver::ForceBalance& b : a.vessels) add(b, "vessel");
+  }
+  d["equilibrium_audit"] = audit;
   d["warnings"] = r.warnings;
   return d;
 }

@@ -68,6 +68,16 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
       for (int k = 3; k < 6; ++k)
         m_nodeDiagonalMass[static_cast<std::size_t>(d + k)] = model.nodeRotationalInertia()[node];
   }
+  // Submerged weight lumped on each node held in all three translations [N] (addSeabed).
+  m_heldNodeWeight.assign(static_cast<std::size_t>(n), 0.0);
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    const model::LineElement& el = model.elements()[e];
+    for (const int node : {el.node1, el.node2}) {
+      const int d = dofs.firstDof(node);
+      if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0)
+        m_heldNodeWeight[static_cast<std::size_t>(node)] += m_halfWeight[e] - m_halfBuoyancy[e];
+    }
+  }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
   m_trialAnchor = m_anchor;
   m_committedXY.assign(n, Vec2::Zero());
@@ -181,6 +191,16 @@ void Assembler::addAll(const model::State& state, const AssemblyRequest& request
       c->addPartForces(state, request, *part, force);
     else
       c->addForces(state, request, force, matrix);
+  }
+}
+
+void Assembler::addTerm(Term term, const model::State& state, const AssemblyRequest& request, VecX& force) {
+  static const std::vector<int> none;
+  switch (term) {
+    case Term::Elements: addElements(state, request, force, nullptr); break;
+    case Term::Weight: addWeight(state, request, force, nullptr, &none); break;
+    case Term::Attachments: addWeight(state, request, force, &none, nullptr); break;
+    case Term::Seabed: addSeabed(state, request, force, nullptr); break;
   }
 }
 
@@ -299,8 +319,14 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     const int n = static_cast<int>(node);
     const int d = dofs.firstDof(n);
     // A node held in all three translations (an anchor) takes its support from the constraint: a seabed
-    // spring there would only add a phantom vertical load to the anchor reaction.
-    if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) return;
+    // spring there would only add a phantom vertical load to the anchor reaction. Resting on the seabed, the
+    // seabed carries its own weight (the line's, lumped on it), as it carries the laid nodes next to it:
+    // the anchor takes only the line's pull (theory 7.8). Only the reaction changes: the node is held.
+    if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) {
+      if (m_heldNodeWeight[node] > 0.0 && bed.penetration(state.position[n], 0.5 * diameter[n]) > 0.0)
+        force[d + 2] -= m_heldNodeWeight[node] * request.loadFactor;
+      return;
+    }
     // Clear of the seabed (most nodes): no reaction to evaluate (its result, force and two 3x3 blocks,
     // was 4 % of a mooring run to initialise).
     if (bed.penetration(state.position[n], 0.5 * diameter[n]) <= 0.0) {

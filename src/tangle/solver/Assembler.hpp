@@ -124,6 +124,18 @@ class Assembler {
   /// zeroed; `matrix` is cleared and assembled only when request.wantMatrix (else left as it was).
   void assemble(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix);
 
+  /// The built-in terms of F, one at a time, for the equilibrium audit (analysis/EquilibriumAudit).
+  enum class Term {
+    Elements,     ///< internal forces of the structural elements (and their axial damping in dynamics)
+    Weight,       ///< weight and buoyancy of the elements
+    Attachments,  ///< weight and buoyancy of the point masses and buoys
+    Seabed        ///< seabed reaction and friction
+  };
+  /// Adds one term of F (out-of-balance sign: external loads subtracted) at `state` to `force` (full DOFs,
+  /// not resized). Seabed: as in assemble, including its side effect on the trial friction anchors (the
+  /// same ones a whole assembly at `state` sets).
+  void addTerm(Term term, const model::State& state, const AssemblyRequest& request, VecX& force);
+
   /// True when assemblePart and addPartMass can stand for assemble and addMass: every contributor's
   /// forces are local to elements and nodes (LoadContributor::supportsParts).
   bool supportsParts() const;
@@ -245,6 +257,7 @@ class Assembler {
   std::vector<double> m_nodeForceScale;
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
+  std::vector<double> m_heldNodeWeight;  // submerged weight lumped on each node held in x, y, z [N] (else 0)
   // Per full DOF, the node's own diagonal mass term of addOwnMass's node loop: its lumped mass [kg] at a
   // translation (0 with consistent mass, whose translations the element loop adds), its rotational
   // inertia [kg m^2] at a rotation (0 at DOFs the node does not have).

@@ -51,6 +51,11 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
 
 }  // namespace
 
+Vec3 elementSectionForce(const model::State& state, const model::LineElement& el, double tension,
+                         const element::BeamSectionForces* beam) {
+  return elementForce(state, el, tension, beam);
+}
+
 std::vector<LineSnapshot> computeLineResults(const model::Model& model, const Assembler& assembler,
                                              const model::State& state, const VecX& fullForce) {
   std::vector<LineSnapshot> out;

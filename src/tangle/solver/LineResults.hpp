@@ -32,8 +32,10 @@ struct LineSnapshot {
   /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N],
   /// pointing from the end into the line: the section force of the end elements extrapolated as above,
   /// with the shear of beam lines (e x (M2 - M1) / L per element, LineResults.cpp) as well as the
-  /// tension; for bar lines |endTensionForceA| = endTensionA. Equal to minus the support reaction
-  /// endForceA less the loads lumped on the end node itself. At a free end with nothing attached ~0.
+  /// tension; for bar lines |endTensionForceA| = endTensionA. At a free end with nothing attached ~0.
+  /// The static results (Simulation::snapshot in statics) replace both end forces and end tensions by the
+  /// exact ones, the end element's section force plus the line's own loads lumped on the end node
+  /// (analysis::setStaticEndForces), which the equilibrium audit checks.
   Vec3 endTensionForceA = Vec3::Zero();
   Vec3 endTensionForceB = Vec3::Zero();
   /// Support reaction at the end node: minus the out-of-balance force there, global axes [N]. Differs from
@@ -48,6 +50,12 @@ struct LineSnapshot {
   double touchdownArcLength = -1.0;
   int seabedNodes = 0;               ///< nodes in contact with the seabed
 };
+
+/// Section force of element `el` [N]: the force its node-2 side exerts on its node-1 side across a cut,
+/// constant along the element: `tension` along the chord and, for a beam (`beam` not null), the shear
+/// e x (M2 - M1) / L (LineResults.cpp).
+Vec3 elementSectionForce(const model::State& state, const model::LineElement& el, double tension,
+                         const element::BeamSectionForces* beam);
 
 /// What computeLineResults fills in.
 enum class LineResultDetail {

@@ -305,6 +305,41 @@ void VesselSystem::addForces(const model::State& state, const solver::AssemblyRe
   }
 }
 
+std::vector<VesselSystem::VesselLoadReading> VesselSystem::loadReadings(
+    const model::State& state, const solver::AssemblyRequest& request) const {
+  const model::DofMap& dofs = m_model->dofs();
+  std::vector<VesselLoadReading> out;
+  for (std::size_t v = 0; v < m_vessels.size(); ++v) {
+    const VesselData& d = m_vessels[v];
+    VesselLoadReading r;
+    r.name = d.spec->name;
+    r.node = d.node;
+    r.free = d.spec->mode == model::VesselMode::Free;
+    for (const Connection& c : m_connections)
+      if (c.vessel == static_cast<int>(v)) r.endNodes.push_back(c.node);
+    if (r.free) {
+      // The same loads as addForces.
+      const int dv = dofs.firstDof(d.node);
+      const Vec6 velocity = request.dynamic ? Vec6(state.velocity.segment<6>(dv)) : Vec6::Zero();
+      const Vec3 current =
+          m_hydro
+              ->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0), request.time, false)
+              .velocity;
+      r.body = d.loads
+                   ->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0,
+                           current, m_waveAmplitude, m_waveAzimuth, 1.0)
+                   .force;
+      if (d.spec->heldInStatics && !request.dynamic) {
+        r.hold.head<3>() = -kHoldStiffness * (state.position[d.node] - d.position0);
+        r.hold.tail<3>() =
+            -kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
+      }
+    }
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
 VecX VesselSystem::endConnectionForces(const model::State& state, double time) const {
   const model::DofMap& dofs = m_model->dofs();
   VecX all = VecX::Zero(dofs.fullDofCount());

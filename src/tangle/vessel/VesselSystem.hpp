@@ -9,6 +9,7 @@
 /// optional flex joint (rotational spring) for beam lines.
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "tangle/hydro/HydroLoads.hpp"
@@ -57,6 +58,21 @@ class VesselSystem final : public solver::LoadContributor {
   };
   /// The tensioners' strokes and forces at a state.
   std::vector<TensionerReading> tensionerReadings(const model::State& state, double time) const;
+
+  /// What acts on one vessel, for the equilibrium audit (analysis/EquilibriumAudit).
+  struct VesselLoadReading {
+    std::string name;
+    int node = 0;        ///< the vessel's node
+    bool free = false;   ///< solved for (VesselMode::Free); otherwise held, and its balance is a reaction
+    /// Body loads (current, wind, wave drift, hydrostatics, damping), force [N] and moment about the
+    /// reference point [N m], global axes (VesselLoads::loads).
+    Vec6 body = Vec6::Zero();
+    /// The station-keeping springs of a vessel held in statics (VesselSpec::heldInStatics) [N, N m].
+    Vec6 hold = Vec6::Zero();
+    std::vector<int> endNodes;  ///< line end nodes tied to it
+  };
+  /// The loads on every vessel at `state` (request.dynamic: with velocities).
+  std::vector<VesselLoadReading> loadReadings(const model::State& state, const solver::AssemblyRequest& request) const;
 
   /// True when the model has any vessel.
   bool empty() const { return m_vessels.empty(); }

@@ -10,8 +10,8 @@
 // Tolerance 0.2 kN, the reference's own; at 34, 68 and 136 elements.
 //
 // Independently, without horizontal loads the horizontal end forces balance exactly: checked to 1e-4 of
-// the jumper's submerged weight (the static residual is 1e-6 of the weight per node; the extrapolation
-// to the end point adds vertical lumped weight only). Before the fix the end forces were the tension
+// the jumper's submerged weight (the static residual is 1e-6 of the weight per node; the static end force
+// adds the end node's own vertical lumped weight to the end element's section force). Before the fix the end forces were the tension
 // along the end chords: 11.518 kN at the top and 11.697 kN at the bottom at 68 elements.
 
 #include <fmt/format.h>

@@ -1,0 +1,127 @@
+// Issue 30: the equilibrium audit of a static solution (analysis/EquilibriumAudit, theory 7.8).
+//
+// 1. On the examples the forces on every line and free vessel, source by source (weight and buoyancy,
+//    attachments, drag with wakes, seabed reaction and friction, contact, the reported end forces), sum to
+//    zero within what the solver's convergence test allows (ForceBalance::tolerance: n nodes x the static
+//    tolerance x the force scale). Together the examples hold current, wake interference, seabed friction,
+//    contact along a length, contact at touchdown, buoys at free ends and free vessels.
+// 2. Test the test: an end force without the beams' shear (what tangle reported before issue 30) and an end
+//    force off by 1 % of the line's weight are flagged.
+// 3. An anchor resting on the seabed under a laid chain: the seabed carries the anchor node's weight, so the
+//    anchor's vertical force is the line's pull alone, which the slope of the first element sets (theory
+//    7.8): below 1 % of the horizontal pull.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "TestPaths.hpp"
+#include "support/ModelFactory.hpp"
+#include "tangle/analysis/EquilibriumAudit.hpp"
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/io/ModelReader.hpp"
+
+namespace tangle {
+namespace {
+
+class ExampleAudit : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ExampleAudit, EveryLineAndFreeVesselIsInBalance) {
+  analysis::Simulation sim(io::readModelFile(std::string(test::kExamplesDir) + "/" + GetParam() + "/model.yaml"));
+  const solver::StaticResult statics = sim.solveStatics();
+  ASSERT_TRUE(statics.converged) << statics.message;
+  const auto lines = sim.snapshot();
+  const solver::EquilibriumAudit audit = analysis::auditStatics(sim, lines);
+  ASSERT_EQ(audit.lines.size(), lines.size());
+  for (const solver::ForceBalance& b : audit.lines) {
+    EXPECT_TRUE(b.balanced()) << "line " << b.name << ": " << b.relativeResidual() << " > " << b.tolerance;
+    // The audit is not empty: the weight is in it.
+    EXPECT_GT(b.terms.front().second.norm(), 0.0) << b.name;
+  }
+  for (const solver::ForceBalance& b : audit.vessels)
+    EXPECT_TRUE(b.balanced()) << "vessel " << b.name << ": " << b.relativeResidual() << " > " << b.tolerance;
+  EXPECT_TRUE(audit.warnings().empty());
+  RecordProperty("worst_relative_residual", std::to_string(audit.worstRelativeResidual()));
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ExampleAudit,
+                         ::testing::Values("catenary-mooring", "riser-in-current", "riser-interference",
+                                           "risers-in-contact", "flexibles-at-touchdown", "drilling-riser-drift"),
+                         [](const auto& example) {
+                           std::string name = example.param;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
+
+/// The Lowe & Langley jumper (JumperEndForceTest), a beam line with end shears of 0.1-0.3 kN.
+analysis::Simulation jumper() {
+  model::ModelSpec spec;
+  spec.sourceFile = "jumper (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.environment.waterDensity = 1000.0;
+  section::LineType type;
+  type.name = "main";
+  type.outerDiameter = type.buoyancyDiameter = type.contactDiameter = 0.396;
+  type.massPerLength = 165.0;
+  type.axialStiffness = 500.0e6;
+  type.bendingStiffness = type.torsionalStiffness = 120.8e3;
+  spec.lineTypes["main"] = type;
+  spec.lines = {test::simpleLine("jumper", "main", 170.0, 68, model::EndKind::Pinned, Vec3(-100.0, 0.0, -55.0),
+                                 model::EndKind::Pinned, Vec3(0.0, 0.0, -5.0))};
+  return analysis::Simulation(std::move(spec));
+}
+
+TEST(EquilibriumAudit, FlagsAnEndForceWithoutTheShear) {
+  analysis::Simulation sim = jumper();
+  ASSERT_TRUE(sim.solveStatics().converged);
+  auto lines = sim.snapshot();
+  ASSERT_TRUE(analysis::auditStatics(sim, lines).warnings().empty());
+  // Leave out the shear of the end elements, as tangle did before issue 30.
+  const model::Model& m = sim.model();
+  std::vector<element::BeamSectionForces> beams;
+  const std::vector<double> tension = sim.assembler().elementTension(sim.state(), &beams);
+  const int first = m.lines()[0].firstElement, last = first + m.lines()[0].elementCount - 1;
+  const auto shear = [&](int e) -> Vec3 {
+    const model::LineElement& el = m.elements()[e];
+    const Vec3 with = solver::elementSectionForce(sim.state(), el, tension[e], &beams[e]);
+    const Vec3 without = solver::elementSectionForce(sim.state(), el, tension[e], nullptr);
+    return with - without;
+  };
+  lines[0].endTensionForceA -= shear(first);
+  lines[0].endTensionForceB += shear(last);
+  const solver::EquilibriumAudit audit = analysis::auditStatics(sim, lines);
+  ASSERT_EQ(audit.warnings().size(), 1u);
+  EXPECT_NE(audit.warnings()[0].find("'jumper'"), std::string::npos) << audit.warnings()[0];
+  // The shears left out (0.12 and 0.30 kN horizontally at the two ends in the pre-fix results) leave 0.28 %
+  // of the jumper's 70 kN submerged weight: 40 times the tolerance (69 nodes x 1e-6).
+  EXPECT_GT(audit.lines[0].relativeResidual(), 10.0 * audit.lines[0].tolerance);
+}
+
+TEST(EquilibriumAudit, FlagsAnEndForceOffByOnePercentOfTheWeight) {
+  analysis::Simulation sim = jumper();
+  ASSERT_TRUE(sim.solveStatics().converged);
+  auto lines = sim.snapshot();
+  const double scale = sim.assembler().nodeForceScale()[0];
+  lines[0].endTensionForceB.z() += 0.01 * scale;
+  const solver::EquilibriumAudit audit = analysis::auditStatics(sim, lines);
+  ASSERT_EQ(audit.warnings().size(), 1u);
+  EXPECT_NEAR(audit.lines[0].relativeResidual(), 0.01, 1e-4);
+}
+
+TEST(EquilibriumAudit, AnchorOnTheSeabedCarriesOnlyTheLinesPull) {
+  analysis::Simulation sim(io::readModelFile(std::string(test::kExamplesDir) + "/catenary-mooring/model.yaml"));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  const auto lines = sim.snapshot();
+  const solver::LineSnapshot& chain = lines.front();
+  ASSERT_GT(chain.seabedNodes, 10);
+  const Vec3 anchor = chain.endTensionForceA;
+  // Before: the anchor carried its node's half-element weight as well, 3.65 kN for a 137.9 kN pull.
+  EXPECT_LT(std::abs(anchor.z()), 0.01 * std::hypot(anchor.x(), anchor.y()));
+  // The support reaction agrees with the end force (nothing else acts on the anchor node).
+  EXPECT_NEAR((chain.endForceA - anchor).norm(), 0.0, 1e-6 * anchor.norm());
+}
+
+}  // namespace
+}  // namespace tangle
