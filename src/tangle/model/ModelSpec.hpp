@@ -24,11 +24,12 @@ struct SeabedSpec {
   double frictionCoefficient = 0.0;  ///< Coulomb friction coefficient mu [-] (statics and dynamics)
   double frictionVelocity = 0.01;  ///< viscous model, dynamics: regularisation velocity, full friction above it [m/s]
   double shearStiffness = 0.0;     ///< friction spring per unit length of line [N/m/m]; 0: = normalStiffness
-  /// false (`friction_model: viscous`, the default): in dynamics the velocity-regularised Coulomb law
-  /// mu N v / max(|v|, friction_velocity), which holds nothing at rest (statics: the elastic law below);
-  /// true (`elastic`): in statics and dynamics a spring to the node's anchor point capped at mu N, the
-  /// anchors carried from statics into dynamics and committed with every accepted step.
-  bool elasticFriction = false;
+  /// true (`friction_model: elastic`, the default): in statics and dynamics a spring to the node's anchor
+  /// point capped at mu N (with a critical dashpot beside it in dynamics), the anchors carried from statics
+  /// into dynamics and committed with every accepted step; false (`viscous`): in dynamics the
+  /// velocity-regularised Coulomb law mu N v / max(|v|, friction_velocity), which holds nothing at rest
+  /// (statics: the elastic law).
+  bool elasticFriction = true;
 };
 
 /// One level of a piecewise-linear current profile.

@@ -1,5 +1,6 @@
 #include "tangle/seabed/FlatSeabed.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace tangle::seabed {
@@ -84,7 +85,8 @@ Vec3 FlatSeabed::reactionForce(const Vec3& position, const Vec3& velocity, doubl
 }
 
 StaticFrictionResult FlatSeabed::staticFriction(const Vec3& position, const Vec2& anchor, double normal,
-                                                double normalStiffness, double tributaryLength) const {
+                                                double normalStiffness, double tributaryLength, const Vec3& velocity,
+                                                double dashpot) const {
   StaticFrictionResult r;
   r.anchor = anchor;
   const double mu = m_spec.frictionCoefficient;
@@ -93,23 +95,28 @@ StaticFrictionResult FlatSeabed::staticFriction(const Vec3& position, const Vec2
   const Vec2 slip(position.x() - anchor.x(), position.y() - anchor.y());
   const double distance = slip.norm();
   const double cap = mu * normal;
-  if (kt * distance <= cap) {
-    // Stick: linear spring to the anchor.
-    r.force.x() = -kt * slip.x();
-    r.force.y() = -kt * slip.y();
+  // Stick: linear spring to the anchor and, in dynamics, a dashpot beside it.
+  const Vec2 stick = -kt * slip - dashpot * Vec2(velocity.x(), velocity.y());
+  // (Without a dashpot the same numbers as kt |s|, bit for bit: statics paths are that sensitive.)
+  const double trial = dashpot == 0.0 ? kt * distance : stick.norm();
+  if (trial <= cap) {
+    r.force.x() = stick.x();
+    r.force.y() = stick.y();
     r.stiffness(0, 0) = r.stiffness(1, 1) = kt;
+    r.damping(0, 0) = r.damping(1, 1) = dashpot;
     return r;
   }
-  // Slip: the force sits on the cap along the slip direction n and the anchor follows the node, staying
-  // cap / kt behind it (closest-point return map of a 2D isotropic Coulomb law).
-  const Vec2 n = slip / distance;
+  // Slip: the force sits on the cap, opposite to the direction n of the trial force's pull (the slip
+  // direction without a dashpot), and the anchor follows the node, staying cap / kt behind it
+  // (closest-point return map of a 2D isotropic Coulomb law).
+  const Vec2 n = dashpot == 0.0 ? Vec2(slip / distance) : Vec2(-stick / trial);
   r.sliding = true;
   r.force.x() = -cap * n.x();
   r.force.y() = -cap * n.y();
   r.anchor = Vec2(position.x(), position.y()) - (cap / kt) * n;
   // -dF/dx = cap / |s| (I - n n^T) in the plane; -dF/dz = -mu dN/dz n... with N = k (penetration) and
   // d(penetration)/dz = -1: dF/dz = mu k n, so -dF/dz = -mu k n.
-  const double c = cap / distance;
+  const double c = cap / std::max(distance, cap / kt);
   r.stiffness(0, 0) = c * (1.0 - n.x() * n.x());
   r.stiffness(1, 1) = c * (1.0 - n.y() * n.y());
   r.stiffness(0, 1) = r.stiffness(1, 0) = -c * n.x() * n.y();

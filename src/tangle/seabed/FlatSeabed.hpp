@@ -22,6 +22,7 @@ struct SeabedNodeReaction {
 struct StaticFrictionResult {
   Vec3 force = Vec3::Zero();      ///< friction force on the node, in the seabed plane [N]
   Mat3 stiffness = Mat3::Zero();  ///< -d(force)/d(position) [N/m]
+  Mat3 damping = Mat3::Zero();    ///< -d(force)/d(velocity) [N s/m] (the stick dashpot, dynamics)
   Vec2 anchor = Vec2::Zero();     ///< anchor (x, y) after the return map [m]
   bool sliding = false;           ///< the force is at the cap mu N
 };
@@ -55,8 +56,12 @@ class FlatSeabed {
   /// @param position node position [m]; @param anchor committed anchor (x, y) [m]
   /// @param normal normal reaction N [N] (> 0); @param normalStiffness dN/d(penetration) [N/m]
   /// @param tributaryLength length of line the node stands for [m] (scales the shear stiffness)
+  /// @param velocity node velocity [m/s] and @param dashpot [N s/m]: in dynamics a dashpot beside the stick
+  ///        spring (Kelvin-Voigt), so that a node held by friction does not ring on the undamped spring
+  ///        (theory 7.5); its force counts towards the cap. Zero in statics.
   StaticFrictionResult staticFriction(const Vec3& position, const Vec2& anchor, double normal, double normalStiffness,
-                                      double tributaryLength) const;
+                                      double tributaryLength, const Vec3& velocity = Vec3::Zero(),
+                                      double dashpot = 0.0) const;
 
   /// Shear (friction spring) stiffness per unit length of line [N/m/m]: the user's value, or the normal stiffness.
   double shearStiffness() const { return m_spec.shearStiffness > 0.0 ? m_spec.shearStiffness : m_spec.normalStiffness; }

@@ -308,13 +308,15 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
                           SystemMatrix* matrix, const std::vector<int>* nodes) {
   const model::DofMap& dofs = m_model->dofs();
   const auto& env = m_model->environment();
-  const seabed::FlatSeabed bed(env.seabed, env.waterDepth);
+  model::SeabedSpec seabedSpec = env.seabed;
+  if (request.dynamic && request.relaxation) seabedSpec.elasticFriction = false;
+  const seabed::FlatSeabed bed(seabedSpec, env.waterDepth);
   const auto& trib = m_model->tributaryLength();
   const auto& diameter = m_model->nodeContactDiameter();
   // The elastic friction (a spring to the node's anchor capped at mu N) in statics, and in dynamics too
   // unless the seabed's friction is viscous (FlatSeabed).
   const bool staticFriction =
-      env.seabed.frictionCoefficient > 0.0 && (!request.dynamic || env.seabed.elasticFriction);
+      seabedSpec.frictionCoefficient > 0.0 && (!request.dynamic || seabedSpec.elasticFriction);
   forEachIndex(nodes, static_cast<std::size_t>(m_model->nodeCount()), [&](std::size_t node) {
     const int n = static_cast<int>(node);
     const int d = dofs.firstDof(n);
@@ -349,11 +351,17 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     if (staticFriction) {
       // The as-laid anchor, or for a node that touched down since the last commit its position then.
       const Vec2 anchor = std::isnan(m_anchor[n].x()) ? m_committedXY[n] : m_anchor[n];
+      // Dynamics: a dashpot beside the stick spring, critical for the node's own mass on it (theory 7.5):
+      // undamped, the held laid chain rang on its stick springs (0.26 s period for a chain) and every
+      // stick-slip switch fed it.
+      const double dashpot =
+          request.dynamic ? 2.0 * std::sqrt(bed.shearStiffness() * trib[n] * m_model->nodeMass()[n]) : 0.0;
       const seabed::StaticFrictionResult f =
-          bed.staticFriction(state.position[n], anchor, r.force.z(), r.stiffness(2, 2), trib[n]);
+          bed.staticFriction(state.position[n], anchor, r.force.z(), r.stiffness(2, 2), trib[n], v, dashpot);
       m_trialAnchor[n] = f.anchor;
       r.force += f.force;
       r.stiffness += f.stiffness;
+      r.damping += f.damping;
     }
     force.segment<3>(d) -= r.force;
     if (matrix) {

@@ -25,6 +25,10 @@ struct AssemblyRequest {
   double loadFactor = 1.0;  ///< multiplies weight and buoyancy [-] (the statics load incrementation)
   bool dynamic = false;     ///< include velocity-dependent forces (drag with structure velocity, seabed damping and friction)
   bool waves = true;        ///< with `dynamic`: include wave kinematics (false in dynamic relaxation, a statics method)
+  /// With `dynamic`: dynamic relaxation (a statics method, time::DynamicRelaxation): the seabed friction is
+  /// the velocity-regularised law whatever the model's `friction_model` (it damps the relaxation and leaves
+  /// the held lengths to the Newton solve that follows, as before the elastic law became the default).
+  bool relaxation = false;
   double kf = 1.0;          ///< factor on the stiffness dF/dq in H
   double cf = 0.0;          ///< factor on the damping dF/dv in H
   bool wantMatrix = true;   ///< assemble H

@@ -130,6 +130,7 @@ void GeneralizedAlpha::initialize(model::State& state) {
   request.time = environmentTime(state.time);
   request.dynamic = true;
   request.waves = !m_frozen;
+  request.relaxation = m_frozen;
   request.wantMatrix = false;
   m_assembler->assemble(state, request, m_forceOld, nullptr);
   // Consistent initial acceleration of the free DOFs, M a0 = -(F0 + M_prescribed a_prescribed): zero
@@ -393,6 +394,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   request.time = environmentTime(t1);
   request.dynamic = true;
   request.waves = !m_frozen;
+  request.relaxation = m_frozen;
   request.kf = 1.0 - p.alphaF;
   request.cf = (1.0 - p.alphaF) * p.gamma / (p.beta * dt);
   // Convergence: every free DOF's out-of-balance force below tol times its line's weight (moments over the

@@ -4,7 +4,8 @@
 // 10 s of dynamics with nothing changing (35.5 -> 6.5 kN): the velocity-regularised dynamic friction holds
 // nothing at rest, and the static friction's anchors were not carried over.
 //
-// The elastic law is opt-in (`friction_model: elastic`, docs/theory.md 5.4 on why it is not the default).
+// The elastic law (`friction_model: elastic`, the default; docs/theory.md 5.4) carries the static friction
+// into the dynamics, with a critical dashpot beside each stick spring.
 //
 // Model: a lazy-wave flexible in 300 m of water (250 m bare, 100 m of buoyancy modules, 350 m bare; top
 // pinned 20 m below the surface, anchor on the seabed 450 m away), in a uniform current of 0.5 m/s across
@@ -16,7 +17,7 @@
 // from the static state, which satisfies the dynamic equations to the static tolerance, and the implicit
 // integrator keeps it there; what can move is the friction springs' stick (mu N / k_t, about 4 mm) if the
 // static state's friction differs from the dynamic law's. Control: the same model with
-// `friction_model: viscous` (the default dynamic friction) drifts by more than that bound, so the check
+// `friction_model: viscous` (MoorDyn's regularised law) drifts by more than that bound, so the check
 // can fail.
 
 #include <fmt/format.h>
