@@ -50,6 +50,28 @@ TEST(Cli, EveryExampleValidates) {
   EXPECT_GE(count, 5);
 }
 
+// Issue 30: `check` estimates the memory of a run and refuses, as `run` does before it starts, a model the
+// machine cannot hold (a model of many lines with contact ended in std::bad_alloc after 32 s). The available
+// memory is forced low (TANGLE_MEMORY_AVAILABLE_MB) so that the example must be refused; with the real
+// machine's the same model passes (EveryExampleValidates) and its estimate is printed.
+TEST(Cli, CheckAndRunRefuseAModelTheMachineCannotHold) {
+  const std::string model = std::string(tangle::test::kExamplesDir) + "/risers-in-contact/model.yaml";
+  const Outcome fits = runCli("check " + model);
+  ASSERT_EQ(fits.code, 0) << fits.output;
+  EXPECT_NE(fits.output.find("memory: a run needs about"), std::string::npos) << fits.output;
+  EXPECT_NE(fits.output.find("contact candidate pairs"), std::string::npos) << fits.output;
+  const Outcome check = runCli("check " + model + " --memory-available-mb 1");
+  EXPECT_EQ(check.code, 1) << check.output;
+  EXPECT_NE(check.output.find(model + ": a run of this model needs about"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find("Remedies"), std::string::npos) << check.output;
+  const fs::path out = fs::temp_directory_path() / "tangle_cli_memory_refused";
+  fs::remove_all(out);
+  const Outcome run = runCli("run " + model + " -o " + out.string() + " --memory-available-mb 1");
+  EXPECT_EQ(run.code, 1) << run.output;
+  EXPECT_NE(run.output.find("a run of this model needs about"), std::string::npos) << run.output;
+  EXPECT_FALSE(fs::exists(out / "summary.json"));
+}
+
 TEST(Cli, StaticRunWritesResults) {
   const fs::path out = fs::temp_directory_path() / "tangle_cli_catenary";
   fs::remove_all(out);

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "tangle/analysis/EquilibriumAudit.hpp"
+#include "tangle/analysis/MemoryEstimate.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/app/RunLog.hpp"
 #include "tangle/contact/ClashReport.hpp"
@@ -705,10 +706,34 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
 
 }  // namespace
 
+/// The memory estimate of a run of `sim` against what the machine has: (report, refusal); the refusal is
+/// empty when the run fits (or the available memory is unknown).
+std::pair<std::string, std::string> memoryCheck(analysis::Simulation& sim, const std::string& modelPath,
+                                                double availableMb) {
+  const analysis::MemoryEstimate estimate = analysis::estimateMemory(sim);
+  const double available = availableMb > 0.0 ? availableMb * 1e6 : analysis::availableMemory();
+  std::string report = fmt::format("memory: a run needs about {:.0f} MB{}\n{}", estimate.total() / 1e6,
+                                   std::isfinite(available) ? fmt::format(" ({:.0f} MB available)", available / 1e6) : "",
+                                   estimate.text());
+  if (!(estimate.total() > available)) return {report, {}};
+  return {report,
+          fmt::format("{}: a run of this model needs about {:.0f} MB and the machine has {:.0f} MB available; the "
+                      "largest needs:\n{}Remedies: fewer, longer elements; contact only between the lines that can "
+                      "touch (contact.pairs); fewer line pairs in the clearance check; or a larger machine",
+                      modelPath, estimate.total() / 1e6, available / 1e6, estimate.text())};
+}
+
 int runCheck(const CheckOptions& options) {
-  model::Model m(io::readModelFile(options.modelPath));
+  analysis::Simulation sim(io::readModelFile(options.modelPath));
+  const model::Model& m = sim.model();
   fmt::print("{}", modelSummary(m));
   std::cerr << warningText(m.spec());
+  const auto [report, refusal] = memoryCheck(sim, options.modelPath, options.memoryAvailableMb);
+  fmt::print("{}", report);
+  if (!refusal.empty()) {
+    std::cerr << "error: " << refusal << "\n";
+    return 1;
+  }
   fmt::print("model is valid{}\n",
              m.spec().warnings.empty() ? "" : fmt::format(" ({} warning(s))", m.spec().warnings.size()));
   return 0;
@@ -743,6 +768,11 @@ int runView(const ViewOptions& options) {
 
 int runAnalysis(const RunOptions& options) {
   analysis::Simulation sim(io::readModelFile(options.modelPath));
+  // A run the machine cannot hold is refused before it starts (it ended in std::bad_alloc midway).
+  if (const std::string refusal = memoryCheck(sim, options.modelPath, options.memoryAvailableMb).second; !refusal.empty()) {
+    std::cerr << "error: " << refusal << "\n";
+    return 1;
+  }
   fs::path outDir = options.outputDir;
   if (outDir.empty()) {
     const fs::path p(options.modelPath);

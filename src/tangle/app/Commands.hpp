@@ -9,6 +9,7 @@ namespace tangle::app {
 /// Options of `tangle check`.
 struct CheckOptions {
   std::string modelPath;
+  double memoryAvailableMb = 0.0;  ///< [MB]; 0: what the machine has available
 };
 
 /// Options of `tangle run`.
@@ -16,6 +17,7 @@ struct RunOptions {
   std::string modelPath;
   std::string outputDir;  ///< empty: <model stem>_results beside the model file
   bool staticsOnly = false;
+  double memoryAvailableMb = 0.0;  ///< [MB]; 0: what the machine has available (refusal above it)
   bool noPlots = false;
   bool quiet = false;
   bool overwrite = false;  ///< clear an output folder of an earlier tangle run instead of refusing it

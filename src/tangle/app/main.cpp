@@ -23,12 +23,20 @@ int main(int argc, char** argv) {
   tangle::app::CheckOptions checkOptions;
   CLI::App* check = app.add_subcommand("check", "Validate a model file and print a summary of its mesh");
   check->add_option("model", checkOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
+  check->add_option("--memory-available-mb", checkOptions.memoryAvailableMb,
+                    "Memory the run may use [MB] (default: what the machine has available now; on a cluster, the "
+                    "job's limit)")
+      ->check(CLI::PositiveNumber);
 
   tangle::app::RunOptions runOptions;
   CLI::App* run = app.add_subcommand("run", "Run the analysis of a model (statics, then dynamics if requested)");
   run->add_option("model", runOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
   run->add_option("-o,--output", runOptions.outputDir, "Output directory (default: <model name>_results next to it)");
   run->add_flag("--statics-only", runOptions.staticsOnly, "Stop after the static analysis");
+  run->add_option("--memory-available-mb", runOptions.memoryAvailableMb,
+                  "Memory the run may use [MB]: a model estimated to need more is refused before it starts "
+                  "(default: what the machine has available now)")
+      ->check(CLI::PositiveNumber);
   run->add_flag("--no-plots", runOptions.noPlots, "Do not write PNG plots");
   run->add_flag("-q,--quiet", runOptions.quiet, "Print only errors");
   run->add_flag("--overwrite", runOptions.overwrite,
