@@ -25,8 +25,11 @@
 
 #include <cmath>
 
+#include "TestPaths.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
+#include "tangle/io/ModelReader.hpp"
+#include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle {
 namespace {
@@ -94,6 +97,60 @@ TEST(StaticsIntoDynamics, ControlViscousFrictionLetsTheLineSlide) {
   RecordProperty("end_tension_change", fmt::format("{:.3e}", d.tension));
   RecordProperty("largest_displacement_m", fmt::format("{:.3e}", d.position));
 }
+
+// Every other path-dependent state of the statics carried into the dynamics, on two examples with nothing
+// time-varying left (waves and vessel motions removed, 20 s): risers-in-contact (two risers pushed together
+// by the current, resting on each other along a length, with friction 0.3 between them: the contacts at
+// rest and their friction anchors are the dynamics' start contacts) and riser-interference (two top-tensioned risers on tensioners of a fixed TLP, in a current with
+// wake shielding: the tensioner strokes). Same bounds as the lazy wave: end tensions within 0.5 %, nodes
+// within 0.1 m, tensioner strokes within 1 cm, all compared with the dynamics' own results at t = 0 (the
+// same definitions: the end forces of the dynamics are extrapolated, theory 7.8).
+class ExampleAtRest : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(ExampleAtRest, StaysAtItsStaticState) {
+  model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/" + GetParam() + "/model.yaml");
+  spec.environment.waves = {};
+  // Friction between the lines (0.3, steel on coating), path-dependent like the seabed's.
+  if (spec.contact.enabled) spec.contact.frictionCoefficient = 0.3;
+  for (model::VesselSpec& v : spec.vessels)
+    if (v.mode == model::VesselMode::Prescribed) v.mode = model::VesselMode::Fixed;
+  spec.dynamics.duration = 20.0;
+  spec.dynamics.outputInterval = 20.0;
+  analysis::Simulation sim(std::move(spec));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  const std::vector<solver::LineSnapshot> before = sim.snapshot(true);
+  std::vector<double> strokes;
+  if (sim.vessels())
+    for (const auto& r : sim.vessels()->tensionerReadings(sim.state(), 0.0)) strokes.push_back(r.stroke);
+  const time::DynamicResult run = sim.runDynamics(nullptr);
+  ASSERT_TRUE(run.completed) << run.message;
+  const std::vector<solver::LineSnapshot> after = sim.snapshot(true);
+  double tension = 0.0, position = 0.0, stroke = 0.0;
+  for (std::size_t l = 0; l < before.size(); ++l) {
+    tension = std::max({tension, std::abs(after[l].endTensionA / before[l].endTensionA - 1.0),
+                        std::abs(after[l].endTensionB / before[l].endTensionB - 1.0)});
+    for (std::size_t i = 0; i < before[l].position.size(); ++i)
+      position = std::max(position, (after[l].position[i] - before[l].position[i]).norm());
+  }
+  if (sim.vessels()) {
+    const auto readings = sim.vessels()->tensionerReadings(sim.state(), sim.state().time);
+    for (std::size_t k = 0; k < readings.size(); ++k) stroke = std::max(stroke, std::abs(readings[k].stroke - strokes[k]));
+  }
+  EXPECT_LT(tension, 0.005);
+  EXPECT_LT(position, 0.1);
+  EXPECT_LT(stroke, 0.01);
+  RecordProperty("end_tension_change", fmt::format("{:.3e}", tension));
+  RecordProperty("largest_displacement_m", fmt::format("{:.3e}", position));
+  RecordProperty("largest_stroke_change_m", fmt::format("{:.3e}", stroke));
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, ExampleAtRest, ::testing::Values("risers-in-contact", "riser-interference"),
+                         [](const auto& example) {
+                           std::string name = example.param;
+                           for (char& c : name)
+                             if (c == '-') c = '_';
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace tangle
