@@ -17,6 +17,7 @@
 #include <optional>
 #include <sstream>
 
+#include "tangle/analysis/EnergyAccount.hpp"
 #include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/analysis/MemoryEstimate.hpp"
 #include "tangle/analysis/Simulation.hpp"
@@ -594,8 +595,27 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       const auto& d = m.spec().dynamics;
       report->planFrames(static_cast<int>(std::ceil(d.duration / std::max(d.outputInterval, 1e-12))) + 1);
     }
+    // The energy account (theory 8.6), when the model asks for it: on this thread, at every step.
+    std::unique_ptr<analysis::EnergyAccount> energy;
+    std::unique_ptr<io::OutputFile> energyFile;
+    if (m.spec().output.energy) {
+      energy = std::make_unique<analysis::EnergyAccount>(sim);
+      energy->start(sim.state());
+      energyFile = std::make_unique<io::OutputFile>(outDir / "dynamics" / "energy.csv");
+      std::string header = "time_s,kinetic_energy_J,kinetic_energy_change_J";
+      for (const auto& [name, work] : energy->totals().work) header += ",\"work: " + name + " [J]\"";
+      energyFile->write(header + ",residual_J,energy_flow_J\n");
+    }
+    const auto energyRow = [&] {
+      const analysis::EnergyTotals& t = energy->totals();
+      std::string row = fmt::format("{:.6f},{:.9e},{:.9e}", t.time, t.kinetic, t.kineticChange);
+      for (const auto& [name, work] : t.work) row += fmt::format(",{:.9e}", work);
+      energyFile->write(row + fmt::format(",{:.9e},{:.9e}\n", t.residual, t.throughput));
+    };
+    if (energy) energyRow();
     const time::DynamicResult dyn = sim.runDynamics(
         [&](const model::State& s, const VecX&) {
+          if (energy && s.time > energy->totals().time - 1e-12 && s.time > 0.0) energyRow();
           submitSteps();  // the steps up to this output time first (the files keep their order)
           auto shared = std::make_shared<const std::vector<solver::LineSnapshot>>(sim.snapshot(true));
           const std::vector<solver::LineSnapshot>& snap = *shared;
@@ -628,6 +648,7 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
           b.dt.push_back(dt);
           b.positions.insert(b.positions.end(), s.position.begin(), s.position.end());
           updateMaxOffsets(m, s, maxOffset);
+          if (energy) energy->step(s, dt);
           if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
           if (tensionerFile) {
             // Every step: a tensioner touching its stop between two output times must show.
@@ -660,6 +681,15 @@ int runInFolder(const RunOptions& options, analysis::Simulation& sim, io::Output
       log.info(clash->terminalSummary());
     }
     writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
+    if (energy) {
+      energyFile->close();
+      const analysis::EnergyTotals& t = energy->totals();
+      log.info(fmt::format("energy account: kinetic energy change {:.4g} J, work of the loads {:.4g} J, residual "
+                           "{:.3g} % of the {:.4g} J that flowed (dynamics/energy.csv)\n",
+                           t.kineticChange, t.kineticChange - t.residual,
+                           t.throughput > 0.0 ? 100.0 * t.residual / t.throughput : 0.0, t.throughput));
+      if (const std::string w = energy->warning(); !w.empty()) log.error("warning: " + w + "\n");
+    }
     if (maxStopForce > 0.0)
       log.error(
           fmt::format("warning: a tensioner reached its end stop during the dynamics (largest stop force "

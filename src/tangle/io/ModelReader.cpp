@@ -943,7 +943,7 @@ void readDynamics(const Value& v, ModelSpec& spec) {
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"format", "vtk", "vtk_interval", "plots"});
+  const Map m(v, {"format", "vtk", "vtk_interval", "plots", "energy"});
   const model::OutputSpec d;
   if (const std::optional<Value> format = m.find("format"))
     spec.output.format = format->choice<model::ResultFormat>({{"auto", model::ResultFormat::Auto},
@@ -953,6 +953,7 @@ void readOutput(const Value& v, ModelSpec& spec) {
   spec.output.vtk = m.boolean("vtk", d.vtk);
   spec.output.vtkInterval = m.number("vtk_interval", d.vtkInterval, positive());
   spec.output.plots = m.boolean("plots", d.plots);
+  spec.output.energy = m.boolean("energy", d.energy);
 }
 
 /// `name` read as the name of a line of `spec`; an unknown one fails with "unknown line 'X'", followed by

@@ -325,6 +325,9 @@ struct OutputSpec {
   bool vtk = true;   ///< write a ParaView .pvd/.vtu series
   double vtkInterval = 1.0;  ///< time between ParaView frames in dynamics [s]
   bool plots = true; ///< write PNG plots (needs python3 with matplotlib)
+  /// Energy account of the dynamics (dynamics/energy.csv, analysis/EnergyAccount): costs about two extra
+  /// assemblies per step, so it is asked for.
+  bool energy = false;
 };
 
 /// The whole model as read from the file.
