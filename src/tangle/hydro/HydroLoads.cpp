@@ -3,10 +3,10 @@
 #include <algorithm>
 
 #include "tangle/core/ForEachIndex.hpp"
+#include "tangle/core/Ramp.hpp"
 #include "tangle/hydro/AiryWave.hpp"
 #include "tangle/hydro/JonswapSea.hpp"
 #include "tangle/hydro/Morison.hpp"
-#include "tangle/time/Ramp.hpp"
 
 namespace tangle::hydro {
 
@@ -80,14 +80,14 @@ HydroLoads::HydroLoads(const model::Model& model)
 
 double HydroLoads::surfaceAt(double x, double y, double t, bool dynamic) const {
   if (!dynamic || !m_waves) return 0.0;
-  return time::ramp(t, m_rampTime).value * m_waves->elevation(x, y, t);
+  return core::ramp(t, m_rampTime).value * m_waves->elevation(x, y, t);
 }
 
 FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const {
   FluidKinematics k;
   k.velocity = m_current.velocity(p.z());
   if (dynamic && m_waves) {
-    const double r = time::ramp(t, m_rampTime).value;
+    const double r = core::ramp(t, m_rampTime).value;
     if (r > 0.0) {
       const FluidKinematics w = m_waves->kinematics(p, t);
       k.velocity += r * w.velocity;
@@ -98,12 +98,12 @@ FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const
 }
 
 bool HydroLoads::prepareWaves(const model::State& state, const solver::AssemblyRequest& request) {
-  const bool waves = request.dynamic && request.waves && m_waves && time::ramp(request.time, m_rampTime).value > 0.0;
+  const bool waves = request.dynamic && request.waves && m_waves && core::ramp(request.time, m_rampTime).value > 0.0;
   if (waves && (request.time != m_cacheTime || !m_cacheDynamic)) {
     // Wave kinematics (the costly part) once per time value; the current is cheap and is evaluated
     // at the current midpoint every call.
     const auto& elements = m_model->elements();
-    const double r = time::ramp(request.time, m_rampTime).value;
+    const double r = core::ramp(request.time, m_rampTime).value;
     for (std::size_t e = 0; e < elements.size(); ++e) {
       const Vec3 mid = 0.5 * (state.position[elements[e].node1] + state.position[elements[e].node2]);
       double eta = 0.0;

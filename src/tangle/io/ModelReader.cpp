@@ -476,17 +476,17 @@ class NameRegistry {
 
 void readTitle(const Value& v, ModelSpec& spec) { spec.title = v.text("a title (text)"); }
 
-void readSeabed(const Value& v, model::SeabedSpec& seabed) {
+void readSeabed(const Value& v, seabed::SeabedSpec& bed) {
   const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity", "shear_stiffness",
                   "friction_model"});
-  const model::SeabedSpec d;
-  seabed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positiveUpTo(1.0e12));
-  seabed.damping = m.number("damping", d.damping, nonNegativeUpTo(1.0e12));
-  seabed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegativeUpTo(10.0));
-  seabed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positiveUpTo(10.0));
-  seabed.shearStiffness = m.number("shear_stiffness", seabed.normalStiffness, positiveUpTo(1.0e12));
+  const seabed::SeabedSpec d;
+  bed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positiveUpTo(1.0e12));
+  bed.damping = m.number("damping", d.damping, nonNegativeUpTo(1.0e12));
+  bed.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegativeUpTo(10.0));
+  bed.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positiveUpTo(10.0));
+  bed.shearStiffness = m.number("shear_stiffness", bed.normalStiffness, positiveUpTo(1.0e12));
   if (const std::optional<Value> model = m.find("friction_model"))
-    seabed.elasticFriction = model->choice<bool>({{"elastic", true}, {"viscous", false}});
+    bed.elasticFriction = model->choice<bool>({{"elastic", true}, {"viscous", false}});
 }
 
 /// A list of levels {z, speed, azimuth}, or one map {speed, azimuth} for a uniform current (stored as a

@@ -13,24 +13,11 @@
 #include <vector>
 
 #include "tangle/core/Types.hpp"
+#include "tangle/seabed/SeabedSpec.hpp"
 #include "tangle/section/LineType.hpp"
 
 namespace tangle::model {
 
-/// Flat seabed at z = -waterDepth.
-struct SeabedSpec {
-  double normalStiffness = 1.0e5;  ///< penalty stiffness per unit length of line [N/m/m]
-  double damping = 0.0;            ///< normal damping per unit length of line [N s/m/m]
-  double frictionCoefficient = 0.0;  ///< Coulomb friction coefficient mu [-] (statics and dynamics)
-  double frictionVelocity = 0.01;  ///< viscous model, dynamics: regularisation velocity, full friction above it [m/s]
-  double shearStiffness = 0.0;     ///< friction spring per unit length of line [N/m/m]; 0: = normalStiffness
-  /// true (`friction_model: elastic`, the default): in statics and dynamics a spring to the node's anchor
-  /// point capped at mu N (with a critical dashpot beside it in dynamics), the anchors carried from statics
-  /// into dynamics and committed with every accepted step; false (`viscous`): in dynamics the
-  /// velocity-regularised Coulomb law mu N v / max(|v|, friction_velocity), which holds nothing at rest
-  /// (statics: the elastic law).
-  bool elasticFriction = true;
-};
 
 /// One level of a piecewise-linear current profile.
 struct CurrentLevel {
@@ -69,7 +56,7 @@ struct EnvironmentSpec {
   double waterDepth = 100.0;      ///< depth of the flat seabed below still water level [m]
   double waterDensity = 1025.0;   ///< sea water density [kg/m^3]
   double gravity = 9.80665;       ///< gravitational acceleration [m/s^2]
-  SeabedSpec seabed;
+  ::tangle::seabed::SeabedSpec seabed;  // (qualified: the member shares the namespace's name)
   std::vector<CurrentLevel> current;  ///< empty: no current
   WaveSpec waves;
   double windSpeed = 0.0;         ///< wind speed at 10 m [m/s]

@@ -4,7 +4,7 @@
 /// unit length of line, and regularised Coulomb friction (axial and lateral to the line).
 
 #include "tangle/core/Types.hpp"
-#include "tangle/model/ModelSpec.hpp"
+#include "tangle/seabed/SeabedSpec.hpp"
 
 namespace tangle::seabed {
 
@@ -34,7 +34,7 @@ class FlatSeabed {
  public:
   /// @param spec stiffness [N/m/m], damping [N s/m/m], friction coefficient [-], regularisation velocity [m/s]
   /// @param depth water depth [m] (seabed at z = -depth)
-  FlatSeabed(const model::SeabedSpec& spec, double depth) : m_spec(spec), m_depth(depth) {}
+  FlatSeabed(const SeabedSpec& spec, double depth) : m_spec(spec), m_depth(depth) {}
 
   /// Reaction on a node.
   /// @param position node position [m]; @param velocity node velocity [m/s]
@@ -75,7 +75,7 @@ class FlatSeabed {
   static constexpr double kSmoothPenetration = 0.002;
 
  private:
-  model::SeabedSpec m_spec;
+  SeabedSpec m_spec;
   double m_depth;
 };
 

@@ -308,7 +308,7 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
                           SystemMatrix* matrix, const std::vector<int>* nodes) {
   const model::DofMap& dofs = m_model->dofs();
   const auto& env = m_model->environment();
-  model::SeabedSpec seabedSpec = env.seabed;
+  seabed::SeabedSpec seabedSpec = env.seabed;
   if (request.dynamic && request.relaxation) seabedSpec.elasticFriction = false;
   const seabed::FlatSeabed bed(seabedSpec, env.waterDepth);
   const auto& trib = m_model->tributaryLength();

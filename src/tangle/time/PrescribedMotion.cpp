@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tangle/time/Ramp.hpp"
+#include "tangle/core/Ramp.hpp"
 
 namespace tangle::time {
 
@@ -86,7 +86,7 @@ MotionValue PrescribedMotion::at(double t) const {
   const double w = 2.0 * kPi / m_spec.period;
   const double s = std::sin(w * t + m_spec.phase);
   const double c = std::cos(w * t + m_spec.phase);
-  const RampValue r = ramp(t, m_rampTime);
+  const core::RampValue r = core::ramp(t, m_rampTime);
   // x = r(t) A sin(wt + phi): product rule for the derivatives.
   m.displacement = r.value * s * m_spec.amplitude;
   m.velocity = (r.rate * s + r.value * w * c) * m_spec.amplitude;

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tangle/core/Ramp.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/hydro/AiryWave.hpp"
 #include "tangle/hydro/JonswapSea.hpp"
-#include "tangle/time/Ramp.hpp"
 #include "tangle/vessel/Tensioner.hpp"
 
 namespace tangle::vessel {
@@ -115,7 +115,7 @@ time::MotionValue VesselSystem::prescribedPose(int v, double t) const {
   m.rotation = d.rotation0;
   if (d.spec->mode != model::VesselMode::Prescribed) return m;
   const double w = 2.0 * kPi / d.spec->motionPeriod;
-  const time::RampValue r = time::ramp(t, m_rampTime);
+  const core::RampValue r = core::ramp(t, m_rampTime);
   Vec6 value, rate, accel;
   for (int k = 0; k < 6; ++k) {
     const double a = d.spec->motionAmplitude[k];
@@ -140,7 +140,7 @@ time::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, cons
   time::MotionValue m;
   const VesselData& d = m_vessels[v];
   if (!d.rao) return m;
-  const RaoMotion::Motion r = d.rao->at(t, d.position0, time::ramp(t, m_rampTime).value);
+  const RaoMotion::Motion r = d.rao->at(t, d.position0, core::ramp(t, m_rampTime).value);
   const Vec3 arm = rotation * offset;
   // First order: translation plus small rotation times the lever arm.
   m.displacement = r.displacement.head<3>() + r.displacement.tail<3>().cross(arm);

@@ -12,8 +12,8 @@
 namespace tangle {
 namespace {
 
-model::SeabedSpec spec(double damping, double friction) {
-  model::SeabedSpec s;
+seabed::SeabedSpec spec(double damping, double friction) {
+  seabed::SeabedSpec s;
   s.normalStiffness = 2.0e5;
   s.damping = damping;
   s.frictionCoefficient = friction;
