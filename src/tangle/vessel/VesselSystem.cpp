@@ -257,19 +257,31 @@ void VesselSystem::addFlexJoint(const model::State& state, const Connection& c,
   }
 }
 
+BodyLoad VesselSystem::bodyLoad(const model::State& state, const VesselData& d,
+                                const solver::AssemblyRequest& request) const {
+  const int dv = m_model->dofs().firstDof(d.node);
+  const Vec6 velocity = request.dynamic ? Vec6(state.velocity.segment<6>(dv)) : Vec6::Zero();
+  const Vec3 current =
+      m_hydro->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0), request.time, false)
+          .velocity;
+  return d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0, current,
+                        m_waveAmplitude, m_waveAzimuth, 1.0);
+}
+
+Vec6 VesselSystem::holdLoad(const model::State& state, const VesselData& d) const {
+  Vec6 hold;
+  hold.head<3>() = -kHoldStiffness * (state.position[d.node] - d.position0);
+  hold.tail<3>() = -kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
+  return hold;
+}
+
 void VesselSystem::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
                              solver::SystemMatrix* matrix) {
   const model::DofMap& dofs = m_model->dofs();
   for (const VesselData& d : m_vessels) {
     if (d.spec->mode != model::VesselMode::Free) continue;
     const int dv = dofs.firstDof(d.node);
-    const Vec6 velocity = request.dynamic ? Vec6(state.velocity.segment<6>(dv)) : Vec6::Zero();
-    const Vec3 current =
-        m_hydro
-            ->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0), request.time, false)
-            .velocity;
-    const BodyLoad load = d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0,
-                                         d.rotation0, current, m_waveAmplitude, m_waveAzimuth, 1.0);
+    const BodyLoad load = bodyLoad(state, d, request);
     force.segment<6>(dv) -= load.force;
     if (matrix) {
       addBlock6(*matrix, dv, dv, load.stiffness, request.kf);
@@ -277,9 +289,7 @@ void VesselSystem::addForces(const model::State& state, const solver::AssemblyRe
     }
     if (d.spec->heldInStatics && !request.dynamic) {
       // Dynamic positioning on station during statics: stiff springs to the initial pose.
-      force.segment<3>(dv) += kHoldStiffness * (state.position[d.node] - d.position0);
-      force.segment<3>(dv + 3) +=
-          kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
+      force.segment<6>(dv) -= holdLoad(state, d);
       if (matrix) {
         matrix->addDiagonal3(dv, request.kf * kHoldStiffness);
         matrix->addDiagonal3(dv + 3, request.kf * kHoldRotationalStiffness);
@@ -307,7 +317,6 @@ void VesselSystem::addForces(const model::State& state, const solver::AssemblyRe
 
 std::vector<VesselSystem::VesselLoadReading> VesselSystem::loadReadings(
     const model::State& state, const solver::AssemblyRequest& request) const {
-  const model::DofMap& dofs = m_model->dofs();
   std::vector<VesselLoadReading> out;
   for (std::size_t v = 0; v < m_vessels.size(); ++v) {
     const VesselData& d = m_vessels[v];
@@ -319,21 +328,8 @@ std::vector<VesselSystem::VesselLoadReading> VesselSystem::loadReadings(
       if (c.vessel == static_cast<int>(v)) r.endNodes.push_back(c.node);
     if (r.free) {
       // The same loads as addForces.
-      const int dv = dofs.firstDof(d.node);
-      const Vec6 velocity = request.dynamic ? Vec6(state.velocity.segment<6>(dv)) : Vec6::Zero();
-      const Vec3 current =
-          m_hydro
-              ->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0), request.time, false)
-              .velocity;
-      r.body = d.loads
-                   ->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0,
-                           current, m_waveAmplitude, m_waveAzimuth, 1.0)
-                   .force;
-      if (d.spec->heldInStatics && !request.dynamic) {
-        r.hold.head<3>() = -kHoldStiffness * (state.position[d.node] - d.position0);
-        r.hold.tail<3>() =
-            -kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
-      }
+      r.body = bodyLoad(state, d, request).force;
+      if (d.spec->heldInStatics && !request.dynamic) r.hold = holdLoad(state, d);
     }
     out.push_back(std::move(r));
   }

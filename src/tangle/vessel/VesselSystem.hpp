@@ -99,6 +99,10 @@ class VesselSystem final : public solver::LoadContributor {
     std::unique_ptr<RaoMotion> rao;  ///< nullptr without RAOs or waves
   };
 
+  /// Body loads on a free vessel at `state` (VesselLoads::loads with its current; velocities in dynamics).
+  BodyLoad bodyLoad(const model::State& state, const VesselData& d, const solver::AssemblyRequest& request) const;
+  /// Force and moment of the station-keeping springs of a vessel held in statics, on the vessel [N, N m].
+  Vec6 holdLoad(const model::State& state, const VesselData& d) const;
   /// Pose (position, rotation) and 6-velocity/acceleration of a non-free vessel at time t.
   time::MotionValue prescribedPose(int vessel, double t) const;
   /// RAO displacement/velocity/acceleration of a vessel point (vessel axes offset) at t.
