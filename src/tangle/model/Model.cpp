@@ -21,9 +21,35 @@ double torsionalStiffnessOf(const section::LineType& t) {
 }  // namespace
 
 Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec))) {
+  seatAnchorsOnSeabed();
   for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
   for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v) buildVessel(v);
   m_dofs.finalize();
+}
+
+void Model::seatAnchorsOnSeabed() {
+  // The seabed supports a line on its contact surface: a laid node's centreline rests one contact radius
+  // above z = -depth (FlatSeabed). An anchor given on the seabed (within that radius of it) is placed on the
+  // same surface, so the line leaves it level: with the anchor at -depth the first element would climb one
+  // radius to the laid nodes, an uplift and a bending peak that are artefacts of the geometry (issue 30).
+  // It sits at the laid line's resting penetration, level with the laid nodes next to it.
+  const double seabedZ = -m_spec->environment.waterDepth;
+  for (LineSpec& line : m_spec->lines) {
+    if (line.sections.empty()) continue;
+    for (int end = 0; end < 2; ++end) {
+      EndSpec& e = end == 0 ? line.endA : line.endB;
+      if (e.kind != EndKind::Anchored) continue;
+      const SectionSpec& sec = end == 0 ? line.sections.front() : line.sections.back();
+      const auto type = m_spec->lineTypes.find(sec.lineType);
+      if (type == m_spec->lineTypes.end()) continue;
+      const double radius = 0.5 * type->second.contactDiameter;
+      const double weight =
+          type->second.submergedWeight(m_spec->environment.waterDensity, m_spec->environment.gravity);
+      if (e.position.z() < seabedZ + radius)
+        e.position.z() = seabedZ + radius -
+                         seabed::FlatSeabed::restingPenetration(weight, m_spec->environment.seabed.normalStiffness);
+    }
+  }
 }
 
 void Model::buildVessel(int v) {
@@ -289,20 +315,16 @@ State Model::initialState() const {
       for (int i = 1; i + 1 < line.nodeCount; ++i)
         s.position[line.firstNode + i].z() = std::max(s.position[line.firstNode + i].z(), -shapeDepth);
     }
-    // Grounded nodes start at their static penetration w / k into the seabed, so the seabed springs are
-    // active in the first Newton tangent (otherwise a grounded stretch has no vertical stiffness).
+    // Grounded nodes start on the seabed's contact surface at their static penetration into it, where they
+    // rest (and where a seated anchor is), so the seabed springs are active in the first Newton tangent
+    // (otherwise a grounded stretch has no vertical stiffness).
     for (int i = 1; i + 1 < line.nodeCount; ++i) {
       Vec3& x = s.position[line.firstNode + i];
       if (x.z() > -shapeDepth + 1e-6) continue;
       const model::LineElement& el = m_elements[line.firstElement + i];
       const double w = el.type->submergedWeight(env.waterDensity, env.gravity);
-      if (w > 0.0) {
-        // Static penetration under the seabed law's smooth onset (FlatSeabed): N = k d^2 / (2 d_s) up to
-        // d_s, k (d - d_s / 2) beyond.
-        const double ds = seabed::FlatSeabed::kSmoothPenetration;
-        const double linear = w / env.seabed.normalStiffness;
-        x.z() -= linear >= 0.5 * ds ? linear + 0.5 * ds : std::sqrt(2.0 * linear * ds);
-      }
+      x.z() = -env.waterDepth + 0.5 * m_nodeContactDiameter[line.firstNode + i] -
+              seabed::FlatSeabed::restingPenetration(w, env.seabed.normalStiffness);
     }
 
     // Triads: first one from the initial tangent, then parallel transport along the line so that

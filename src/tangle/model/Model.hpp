@@ -96,6 +96,9 @@ class Model {
   double lineMass(int line) const;
 
  private:
+  /// Anchored ends given on the seabed (below one contact radius above it) are placed on its contact
+  /// surface, where the laid line rests: centreline at -depth + contact diameter / 2 [m].
+  void seatAnchorsOnSeabed();
   void buildLine(int lineIndex);
   /// Node positions of a line with a start shape (LineSpec::startShape) between its end positions [m].
   std::vector<Vec3> startShapePositions(const Line& line, const Vec3& endA, const Vec3& endB) const;

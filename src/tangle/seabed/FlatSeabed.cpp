@@ -125,4 +125,11 @@ StaticFrictionResult FlatSeabed::staticFriction(const Vec3& position, const Vec2
   return r;
 }
 
+double FlatSeabed::restingPenetration(double weightPerLength, double normalStiffness) {
+  if (weightPerLength <= 0.0 || normalStiffness <= 0.0) return 0.0;
+  const double linear = weightPerLength / normalStiffness;
+  return linear >= 0.5 * kSmoothPenetration ? linear + 0.5 * kSmoothPenetration
+                                            : std::sqrt(2.0 * linear * kSmoothPenetration);
+}
+
 }  // namespace tangle::seabed

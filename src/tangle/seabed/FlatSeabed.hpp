@@ -74,6 +74,11 @@ class FlatSeabed {
   /// Penetration over which the normal reaction sets in smoothly (C1 quadratic onset) [m].
   static constexpr double kSmoothPenetration = 0.002;
 
+  /// Penetration [m] at which a laid line of submerged weight `weightPerLength` [N/m] rests on a seabed of
+  /// normal stiffness `normalStiffness` [N/m/m]: N = k d^2 / (2 d_s) up to d_s, k (d - d_s / 2) beyond,
+  /// solved for N = w. Zero for a line that floats (w <= 0).
+  static double restingPenetration(double weightPerLength, double normalStiffness);
+
  private:
   SeabedSpec m_spec;
   double m_depth;

@@ -24,6 +24,7 @@
 #include "TestPaths.hpp"
 #include "support/Elastica.hpp"
 #include "support/ModelFactory.hpp"
+#include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -499,12 +500,20 @@ lines:
 }
 
 // A flexible riser and an SCR 8 m apart at the top in a 1 m/s current across both (a new user's trial,
-// here on 20 m elements). Newton's continuation pushes the flexible against the SCR and stalls there;
-// the dynamic relaxation, now used with contact (theory 7.6), finds the equilibrium, in which the two do
-// not touch. Independent check: the same model without contact converges directly, and with the lines
-// apart the two equilibria must agree. Tolerances: top tensions 1e-3 (the seabed friction holding the
-// laid lengths depends on the path, relaxation or Newton, which moves the anchor tensions by up to 2 %
-// but not what the suspended lengths hang from); the lines' surfaces at least 1 cm apart everywhere.
+// here on 20 m elements). The current pushes the flexible 12-14 m downstream, across the SCR's plane, where
+// it passes over the SCR. The contact problem has two equilibria: the contact-free one (the lines 0.11 m
+// apart at their nearest, where the flexible leaves the seabed over the laid SCR), and one in which the
+// flexible is hooked over the SCR in mid-water (15.9 kN over 29 m of contact at z = -620 m), which held
+// for 120 s of dynamics with the flexible's top moved 2 m / 20 s (measured). Which one statics finds
+// depends on its path: Newton's continuation pushes the flexible onto the SCR (it stalled there once, and
+// dynamic relaxation found the free equilibrium; since anchors sit on the seabed's contact surface, issue
+// 30, Newton converges on the hook). The test asks what either must satisfy: converged; every line in
+// balance with the contact forces (the equilibrium audit, which closes each line separately, so action
+// and reaction agree); no crossing (the surfaces overlap by no more than the contact penalty's
+// penetration, 1 cm); and, when the lines are apart, the free equilibrium's top tensions within 1e-3 (the
+// seabed friction holding the laid lengths depends on the path, which moves the anchor tensions by up to
+// 2 % but not what the suspended lengths hang from). Independent check of the free branch: the same model
+// without contact converges directly.
 std::string riserPairYaml(bool contact) {
   return fmt::format(R"(
 environment:
@@ -530,21 +539,28 @@ lines:
                      contact ? "contact:\n  clearance_margin: 100" : "");
 }
 
-TEST(RiserPairInCurrent, StaticsWithContactFindsTheEquilibriumWithoutContact) {
+TEST(RiserPairInCurrent, StaticsWithContactFindsAnEquilibriumOfTheContactProblem) {
   Solved free = solveYaml(riserPairYaml(false));
   ASSERT_TRUE(free.result.converged) << free.result.message;
   Solved touching = solveYaml(riserPairYaml(true));
   ASSERT_TRUE(touching.result.converged) << touching.result.message;
-  for (std::size_t l = 0; l < 2; ++l)
-    EXPECT_NEAR(touching.lines[l].endTensionB, free.lines[l].endTensionB, 1e-3 * free.lines[l].endTensionB)
-        << "line " << l;
+  const solver::EquilibriumAudit audit = analysis::auditStatics(*touching.sim, touching.lines);
+  EXPECT_TRUE(audit.warnings().empty()) << audit.worstRelativeResidual();
   const auto& a = touching.lines[0].position;
   const auto& b = touching.lines[1].position;
   double nearest = 1e30;
   for (std::size_t i = 0; i + 1 < a.size(); ++i)
     for (std::size_t j = 0; j + 1 < b.size(); ++j)
       nearest = std::min(nearest, geometry::segmentDistance(a[i], a[i + 1], b[j], b[j + 1]).distance);
-  EXPECT_GT(nearest - 0.5 * (0.35 + 0.2731), 0.01);
+  const double gap = nearest - 0.5 * (0.35 + 0.2731);  // [m]
+  EXPECT_GT(gap, -0.01);
+  if (gap > 0.01) {
+    for (std::size_t l = 0; l < 2; ++l)
+      EXPECT_NEAR(touching.lines[l].endTensionB, free.lines[l].endTensionB, 1e-3 * free.lines[l].endTensionB)
+          << "line " << l;
+  }
+  RecordProperty("equilibrium", gap > 0.01 ? "free" : "hooked");
+  RecordProperty("surface_gap_m", std::to_string(gap));
 }
 
 // A steel catenary riser hung from a fixed vessel without a flex joint is pinned there: it must give the
