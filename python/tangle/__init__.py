@@ -19,9 +19,10 @@ Units are SI (m, kg, N, s) everywhere in results; the model itself is in the uni
 from __future__ import annotations
 
 import copy
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Union
 
 import numpy as np
 
@@ -250,6 +251,25 @@ class Model:
     def run_statics(self) -> StaticResults:
         """Static equilibrium (raises ConvergenceError with the solver's diagnosis when none is found)."""
         return self.simulation().run_statics()
+
+    def run(self, folder: Union[str, "os.PathLike[str]"], *, overwrite: bool = False, statics_only: bool = False,
+            report: bool = True, plots: bool = False, quiet: bool = True) -> Path:
+        """Runs the model into a results folder exactly as ``tangle run -o folder`` does: summary.json,
+        statics/, dynamics/, contact and clearance reports, results.h5 and report.html (plots with
+        ``plots=True``), the model as run in model.yaml and the run log. Returns the folder. Raises
+        ConvergenceError when the statics do not converge or the dynamics stop early (the folder keeps what
+        was computed, and its tangle-run.json says where it stopped), KeyboardInterrupt on Ctrl-C, ModelError
+        on bad input or a folder that holds other files (``overwrite=True`` replaces an earlier run's)."""
+        text = self.text()
+        edited = self._text is None or text != self._text
+        source = self.source + (" (as edited in Python: see Model.text())" if edited else "")
+        code, status = _tangle.run_to_folder(text, source, os.fspath(folder), overwrite, statics_only, report,
+                                             plots, quiet)
+        if code == 130:
+            raise KeyboardInterrupt(f"run into {os.fspath(folder)} stopped: {status}")
+        if code != 0:
+            raise ConvergenceError(f"run into {os.fspath(folder)} {status} (see its run.log)")
+        return Path(folder)
 
     def run_dynamics(self, progress: Optional[Callable[[float, float], Any]] = None) -> DynamicResults:
         """Statics, then the dynamic run of the model's dynamics block. ``progress(time_s, duration_s)`` is

@@ -250,3 +250,61 @@ def test_results_at_an_arc_length(mooring: tangle.Model) -> None:
     assert run.time_history("mooring1", "position_m", arc[3]).shape == (len(run.time_s), 3)
     with pytest.raises(KeyError):
         run.time_history("mooring1", "end_tension_N", 0.0)
+
+
+def test_run_into_a_folder_writes_what_the_cli_writes(mooring: tangle.Model, tmp_path: Path) -> None:
+    # Model.run(folder) is the command line's run (results::RunOutputs): the same files with the same
+    # content, results.h5 and report.html included. Timing fields and the log's wording aside, byte for byte.
+    import h5py
+
+    cli = cli_run(mooring, tmp_path / "cli")
+    py = mooring.run(tmp_path / "py")
+    assert py == tmp_path / "py"
+    skip = {"run.log", "tangle-run.json", "model.yaml", "report.html", "report/data.json"}
+    cli_files = sorted(str(p.relative_to(cli)) for p in cli.rglob("*") if p.is_file() and "plots" not in p.parts)
+    py_files = sorted(str(p.relative_to(py)) for p in py.rglob("*") if p.is_file() and "plots" not in p.parts)
+    assert py_files == cli_files
+    for name in cli_files:
+        if name in skip or name.endswith(".h5") or name.endswith("summary.json"):
+            continue
+        assert (py / name).read_bytes() == (cli / name).read_bytes(), name
+    # The model is named by its source; the wall time (also in the message) is the machine's.
+    timing = {"wall_time_s", "real_time_factor", "model", "message"}
+    for name in ("summary.json", "dynamics/summary.json"):
+        a = json.loads((cli / name).read_text())
+        b = json.loads((py / name).read_text())
+        assert {k: v for k, v in a.items() if k not in timing} == {k: v for k, v in b.items() if k not in timing}
+        assert a.get("message", "").split(" wall time")[0].rsplit(",", 1)[0] == b.get("message", "").split(" wall time")[0].rsplit(",", 1)[0]
+    with h5py.File(cli / "results.h5") as a, h5py.File(py / "results.h5") as b:
+        names: list[str] = []
+        a.visit(lambda n: names.append(n) if isinstance(a[n], h5py.Dataset) else None)
+        assert names and "dynamics/lines/mooring1/effective_tension" in names
+        for n in names:
+            np.testing.assert_array_equal(a[n][()], b[n][()], err_msg=n)
+    assert (py / "report.html").stat().st_size > 0
+    assert json.loads((py / "tangle-run.json").read_text())["status"] == "completed"
+    # A second run into the same folder is refused unless asked to replace it.
+    with pytest.raises(tangle.ModelError, match="already holds files"):
+        mooring.run(tmp_path / "py")
+    assert mooring.run(tmp_path / "py", overwrite=True, report=False) == tmp_path / "py"
+    assert not (py / "report.html").exists()
+
+
+def test_a_run_into_a_folder_that_stops_early_raises_and_keeps_its_results(tmp_path: Path) -> None:
+    m = tangle.Model({
+        "title": "a run that cannot finish",
+        "environment": {"water_depth": 100},
+        "line_types": [{"name": "wire", "outer_diameter": 0.05, "mass_per_length": 10, "axial_stiffness": 1e8}],
+        "lines": [{"name": "wire",
+                   "end_a": {"type": "anchored", "position": [0, 0, -100]},
+                   "end_b": {"type": "pinned", "position": [90, 0, -10],
+                             "motion": {"amplitude": [40, 0, 0], "period": 1}},
+                   "sections": [{"type": "wire", "length": 140, "elements": 20}]}],
+        "dynamics": {"duration": 5, "time_step": 0.1, "min_time_step": 0.1, "ramp_time": 0},
+    }, "stops early (test)")
+    with pytest.raises(tangle.ConvergenceError, match="failed: dynamics stopped"):
+        m.run(tmp_path / "out")
+    assert json.loads((tmp_path / "out" / "tangle-run.json").read_text())["status"].startswith("failed: dynamics")
+    summary = json.loads((tmp_path / "out" / "dynamics" / "summary.json").read_text())
+    assert not summary["completed"] and summary["end_time_s"] < 5.0 and "did not converge" in summary["message"]
+    assert (tmp_path / "out" / "results.h5").exists()

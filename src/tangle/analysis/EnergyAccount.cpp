@@ -6,9 +6,6 @@
 #include <cmath>
 
 #include "tangle/analysis/Simulation.hpp"
-#include "tangle/contact/LineContact.hpp"
-#include "tangle/hydro/HydroLoads.hpp"
-#include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle::analysis {
 
@@ -65,10 +62,10 @@ void EnergyAccount::powers(const model::State& state, std::vector<double>& power
   for (solver::LoadContributor* c : assembler.contributors()) {
     f.setZero();
     c->addForces(state, request, f, nullptr);
-    const int source = dynamic_cast<hydro::HydroLoads*>(c)        ? kHydro
-                       : dynamic_cast<contact::LineContact*>(c)   ? kContact
-                       : dynamic_cast<vessel::VesselSystem*>(c)   ? kVessels
-                                                                  : kOther;
+    const int source = c->source() == solver::LoadSource::Hydrodynamic ? kHydro
+                       : c->source() == solver::LoadSource::Contact    ? kContact
+                       : c->source() == solver::LoadSource::Vessels    ? kVessels
+                                                                       : kOther;
     add(source, f);
   }
   // Mass: kinetic energy 1/2 v.M v (structural, rotational, added mass, vessels) and the inertia at the

@@ -3,8 +3,6 @@
 #include <algorithm>
 
 #include "tangle/analysis/Simulation.hpp"
-#include "tangle/contact/LineContact.hpp"
-#include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle::analysis {
@@ -46,14 +44,14 @@ LoadTerms staticLoads(Simulation& simulation) {
   terms.other = VecX::Zero(size);
   terms.endAttachmentDrag = VecX::Zero(size);
   for (solver::LoadContributor* c : assembler.contributors()) {
-    if (dynamic_cast<vessel::VesselSystem*>(c)) continue;  // the supports of the line ends
-    if (auto* hydro = dynamic_cast<hydro::HydroLoads*>(c)) {
-      hydro->addForces(state, request, terms.drag, nullptr);
+    if (c->source() == solver::LoadSource::Vessels) continue;  // the supports of the line ends
+    if (c->source() == solver::LoadSource::Hydrodynamic) {
+      c->addForces(state, request, terms.drag, nullptr);
       solver::AssemblyPart part;
       for (std::size_t i = 0; i < model.attachments().size(); ++i)
         if (isLineEnd(model, model.attachments()[i].node)) part.attachments.push_back(static_cast<int>(i));
-      if (!part.attachments.empty()) hydro->addPartForces(state, request, part, terms.endAttachmentDrag);
-    } else if (dynamic_cast<contact::LineContact*>(c)) {
+      if (!part.attachments.empty()) c->addPartForces(state, request, part, terms.endAttachmentDrag);
+    } else if (c->source() == solver::LoadSource::Contact) {
       c->addForces(state, request, terms.contact, nullptr);
     } else {
       c->addForces(state, request, terms.other, nullptr);

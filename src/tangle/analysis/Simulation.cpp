@@ -81,8 +81,9 @@ solver::StaticResult Simulation::solveStatics() {
         "static analysis interrupted by the user (Ctrl-C or SIGTERM) before it converged; where it "
         "stood: " +
         result.message;
-  // Contacts at rest in the static equilibrium become the starting contacts of the dynamics.
-  if (m_contact && result.converged) m_contact->commitStep(m_state, 0.0);
+  // The final static solution is committed (LoadContributor's protocol): contacts at rest in it become
+  // the starting contacts of the dynamics.
+  if (result.converged) m_assembler->commitStep(m_state, 0.0);
   return result;
 }
 
@@ -117,14 +118,10 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
     for (const model::SectionSpec& s : line.sections) length += s.length;
     longest = std::max(longest, length);
   }
-  std::vector<time::PrescribedNode> prescribed = time::prescribedNodes(*m_model);
+  std::vector<model::PrescribedNode> prescribed = time::prescribedNodes(*m_model);
   if (m_vessels)
-    for (time::PrescribedNode& n : m_vessels->prescribedNodes()) prescribed.push_back(std::move(n));
+    for (model::PrescribedNode& n : m_vessels->prescribedNodes()) prescribed.push_back(std::move(n));
   time::DynamicRelaxation relaxation(*m_assembler, m_model->spec().dynamics, std::move(prescribed), longest);
-  if (m_contact)
-    relaxation.setStepValidator([this](const model::State& before, const model::State& after) {
-      return m_contact->stepRejection(before, after);
-    });
   // Rounds of two periods of the slowest (pendulum) mode, each followed by a Newton solve from the shape
   // reached; at rest means slower than 1 mm/s.
   const double period = 2.0 * std::numbers::pi / (0.5 * relaxation.damping());
@@ -324,22 +321,10 @@ time::DynamicResult Simulation::runDynamics(const time::DynamicAnalysis::Observe
   if (stepObserver) dynamics.setStepObserver(stepObserver);
   if (stop) dynamics.setStopRequest(stop);
   if (m_vessels) dynamics.addPrescribed(m_vessels->prescribedNodes());
-  if (m_contact) {
-    dynamics.setStepLimiter([this](const model::State& s) { return m_contact->stepLimit(s); });
-    dynamics.setStepValidator([this](const model::State& before, const model::State& after) {
-      return m_contact->stepRejection(before, after);
-    });
-  }
-  // Path-dependent states of an accepted step: the seabed friction anchors (carried over from statics,
-  // so a model with no time-varying load stays at its static state) and the contact's.
-  dynamics.setStepHook([this](model::State& s, double dt) {
-    m_assembler->commitStep(s);
-    if (m_contact) m_contact->commitStep(s, dt);
-  });
   // The run advances m_state itself, so snapshot() inside the observer sees the output state.
-  const time::DynamicResult result = dynamics.run(m_state);
-  if (m_contact) m_contact->finish(m_state.time);
-  return result;
+  // The seabed friction anchors (carried over from statics, so a model with no time-varying load stays at
+  // its static state) and the contact's states are committed by the dynamics (LoadContributor's protocol).
+  return dynamics.run(m_state);
 }
 
 }  // namespace tangle::analysis

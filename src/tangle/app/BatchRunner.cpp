@@ -32,7 +32,7 @@
 #include "tangle/app/CaseSummary.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 extern char** environ;
 
@@ -54,7 +54,7 @@ std::string readText(const fs::path& file) {
 /// Writes `text` to `file` unless it already holds exactly that (keeps the file of a finished case).
 void writeIfChanged(const fs::path& file, const std::string& text) {
   if (fs::exists(file) && readText(file) == text) return;
-  io::OutputFile out(file);
+  core::OutputFile out(file);
   out.write(text);
   out.close();
 }
@@ -120,7 +120,7 @@ CaseSummary finishCase(const BatchCase& c, const CasePaths& p, int status, doubl
   if (row.exitCode != 0 && (row.status.empty() || row.status.rfind("completed", 0) == 0 || row.status == "running"))
     row.status = row.exitCode == 1 ? "failed: bad input" : fmt::format("failed (exit code {})", row.exitCode);
   if (row.exitCode != 0 && row.message.empty()) row.message = "see " + p.log.string();
-  io::OutputFile out(p.row);
+  core::OutputFile out(p.row);
   out.write(row.serialise());
   out.close();
   return row;

@@ -12,7 +12,7 @@
 #include <limits>
 #include <set>
 
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 namespace tangle::app {
 
@@ -162,7 +162,7 @@ std::string writeSummaryTable(const fs::path& file, const std::vector<std::strin
   for (const CaseSummary& r : rows)
     for (const CaseSummary::LineRow& l : r.lines)
       if (std::find(lines.begin(), lines.end(), l.name) == lines.end()) lines.push_back(l.name);
-  io::OutputFile out(file);
+  core::OutputFile out(file);
   std::string header = "case";
   for (const std::string& p : parameterNames) header += "," + csvField(p);
   header += ",status,exit_code,statics_converged";

@@ -8,8 +8,8 @@
 #include <limits>
 
 #include "tangle/core/Error.hpp"
-#include "tangle/io/JsonWriter.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/JsonWriter.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 namespace tangle::contact {
 
@@ -40,7 +40,7 @@ Stats statistics(std::vector<double> v) {
   return s;
 }
 
-void writeStats(io::JsonWriter& j, const char* key, const std::vector<double>& v) {
+void writeStats(core::JsonWriter& j, const char* key, const std::vector<double>& v) {
   const Stats s = statistics(v);
   j.key(key);
   j.beginObject();
@@ -79,7 +79,7 @@ void ClashReport::write(const fs::path& dir) const {
   const auto& lines = m_model->lines();
   const auto& events = m_contact->events();
   {
-    io::OutputFile file(out / "events.csv");
+    core::OutputFile file(out / "events.csv");
     std::ostream& f = file.stream();
     f << "event,line_1,line_2,kind,start_time_s,end_time_s,x_start_m,y_start_m,z_start_m,arc_1_start_m,"
          "arc_2_start_m,"
@@ -104,7 +104,7 @@ void ClashReport::write(const fs::path& dir) const {
     file.close();
   }
   {
-    io::OutputFile file(out / "event_paths.csv");
+    core::OutputFile file(out / "event_paths.csv");
     std::ostream& f = file.stream();
     f << "event,time_s,arc_1_m,arc_2_m\n";
     for (std::size_t i = 0; i < events.size(); ++i)
@@ -112,7 +112,7 @@ void ClashReport::write(const fs::path& dir) const {
     file.close();
   }
   {
-    io::OutputFile file(out / "clearance.csv");
+    core::OutputFile file(out / "clearance.csv");
     std::ostream& f = file.stream();
     f << "time_s,pair,min_clearance_m,arc_1_m,arc_2_m\n";
     for (const ClearanceSample& s : m_samples) {
@@ -126,7 +126,7 @@ void ClashReport::write(const fs::path& dir) const {
     file.close();
   }
   {
-    io::OutputFile file(out / "forces.csv");
+    core::OutputFile file(out / "forces.csv");
     std::ostream& f = file.stream();
     f << "time_s,pair,total_force_N,peak_force_per_length_N_per_m,contact_length_m,patches\n";
     for (const ForceSample& s : m_forces)
@@ -134,8 +134,8 @@ void ClashReport::write(const fs::path& dir) const {
                        lines[m_pairs[s.pair][1]].name, s.force, s.peakPerLength, s.length, s.patches);
     file.close();
   }
-  io::OutputFile summary(out / "summary.json");
-  io::JsonWriter j(summary.stream());
+  core::OutputFile summary(out / "summary.json");
+  core::JsonWriter j(summary.stream());
   j.beginObject();
   j.field("model",
           m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");

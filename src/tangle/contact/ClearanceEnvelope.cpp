@@ -10,8 +10,8 @@
 #include <set>
 
 #include "tangle/contact/SmoothCentreline.hpp"
-#include "tangle/io/JsonWriter.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/JsonWriter.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 namespace tangle::contact {
 
@@ -292,7 +292,7 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   std::filesystem::create_directories(out);
   const auto& lines = m_model->lines();
   {
-    io::OutputFile file(out / "envelope.csv");
+    core::OutputFile file(out / "envelope.csv");
     std::ostream& f = file.stream();
     f << "line,other_line,arc_length_m,static_clearance_m,min_clearance_m,time_of_min_s\n";
     for (const Side& s : m_sides) {
@@ -304,8 +304,8 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
     }
     file.close();
   }
-  io::OutputFile summary(out / "summary.json");
-  io::JsonWriter j(summary.stream());
+  core::OutputFile summary(out / "summary.json");
+  core::JsonWriter j(summary.stream());
   j.beginObject();
   j.field("standard", "DNV-RP-F203 (2009) no-collision criterion: minimum clearance >= required");
   j.field("required_clearance_m", m_required);

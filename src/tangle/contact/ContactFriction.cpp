@@ -7,7 +7,7 @@
 /// stick spring k_t per unit length (regularised stick: the stick displacement mu f_n / k_t is of the
 /// order of mu times the penetration); if k_t |delta_t| exceeds mu f_n the patch slips: the force is
 /// mu f_n in the direction of delta_t and the anchor is moved back onto the slip surface (return map).
-/// addForces() only computes the trial anchor; commitStatic()/commitStep() make it the committed one, so
+/// addForces() only computes the trial anchor; commitIncrement()/commitStep() make it the committed one, so
 /// rejected iterations or steps need no revert. Friction of the point-to-point part (large crossing
 /// angles): in statics the same elastic stick and slip per point contact (its stick spring the contact's
 /// point stiffness, its limit mu F_n; issue 29: a line resting across another was held by nothing in

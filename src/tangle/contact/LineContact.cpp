@@ -459,7 +459,7 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     // smoothed tangents, which is not the closest-point direction on curved lines and gave phantom
     // forces at positive gaps). Its sign is -1 when this element pair has passed through each other
     // since the last committed state (a Newton iterate that overshot), so that the lines are pushed back
-    // to the side they came from. Committed states are never crossed (acceptStep, rejectState), so the
+    // to the side they came from. Committed states are never crossed (rejectStep, rejectState), so the
     // pair's own chords at that state tell the side. (Comparing with the normal of a contact tracked
     // nearby along the lines is wrong where the normal turns legitimately: the two legs of a cable
     // folded over a wire touch it from sides 90-180 deg apart, and a foot passing from one leg to the
@@ -636,7 +636,7 @@ bool LineContact::updateActiveSet() {
   return changed;
 }
 
-double LineContact::stepLimit(const model::State& state) {
+double LineContact::limitStep(const model::State& state) {
   double limit = kInf;
   const auto& elements = m_model->elements();
   // Look ahead: candidates within the motion of one nominal step.
@@ -716,7 +716,7 @@ double LineContact::stepLimit(const model::State& state) {
       }
     }
   }
-  // Resolve every impact with at least 20 steps while it lasts. An impact is dynamic when the rigid
+  // Resolve every impact with at least kImpactSteps (40) steps while it lasts. An impact is dynamic when the rigid
   // impact penetration v0 sqrt(m / k) is not negligible (> 1e-3 of the smaller contact radius: a thin
   // line hitting a thick one is judged by its own size); a quasi-static touch needs no resolution in
   // time and keeps the nominal step.
@@ -731,7 +731,7 @@ double LineContact::stepLimit(const model::State& state) {
       limit = std::min(limit, duration / kImpactSteps);
   }
   (void)elements;
-  if (m_debug) std::cerr << fmt::format("    stepLimit: t {:.6e} limit {:.6e}\n", state.time, limit);
+  if (m_debug) std::cerr << fmt::format("    limitStep: t {:.6e} limit {:.6e}\n", state.time, limit);
   return limit;
 }
 
@@ -750,7 +750,7 @@ void LineContact::applyImpulse(model::State& state, const ContactPoint& c, doubl
   }
 }
 
-std::string LineContact::stepRejection(const model::State& before, const model::State& after) {
+std::string LineContact::rejectStep(const model::State& before, const model::State& after) {
   const auto& elements = m_model->elements();
   for (const CandidatePair& cp : m_candidates) {
     const SegmentProxy& a = m_proxies[cp.first];

@@ -92,7 +92,7 @@ struct FrictionPatch {
   bool slipping = false;
   bool point = false;    ///< the friction of a point contact (statics), not of a line-to-line patch
   int elementB = -1;     ///< a point contact's element of line B (its anchor's key with elementA)
-  FrictionAnchor trial;  ///< anchor after the return map (committed by commitStatic/commitStep)
+  FrictionAnchor trial;  ///< anchor after the return map (committed by commitIncrement/commitStep)
   int nodeA[2] = {0, 0}, nodeB[2] = {0, 0};
   double wA = 0.0, wB = 0.0;    ///< parameters of the anchor points on their elements
   Vec3 elastic = Vec3::Zero();  ///< trial tangential offset delta_t [m]
@@ -139,7 +139,8 @@ class LineContact final : public solver::LoadContributor {
   bool updateActiveSet() override;
   double limitIncrement(const model::State& state, const VecX& fullIncrement) override;
   std::string rejectState(const model::State& state) override;
-  void commitStatic(const model::State& state) override;
+  void commitIncrement(const model::State& state) override;
+  solver::LoadSource source() const override { return solver::LoadSource::Contact; }
   void beginStatic(const model::State& state) override {
     m_reference = state.position;
     m_pendingAnchors.clear();
@@ -173,23 +174,19 @@ class LineContact final : public solver::LoadContributor {
                     double b1) const;
 
   /// Largest step [s] from this state so that no approaching pair closes by more than a fifth of its
-  /// contact radii (no tunnelling) and every active impact is resolved with at least 20 steps.
-  double stepLimit(const model::State& state);
-  /// True unless the step from `before` to `after` let a pair pass through each other (the normal of a
-  /// pair flipped while its closest points stayed inside both segments) or penetrate deeper than half
-  /// the contact radii: then the step must be cut.
-  bool acceptStep(const model::State& before, const model::State& after) {
-    return stepRejection(before, after).empty();
-  }
-  /// Empty when acceptStep() holds, otherwise the reason: which two lines, where (arc lengths and
-  /// position), how deep, and what the user can change.
-  std::string stepRejection(const model::State& before, const model::State& after);
+  /// contact radii (no tunnelling) and every active impact is resolved in at least 40 steps (kImpactSteps).
+  double limitStep(const model::State& state) override;
+  /// Empty unless the step from `before` to `after` let a pair pass through each other (the normal of a
+  /// pair flipped while its closest points stayed inside both segments) or penetrate deeper than half the
+  /// contact radii: then the reason (which two lines, where in arc length and position, how deep, and what
+  /// the user can change), and the step must be cut.
+  std::string rejectStep(const model::State& before, const model::State& after) override;
   /// Commits the contacts of the accepted state `state` reached with step dt: updates impulses, Eq. 5
-  /// effective masses, events. Call after every accepted step (and once after the static solve with dt = 0).
+  /// effective masses, events. After every accepted step, and once for the static solution with dt = 0.
   /// With the impulse model, new impacts change the velocities of `state` (momentum-conserving jump).
-  void commitStep(model::State& state, double dt);
+  void commitStep(model::State& state, double dt) override;
   /// Closes the open events at the end of the run (time [s]).
-  void finish(double time);
+  void finish(double time) override;
 
   /// Contact stiffness between two lines [N/m] (user value or automatic).
   double stiffness(int lineA, int lineB) const;

@@ -105,7 +105,7 @@ std::string LineContact::rejectState(const model::State& state) {
   return {};
 }
 
-void LineContact::commitStatic(const model::State& state) {
+void LineContact::commitIncrement(const model::State& state) {
   m_reference = state.position;
   commitFriction();
 }

@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 namespace tangle::contact {
 
@@ -27,7 +27,7 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
     t.b0 = std::min(t.b0, arcB);
     t.b1 = std::max(t.b1, arcB);
   };
-  io::OutputFile file(dir / "statics" / "contact_points.csv");
+  core::OutputFile file(dir / "statics" / "contact_points.csv");
   std::ostream& f = file.stream();
   f << "line_1,line_2,kind,arc_1_m,arc_2_m,x_m,y_m,z_m,normal_x,normal_y,normal_z,force_N,force_per_length_N_per_m,"
        "length_m,gap_m\n";
@@ -63,7 +63,7 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
   }
   file.close();
 
-  io::OutputFile pairFile(dir / "statics" / "contact_pairs.csv");
+  core::OutputFile pairFile(dir / "statics" / "contact_pairs.csv");
   std::ostream& g = pairFile.stream();
   g << "line_1,line_2,normal_force_N,force_on_1_x_N,force_on_1_y_N,force_on_1_z_N,contact_length_m,"
        "peak_force_per_length_N_per_m,arc_1_from_m,arc_1_to_m,arc_2_from_m,arc_2_to_m,points,length_samples\n";

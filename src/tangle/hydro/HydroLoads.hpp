@@ -36,6 +36,7 @@ class HydroLoads final : public solver::LoadContributor {
   void addMass(const model::State& state, double mf, solver::SystemMatrix* matrix, const VecX* acceleration,
                VecX* out) override;
   /// Local to elements and attachments but for wakes (a wake couples an element with those upstream).
+  solver::LoadSource source() const override { return solver::LoadSource::Hydrodynamic; }
   bool supportsParts() const override { return !m_wake; }
   void addPartForces(const model::State& state, const solver::AssemblyRequest& request,
                      const solver::AssemblyPart& part, VecX& force) override;

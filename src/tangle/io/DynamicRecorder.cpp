@@ -56,19 +56,19 @@ std::vector<VtkPolyline> toPolylines(const std::vector<solver::LineSnapshot>& li
 
 DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::LineSnapshot>& initial,
                                  double vtkInterval, bool timeHistories)
-    : m_dir(dir), m_stems(lineFileStems(initial)), m_vtkInterval(vtkInterval) {
+    : m_dir(dir), m_stems(lineFileStems(initial)), m_vtkInterval(vtkInterval), m_ranges(initial) {
   const fs::path dyn = dir / "dynamics";
   fs::create_directories(dyn);
-  m_endForces = std::make_unique<OutputFile>(dyn / "end_forces.csv");
+  m_endForces = std::make_unique<core::OutputFile>(dyn / "end_forces.csv");
   std::string header = "time_s";
   for (std::size_t l = 0; l < initial.size(); ++l) {
     const solver::LineSnapshot& s = initial[l];
     m_arc.push_back(s.arcLength);
     const fs::path ld = dyn / m_stems[l];
     fs::create_directories(ld);
-    std::vector<std::unique_ptr<OutputFile>> streams;
+    std::vector<std::unique_ptr<core::OutputFile>> streams;
     for (int q = 0; q < (timeHistories ? kQuantityCount : 0); ++q) {
-      auto f = std::make_unique<OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));
+      auto f = std::make_unique<core::OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));
       std::string row = "time_s";
       for (double a : s.arcLength) row += fmt::format(",s={:.3f}m", a);
       f->write(row + "\n");
@@ -77,15 +77,6 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
     m_streams.push_back(std::move(streams));
     for (const char* end : {"end_a", "end_b"})
       header += fmt::format(",{0}_{1}_tension_N,{0}_{1}_fx_N,{0}_{1}_fy_N,{0}_{1}_fz_N", m_stems[l], end);
-    const std::size_t n = s.arcLength.size();
-    const double inf = std::numeric_limits<double>::infinity();
-    Range r{std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
-            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
-            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0)};
-    r.endTensionMaxA = r.endTensionMaxB = -inf;
-    r.endTensionMinA = r.endTensionMinB = inf;
-    r.retension = std::max(1.0, 0.01 * *std::max_element(s.tension.begin(), s.tension.end()));
-    m_ranges.push_back(std::move(r));
   }
   m_endForces->write(header + "\n");
   if (m_vtkInterval > 0.0) m_vtk = std::make_unique<PvdSeries>(dir / "vtk" / "lines.pvd");
@@ -132,52 +123,15 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
   }
 }
 
-void DynamicRecorder::accumulate(const std::vector<solver::LineSnapshot>& lines, double dt) {
-  // Means are time-weighted (each state stands for the step of length dt that led to it): steps are not
-  // equal when the step controller cuts them. The initial state (dt = 0) counts in the extremes only.
-  for (std::size_t l = 0; l < lines.size(); ++l) {
-    const solver::LineSnapshot& s = lines[l];
-    Range& r = m_ranges[l];
-    for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
-      r.tensionMin[i] = std::min(r.tensionMin[i], s.tension[i]);
-      r.tensionMax[i] = std::max(r.tensionMax[i], s.tension[i]);
-      r.momentMin[i] = std::min(r.momentMin[i], s.bendingMoment[i]);
-      r.momentMax[i] = std::max(r.momentMax[i], s.bendingMoment[i]);
-      r.curvatureMin[i] = std::min(r.curvatureMin[i], s.curvature[i]);
-      r.curvatureMax[i] = std::max(r.curvatureMax[i], s.curvature[i]);
-      r.tensionSum[i] += dt * s.tension[i];
-      r.momentSum[i] += dt * s.bendingMoment[i];
-      r.curvatureSum[i] += dt * s.curvature[i];
-    }
-    r.endTensionMaxA = std::max(r.endTensionMaxA, s.endTensionA);
-    r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
-    r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);
-    r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
-    double lowest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < s.tension.size(); ++i)
-      if (m_seabedLevel.empty() || s.position[i].z() > m_seabedLevel[l][i]) lowest = std::min(lowest, s.tension[i]);
-    if (lowest < 0.0) {
-      if (!r.slack) ++r.slackEvents;
-      r.slack = true;
-      r.slackTime += dt;
-    } else if (lowest > r.retension) {
-      r.slack = false;
-    }
-  }
-  m_weight += dt;
-  ++m_steps;
-}
-
 void DynamicRecorder::writeRanges() const {
-  if (m_steps == 0) return;
+  if (m_ranges.stepCount() == 0) return;
   // Only the initial state seen (no step): its values are the means, i.e. min (= max).
-  const bool noTime = m_weight <= 0.0;
-  auto mean = [&](double sum, double only) { return noTime ? only : sum / m_weight; };
+  auto mean = [&](double sum, double only) { return m_ranges.mean(sum, only); };
   for (std::size_t l = 0; l < m_stems.size(); ++l) {
-    OutputFile f(m_dir / "dynamics" / m_stems[l] / "range.csv");
+    core::OutputFile f(m_dir / "dynamics" / m_stems[l] / "range.csv");
     f.write("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,bending_moment_min_Nm,bending_moment_max_Nm,"
             "bending_moment_mean_Nm,curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
-    const Range& r = m_ranges[l];
+    const analysis::RangeGraphs::Range& r = m_ranges.ranges()[l];
     for (std::size_t i = 0; i < m_arc[l].size(); ++i) {
       f.write(fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i],
                           r.tensionMin[i], r.tensionMax[i], mean(r.tensionSum[i], r.tensionMin[i]),

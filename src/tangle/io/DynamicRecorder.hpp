@@ -17,7 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/analysis/RangeGraphs.hpp"
+#include "tangle/core/OutputFile.hpp"
 #include "tangle/io/VtkWriter.hpp"
 #include "tangle/solver/LineResults.hpp"
 
@@ -39,12 +40,11 @@ class DynamicRecorder {
   /// Appends one output time to the time histories (flushed to disk at once). May run on another thread
   /// than accumulate() (the run command's background writer): the two share no member.
   void record(double time, const std::vector<solver::LineSnapshot>& lines);
-  /// Height [m] below which each node of each line is on the seabed (the run command gives -depth + its
-  /// contact diameter: resting height plus half a diameter; one vector per line, as the snapshots' nodes). Slack events count suspended nodes only: a
-  /// laid chain at rest may carry no tension. Without it every node counts.
-  void setSeabedLevels(std::vector<std::vector<double>> levels) { m_seabedLevel = std::move(levels); }
-  /// Adds one accepted step (of length dt [s]; dt = 0 for the initial state) to the ranges and extremes.
-  void accumulate(const std::vector<solver::LineSnapshot>& lines, double dt);
+  /// See analysis::RangeGraphs::setSeabedLevels (slack events count suspended nodes only).
+  void setSeabedLevels(std::vector<std::vector<double>> levels) { m_ranges.setSeabedLevels(std::move(levels)); }
+  /// Adds one accepted step (of length dt [s]; dt = 0 for the initial state) to the ranges and extremes
+  /// (analysis::RangeGraphs::accumulate).
+  void accumulate(const std::vector<solver::LineSnapshot>& lines, double dt) { m_ranges.accumulate(lines, dt); }
   /// Writes the range graphs of what was accumulated so far (call at the end, also after a failure).
   void writeRanges() const;
   /// Flushes and closes every time history (call at the end; errors throw OutputError).
@@ -52,41 +52,24 @@ class DynamicRecorder {
   /// Number of output records so far.
   int recordCount() const { return m_records; }
   /// Number of accumulated states (initial state + accepted steps).
-  long stepCount() const { return m_steps; }
+  long stepCount() const { return m_ranges.stepCount(); }
   /// Time the means are weighted over [s] (0: only the initial state; then the means are its values).
-  double meanWeight() const { return m_weight; }
-
-  /// Min/max/mean accumulators of one line (per node), and the extremes of its end tensions [N].
-  struct Range {
-    std::vector<double> tensionMin, tensionMax, tensionSum;
-    std::vector<double> momentMin, momentMax, momentSum;
-    std::vector<double> curvatureMin, curvatureMax, curvatureSum;
-    double endTensionMaxA = 0.0, endTensionMaxB = 0.0, endTensionMinA = 0.0, endTensionMinB = 0.0;
-    /// Slack events (snap loading, DNV-OS-E301 Ch.2 Sec.2): an event starts at a step where the lowest
-    /// tension of the line's suspended nodes (setSeabedLevels) falls below zero (a cable gone slack, a riser in effective compression) and ends when
-    /// every node is back above `retension` (1 % of the line's largest static tension, at least 1 N), so
-    /// that tension hovering about zero is one event, not one per step.
-    int slackEvents = 0;
-    double slackTime = 0.0;  ///< time with the lowest tension below zero [s]
-    bool slack = false;      ///< in an event now
-    double retension = 1.0;  ///< [N]
-  };
-  const std::vector<Range>& ranges() const { return m_ranges; }
+  double meanWeight() const { return m_ranges.meanWeight(); }
+  /// The range graphs, extremes and slack events of every line so far.
+  const analysis::RangeGraphs& rangeGraphs() const { return m_ranges; }
+  const std::vector<analysis::RangeGraphs::Range>& ranges() const { return m_ranges.ranges(); }
 
  private:
   std::filesystem::path m_dir;
   std::vector<std::string> m_stems;
   std::vector<std::vector<double>> m_arc;
-  std::vector<std::vector<std::unique_ptr<OutputFile>>> m_streams;  // per line, per quantity
-  std::unique_ptr<OutputFile> m_endForces;
+  std::vector<std::vector<std::unique_ptr<core::OutputFile>>> m_streams;  // per line, per quantity
+  std::unique_ptr<core::OutputFile> m_endForces;
   std::unique_ptr<PvdSeries> m_vtk;
   double m_vtkInterval;
   double m_nextVtk = 0.0;
-  std::vector<Range> m_ranges;
-  std::vector<std::vector<double>> m_seabedLevel;  // per line and node [m] (empty: no seabed test)
-  double m_weight = 0.0;  ///< accumulated time [s] of the means
+  analysis::RangeGraphs m_ranges;
   int m_records = 0;
-  long m_steps = 0;
 };
 
 /// The lines of a snapshot as VTK polylines with tension, bending moment, torque and curvature fields.

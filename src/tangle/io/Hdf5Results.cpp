@@ -8,7 +8,7 @@
 #include <cmath>
 #include <functional>
 
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 #include "tangle/io/ResultWriter.hpp"
 
 namespace tangle::io {
@@ -224,7 +224,7 @@ void Hdf5Results::writeRanges(const DynamicRecorder& recorder) {
   const auto& ranges = recorder.ranges();
   const double weight = recorder.meanWeight();
   for (std::size_t l = 0; l < ranges.size() && l < m_stems.size(); ++l) {
-    const DynamicRecorder::Range& r = ranges[l];
+    const analysis::RangeGraphs::Range& r = ranges[l];
     const std::string g = linePath("/dynamics", m_stems[l]) + "/range";
     const std::uint64_t n = m_nodes[l];
     m_file->createGroup(g);
@@ -367,7 +367,7 @@ void Hdf5Results::writeXdmf() const {
     x += "  </Grid>\n";
   }
   x += " </Domain>\n</Xdmf>\n";
-  OutputFile out(m_dir / "results.xdmf");
+  core::OutputFile out(m_dir / "results.xdmf");
   out.write(x);
   out.close();
 }

@@ -14,7 +14,7 @@
 #include "tangle/contact/LineContact.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/geometry/Rotation.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 #include "tangle/io/ReportTemplate.hpp"
 
 namespace tangle::io {
@@ -303,7 +303,7 @@ void HtmlReport::setEnvelope(const contact::ClearanceEnvelope& envelope) {
 
 void HtmlReport::writeData(const fs::path& file) const {
   fs::create_directories(file.parent_path());
-  OutputFile out(file);
+  core::OutputFile out(file);
   out.write(json());
   out.close();
 }
@@ -438,7 +438,7 @@ void HtmlReport::writePage(const std::string& data, const std::string& log, cons
   replace("/*@LOG@*/", quote(log));
   replace("/*@DATA@*/", data);
   fs::create_directories(page.parent_path().empty() ? fs::path(".") : page.parent_path());
-  OutputFile out(page);
+  core::OutputFile out(page);
   out.write(html);
   out.close();
 }

@@ -6,8 +6,8 @@
 #include <system_error>
 
 #include "tangle/core/Error.hpp"
-#include "tangle/io/JsonWriter.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/JsonWriter.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 namespace tangle::io {
 
@@ -28,6 +28,22 @@ std::string utcNow() {
 
 OutputFolder::OutputFolder(fs::path dir, const std::string& modelPath, bool overwrite)
     : m_dir(std::move(dir)), m_modelPath(modelPath), m_started(utcNow()) {
+  prepare(overwrite);
+  // The model as it was run: results are only readable with the input that made them.
+  std::error_code ec;
+  fs::copy_file(modelPath, m_dir / "model.yaml", fs::copy_options::overwrite_existing, ec);
+  if (ec) throw OutputError(fmt::format("cannot write {}: {}", (m_dir / "model.yaml").string(), ec.message()));
+}
+
+OutputFolder::OutputFolder(fs::path dir, const std::string& source, const std::string& modelText, bool overwrite)
+    : m_dir(std::move(dir)), m_modelPath(source), m_started(utcNow()) {
+  prepare(overwrite);
+  core::OutputFile copy(m_dir / "model.yaml");
+  copy.write(modelText);
+  copy.close();
+}
+
+void OutputFolder::prepare(bool overwrite) {
   std::error_code ec;
   const std::string where = m_dir.string();
   if (fs::exists(m_dir, ec)) {
@@ -56,9 +72,6 @@ OutputFolder::OutputFolder(fs::path dir, const std::string& modelPath, bool over
   fs::create_directories(m_dir, ec);
   if (ec) throw OutputError(fmt::format("cannot create the output folder {}: {}", where, ec.message()));
   writeManifest();
-  // The model as it was run: results are only readable with the input that made them.
-  fs::copy_file(modelPath, m_dir / "model.yaml", fs::copy_options::overwrite_existing, ec);
-  if (ec) throw OutputError(fmt::format("cannot write {}: {}", (m_dir / "model.yaml").string(), ec.message()));
 }
 
 void OutputFolder::setStatus(const std::string& status) {
@@ -67,8 +80,8 @@ void OutputFolder::setStatus(const std::string& status) {
 }
 
 void OutputFolder::writeManifest() {
-  OutputFile f(m_dir / kManifest);
-  JsonWriter j(f.stream());
+  core::OutputFile f(m_dir / kManifest);
+  core::JsonWriter j(f.stream());
   j.beginObject();
   j.field("tangle_version", TANGLE_VERSION);
   j.field("model", m_modelPath);

@@ -21,12 +21,19 @@ class OutputFolder {
   /// @throws InputError (exit 1) when the folder holds files and may not be cleared; OutputError when
   ///         it cannot be created or written
   OutputFolder(std::filesystem::path dir, const std::string& modelPath, bool overwrite);
+  /// As above for a model given as text (the Python module's, possibly edited): `source` names it in the
+  /// manifest, `modelText` is written to `dir/model.yaml`.
+  OutputFolder(std::filesystem::path dir, const std::string& source, const std::string& modelText, bool overwrite);
 
   const std::filesystem::path& path() const { return m_dir; }
+  /// The run's status as the manifest says it ("running", "completed", "failed: ...").
+  const std::string& status() const { return m_status; }
   /// Rewrites the manifest with a final status ("completed", "statics did not converge", ...).
   void setStatus(const std::string& status);
 
  private:
+  /// Creates `dir` or empties it (see the file comment) and writes the manifest.
+  void prepare(bool overwrite);
   void writeManifest();
   std::filesystem::path m_dir;
   std::string m_modelPath;

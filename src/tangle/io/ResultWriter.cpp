@@ -8,8 +8,8 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
-#include "tangle/io/JsonWriter.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/JsonWriter.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 namespace tangle::io {
 
@@ -62,7 +62,7 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
   const std::vector<std::string> stems = lineFileStems(lines);
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
-    OutputFile out(sub / (stems[l] + ".csv"));
+    core::OutputFile out(sub / (stems[l] + ".csv"));
     out.write("arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,"
               "bending_moment_x_Nm,bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,"
               "rotation_y_deg,rotation_z_deg\n");
@@ -84,8 +84,8 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
 void writeStaticSummary(const fs::path& dir, const model::Model& model, const solver::StaticResult& result,
                         const std::vector<solver::LineSnapshot>& lines, const solver::EquilibriumAudit* audit) {
   fs::create_directories(dir);
-  OutputFile file(dir / "summary.json");
-  JsonWriter j(file.stream());
+  core::OutputFile file(dir / "summary.json");
+  core::JsonWriter j(file.stream());
   j.beginObject();
   j.field("tangle_version", TANGLE_VERSION);
   j.field("model", model.spec().sourceFile);

@@ -6,9 +6,10 @@
 #include <cmath>
 
 #include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/seabed/FlatSeabed.hpp"
-#include "tangle/solver/ElasticCatenary.hpp"
+#include "tangle/catenary/ElasticCatenary.hpp"
 
 namespace tangle::model {
 
@@ -75,6 +76,13 @@ Vec3 Model::endPosition(const EndSpec& end) const {
 
 Mat3 Model::vesselRotation(int v) const {
   return Eigen::AngleAxisd(m_spec->vessels[v].heading, Vec3::UnitZ()).toRotationMatrix();
+}
+
+std::array<double, 6> Model::vesselMotion(const State& state, int v) const {
+  const auto node = static_cast<std::size_t>(vesselNode(v));
+  const Vec3 r = geometry::logMap(state.triad[node] * vesselRotation(v).transpose()) * 180.0 / kPi;
+  const Vec3& p = state.position[node];
+  return {p.x(), p.y(), p.z(), r.x(), r.y(), r.z()};
 }
 
 int Model::lineIndex(const std::string& name) const {
@@ -272,7 +280,7 @@ State Model::initialState() const {
   s.acceleration = VecX::Zero(m_dofs.fullDofCount());
   const EnvironmentSpec& env = m_spec->environment;
   for (const Line& line : m_lines) {
-    std::vector<solver::CatenarySection> sections;
+    std::vector<catenary::CatenarySection> sections;
     for (const SectionSpec& sec : line.spec->sections) {
       const section::LineType& t = m_spec->lineTypes.at(sec.lineType);
       sections.push_back({sec.length, t.submergedWeight(env.waterDensity, env.gravity), t.axialStiffness});
@@ -296,16 +304,16 @@ State Model::initialState() const {
       // A buoyant line floats up into an inverted catenary: the hanging catenary of the mirrored problem
       // (z -> -z, weight -> -weight, no seabed), mirrored back. A straight start would be a compressed,
       // unstable equilibrium of a cable.
-      std::vector<solver::CatenarySection> mirrored = sections;
+      std::vector<catenary::CatenarySection> mirrored = sections;
       for (auto& sec : mirrored) sec.weight = -sec.weight;
       const Vec3 flip(1.0, 1.0, -1.0);
       const double noSeabed = 1e3 * std::max(1.0, std::abs(endA.z()) + std::abs(endB.z()) + line.length);
-      pts = solver::initialLineShape(endA.cwiseProduct(flip), endB.cwiseProduct(flip), mirrored, noSeabed,
+      pts = catenary::initialLineShape(endA.cwiseProduct(flip), endB.cwiseProduct(flip), mirrored, noSeabed,
                                      line.arcLength)
                 .positions;
       for (Vec3& p : pts) p = p.cwiseProduct(flip);
     } else {
-      pts = solver::initialLineShape(endA, endB, sections, shapeDepth, line.arcLength).positions;
+      pts = catenary::initialLineShape(endA, endB, sections, shapeDepth, line.arcLength).positions;
     }
     for (int i = 0; i < line.nodeCount; ++i) s.position[line.firstNode + i] = pts[i];
     // A start shape laid on the seabed rests one contact radius above it (as an end does); below that, it

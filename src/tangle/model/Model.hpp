@@ -3,6 +3,7 @@
 /// The finite-element model built from a ModelSpec: nodes, elements, DOF numbering, and the
 /// initial state (analytic catenary or straight shapes) from which the static solve starts.
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -76,6 +77,9 @@ class Model {
   Vec3 endPosition(const EndSpec& end) const;
   /// Initial rotation (vessel axes to global) of vessel v: its heading about z.
   Mat3 vesselRotation(int v) const;
+  /// Motion of vessel `v` at `state`: x, y, z of its reference point [m] and its rotation from the initial
+  /// attitude (the heading of the model) as a rotation vector [deg] (dynamics/vessels.csv, results.h5, Python).
+  std::array<double, 6> vesselMotion(const State& state, int v) const;
   /// Index of a line by name, -1 if none.
   int lineIndex(const std::string& name) const;
   /// Index of a vessel by name, -1 if none.

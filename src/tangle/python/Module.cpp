@@ -70,6 +70,10 @@ PYBIND11_MODULE(_tangle, m) {
       py::arg("tree"), py::arg("path"), py::arg("value"), py::arg("source"),
       "A copy of the tree with the value at a key path set (missing map keys are created).");
 
+  m.def("run_to_folder", &tangle::python::runToFolder, py::arg("text"), py::arg("source"), py::arg("folder"),
+        py::arg("overwrite"), py::arg("statics_only"), py::arg("report"), py::arg("plots"), py::arg("quiet"),
+        "Runs the model into a results folder as `tangle run` does; returns (exit code, status).");
+
   py::class_<tangle::python::PySimulation>(m, "Simulation", "One analysis of one model (compiled core).")
       .def(py::init<const std::string&, const std::string&>(), py::arg("text"), py::arg("source"))
       .def("lines", &tangle::python::PySimulation::lines)

@@ -1,22 +1,28 @@
 /// @file PySimulation.cpp
 /// Analyses driven from Python (see PySimulation.hpp).
 
-#include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/python/PySimulation.hpp"
 
+#include <fmt/format.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
 #include <vector>
 
+#include "tangle/analysis/EquilibriumAudit.hpp"
+#include "tangle/analysis/RangeGraphs.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/io/ModelReader.hpp"
+#include "tangle/io/OutputFolder.hpp"
+#include "tangle/results/RunLog.hpp"
+#include "tangle/results/RunOutputs.hpp"
 
 namespace py = pybind11;
 
@@ -66,12 +72,48 @@ py::dict profile(const solver::LineSnapshot& s) {
 /// Time histories of one line, filled at the output times.
 struct LineHistory {
   std::vector<double> position, tension, moment, curvature, torque, endTension, endForce;
-  // Ranges over every accepted step (the algorithm of io::DynamicRecorder::accumulate).
-  std::vector<double> tensionMin, tensionMax, tensionSum, momentMin, momentMax, momentSum, curvatureMin,
-      curvatureMax, curvatureSum;
 };
 
 }  // namespace
+
+std::pair<int, std::string> runToFolder(const std::string& yaml, const std::string& sourceName, const std::string& folder,
+                                        bool overwrite, bool staticsOnly, bool report, bool plots, bool quiet) {
+  analysis::Simulation sim(io::readModelString(yaml, sourceName));
+  io::OutputFolder out(folder, sourceName, yaml, overwrite);
+  results::RunLog log(quiet);
+  log.open(out.path() / "run.log");
+  log.info(fmt::format("tangle {} (Python)\n", TANGLE_VERSION));
+  results::RunOutputOptions options;
+  options.staticsOnly = staticsOnly;
+  options.noReport = !report;
+  options.noPlots = !plots;
+  options.progress = !quiet;
+  options.plotScript = std::filesystem::path(TANGLE_PYTHON_DIR) / "tangle_plot.py";
+  std::atomic<bool> stopped{false};
+  options.stop = [&stopped] {
+    if (stopped) return true;
+    py::gil_scoped_acquire acquire;
+    if (PyErr_CheckSignals() != 0) {
+      PyErr_Clear();  // the run reports the stop in its status; the caller raises
+      stopped = true;
+    }
+    return stopped.load();
+  };
+  int code = 0;
+  {
+    py::gil_scoped_release release;
+    try {
+      code = results::RunOutputs(sim, out, log, options).run();
+      log.close();
+    } catch (const std::exception& e) {
+      log.logOnly(fmt::format("error: {}\n", e.what()));
+      out.setStatus(std::string("failed: ") + e.what());
+      throw;
+    }
+  }
+  if (stopped) code = 130;  // as a shell reports SIGINT: the Python layer raises KeyboardInterrupt
+  return {code, out.status()};
+}
 
 PySimulation::PySimulation(const std::string& yaml, const std::string& sourceName)
     : m_sim(std::make_unique<analysis::Simulation>(io::readModelString(yaml, sourceName))) {}
@@ -147,17 +189,10 @@ py::dict PySimulation::dynamics(const py::object& progress) {
         "the model has no dynamics block (set dynamics.duration and dynamics.time_step)");
   const std::size_t lineCount = m.lines().size();
   std::vector<LineHistory> hist(lineCount);
-  for (std::size_t l = 0; l < lineCount; ++l) {
-    const auto n = static_cast<std::size_t>(m.lines()[l].nodeCount);
-    const double inf = std::numeric_limits<double>::infinity();
-    LineHistory& h = hist[l];
-    for (auto* v : {&h.tensionMin, &h.momentMin, &h.curvatureMin}) v->assign(n, inf);
-    for (auto* v : {&h.tensionMax, &h.momentMax, &h.curvatureMax}) v->assign(n, -inf);
-    for (auto* v : {&h.tensionSum, &h.momentSum, &h.curvatureSum}) v->assign(n, 0.0);
-  }
+  // Range graphs over every accepted step: the run's own accumulator (analysis::RangeGraphs), as the files.
+  analysis::RangeGraphs ranges(m_sim->snapshot());
+  ranges.setSeabedLevels(analysis::RangeGraphs::seabedLevels(m));
   std::vector<double> times, vesselMotion;
-  double weight = 0.0;
-  long steps = 0;
   std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
       m, m_sim->contact() ? m_sim->contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
   if (envelope->empty()) {
@@ -188,13 +223,8 @@ py::dict PySimulation::dynamics(const py::object& progress) {
         h.endForce.insert(h.endForce.end(), {fa.x(), fa.y(), fa.z(), fb.x(), fb.y(), fb.z()});
       }
       for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {
-        // As dynamics/vessels.csv: reference point, and rotation from the initial attitude [deg].
-        const int node = m.vesselNode(v);
-        const Vec3 r =
-            geometry::logMap(s.triad[static_cast<std::size_t>(node)] * m.vesselRotation(v).transpose()) *
-            180.0 / kPi;
-        const Vec3& p = s.position[static_cast<std::size_t>(node)];
-        vesselMotion.insert(vesselMotion.end(), {p.x(), p.y(), p.z(), r.x(), r.y(), r.z()});
+        const std::array<double, 6> motion = m.vesselMotion(s, v);  // as dynamics/vessels.csv
+        vesselMotion.insert(vesselMotion.end(), motion.begin(), motion.end());
       }
       if (!progress.is_none() && !stop) {
         py::gil_scoped_acquire acquire;
@@ -207,24 +237,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
       }
     };
     const auto stepObserver = [&](const model::State& s, double dt) {
-      const std::vector<solver::LineSnapshot>& snap = m_sim->sectionSnapshot();
-      for (std::size_t l = 0; l < lineCount; ++l) {
-        const solver::LineSnapshot& x = snap[l];
-        LineHistory& h = hist[l];
-        for (std::size_t i = 0; i < x.arcLength.size(); ++i) {
-          h.tensionMin[i] = std::min(h.tensionMin[i], x.tension[i]);
-          h.tensionMax[i] = std::max(h.tensionMax[i], x.tension[i]);
-          h.momentMin[i] = std::min(h.momentMin[i], x.bendingMoment[i]);
-          h.momentMax[i] = std::max(h.momentMax[i], x.bendingMoment[i]);
-          h.curvatureMin[i] = std::min(h.curvatureMin[i], x.curvature[i]);
-          h.curvatureMax[i] = std::max(h.curvatureMax[i], x.curvature[i]);
-          h.tensionSum[i] += dt * x.tension[i];
-          h.momentSum[i] += dt * x.bendingMoment[i];
-          h.curvatureSum[i] += dt * x.curvature[i];
-        }
-      }
-      weight += dt;
-      ++steps;
+      ranges.accumulate(m_sim->sectionSnapshot(), dt);
       if (envelope) envelope->record(s);
     };
     // Ctrl-C: Python's handler only sets a flag; it is seen here, with the GIL, before every step.
@@ -271,26 +284,34 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     d["end_tension_N"] = array(h.endTension, {nt, 2});
     d["end_force_N"] = array(h.endForce, {nt, 2, 3});
     // Range graphs over every accepted step; means time-weighted (the initial state only: its values).
+    const analysis::RangeGraphs::Range& r = ranges.ranges()[l];
     const auto mean = [&](const std::vector<double>& sum, const std::vector<double>& only) {
       std::vector<double> v(sum.size());
-      for (std::size_t i = 0; i < v.size(); ++i) v[i] = weight > 0.0 ? sum[i] / weight : only[i];
+      for (std::size_t i = 0; i < v.size(); ++i) v[i] = ranges.mean(sum[i], only[i]);
       return array(v, {n});
     };
     py::dict range;
-    range["effective_tension_min_N"] = array(h.tensionMin, {n});
-    range["effective_tension_max_N"] = array(h.tensionMax, {n});
-    range["effective_tension_mean_N"] = mean(h.tensionSum, h.tensionMin);
-    range["bending_moment_min_Nm"] = array(h.momentMin, {n});
-    range["bending_moment_max_Nm"] = array(h.momentMax, {n});
-    range["bending_moment_mean_Nm"] = mean(h.momentSum, h.momentMin);
-    range["curvature_min_1_per_m"] = array(h.curvatureMin, {n});
-    range["curvature_max_1_per_m"] = array(h.curvatureMax, {n});
-    range["curvature_mean_1_per_m"] = mean(h.curvatureSum, h.curvatureMin);
+    range["effective_tension_min_N"] = array(r.tensionMin, {n});
+    range["effective_tension_max_N"] = array(r.tensionMax, {n});
+    range["effective_tension_mean_N"] = mean(r.tensionSum, r.tensionMin);
+    range["bending_moment_min_Nm"] = array(r.momentMin, {n});
+    range["bending_moment_max_Nm"] = array(r.momentMax, {n});
+    range["bending_moment_mean_Nm"] = mean(r.momentSum, r.momentMin);
+    range["curvature_min_1_per_m"] = array(r.curvatureMin, {n});
+    range["curvature_max_1_per_m"] = array(r.curvatureMax, {n});
+    range["curvature_mean_1_per_m"] = mean(r.curvatureSum, r.curvatureMin);
+    // Extremes over every accepted step and slack events, as dynamics/summary.json.
+    d["end_a_max_tension_N"] = r.endTensionMaxA;
+    d["end_a_min_tension_N"] = r.endTensionMinA;
+    d["end_b_max_tension_N"] = r.endTensionMaxB;
+    d["end_b_min_tension_N"] = r.endTensionMinB;
+    d["slack_events"] = r.slackEvents;
+    d["slack_time_s"] = r.slackTime;
     d["range"] = range;
     lines.append(d);
   }
   out["lines"] = lines;
-  out["range_steps"] = steps;
+  out["range_steps"] = ranges.stepCount();
 
   py::list vessels;
   for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v) {

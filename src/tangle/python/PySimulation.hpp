@@ -9,10 +9,19 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 
 #include "tangle/analysis/Simulation.hpp"
 
 namespace tangle::python {
+
+/// Runs the model `yaml` (named `sourceName` in messages) into the results folder `folder`, as `tangle run`
+/// does: every file of the run, results.h5 and report.html included (results::RunOutputs). Returns the exit
+/// code (0, or 2 when the statics did not converge or the dynamics stopped: the folder holds what was
+/// computed; 130 when Ctrl-C stopped the dynamics at the next step) and the folder's status.
+/// @throws InputError (tangle.ModelError) on bad input or a folder that may not be used
+std::pair<int, std::string> runToFolder(const std::string& yaml, const std::string& sourceName, const std::string& folder,
+                                        bool overwrite, bool staticsOnly, bool report, bool plots, bool quiet);
 
 class PySimulation {
  public:

@@ -140,21 +140,50 @@ void Assembler::beginStatics(const model::State& state) {
   for (LoadContributor* c : m_contributors) c->beginStatic(state);
 }
 
-void Assembler::commitStep(const model::State& state) {
+void Assembler::commitStep(model::State& state, double dt) {
   // The anchors of the elastic seabed friction at the accepted state become the committed ones; a
   // rejected step never gets here, so its trial anchors are dropped. They are evaluated here, at that
   // state, for every node: the last assembly of the step may have been at an earlier iterate, or of a
-  // part only (Newton on parts leaves the converged blocks out), whose anchors would be stale.
+  // part only (Newton on parts leaves the converged blocks out), whose anchors would be stale. The static
+  // solution's were committed with its last increment.
   const auto& seabed = m_model->environment().seabed;
-  if (!(seabed.frictionCoefficient > 0.0 && seabed.elasticFriction)) return;
-  AssemblyRequest request;
-  request.time = state.time;
-  request.dynamic = true;
-  request.wantMatrix = false;
-  thread_local VecX scratch;
-  scratch.setZero(m_model->dofs().fullDofCount());
-  addSeabed(state, request, scratch, nullptr, nullptr);
-  commitAnchors(state);
+  if (dt > 0.0 && seabed.frictionCoefficient > 0.0 && seabed.elasticFriction) {
+    AssemblyRequest request;
+    request.time = state.time;
+    request.dynamic = true;
+    request.wantMatrix = false;
+    thread_local VecX scratch;
+    scratch.setZero(m_model->dofs().fullDofCount());
+    addSeabed(state, request, scratch, nullptr, nullptr);
+    commitAnchors(state);
+  }
+  for (LoadContributor* c : m_contributors) c->commitStep(state, dt);
+}
+
+std::string Assembler::rejectState(const model::State& state) {
+  for (LoadContributor* c : m_contributors) {
+    std::string why = c->rejectState(state);
+    if (!why.empty()) return why;
+  }
+  return {};
+}
+
+double Assembler::limitStep(const model::State& state) {
+  double limit = std::numeric_limits<double>::infinity();
+  for (LoadContributor* c : m_contributors) limit = std::min(limit, c->limitStep(state));
+  return limit;
+}
+
+std::string Assembler::rejectStep(const model::State& before, const model::State& after) {
+  for (LoadContributor* c : m_contributors) {
+    std::string why = c->rejectStep(before, after);
+    if (!why.empty()) return why;
+  }
+  return {};
+}
+
+void Assembler::finish(double time) {
+  for (LoadContributor* c : m_contributors) c->finish(time);
 }
 
 void Assembler::commitAnchors(const model::State& state) {
@@ -163,9 +192,9 @@ void Assembler::commitAnchors(const model::State& state) {
   m_anchor = m_trialAnchor;
 }
 
-void Assembler::commitStatics(const model::State& state) {
+void Assembler::commitIncrement(const model::State& state) {
   commitAnchors(state);
-  for (LoadContributor* c : m_contributors) c->commitStatic(state);
+  for (LoadContributor* c : m_contributors) c->commitIncrement(state);
 }
 
 void Assembler::assemble(const model::State& state, const AssemblyRequest& request, VecX& force,

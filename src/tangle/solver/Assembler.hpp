@@ -15,93 +15,10 @@
 #include "tangle/core/Types.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
+#include "tangle/solver/LoadContributor.hpp"
 #include "tangle/solver/SystemMatrix.hpp"
 
 namespace tangle::solver {
-
-/// What an assembly call should compute.
-struct AssemblyRequest {
-  double time = 0.0;        ///< time [s] (environment, prescribed motions)
-  double loadFactor = 1.0;  ///< multiplies weight and buoyancy [-] (the statics load incrementation)
-  bool dynamic = false;     ///< include velocity-dependent forces (drag with structure velocity, seabed damping and friction)
-  bool waves = true;        ///< with `dynamic`: include wave kinematics (false in dynamic relaxation, a statics method)
-  /// With `dynamic`: dynamic relaxation (a statics method, time::DynamicRelaxation): the seabed friction is
-  /// the velocity-regularised law whatever the model's `friction_model` (it damps the relaxation and leaves
-  /// the held lengths to the Newton solve that follows, as before the elastic law became the default).
-  bool relaxation = false;
-  double kf = 1.0;          ///< factor on the stiffness dF/dq in H
-  double cf = 0.0;          ///< factor on the damping dF/dv in H
-  bool wantMatrix = true;   ///< assemble H
-  /// Statics: include the drag's follower stiffness (its dependence on the element directions, Morison.hpp)
-  /// in H. It makes H non-symmetric: the caller must solve with a general (LU) factorisation.
-  bool dragStiffness = false;
-};
-
-/// The part of the model whose out-of-balance forces change when only some nodes move: a modified Newton
-/// iteration that corrects a few nodes (the touchdown zone of a mooring line) re-evaluates this part
-/// instead of the whole model (GeneralizedAlpha; theory manual 8.2). Built by Assembler::selectPart.
-struct AssemblyPart {
-  /// Nodes whose entries of F and M a are recomputed: the moved nodes and every node that shares an
-  /// element with one (ascending).
-  std::vector<int> nodes;
-  /// Every element with a node in `nodes` (ascending, so that each entry sums the same terms in the same
-  /// order as a full assembly).
-  std::vector<int> elements;
-  /// Indices into Model::attachments() of the attachments at a node in `nodes` (ascending).
-  std::vector<int> attachments;
-  /// Every node of `elements` (ascending): the work space entries the part writes.
-  std::vector<int> writtenNodes;
-};
-
-/// A source of forces that is not a structural element (hydrodynamics, contact, vessels...).
-class LoadContributor {
- public:
-  virtual ~LoadContributor() = default;
-  /// Adds this contributor's part of F (full-DOF vector, out-of-balance sign convention: external
-  /// loads are subtracted) and, when matrix != nullptr, of H.
-  virtual void addForces(const model::State& state, const AssemblyRequest& request, VecX& force,
-                         SystemMatrix* matrix) = 0;
-  /// Adds mf * M_contributor to matrix (if not null) and M_contributor * acceleration to out (if not null).
-  virtual void addMass(const model::State& /*state*/, double /*mf*/, SystemMatrix* /*matrix*/,
-                       const VecX* /*acceleration*/, VecX* /*out*/) {}
-  /// True if a part of the model can be assembled with this contributor: either addPartForces and
-  /// addPartMass give its terms of the part (its forces at a node depend only on the elements and
-  /// attachments at that node: HydroLoads), or its loads act at a few nodes that it marks in
-  /// markLoadedNodes (a vessel and the line ends tied to it; the elements near a contact), and parts that
-  /// hold none of them leave it out. A contributor that couples nodes otherwise (wakes) returns false, and
-  /// the whole model is assembled each time.
-  virtual bool supportsParts() const { return false; }
-  /// The second way above: sets mark[node] = 1 for every node this contributor loads or whose state it
-  /// reads in this step (called once after each whole assembly that a part follows) and returns true; the
-  /// contributor is then left out of parts, which Assembler::selectPart refuses when they hold a marked node (its loads
-  /// are zero at the part's nodes and unchanged elsewhere, since no node it reads moved). False (the
-  /// default): the contributor's terms come from addPartForces / addPartMass.
-  virtual bool markLoadedNodes(std::vector<char>& /*mark*/) const { return false; }
-  /// As addForces without a matrix, for the elements and attachments of `part` only (Assembler::assemblePart
-  /// keeps the entries of part.nodes; what lands elsewhere is discarded).
-  virtual void addPartForces(const model::State& /*state*/, const AssemblyRequest& /*request*/,
-                             const AssemblyPart& /*part*/, VecX& /*force*/) {}
-  /// As addMass without a matrix, for the elements and attachments of `part` only.
-  virtual void addPartMass(const model::State& /*state*/, const AssemblyPart& /*part*/,
-                           const VecX& /*acceleration*/, VecX& /*out*/) {}
-  /// A new step (or load increment, or retry of a step) starts: reset per-step active sets.
-  virtual void beginStep() {}
-  /// Newton has converged with the current active set; return true if the contributor changed it
-  /// (e.g. released a contact that carries tension), so the caller must iterate again.
-  virtual bool updateActiveSet() { return false; }
-  /// Statics: the largest fraction in (0, 1] of the proposed increment `fullIncrement` (full DOFs, from
-  /// `state`) that this contributor accepts (e.g. so that no two lines close by more than a fraction of
-  /// their radii in one Newton iteration). 1 accepts the whole increment.
-  virtual double limitIncrement(const model::State& /*state*/, const VecX& /*fullIncrement*/) { return 1.0; }
-  /// Statics starts (or restarts) from `state`: the reference for rejectState until the next
-  /// commitStatic (a contributor that tracks crossings compares with it).
-  virtual void beginStatic(const model::State& /*state*/) {}
-  /// Statics: an empty string if `state` is admissible as a converged equilibrium, otherwise why not
-  /// (e.g. two lines have passed through each other). A solver never reports such a state as converged.
-  virtual std::string rejectState(const model::State& /*state*/) { return {}; }
-  /// Statics: a load increment has converged at `state`; commit path-dependent data (trial -> committed).
-  virtual void commitStatic(const model::State& /*state*/) {}
-};
 
 /// Structural elements, weight and buoyancy, point attachments and the seabed; plus any number of
 /// LoadContributors.
@@ -114,15 +31,27 @@ class Assembler {
   /// The registered force sources.
   const std::vector<LoadContributor*>& contributors() const { return m_contributors; }
 
-  /// Statics starts (or restarts) from `state`: seabed friction anchors are set at the as-laid positions
-  /// of the nodes on the seabed in `state`.
+  // ---- Path-dependent state (LoadContributor's trial / commit protocol): the seabed friction anchors held
+  // here, then every contributor's. The solvers call these; nothing else commits.
+
+  /// Statics starts (or restarts, or reverts) from `state`: seabed friction anchors are set at the as-laid
+  /// positions of the nodes on the seabed in `state`; forwards LoadContributor::beginStatic.
   void beginStatics(const model::State& state);
   /// A statics load increment converged at `state`: commits the friction anchors (the trial ones of the
-  /// last assembly) and forwards LoadContributor::commitStatic.
-  void commitStatics(const model::State& state);
-  /// Commits the path-dependent state of an accepted dynamic step (the seabed friction anchors; the
-  /// contributors' own states are committed by their owners).
-  void commitStep(const model::State& state);
+  /// last assembly) and forwards LoadContributor::commitIncrement.
+  void commitIncrement(const model::State& state);
+  /// Forwards LoadContributor::rejectState: the first contributor's reason, empty if none.
+  std::string rejectState(const model::State& state);
+  /// The smallest LoadContributor::limitStep [s] (+inf if none limits).
+  double limitStep(const model::State& state);
+  /// Forwards LoadContributor::rejectStep: the first contributor's reason, empty if none.
+  std::string rejectStep(const model::State& before, const model::State& after);
+  /// An accepted dynamic step of `dt` [s] (the seabed friction anchors at `state` become the committed ones),
+  /// or with dt = 0 the final static solution (the anchors are those of its last increment); then forwards
+  /// LoadContributor::commitStep.
+  void commitStep(model::State& state, double dt);
+  /// Forwards LoadContributor::finish (end of the dynamics at `time` [s]).
+  void finish(double time);
 
   /// F (full DOFs) and, if request.wantMatrix and matrix is given, H (equations). `force` is resized and
   /// zeroed; `matrix` is cleared and assembled only when request.wantMatrix (else left as it was).

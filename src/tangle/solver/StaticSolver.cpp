@@ -158,11 +158,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
           "distance between its ends, or give the section a bending_stiffness",
           slackElements.size(), model.describeNode(el.node1)));
     }
-    std::string why;
-    for (LoadContributor* c : m_assembler->contributors()) {
-      why = c->rejectState(trial);
-      if (!why.empty()) break;
-    }
+    const std::string why = m_assembler->rejectState(trial);
     if (!why.empty()) {
       ok = false;
       result.message = fmt::format("static analysis reached a state that is not admissible: {}", why);
@@ -189,11 +185,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
 }
 
 std::string StaticSolver::inadmissible(const model::State& state) const {
-  for (LoadContributor* c : m_assembler->contributors()) {
-    std::string why = c->rejectState(state);
-    if (!why.empty()) return why;
-  }
-  return {};
+  return m_assembler->rejectState(state);
 }
 
 bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& result, int& budget,
@@ -224,7 +216,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   result.worstNode = full.worstNode;
   if (full.converged) {
     result.roundoffLimited = full.roundoff;
-    m_assembler->commitStatics(state);
+    m_assembler->commitIncrement(state);
     return true;
   }
   if (debugOutput())
@@ -328,7 +320,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
                                step.converged ? "ok" : step.failure, step.iterations);
     if (step.converged) {
       state = trial;
-      m_assembler->commitStatics(state);
+      m_assembler->commitIncrement(state);
       reached = target;
       result.loadFraction = reached;
       result.roundoffLimited = step.roundoff;

@@ -13,15 +13,15 @@
 
 namespace tangle::time {
 
-std::vector<PrescribedNode> prescribedNodes(const model::Model& model) {
-  std::vector<PrescribedNode> out;
+std::vector<model::PrescribedNode> prescribedNodes(const model::Model& model) {
+  std::vector<model::PrescribedNode> out;
   const double rampTime = model.spec().dynamics.rampTime;
   for (const model::Line& line : model.lines()) {
     for (int end = 0; end < 2; ++end) {
       const model::EndSpec& e = end == 0 ? line.spec->endA : line.spec->endB;
       if (!e.motion.enabled) continue;
       if (e.kind == model::EndKind::Free || e.kind == model::EndKind::Vessel) continue;
-      const PrescribedMotion motion(e.motion, rampTime);
+      const model::PrescribedMotion motion(e.motion, rampTime);
       out.push_back({end == 0 ? line.firstNode : line.lastNode(), e.position,
                      [motion](double t) { return motion.at(t); }});
     }
@@ -57,7 +57,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   const auto wallStart = Clock::now();
   auto lastPrint = wallStart;
   const model::Model& model = m_assembler->model();
-  std::vector<PrescribedNode> prescribed = prescribedNodes(model);
+  std::vector<model::PrescribedNode> prescribed = prescribedNodes(model);
   prescribed.insert(prescribed.end(), m_extraPrescribed.begin(), m_extraPrescribed.end());
   GeneralizedAlpha stepper(*m_assembler, m_settings, std::move(prescribed));
   DynamicResult result;
@@ -92,14 +92,14 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       break;
     }
     double h = std::min({dt, duration - state.time, 2.0 * lastStep});
-    if (m_limiter) h = std::min(h, std::max(m_settings.minTimeStep, m_limiter(state)));
+    if (m_stepControl) h = std::min(h, std::max(m_settings.minTimeStep, m_assembler->limitStep(state)));
     h = std::min(h, std::max(m_settings.minTimeStep,
                              cableSnapStepLimit(model, state, m_settings.maxCableStrainStep, h)));
     // Land exactly on output times.
     if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
     if (h <= eps) h = std::min(dt, duration - state.time);
     const bool clippedForOutput = h < dt * (1.0 - 1e-9);
-    if (m_validator || errorControl) before = state;
+    before = state;
     StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
     result.partIterations += o.partIterations;
@@ -107,7 +107,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     result.matrixRefreshes += o.refreshes;
     bool rejected = false;
     std::string rejection;
-    if (o.converged && m_validator) rejection = m_validator(before, state);
+    if (o.converged && m_stepControl) rejection = m_assembler->rejectStep(before, state);
     if (!rejection.empty()) {
       // Converged but not acceptable (e.g. lines passed through each other): undo and cut.
       stepper.restore(before);
@@ -151,7 +151,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     }
     ++result.steps;
     lastStep = errorControl && clippedForOutput ? std::max(h, lastStep) : h;
-    if (m_hook) m_hook(state, h);
+    m_assembler->commitStep(state, h);  // path-dependent state: trial -> committed
     if (!errorControl && ++successes >= 4 && dt < nominal) {
       dt = std::min(nominal, 2.0 * dt);
       successes = 0;
@@ -174,6 +174,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       }
     }
   }
+  m_assembler->finish(state.time);
   result.endTime = state.time;
   result.completed = state.time >= duration - eps;
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();

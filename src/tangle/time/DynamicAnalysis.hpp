@@ -44,15 +44,6 @@ class DynamicAnalysis {
   /// Called at t = 0 (dt = 0) and after every accepted step with the step length dt [s]: extremes and
   /// range graphs must see every step, not only the output times (a short impact falls between them).
   using StepObserver = std::function<void(const model::State&, double dt)>;
-  /// Returns the largest step [s] allowed from this state (e.g. contact approach), or +inf.
-  using StepLimiter = std::function<double(const model::State&)>;
-  /// Called after each accepted step (path-dependent models commit their state here; an impact model
-  /// may change the velocities).
-  using StepHook = std::function<void(model::State&, double dt)>;
-  /// Returns an empty string when a converged step is acceptable, otherwise why it must still be
-  /// rejected (e.g. which two lines passed through each other, and where); the step is then cut like a
-  /// Newton failure, and the reason is in the message if the step cannot be cut further.
-  using StepValidator = std::function<std::string(const model::State& before, const model::State& after)>;
   /// Returns true when the caller wants the run to stop before the next step (as Ctrl-C does, but for this
   /// run only: the Python module stops one run when its progress callback raises or Ctrl-C reaches Python).
   using StopRequest = std::function<bool()>;
@@ -60,35 +51,37 @@ class DynamicAnalysis {
   DynamicAnalysis(solver::Assembler& assembler, const model::DynamicSpec& settings);
 
   void setObserver(Observer observer) { m_observer = std::move(observer); }
-  void setStepLimiter(StepLimiter limiter) { m_limiter = std::move(limiter); }
-  void setStepHook(StepHook hook) { m_hook = std::move(hook); }
   void setStepObserver(StepObserver observer) { m_stepObserver = std::move(observer); }
-  void setStepValidator(StepValidator validator) { m_validator = std::move(validator); }
+  /// Off: the contributors' step control (LoadContributor::limitStep and rejectStep) is skipped, to verify
+  /// what it adds (TunnellingTest). On by default. Commits are never skipped.
+  void setStepControl(bool on) { m_stepControl = on; }
   void setStopRequest(StopRequest stop) { m_stop = std::move(stop); }
   /// Adds held nodes whose motion is imposed by other parts of the model (vessels).
-  void addPrescribed(std::vector<PrescribedNode> nodes) {
+  void addPrescribed(std::vector<model::PrescribedNode> nodes) {
     for (auto& n : nodes) m_extraPrescribed.push_back(std::move(n));
   }
   /// Print a progress line (simulated time, real-time factor) to stderr about every 2 s of wall time.
   void setProgress(bool on) { m_progress = on; }
 
-  /// Runs from `state` (the static equilibrium at t = 0, velocities zero) to the requested duration.
+  /// Runs from `state` (the static equilibrium at t = 0, velocities zero) to the requested duration. The
+  /// path-dependent state of the model follows LoadContributor's protocol: before each step the assembler's
+  /// limitStep, after a converged one its rejectStep (a refused step is undone and cut like a Newton failure,
+  /// with the reason in the message if it cannot be cut further), after an accepted one its commitStep (which
+  /// may change the velocities: an impulse model), and finish at the end, however the run ends.
   DynamicResult run(model::State& state);
 
  private:
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
   Observer m_observer;
-  StepLimiter m_limiter;
-  StepHook m_hook;
   StepObserver m_stepObserver;
-  StepValidator m_validator;
+  bool m_stepControl = true;
   StopRequest m_stop;
-  std::vector<PrescribedNode> m_extraPrescribed;
+  std::vector<model::PrescribedNode> m_extraPrescribed;
   bool m_progress = false;
 };
 
 /// The prescribed-motion nodes of a model (held ends with a motion).
-std::vector<PrescribedNode> prescribedNodes(const model::Model& model);
+std::vector<model::PrescribedNode> prescribedNodes(const model::Model& model);
 
 }  // namespace tangle::time

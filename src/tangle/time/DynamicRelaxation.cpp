@@ -24,7 +24,7 @@ constexpr double kMinRelaxationStep = 1e-5;
 }  // namespace
 
 DynamicRelaxation::DynamicRelaxation(solver::Assembler& assembler, const model::DynamicSpec& base,
-                                     std::vector<PrescribedNode> prescribed, double longestLine)
+                                     std::vector<model::PrescribedNode> prescribed, double longestLine)
     : m_assembler(&assembler), m_settings(base), m_prescribed(std::move(prescribed)) {
   m_settings.integrator = model::IntegratorKind::GeneralizedAlpha;
   m_settings.spectralRadius = 0.0;  // asymptotic annihilation of the high frequencies (Chung & Hulbert 1993)
@@ -67,9 +67,9 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
       break;
     }
     const double h = std::min(dt, duration - state.time);
-    if (m_validator) before = state;
+    before = state;
     const StepOutcome o = stepper.step(state, h);
-    const bool invalid = o.converged && m_validator && !m_validator(before, state).empty();
+    const bool invalid = o.converged && !m_assembler->rejectStep(before, state).empty();
     if (invalid) state = before;  // a converged step that the validator refuses: back to its start
     if (!o.converged || invalid) {
       dt *= 0.25;

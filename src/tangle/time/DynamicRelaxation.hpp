@@ -39,26 +39,23 @@ class DynamicRelaxation {
   /// @param prescribed held nodes with a motion (kept at their positions of the static time)
   /// @param longestLine length of the longest line [m], sets the damping (see run())
   DynamicRelaxation(solver::Assembler& assembler, const model::DynamicSpec& base,
-                    std::vector<PrescribedNode> prescribed, double longestLine);
+                    std::vector<model::PrescribedNode> prescribed, double longestLine);
 
   /// Integrates from `state` (its velocities are reset to zero) for at most `duration` [s] of pseudo-time,
   /// stopping once every translational node speed is below `restSpeed` [m/s]. Loads and held ends are
   /// those of time `staticTime` [s]. On return `state` is the last accepted state, at rest (velocities and
   /// accelerations zero) and with state.time = staticTime.
+  /// A step is accepted only if the assembler's rejectStep gives no reason (otherwise it is cut four-fold),
+  /// e.g. the line contact's check that no two lines passed through each other. Nothing is committed.
   RelaxationResult run(model::State& state, double staticTime, double duration, double restSpeed);
 
   /// Mass-proportional damping used [1/s].
   double damping() const { return m_settings.rayleighAlpha; }
 
-  /// A step is accepted only if `validator(before, after)` returns no reason (otherwise it is cut four-fold), e.g.
-  /// the line contact's check that no two lines passed through each other (LineContact::acceptStep).
-  void setStepValidator(DynamicAnalysis::StepValidator validator) { m_validator = std::move(validator); }
-
  private:
-  DynamicAnalysis::StepValidator m_validator;
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
-  std::vector<PrescribedNode> m_prescribed;
+  std::vector<model::PrescribedNode> m_prescribed;
 };
 
 }  // namespace tangle::time

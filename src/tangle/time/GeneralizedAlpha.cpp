@@ -75,7 +75,7 @@ AlphaParameters AlphaParameters::from(model::IntegratorKind kind, double rho) {
 }
 
 GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::DynamicSpec& settings,
-                                   std::vector<PrescribedNode> prescribed)
+                                   std::vector<model::PrescribedNode> prescribed)
     : m_assembler(&assembler),
       m_settings(settings),
       m_prescribed(std::move(prescribed)),
@@ -89,7 +89,7 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
   m_prescribedDof.assign(dofs.fullDofCount(), false);
-  for (const PrescribedNode& p : m_prescribed) {
+  for (const model::PrescribedNode& p : m_prescribed) {
     const int d = dofs.firstDof(p.node);
     for (int k = 0; k < 3; ++k)
       if (dofs.equation(d + k) < 0) m_prescribedDof[d + k] = true;
@@ -101,8 +101,8 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
 
 void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
   const model::DofMap& dofs = m_assembler->model().dofs();
-  for (const PrescribedNode& p : m_prescribed) {
-    MotionValue m = p.motion(t);
+  for (const model::PrescribedNode& p : m_prescribed) {
+    model::MotionValue m = p.motion(t);
     if (m_frozen) {  // held still at their positions of the frozen time
       m.velocity.setZero();
       m.acceleration.setZero();
@@ -377,7 +377,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   if (target.position.size() != start.position.size() || target.triad.size() != start.triad.size())
     target = start;
   applyPrescribed(target, environmentTime(t1));
-  for (const PrescribedNode& pn : m_prescribed) {
+  for (const model::PrescribedNode& pn : m_prescribed) {
     const int d = dofs.firstDof(pn.node);
     for (int k = 0; k < 3; ++k)
       if (m_prescribedDof[d + k]) dq[d + k] = target.position[pn.node][k] - start.position[pn.node][k];

@@ -21,7 +21,7 @@
 #include "tangle/model/State.hpp"
 #include "tangle/solver/Assembler.hpp"
 #include "tangle/solver/LinearSolver.hpp"
-#include "tangle/time/PrescribedMotion.hpp"
+#include "tangle/model/PrescribedMotion.hpp"
 
 namespace tangle::time {
 
@@ -35,14 +35,6 @@ struct AlphaParameters {
   /// (Chung & Hulbert 1993 eq. 25; HHT: Hilber et al. 1977 with alpha = -(1 - rho)/(1 + rho), clipped to
   /// [-1/3, 0]; Newmark: average acceleration, no numerical dissipation).
   static AlphaParameters from(model::IntegratorKind kind, double rhoInf);
-};
-
-/// A constrained node whose translations follow a prescribed motion about `basePosition` (and, for a
-/// vessel node, whose rotation follows a prescribed rotation).
-struct PrescribedNode {
-  int node = 0;
-  Vec3 basePosition = Vec3::Zero();  ///< position at t = 0 [m]
-  std::function<MotionValue(double)> motion;  ///< motion at time t [s]
 };
 
 /// Result of one attempted step.
@@ -60,7 +52,7 @@ struct StepOutcome {
 class GeneralizedAlpha {
  public:
   GeneralizedAlpha(solver::Assembler& assembler, const model::DynamicSpec& settings,
-                   std::vector<PrescribedNode> prescribed);
+                   std::vector<model::PrescribedNode> prescribed);
 
   /// Prepares the first step from a state at rest in equilibrium or with given v, a.
   /// Evaluates F_0 at the state (needed by the alpha_F weighting).
@@ -117,7 +109,7 @@ class GeneralizedAlpha {
 
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
-  std::vector<PrescribedNode> m_prescribed;
+  std::vector<model::PrescribedNode> m_prescribed;
   AlphaParameters m_params;
   std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
   std::vector<int> m_constrainedDofs;  // full DOFs without an equation

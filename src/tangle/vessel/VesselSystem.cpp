@@ -108,9 +108,9 @@ Vec3 VesselSystem::vesselPoint(const model::State& state, int vessel, const Vec3
   return state.position[node] + state.triad[node] * offset;
 }
 
-time::MotionValue VesselSystem::prescribedPose(int v, double t) const {
+model::MotionValue VesselSystem::prescribedPose(int v, double t) const {
   const VesselData& d = m_vessels[v];
-  time::MotionValue m;
+  model::MotionValue m;
   m.hasRotation = true;
   m.rotation = d.rotation0;
   if (d.spec->mode != model::VesselMode::Prescribed) return m;
@@ -135,9 +135,9 @@ time::MotionValue VesselSystem::prescribedPose(int v, double t) const {
   return m;
 }
 
-time::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, const Vec3& offset,
+model::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, const Vec3& offset,
                                                double t) const {
-  time::MotionValue m;
+  model::MotionValue m;
   const VesselData& d = m_vessels[v];
   if (!d.rao) return m;
   const RaoMotion::Motion r = d.rao->at(t, d.position0, core::ramp(t, m_rampTime).value);
@@ -149,8 +149,8 @@ time::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, cons
   return m;
 }
 
-std::vector<time::PrescribedNode> VesselSystem::prescribedNodes() const {
-  std::vector<time::PrescribedNode> out;
+std::vector<model::PrescribedNode> VesselSystem::prescribedNodes() const {
+  std::vector<model::PrescribedNode> out;
   for (int v = 0; v < static_cast<int>(m_vessels.size()); ++v) {
     const VesselData& d = m_vessels[v];
     if (d.spec->mode == model::VesselMode::Prescribed)
@@ -163,10 +163,10 @@ std::vector<time::PrescribedNode> VesselSystem::prescribedNodes() const {
     const Vec3 offset = c.offset;
     const Vec3 base = d.position0 + d.rotation0 * offset;
     out.push_back({c.node, base, [this, v, offset, base](double t) {
-                     const time::MotionValue pose = prescribedPose(v, t);
+                     const model::MotionValue pose = prescribedPose(v, t);
                      const Vec3 arm = pose.rotation * offset;
-                     const time::MotionValue rao = raoPointMotion(v, pose.rotation, offset, t);
-                     time::MotionValue m;
+                     const model::MotionValue rao = raoPointMotion(v, pose.rotation, offset, t);
+                     model::MotionValue m;
                      m.displacement =
                          m_vessels[v].position0 + pose.displacement + arm + rao.displacement - base;
                      m.velocity = pose.velocity + pose.angularVelocity.cross(arm) + rao.velocity;
@@ -303,7 +303,7 @@ void VesselSystem::addForces(const model::State& state, const solver::AssemblyRe
     } else if (c.tensioner.enabled) {
       // End on a fixed/prescribed vessel hanging from its tensioner: held horizontally (prescribed),
       // vertical force from the tensioner.
-      const time::MotionValue pose = prescribedPose(c.vessel, request.time);
+      const model::MotionValue pose = prescribedPose(c.vessel, request.time);
       const Vec3 p = d.position0 + pose.displacement + pose.rotation * c.offset +
                      raoPointMotion(c.vessel, pose.rotation, c.offset, request.time).displacement;
       const int dz = m_model->dofs().firstDof(c.node) + 2;
@@ -348,7 +348,7 @@ VecX VesselSystem::endConnectionForces(const model::State& state, double time) c
     if (d.spec->mode == model::VesselMode::Free) {
       addLink(state, c, request, one, nullptr);
     } else if (c.tensioner.enabled) {
-      const time::MotionValue pose = prescribedPose(c.vessel, time);
+      const model::MotionValue pose = prescribedPose(c.vessel, time);
       const Vec3 p = d.position0 + pose.displacement + pose.rotation * c.offset +
                      raoPointMotion(c.vessel, pose.rotation, c.offset, time).displacement;
       one[dofs.firstDof(c.node) + 2] -= tensionerForce(c.tensioner, p.z() - state.position[c.node].z()).force;
@@ -372,7 +372,7 @@ std::vector<VesselSystem::TensionerReading> VesselSystem::tensionerReadings(cons
                      raoPointMotion(c.vessel, rotation, c.offset, time).displacement;
       stroke = -(state.position[c.node] - p).dot(rotation * Vec3::UnitZ());
     } else {
-      const time::MotionValue pose = prescribedPose(c.vessel, time);
+      const model::MotionValue pose = prescribedPose(c.vessel, time);
       const Vec3 p = d.position0 + pose.displacement + pose.rotation * c.offset +
                      raoPointMotion(c.vessel, pose.rotation, c.offset, time).displacement;
       stroke = p.z() - state.position[c.node].z();

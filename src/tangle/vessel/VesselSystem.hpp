@@ -15,7 +15,7 @@
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
-#include "tangle/time/GeneralizedAlpha.hpp"
+#include "tangle/model/PrescribedMotion.hpp"
 #include "tangle/vessel/RaoMotion.hpp"
 #include "tangle/vessel/VesselLoads.hpp"
 
@@ -33,11 +33,12 @@ class VesselSystem final : public solver::LoadContributor {
                VecX* out) override;
   /// Parts of the model away from the vessels leave this contributor out (its loads act at the vessel
   /// nodes and the line ends tied to them, which it marks).
+  solver::LoadSource source() const override { return solver::LoadSource::Vessels; }
   bool supportsParts() const override { return true; }
   bool markLoadedNodes(std::vector<char>& mark) const override;
 
   /// Held nodes that move: prescribed vessels and the line ends on fixed/prescribed vessels (RAO motion).
-  std::vector<time::PrescribedNode> prescribedNodes() const;
+  std::vector<model::PrescribedNode> prescribedNodes() const;
 
   /// Global position [m] of a vessel point given in vessel axes at a state (without RAO motion).
   Vec3 vesselPoint(const model::State& state, int vessel, const Vec3& offset) const;
@@ -104,9 +105,9 @@ class VesselSystem final : public solver::LoadContributor {
   /// Force and moment of the station-keeping springs of a vessel held in statics, on the vessel [N, N m].
   Vec6 holdLoad(const model::State& state, const VesselData& d) const;
   /// Pose (position, rotation) and 6-velocity/acceleration of a non-free vessel at time t.
-  time::MotionValue prescribedPose(int vessel, double t) const;
+  model::MotionValue prescribedPose(int vessel, double t) const;
   /// RAO displacement/velocity/acceleration of a vessel point (vessel axes offset) at t.
-  time::MotionValue raoPointMotion(int vessel, const Mat3& rotation, const Vec3& offset, double t) const;
+  model::MotionValue raoPointMotion(int vessel, const Mat3& rotation, const Vec3& offset, double t) const;
   void addLink(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,
                VecX& force, solver::SystemMatrix* matrix) const;
   void addFlexJoint(const model::State& state, const Connection& c, const solver::AssemblyRequest& request,

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "tangle/core/Error.hpp"
-#include "tangle/io/JsonWriter.hpp"
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/JsonWriter.hpp"
+#include "tangle/core/OutputFile.hpp"
 #include "tangle/io/ResultWriter.hpp"
 
 namespace tangle::io {
@@ -30,7 +30,7 @@ fs::path freshDir(const std::string& name) {
 TEST(OutputFile, FullDiskThrowsNamingTheFile) {
   // /dev/full accepts the open and fails every write with ENOSPC: what a full disk does.
   if (!fs::exists("/dev/full")) GTEST_SKIP() << "/dev/full not available";
-  OutputFile f("/dev/full");
+  core::OutputFile f("/dev/full");
   try {
     for (int i = 0; i < 100000; ++i) f.write("0123456789,0123456789,0123456789\n");
     f.close();
@@ -44,7 +44,7 @@ TEST(OutputFile, MissingFolderThrowsNamingTheFile) {
   const fs::path p = fs::temp_directory_path() / "tangle-no-such-folder" / "x.csv";
   fs::remove_all(p.parent_path());
   try {
-    OutputFile f(p);
+    core::OutputFile f(p);
     FAIL() << "no OutputError";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
@@ -96,7 +96,7 @@ bool isPlainAscii(const std::string& s) {
 
 TEST(JsonWriter, NonUtf8BytesBecomeReplacementCharacters) {
   std::ostringstream out;
-  JsonWriter j(out);
+  core::JsonWriter j(out);
   j.beginObject();
   j.field("latin1", "caf\xe9");          // Latin-1 e-acute: not UTF-8
   j.field("truncated", "x\xe2\x82");     // cut 3-byte sequence
@@ -113,7 +113,7 @@ TEST(JsonWriter, NonUtf8BytesBecomeReplacementCharacters) {
 
 TEST(JsonWriter, ValidUtf8IsKept) {
   std::ostringstream out;
-  JsonWriter j(out);
+  core::JsonWriter j(out);
   j.beginArray();
   j.value("\xc3\xa9\xe2\x82\xac\xf0\x9f\x8c\x8a");  // e-acute, euro, wave emoji
   j.endArray();

@@ -186,7 +186,7 @@ TEST(ContactAlongLength, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
 
 // A line lowered onto a parallel taut line until they lie along each other (dynamics, default contact
 // settings but the restitution): the run completes, the penetration stays below 10 % of the radii
-// (line-to-line penalty, regularised law; acceptStep bounds it at 50 %), and the resting contact is one
+// (line-to-line penalty, regularised law; rejectStep bounds it at 50 %), and the resting contact is one
 // event that is still open at the end. A: cable 50 kg/m, EA 1e8 N, 1e5 N pretension, 20 m, 40 elements;
 // B: wire 10 kg/m, EA 1e9 N, 1e6 N; both d 0.1 m, in air; A's ends start 0.3 m above touching and are
 // lowered by 0.28 m in 5 s (to 2 cm above touching), then held for 5 s: A (sag 0.49 m under its weight)

@@ -1,5 +1,5 @@
 // Contact along a length in statics (issue 14), through Simulation::solveStatics() (the static solver
-// calls the contact's limitIncrement / rejectState / commitStatic hooks).
+// calls the contact's limitIncrement / rejectState / commitIncrement hooks).
 //
 // Crossing pressed at 90, 30, 9, 4, 1, 0.05 and 0 deg: a heavy pretensioned cable A (100 kg/m, EA 1e8 N,
 // tension 1e5 N, 20 m, 40 elements) laid on a taut wire B (EA 1e9 N, tension 1e6 N) in air, both pinned

@@ -1,6 +1,6 @@
 // Static verification against the closed-form elastic catenary partly resting on a frictionless flat
 // seabed (Irvine 1981 "Cable Structures"; Jonkman 2007 NREL/TP-500-41958 eq. 2-1/2-2 with Cb = 0),
-// implemented in solver::solveAnchoredCatenary and verified there on its own.
+// implemented in catenary::solveAnchoredCatenary and verified there on its own.
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include "support/ModelFactory.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
-#include "tangle/solver/ElasticCatenary.hpp"
+#include "tangle/catenary/ElasticCatenary.hpp"
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
 
@@ -29,7 +29,7 @@ constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1;
 /// closed-form catenary of the same line.
 struct SolvedCatenary {
   std::vector<solver::LineSnapshot> lines;
-  solver::CatenarySolution exact;
+  catenary::CatenarySolution exact;
 };
 
 SolvedCatenary solveCatenary(double span, int elements) {
@@ -57,13 +57,13 @@ SolvedCatenary solveCatenary(double span, int elements) {
   request.wantMatrix = false;
   assembler.assemble(s, request, force, nullptr);
 
-  solver::CatenaryInput in;
+  catenary::CatenaryInput in;
   in.span = span;
   in.height = fairlead.z() - anchor.z();
   in.length = kLength;
   in.weight = w;
   in.axialStiffness = chain.axialStiffness;
-  return {solver::computeLineResults(m, assembler, s, force), solver::solveAnchoredCatenary(in)};
+  return {solver::computeLineResults(m, assembler, s, force), catenary::solveAnchoredCatenary(in)};
 }
 
 class ElasticCatenaryWithSeabed : public ::testing::TestWithParam<CatenaryCase> {};

@@ -3,7 +3,7 @@
 //
 // References and tolerances:
 //  - Catenary with a grounded part, frictionless seabed: the closed-form elastic catenary
-//    (solver::solveAnchoredCatenary, itself verified against Irvine 1981 in ElasticCatenaryTest). 0.5 % on
+//    (catenary::solveAnchoredCatenary, itself verified against Irvine 1981 in ElasticCatenaryTest). 0.5 % on
 //    the fairlead tension: the polyline with lumped nodal weights differs from the continuous catenary by
 //    O((w L_e / H)^2), under 1e-3 even for 10 elements over 500 m (L_e = 50 m).
 //  - Slack catenary (line longer than the L-shaped path anchor -> below fairlead -> fairlead): the exact
@@ -28,7 +28,7 @@
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/io/ModelReader.hpp"
-#include "tangle/solver/ElasticCatenary.hpp"
+#include "tangle/catenary/ElasticCatenary.hpp"
 
 namespace tangle {
 namespace {
@@ -113,13 +113,13 @@ TEST_P(CatenaryBattery, ConvergesAndMatchesClosedForm) {
     EXPECT_NEAR(fairlead, expected, 0.005 * expected + lumping);
     EXPECT_LT(std::hypot(s.lines[0].endTensionForceB.x(), s.lines[0].endTensionForceB.y()), 0.005 * expected);
   } else {
-    solver::CatenaryInput in;
+    catenary::CatenaryInput in;
     in.span = span;
     in.height = height;
     in.length = kLength;
     in.weight = w;
     in.axialStiffness = kChainEA;
-    const solver::CatenarySolution exact = solver::solveAnchoredCatenary(in);
+    const catenary::CatenarySolution exact = catenary::solveAnchoredCatenary(in);
     EXPECT_NEAR(fairlead, exact.fairleadTension, 0.005 * exact.fairleadTension + lumping);
   }
 }
@@ -622,13 +622,13 @@ lines:
   // Closed form: the suspended catenary of the mirrored problem (net buoyancy 1 kg/m up).
   const double area = M_PI / 4.0 * 0.04984 * 0.04984;
   const double lift = (1025.0 * area - 1.0) * 9.80665;
-  solver::CatenaryInput in;
+  catenary::CatenaryInput in;
   in.span = 90.0;
   in.height = 0.0;
   in.length = 100.0;
   in.weight = lift;
   in.axialStiffness = 1.0e6;
-  const solver::CatenarySolution exact = solver::solveSuspendedCatenary(in);
+  const catenary::CatenarySolution exact = catenary::solveSuspendedCatenary(in);
   EXPECT_NEAR(line.endTensionB, exact.fairleadTension, 0.005 * exact.fairleadTension);
 }
 

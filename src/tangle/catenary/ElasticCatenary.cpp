@@ -2,7 +2,7 @@
 /// Elastic catenary (Jonkman 2007; Irvine 1981) solved by Newton's method on (H, V), and the
 /// initial-shape generator built on it. Equations: docs/theory.md (section 4).
 
-#include "tangle/solver/ElasticCatenary.hpp"
+#include "tangle/catenary/ElasticCatenary.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,7 @@
 
 #include "tangle/core/Error.hpp"
 
-namespace tangle::solver {
+namespace tangle::catenary {
 namespace {
 
 /// Backtracking halvings of a Newton step before the step is taken anyway.
@@ -756,4 +756,4 @@ InitialShape initialLineShape(const Vec3& endA, const Vec3& endB,
   return shape;
 }
 
-}  // namespace tangle::solver
+}  // namespace tangle::catenary

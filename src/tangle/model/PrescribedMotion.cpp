@@ -1,17 +1,17 @@
-#include "tangle/time/PrescribedMotion.hpp"
+#include "tangle/model/PrescribedMotion.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "tangle/core/Ramp.hpp"
 
-namespace tangle::time {
+namespace tangle::model {
 
 namespace {
 Vec3 rowOffset(const std::array<double, 4>& row) { return Vec3(row[1], row[2], row[3]); }
 }  // namespace
 
-PrescribedMotion::PrescribedMotion(const model::EndMotionSpec& spec, double rampTime)
+PrescribedMotion::PrescribedMotion(const EndMotionSpec& spec, double rampTime)
     : m_spec(spec), m_rampTime(rampTime) {
   const auto& tab = m_spec.table;
   const std::size_t n = tab.size();
@@ -94,4 +94,4 @@ MotionValue PrescribedMotion::at(double t) const {
   return m;
 }
 
-}  // namespace tangle::time
+}  // namespace tangle::model

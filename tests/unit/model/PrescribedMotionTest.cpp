@@ -5,9 +5,9 @@
 
 #include <gtest/gtest.h>
 
-#include "tangle/time/PrescribedMotion.hpp"
+#include "tangle/model/PrescribedMotion.hpp"
 
-namespace tangle::time {
+namespace tangle::model {
 namespace {
 
 model::EndMotionSpec table(bool cubic) {
@@ -62,4 +62,4 @@ TEST(PrescribedMotionTable, CubicPassesThroughRowsWithContinuousVelocity) {
 }
 
 }  // namespace
-}  // namespace tangle::time
+}  // namespace tangle::model

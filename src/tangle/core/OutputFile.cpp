@@ -1,4 +1,4 @@
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 
 #include <cerrno>
 #include <cstring>
@@ -7,7 +7,7 @@
 
 #include "tangle/core/Error.hpp"
 
-namespace tangle::io {
+namespace tangle::core {
 
 OutputFile::OutputFile(std::filesystem::path path) : m_path(std::move(path)) {
   errno = 0;
@@ -60,4 +60,4 @@ void OutputFile::close() {
   if (m_out.fail()) fail(errno);
 }
 
-}  // namespace tangle::io
+}  // namespace tangle::core

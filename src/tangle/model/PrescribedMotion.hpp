@@ -1,5 +1,6 @@
 #pragma once
 /// @file PrescribedMotion.hpp
+/// (The model layer: vessels and the integrators both use it.)
 /// Prescribed displacement of a held line end about its initial position: ramped harmonic motion
 /// or a time-history table, held at its first value before the table and its last value after it.
 /// Table interpolation:
@@ -16,7 +17,7 @@
 #include "tangle/core/Types.hpp"
 #include "tangle/model/ModelSpec.hpp"
 
-namespace tangle::time {
+namespace tangle::model {
 
 /// Displacement, velocity and acceleration of a prescribed motion at one time.
 struct MotionValue {
@@ -29,20 +30,28 @@ struct MotionValue {
   Vec3 angularAcceleration = Vec3::Zero();  ///< spatial [rad/s^2]
 };
 
+/// A constrained node whose translations follow a prescribed motion about `basePosition` (and, for a
+/// vessel node, whose rotation follows a prescribed rotation): what the integrators impose on held nodes.
+struct PrescribedNode {
+  int node = 0;
+  Vec3 basePosition = Vec3::Zero();           ///< position at t = 0 [m]
+  std::function<MotionValue(double)> motion;  ///< motion at time t [s]
+};
+
 /// A prescribed end motion.
 class PrescribedMotion {
  public:
   /// @param spec harmonic amplitude/period/phase or table
   /// @param rampTime start-up ramp duration [s] (harmonic motion only; a table is used as given)
-  PrescribedMotion(const model::EndMotionSpec& spec, double rampTime);
+  PrescribedMotion(const EndMotionSpec& spec, double rampTime);
   /// Motion at time t [s].
   MotionValue at(double t) const;
 
  private:
   MotionValue tableAt(double t) const;
-  model::EndMotionSpec m_spec;
+  EndMotionSpec m_spec;
   double m_rampTime;
   std::vector<Vec3> m_second;  ///< spline second derivatives at the rows [m/s^2] (cubic tables)
 };
 
-}  // namespace tangle::time
+}  // namespace tangle::model

@@ -1,9 +1,9 @@
-#include "tangle/io/JsonWriter.hpp"
+#include "tangle/core/JsonWriter.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
 
-namespace tangle::io {
+namespace tangle::core {
 
 void JsonWriter::separator() {
   if (m_afterKey) {
@@ -156,4 +156,4 @@ void JsonWriter::writeString(std::string_view s) {
   *m_out << '"';
 }
 
-}  // namespace tangle::io
+}  // namespace tangle::core

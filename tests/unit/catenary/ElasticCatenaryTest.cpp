@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "tangle/core/Error.hpp"
-#include "tangle/solver/ElasticCatenary.hpp"
+#include "tangle/catenary/ElasticCatenary.hpp"
 
-namespace tangle::solver {
+namespace tangle::catenary {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
@@ -608,4 +608,4 @@ TEST(InitialLineShape, InvalidInputThrows) {
 }
 
 }  // namespace
-}  // namespace tangle::solver
+}  // namespace tangle::catenary

@@ -1,11 +1,11 @@
-#include "tangle/app/RunLog.hpp"
+#include "tangle/results/RunLog.hpp"
 
 #include <iostream>
 
-namespace tangle::app {
+namespace tangle::results {
 
 void RunLog::open(const std::filesystem::path& path) {
-  m_file = std::make_unique<io::OutputFile>(path);
+  m_file = std::make_unique<core::OutputFile>(path);
   m_file->write(m_pending);
   m_pending.clear();
   m_file->flush();
@@ -34,4 +34,4 @@ void RunLog::close() {
   if (m_file) m_file->close();
 }
 
-}  // namespace tangle::app
+}  // namespace tangle::results

@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tangle::io {
+namespace tangle::core {
 
 /// Streaming JSON writer. Usage: beginObject(); key("a"); value(1.0); endObject();
 class JsonWriter {
@@ -42,4 +42,4 @@ class JsonWriter {
   bool m_afterKey = false;
 };
 
-}  // namespace tangle::io
+}  // namespace tangle::core

@@ -1,7 +1,8 @@
 #pragma once
 /// @file ElasticCatenary.hpp
 /// Analytic elastic catenary of a single uniform line segment, used for the initial shape of the
-/// finite-element static solve and as a verification reference.
+/// finite-element static solve and as a verification reference: closed forms in their own module (below
+/// the model, which builds its start shapes from them), not a solver of the model.
 ///
 /// Conventions: the line is described in the vertical plane through its two ends; x is the
 /// horizontal distance from end A (the anchor), z the height above end A (z up); s is the
@@ -22,7 +23,7 @@
 
 #include "tangle/core/Types.hpp"
 
-namespace tangle::solver {
+namespace tangle::catenary {
 
 /// Controls of the Newton iteration on (H, V).
 struct CatenaryOptions {
@@ -152,4 +153,4 @@ InitialShape initialLineShape(const Vec3& endA, const Vec3& endB,
                               const std::vector<CatenarySection>& sections, double seabedDepth,
                               const std::vector<double>& arcLengths, const CatenaryOptions& options = {});
 
-}  // namespace tangle::solver
+}  // namespace tangle::catenary

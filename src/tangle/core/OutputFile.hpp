@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string_view>
 
-namespace tangle::io {
+namespace tangle::core {
 
 /// One result file, opened for writing (truncated). Text is written with write(); flush() and close()
 /// check the stream and throw OutputError ("cannot write <path>: <reason>") on any failure.
@@ -38,4 +38,4 @@ class OutputFile {
   bool m_open = false;
 };
 
-}  // namespace tangle::io
+}  // namespace tangle::core

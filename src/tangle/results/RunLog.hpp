@@ -7,9 +7,9 @@
 #include <memory>
 #include <string>
 
-#include "tangle/io/OutputFile.hpp"
+#include "tangle/core/OutputFile.hpp"
 
-namespace tangle::app {
+namespace tangle::results {
 
 /// Terminal messages with a copy in the run log.
 class RunLog {
@@ -30,7 +30,7 @@ class RunLog {
   void toLog(const std::string& text);
   bool m_quiet;
   std::string m_pending;  ///< said before open()
-  std::unique_ptr<io::OutputFile> m_file;
+  std::unique_ptr<core::OutputFile> m_file;
 };
 
-}  // namespace tangle::app
+}  // namespace tangle::results

@@ -1,0 +1,69 @@
+#include "tangle/analysis/RangeGraphs.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace tangle::analysis {
+
+RangeGraphs::RangeGraphs(const std::vector<solver::LineSnapshot>& initial) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const solver::LineSnapshot& s : initial) {
+    const std::size_t n = s.arcLength.size();
+    Range r{std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
+            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
+            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0)};
+    r.endTensionMaxA = r.endTensionMaxB = -inf;
+    r.endTensionMinA = r.endTensionMinB = inf;
+    if (!s.tension.empty())
+      r.retension = std::max(1.0, 0.01 * *std::max_element(s.tension.begin(), s.tension.end()));
+    m_ranges.push_back(std::move(r));
+  }
+}
+
+std::vector<std::vector<double>> RangeGraphs::seabedLevels(const model::Model& model) {
+  std::vector<std::vector<double>> levels;
+  for (const model::Line& line : model.lines()) {
+    std::vector<double>& level = levels.emplace_back();
+    for (int i = 0; i < line.nodeCount; ++i)
+      // Resting height plus half a diameter: a laid chain pushed about by a current hops by less.
+      level.push_back(-model.environment().waterDepth + model.nodeContactDiameter()[line.firstNode + i]);
+  }
+  return levels;
+}
+
+void RangeGraphs::accumulate(const std::vector<solver::LineSnapshot>& lines, double dt) {
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const solver::LineSnapshot& s = lines[l];
+    Range& r = m_ranges[l];
+    for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
+      r.tensionMin[i] = std::min(r.tensionMin[i], s.tension[i]);
+      r.tensionMax[i] = std::max(r.tensionMax[i], s.tension[i]);
+      r.momentMin[i] = std::min(r.momentMin[i], s.bendingMoment[i]);
+      r.momentMax[i] = std::max(r.momentMax[i], s.bendingMoment[i]);
+      r.curvatureMin[i] = std::min(r.curvatureMin[i], s.curvature[i]);
+      r.curvatureMax[i] = std::max(r.curvatureMax[i], s.curvature[i]);
+      r.tensionSum[i] += dt * s.tension[i];
+      r.momentSum[i] += dt * s.bendingMoment[i];
+      r.curvatureSum[i] += dt * s.curvature[i];
+    }
+    r.endTensionMaxA = std::max(r.endTensionMaxA, s.endTensionA);
+    r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
+    r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);
+    r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < s.tension.size(); ++i)
+      if (m_seabedLevel.empty() || s.position[i].z() > m_seabedLevel[l][i])
+        lowest = std::min(lowest, s.tension[i]);
+    if (lowest < 0.0) {
+      if (!r.slack) ++r.slackEvents;
+      r.slack = true;
+      r.slackTime += dt;
+    } else if (lowest > r.retension) {
+      r.slack = false;
+    }
+  }
+  m_weight += dt;
+  ++m_steps;
+}
+
+}  // namespace tangle::analysis

@@ -1,0 +1,164 @@
+#include "tangle/results/RunText.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "tangle/core/Units.hpp"
+
+namespace tangle::results {
+
+namespace {
+
+const char* endKindName(model::EndKind k) {
+  switch (k) {
+    case model::EndKind::Anchored:
+      return "anchored";
+    case model::EndKind::Fixed:
+      return "fixed";
+    case model::EndKind::Pinned:
+      return "pinned";
+    case model::EndKind::Free:
+      return "free";
+    case model::EndKind::Vessel:
+      return "vessel";
+  }
+  return "?";
+}
+
+const char* waveStretchingName(model::WaveStretching s) {
+  switch (s) {
+    case model::WaveStretching::None:
+      return "none";
+    case model::WaveStretching::Wheeler:
+      return "wheeler";
+    case model::WaveStretching::Extrapolation:
+      return "vertical_extrapolation";
+  }
+  return "?";
+}
+
+}  // namespace
+
+std::string modelSummary(const model::Model& m) {
+  std::string out;
+  const auto& env = m.environment();
+  const model::ModelSpec& spec = m.spec();
+  out += fmt::format("model: {}\n", spec.sourceFile);
+  if (!spec.title.empty()) out += fmt::format("title: {}\n", spec.title);
+  out += fmt::format("environment: water depth {:.1f} m, water density {:.1f} kg/m3, gravity {:.5f} m/s2\n",
+                     env.waterDepth, env.waterDensity, env.gravity);
+  const model::WaveSpec& w = env.waves;
+  switch (w.kind) {
+    case model::WaveKind::None:
+      out += "waves: none\n";
+      break;
+    case model::WaveKind::Airy:
+      out += fmt::format(
+          "waves: regular (Airy), H = {:.2f} m, T = {:.2f} s, towards {:.1f} deg, stretching {}\n", w.height,
+          w.period, radToDeg(w.azimuth), waveStretchingName(w.stretching));
+      break;
+    case model::WaveKind::Jonswap:
+      out += fmt::format(
+          "waves: JONSWAP, Hs = {:.2f} m, Tp = {:.2f} s, gamma {:.2f}, {} components (seed {}), "
+          "towards {:.1f} deg, stretching {}\n",
+          w.significantHeight, w.peakPeriod, w.gamma, w.components, w.seed, radToDeg(w.azimuth),
+          waveStretchingName(w.stretching));
+      break;
+  }
+  if (env.current.empty()) {
+    out += "current: none\n";
+  } else {
+    out += fmt::format("current: {} level(s):", env.current.size());
+    for (const model::CurrentLevel& c : env.current)
+      out += fmt::format(" z = {:.1f} m: {:.2f} m/s towards {:.1f} deg;", c.z, c.speed, radToDeg(c.azimuth));
+    out.back() = '\n';
+  }
+  if (env.windSpeed > 0.0)
+    out += fmt::format("wind: {:.2f} m/s towards {:.1f} deg\n", env.windSpeed, radToDeg(env.windAzimuth));
+  for (const model::VesselSpec& v : spec.vessels)
+    out +=
+        fmt::format("  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg, mass {:.1f} t{}\n",
+                    v.name, model::vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
+                    radToDeg(v.heading), v.mass / 1000.0, v.heldInStatics ? ", held in statics" : "");
+  int beams = 0;
+  for (const auto& el : m.elements()) beams += el.isBeam() ? 1 : 0;
+  out +=
+      fmt::format("{} line(s), {} elements ({} beam, {} bar), {} nodes, {} DOFs ({} free)\n",
+                  m.lines().size(), m.elements().size(), beams, static_cast<int>(m.elements().size()) - beams,
+                  m.nodeCount(), m.dofs().fullDofCount(), m.dofs().equationCount());
+  for (int i = 0; i < static_cast<int>(m.lines().size()); ++i) {
+    const model::Line& line = m.lines()[i];
+    double weight = 0.0;
+    for (int e = 0; e < line.elementCount; ++e) {
+      const auto& el = m.elements()[line.firstElement + e];
+      weight += el.type->submergedWeight(env.waterDensity, env.gravity) * el.restLength;
+    }
+    out += fmt::format(
+        "  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t, submerged weight "
+        "{:.1f} kN, end A {}, end B {}\n",
+        line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
+        weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
+  }
+  if (!spec.contact.enabled) {
+    out += "contact: off\n";
+  } else if (spec.contact.pairs.empty()) {
+    out +=
+        fmt::format("contact: every pair of lines{}, restitution {:.2f}\n",
+                    spec.contact.selfContact ? " and each line with itself" : "", spec.contact.restitution);
+  } else {
+    out += fmt::format("contact: {} pair(s):", spec.contact.pairs.size());
+    for (const auto& [a, b] : spec.contact.pairs) out += fmt::format(" {}-{};", a, b);
+    out.back() = '\n';
+  }
+  const auto& d = spec.dynamics;
+  if (d.enabled)
+    out += fmt::format("dynamics: {:.2f} s at dt = {:.4g} s, output every {:.4g} s\n", d.duration, d.timeStep,
+                       d.outputInterval);
+  return out;
+}
+
+std::string warningText(const model::ModelSpec& spec) {
+  std::string out;
+  for (const std::string& w : spec.warnings) out += "warning: " + w + "\n";
+  return out;
+}
+
+std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines,
+                           double limit) {
+  std::string out;
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const model::Line& line = m.lines()[l];
+    double worst = 0.0, where = 0.0;
+    for (int e = 0; e < line.elementCount; ++e) {
+      const auto& el = m.elements()[line.firstElement + e];
+      const double t = 0.5 * (lines[l].tension[e] + lines[l].tension[e + 1]);
+      const double strain = t / el.type->axialStiffness;
+      if (strain > worst) {
+        worst = strain;
+        where = 0.5 * (line.arcLength[e] + line.arcLength[e + 1]);
+      }
+    }
+    if (worst > limit)
+      out += fmt::format(
+          "warning: line '{}': axial strain {:.2f} % at {:.1f} m from end A (above {:.0f} %): check "
+          "the line length against the distance between its ends, and axial_stiffness\n",
+          line.name, 100.0 * worst, where, 100.0 * limit);
+  }
+  return out;
+}
+
+std::string tensionerText(const model::Model& m,
+                          const std::vector<vessel::VesselSystem::TensionerReading>& readings) {
+  std::string out;
+  for (const auto& r : readings) {
+    const bool onStop = std::abs(r.stroke) > r.halfStroke;
+    out += fmt::format(
+        "  tensioner of line '{}' end {}: stroke {:+.3f} m of +-{:.3f} m, force {:.1f} kN{}\n",
+        m.lines()[r.line].name, r.end == 0 ? 'A' : 'B', r.stroke, r.halfStroke, r.force / 1000.0,
+        onStop ? fmt::format(", ON ITS END STOP (stop force {:.1f} kN)", r.stopForce / 1000.0) : "");
+  }
+  return out;
+}
+
+}  // namespace tangle::results
