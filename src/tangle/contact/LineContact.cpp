@@ -45,6 +45,13 @@ double reducedMass(double a, double b) {
 double pairMassBound(double a, double b) {
   return std::isinf(a) || std::isinf(b) ? std::numeric_limits<double>::infinity() : reducedMass(a, b);
 }
+/// Contact radius of every element of a model [m]: half its contact diameter.
+std::vector<double> elementRadii(const model::Model& model) {
+  std::vector<double> radius;
+  radius.reserve(model.elements().size());
+  for (const model::LineElement& el : model.elements()) radius.push_back(0.5 * el.type->contactDiameter);
+  return radius;
+}
 }  // namespace
 
 LineContact::LineContact(const model::Model& model, const model::ContactSpec& spec, double timeStep)
@@ -52,16 +59,16 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
       m_spec(spec),
       m_timeStep(timeStep),
       m_zeta(dampingRatioForRestitution(spec.restitution)),
+      m_radius(elementRadii(model)),
+      m_search(model, spec, m_radius),
       m_eventTracker(spec.impactVelocityThreshold, spec.eventSeparationTime),
       m_debug(std::getenv("TANGLE_DEBUG_CONTACT") != nullptr) {
   const int nLines = static_cast<int>(model.lines().size());
-  m_lineEnabled.resize(nLines);
   m_lineStiffness.assign(nLines, kInf);
   m_lineMassWithAdded.assign(nLines, 0.0);
   const double rho = model.environment().waterDensity;
   for (int l = 0; l < nLines; ++l) {
     const model::Line& line = model.lines()[l];
-    m_lineEnabled[l] = line.spec->contact;
     for (int e = 0; e < line.elementCount; ++e) {
       const model::LineElement& el = model.elements()[line.firstElement + e];
       m_lineStiffness[l] =
@@ -83,46 +90,6 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
     if (ls.endA.kind != model::EndKind::Free || ls.endB.kind != model::EndKind::Free)
       m_lineMassWithAdded[l] = kInf;
   }
-  m_allowed.assign(nLines, std::vector<bool>(nLines, false));
-  if (spec.pairs.empty()) {
-    for (int a = 0; a < nLines; ++a)
-      for (int b = 0; b < nLines; ++b)
-        m_allowed[a][b] = m_lineEnabled[a] && m_lineEnabled[b] && (a != b || spec.selfContact);
-  } else {
-    auto index = [&](const std::string& name) {
-      for (int l = 0; l < nLines; ++l)
-        if (model.lines()[l].name == name) return l;
-      return -1;
-    };
-    for (const auto& [first, second] : spec.pairs) {
-      const int a = index(first), b = index(second);
-      if (a < 0 || b < 0) continue;  // the reader has already rejected unknown names
-      m_allowed[a][b] = m_allowed[b][a] = true;
-    }
-  }
-  m_radius.reserve(model.elements().size());
-  for (const model::LineElement& el : model.elements()) {
-    m_radius.push_back(0.5 * el.type->contactDiameter);
-    m_maxRadius = std::max(m_maxRadius, m_radius.back());
-  }
-
-  buildExclusions();
-  BroadPhaseOptions options;
-  options.selfContact = spec.selfContact;
-  options.selfContactSkip = 1;
-  options.linePairFilter = [this](int a, int b) { return pairAllowed(a, b); };
-  m_broadPhase = BroadPhase(options);
-}
-
-bool LineContact::pairAllowed(int a, int b) const { return m_allowed[a][b]; }
-
-std::vector<std::array<int, 2>> LineContact::allowedPairs() const {
-  std::vector<std::array<int, 2>> pairs;
-  const int n = static_cast<int>(m_allowed.size());
-  for (int a = 0; a < n; ++a)
-    for (int b = a; b < n; ++b)
-      if (pairAllowed(a, b)) pairs.push_back({a, b});
-  return pairs;
 }
 
 double LineContact::stiffness(int a, int b) const {
@@ -185,83 +152,13 @@ double LineContact::broadPhaseMargin(const model::State& state, bool dynamic) co
   if (dynamic)
     for (int n = 0; n < m_model->nodeCount(); ++n)
       maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
-  return m_maxRadius + 4.0 * maxSpeed * m_timeStep;
-}
-
-void LineContact::refreshCandidates(const model::State& state) {
-  m_candidates = pairsWithin(state, m_margin);
-}
-
-std::vector<CandidatePair> LineContact::pairsWithin(const model::State& state, double margin) {
-  buildProxies(state);
-  // Verlet list (skin): the broad phase runs with a margin larger than asked for, and its pairs serve later
-  // calls while no segment end has moved more than half the extra margin since. A box of margin m now lies
-  // inside the box of margin m + 2 delta at the earlier positions when no end has moved more than delta,
-  // so the earlier list holds every pair overlapping now; the box test below keeps exactly those, in the
-  // broad phase's order: the same pairs as a fresh search. (The search was 4.5 % of the drilling-riser run,
-  // twice per step.)
-  bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
-  if (reuse) {
-    double moved = 0.0;
-    for (std::size_t i = 0; i < m_proxies.size() && reuse; ++i) {
-      moved = std::max({moved, (m_proxies[i].a - m_verletProxies[i].a).norm(),
-                        (m_proxies[i].b - m_verletProxies[i].b).norm()});
-      // A non-finite position goes to the broad phase, which reports it.
-      reuse =
-          margin + 2.0 * moved <= m_verletMargin && m_proxies[i].a.allFinite() && m_proxies[i].b.allFinite();
-    }
-  }
-  if (!reuse) {
-    BroadPhaseOptions options = m_broadPhase.options();
-    options.margin = 2.0 * margin;  // skin: the extra margin
-    m_verletMargin = options.margin;
-    m_verletProxies = m_proxies;
-    m_verletPairs.clear();
-    BroadPhase(options).findPairs(m_proxies, m_verletPairs);
-    if (!m_zones.empty())
-      m_verletPairs.erase(std::remove_if(m_verletPairs.begin(), m_verletPairs.end(),
-                                         [&](const CandidatePair& c) {
-                                           return !elementPairAllowed(m_proxies[c.first].element,
-                                                                      m_proxies[c.second].element);
-                                         }),
-                          m_verletPairs.end());
-  }
-  std::vector<CandidatePair> pairs;
-  for (const CandidatePair& c : m_verletPairs)
-    if (boxesOverlap(proxyBox(m_proxies[c.first], margin), proxyBox(m_proxies[c.second], margin)))
-      pairs.push_back(c);
-  return pairs;
+  return m_search.maxRadius() + 4.0 * maxSpeed * m_timeStep;
 }
 
 bool LineContact::markLoadedNodes(std::vector<char>& mark) const {
-  const auto& elements = m_model->elements();
-  const auto markAround = [&](int element) {
-    const int line = m_model->lineOfNode(elements[static_cast<std::size_t>(element)].node1);
-    const model::Line& l = m_model->lines()[static_cast<std::size_t>(line)];
-    for (int e = std::max(element - 1, l.firstElement);
-         e <= std::min(element + 1, l.firstElement + l.elementCount - 1); ++e) {
-      mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node1)] = 1;
-      mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node2)] = 1;
-    }
-  };
   // Every contact point and line-to-line sample comes from a candidate pair (findContacts' narrow phase).
-  for (const CandidatePair& cp : m_candidates) {
-    markAround(m_proxies[static_cast<std::size_t>(cp.first)].element);
-    markAround(m_proxies[static_cast<std::size_t>(cp.second)].element);
-  }
+  m_search.markLoadedNodes(mark);
   return true;
-}
-
-void LineContact::buildProxies(const model::State& state) {
-  m_proxies.clear();
-  for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
-    if (!m_lineEnabled[l]) continue;
-    const model::Line& line = m_model->lines()[l];
-    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e) {
-      const model::LineElement& el = m_model->elements()[e];
-      m_proxies.push_back({l, e, state.position[el.node1], state.position[el.node2], m_radius[e]});
-    }
-  }
 }
 
 void LineContact::findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial) {
@@ -284,13 +181,13 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
   };
   const auto atSegmentEnd = [](double w) { return w <= 0.0 || w >= 1.0; };
   std::vector<Raw> raw;
-  for (const CandidatePair& c : m_candidates) {
+  for (const CandidatePair& c : m_search.candidates()) {
     int pa = c.first, pb = c.second;
-    if (m_proxies[pa].line > m_proxies[pb].line ||
-        (m_proxies[pa].line == m_proxies[pb].line && m_proxies[pa].element > m_proxies[pb].element))
+    if (m_search.proxies()[pa].line > m_search.proxies()[pb].line ||
+        (m_search.proxies()[pa].line == m_search.proxies()[pb].line && m_search.proxies()[pa].element > m_search.proxies()[pb].element))
       std::swap(pa, pb);
-    const model::LineElement& ea = elements[m_proxies[pa].element];
-    const model::LineElement& eb = elements[m_proxies[pb].element];
+    const model::LineElement& ea = elements[m_search.proxies()[pa].element];
+    const model::LineElement& eb = elements[m_search.proxies()[pb].element];
     const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
     const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
     Raw r;
@@ -300,24 +197,24 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     // Candidates a little beyond touching (for a beam, the smooth centreline lies off the chord by up
     // to about (kink angle) L / 8 at a kinked node: a quarter of the element length bounds that) and
     // every pair of the active set.
-    r.smoothA = hasSmoothCentreline(*m_model, m_proxies[pa].element);
-    r.smoothB = hasSmoothCentreline(*m_model, m_proxies[pb].element);
-    const double radii = m_proxies[pa].radius + m_proxies[pb].radius;
+    r.smoothA = hasSmoothCentreline(*m_model, m_search.proxies()[pa].element);
+    r.smoothB = hasSmoothCentreline(*m_model, m_search.proxies()[pb].element);
+    const double radii = m_search.proxies()[pa].radius + m_search.proxies()[pb].radius;
     const double bulge = 0.25 * std::max(r.smoothA ? ea.restLength : 0.0, r.smoothB ? eb.restLength : 0.0);
-    const bool sticky = inNeighbourhood({m_proxies[pa].element, m_proxies[pb].element}, m_sticky);
+    const bool sticky = inNeighbourhood({m_search.proxies()[pa].element, m_search.proxies()[pb].element}, m_sticky);
     if (!sticky && r.d.distance >= (1.0 + 0.05) * radii + bulge) continue;
     // Point-to-point weight of the ABC blending (docs/theory.md 9.3): by the crossing angle of the two
     // elements; 1 for an end contact that the line-to-line part cannot see (both closest points at
     // segment ends, one of them a free line end: lines meeting end to end or end to node).
     r.endContact = atSegmentEnd(r.d.s) && atSegmentEnd(r.d.t) &&
-                   (atLineEnd(m_proxies[pa].element, r.d.s) || atLineEnd(m_proxies[pb].element, r.d.t));
+                   (atLineEnd(m_search.proxies()[pa].element, r.d.s) || atLineEnd(m_search.proxies()[pb].element, r.d.t));
     r.weight =
         r.endContact ? 1.0 : pointToPointWeight(crossingAngle(a0, a1, b0, b1), kBlendLower, kBlendUpper);
     r.distance = r.d.distance;
     if (r.weight > 0.0 && (r.smoothA || r.smoothB)) {
       // The point-to-point part is measured between the smooth centrelines (SmoothCentreline.hpp): a
       // polyline corner would act like a sphere and make Newton cycle between the elements at a node.
-      r.curve = centrelineDistance(*m_model, state.position, m_proxies[pa].element, m_proxies[pb].element,
+      r.curve = centrelineDistance(*m_model, state.position, m_search.proxies()[pa].element, m_search.proxies()[pb].element,
                                    r.d.s, r.d.t);
       r.distance = r.curve.distance;
     }
@@ -325,7 +222,7 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
   }
   if (m_debug)
     std::cerr << fmt::format("      findContacts: {} candidates, {} raw, trial {}, sticky {}\n",
-                             m_candidates.size(), raw.size(), trial, m_sticky.size());
+                             m_search.candidates().size(), raw.size(), trial, m_sticky.size());
   // The polyline closest points of two cables (segment parameters; free when inside the segment).
   for (Raw& r : raw) {
     if (r.weight <= 0.0 || r.smoothA || r.smoothB) continue;
@@ -333,8 +230,8 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     r.curve.t = r.d.t;
     r.curve.sFree = !atSegmentEnd(r.d.s);
     r.curve.tFree = !atSegmentEnd(r.d.t);
-    r.curve.a = centrelineStencil(*m_model, m_proxies[r.proxyA].element, r.d.s);
-    r.curve.b = centrelineStencil(*m_model, m_proxies[r.proxyB].element, r.d.t);
+    r.curve.a = centrelineStencil(*m_model, m_search.proxies()[r.proxyA].element, r.d.s);
+    r.curve.b = centrelineStencil(*m_model, m_search.proxies()[r.proxyB].element, r.d.t);
     r.curve.pointA = r.d.closest0;
     r.curve.pointB = r.d.closest1;
     r.curve.distance = r.distance = r.d.distance;
@@ -352,15 +249,15 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     std::vector<int> snapA(raw.size(), -1), snapB(raw.size(), -1);  // -1: keep; 0 / 1: move to that end
     for (std::size_t i = 0; i < raw.size(); ++i) {
       if (raw[i].weight <= 0.0) continue;
-      const SegmentProxy& a = m_proxies[raw[i].proxyA];
-      const SegmentProxy& b = m_proxies[raw[i].proxyB];
+      const SegmentProxy& a = m_search.proxies()[raw[i].proxyA];
+      const SegmentProxy& b = m_search.proxies()[raw[i].proxyB];
       const double radii = a.radius + b.radius;
       if (raw[i].distance >= 1.05 * radii) continue;
       const CentrelineDistance& ci = raw[i].curve;
       for (std::size_t j = 0; j < raw.size(); ++j) {
         if (j == i || raw[j].weight <= 0.0) continue;
-        const SegmentProxy& a2 = m_proxies[raw[j].proxyA];
-        const SegmentProxy& b2 = m_proxies[raw[j].proxyB];
+        const SegmentProxy& a2 = m_search.proxies()[raw[j].proxyA];
+        const SegmentProxy& b2 = m_search.proxies()[raw[j].proxyB];
         if (a2.line != a.line || b2.line != b.line) continue;
         if (raw[j].distance >= 1.05 * (a2.radius + b2.radius)) continue;
         const CentrelineDistance& cj = raw[j].curve;
@@ -382,7 +279,7 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     }
     for (std::size_t i = 0; i < raw.size(); ++i) {
       if (snapA[i] < 0 && snapB[i] < 0) continue;
-      const int elementA = m_proxies[raw[i].proxyA].element, elementB = m_proxies[raw[i].proxyB].element;
+      const int elementA = m_search.proxies()[raw[i].proxyA].element, elementB = m_search.proxies()[raw[i].proxyB].element;
       const CentrelineDistance& old = raw[i].curve;
       const double s0 = snapA[i] >= 0 ? snapA[i] : old.s, t0 = snapB[i] >= 0 ? snapB[i] : old.t;
       raw[i].curve = centrelineDistance(*m_model, state.position, elementA, elementB, s0, t0, snapA[i] >= 0,
@@ -414,15 +311,15 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
   };
   m_trial.clear();
   for (std::size_t i = 0; i < raw.size(); ++i) {
-    const SegmentProxy& a = m_proxies[raw[i].proxyA];
-    const SegmentProxy& b = m_proxies[raw[i].proxyB];
+    const SegmentProxy& a = m_search.proxies()[raw[i].proxyA];
+    const SegmentProxy& b = m_search.proxies()[raw[i].proxyB];
     if (raw[i].weight <= 0.0 || heldAtOverlap(raw[i])) continue;
     bool keep = true;
     const double same = 0.01 * (a.radius + b.radius);
     for (std::size_t j = 0; j < raw.size() && keep; ++j) {
       if (j == i || raw[j].weight <= 0.0 || heldAtOverlap(raw[j])) continue;
-      const SegmentProxy& a2 = m_proxies[raw[j].proxyA];
-      const SegmentProxy& b2 = m_proxies[raw[j].proxyB];
+      const SegmentProxy& a2 = m_search.proxies()[raw[j].proxyA];
+      const SegmentProxy& b2 = m_search.proxies()[raw[j].proxyB];
       if (a2.line != a.line || b2.line != b.line) continue;
       if (std::abs(a2.element - a.element) > 1 || std::abs(b2.element - b.element) > 1) continue;
       const bool before = std::make_tuple(raw[j].distance, a2.element, b2.element) <
@@ -643,9 +540,9 @@ double LineContact::limitStep(const model::State& state) {
   m_margin = broadPhaseMargin(state, true);
   refreshCandidates(state);
   m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // force a refresh at the next assembly
-  for (const CandidatePair& cp : m_candidates) {
-    const SegmentProxy& a = m_proxies[cp.first];
-    const SegmentProxy& b = m_proxies[cp.second];
+  for (const CandidatePair& cp : m_search.candidates()) {
+    const SegmentProxy& a = m_search.proxies()[cp.first];
+    const SegmentProxy& b = m_search.proxies()[cp.second];
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
     const double radii = a.radius + b.radius;
     double gap = d.distance - radii;
@@ -752,9 +649,9 @@ void LineContact::applyImpulse(model::State& state, const ContactPoint& c, doubl
 
 std::string LineContact::rejectStep(const model::State& before, const model::State& after) {
   const auto& elements = m_model->elements();
-  for (const CandidatePair& cp : m_candidates) {
-    const SegmentProxy& a = m_proxies[cp.first];
-    const SegmentProxy& b = m_proxies[cp.second];
+  for (const CandidatePair& cp : m_search.candidates()) {
+    const SegmentProxy& a = m_search.proxies()[cp.first];
+    const SegmentProxy& b = m_search.proxies()[cp.second];
     const model::LineElement& ea = elements[a.element];
     const model::LineElement& eb = elements[b.element];
     const geometry::SegmentDistanceResult d0 =

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "tangle/contact/BroadPhase.hpp"
+#include "tangle/contact/ContactCandidates.hpp"
 #include "tangle/contact/ContactEvents.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
@@ -153,7 +154,7 @@ class LineContact final : public solver::LoadContributor {
   const std::vector<FrictionPatch>& frictionPatches() const { return m_patches; }
   /// Whether element eA (of its line) and eB may touch (not excluded by a pair, a zone or a shared
   /// connection point).
-  bool elementPairAllowed(int eA, int eB) const;
+  bool elementPairAllowed(int eA, int eB) const { return m_search.elementPairAllowed(eA, eB); }
   /// Total contact force on line A from line B [N] at the last assembly, summed over all parts.
   Vec3 pairForce(int lineA, int lineB) const;
 
@@ -193,9 +194,9 @@ class LineContact final : public solver::LoadContributor {
   /// Damping ratio of the dashpot [-] for the requested restitution.
   double dampingRatio() const { return m_zeta; }
   /// Whether two lines may touch.
-  bool pairAllowed(int lineA, int lineB) const;
+  bool pairAllowed(int lineA, int lineB) const { return m_search.pairAllowed(lineA, lineB); }
   /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order.
-  std::vector<std::array<int, 2>> allowedPairs() const;
+  std::vector<std::array<int, 2>> allowedPairs() const { return m_search.allowedPairs(); }
   /// Minimum clearance between two lines at a state: (clearance [m], arcA [m], arcB [m]). The clearance is
   /// the gap between the surfaces (negative in contact; beams near contact on their smooth centrelines, as
   /// contact measures them); +inf when farther than the clearance margin.
@@ -205,14 +206,10 @@ class LineContact final : public solver::LoadContributor {
  private:
   /// Finds the contact points at `state`; `trial` (Newton iterations) lets new contacts join the active set.
   void findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial);
-  void buildProxies(const model::State& state);
   /// Broad-phase margin [m] at a state: the largest radius plus what a node can move in 4 nominal steps.
   double broadPhaseMargin(const model::State& state, bool dynamic) const;
   /// Rebuilds the proxies and the candidate pairs with the current margin.
-  void refreshCandidates(const model::State& state);
-  /// Rebuilds the proxies at `state` and returns the element pairs whose boxes come within `margin` [m]
-  /// of each other and may touch (exclusion zones applied). m_candidates then refer to stale proxies.
-  std::vector<CandidatePair> pairsWithin(const model::State& state, double margin);
+  void refreshCandidates(const model::State& state) { m_search.refresh(state, m_margin); }
   void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;
   double lumpedMass(int element, double w) const;
   /// Structural mass of an element [kg] (+inf when both its nodes are held).
@@ -266,7 +263,6 @@ class LineContact final : public solver::LoadContributor {
                  const std::map<std::pair<int, int>, FrictionAnchor>& anchors,
                  std::map<std::pair<int, int>, FrictionAnchor>& pending, FrictionPatch& patch, VecX& force,
                  solver::SystemMatrix* matrix) const;
-  void buildExclusions();
   /// Whether elements A and B passed through each other between two states, from their closest points
   /// before and after (StaticContact.cpp).
   bool passedThrough(int elementA, int elementB, const geometry::SegmentDistanceResult& before,
@@ -279,19 +275,10 @@ class LineContact final : public solver::LoadContributor {
   model::ContactSpec m_spec;
   double m_timeStep;
   double m_zeta;
-  std::vector<bool> m_lineEnabled;
-  std::vector<std::vector<bool>> m_allowed;
   std::vector<double> m_lineStiffness;      // automatic stiffness per line [N/m]
   std::vector<double> m_lineMassWithAdded;  // structural + attachment + normal added mass per line, +inf if held [kg]
   std::vector<double> m_radius;             // contact radius per element [m]
-  double m_maxRadius = 0.0;                 // largest of m_radius [m]
-  BroadPhase m_broadPhase;
-  std::vector<SegmentProxy> m_proxies;
-  std::vector<CandidatePair> m_candidates;
-  /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] of the proxies at m_verletProxies.
-  std::vector<CandidatePair> m_verletPairs;
-  std::vector<SegmentProxy> m_verletProxies;
-  double m_verletMargin = -1.0;
+  ContactCandidates m_search;               // which element pairs may touch and are close
   double m_candidateTime = std::numeric_limits<double>::quiet_NaN();
   double m_margin = 0.0;
   std::vector<ContactPoint> m_trial;
@@ -309,8 +296,6 @@ class LineContact final : public solver::LoadContributor {
       m_pendingAnchors;  // anchors of patches new in this step / solve
   std::map<std::pair<int, int>, FrictionAnchor> m_pointAnchors;         // point contacts (statics), committed
   std::map<std::pair<int, int>, FrictionAnchor> m_pendingPointAnchors;  // and new in this solve
-  std::map<std::pair<int, int>, std::vector<std::array<double, 4>>>
-      m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
   /// Positions at the last committed state (statics: its start or last converged increment; dynamics: the
   /// last accepted step). Contact normals point to the side the lines were on there (findContacts).
   std::vector<Vec3> m_reference;

@@ -67,13 +67,13 @@ std::pair<int, double> LineContact::pointAtArc(int line, double arc) const {
 void LineContact::findLineSamples(const model::State& state, bool dynamic) {
   m_samples.clear();
   const auto& elements = m_model->elements();
-  for (const CandidatePair& cp : m_candidates) {
+  for (const CandidatePair& cp : m_search.candidates()) {
     int pa = cp.first, pb = cp.second;
-    if (m_proxies[pa].line > m_proxies[pb].line ||
-        (m_proxies[pa].line == m_proxies[pb].line && m_proxies[pa].element > m_proxies[pb].element))
+    if (m_search.proxies()[pa].line > m_search.proxies()[pb].line ||
+        (m_search.proxies()[pa].line == m_search.proxies()[pb].line && m_search.proxies()[pa].element > m_search.proxies()[pb].element))
       std::swap(pa, pb);
-    const SegmentProxy& A = m_proxies[pa];
-    const SegmentProxy& B = m_proxies[pb];
+    const SegmentProxy& A = m_search.proxies()[pa];
+    const SegmentProxy& B = m_search.proxies()[pb];
     const model::LineElement& ea = elements[A.element];
     const model::LineElement& eb = elements[B.element];
     const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];

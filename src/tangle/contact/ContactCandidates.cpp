@@ -1,0 +1,210 @@
+#include "tangle/contact/ContactCandidates.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "tangle/geometry/SegmentDistance.hpp"
+
+namespace tangle::contact {
+
+ContactCandidates::ContactCandidates(const model::Model& model, const model::ContactSpec& spec,
+                                     std::vector<double> radius)
+    : m_model(&model), m_spec(spec), m_radius(std::move(radius)) {
+  const int nLines = static_cast<int>(model.lines().size());
+  m_lineEnabled.resize(nLines);
+  for (int l = 0; l < nLines; ++l) m_lineEnabled[l] = model.lines()[l].spec->contact;
+  for (const double r : m_radius) m_maxRadius = std::max(m_maxRadius, r);
+  m_allowed.assign(nLines, std::vector<bool>(nLines, false));
+  if (spec.pairs.empty()) {
+    for (int a = 0; a < nLines; ++a)
+      for (int b = 0; b < nLines; ++b)
+        m_allowed[a][b] = m_lineEnabled[a] && m_lineEnabled[b] && (a != b || spec.selfContact);
+  } else {
+    auto index = [&](const std::string& name) {
+      for (int l = 0; l < nLines; ++l)
+        if (model.lines()[l].name == name) return l;
+      return -1;
+    };
+    for (const auto& [first, second] : spec.pairs) {
+      const int a = index(first), b = index(second);
+      if (a < 0 || b < 0) continue;  // the reader has already rejected unknown names
+      m_allowed[a][b] = m_allowed[b][a] = true;
+    }
+  }
+  buildExclusions();
+  BroadPhaseOptions options;
+  options.selfContact = spec.selfContact;
+  options.selfContactSkip = 1;
+  options.linePairFilter = [this](int a, int b) { return pairAllowed(a, b); };
+  m_broadPhase = BroadPhase(options);
+}
+
+std::vector<std::array<int, 2>> ContactCandidates::allowedPairs() const {
+  std::vector<std::array<int, 2>> pairs;
+  const int n = static_cast<int>(m_allowed.size());
+  for (int a = 0; a < n; ++a)
+    for (int b = a; b < n; ++b)
+      if (pairAllowed(a, b)) pairs.push_back({a, b});
+  return pairs;
+}
+
+std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& state, double margin) {
+  buildProxies(state);
+  // Verlet list (skin): the broad phase runs with a margin larger than asked for, and its pairs serve later
+  // calls while no segment end has moved more than half the extra margin since. A box of margin m now lies
+  // inside the box of margin m + 2 delta at the earlier positions when no end has moved more than delta,
+  // so the earlier list holds every pair overlapping now; the box test below keeps exactly those, in the
+  // broad phase's order: the same pairs as a fresh search. (The search was 4.5 % of the drilling-riser run,
+  // twice per step.)
+  bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
+  if (reuse) {
+    double moved = 0.0;
+    for (std::size_t i = 0; i < m_proxies.size() && reuse; ++i) {
+      moved = std::max({moved, (m_proxies[i].a - m_verletProxies[i].a).norm(),
+                        (m_proxies[i].b - m_verletProxies[i].b).norm()});
+      // A non-finite position goes to the broad phase, which reports it.
+      reuse =
+          margin + 2.0 * moved <= m_verletMargin && m_proxies[i].a.allFinite() && m_proxies[i].b.allFinite();
+    }
+  }
+  if (!reuse) {
+    BroadPhaseOptions options = m_broadPhase.options();
+    options.margin = 2.0 * margin;  // skin: the extra margin
+    m_verletMargin = options.margin;
+    m_verletProxies = m_proxies;
+    m_verletPairs.clear();
+    BroadPhase(options).findPairs(m_proxies, m_verletPairs);
+    if (!m_zones.empty())
+      m_verletPairs.erase(std::remove_if(m_verletPairs.begin(), m_verletPairs.end(),
+                                         [&](const CandidatePair& c) {
+                                           return !elementPairAllowed(m_proxies[c.first].element,
+                                                                      m_proxies[c.second].element);
+                                         }),
+                          m_verletPairs.end());
+  }
+  std::vector<CandidatePair> pairs;
+  for (const CandidatePair& c : m_verletPairs)
+    if (boxesOverlap(proxyBox(m_proxies[c.first], margin), proxyBox(m_proxies[c.second], margin)))
+      pairs.push_back(c);
+  return pairs;
+}
+
+void ContactCandidates::markLoadedNodes(std::vector<char>& mark) const {
+  const auto& elements = m_model->elements();
+  const auto markAround = [&](int element) {
+    const int line = m_model->lineOfNode(elements[static_cast<std::size_t>(element)].node1);
+    const model::Line& l = m_model->lines()[static_cast<std::size_t>(line)];
+    for (int e = std::max(element - 1, l.firstElement);
+         e <= std::min(element + 1, l.firstElement + l.elementCount - 1); ++e) {
+      mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node1)] = 1;
+      mark[static_cast<std::size_t>(elements[static_cast<std::size_t>(e)].node2)] = 1;
+    }
+  };
+  // Every contact point and line-to-line sample comes from a candidate pair (findContacts' narrow phase).
+  for (const CandidatePair& cp : m_candidates) {
+    markAround(m_proxies[static_cast<std::size_t>(cp.first)].element);
+    markAround(m_proxies[static_cast<std::size_t>(cp.second)].element);
+  }
+}
+
+void ContactCandidates::buildProxies(const model::State& state) {
+  m_proxies.clear();
+  for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
+    if (!m_lineEnabled[l]) continue;
+    const model::Line& line = m_model->lines()[l];
+    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e) {
+      const model::LineElement& el = m_model->elements()[e];
+      m_proxies.push_back({l, e, state.position[el.node1], state.position[el.node2], m_radius[e]});
+    }
+  }
+}
+
+void ContactCandidates::buildExclusions() {
+  const int nLines = static_cast<int>(m_model->lines().size());
+  auto index = [&](const std::string& name) {
+    for (int l = 0; l < nLines; ++l)
+      if (m_model->lines()[l].name == name) return l;
+    return -1;
+  };
+  for (const auto& [first, second] : m_spec.exclude) {
+    const int a = index(first), b = index(second);
+    if (a >= 0 && b >= 0) m_allowed[a][b] = m_allowed[b][a] = false;
+  }
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  for (const model::ContactSpec::ExclusionZone& z : m_spec.exclusionZones) {
+    const int l = index(z.line);
+    const int o = z.other.empty() ? -1 : index(z.other);
+    if (l < 0) continue;
+    m_zones[{l, o}].push_back({z.from, z.to, -inf, inf});
+  }
+  if (!m_spec.excludeConnections) return;
+  // Shared connection points: two line ends on the same vessel, or two held ends, closer than a few
+  // radii sums (fairlead groups, a hose and a pipe at one manifold). Along each line, the length from
+  // that end over which the lines are within twice their radii in the initial shape, plus one element,
+  // is excluded for that pair (the lines touch there by construction, not by a clash).
+  const model::State initial = m_model->initialState();
+  const auto& elements = m_model->elements();
+  for (int a = 0; a < nLines; ++a)
+    for (int b = a + 1; b < nLines; ++b) {
+      if (!m_allowed[a][b]) continue;
+      const model::Line& la = m_model->lines()[a];
+      const model::Line& lb = m_model->lines()[b];
+      const double radii = m_radius[la.firstElement] + m_radius[lb.firstElement];
+      for (int endA = 0; endA < 2; ++endA)
+        for (int endB = 0; endB < 2; ++endB) {
+          const model::EndSpec& sa = endA == 0 ? la.spec->endA : la.spec->endB;
+          const model::EndSpec& sb = endB == 0 ? lb.spec->endA : lb.spec->endB;
+          const int na = endA == 0 ? la.firstNode : la.lastNode();
+          const int nb = endB == 0 ? lb.firstNode : lb.lastNode();
+          const bool sameVessel = sa.kind == model::EndKind::Vessel && sb.kind == model::EndKind::Vessel && sa.vessel == sb.vessel;
+          const bool held = sa.kind != model::EndKind::Free && sb.kind != model::EndKind::Free;
+          if (!(sameVessel || held)) continue;
+          if ((initial.position[na] - initial.position[nb]).norm() > 4.0 * radii) continue;
+          // Length along each line within 2 radii of the other line.
+          auto reach = [&](const model::Line& l, int end, const model::Line& other) {
+            double arc = 0.0;
+            for (int k = 0; k < l.elementCount; ++k) {
+              const int e = end == 0 ? l.firstElement + k : l.firstElement + l.elementCount - 1 - k;
+              const model::LineElement& el = elements[e];
+              double best = inf;
+              for (int j = 0; j < other.elementCount; ++j) {
+                const model::LineElement& ob = elements[other.firstElement + j];
+                best = std::min(best, geometry::segmentDistance(initial.position[el.node1], initial.position[el.node2],
+                                                                initial.position[ob.node1], initial.position[ob.node2])
+                                          .distance);
+              }
+              arc += el.restLength;
+              if (best > 2.0 * radii) break;
+            }
+            return std::min(arc, l.length);  // includes one element beyond the last close one
+          };
+          const double ra = reach(la, endA, lb), rb = reach(lb, endB, la);
+          const std::array<double, 4> zone{endA == 0 ? 0.0 : la.length - ra, endA == 0 ? ra : la.length,
+                                           endB == 0 ? 0.0 : lb.length - rb, endB == 0 ? rb : lb.length};
+          m_zones[{a, b}].push_back(zone);
+        }
+    }
+}
+
+bool ContactCandidates::elementPairAllowed(int eA, int eB) const {
+  if (m_zones.empty()) return true;
+  const auto& elements = m_model->elements();
+  const int la = elements[eA].line, lb = elements[eB].line;
+  const model::Line& A = m_model->lines()[la];
+  const model::Line& B = m_model->lines()[lb];
+  const double a0 = A.arcLength[eA - A.firstElement], a1 = A.arcLength[eA - A.firstElement + 1];
+  const double b0 = B.arcLength[eB - B.firstElement], b1 = B.arcLength[eB - B.firstElement + 1];
+  auto overlaps = [](double lo, double hi, double from, double to) { return hi > from && lo < to; };
+  auto test = [&](int l, int o, double x0, double x1, double y0, double y1) {
+    const auto it = m_zones.find({l, o});
+    if (it == m_zones.end()) return false;
+    for (const auto& z : it->second)
+      if (overlaps(x0, x1, z[0], z[1]) && overlaps(y0, y1, z[2], z[3])) return true;
+    return false;
+  };
+  return !(test(la, lb, a0, a1, b0, b1) || test(lb, la, b0, b1, a0, a1) || test(la, -1, a0, a1, b0, b1) ||
+           test(lb, -1, b0, b1, a0, a1));
+}
+
+}  // namespace tangle::contact

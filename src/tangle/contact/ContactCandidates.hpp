@@ -1,0 +1,69 @@
+#pragma once
+/// @file ContactCandidates.hpp
+/// Which element pairs may touch, and which of them are close: the rules (contact.pairs, self-contact,
+/// exclusions, exclusion zones, shared connection points) and the broad phase with its Verlet list. The
+/// contact model (LineContact) asks it for candidate pairs and runs the narrow phase on them.
+
+#include <array>
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "tangle/contact/BroadPhase.hpp"
+#include "tangle/model/Model.hpp"
+
+namespace tangle::contact {
+
+/// The candidate element pairs of the contact search.
+class ContactCandidates {
+ public:
+  /// @param radius contact radius of every element of the model [m]
+  ContactCandidates(const model::Model& model, const model::ContactSpec& spec, std::vector<double> radius);
+  ContactCandidates(const ContactCandidates&) = delete;  // the broad phase's filter points at this object
+  ContactCandidates& operator=(const ContactCandidates&) = delete;
+
+  /// Whether two lines may touch.
+  bool pairAllowed(int lineA, int lineB) const { return m_allowed[lineA][lineB]; }
+  /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order.
+  std::vector<std::array<int, 2>> allowedPairs() const;
+  /// Whether element eA (of its line) and eB may touch (not excluded by a pair, a zone or a shared
+  /// connection point).
+  bool elementPairAllowed(int eA, int eB) const;
+
+  /// Rebuilds the proxies at `state` and returns the element pairs whose boxes come within `margin` [m]
+  /// of each other and may touch (exclusion zones applied). candidates() then refer to stale proxies.
+  std::vector<CandidatePair> pairsWithin(const model::State& state, double margin);
+  /// candidates() = pairsWithin(state, margin).
+  void refresh(const model::State& state, double margin) { m_candidates = pairsWithin(state, margin); }
+  /// The candidate pairs of the last refresh (indices into proxies()).
+  const std::vector<CandidatePair>& candidates() const { return m_candidates; }
+  /// The segments of the contact-enabled lines at the last pairsWithin / refresh.
+  const std::vector<SegmentProxy>& proxies() const { return m_proxies; }
+  /// Largest contact radius of the model [m].
+  double maxRadius() const { return m_maxRadius; }
+  /// Sets mark[node] = 1 for the nodes of every candidate element and of its neighbours along its line
+  /// (the smooth centreline's stencils reach one node further).
+  void markLoadedNodes(std::vector<char>& mark) const;
+
+ private:
+  void buildExclusions();
+  void buildProxies(const model::State& state);
+
+  const model::Model* m_model;
+  model::ContactSpec m_spec;
+  std::vector<bool> m_lineEnabled;
+  std::vector<std::vector<bool>> m_allowed;
+  std::vector<double> m_radius;  // contact radius per element [m]
+  double m_maxRadius = 0.0;      // largest of m_radius [m]
+  std::map<std::pair<int, int>, std::vector<std::array<double, 4>>>
+      m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
+  BroadPhase m_broadPhase;
+  std::vector<SegmentProxy> m_proxies;
+  std::vector<CandidatePair> m_candidates;
+  /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] of the proxies at m_verletProxies.
+  std::vector<CandidatePair> m_verletPairs;
+  std::vector<SegmentProxy> m_verletProxies;
+  double m_verletMargin = -1.0;
+};
+
+}  // namespace tangle::contact
