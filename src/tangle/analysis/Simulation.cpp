@@ -269,7 +269,7 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   // The force is read at the line ends only (the support reactions). Where the loads allow parts, the
   // ends and their neighbours are assembled alone: Assembler::assemblePart gives those entries bit for bit
   // as a whole assembly does (the same terms in the same order). A whole assembly at every output time
-  // was 2 % of the mooring example's solver thread. Not with line contact, whose whole assemblies also
+  // is avoided (docs/performance.md). Not with line contact, whose whole assemblies also
   // gather its candidates, nor where selectPart refuses (an end held by a vessel).
   if (m_snapshotEnds.empty()) {  // the model's lines do not change: gathered at the first call
     for (const model::Line& line : m_model->lines()) {

@@ -42,8 +42,7 @@ class Simulation {
   /// The same results without the support reactions (endForceA/B are zero): tensions, moments,
   /// curvatures and end tensions come from the elements alone, so no force assembly is needed. For
   /// per-step work such as range graphs, where a full assembly per step would be wasted. Neither are the
-  /// node rotations and the touchdown point (left zero and -1: no range graph uses them; the rotations'
-  /// logarithms were 1.5 % of the drilling-riser run). The reference is to a buffer of this Simulation,
+  /// node rotations and the touchdown point (left zero and -1: no range graph uses them; docs/performance.md). The reference is to a buffer of this Simulation,
   /// valid until the next call (no allocation per step).
   const std::vector<solver::LineSnapshot>& sectionSnapshot() const;
   /// Runs the dynamic analysis from the current state (the static equilibrium); `observer` gets every

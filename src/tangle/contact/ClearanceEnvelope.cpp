@@ -82,7 +82,7 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   // the best distance so far is skipped. The minimum is exactly the brute-force one (same expression on the
   // segments that can attain it). The segment nearest at the previous call (the lines move little between
   // steps) gives a first best distance close to the final one, so nearly every block is skipped on one
-  // squared distance. The brute-force search was 30 % of the drilling-riser run.
+  // squared distance. The brute-force search was the run's largest cost (docs/performance.md).
   constexpr int kBlock = 8;
   const int segments = b.nodeCount - 1;
   const int blocks = (segments + kBlock - 1) / kBlock;

@@ -55,8 +55,7 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
   // calls while no segment end has moved more than half the extra margin since. A box of margin m now lies
   // inside the box of margin m + 2 delta at the earlier positions when no end has moved more than delta,
   // so the earlier list holds every pair overlapping now; the box test below keeps exactly those, in the
-  // broad phase's order: the same pairs as a fresh search. (The search was 4.5 % of the drilling-riser run,
-  // twice per step.)
+  // broad phase's order: the same pairs as a fresh search. (The search runs twice per step: docs/performance.md.)
   bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
   if (reuse) {
     double moved = 0.0;

@@ -365,8 +365,8 @@ void CorotationalBeam::compute(const Vec3& x1, const Mat3& q1, const Vec3& x2, c
   // The closed-form force in first-order jets of the energy's 9 variables: its derivative J. By the
   // Baker-Campbell-Hausdorff formula J = H + (skew terms in the moments), so the Hessian H (the tangent) is
   // the symmetric part of J (the skew part is -S(M_i)/2 on each node's rotation block; see the header).
-  // A quarter of the work of the energy's second-order jets (referenceTangent), which were 58 % of a
-  // drilling-riser run with a matrix refresh at every step.
+  // A quarter of the work of the energy's second-order jets (referenceTangent), the beam's
+  // largest cost when the matrix is refreshed often (docs/performance.md).
   const Vec3 dv = x2 - x1;
   const V3<ForceJet> d{ForceJet::variable(dv.x(), 0), ForceJet::variable(dv.y(), 1),
                        ForceJet::variable(dv.z(), 2)};

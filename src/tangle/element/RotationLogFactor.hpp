@@ -29,8 +29,8 @@ inline constexpr double kLogSeriesLimit = 0.1;
 inline constexpr int kLogSeriesTerms = 18;
 
 /// The series coefficients a_k = 2^k (k!)^2 / (2k + 1)! (a_0 = 1, a_k = a_{k-1} k / (2k + 1)), computed
-/// once (the recurrence's divisions made the series, evaluated twice per beam element and residual, 7 % of
-/// a riser run).
+/// once (the recurrence's divisions made the series, evaluated twice per beam element and residual, a
+/// visible share of a riser run: docs/performance.md).
 inline constexpr std::array<double, kLogSeriesTerms> kLogSeries = [] {
   std::array<double, kLogSeriesTerms> a{};
   a[0] = 1.0;

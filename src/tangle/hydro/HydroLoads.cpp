@@ -260,7 +260,7 @@ void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const V
   }
   if (!out) return;
   // The inertia force of every assembly (the matrix of few): a loop of its own, without the matrix's
-  // branches (it was 7 % of the mooring example's run).
+  // branches (docs/performance.md).
   double* f = out->data();
   const double* a = acceleration->data();
   forEachIndex(list, elements.size(), [&](std::size_t e) {

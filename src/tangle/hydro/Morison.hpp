@@ -152,7 +152,7 @@ inline MorisonNodeForces morisonNodeForces(const Vec3& x1, const Vec3& x2, const
                                            const FluidKinematics& fluid,
                                            const MorisonCoefficients& coefficients, double wettedFraction) {
   // The formulas of morisonElementLoad arranged for a short dependency chain (the call is latency-bound:
-  // square root, division and square root in a row were 15 % of a mooring run): with the element vector
+  // square root, division and square root in a row; docs/performance.md): with the element vector
   // a = x2 - x1, the normal relative velocity is v_r - (a.v_r / a.a) a and the axial one (a.v_r) / L, so
   // 1 / a.a (a division) and L (a square root) run side by side instead of one after the other.
   const Vec3 axis = x2 - x1;

@@ -2,8 +2,7 @@
 /// @file BackgroundWriter.hpp
 /// Runs output jobs in submission order on one background thread, so that formatting, compressing and
 /// writing the results of an output time overlaps the integration of the next steps (issue 8: the CSV rows
-/// and the deflate compression of results.h5 were 19 % of the mooring example's run on the solver's
-/// thread).
+/// and the deflate compression of results.h5; docs/performance.md).
 ///
 /// Contract: the jobs run one at a time, in order, on the writer's thread; whatever a job touches must not
 /// be touched by the submitting thread until finish() has returned (the caller hands over copies). The
@@ -12,8 +11,7 @@
 /// result it computed) and swallows their errors; call finish() to see them.
 ///
 /// The writer is woken when half the queue's room is filled (or by finish() and the destructor), not at
-/// every job: a wake-up per job was a futex call per output time on the solver's thread (2 % of the mooring
-/// example's run, which records every step).
+/// every job: a wake-up per job was a futex call per output time on the solver's thread (docs/performance.md).
 
 #include <condition_variable>
 #include <cstddef>

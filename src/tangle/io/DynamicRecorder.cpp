@@ -89,8 +89,8 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
     for (std::size_t q = 0; q < m_streams[l].size(); ++q) {
-      // Compiled format strings into one buffer: formatting value by value through fmt::format was 8 % of a
-      // mooring run (format parsing and a string per value).
+      // Compiled format strings into one buffer: formatting value by value through fmt::format parsed a format and
+      // built a string per value (docs/performance.md).
       fmt::memory_buffer row;
       fmt::format_to(std::back_inserter(row), FMT_COMPILE("{:.6f}"), time);
       for (std::size_t i = 0; i < s.arcLength.size(); ++i) {

@@ -24,7 +24,7 @@ constexpr unsigned kDeflateLevel = 1;
 
 /// H5Dwrite of `count` doubles into `dataset`, stored in single precision when `single`. Rounded here:
 /// HDF5 would convert through a type-conversion buffer that it allocates and zeroes (1 MB) on every write
-/// (2 % of the mooring example, which writes a frame per output time).
+/// (docs/performance.md).
 herr_t writeDoubles(hid_t dataset, hid_t memSpace, hid_t fileSpace, const double* data, std::size_t count,
                     bool single) {
   if (!single) return H5Dwrite(dataset, H5T_NATIVE_DOUBLE, memSpace, fileSpace, H5P_DEFAULT, data);

@@ -61,7 +61,7 @@ std::string quote(std::string_view s) {
 
 /// Appends a number with `digits` significant digits (null when not finite). The report's usual precisions
 /// with compiled formats into a stack buffer: a frame's arrays formatted value by value through a parsed
-/// format and a string each were 3 % of the mooring example's run (the same text).
+/// format and a string each cost more for the same text (docs/performance.md).
 void appendSig(std::string& out, double v, int digits) {
   if (!std::isfinite(v)) {
     out += "null";

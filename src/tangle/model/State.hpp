@@ -25,7 +25,7 @@ struct State {
   /// Positions and triads of `from` with the increment applied (as applyIncrement without the
   /// re-orthonormalisation) and its time; velocity and acceleration are left for the caller to set (a Newton
   /// iterate of a time step computes both from the increment: copying them, and every bar node's identity
-  /// triad, per iterate was 2 % of a mooring run).
+  /// triad, per iterate showed in profiles: docs/performance.md).
   /// `from` may be this state.
   void setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement);
   /// This state made equal to `from` (same model): time, positions, velocities, accelerations, and the

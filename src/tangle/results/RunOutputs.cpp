@@ -364,7 +364,7 @@ bool RunOutputs::runDynamics() {
   }
   // The range graphs and the clearance envelope of every step are also accumulated by the writer, from a
   // copy of the positions and triads (all they read): the section forces of every element and the
-  // clearance search were 7 % and 13 % of the drilling-riser run on the solver's thread. Their work space
+  // clearance search are off the solver's thread (docs/performance.md). Their work space
   // below is the writer's alone; the report's frames (this thread) measure clearances with their own
   // envelope object (ClearanceEnvelope keeps a search cache).
   std::vector<solver::LineSnapshot> stepSnapshot;
@@ -375,8 +375,7 @@ bool RunOutputs::runDynamics() {
   // Steps are handed over in batches (one job per kStepsPerJob steps: a job per step cost more in
   // hand-over than it moved off this thread on the mooring example), always before an output time's job.
   // A batch holds its steps' positions (and triads) in one array each, filled in place: a state copied
-  // per step was an allocation here and a release on the writer's thread every step (2 % of the mooring
-  // example's solver thread).
+  // per step was an allocation here and a release on the writer's thread every step (docs/performance.md).
   struct StepBatch {
     std::vector<double> time, dt;
     std::vector<Vec3> positions;  // nodeCount per step, step after step
@@ -394,12 +393,12 @@ bool RunOutputs::runDynamics() {
   constexpr std::size_t kStepsPerJob = 32;
   const auto nodeCount = static_cast<std::size_t>(m.dofs().nodeCount());
   // Triads are read only at nodes with rotations (beams): without any, none is copied (12 bar lines:
-  // 174 kB a step, 4 % of the run).
+  // 174 kB a step; docs/performance.md).
   bool anyRotations = false;
   for (int n = 0; n < m.dofs().nodeCount(); ++n) anyRotations = anyRotations || m.dofs().hasRotations(n);
   // The writer hands every batch it has done back (emptied, its arrays keep their room): a new batch per
   // 32 steps was an allocation of fresh pages, each touched first by the solver's thread (a page fault
-  // per 4 kB: 16 % of the run's page faults).
+  // per 4 kB; docs/performance.md).
   std::mutex spareMutex;
   std::vector<std::shared_ptr<StepBatch>> spareBatches;
   const auto newBatch = [&] {

@@ -29,13 +29,12 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
     submerged[el.line] += w;
     air[el.line] += wAir;
     // Half of the element's weight in air and of its buoyancy when submerged, per node (constants of the
-    // model: the line type's lookups per element and assembly were 2 % of a mooring run).
+    // model: not looked up per element and assembly: docs/performance.md).
     m_halfWeight.push_back(0.5 * wAir);
     m_halfBuoyancy.push_back(0.5 * env.waterDensity * el.type->displacedAreaPerLength() * env.gravity *
                              el.restLength);
     constexpr double eps = std::numeric_limits<double>::epsilon();
-    // Divided by the length (and its square) here, not per element at every step (1 % of the mooring
-    // example's solver thread).
+    // Divided by the length (and its square) here, not per element at every step (docs/performance.md).
     m_roundoff.push_back(
         {16.0 * el.type->axialStiffness * eps / el.restLength,
          el.isBeam() ? 16.0 * el.type->bendingStiffness * eps / (el.restLength * el.restLength) : 0.0,
@@ -201,7 +200,7 @@ void Assembler::assemble(const model::State& state, const AssemblyRequest& reque
                          SystemMatrix* matrix) {
   force.setZero(m_model->dofs().fullDofCount());
   // The matrix is cleared only when it is assembled (an assembly for the out-of-balance alone leaves the
-  // last one as it is: zeroing its values at every iteration was 6 % of the 12-line run).
+  // last one as it is: zeroing its values at every iteration is not free: docs/performance.md).
   SystemMatrix* const assembled = request.wantMatrix ? matrix : nullptr;
   if (assembled) assembled->clear();
   addAll(state, request, force, assembled, nullptr);
@@ -359,7 +358,7 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
       return;
     }
     // Clear of the seabed (most nodes): no reaction to evaluate (its result, force and two 3x3 blocks,
-    // was 4 % of a mooring run to initialise).
+    // cost to initialise: docs/performance.md).
     if (bed.penetration(state.position[n], 0.5 * diameter[n]) <= 0.0) {
       if (staticFriction) m_trialAnchor[n] = Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
       // A zero block keeps the matrix entries in the same order whether or not the node touches, so
@@ -456,7 +455,7 @@ void Assembler::addOwnMass(double mf, SystemMatrix* matrix, const VecX* accelera
   }
   // The nodes' own diagonal masses (m_nodeDiagonalMass: lumped translational mass, rotational inertia). Their
   // inertia force by DOF: for the whole model one pass over every DOF without branches (every residual of a
-  // step; the loop over nodes with its per-node branches was 3.5 % of a mooring run's instructions), a zero
+  // step; the loop over nodes with its per-node branches cost more: docs/performance.md), a zero
   // mass adding +0; for a part, its nodes' DOFs.
   const double* diagonal = m_nodeDiagonalMass.data();
   if (out) {
@@ -507,8 +506,7 @@ bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
   }
   // Marks, then scans in index order (ascending lists without sorting): nodes 1 = of the part, 2 = written
   // only; elements and attachments 1 = of the part. Each scan covers only the index range its marks were
-  // set in (a part is about half a line; the scans of the whole model were 3 % of the mooring example's
-  // solver thread).
+  // set in (a part is about half a line: docs/performance.md).
   m_nodeMark.assign(nodeCount, 0);
   m_elementMark.assign(elements.size(), 0);
   std::size_t nodeLo = nodeCount, nodeHi = 0;  // marked nodes lie in [nodeLo, nodeHi)

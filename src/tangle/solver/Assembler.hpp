@@ -196,8 +196,7 @@ class Assembler {
   // inertia [kg m^2] at a rotation (0 at DOFs the node does not have).
   std::vector<double> m_nodeDiagonalMass;
   // Per element, the constants of nodeRoundoffFloor: 16 EA eps / l and 16 EI eps / l^2 (0 for a bar), the
-  // rest length l and the force resolution 10e-14 EA (the line type's lookups per element and step were
-  // 1.2 % of a mooring run's instructions).
+  // rest length l and the force resolution 10e-14 EA (not looked up per element and step: docs/performance.md).
   struct RoundoffConstants {
     double axialPerLength;           // 16 eps EA / l [N/m]
     double bendingPerLengthSquared;  // 16 eps EI / l^2 [N] (0 for a bar)

@@ -126,7 +126,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const Vec3 a = s.position[i] - s.position[i - 1];
       const Vec3 b = s.position[i + 1] - s.position[i];
       // atan(|a x b| / a.b) where the turn is below 90 degrees: within 2 ulp of atan2 and a third of its
-      // cost (atan2 was 8 % of the writer thread's instructions through the per-step range graphs).
+      // cost (docs/performance.md).
       const double sine = a.cross(b).norm(), cosine = a.dot(b);
       const double angle = cosine > 0.0 ? std::atan(sine / cosine) : std::atan2(sine, cosine);
       return angle / (0.5 * (segmentLength[i - 1] + segmentLength[i]));
@@ -134,11 +134,9 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
     if (!anyBeam) {
       // A cable line (bars only) has no bending moment, torque or rotation (all stay zero) and its
       // curvature is the polyline's: the same values as the general loop below, without its work per node
-      // (this function, which the writer runs at every step for the range graphs, was 19 % of the writer's
-      // instructions on the mooring example).
+      // (the writer runs this function at every step for the range graphs: docs/performance.md).
       for (int i = 0; i < n; ++i) {
-        // x * 0.5 is x / 2 exactly and does not wait on the divider (the division's store took 8 % of this
-        // function's samples).
+        // x * 0.5 is x / 2 exactly and does not wait on the divider (docs/performance.md).
         s.tension[i] = count[i] == 2 ? s.tension[i] * 0.5 : s.tension[i] / count[i];
         if (all && dofs.hasRotations(line.firstNode + i))  // a node with rotations, as in the loop below
           s.rotation[i] = geometry::logMap(state.triad[line.firstNode + i]) * (180.0 / kPi);
@@ -149,8 +147,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
         s.tension[i] /= count[i];
         s.bendingMomentVector[i] /= count[i];
         s.torque[i] /= count[i];
-        // Cable nodes have no rotation: zero without the logarithm (which, with its atan2, was 6 % of a
-        // mooring run through the per-step range graphs).
+        // Cable nodes have no rotation: zero without the logarithm (docs/performance.md).
         if (all && dofs.hasRotations(line.firstNode + i))
           s.rotation[i] = geometry::logMap(state.triad[line.firstNode + i]) * (180.0 / kPi);
         ei[i] /= count[i];

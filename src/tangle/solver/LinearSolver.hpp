@@ -4,7 +4,7 @@
 /// - Banded (dynamics, by choice of the caller): an envelope LDL^T in the equation order (SkylineLdlt),
 ///   used when the envelope is small against the matrix (lines numbered node after node, coupled at their
 ///   ends, through vessels or by a few contacts); one factorisation and solve cost a few passes over the
-///   band (issue 8: the general sparse solve was 10-15 % of a mooring run).
+///   band (issue 8; docs/performance.md).
 /// - General: Eigen's simplicial LDL^T with AMD ordering, for any pattern (and when the banded
 ///   factorisation meets a vanishing pivot). The systems are symmetric apart from friction terms, whose
 ///   non-symmetric part is dropped: Newton then converges linearly instead of quadratically where

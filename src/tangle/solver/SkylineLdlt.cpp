@@ -542,7 +542,7 @@ void SkylineLdlt::solveRange(double* x, int begin, int end) const {
   // the row (unknowns found two or more rows earlier) is summed while that one is still being computed, so
   // the chain from one unknown to the next is a single multiply-add. Written as plain row (or column)
   // sweeps, each unknown waited for the store and reload of the previous one, or for a whole dot product:
-  // the solve was latency-bound, 12 % of a mooring run.
+  // the solve was latency-bound (docs/performance.md).
   // L y = b by rows of L, then z = D^-1 y. (Rows of [begin, end) reach no column before begin; the first
   // row of a block has an empty row, so `previous` is never read across a block boundary.)
   double previous = 0.0;

@@ -11,7 +11,7 @@ double cableSnapStepLimit(const model::Model& model, const model::State& state, 
   if (maxStrainStep <= 0.0) return limit;
   const model::DofMap& dofs = model.dofs();
   // Per step over every bar: the square root and the division only for the few bars that qualify
-  // (lengthening, and within maxStrainStep of their kink); it was 1.3 % of the mooring example's run.
+  // (lengthening, and within maxStrainStep of their kink)(docs/performance.md).
   for (const model::LineElement& el : model.elements()) {
     if (!el.bar) continue;
     const Vec3 chord = state.position[el.node2] - state.position[el.node1];

@@ -19,7 +19,7 @@ using solver::LinearSolver;
 namespace {
 /// max_i |r_i| w_i in four register-held accumulators; NaN if any r_i is NaN (std::max would drop it).
 /// Not inlined: inside GeneralizedAlpha::step the compiler kept an accumulator in a stack slot, and the
-/// loop, waiting on a store and a load per element, was 20 % of that function (1.6 % of a mooring run).
+/// loop, waiting on a store and a load per element, was a fifth of that function (docs/performance.md).
 /// Over entries [0, n) of a (out-of-balance) and b (1 / allowed).
 [[gnu::noinline]] double largestScaled(const double* a, const double* b, Eigen::Index n) {
   double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
@@ -189,7 +189,7 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
   const int nodes = dofs.nodeCount();
   // Where parts never apply (corrections spread over most of the model, or into a vessel's or a contact's
   // nodes: the drilling riser, 259 parts in 57 046 corrections), trying costs a pass over the equations and
-  // the nodes at every correction (4 % of that run): after kFutileTries corrections in a row without a
+  // the nodes at every correction (docs/performance.md): after kFutileTries corrections in a row without a
   // part, the next kPausedTries go whole without trying.
   constexpr int kFutileTries = 64, kPausedTries = 512;
   if (m_partsPaused > 0) {
@@ -210,10 +210,8 @@ bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
     // in one block, so the nodes of a range of equations are those between its first and last equation's.
     // A node's test is formed without branches (whether a correction is negligible does not follow a
     // pattern) over its equations and stored once (an update of a mark per equation waited on the store of
-    // the one before: 2 % of a mooring run).
-    // The equations' tests first, in one pass without branches, then their OR per node (the tests inside the
-    // loop over nodes were 4.8 % of a mooring run's solver thread; this arrangement measured about 1 %
-    // faster).
+    // the one before: docs/performance.md).
+    // The equations' tests first, in one pass without branches, then their OR per node (docs/performance.md).
     m_moved.clear();
     m_equationMoved.resize(static_cast<std::size_t>(neq));
     for (const auto& range : m_activeRanges) {
@@ -325,7 +323,7 @@ int GeneralizedAlpha::solveCorrection(const VecX& r) {
   // coupling the matrix does not hold, e.g. a contact made since it was factorised, is assembled in the
   // residual, and the convergence test stays on every equation). 12 independent mooring lines: the lines
   // converge at different iterations of a step, and the solve of all 7 200 equations at every one of them
-  // was 16 % of the run.
+  // was wasted on the converged ones (docs/performance.md).
   if (!sameBlocks()) residualRatio(r, false);  // the refreshed matrix has other blocks
   m_delta.resize(r.size());
   m_activeBlocks.clear();
@@ -372,7 +370,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   if (sameStep(dt, m_lastStep)) dq += 0.5 * dt * dt * a0;
   // Prescribed DOFs follow their motion exactly. applyPrescribed sets in `target` every entry read below
   // (the held directions' positions and the prescribed triads), so the rest of it is never refreshed: a
-  // copy of the whole state per step was ~1 % of a mooring run.
+  // copy of the whole state per step is avoided (docs/performance.md).
   model::State& target = m_target;
   if (target.position.size() != start.position.size() || target.triad.size() != start.triad.size())
     target = start;
@@ -448,7 +446,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       moveNodes(state, start, dq, dt);
     } else {
       // Every iterate is exp(dtheta) of the step's start triad (orthonormal): one re-orthonormalisation of
-      // the converged state is enough (it was 2-3 per step, ~2 % of a beam-riser run).
+      // the converged state is enough (it was 2-3 per step: docs/performance.md).
       state.setIncremented(start, dofs, dq);
       state.time = t1;
       // Newmark relations for the free DOFs (and any unprescribed constrained DOF: zero motion).
@@ -576,7 +574,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     onPart = applyCorrection(dq, partsAllowed);
   }
   // The norm in N and its node are for the message of a failed step (a converged step's largest
-  // out-of-balance is below the tolerance by definition; the norm per step was ~1 % of a mooring run).
+  // out-of-balance is below the tolerance by definition; the norm per step is not free: docs/performance.md).
   if (haveResidual && (!outcome.converged || m_debug))
     outcome.residual =
         solver::residualNorm(model, r, solver::ResidualIndexing::Equations, &outcome.worstNode);
