@@ -232,6 +232,25 @@ void Assembler::addTerm(Term term, const model::State& state, const AssemblyRequ
   }
 }
 
+namespace {
+/// Places one element's force `f` and tangent `k` (N DOFs, at the global DOFs `map`) into F and H, with the
+/// stiffness-proportional Rayleigh damping beta K v added to the force and (kf + cf beta) K to H: the element
+/// kernel gives f and K once, the assembler gathers, damps and scatters them the same way for every element
+/// type (Chrono's one call for K, C, M of an element).
+template <int N>
+void scatterElement(const int (&map)[N], Eigen::Matrix<double, N, 1>& f, const Eigen::Matrix<double, N, N>& k,
+                    const model::State& state, double beta, const AssemblyRequest& request, VecX& force,
+                    SystemMatrix* matrix) {
+  if (beta > 0.0) {
+    Eigen::Matrix<double, N, 1> v;
+    for (int i = 0; i < N; ++i) v[i] = state.velocity[map[i]];
+    f += beta * k * v;
+  }
+  for (int i = 0; i < N; ++i) force[map[i]] += f[i];
+  if (matrix) matrix->addBlock(map, N, k, request.kf + request.cf * beta);
+}
+}  // namespace
+
 void Assembler::addElements(const model::State& state, const AssemblyRequest& request, VecX& force,
                             SystemMatrix* matrix, const std::vector<int>* elements) {
   const model::DofMap& dofs = m_model->dofs();
@@ -248,8 +267,6 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
               .forceOnNode2(state.position[el.node1], state.position[el.node2], compressionFactor(el));
       force.segment<3>(d1) -= f2;
       force.segment<3>(d2) += f2;
-      if (request.dynamic && el.type->axialDamping > 0.0)
-        addAxialDamping(state, el, d1, d2, request, force, matrix);
     } else if (el.bar) {
       Vec6 f;
       Mat6 k;
@@ -261,15 +278,7 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       bar.compute(state.position[el.node1], state.position[el.node2], f, matrix || beta > 0.0 ? &k : nullptr,
                   compressionFactor(el));
       const int map[6] = {d1, d1 + 1, d1 + 2, d2, d2 + 1, d2 + 2};
-      if (beta > 0.0) {
-        Vec6 v;
-        for (int i = 0; i < 6; ++i) v[i] = state.velocity[map[i]];
-        f += beta * k * v;
-      }
-      for (int i = 0; i < 6; ++i) force[map[i]] += f[i];
-      if (matrix) matrix->addBlock(map, 6, k, request.kf + request.cf * beta);
-      if (request.dynamic && el.type->axialDamping > 0.0)
-        addAxialDamping(state, el, d1, d2, request, force, matrix);
+      scatterElement(map, f, k, state, beta, request, force, matrix);
     } else {
       Vec12 f;
       Mat12 k;
@@ -278,16 +287,9 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       beam.compute(state.position[el.node1], state.triad[el.node1], state.position[el.node2], state.triad[el.node2], f,
                    matrix || beta > 0.0 ? &k : nullptr);
       const int map[12] = {d1, d1 + 1, d1 + 2, d1 + 3, d1 + 4, d1 + 5, d2, d2 + 1, d2 + 2, d2 + 3, d2 + 4, d2 + 5};
-      if (beta > 0.0) {
-        Vec12 v;
-        for (int i = 0; i < 12; ++i) v[i] = state.velocity[map[i]];
-        f += beta * k * v;
-      }
-      for (int i = 0; i < 12; ++i) force[map[i]] += f[i];
-      if (matrix) matrix->addBlock(map, 12, k, request.kf + request.cf * beta);
-      if (request.dynamic && el.type->axialDamping > 0.0)
-        addAxialDamping(state, el, d1, d2, request, force, matrix);
+      scatterElement(map, f, k, state, beta, request, force, matrix);
     }
+    if (request.dynamic && el.type->axialDamping > 0.0) addAxialDamping(state, el, d1, d2, request, force, matrix);
   });
 }
 

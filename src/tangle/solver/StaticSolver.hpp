@@ -91,16 +91,6 @@ class StaticSolver {
                                    double tolerance);
   /// r over the equations from the full-DOF force vector minus the homotopy offset.
   void gatherResidual(const VecX& force, const VecX& offset, VecX& r) const;
-  /// Slack suspended cable elements at `state` (element indices): shorter than unstretched by more than
-  /// 1e-4, neither node on the seabed.
-  std::vector<int> slackSuspendedBars(const model::State& state) const;
-  /// A lateral bulge of the runs of `elements`, in the direction of their distributed load.
-  void bulgeSlackRuns(model::State& state, const std::vector<int>& elements) const;
-  /// Lines held at one end only (the other `free`) hang from the held end in `state`: they leave it along
-  /// its given tangent and bend into the vertical (down for a heavy line, up for a buoyant one) over a
-  /// bending length 3 sqrt(EI / (w L)) (at least two elements, at most a quarter of the line), then run
-  /// straight (along the seabed where they reach it). Returns false when no line qualifies.
-  bool hangFreeLines(model::State& state) const;
   /// Failure message: where, how large, and what the user can change.
   std::string diagnose(const model::State& state, const StaticResult& result, const std::string& why) const;
 
