@@ -28,9 +28,11 @@ import numpy as np
 
 from ._tangle import ConvergenceError, ModelError, __version__  # noqa: F401
 from . import _tangle
+from . import statistics  # noqa: F401  (design statistics: rainflow, S-N damage, extremes)
+from .statistics import rainflow  # noqa: F401
 
 __all__ = ["Model", "StaticResults", "DynamicResults", "ModelError", "ConvergenceError", "Interrupted",
-           "DynamicsFailed", "__version__"]
+           "DynamicsFailed", "__version__", "rainflow", "statistics"]
 
 
 class Interrupted(KeyboardInterrupt):

@@ -308,3 +308,30 @@ def test_a_run_into_a_folder_that_stops_early_raises_and_keeps_its_results(tmp_p
     summary = json.loads((tmp_path / "out" / "dynamics" / "summary.json").read_text())
     assert not summary["completed"] and summary["end_time_s"] < 5.0 and "did not converge" in summary["message"]
     assert (tmp_path / "out" / "results.h5").exists()
+
+
+def test_design_statistics_functions() -> None:
+    # The compiled core's statistics from Python (tests/unit/analysis/FatigueStatisticsTest.cpp holds the
+    # physics checks): ASTM E1049-85 Fig. 6, DNV-RP-C203 curve D by hand, a Gumbel fit by hand.
+    from tangle import statistics as st
+
+    cycles = tangle.rainflow(np.array([-2, 1, -3, 5, -1, 3, -4, 4, -2], dtype=float))
+    counts: dict[float, float] = {}
+    for rng, _, count in cycles:
+        counts[rng] = counts.get(rng, 0.0) + count
+    assert counts == {3.0: 0.5, 4.0: 1.5, 6.0: 0.5, 8.0: 1.0, 9.0: 0.5}
+    curve = st.SnCurve.dnv_d()
+    assert curve.cycles_to_failure(100e6) == pytest.approx(10 ** 6.164, rel=1e-12)
+    assert st.miner_damage(np.array([[100e6, 0.0, 1000.0]]), curve) == pytest.approx(1000 / 10 ** 6.164, rel=1e-12)
+    assert st.chain_damage(np.array([[0.5e6, 0.0, 1e6]]), 1e7) == pytest.approx(1e6 * 0.05 ** 3 / 316, rel=1e-12)
+    g = st.gumbel_fit([10, 12, 11, 13, 14])
+    assert g.mode == pytest.approx(11.288403397945563, abs=1e-12)
+    assert g.quantile(0.9) == pytest.approx(14.062676240597945, abs=1e-12)
+    # A regular wave of unit amplitude: every peak is 1, the storm's most probable maximum too.
+    t = np.arange(0.0, 600.0, 0.05)
+    e = st.extreme_estimate(t, np.sin(2 * np.pi * t / 10.0), storm_duration_s=3 * 3600.0)
+    assert e.upcrossing_period_s == pytest.approx(10.0, rel=1e-3)
+    assert e.peaks == pytest.approx(np.ones_like(e.peaks), abs=1e-3)
+    assert e.rayleigh_sigma == pytest.approx(1 / np.sqrt(2), rel=1e-3)
+    with pytest.raises(ValueError, match="up-crossings"):
+        st.extreme_estimate(t, t)

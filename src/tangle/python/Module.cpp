@@ -3,8 +3,12 @@
 /// builds the user-facing classes on it. See docs/python.md.
 
 #include <pybind11/pybind11.h>
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "tangle/analysis/ExtremeStatistics.hpp"
+#include "tangle/analysis/Rainflow.hpp"
+#include "tangle/analysis/SnCurve.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ModelDocument.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -73,6 +77,70 @@ PYBIND11_MODULE(_tangle, m) {
   m.def("run_to_folder", &tangle::python::runToFolder, py::arg("text"), py::arg("source"), py::arg("folder"),
         py::arg("overwrite"), py::arg("statics_only"), py::arg("report"), py::arg("plots"), py::arg("quiet"),
         "Runs the model into a results folder as `tangle run` does; returns (exit code, status).");
+
+  // Design statistics (issue 32): numpy arrays in, numpy arrays and dicts out; units those of the input.
+  m.def(
+      "rainflow",
+      [](const std::vector<double>& values) {
+        const std::vector<tangle::analysis::RainflowCycle> cycles = tangle::analysis::rainflow(values);
+        py::array_t<double> out({static_cast<py::ssize_t>(cycles.size()), static_cast<py::ssize_t>(3)});
+        auto o = out.mutable_unchecked<2>();
+        for (std::size_t i = 0; i < cycles.size(); ++i) {
+          o(static_cast<py::ssize_t>(i), 0) = cycles[i].range;
+          o(static_cast<py::ssize_t>(i), 1) = cycles[i].mean;
+          o(static_cast<py::ssize_t>(i), 2) = cycles[i].count;
+        }
+        return out;
+      },
+      py::arg("values"),
+      "Rainflow cycles (ASTM E1049-85 5.4.4) of a series: an array [cycle, (range, mean, count)], count 1 or 0.5.");
+  m.def(
+      "sn_cycles_to_failure",
+      [](double range, double m1, double logA1, double m2, double logA2, double kneeCycles, double k,
+         double referenceThickness, double thickness) {
+        tangle::analysis::SnCurve c;
+        c.m1 = m1;
+        c.logA1 = logA1;
+        c.m2 = m2;
+        c.logA2 = logA2;
+        c.kneeCycles = kneeCycles;
+        c.thicknessExponent = k;
+        c.referenceThickness = referenceThickness;
+        c.thickness = thickness;
+        return c.cyclesToFailure(range);
+      },
+      py::arg("range"), py::arg("m1"), py::arg("log_a1"), py::arg("m2"), py::arg("log_a2"), py::arg("knee_cycles"),
+      py::arg("k"), py::arg("reference_thickness"), py::arg("thickness"));
+  m.def(
+      "peaks",
+      [](const std::vector<double>& times, const std::vector<double>& values) {
+        const tangle::analysis::PeakSet p = tangle::analysis::findPeaks(times, values);
+        py::dict d;
+        d["peaks"] = p.peaks;
+        d["mean"] = p.mean;
+        d["standard_deviation"] = p.standardDeviation;
+        d["upcrossing_period_s"] = p.upcrossingPeriod;
+        return d;
+      },
+      py::arg("times"), py::arg("values"));
+  m.def(
+      "fit_peaks",
+      [](const std::vector<double>& peaks, double mean, const std::string& distribution) {
+        tangle::analysis::PeakSet p;
+        p.peaks = peaks;
+        p.mean = mean;
+        const tangle::analysis::PeakFit f = distribution == "weibull" ? tangle::analysis::fitWeibull(p)
+                                                                      : tangle::analysis::fitRayleigh(p);
+        return py::make_tuple(f.scale, f.shape);
+      },
+      py::arg("peaks"), py::arg("mean"), py::arg("distribution"));
+  m.def(
+      "fit_gumbel",
+      [](const std::vector<double>& maxima) {
+        const tangle::analysis::GumbelFit g = tangle::analysis::fitGumbel(maxima);
+        return py::make_tuple(g.mean, g.standardDeviation, g.scale, g.mode);
+      },
+      py::arg("maxima"));
 
   py::class_<tangle::python::PySimulation>(m, "Simulation", "One analysis of one model (compiled core).")
       .def(py::init<const std::string&, const std::string&>(), py::arg("text"), py::arg("source"))

@@ -1,0 +1,56 @@
+#pragma once
+/// @file ExtremeStatistics.hpp
+/// Extreme statistics of responses in irregular seas (docs/theory.md, "Extreme statistics"):
+/// - the peaks of a time history (the largest value between two up-crossings of its mean) and the mean
+///   up-crossing period;
+/// - distributions fitted to the peaks' excess over the mean: Rayleigh (sigma^2 = sum a^2 / (2 n), the
+///   maximum-likelihood estimate) and two-parameter Weibull (least squares on the Weibull plot
+///   ln(-ln(1 - F)) against ln a, F = i / (n + 1));
+/// - the most probable maximum (MPM) of N peaks: the mode of the largest of N, mean + a_N with
+///   F(a_N) = 1 - 1/N (Rayleigh: sigma sqrt(2 ln N); Weibull: alpha (ln N)^(1/beta)), for a storm of
+///   duration T with N = T / Tz (DNV-OS-E301 (2021) Ch.2 Sec.2, API RP 2SK (2005) 6.4);
+/// - the Gumbel distribution of maxima over seeds by the method of moments (scale s sqrt(6) / pi, mode
+///   mean - 0.5772 scale), its most probable maximum (the mode) and the value at a non-exceedance
+///   probability q: mode - scale ln(-ln q).
+/// Units: those of the history (N, m, N m, ...); times [s].
+
+#include <vector>
+
+namespace tangle::analysis {
+
+/// Peaks of a sampled history.
+struct PeakSet {
+  std::vector<double> peaks;     ///< the largest value between consecutive up-crossings of the mean
+  double mean = 0.0;             ///< mean of the history
+  double standardDeviation = 0.0;
+  double upcrossingPeriod = 0.0;  ///< Tz: time between the first and last up-crossing / their intervals [s]
+};
+
+/// Peaks of `values` sampled at `times` [s] (same length, increasing).
+PeakSet findPeaks(const std::vector<double>& times, const std::vector<double>& values);
+
+/// A fitted distribution of the peaks' excess a over the mean, as a Weibull F(a) = 1 - exp(-(a / alpha)^beta)
+/// (a Rayleigh of parameter sigma is alpha = sigma sqrt(2), beta = 2).
+struct PeakFit {
+  double scale = 0.0;  ///< alpha (units of the history)
+  double shape = 2.0;  ///< beta [-]
+  /// Most probable largest of `count` peaks, as a value of the history: mean + alpha (ln N)^(1/beta).
+  double mostProbableMaximum(double mean, double count) const;
+};
+
+/// Rayleigh fit of the peaks' excess over the mean (peaks below the mean count with zero excess).
+PeakFit fitRayleigh(const PeakSet& peaks);
+/// Two-parameter Weibull fit of the positive excesses of the peaks over the mean.
+PeakFit fitWeibull(const PeakSet& peaks);
+
+/// Gumbel fit of a set of maxima (one per seed) by the method of moments.
+struct GumbelFit {
+  double mean = 0.0, standardDeviation = 0.0;  ///< of the maxima (sample standard deviation, n - 1)
+  double scale = 0.0;                          ///< beta = s sqrt(6) / pi
+  double mode = 0.0;                           ///< mu = mean - 0.5772 beta: the most probable maximum
+  /// The value not exceeded with probability q (e.g. 0.9): mu - beta ln(-ln q).
+  double quantile(double q) const;
+};
+GumbelFit fitGumbel(const std::vector<double>& maxima);
+
+}  // namespace tangle::analysis
