@@ -175,3 +175,57 @@ def test_bad_batch_file_names_file_and_key(tmp_path: Path) -> None:
     p.write_text(f"model: {BASE}\nparameter: []\n")
     r = run([CLI, "batch", str(p)])
     assert r.returncode == 1 and "parameter" in r.stderr and "one of the keys" in r.stderr, r.stderr
+
+
+SEED_BATCH = f"""
+model: {BASE}
+set:
+  dynamics.duration: 20
+  output.vtk: false
+  environment.waves: {{type: jonswap, significant_height: 6, peak_period: 10, azimuth: 0}}
+parameters:
+  - {{name: heading, key: environment.waves.azimuth, values: [0, 90]}}
+seeds: [1, 2, 3]
+statistics: {{probability: 0.9}}
+"""
+
+
+def test_seeds_give_statistics_over_the_seeds(tmp_path: Path) -> None:
+    # Issue 32: every case repeated per JONSWAP seed, and summary_statistics.csv with the seeds' maxima,
+    # their mean and standard deviation and the Gumbel fit (method of moments, theory 13.4), checked against
+    # numpy on the maxima of summary.csv (printed to 6 digits there: rel 1e-5).
+    p = tmp_path / "seeds.yaml"
+    p.write_text(SEED_BATCH)
+    out = tmp_path / "out"
+    r = run([CLI, "batch", str(p), "-o", str(out), "-j", "2", "--no-report", "-q"])
+    assert r.returncode == 0, r.stdout + r.stderr
+    table = rows(out)
+    assert sorted(table) == sorted(f"heading={h}_seed={s}" for h in (0, 90) for s in (1, 2, 3))
+    with (out / "summary_statistics.csv").open() as f:
+        stats = {(s["case"], s["quantity"]): s for s in csv.DictReader(f)}
+    import numpy as np
+    for h in (0, 90):
+        s = stats[(f"heading={h}", "mooring1_end_b_max_tension_N")]
+        assert s["heading"] == str(h) and s["seeds"] == "3" and s["completed_seeds"] == "3"
+        maxima = np.array([float(v) for v in s["maxima"].split(";")])
+        from_summary = np.array([float(table[f"heading={h}_seed={k}"]["mooring1_end_b_max_tension_N"]) for k in (1, 2, 3)])
+        np.testing.assert_allclose(maxima, from_summary, rtol=1e-5)
+        assert len(set(maxima)) == 3  # the seed changes the sea
+        mean, sd = maxima.mean(), maxima.std(ddof=1)
+        scale = sd * np.sqrt(6.0) / np.pi
+        mode = mean - 0.5772156649015329 * scale
+        # The maxima are printed to 7 digits (half a unit: 5e-7 of the value): the statistics of the printed
+        # maxima agree with the file's (computed from the unrounded ones) to a few of those units.
+        tol = 2e-6 * maxima.max()
+        assert float(s["mean"]) == pytest.approx(mean, abs=tol)
+        assert float(s["standard_deviation"]) == pytest.approx(sd, abs=tol)
+        assert float(s["gumbel_scale"]) == pytest.approx(scale, abs=tol)
+        assert float(s["most_probable_maximum"]) == pytest.approx(mode, abs=tol)
+        assert float(s["value_at_90_percent"]) == pytest.approx(mode - scale * np.log(-np.log(0.9)), abs=2 * tol)
+    # Seeds need an irregular sea: the base model without one is refused before anything runs.
+    p.write_text(f"model: {BASE}\nseeds: [1, 2]\n")
+    r = run([CLI, "batch", str(p), "-o", str(tmp_path / "bad")])
+    assert r.returncode == 1 and "seeds" in r.stderr and "jonswap" in r.stderr, r.stderr
+    p.write_text(f"model: {BASE}\nseeds: [1]\n")
+    r = run([CLI, "batch", str(p), "-o", str(tmp_path / "bad")])
+    assert r.returncode == 1 and "at least two seeds" in r.stderr, r.stderr

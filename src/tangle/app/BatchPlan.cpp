@@ -81,7 +81,7 @@ class BatchReader {
       throw InputError(m_file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "invalid YAML: " + e.msg);
     }
     if (!root.IsMap()) fail(root, "", "a batch: a map {model, set, parameters, cases}");
-    checkKeys(root, "", {"model", "set", "parameters", "cases", "title"});
+    checkKeys(root, "", {"model", "set", "parameters", "seeds", "statistics", "cases", "title"});
     BatchPlan plan;
     plan.batchFile = m_file;
     const YAML::Node model = root["model"];
@@ -139,6 +139,54 @@ class BatchReader {
         plan.parameterNames.push_back(par.name);
         parameters.push_back(std::move(par));
       }
+    }
+
+    // Seeds: the last parameter, `seed`, of the JONSWAP sea (summary_statistics.csv over them).
+    if (const YAML::Node seeds = root["seeds"]) {
+      const auto seedValue = [&](const YAML::Node& n, const std::string& path) {
+        long long v = -1;
+        try {
+          v = n.as<long long>();
+        } catch (const YAML::Exception&) {
+        }
+        if (v < 0 || v > 4294967295LL) fail(n, path, "a seed: an integer from 0 to 4294967295");
+        return v;
+      };
+      if (seeds.IsSequence() && seeds.size() >= 2) {
+        for (std::size_t i = 0; i < seeds.size(); ++i) plan.seeds.push_back(seedValue(seeds[i], fmt::format("seeds[{}]", i)));
+      } else if (seeds.IsMap()) {
+        checkKeys(seeds, "seeds", {"count", "first"});
+        const long long count = seeds["count"] ? seedValue(seeds["count"], "seeds.count") : 0;
+        const long long first = seeds["first"] ? seedValue(seeds["first"], "seeds.first") : 1;
+        if (count < 2 || count > 1000) fail(seeds["count"] ? seeds["count"] : seeds, "seeds.count", "from 2 to 1000 seeds");
+        for (long long k = 0; k < count; ++k) plan.seeds.push_back(first + k);
+      } else {
+        fail(seeds, "seeds", "a list of at least two seeds, or {count: N, first: S}");
+      }
+      if (std::set<long long>(plan.seeds.begin(), plan.seeds.end()).size() != plan.seeds.size())
+        fail(seeds, "seeds", "distinct seeds (a seed twice is the same sea twice)");
+      for (const Parameter& q : parameters)
+        if (q.name == "seed") fail(root["parameters"], "parameters", "no parameter named 'seed' when the batch has seeds");
+      Parameter par;
+      par.name = "seed";
+      par.keys.push_back("environment.waves.seed");
+      for (const long long v : plan.seeds) par.values.push_back(YAML::Node(v));
+      plan.parameterNames.push_back(par.name);
+      parameters.push_back(std::move(par));
+    }
+    if (const YAML::Node st = root["statistics"]) {
+      if (!st.IsMap()) fail(st, "statistics", "a map {probability}");
+      checkKeys(st, "statistics", {"probability"});
+      if (const YAML::Node q = st["probability"]) {
+        double v = -1.0;
+        try {
+          v = q.as<double>();
+        } catch (const YAML::Exception&) {
+        }
+        if (!(v > 0.0 && v < 1.0)) fail(q, "statistics.probability", "a non-exceedance probability between 0 and 1 (e.g. 0.9)");
+        plan.probability = v;
+      }
+      if (plan.seeds.empty()) fail(st, "statistics", "seeds: the statistics are over the seeds of each case");
     }
 
     // Named cases (default: one unnamed case).
@@ -211,12 +259,18 @@ class BatchReader {
     // (environment.curent.azimuth creates a map the reader does not know) or a value out of range would
     // otherwise start every case and fail each with "bad input".
     for (const BatchCase& c : plan.cases) {
+      model::WaveKind waves = model::WaveKind::None;
       try {
-        (void)c.model.spec();
+        waves = c.model.spec().environment.waves.kind;
       } catch (const InputError& e) {
         throw InputError(m_file, 0, "cases",
                          fmt::format("every case to be a valid model; case '{}' is not: {}", c.name, e.what()));
       }
+      if (!plan.seeds.empty() && waves != model::WaveKind::Jonswap)
+        fail(root["seeds"], "seeds",
+             fmt::format("irregular waves in every case (seeds vary the JONSWAP sea's phases); case '{}' has "
+                         "no JONSWAP sea: set environment.waves.type: jonswap",
+                         c.name));
     }
     return plan;
   }

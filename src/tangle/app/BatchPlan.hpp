@@ -9,6 +9,8 @@
 /// parameters:                                # product of value lists (optional)
 ///   - {name: heading, key: environment.current.azimuth, values: [0, 90, 180, 270]}
 ///   - {name: current, key: environment.current.speed, values: [0.5, 1.0, 1.5]}
+/// seeds: [1, 2, 3, 4, 5]                     # or {count: 10, first: 1}: JONSWAP seeds (optional)
+/// statistics: {probability: 0.9}             # Gumbel quantile of summary_statistics.csv (optional)
 /// cases:                                     # named cases (optional), each x the product
 ///   - {name: intact}
 ///   - {name: offset, set: {"lines[mooring1].end_b.position": [830, 0, -14]}}
@@ -35,8 +37,13 @@ struct BatchCase {
 struct BatchPlan {
   std::string batchFile;
   std::string baseModel;  ///< path of the base model file
-  std::vector<std::string> parameterNames;
+  std::vector<std::string> parameterNames;  ///< with `seed` last when the batch has seeds
   std::vector<BatchCase> cases;
+  /// JONSWAP seeds (`seeds`): every case is repeated for each, as the last parameter `seed`
+  /// (environment.waves.seed); the batch then writes summary_statistics.csv (empty: no seeds).
+  std::vector<long long> seeds;
+  /// Non-exceedance probability of the Gumbel quantile in summary_statistics.csv (`statistics.probability`).
+  double probability = 0.9;
 };
 
 /// Reads a batch file and expands its cases. Key paths through lists are checked against the base model

@@ -30,6 +30,7 @@
 
 #include "tangle/app/BatchPlan.hpp"
 #include "tangle/app/CaseSummary.hpp"
+#include "tangle/app/SeedStatistics.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
 #include "tangle/core/OutputFile.hpp"
@@ -319,6 +320,11 @@ int runBatch(const BatchOptions& options) {
   }
   const std::string table = writeSummaryTable(dir / "summary.csv", plan.parameterNames, lineNames, rows);
   if (!options.quiet) std::cout << table;
+  // Over the seeds of every case (docs/batch.md, theory 13.4).
+  if (!plan.seeds.empty()) {
+    const std::string statistics = writeSeedStatistics(dir / "summary_statistics.csv", plan, lineNames, rows);
+    if (!options.quiet) std::cout << statistics;
+  }
 #ifdef TANGLE_WITH_MPI
   if (ranks.mpi) MPI_Finalize();
 #endif
