@@ -335,3 +335,34 @@ def test_design_statistics_functions() -> None:
     assert e.rayleigh_sigma == pytest.approx(1 / np.sqrt(2), rel=1e-3)
     with pytest.raises(ValueError, match="up-crossings"):
         st.extreme_estimate(t, t)
+
+
+def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_path: Path) -> None:
+    # dynamics/statistics.csv (theory 13.3) is the library's estimate on the end tension at the output times
+    # after the ramp: recomputed here from dynamics/end_forces.csv (printed to 7 digits) with
+    # tangle.statistics. The fairlead held still in a JONSWAP sea (6 m, 10 s): a wave-driven response.
+    from tangle import statistics as st
+
+    m = tangle.Model.load(MOORING)
+    m.set("lines[mooring1].end_b.motion", {"amplitude": [0, 0, 0], "period": 10})
+    m.set("environment.waves", {"type": "jonswap", "significant_height": 6, "peak_period": 10, "azimuth": 0})
+    m.set("dynamics.duration", 120)
+    m.set("dynamics.time_step", 0.05)
+    m.set("output.vtk", False)
+    m.set("output.storm_duration", 7200)
+    out = m.run(tmp_path / "run", report=False)
+    header, ends = read_csv(out / "dynamics" / "end_forces.csv")
+    col = {h: i for i, h in enumerate(header)}
+    after = ends[:, 0] >= m.get("dynamics.ramp_time") - 1e-9
+    with (out / "dynamics" / "statistics.csv").open() as f:
+        rows = {r["end"]: r for r in csv.DictReader(f)}
+    b = rows["B"]
+    e = st.extreme_estimate(ends[after, 0], ends[after, col["mooring1_end_b_tension_N"]], storm_duration_s=7200)
+    assert int(b["samples"]) == int(after.sum())
+    assert int(b["peaks"]) == len(e.peaks) > 5
+    assert float(b["storm_duration_s"]) == 7200
+    assert float(b["upcrossing_period_s"]) == pytest.approx(e.upcrossing_period_s, rel=1e-4)
+    for key, value in (("mean_N", e.mean), ("rayleigh_sigma_N", e.rayleigh_sigma), ("rayleigh_mpm_N", e.rayleigh_mpm),
+                       ("weibull_mpm_N", e.weibull_mpm)):
+        assert float(b[key]) == pytest.approx(value, rel=1e-4), key
+    assert float(b["rayleigh_mpm_N"]) > float(b["max_N"])  # a 2 h storm has more peaks than the run

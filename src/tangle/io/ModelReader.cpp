@@ -943,7 +943,7 @@ void readDynamics(const Value& v, ModelSpec& spec) {
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"format", "vtk", "vtk_interval", "plots", "energy"});
+  const Map m(v, {"format", "vtk", "vtk_interval", "plots", "energy", "storm_duration"});
   const model::OutputSpec d;
   if (const std::optional<Value> format = m.find("format"))
     spec.output.format = format->choice<model::ResultFormat>({{"auto", model::ResultFormat::Auto},
@@ -954,6 +954,8 @@ void readOutput(const Value& v, ModelSpec& spec) {
   spec.output.vtkInterval = m.number("vtk_interval", d.vtkInterval, positive());
   spec.output.plots = m.boolean("plots", d.plots);
   spec.output.energy = m.boolean("energy", d.energy);
+  spec.output.stormDuration =
+      m.number("storm_duration", d.stormDuration, positiveUpTo(1e7).withHint("seconds: 10800 for a 3 h storm"));
 }
 
 /// `name` read as the name of a line of `spec`; an unknown one fails with "unknown line 'X'", followed by

@@ -315,6 +315,9 @@ struct OutputSpec {
   /// Energy account of the dynamics (dynamics/energy.csv, analysis/EnergyAccount): costs about two extra
   /// assemblies per step, so it is asked for.
   bool energy = false;
+  /// Storm duration of the extreme statistics of the dynamics (dynamics/statistics.csv): the most probable
+  /// maximum is that of stormDuration / Tz peaks [s] (3 h, DNV-OS-E301 and API RP 2SK's storm).
+  double stormDuration = 10800.0;
 };
 
 /// The whole model as read from the file.

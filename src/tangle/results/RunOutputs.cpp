@@ -16,6 +16,7 @@
 
 #include "tangle/analysis/EnergyAccount.hpp"
 #include "tangle/analysis/EquilibriumAudit.hpp"
+#include "tangle/analysis/ExtremeStatistics.hpp"
 #include "tangle/analysis/RangeGraphs.hpp"
 #include "tangle/contact/ClashReport.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
@@ -173,6 +174,56 @@ void writeReport(const io::HtmlReport& report, const fs::path& outDir, RunLog& l
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0 + collected).count();
   log.info(fmt::format("report written to {} ({:.1f} MB, {:.2f} s)\n", page.string(),
                        static_cast<double>(fs::file_size(page)) / 1e6, seconds));
+}
+
+/// dynamics/statistics.csv (theory 13.3): per line end, the peaks of its tension at the output times, their
+/// Rayleigh and Weibull fits and the most probable maximum of a storm of `storm` [s]. Returns the log's lines.
+std::string writeExtremeStatistics(const fs::path& dir, const std::vector<solver::LineSnapshot>& lines,
+                                   const std::vector<double>& times, const std::vector<std::vector<double>>& history,
+                                   double storm) {
+  core::OutputFile out(dir / "dynamics" / "statistics.csv");
+  out.write("line,end,samples,duration_s,mean_N,standard_deviation_N,upcrossing_period_s,peaks,max_N,"
+            "storm_duration_s,rayleigh_sigma_N,rayleigh_mpm_N,weibull_scale_N,weibull_shape,weibull_mpm_N\n");
+  std::string text;
+  for (std::size_t l = 0; l < lines.size(); ++l)
+    for (int end = 0; end < 2; ++end) {
+      const std::vector<double>& x = history[2 * l + static_cast<std::size_t>(end)];
+      std::string row = fmt::format("{},{},{},{:.6f}", lines[l].name, end == 0 ? 'A' : 'B', x.size(),
+                                    times.empty() ? 0.0 : times.back() - times.front());
+      analysis::PeakSet peaks;
+      if (x.size() >= 3) peaks = analysis::findPeaks(times, x);
+      if (peaks.peaks.size() < 2 || !(peaks.upcrossingPeriod > 0.0)) {
+        out.write(row + ",,,,,,,,,,,\n");  // too few peaks for a fit
+        continue;
+      }
+      const double n = storm / peaks.upcrossingPeriod;
+      const analysis::PeakFit rayleigh = analysis::fitRayleigh(peaks);
+      const analysis::PeakFit weibull = analysis::fitWeibull(peaks);
+      const double observed = *std::max_element(x.begin(), x.end());
+      const double mpmR = rayleigh.mostProbableMaximum(peaks.mean, n);
+      const double mpmW = weibull.mostProbableMaximum(peaks.mean, n);
+      out.write(row + fmt::format(",{:.6e},{:.6e},{:.6f},{},{:.6e},{:.1f},{:.6e},{:.6e},{:.6e},{:.6f},{:.6e}\n",
+                                  peaks.mean, peaks.standardDeviation, peaks.upcrossingPeriod, peaks.peaks.size(),
+                                  observed, storm, rayleigh.scale / std::sqrt(2.0), mpmR, weibull.scale,
+                                  weibull.shape, mpmW));
+      if (end == 1) {
+        text += fmt::format("  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
+                            "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
+                            lines[l].name, peaks.peaks.size(), peaks.upcrossingPeriod, storm / 3600.0, mpmR / 1000.0,
+                            mpmW / 1000.0, weibull.shape, observed / 1000.0);
+        // A Rayleigh distribution of the peaks is a Weibull of shape 2: far from it (a response driven by a
+        // regular motion has peaks of one size, a snapping one a long tail) the Rayleigh estimate misleads.
+        if (weibull.shape < 1.5 || weibull.shape > 3.0)
+          text += fmt::format("  warning: the peaks of line '{}' end B are not Rayleigh distributed (Weibull shape "
+                              "{:.2f}, 2 for Rayleigh): use the Weibull estimate or the maxima of several seeds\n",
+                              lines[l].name, weibull.shape);
+      }
+      if (peaks.peaks.size() < 20 && end == 1)
+        text += fmt::format("  warning: only {} peaks of line '{}' end B: the fits are rough (a longer record)\n",
+                            peaks.peaks.size(), lines[l].name);
+    }
+  out.close();
+  return text.empty() ? std::string() : "extreme statistics (dynamics/statistics.csv):\n" + text;
 }
 
 }  // namespace
@@ -423,6 +474,9 @@ bool RunOutputs::runDynamics() {
   // a background thread while the integration goes on (BackgroundWriter's contract: each job gets copies
   // of the state it needs). Declared after everything its jobs use, so that it finishes them before
   // those are destroyed, also when the dynamics end with an exception.
+  // Tension of every line end (A, B of each line) at the output times after the ramp [N], and those times [s].
+  std::vector<double> endHistoryTime;
+  std::vector<std::vector<double>> endHistory(2 * lines.size());
   io::BackgroundWriter writer;
   const auto submitSteps = [&] {
     if (pendingSteps->size() == 0) return;
@@ -485,6 +539,14 @@ bool RunOutputs::runDynamics() {
           std::ranges::copy(m.vesselMotion(s, v), vesselMotion.begin() + 6 * v);
         writer.submit([&, shared, time = s.time, motion = vesselMotion] {
           recorder.record(time, *shared);
+          // End tensions at the output times after the ramp, for the extreme statistics (writer's thread).
+          if (time >= m.spec().dynamics.rampTime - 1e-9) {
+            endHistoryTime.push_back(time);
+            for (std::size_t l = 0; l < shared->size(); ++l) {
+              endHistory[2 * l].push_back((*shared)[l].endTensionA);
+              endHistory[2 * l + 1].push_back((*shared)[l].endTensionB);
+            }
+          }
           if (h5) h5->record(time, *shared, motion);
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", time);
@@ -537,6 +599,7 @@ bool RunOutputs::runDynamics() {
     log.info(clash->terminalSummary());
   }
   writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
+  log.info(writeExtremeStatistics(outDir, lines, endHistoryTime, endHistory, m.spec().output.stormDuration));
   if (energy) {
     energyFile->close();
     const analysis::EnergyTotals& t = energy->totals();
