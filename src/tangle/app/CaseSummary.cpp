@@ -44,15 +44,14 @@ double number(const YAML::Node& n) {
 
 std::string numberText(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : ""; }
 
-/// CSV field: quoted when it holds a comma, quote or newline.
+}  // namespace
+
 std::string csvField(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
   std::string out = "\"";
   for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
   return out + "\"";
 }
-
-}  // namespace
 
 CaseSummary readCaseSummary(const fs::path& caseDir, const fs::path& log) {
   CaseSummary row;

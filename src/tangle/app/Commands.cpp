@@ -106,19 +106,9 @@ int runAnalysis(const RunOptions& options) {
   outputOptions.noPlots = options.noPlots;
   outputOptions.progress = !options.quiet;
   outputOptions.plotScript = fs::path(TANGLE_PYTHON_DIR) / "tangle_plot.py";
-  try {
-    const int code = results::RunOutputs(sim, folder, log, outputOptions).run();
-    log.close();
-    return code;
-  } catch (const std::exception& e) {
-    // Record the failure in the folder, then let main report it with its exit code.
-    try {
-      log.logOnly(fmt::format("error: {}\n", e.what()));
-      folder.setStatus(std::string("failed: ") + e.what());
-    } catch (const std::exception&) {  // NOLINT(bugprone-empty-catch): the disk may be what failed
-    }
-    throw;
-  }
+  const int code = results::RunOutputs(sim, folder, log, outputOptions).run();
+  log.close();
+  return code;
 }
 
 }  // namespace tangle::app

@@ -13,13 +13,6 @@ namespace tangle::app {
 
 namespace {
 
-std::string csvText(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string q = "\"";
-  for (const char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return q + "\"";
-}
-
 std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.6e}", v) : ""; }
 
 /// One maximum of a row: its name and how to read it (NaN where the case has none).
@@ -51,7 +44,7 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
 
   core::OutputFile out(file);
   std::string header = "case";
-  for (std::size_t k = 0; k + 1 < plan.parameterNames.size(); ++k) header += "," + csvText(plan.parameterNames[k]);
+  for (std::size_t k = 0; k + 1 < plan.parameterNames.size(); ++k) header += "," + csvField(plan.parameterNames[k]);
   const std::string q = fmt::format("{:g}", 100.0 * plan.probability);
   header += ",quantity,seeds,completed_seeds,mean,standard_deviation,min,max,gumbel_scale,most_probable_maximum,"
             "value_at_" + q + "_percent,maxima\n";
@@ -75,10 +68,10 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
         list += (s == first ? "" : ";") + number(v);
       }
       if (!any) continue;  // a quantity no seed has (no vessel, no contact)
-      std::string row = csvText(name);
+      std::string row = csvField(name);
       for (std::size_t k = 0; k + 1 < plan.parameterNames.size(); ++k)
-        row += "," + csvText(k < rows[first].parameterValues.size() ? rows[first].parameterValues[k] : "");
-      row += fmt::format(",{},{},{}", csvText(quantity.name), seeds, maxima.size());
+        row += "," + csvField(k < rows[first].parameterValues.size() ? rows[first].parameterValues[k] : "");
+      row += fmt::format(",{},{},{}", csvField(quantity.name), seeds, maxima.size());
       if (maxima.size() >= 2) {
         const analysis::GumbelFit g = analysis::fitGumbel(maxima);
         double lo = maxima.front(), hi = maxima.front();
@@ -94,7 +87,7 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
       } else {
         row += ",,,,,,,";
       }
-      out.write(row + "," + csvText(list) + "\n");
+      out.write(row + "," + csvField(list) + "\n");
     }
   }
   out.close();

@@ -182,6 +182,7 @@ class LineContact final : public solver::LoadContributor {
   /// contact radii: then the reason (which two lines, where in arc length and position, how deep, and what
   /// the user can change), and the step must be cut.
   std::string rejectStep(const model::State& before, const model::State& after) override;
+  bool rejectsSteps() const override { return true; }
   /// Commits the contacts of the accepted state `state` reached with step dt: updates impulses, Eq. 5
   /// effective masses, events. After every accepted step, and once for the static solution with dt = 0.
   /// With the impulse model, new impacts change the velocities of `state` (momentum-conserving jump).

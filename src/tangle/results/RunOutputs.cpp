@@ -246,11 +246,21 @@ void RunOutputs::timed(Work&& work) {
 }
 
 int RunOutputs::run() {
-  if (!writeStatics()) return 2;
-  const bool dynamics = m_sim->model().spec().dynamics.enabled && !m_options.staticsOnly;
-  const bool ok = !dynamics || runDynamics();
-  finish(ok);
-  return ok ? 0 : 2;
+  try {
+    if (!writeStatics()) return 2;
+    const bool dynamics = m_sim->model().spec().dynamics.enabled && !m_options.staticsOnly;
+    const bool ok = !dynamics || runDynamics();
+    finish(ok);
+    return ok ? 0 : 2;
+  } catch (const std::exception& e) {
+    // Record the failure in the folder's log and manifest, then let the caller report it.
+    try {
+      m_log->logOnly(fmt::format("error: {}\n", e.what()));
+      m_folder->setStatus(std::string("failed: ") + e.what());
+    } catch (const std::exception&) {  // NOLINT(bugprone-empty-catch): the disk may be what failed
+    }
+    throw;
+  }
 }
 
 bool RunOutputs::writeStatics() {

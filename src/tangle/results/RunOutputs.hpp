@@ -64,7 +64,8 @@ class RunOutputs {
 
   /// The whole run: statics, dynamics, finish. Returns the exit code: 0, or 2 when the statics did not
   /// converge or the dynamics stopped early (the folder's status and the log say which).
-  /// @throws OutputError on a failed write, InputError on bad input found while running
+  /// @throws OutputError on a failed write, InputError on bad input found while running (recorded first in
+  ///         the run log and as the folder's status "failed: ...")
   int run();
 
  private:

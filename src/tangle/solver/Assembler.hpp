@@ -46,6 +46,11 @@ class Assembler {
   double limitStep(const model::State& state);
   /// Forwards LoadContributor::rejectStep: the first contributor's reason, empty if none.
   std::string rejectStep(const model::State& before, const model::State& after);
+  /// True if any contributor's rejectStep can refuse a step (LoadContributor::rejectsSteps).
+  bool rejectsSteps() const {
+    return std::any_of(m_contributors.begin(), m_contributors.end(),
+                       [](const LoadContributor* c) { return c->rejectsSteps(); });
+  }
   /// An accepted dynamic step of `dt` [s] (the seabed friction anchors at `state` become the committed ones),
   /// or with dt = 0 the final static solution (the anchors are those of its last increment); then forwards
   /// LoadContributor::commitStep.

@@ -129,6 +129,9 @@ class LoadContributor {
   /// Dynamics and dynamic relaxation: empty if the converged step from `before` to `after` is acceptable,
   /// otherwise why not (e.g. two lines passed through each other): the step is undone and cut.
   virtual std::string rejectStep(const model::State& /*before*/, const model::State& /*after*/) { return {}; }
+  /// True if rejectStep can refuse a step: only then do the solvers keep a copy of the state before each step
+  /// (a copy of the whole state per step is not free on a large model).
+  virtual bool rejectsSteps() const { return false; }
   /// An accepted state: a dynamic step of `dt` [s] > 0, or, with dt = 0, the final static solution (the
   /// start of the dynamics). May change the velocities of `state` (an impulse model's velocity jump).
   virtual void commitStep(model::State& /*state*/, double /*dt*/) {}

@@ -84,6 +84,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   // Remainders shorter than this are round-off, not time to simulate.
   const double eps = 1e-6 * nominal;
   model::State before;
+  // Contributors that may refuse a converged step (lines passed through each other) need the state before it.
+  const bool checkSteps = m_stepControl && m_assembler->rejectsSteps();
   double lastStep = nominal;  // the step grows at most twofold from one step to the next
   while (state.time < duration - eps) {
     if (core::interruptRequested() || (m_stop && m_stop())) {
@@ -99,7 +101,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
     if (h <= eps) h = std::min(dt, duration - state.time);
     const bool clippedForOutput = h < dt * (1.0 - 1e-9);
-    before = state;
+    if (checkSteps || errorControl) before = state;
     StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
     result.partIterations += o.partIterations;
@@ -107,7 +109,7 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
     result.matrixRefreshes += o.refreshes;
     bool rejected = false;
     std::string rejection;
-    if (o.converged && m_stepControl) rejection = m_assembler->rejectStep(before, state);
+    if (o.converged && checkSteps) rejection = m_assembler->rejectStep(before, state);
     if (!rejection.empty()) {
       // Converged but not acceptable (e.g. lines passed through each other): undo and cut.
       stepper.restore(before);

@@ -56,6 +56,7 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
   double dt = kFirstRelaxationStep;
   int successes = 0;
   model::State before;
+  const bool checkSteps = m_assembler->rejectsSteps();  // a contributor may refuse a step: keep its start
   auto maxSpeed = [&](const model::State& s) {
     double v = 0.0;
     for (int n = 0; n < nodes; ++n) v = std::max(v, s.velocity.segment<3>(dofs.firstDof(n)).norm());
@@ -67,9 +68,9 @@ RelaxationResult DynamicRelaxation::run(model::State& state, double staticTime, 
       break;
     }
     const double h = std::min(dt, duration - state.time);
-    before = state;
+    if (checkSteps) before = state;
     const StepOutcome o = stepper.step(state, h);
-    const bool invalid = o.converged && !m_assembler->rejectStep(before, state).empty();
+    const bool invalid = o.converged && checkSteps && !m_assembler->rejectStep(before, state).empty();
     if (invalid) state = before;  // a converged step that the validator refuses: back to its start
     if (!o.converged || invalid) {
       dt *= 0.25;
