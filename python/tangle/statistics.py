@@ -49,13 +49,14 @@ class SnCurve:
 
 def miner_damage(cycles: np.ndarray, curve: SnCurve) -> float:
     """Miner's sum of rainflow cycles (rows range [Pa], mean, count) against an S-N curve."""
-    return float(sum(count / curve.cycles_to_failure(rng) for rng, _, count in np.asarray(cycles)))
+    return _tangle.sn_damage(np.asarray(cycles, dtype=float).reshape(-1, 3), curve.m1, curve.log_a1, curve.m2,
+                             curve.log_a2, curve.knee_cycles, curve.k, curve.reference_thickness, curve.thickness)
 
 
 def chain_damage(cycles: np.ndarray, breaking_strength_n: float, m: float = 3.0, a_d: float = 316.0) -> float:
     """Miner's sum of rainflow cycles of tension [N] against a chain T-N curve N R^m = a_D (R = range /
     breaking strength; DNV-OS-E301: a_D = 1000 studlink, 316 studless, m = 3)."""
-    return float(sum(count * (rng / breaking_strength_n) ** m / a_d for rng, _, count in np.asarray(cycles)))
+    return _tangle.tn_damage(np.asarray(cycles, dtype=float).reshape(-1, 3), breaking_strength_n, m, a_d)
 
 
 @dataclass(frozen=True)
@@ -81,11 +82,10 @@ def extreme_estimate(times: Sequence[float], values: Sequence[float], storm_dura
     if not p["peaks"] or p["upcrossing_period_s"] <= 0.0:
         raise ValueError("the record has fewer than two up-crossings of its mean: no peaks to fit")
     n = storm_duration_s / p["upcrossing_period_s"]
-    ra, rb = _tangle.fit_peaks(p["peaks"], p["mean"], "rayleigh")
-    wa, wb = _tangle.fit_peaks(p["peaks"], p["mean"], "weibull")
-    mpm = lambda a, b: p["mean"] + a * math.log(n) ** (1.0 / b) if n > 1.0 else p["mean"]  # noqa: E731
+    ra, _, rayleigh_mpm = _tangle.fit_peaks(p["peaks"], p["mean"], "rayleigh", n)
+    wa, wb, weibull_mpm = _tangle.fit_peaks(p["peaks"], p["mean"], "weibull", n)
     return ExtremeEstimate(p["mean"], p["standard_deviation"], p["upcrossing_period_s"], np.asarray(p["peaks"]),
-                           storm_duration_s, ra / math.sqrt(2.0), mpm(ra, rb), wa, wb, mpm(wa, wb))
+                           storm_duration_s, ra / math.sqrt(2.0), rayleigh_mpm, wa, wb, weibull_mpm)
 
 
 @dataclass(frozen=True)

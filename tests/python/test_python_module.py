@@ -207,10 +207,10 @@ def test_the_gil_is_released_during_a_run(mooring: tangle.Model) -> None:
     assert count > 10000
 
 
-def test_a_run_that_stops_early_raises_with_its_results() -> None:
-    # A wire whose end is thrown 40 m at 1 Hz, with no room to cut the step back (min_time_step =
-    # time_step): the step cannot converge. The run must raise, not return with completed = False.
-    m = tangle.Model({
+def model_that_stops_early() -> tangle.Model:
+    """A wire whose end is thrown 40 m at 1 Hz, with no room to cut the step back (min_time_step =
+    time_step): the first step cannot converge."""
+    return tangle.Model({
         "title": "a run that cannot finish",
         "environment": {"water_depth": 100},
         "line_types": [{"name": "wire", "outer_diameter": 0.05, "mass_per_length": 10, "axial_stiffness": 1e8}],
@@ -221,6 +221,12 @@ def test_a_run_that_stops_early_raises_with_its_results() -> None:
                    "sections": [{"type": "wire", "length": 140, "elements": 20}]}],
         "dynamics": {"duration": 5, "time_step": 0.1, "min_time_step": 0.1, "ramp_time": 0},
     }, "stops early (test)")
+
+
+def test_a_run_that_stops_early_raises_with_its_results() -> None:
+    # A wire whose end is thrown 40 m at 1 Hz, with no room to cut the step back (min_time_step =
+    # time_step): the step cannot converge. The run must raise, not return with completed = False.
+    m = model_that_stops_early()
     with pytest.raises(tangle.DynamicsFailed) as e:
         m.run_dynamics()
     assert isinstance(e.value, tangle.ConvergenceError)
@@ -291,17 +297,7 @@ def test_run_into_a_folder_writes_what_the_cli_writes(mooring: tangle.Model, tmp
 
 
 def test_a_run_into_a_folder_that_stops_early_raises_and_keeps_its_results(tmp_path: Path) -> None:
-    m = tangle.Model({
-        "title": "a run that cannot finish",
-        "environment": {"water_depth": 100},
-        "line_types": [{"name": "wire", "outer_diameter": 0.05, "mass_per_length": 10, "axial_stiffness": 1e8}],
-        "lines": [{"name": "wire",
-                   "end_a": {"type": "anchored", "position": [0, 0, -100]},
-                   "end_b": {"type": "pinned", "position": [90, 0, -10],
-                             "motion": {"amplitude": [40, 0, 0], "period": 1}},
-                   "sections": [{"type": "wire", "length": 140, "elements": 20}]}],
-        "dynamics": {"duration": 5, "time_step": 0.1, "min_time_step": 0.1, "ramp_time": 0},
-    }, "stops early (test)")
+    m = model_that_stops_early()
     with pytest.raises(tangle.ConvergenceError, match="failed: dynamics stopped"):
         m.run(tmp_path / "out")
     assert json.loads((tmp_path / "out" / "tangle-run.json").read_text())["status"].startswith("failed: dynamics")

@@ -94,23 +94,52 @@ PYBIND11_MODULE(_tangle, m) {
       },
       py::arg("values"),
       "Rainflow cycles (ASTM E1049-85 5.4.4) of a series: an array [cycle, (range, mean, count)], count 1 or 0.5.");
+  // Cycles as rainflow returns them: rows (range, mean, count).
+  const auto toCycles = [](const py::array_t<double>& rows) {
+    const auto r = rows.unchecked<2>();
+    if (r.ndim() != 2 || r.shape(1) != 3) throw py::value_error("cycles: an array of rows (range, mean, count)");
+    std::vector<tangle::analysis::RainflowCycle> cycles;
+    for (py::ssize_t i = 0; i < r.shape(0); ++i) cycles.push_back({r(i, 0), r(i, 1), r(i, 2)});
+    return cycles;
+  };
+  const auto snCurve = [](double m1, double logA1, double m2, double logA2, double kneeCycles, double k,
+                          double referenceThickness, double thickness) {
+    tangle::analysis::SnCurve c;
+    c.m1 = m1;
+    c.logA1 = logA1;
+    c.m2 = m2;
+    c.logA2 = logA2;
+    c.kneeCycles = kneeCycles;
+    c.thicknessExponent = k;
+    c.referenceThickness = referenceThickness;
+    c.thickness = thickness;
+    return c;
+  };
   m.def(
       "sn_cycles_to_failure",
-      [](double range, double m1, double logA1, double m2, double logA2, double kneeCycles, double k,
-         double referenceThickness, double thickness) {
-        tangle::analysis::SnCurve c;
-        c.m1 = m1;
-        c.logA1 = logA1;
-        c.m2 = m2;
-        c.logA2 = logA2;
-        c.kneeCycles = kneeCycles;
-        c.thicknessExponent = k;
-        c.referenceThickness = referenceThickness;
-        c.thickness = thickness;
-        return c.cyclesToFailure(range);
+      [snCurve](double range, double m1, double logA1, double m2, double logA2, double kneeCycles, double k,
+                double referenceThickness, double thickness) {
+        return snCurve(m1, logA1, m2, logA2, kneeCycles, k, referenceThickness, thickness).cyclesToFailure(range);
       },
       py::arg("range"), py::arg("m1"), py::arg("log_a1"), py::arg("m2"), py::arg("log_a2"), py::arg("knee_cycles"),
       py::arg("k"), py::arg("reference_thickness"), py::arg("thickness"));
+  m.def(
+      "sn_damage",
+      [snCurve, toCycles](const py::array_t<double>& cycles, double m1, double logA1, double m2, double logA2,
+                          double kneeCycles, double k, double referenceThickness, double thickness) {
+        return tangle::analysis::minerDamage(
+            toCycles(cycles), snCurve(m1, logA1, m2, logA2, kneeCycles, k, referenceThickness, thickness));
+      },
+      py::arg("cycles"), py::arg("m1"), py::arg("log_a1"), py::arg("m2"), py::arg("log_a2"), py::arg("knee_cycles"),
+      py::arg("k"), py::arg("reference_thickness"), py::arg("thickness"),
+      "Miner's sum of rainflow cycles [Pa] against a two-slope S-N curve (analysis/SnCurve).");
+  m.def(
+      "tn_damage",
+      [toCycles](const py::array_t<double>& cycles, double breakingStrength, double slope, double aD) {
+        return tangle::analysis::minerDamage(toCycles(cycles), tangle::analysis::TnCurve{slope, aD, breakingStrength});
+      },
+      py::arg("cycles"), py::arg("breaking_strength"), py::arg("m"), py::arg("a_d"),
+      "Miner's sum of rainflow cycles of tension [N] against a chain T-N curve.");
   m.def(
       "peaks",
       [](const std::vector<double>& times, const std::vector<double>& values) {
@@ -125,15 +154,16 @@ PYBIND11_MODULE(_tangle, m) {
       py::arg("times"), py::arg("values"));
   m.def(
       "fit_peaks",
-      [](const std::vector<double>& peaks, double mean, const std::string& distribution) {
+      [](const std::vector<double>& peaks, double mean, const std::string& distribution, double count) {
         tangle::analysis::PeakSet p;
         p.peaks = peaks;
         p.mean = mean;
         const tangle::analysis::PeakFit f = distribution == "weibull" ? tangle::analysis::fitWeibull(p)
                                                                       : tangle::analysis::fitRayleigh(p);
-        return py::make_tuple(f.scale, f.shape);
+        return py::make_tuple(f.scale, f.shape, f.mostProbableMaximum(mean, count));
       },
-      py::arg("peaks"), py::arg("mean"), py::arg("distribution"));
+      py::arg("peaks"), py::arg("mean"), py::arg("distribution"), py::arg("count"),
+      "(alpha, beta, most probable maximum of `count` peaks) of the fit of the peaks' excess over `mean`.");
   m.def(
       "fit_gumbel",
       [](const std::vector<double>& maxima) {

@@ -102,14 +102,8 @@ std::pair<int, std::string> runToFolder(const std::string& yaml, const std::stri
   int code = 0;
   {
     py::gil_scoped_release release;
-    try {
-      code = results::RunOutputs(sim, out, log, options).run();
-      log.close();
-    } catch (const std::exception& e) {
-      log.logOnly(fmt::format("error: {}\n", e.what()));
-      out.setStatus(std::string("failed: ") + e.what());
-      throw;
-    }
+    code = results::RunOutputs(sim, out, log, options).run();
+    log.close();
   }
   if (stopped) code = 130;  // as a shell reports SIGINT: the Python layer raises KeyboardInterrupt
   return {code, out.status()};
