@@ -14,7 +14,8 @@ if ! command -v "$cxx" > /dev/null; then
   exit 77
 fi
 mkdir -p "$work/corpus"
-sources=("$root/tests/fuzz/ReaderFuzz.cpp" "$root/src/tangle/io/ModelReader.cpp" "$root/src/tangle/core/Error.cpp")
+sources=("$root/tests/fuzz/ReaderFuzz.cpp" "$root/src/tangle/io/ModelReader.cpp" "$root/src/tangle/core/Error.cpp"
+         "$root/src/tangle/analysis/SnCurve.cpp")
 binary="$work/reader-fuzz"
 # Rebuild only when a source or header of the reader is newer than the binary.
 rebuild=1

@@ -2,7 +2,7 @@
 
 The computations are the compiled core's (the same code the command line will use): rainflow counting
 (ASTM E1049-85), Miner's damage against two-slope S-N curves (DNV-RP-C203) or chain T-N curves
-(DNV-OS-E301), peaks with Rayleigh and Weibull fits and the most probable maximum of a storm, and the
+(API RP 2SK), peaks with Rayleigh and Weibull fits and the most probable maximum of a storm, and the
 Gumbel fit of maxima over seeds. Units are those of the input (stress in Pa for S-N curves).
 """
 
@@ -42,6 +42,13 @@ class SnCurve:
         """DNV-RP-C203 (2021) Table 2-1, curve D in air (m 3 / 5, log a 12.164 / 15.606, k 0.20, t_ref 25 mm)."""
         return SnCurve(3.0, 12.164, 5.0, 15.606, 1e7, 0.20, 0.025, thickness)
 
+    @staticmethod
+    def preset(name: str, thickness: float = 0.025) -> "SnCurve":
+        """A DNV-RP-C203 (2021) curve by the name a model's fatigue.sn_curves preset takes: "dnv-<class>-air"
+        (Table 2-1) or "dnv-<class>-seawater-cp" (Table 2-2), e.g. "dnv-f1-seawater-cp"."""
+        m1, log_a1, m2, log_a2, knee, k, t_ref = _tangle.sn_preset(name)
+        return SnCurve(m1, log_a1, m2, log_a2, knee, k, t_ref, thickness)
+
     def cycles_to_failure(self, stress_range_pa: float) -> float:
         return _tangle.sn_cycles_to_failure(stress_range_pa, self.m1, self.log_a1, self.m2, self.log_a2,
                                             self.knee_cycles, self.k, self.reference_thickness, self.thickness)
@@ -55,7 +62,7 @@ def miner_damage(cycles: np.ndarray, curve: SnCurve) -> float:
 
 def chain_damage(cycles: np.ndarray, breaking_strength_n: float, m: float = 3.0, a_d: float = 316.0) -> float:
     """Miner's sum of rainflow cycles of tension [N] against a chain T-N curve N R^m = a_D (R = range /
-    breaking strength; DNV-OS-E301: a_D = 1000 studlink, 316 studless, m = 3)."""
+    breaking strength; API RP 2SK (2005) 7.5: a_D = 1000 studlink, 316 studless, m = 3)."""
     return _tangle.tn_damage(np.asarray(cycles, dtype=float).reshape(-1, 3), breaking_strength_n, m, a_d)
 
 
@@ -105,3 +112,28 @@ class GumbelFit:
 
 def gumbel_fit(maxima: Sequence[float]) -> GumbelFit:
     return GumbelFit(*_tangle.fit_gumbel([float(x) for x in maxima]))
+
+
+def read_fatigue(folder) -> dict:
+    """The fatigue results of a run (``tangle run`` or ``Model.run`` of a model with a ``fatigue`` block):
+    per line (keyed by its file stem, the line name for plain names) the columns of fatigue/<line>.csv as
+    numpy arrays: arc_length_m, damage_run, damage_per_year, life_years, cycles, largest_stress_range_MPa,
+    largest_tension_range_kN (NaN where not applicable), worst_point_deg; and line_type, curve (lists)."""
+    import csv
+    from pathlib import Path
+
+    out = {}
+    for path in sorted((Path(folder) / "fatigue").glob("*.csv")):
+        if path.name == "summary.csv":
+            continue
+        with open(path, newline="") as f:
+            rows = list(csv.DictReader(f))
+        columns = {}
+        for key in rows[0].keys() if rows else []:
+            values = [r[key] for r in rows]
+            if key in ("line_type", "curve"):
+                columns[key] = values
+            else:
+                columns[key] = np.array([float(v) if v != "" else math.nan for v in values])
+        out[path.stem] = columns
+    return out

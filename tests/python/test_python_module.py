@@ -334,9 +334,10 @@ def test_design_statistics_functions() -> None:
 
 
 def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_path: Path) -> None:
-    # dynamics/statistics.csv (theory 13.3) is the library's estimate on the end tension at the output times
-    # after the ramp: recomputed here from dynamics/end_forces.csv (printed to 7 digits) with
-    # tangle.statistics. The fairlead held still in a JONSWAP sea (6 m, 10 s): a wave-driven response.
+    # dynamics/statistics.csv (theory 13.3) is the library's estimate on the end tension at every step after
+    # the ramp (PeakTracker: turning points, time-weighted mean): recomputed here with tangle.statistics from
+    # dynamics/end_forces.csv written at every step (printed to 7 digits). The fairlead held still in a
+    # JONSWAP sea (6 m, 10 s): a wave-driven response.
     from tangle import statistics as st
 
     m = tangle.Model.load(MOORING)
@@ -344,6 +345,7 @@ def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_pa
     m.set("environment.waves", {"type": "jonswap", "significant_height": 6, "peak_period": 10, "azimuth": 0})
     m.set("dynamics.duration", 120)
     m.set("dynamics.time_step", 0.05)
+    m.set("dynamics.output_interval", 0.05)
     m.set("output.vtk", False)
     m.set("output.storm_duration", 7200)
     out = m.run(tmp_path / "run", report=False)
@@ -354,11 +356,19 @@ def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_pa
         rows = {r["end"]: r for r in csv.DictReader(f)}
     b = rows["B"]
     e = st.extreme_estimate(ends[after, 0], ends[after, col["mooring1_end_b_tension_N"]], storm_duration_s=7200)
-    assert int(b["samples"]) == int(after.sum())
+    assert abs(int(b["samples"]) - int(after.sum())) <= 1  # the step at the ramp's end: a rounding of time
+    # The same peaks (the largest values between up-crossings: exact, to the CSV's digits) ...
     assert int(b["peaks"]) == len(e.peaks) > 5
     assert float(b["storm_duration_s"]) == 7200
-    assert float(b["upcrossing_period_s"]) == pytest.approx(e.upcrossing_period_s, rel=1e-4)
-    for key, value in (("mean_N", e.mean), ("rayleigh_sigma_N", e.rayleigh_sigma), ("rayleigh_mpm_N", e.rayleigh_mpm),
-                       ("weibull_mpm_N", e.weibull_mpm)):
-        assert float(b[key]) == pytest.approx(value, rel=1e-4), key
+    # ... the same mean (time-weighted by the trapezoid rule against the samples' mean: 1/n apart at the ends)
+    # and so the same fits; Tz within 2 %: the run interpolates each up-crossing between the turning points
+    # around it, not between samples, which moves the first and last crossing by up to a quarter period over
+    # ~10 periods; the most probable maxima within 0.5 % (2 % on Tz is 0.3 % on ln N); the Weibull shape
+    # within 1 %: its least-squares fit on ln(peak - mean) is sensitive to the mean through the smallest
+    # excesses (0.6 % here for the means' 1e-5).
+    assert float(b["mean_N"]) == pytest.approx(e.mean, rel=1e-4)
+    assert float(b["upcrossing_period_s"]) == pytest.approx(e.upcrossing_period_s, rel=2e-2)
+    for key, value, tolerance in (("rayleigh_sigma_N", e.rayleigh_sigma, 1e-4), ("rayleigh_mpm_N", e.rayleigh_mpm, 5e-3),
+                                  ("weibull_mpm_N", e.weibull_mpm, 5e-3), ("weibull_shape", e.weibull_shape, 1e-2)):
+        assert float(b[key]) == pytest.approx(value, rel=tolerance), key
     assert float(b["rayleigh_mpm_N"]) > float(b["max_N"])  # a 2 h storm has more peaks than the run

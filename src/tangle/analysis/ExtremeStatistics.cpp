@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -28,6 +29,64 @@ PeakSet findPeaks(const std::vector<double>& times, const std::vector<double>& v
   for (std::size_t k = 0; k + 1 < crossingIndex.size(); ++k)
     out.peaks.push_back(*std::max_element(values.begin() + static_cast<std::ptrdiff_t>(crossingIndex[k]),
                                           values.begin() + static_cast<std::ptrdiff_t>(crossingIndex[k + 1])));
+  if (crossings.size() >= 2)
+    out.upcrossingPeriod = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  return out;
+}
+
+void PeakTracker::add(double time, double value) {
+  if (m_samples == 0) {
+    m_points.push_back({time, value});
+    m_candidate = {time, value};
+    m_min = m_max = value;
+  } else {
+    // Trapezoidal time weights: each interval counts the mean of its two samples.
+    const double dt = time - m_lastTime;
+    const double mid = 0.5 * (value + m_lastValue);
+    m_weight += dt;
+    m_sum += dt * mid;
+    m_sumSquares += dt * 0.5 * (value * value + m_lastValue * m_lastValue);
+    m_min = std::min(m_min, value);
+    m_max = std::max(m_max, value);
+    const double gate = m_gate * (m_max - m_min);
+    if (m_direction == 0) {
+      if (std::abs(value - m_points.back().value) > gate) {
+        m_direction = value > m_points.back().value ? 1 : -1;
+        m_candidate = {time, value};
+      }
+    } else if ((value - m_candidate.value) * m_direction >= 0.0) {
+      m_candidate = {time, value};  // carries on beyond the candidate
+    } else if (std::abs(value - m_candidate.value) > gate) {
+      m_points.push_back(m_candidate);  // turned back by more than the gate: the candidate was a turning point
+      m_candidate = {time, value};
+      m_direction = -m_direction;
+    }
+  }
+  m_lastTime = time;
+  m_lastValue = value;
+  ++m_samples;
+}
+
+PeakSet PeakTracker::peaks() const {
+  PeakSet out;
+  if (m_samples == 0) return out;
+  out.mean = m_weight > 0.0 ? m_sum / m_weight : m_lastValue;
+  out.standardDeviation = m_weight > 0.0 ? std::sqrt(std::max(0.0, m_sumSquares / m_weight - out.mean * out.mean)) : 0.0;
+  std::vector<Point> points = m_points;
+  if (m_direction != 0) points.push_back(m_candidate);
+  std::vector<double> crossings;
+  double peak = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < points.size(); ++i) {
+    const Point& a = points[i - 1];
+    const Point& b = points[i];
+    if (a.value < out.mean && b.value >= out.mean) {
+      if (!crossings.empty()) out.peaks.push_back(peak);
+      const double f = (out.mean - a.value) / (b.value - a.value);
+      crossings.push_back(a.time + f * (b.time - a.time));
+      peak = -std::numeric_limits<double>::infinity();
+    }
+    peak = std::max(peak, b.value);
+  }
   if (crossings.size() >= 2)
     out.upcrossingPeriod = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
   return out;

@@ -29,6 +29,44 @@ struct PeakSet {
 /// Peaks of `values` sampled at `times` [s] (same length, increasing).
 PeakSet findPeaks(const std::vector<double>& times, const std::vector<double>& values);
 
+/// The peaks of a history given one sample at a time, with bounded memory: a run tracks the tension and
+/// bending moment at every node of every line at every step. It keeps the time-weighted mean and variance
+/// of every sample and the turning points of the history with reversals smaller than a hysteresis gate
+/// h = `gate` x (the range seen so far) left out (wiggles of the time integration or of higher modes that
+/// would otherwise be stored and counted as up-crossings). peaks() then finds the largest value between
+/// consecutive up-crossings of the mean among the turning points (exact for the peaks; the up-crossing
+/// times are interpolated linearly between the turning points around them).
+class PeakTracker {
+ public:
+  explicit PeakTracker(double gate = 1e-3) : m_gate(gate) {}
+  /// Adds the sample `value` at `time` [s] (increasing).
+  void add(double time, double value);
+  /// Number of samples added.
+  long samples() const { return m_samples; }
+  /// Largest sample.
+  double maximum() const { return m_max; }
+  /// Time from the first to the last sample [s].
+  double duration() const { return m_weight; }
+  /// Turning points kept.
+  std::size_t turningPoints() const { return m_points.size(); }
+  /// The peaks, mean (time-weighted), standard deviation and Tz of what was added (the open extreme at the
+  /// end counts as the last turning point).
+  PeakSet peaks() const;
+
+ private:
+  struct Point {
+    double time, value;
+  };
+  double m_gate;
+  std::vector<Point> m_points;  // confirmed turning points (the first sample is the first)
+  Point m_candidate{0.0, 0.0};  // the extreme since the last turning point
+  int m_direction = 0;          // +1 rising to the candidate, -1 falling, 0 not yet moved beyond the gate
+  double m_min = 0.0, m_max = 0.0;
+  double m_lastTime = 0.0, m_lastValue = 0.0;
+  double m_weight = 0.0, m_sum = 0.0, m_sumSquares = 0.0;  // time-weighted
+  long m_samples = 0;
+};
+
 /// A fitted distribution of the peaks' excess a over the mean, as a Weibull F(a) = 1 - exp(-(a / alpha)^beta)
 /// (a Rayleigh of parameter sigma is alpha = sigma sqrt(2), beta = 2).
 struct PeakFit {

@@ -2,11 +2,14 @@
 /// @file SnCurve.hpp
 /// S-N curves as data and Miner's damage sum (DNV-RP-C203 (2021) section 2.4: two-slope curves
 /// log10 N = log10 a - m log10(S (t / t_ref)^k), the second slope beyond the knee; the thickness correction
-/// applies for t > t_ref) and chain T-N curves (DNV-OS-E301 (2021) Ch.2 Sec.2 [6.2]: N R^m = a_D, R the
-/// tension range over the reference breaking strength). Check a curve's constants against the edition the
+/// applies for t > t_ref) and T-N curves of chain and rope: API RP 2SK (2005) 7.5, N R^m = K with R the
+/// tension range over the reference breaking strength, or DNV-OS-E301 (2021) Ch.2 Sec.2 [6.2],
+/// N = a_D s^-m with s the nominal stress range in MPa. Check a curve's constants against the edition the
 /// design follows: the presets here are the cited ones.
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tangle/analysis/Rainflow.hpp"
@@ -30,6 +33,13 @@ struct SnCurve {
   /// DNV-RP-C203 (2021) Table 2-1, curve D in air: m1 = 3, log a1 = 12.164, m2 = 5, log a2 = 15.606,
   /// knee at 1e7 cycles, k = 0.20, t_ref = 25 mm.
   static SnCurve dnvD(double thickness = 0.025);
+  /// A DNV-RP-C203 (2021) curve by name: "dnv-<class>-air" (Table 2-1: B1, B2, C, C1, C2, D, E, F, F1, F3,
+  /// G, W1, W2, W3; knee at 1e7 cycles) or "dnv-<class>-seawater-cp" (Table 2-2, in seawater with cathodic
+  /// protection: B1, C, D, E, F, F1; knee at 1e6 cycles), with the class's thickness exponent and
+  /// t_ref = 25 mm. Empty for an unknown name.
+  static std::optional<SnCurve> preset(std::string_view name);
+  /// The names preset() knows, for messages.
+  static std::vector<std::string> presetNames();
 
   /// Cycles to failure N at stress range `range` [Pa] ([-]; +inf for a zero range).
   double cyclesToFailure(double range) const;
@@ -37,11 +47,19 @@ struct SnCurve {
   double kneeRange() const;
 };
 
-/// A chain T-N curve: N R^m = a_D (R = tension range / reference breaking strength).
+/// A T-N curve of chain or rope. API RP 2SK (2005) 7.5: N R^m = K, R = tension range / reference breaking
+/// strength (K = 1000 for studlink, 316 for studless chain, m = 3). DNV-OS-E301 (2021) Ch.2 Sec.2 [6.2]
+/// (`stressBased`): N = a_D s^-m, s = tension range / nominal area in MPa (a_D = 1.2e11 for studlink,
+/// 6.0e10 for studless chain, m = 3; the nominal area of chain is two legs, pi d^2 / 2).
 struct TnCurve {
   double m = 3.0;          ///< [-]
-  double aD = 1000.0;      ///< [-]: 1000 for studlink, 316 for studless chain (DNV-OS-E301 Ch.2 Sec.2, fatigue of chain)
-  double breakingStrength = 1.0;  ///< reference breaking strength [N]
+  double aD = 1000.0;      ///< K [-] (API), or a_D [MPa^m] (DNV, stressBased)
+  double breakingStrength = 1.0;  ///< reference breaking strength [N] (API)
+  bool stressBased = false;       ///< DNV's form
+  double nominalArea = 1.0;       ///< nominal area [m^2] (DNV)
+  /// A preset by name: "api-studlink", "api-studless" (then set breakingStrength), "dnv-studlink",
+  /// "dnv-studless" (then set nominalArea). Empty for an unknown name.
+  static std::optional<TnCurve> preset(std::string_view name);
   double cyclesToFailure(double tensionRange) const;  ///< tension range [N] -> N [-]
 };
 

@@ -309,6 +309,55 @@ void Hdf5Results::writeClearance(const contact::ClearanceEnvelope& envelope) {
   }
 }
 
+void Hdf5Results::writeFatigue(const analysis::FatigueDamage& fatigue,
+                               const std::vector<analysis::FatigueDamage::Line>& damage) {
+  for (const analysis::FatigueDamage::Line& line : damage) {
+    const std::string g = "/fatigue/" + m_stems[static_cast<std::size_t>(line.line)];
+    m_file->createGroup(g);
+    const std::uint64_t n = line.nodes.size();
+    const auto column = [&](const char* name, const char* units, const char* description, auto get) {
+      std::vector<double> v;
+      for (const analysis::FatigueDamage::Node& node : line.nodes) v.push_back(get(node));
+      m_file->writeArray(g + "/" + name, v, {n}, units, description);
+    };
+    const double factor = fatigue.annualFactor();
+    column("arc_length", "m", "arc length from end A", [](const auto& x) { return x.arcLength; });
+    column("damage_run", "-", "Miner damage over the counted duration", [](const auto& x) { return x.damage; });
+    column("damage_per_year", "-", "Miner damage per year (occurrence x year / counted duration)",
+           [&](const auto& x) { return x.damage * factor; });
+    column("life_years", "year", "fatigue life 1 / (design factor x damage per year)",
+           [&](const auto& x) { return fatigue.life(x.damage); });
+    column("cycles", "-", "rainflow cycles at the worst point", [](const auto& x) { return x.cycles; });
+    column("largest_range", "Pa or N", "largest stress range [Pa] (S-N) or tension range [N] (T-N)",
+           [](const auto& x) { return x.largestRange; });
+    column("worst_point", "deg", "angle of the worst point round the section from material axis 2",
+           [](const auto& x) { return x.worstAngle; });
+    m_file->setAttribute(g, "counted_duration_s", fatigue.countedDuration());
+  }
+}
+
+void Hdf5Results::writeClashDamage(const std::vector<analysis::LineClashDamage>& damage, double energyThreshold) {
+  for (const analysis::LineClashDamage& line : damage) {
+    const std::string g = "/contact/clash_damage/" + m_stems[static_cast<std::size_t>(line.line)];
+    m_file->createGroup(g);
+    const std::uint64_t n = line.bins.size();
+    const auto column = [&](const char* name, const char* units, const char* description, auto get) {
+      std::vector<double> v;
+      for (const analysis::ClashDamageBin& b : line.bins) v.push_back(get(b));
+      m_file->writeArray(g + "/" + name, v, {n}, units, description);
+    };
+    column("from", "m", "start of the bin (arc length from end A)", [](const auto& b) { return b.from; });
+    column("to", "m", "end of the bin", [](const auto& b) { return b.to; });
+    column("impacts", "-", "impacts that began in the bin", [](const auto& b) { return double(b.impacts); });
+    column("impacts_above", "-", "impacts with an energy above the threshold (attribute energy_threshold_J)",
+           [](const auto& b) { return double(b.impactsAbove); });
+    column("energy", "J", "accumulated impact energy", [](const auto& b) { return b.energy; });
+    column("largest_energy", "J", "largest impact energy", [](const auto& b) { return b.largestEnergy; });
+    column("largest_velocity", "m/s", "largest impact velocity", [](const auto& b) { return b.largestVelocity; });
+    m_file->setAttribute(g, "energy_threshold_J", energyThreshold);
+  }
+}
+
 void Hdf5Results::close() {
   if (!m_file) return;
   m_file->close();

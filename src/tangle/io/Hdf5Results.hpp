@@ -15,6 +15,10 @@
 ///                             range/<quantity>_{min,max,mean}
 ///     /dynamics/vessels/<vessel>/motion [time, (x, y, z, rx, ry, rz)]
 ///     /contact/events/<field> [event], /clearance/<line>/<other>/... [node]
+///     /contact/clash_damage/<line>/ from, to, impacts, impacts_above, energy, largest_energy,
+///                             largest_velocity [bin]
+///     /fatigue/<line>/        arc_length, damage_run, damage_per_year, life_years, cycles, largest_range,
+///                             worst_point [node]
 ///     /xdmf/<line>/segments   [element, 2] node indices (the XDMF polyline topology)
 ///     /xdmf/<line>/t<k>/      position, effective_tension, bending_moment, curvature, torque at output k,
 ///                             every output.vtk_interval (the frames results.xdmf shows in ParaView)
@@ -27,6 +31,8 @@
 #include <string>
 #include <vector>
 
+#include "tangle/analysis/ClashDamage.hpp"
+#include "tangle/analysis/FatigueDamage.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/ContactEvents.hpp"
 #include "tangle/io/DynamicRecorder.hpp"
@@ -57,6 +63,11 @@ class Hdf5Results {
   void writeRanges(const DynamicRecorder& recorder);
   void writeContactEvents(const std::vector<contact::ContactEvent>& events);
   void writeClearance(const contact::ClearanceEnvelope& envelope);
+  /// Fatigue damage along the lines (analysis::FatigueDamage::finish of `fatigue`; same numbers as
+  /// fatigue/<line>.csv).
+  void writeFatigue(const analysis::FatigueDamage& fatigue, const std::vector<analysis::FatigueDamage::Line>& damage);
+  /// Clash damage along the lines (same numbers as contact/clash_damage.csv).
+  void writeClashDamage(const std::vector<analysis::LineClashDamage>& damage, double energyThreshold);
   /// Flushes, closes the file and writes results.xdmf (the dynamics, or the static shape).
   void close();
 

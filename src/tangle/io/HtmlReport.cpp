@@ -255,6 +255,34 @@ void HtmlReport::setRange(int line, const std::vector<double>& tensionMin,
                   sigArray(momentMax, 4, 1e-3), sigArray(curvatureMin, 3), sigArray(curvatureMax, 3));
 }
 
+void HtmlReport::setFatigue(const analysis::FatigueDamage& fatigue,
+                            const std::vector<analysis::FatigueDamage::Line>& damage) {
+  const double factor = fatigue.annualFactor();
+  m_fatigue = array(damage.size(), [&](std::size_t i) {
+    const analysis::FatigueDamage::Line& l = damage[i];
+    std::vector<double> arc, annual;
+    for (const analysis::FatigueDamage::Node& n : l.nodes) {
+      arc.push_back(n.arcLength);
+      annual.push_back(n.damage * factor);
+    }
+    return fmt::format("{{\"line\":{},\"arc\":{},\"damage\":{}}}", l.line, sigArray(arc, 6), sigArray(annual, 4));
+  });
+}
+
+void HtmlReport::setClashDamage(const std::vector<analysis::LineClashDamage>& damage) {
+  m_clashDamage = array(damage.size(), [&](std::size_t i) {
+    const analysis::LineClashDamage& l = damage[i];
+    std::vector<double> mid, energy, impacts;
+    for (const analysis::ClashDamageBin& b : l.bins) {
+      mid.push_back(0.5 * (b.from + b.to));
+      energy.push_back(b.energy);
+      impacts.push_back(b.impacts);
+    }
+    return fmt::format("{{\"line\":{},\"arc\":{},\"energy\":{},\"impacts\":{}}}", l.line, sigArray(mid, 6),
+                       sigArray(energy, 4), sigArray(impacts, 6));
+  });
+}
+
 void HtmlReport::setClash(const contact::LineContact& contact, const contact::ClashReport& clash) {
   const auto& lines = m_model->lines();
   std::string out = "{\"events\":";
@@ -403,7 +431,8 @@ std::string HtmlReport::json() const {
       array(m_rangeParts.size(),
             [&](std::size_t l) { return m_rangeParts[l].empty() ? std::string("null") : m_rangeParts[l]; }) +
       ",");
-  f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + "}\n");
+  f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + ",\"fatigue\":" + m_fatigue +
+          ",\"clashDamage\":" + m_clashDamage + "}\n");
   return std::move(f.s);
 }
 

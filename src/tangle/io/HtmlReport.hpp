@@ -17,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "tangle/analysis/ClashDamage.hpp"
+#include "tangle/analysis/FatigueDamage.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
 #include "tangle/solver/LineResults.hpp"
@@ -59,6 +61,10 @@ class HtmlReport {
   void setClash(const contact::LineContact& contact, const contact::ClashReport& clash);
   /// Static and dynamic clearance envelopes.
   void setEnvelope(const contact::ClearanceEnvelope& envelope);
+  /// Fatigue damage per year along the lines with fatigue properties (plotted as log10).
+  void setFatigue(const analysis::FatigueDamage& fatigue, const std::vector<analysis::FatigueDamage::Line>& damage);
+  /// Impact energy accumulated per bin along the lines (clash damage).
+  void setClashDamage(const std::vector<analysis::LineClashDamage>& damage);
   /// Status of the run ("completed", ...) and its end time [s].
   void setStatus(const std::string& status) { m_status = status; }
 
@@ -91,7 +97,7 @@ class HtmlReport {
   std::vector<std::vector<double>> m_endTension;  ///< per line end (2 per line), per output [N]
   std::vector<std::vector<double>> m_vesselXY;    ///< per vessel x, y (2 per vessel), per output [m]
   std::vector<std::string> m_rangeParts;          ///< JSON range graphs per line
-  std::string m_clash = "null", m_envelope = "[]";
+  std::string m_clash = "null", m_envelope = "[]", m_fatigue = "[]", m_clashDamage = "[]";
 };
 
 }  // namespace tangle::io

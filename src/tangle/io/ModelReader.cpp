@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "tangle/analysis/SnCurve.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
 
@@ -971,7 +972,7 @@ std::string knownLine(const Value& name, const ModelSpec& spec, std::string_view
 void readContact(const Value& v, ModelSpec& spec) {
   const Map m(v, {"pairs", "self_contact", "stiffness", "restitution", "model", "friction_coefficient",
                   "friction_velocity", "clearance_margin", "exclude", "exclusion_zones", "exclude_connections",
-                  "impact_velocity_threshold", "event_separation_time"});
+                  "impact_velocity_threshold", "event_separation_time", "clash_damage"});
   const model::ContactSpec d;
   model::ContactSpec& c = spec.contact;
   c.enabled = true;
@@ -1026,6 +1027,148 @@ void readContact(const Value& v, ModelSpec& spec) {
   c.excludeConnections = m.boolean("exclude_connections", d.excludeConnections);
   c.impactVelocityThreshold = m.number("impact_velocity_threshold", d.impactVelocityThreshold, nonNegative());
   c.eventSeparationTime = m.number("event_separation_time", d.eventSeparationTime, nonNegative());
+  if (const std::optional<Value> damage = m.find("clash_damage")) {
+    const Map cd(*damage, {"bin_length", "energy_threshold"});
+    c.damageBinLength = cd.number("bin_length", d.damageBinLength, positive().withHint("length of a bin along a line [m]"));
+    c.damageEnergyThreshold = cd.number("energy_threshold", d.damageEnergyThreshold,
+                                        nonNegative().withHint("impact energy the line tolerates [J]"));
+  }
+}
+
+/// fatigue: {start_time, occurrence, design_factor, sn_curves, tn_curves, sections} (docs/model-format.md).
+void readFatigue(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"start_time", "occurrence", "design_factor", "sn_curves", "tn_curves", "sections"});
+  const model::FatigueSpec d;
+  model::FatigueSpec& f = spec.fatigue;
+  f.enabled = true;
+  f.startTime = m.number("start_time", d.startTime, anyNumber().withHint("seconds; default: the ramp time"));
+  f.occurrence = m.number("occurrence", d.occurrence, Range{0.0, 1.0, true, false, "in (0, 1]"}.withHint(
+                                                          "fraction of a year the sea state stands for"));
+  f.designFactor = m.number("design_factor", d.designFactor, atLeastUpTo(1.0, 100.0).withHint("DFF, e.g. 3 or 10"));
+  NameRegistry curveNames("fatigue curve");
+  const auto presetConflict = [](const Map& c, std::initializer_list<const char*> keys) {
+    for (const char* k : keys)
+      if (const std::optional<Value> given = c.find(k))
+        given->fail(fmt::format("'{}' with 'preset': give a preset or the curve's constants, not both", k));
+  };
+  if (const std::optional<Value> curves = m.find("sn_curves")) {
+    for (const Value& item : curves->items(1, ItemLabel::Name)) {
+      const Map c(item, {"name", "preset", "m1", "log_a1", "m2", "log_a2", "knee_cycles", "thickness_exponent",
+                         "reference_thickness"});
+      model::SnCurveSpec sn;
+      sn.name = curveNames.add(c);
+      if (const std::optional<Value> preset = c.find("preset")) {
+        presetConflict(c, {"m1", "log_a1", "m2", "log_a2", "knee_cycles", "thickness_exponent", "reference_thickness"});
+        const std::string name = preset->text("a preset name");
+        const std::optional<analysis::SnCurve> p = analysis::SnCurve::preset(name);
+        if (!p) {
+          std::string known;
+          for (const std::string& n : analysis::SnCurve::presetNames()) known += (known.empty() ? "" : ", ") + n;
+          preset->fail(fmt::format("unknown S-N curve preset '{}'; expected one of {}", name, known));
+        }
+        sn.m1 = p->m1;
+        sn.logA1 = p->logA1;
+        sn.m2 = p->m2;
+        sn.logA2 = p->logA2;
+        sn.kneeCycles = p->kneeCycles;
+        sn.thicknessExponent = p->thicknessExponent;
+        sn.referenceThickness = p->referenceThickness;
+      } else {
+        sn.m1 = c.number("m1", closed(1.0, 20.0).withHint("slope of the S-N curve, 3 for welds"));
+        sn.logA1 = c.number("log_a1", closed(0.0, 40.0).withHint("log10 of the intercept, stress in MPa"));
+        sn.singleSlope = !c.find("m2");
+        sn.m2 = sn.singleSlope ? sn.m1 : c.number("m2", closed(1.0, 20.0));
+        sn.logA2 = sn.singleSlope ? sn.logA1 : c.number("log_a2", closed(0.0, 40.0));
+        if (sn.singleSlope && c.find("log_a2")) c.find("log_a2")->fail("log_a2 without m2: give both for a two-slope curve");
+        sn.kneeCycles = c.number("knee_cycles", 1e7, closed(1e3, 1e12).withHint("1e7 in air, 1e6 in seawater"));
+        sn.thicknessExponent = c.number("thickness_exponent", 0.0, closed(0.0, 1.0));
+        sn.referenceThickness = c.number("reference_thickness", 0.025, positiveUpTo(1.0).withHint("in m"));
+      }
+      f.snCurves.push_back(sn);
+    }
+  }
+  if (const std::optional<Value> curves = m.find("tn_curves")) {
+    for (const Value& item : curves->items(1, ItemLabel::Name)) {
+      const Map c(item, {"name", "preset", "m", "k", "a_d"});
+      model::TnCurveSpec tn;
+      tn.name = curveNames.add(c);
+      if (const std::optional<Value> preset = c.find("preset")) {
+        presetConflict(c, {"m", "k", "a_d"});
+        const std::string name = preset->text("a preset name");
+        const std::optional<analysis::TnCurve> p = analysis::TnCurve::preset(name);
+        if (!p)
+          preset->fail(fmt::format("unknown T-N curve preset '{}'; expected one of api-studlink, api-studless, "
+                                   "dnv-studlink, dnv-studless",
+                                   name));
+        tn.m = p->m;
+        tn.intercept = p->aD;
+        tn.stressBased = p->stressBased;
+      } else {
+        tn.m = c.number("m", closed(1.0, 20.0).withHint("slope of the T-N curve, 3 for chain"));
+        const bool api = c.find("k").has_value(), dnv = c.find("a_d").has_value();
+        if (api == dnv)
+          item.fail("a T-N curve needs exactly one of 'k' (API RP 2SK, on the ratio to the breaking strength) "
+                    "and 'a_d' (DNV-OS-E301, on the nominal stress in MPa)");
+        tn.stressBased = dnv;
+        tn.intercept = api ? c.number("k", positive()) : c.number("a_d", positive());
+      }
+      f.tnCurves.push_back(tn);
+    }
+  }
+  const Value sections = m.get("sections", "a list of {line_type, sn_curve or tn_curve, ...}");
+  for (const Value& item : sections.items(1)) {
+    const Map c(item, {"line_type", "sn_curve", "tn_curve", "outer_diameter", "wall_thickness", "scf", "points",
+                       "surface", "tension", "breaking_strength", "nominal_area", "chain_diameter"});
+    model::FatigueSectionSpec s;
+    const Value typeValue = c.get("line_type", "the name of a line type");
+    s.lineType = typeValue.text("a line type name");
+    const auto type = spec.lineTypes.find(s.lineType);
+    if (type == spec.lineTypes.end()) typeValue.fail(fmt::format("unknown line type '{}'", s.lineType));
+    for (const model::FatigueSectionSpec& other : f.sections)
+      if (other.lineType == s.lineType)
+        typeValue.fail(fmt::format("line type '{}' has fatigue properties already", s.lineType));
+    const std::optional<Value> snName = c.find("sn_curve"), tnName = c.find("tn_curve");
+    if (snName.has_value() == tnName.has_value())
+      item.fail("a fatigue section needs exactly one of 'sn_curve' (stress) and 'tn_curve' (tension)");
+    s.tensionCurve = tnName.has_value();
+    const Value& curveValue = s.tensionCurve ? *tnName : *snName;
+    s.curve = curveValue.text("a curve name");
+    if (s.tensionCurve) {
+      const auto it = std::find_if(f.tnCurves.begin(), f.tnCurves.end(),
+                                   [&](const model::TnCurveSpec& t) { return t.name == s.curve; });
+      if (it == f.tnCurves.end()) curveValue.fail(fmt::format("unknown T-N curve '{}' (fatigue.tn_curves)", s.curve));
+      for (const char* k : {"wall_thickness", "scf", "points", "surface", "tension", "outer_diameter"})
+        if (const std::optional<Value> given = c.find(k)) given->fail(fmt::format("'{}' is for S-N curves (stress)", k));
+      if (it->stressBased) {
+        const bool area = c.find("nominal_area").has_value(), chain = c.find("chain_diameter").has_value();
+        if (area == chain)
+          item.fail("a DNV T-N curve needs exactly one of 'nominal_area' [m^2] and 'chain_diameter' [m] (nominal "
+                    "area of two legs, pi d^2 / 2)");
+        s.nominalArea = area ? c.number("nominal_area", positiveUpTo(1.0).withHint("in m^2"))
+                             : 0.5 * kPi * std::pow(c.number("chain_diameter", positiveUpTo(1.0).withHint("in m")), 2);
+      } else {
+        s.breakingStrength = c.number("breaking_strength", positive().withHint("reference breaking strength [N]"));
+      }
+    } else {
+      if (std::none_of(f.snCurves.begin(), f.snCurves.end(), [&](const model::SnCurveSpec& t) { return t.name == s.curve; }))
+        curveValue.fail(fmt::format("unknown S-N curve '{}' (fatigue.sn_curves)", s.curve));
+      for (const char* k : {"breaking_strength", "nominal_area", "chain_diameter"})
+        if (const std::optional<Value> given = c.find(k)) given->fail(fmt::format("'{}' is for T-N curves (tension)", k));
+      s.outerDiameter = c.number("outer_diameter", type->second.outerDiameter,
+                                 positiveUpTo(kMaxDiameter).withHint("steel outer diameter [m]"));
+      s.wallThickness = c.number("wall_thickness", Range{0.0, 0.5 * s.outerDiameter, true, false,
+                                                         "above 0 and below half the outer diameter"});
+      s.stressConcentration = c.number("scf", 1.0, closed(1.0, 20.0).withHint("stress concentration factor"));
+      s.points = c.integer("points", s.points, closed(8.0, 360.0).withHint("points round the circumference"));
+      if (const std::optional<Value> surface = c.find("surface"))
+        s.innerSurface = surface->choice<bool>({{"outer", false}, {"inner", true}});
+      if (const std::optional<Value> tension = c.find("tension"))
+        s.wallTension = tension->choice<bool>({{"wall", true}, {"effective", false}});
+    }
+    f.sections.push_back(s);
+  }
+  if (!spec.dynamics.enabled)
+    spec.warnings.push_back(v.where() + "fatigue is computed from the dynamics, and this model has none (dynamics.duration)");
 }
 
 /// wake_interference: a list of {upstream, downstream, model, coefficients, upstream_drag_coefficient};
@@ -1251,6 +1394,8 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"clearance", false, "a map {required, pairs} (DNV-RP-F203 clearance check)", readClearance},
     TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}", readWakes},
     TopLevelBlock{"output", false, "a map of output settings", readOutput},
+    TopLevelBlock{"fatigue", false, "a map {sections, sn_curves, tn_curves, ...} (fatigue of the dynamics)",
+                  readFatigue},
 };
 
 ModelSpec readDocument(const YAML::Node& root, const std::string& source) {

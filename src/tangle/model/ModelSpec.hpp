@@ -275,6 +275,10 @@ struct ContactSpec {
   bool excludeConnections = true;    ///< exclude lines near a shared connection point automatically
   double impactVelocityThreshold = 0.05;  ///< an event is an impact if it starts faster than this [m/s]
   double eventSeparationTime = 0.2;  ///< an event ends after this long without contact [s]
+  /// Clash damage (analysis/ClashDamage.hpp): impacts binned along each line in bins of this length [m].
+  double damageBinLength = 1.0;
+  /// Impacts with an energy above this are counted per bin (DNV-RP-F203's tolerable impact energy) [J].
+  double damageEnergyThreshold = 0.0;
 };
 
 /// Wake interference of one upstream line on one downstream line (docs/theory.md sec. 12): the steady
@@ -294,6 +298,57 @@ struct WakeSpec {
 struct ClearanceSpec {
   double required = 0.0;  ///< required surface-to-surface clearance [m]
   std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs checked (empty: see ClearanceEnvelope)
+};
+
+/// An S-N curve of the fatigue analysis as numbers (analysis::SnCurve; DNV-RP-C203 (2021) section 2.4):
+/// log10 N = log10 a - m log10(S (t / t_ref)^k), S in MPa, the second slope beyond the knee.
+struct SnCurveSpec {
+  std::string name;
+  double m1 = 3.0, logA1 = 12.164;   ///< slope [-] and log10 a [-] up to the knee
+  double m2 = 5.0, logA2 = 15.606;   ///< beyond the knee
+  double kneeCycles = 1e7;           ///< [-]
+  double thicknessExponent = 0.0;    ///< k [-]
+  double referenceThickness = 0.025; ///< t_ref [m]
+  bool singleSlope = false;
+};
+
+/// A T-N curve of chain or rope as numbers (analysis::TnCurve): API RP 2SK (2005) 7.5, N R^m = K with R the
+/// tension range over the reference breaking strength; or DNV-OS-E301 (2021) Ch.2 Sec.2 [6], N = a_D s^-m
+/// with s the nominal stress range [MPa].
+struct TnCurveSpec {
+  std::string name;
+  bool stressBased = false;  ///< DNV's form (a_D on stress) instead of API's (K on the ratio to the MBS)
+  double m = 3.0;            ///< [-]
+  double intercept = 1000.0; ///< K [-] (API) or a_D [MPa^m] (DNV)
+};
+
+/// Fatigue properties of the lines of one line type.
+struct FatigueSectionSpec {
+  std::string lineType;      ///< the line type these apply to
+  std::string curve;         ///< name of an S-N curve (stress) or a T-N curve (tension)
+  bool tensionCurve = false; ///< `curve` is a T-N curve
+  double outerDiameter = 0.0;   ///< steel outer diameter [m] (S-N)
+  double wallThickness = 0.0;   ///< steel wall thickness [m] (S-N; also the thickness of the thickness correction)
+  double stressConcentration = 1.0;  ///< SCF on the stress range [-]
+  int points = 16;              ///< points round the circumference (S-N; 1 for a line without bending)
+  bool innerSurface = false;    ///< bending stress at the inner instead of the outer surface
+  bool wallTension = true;      ///< axial stress from the wall tension (true) or the effective tension
+  double breakingStrength = 0.0;  ///< reference breaking strength [N] (API T-N)
+  double nominalArea = 0.0;       ///< nominal area for the stress of a DNV T-N curve [m^2]
+};
+
+/// Fatigue analysis of the dynamics (analysis/FatigueDamage.hpp, docs/theory.md section 13).
+struct FatigueSpec {
+  bool enabled = false;
+  std::vector<SnCurveSpec> snCurves;
+  std::vector<TnCurveSpec> tnCurves;
+  std::vector<FatigueSectionSpec> sections;
+  /// Time from which cycles are counted [s] (negative: the dynamics' ramp time).
+  double startTime = -1.0;
+  /// Fraction of a year the simulated sea state stands for [-]: annual damage = run damage x fraction x
+  /// one year / counted duration.
+  double occurrence = 1.0;
+  double designFactor = 1.0;  ///< design fatigue factor DFF [-]: life = 1 / (DFF x annual damage)
 };
 
 /// Result output settings.
@@ -334,6 +389,7 @@ struct ModelSpec {
   std::vector<WakeSpec> wakes;  ///< wake interference pairs (empty: none)
   ClearanceSpec clearance;
   OutputSpec output;
+  FatigueSpec fatigue;
   /// Plausibility warnings of the reader (value legal but likely a unit or typing mistake), each naming
   /// the file, line and key; printed by `check` and `run`.
   std::vector<std::string> warnings;

@@ -124,6 +124,20 @@ PYBIND11_MODULE(_tangle, m) {
       py::arg("range"), py::arg("m1"), py::arg("log_a1"), py::arg("m2"), py::arg("log_a2"), py::arg("knee_cycles"),
       py::arg("k"), py::arg("reference_thickness"), py::arg("thickness"));
   m.def(
+      "sn_preset",
+      [](const std::string& name) {
+        const std::optional<tangle::analysis::SnCurve> c = tangle::analysis::SnCurve::preset(name);
+        if (!c) {
+          std::string known;
+          for (const std::string& n : tangle::analysis::SnCurve::presetNames()) known += (known.empty() ? "" : ", ") + n;
+          throw py::value_error("unknown S-N curve preset '" + name + "'; expected one of " + known);
+        }
+        return py::make_tuple(c->m1, c->logA1, c->m2, c->logA2, c->kneeCycles, c->thicknessExponent,
+                              c->referenceThickness);
+      },
+      py::arg("name"),
+      "The constants (m1, log_a1, m2, log_a2, knee_cycles, k, reference_thickness) of a DNV-RP-C203 preset.");
+  m.def(
       "sn_damage",
       [snCurve, toCycles](const py::array_t<double>& cycles, double m1, double logA1, double m2, double logA2,
                           double kneeCycles, double k, double referenceThickness, double thickness) {

@@ -16,8 +16,9 @@
 
 #include "tangle/analysis/EnergyAccount.hpp"
 #include "tangle/analysis/EquilibriumAudit.hpp"
-#include "tangle/analysis/ExtremeStatistics.hpp"
+#include "tangle/analysis/FatigueDamage.hpp"
 #include "tangle/analysis/RangeGraphs.hpp"
+#include "tangle/analysis/ResponseStatistics.hpp"
 #include "tangle/contact/ClashReport.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/StaticContactReport.hpp"
@@ -31,6 +32,7 @@
 #include "tangle/io/HtmlReport.hpp"
 #include "tangle/io/ResultWriter.hpp"
 #include "tangle/io/VtkWriter.hpp"
+#include "tangle/results/DesignOutputs.hpp"
 #include "tangle/results/RunText.hpp"
 #include "tangle/vessel/VesselSystem.hpp"
 
@@ -47,13 +49,16 @@ std::string readTextFile(const fs::path& p) {
   return s.str();
 }
 
-/// Horizontal distance [m] of each vessel's reference point at `state` from its position in the model.
+/// Horizontal distance [m] of vessel `v`'s reference point at `state` from its position in the model.
+double horizontalOffset(const model::Model& m, const model::State& state, std::size_t v) {
+  const Vec3 d =
+      state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] - m.spec().vessels[v].position;
+  return std::hypot(d.x(), d.y());
+}
+
+/// The largest horizontal offset [m] of each vessel so far, updated with `state`.
 void updateMaxOffsets(const model::Model& m, const model::State& state, std::vector<double>& maxOffset) {
-  for (std::size_t v = 0; v < maxOffset.size(); ++v) {
-    const Vec3 d = state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] -
-                   m.spec().vessels[v].position;
-    maxOffset[v] = std::max(maxOffset[v], std::hypot(d.x(), d.y()));
-  }
+  for (std::size_t v = 0; v < maxOffset.size(); ++v) maxOffset[v] = std::max(maxOffset[v], horizontalOffset(m, state, v));
 }
 
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
@@ -174,56 +179,6 @@ void writeReport(const io::HtmlReport& report, const fs::path& outDir, RunLog& l
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0 + collected).count();
   log.info(fmt::format("report written to {} ({:.1f} MB, {:.2f} s)\n", page.string(),
                        static_cast<double>(fs::file_size(page)) / 1e6, seconds));
-}
-
-/// dynamics/statistics.csv (theory 13.3): per line end, the peaks of its tension at the output times, their
-/// Rayleigh and Weibull fits and the most probable maximum of a storm of `storm` [s]. Returns the log's lines.
-std::string writeExtremeStatistics(const fs::path& dir, const std::vector<solver::LineSnapshot>& lines,
-                                   const std::vector<double>& times, const std::vector<std::vector<double>>& history,
-                                   double storm) {
-  core::OutputFile out(dir / "dynamics" / "statistics.csv");
-  out.write("line,end,samples,duration_s,mean_N,standard_deviation_N,upcrossing_period_s,peaks,max_N,"
-            "storm_duration_s,rayleigh_sigma_N,rayleigh_mpm_N,weibull_scale_N,weibull_shape,weibull_mpm_N\n");
-  std::string text;
-  for (std::size_t l = 0; l < lines.size(); ++l)
-    for (int end = 0; end < 2; ++end) {
-      const std::vector<double>& x = history[2 * l + static_cast<std::size_t>(end)];
-      std::string row = fmt::format("{},{},{},{:.6f}", lines[l].name, end == 0 ? 'A' : 'B', x.size(),
-                                    times.empty() ? 0.0 : times.back() - times.front());
-      analysis::PeakSet peaks;
-      if (x.size() >= 3) peaks = analysis::findPeaks(times, x);
-      if (peaks.peaks.size() < 2 || !(peaks.upcrossingPeriod > 0.0)) {
-        out.write(row + ",,,,,,,,,,,\n");  // too few peaks for a fit
-        continue;
-      }
-      const double n = storm / peaks.upcrossingPeriod;
-      const analysis::PeakFit rayleigh = analysis::fitRayleigh(peaks);
-      const analysis::PeakFit weibull = analysis::fitWeibull(peaks);
-      const double observed = *std::max_element(x.begin(), x.end());
-      const double mpmR = rayleigh.mostProbableMaximum(peaks.mean, n);
-      const double mpmW = weibull.mostProbableMaximum(peaks.mean, n);
-      out.write(row + fmt::format(",{:.6e},{:.6e},{:.6f},{},{:.6e},{:.1f},{:.6e},{:.6e},{:.6e},{:.6f},{:.6e}\n",
-                                  peaks.mean, peaks.standardDeviation, peaks.upcrossingPeriod, peaks.peaks.size(),
-                                  observed, storm, rayleigh.scale / std::sqrt(2.0), mpmR, weibull.scale,
-                                  weibull.shape, mpmW));
-      if (end == 1) {
-        text += fmt::format("  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
-                            "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
-                            lines[l].name, peaks.peaks.size(), peaks.upcrossingPeriod, storm / 3600.0, mpmR / 1000.0,
-                            mpmW / 1000.0, weibull.shape, observed / 1000.0);
-        // A Rayleigh distribution of the peaks is a Weibull of shape 2: far from it (a response driven by a
-        // regular motion has peaks of one size, a snapping one a long tail) the Rayleigh estimate misleads.
-        if (weibull.shape < 1.5 || weibull.shape > 3.0)
-          text += fmt::format("  warning: the peaks of line '{}' end B are not Rayleigh distributed (Weibull shape "
-                              "{:.2f}, 2 for Rayleigh): use the Weibull estimate or the maxima of several seeds\n",
-                              lines[l].name, weibull.shape);
-      }
-      if (peaks.peaks.size() < 20 && end == 1)
-        text += fmt::format("  warning: only {} peaks of line '{}' end B: the fits are rough (a longer record)\n",
-                            peaks.peaks.size(), lines[l].name);
-    }
-  out.close();
-  return text.empty() ? std::string() : "extreme statistics (dynamics/statistics.csv):\n" + text;
 }
 
 }  // namespace
@@ -484,9 +439,12 @@ bool RunOutputs::runDynamics() {
   // a background thread while the integration goes on (BackgroundWriter's contract: each job gets copies
   // of the state it needs). Declared after everything its jobs use, so that it finishes them before
   // those are destroyed, also when the dynamics end with an exception.
-  // Tension of every line end (A, B of each line) at the output times after the ramp [N], and those times [s].
-  std::vector<double> endHistoryTime;
-  std::vector<std::vector<double>> endHistory(2 * lines.size());
+  // The peaks of the end tensions and of the tension and moment along the lines after the ramp, from every
+  // step (the writer's); of each vessel's horizontal offset (this thread's).
+  analysis::ResponseStatistics statistics(lines, m.spec().dynamics.rampTime);
+  std::vector<analysis::PeakTracker> offsetPeaks(m.vessels().size());
+  // Fatigue damage along the lines, counted by the writer from every step (the writer's alone).
+  analysis::FatigueDamage fatigue(m);
   io::BackgroundWriter writer;
   const auto submitSteps = [&] {
     if (pendingSteps->size() == 0) return;
@@ -501,6 +459,8 @@ bool RunOutputs::runDynamics() {
         solver::computeLineResults(m, sim.assembler(), stepState, nullptr, stepSnapshot,
                                    solver::LineResultDetail::SectionForces);
         recorder.accumulate(stepSnapshot, steps->dt[k]);
+        if (!fatigue.empty()) fatigue.accumulate(stepSnapshot, stepState);
+        statistics.accumulate(stepSnapshot, stepState.time);
         if (envelope) envelope->record(stepState);  // every step: the minimum must not fall between outputs
         if (tensionerFile) {
           std::string row = fmt::format("{:.6f}", stepState.time);
@@ -549,14 +509,6 @@ bool RunOutputs::runDynamics() {
           std::ranges::copy(m.vesselMotion(s, v), vesselMotion.begin() + 6 * v);
         writer.submit([&, shared, time = s.time, motion = vesselMotion] {
           recorder.record(time, *shared);
-          // End tensions at the output times after the ramp, for the extreme statistics (writer's thread).
-          if (time >= m.spec().dynamics.rampTime - 1e-9) {
-            endHistoryTime.push_back(time);
-            for (std::size_t l = 0; l < shared->size(); ++l) {
-              endHistory[2 * l].push_back((*shared)[l].endTensionA);
-              endHistory[2 * l + 1].push_back((*shared)[l].endTensionB);
-            }
-          }
           if (h5) h5->record(time, *shared, motion);
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", time);
@@ -575,6 +527,8 @@ bool RunOutputs::runDynamics() {
         b.dt.push_back(dt);
         b.positions.insert(b.positions.end(), s.position.begin(), s.position.end());
         updateMaxOffsets(m, s, maxOffset);
+        if (s.time >= m.spec().dynamics.rampTime - 1e-9)
+          for (std::size_t v = 0; v < offsetPeaks.size(); ++v) offsetPeaks[v].add(s.time, horizontalOffset(m, s, v));
         if (energy) energy->step(s, dt);
         if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
         if (tensionerFile) {
@@ -608,8 +562,40 @@ bool RunOutputs::runDynamics() {
     clash->write(outDir);
     log.info(clash->terminalSummary());
   }
+  if (!fatigue.empty()) {
+    const std::vector<analysis::FatigueDamage::Line> damage = fatigue.finish();
+    log.info(writeFatigue(outDir, m, fatigue, damage));
+    if (h5) h5->writeFatigue(fatigue, damage);
+    if (report) timed([&] { report->setFatigue(fatigue, damage); });
+  }
+  if (clash) {
+    std::vector<int> contactLines;
+    for (const auto& pair : sim.contact()->allowedPairs()) contactLines.insert(contactLines.end(), pair.begin(), pair.end());
+    std::sort(contactLines.begin(), contactLines.end());
+    const model::ContactSpec& cs = m.spec().contact;
+    const std::vector<analysis::LineClashDamage> damage = analysis::clashDamage(
+        m, contactLines, sim.contact()->events(), cs.damageBinLength, cs.damageEnergyThreshold);
+    log.info(writeClashDamage(outDir, m, damage, cs.damageEnergyThreshold));
+    if (h5) h5->writeClashDamage(damage, cs.damageEnergyThreshold);
+    if (report) timed([&] { report->setClashDamage(damage); });
+  }
   writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
-  log.info(writeExtremeStatistics(outDir, lines, endHistoryTime, endHistory, m.spec().output.stormDuration));
+  {
+    // The minimum clearance of each contact pair at the output times after the ramp (ClashReport's samples;
+    // beyond the clearance margin: the margin).
+    std::vector<std::array<int, 2>> pairs;
+    std::vector<analysis::PeakTracker> clearancePeaks;
+    if (clash) {
+      pairs = clash->pairs();
+      clearancePeaks.resize(pairs.size());
+      const double margin = m.spec().contact.clearanceMargin;
+      for (const contact::ClashReport::ClearanceSample& c : clash->samples())
+        if (c.time >= m.spec().dynamics.rampTime - 1e-9)
+          clearancePeaks[static_cast<std::size_t>(c.pair)].add(c.time, -std::min(c.clearance, margin));
+    }
+    log.info(writeExtremeStatistics(outDir, m, lines, statistics, offsetPeaks, pairs, clearancePeaks,
+                                    m.spec().output.stormDuration));
+  }
   if (energy) {
     energyFile->close();
     const analysis::EnergyTotals& t = energy->totals();

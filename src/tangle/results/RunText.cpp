@@ -115,6 +115,15 @@ std::string modelSummary(const model::Model& m) {
   if (d.enabled)
     out += fmt::format("dynamics: {:.2f} s at dt = {:.4g} s, output every {:.4g} s\n", d.duration, d.timeStep,
                        d.outputInterval);
+  if (const model::FatigueSpec& f = spec.fatigue; f.enabled) {
+    out += "fatigue:";
+    for (const model::FatigueSectionSpec& s : f.sections)
+      out += fmt::format(" {} ({} curve '{}'{});", s.lineType, s.tensionCurve ? "T-N" : "S-N", s.curve,
+                         s.tensionCurve ? "" : fmt::format(", SCF {:g}, {} points", s.stressConcentration, s.points));
+    out.back() = '\n';
+    out += fmt::format("  counted from t = {:g} s, occurrence {:g} of a year, design factor {:g}\n",
+                       f.startTime >= 0.0 ? f.startTime : d.rampTime, f.occurrence, f.designFactor);
+  }
   return out;
 }
 

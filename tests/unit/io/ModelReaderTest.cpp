@@ -1171,5 +1171,98 @@ TEST(ModelReaderStartShape, PointsBelowTheSeabedOrTooFarAreRefused) {
                   "lines[moor].start_shape[0]", "[x, y, z]");
 }
 
+
+// ----------------------------------------------------------------------------------------------------
+// Fatigue (issue 32)
+
+const std::string kFatigueBlock = R"(fatigue:
+  occurrence: 0.25
+  design_factor: 3
+  sn_curves:
+    - {name: weld, preset: dnv-f1-seawater-cp}
+    - name: mine
+      m1: 3
+      log_a1: 12.0
+  tn_curves:
+    - {name: chain-api, preset: api-studless}
+  sections:
+    - {line_type: pipe, sn_curve: weld, wall_thickness: 0.02, scf: 1.3, points: 12, surface: inner}
+    - {line_type: chain, tn_curve: chain-api, breaking_strength: 6.0e6}
+)";
+
+TEST(ModelReader, ReadsFatigueCurvesAndSections) {
+  const ModelSpec spec = readModelString(kBaseModel + kFatigueBlock, kSource);
+  const model::FatigueSpec& f = spec.fatigue;
+  ASSERT_TRUE(f.enabled);
+  EXPECT_EQ(f.occurrence, 0.25);
+  EXPECT_EQ(f.designFactor, 3.0);
+  EXPECT_LT(f.startTime, 0.0);  // default: the ramp time
+  ASSERT_EQ(f.snCurves.size(), 2u);
+  // DNV-RP-C203 (2021) Table 2-2, F1 in seawater with cathodic protection.
+  EXPECT_EQ(f.snCurves[0].logA1, 11.299);
+  EXPECT_EQ(f.snCurves[0].logA2, 14.832);
+  EXPECT_EQ(f.snCurves[0].kneeCycles, 1e6);
+  EXPECT_EQ(f.snCurves[0].thicknessExponent, 0.25);
+  EXPECT_TRUE(f.snCurves[1].singleSlope);
+  EXPECT_EQ(f.snCurves[1].logA2, 12.0);
+  ASSERT_EQ(f.tnCurves.size(), 1u);
+  EXPECT_EQ(f.tnCurves[0].intercept, 316.0);  // API RP 2SK studless
+  EXPECT_FALSE(f.tnCurves[0].stressBased);
+  ASSERT_EQ(f.sections.size(), 2u);
+  EXPECT_EQ(f.sections[0].outerDiameter, 0.3);  // the line type's
+  EXPECT_EQ(f.sections[0].wallThickness, 0.02);
+  EXPECT_EQ(f.sections[0].stressConcentration, 1.3);
+  EXPECT_EQ(f.sections[0].points, 12);
+  EXPECT_TRUE(f.sections[0].innerSurface);
+  EXPECT_TRUE(f.sections[0].wallTension);
+  EXPECT_TRUE(f.sections[1].tensionCurve);
+  EXPECT_EQ(f.sections[1].breakingStrength, 6.0e6);
+}
+
+TEST(ModelReader, DnvChainCurveTakesTheNominalAreaOfTwoLegs) {
+  const ModelSpec spec = readModelString(
+      edited(edited(kBaseModel + kFatigueBlock, "preset: api-studless", "preset: dnv-studless"),
+             "breaking_strength: 6.0e6", "chain_diameter: 0.076"),
+      kSource);
+  EXPECT_TRUE(spec.fatigue.tnCurves[0].stressBased);
+  EXPECT_EQ(spec.fatigue.tnCurves[0].intercept, 6.0e10);
+  EXPECT_NEAR(spec.fatigue.sections[1].nominalArea, kPi * 0.076 * 0.076 / 2.0, 1e-15);
+}
+
+TEST(ModelReader, RefusesBadFatigueInput) {
+  const std::string base = kBaseModel + kFatigueBlock;
+  expectInputError(edited(base, "preset: dnv-f1-seawater-cp", "preset: dnv-q9-air"), "dnv-q9-air",
+                   "fatigue.sn_curves[weld].preset", "unknown S-N curve preset 'dnv-q9-air'; expected one of dnv-b1-air");
+  expectInputError(edited(base, "sn_curve: weld, wall", "sn_curve: wled, wall"), "wled", "fatigue.sections[0].sn_curve",
+                   "unknown S-N curve 'wled'");
+  expectInputError(edited(base, "wall_thickness: 0.02", "wall_thickness: 0.2"), "wall_thickness: 0.2",
+                   "fatigue.sections[0].wall_thickness", "below half the outer diameter");
+  expectInputError(edited(base, "points: 12", "points: 4"), "points: 4", "fatigue.sections[0].points",
+                   "points round the circumference");
+  expectInputError(edited(base, "{line_type: chain, tn_curve", "{line_type: chian, tn_curve"), "chian",
+                   "fatigue.sections[1].line_type", "unknown line type 'chian'");
+  expectInputError(edited(base, "tn_curve: chain-api, breaking_strength: 6.0e6",
+                          "tn_curve: chain-api, sn_curve: weld, breaking_strength: 6.0e6"),
+                   "sn_curve: weld, breaking", "fatigue.sections[1]", "exactly one of 'sn_curve'");
+  expectInputError(edited(base, "breaking_strength: 6.0e6", "scf: 1.2"), "scf: 1.2}",
+                   "fatigue.sections[1].scf", "'scf' is for S-N curves");
+  expectInputError(edited(base, "{name: weld, preset: dnv-f1-seawater-cp}",
+                          "{name: weld, preset: dnv-f1-seawater-cp, m1: 4}"),
+                   "m1: 4", "fatigue.sn_curves[weld].m1", "give a preset or the curve's constants");
+  expectInputError(edited(base, "occurrence: 0.25", "occurrence: 1.5"), "occurrence: 1.5", "fatigue.occurrence",
+                   "in (0, 1]");
+  expectInputError(edited(base, "{line_type: chain, tn_curve", "{line_type: pipe, tn_curve"),
+                   "{line_type: pipe, tn_curve", "fatigue.sections[1].line_type", "has fatigue properties already");
+}
+
+TEST(ModelReader, ReadsClashDamageSettings) {
+  const ModelSpec spec = readModelString(
+      kBaseModel + "contact:\n  clash_damage: {bin_length: 2.5, energy_threshold: 150}\n", kSource);
+  EXPECT_EQ(spec.contact.damageBinLength, 2.5);
+  EXPECT_EQ(spec.contact.damageEnergyThreshold, 150.0);
+  expectInputError(kBaseModel + "contact:\n  clash_damage: {bin_length: 0}\n", "bin_length: 0",
+                   "contact.clash_damage.bin_length", "expected");
+}
+
 }  // namespace
 }  // namespace tangle::io

@@ -730,6 +730,19 @@
     });
     makePlot({ title: "Clearance envelope", xlabel: "arc length (m)", ylabel: "clearance (m)", series: es });
   }
+  if (data.fatigue && data.fatigue.length) {
+    makePlot({ title: "Fatigue damage per year (log10)", xlabel: "arc length from end A (m)",
+               ylabel: "log10 damage per year", series: data.fatigue.map(function (f, i) {
+                 return { name: data.lines[f.line].name, x: f.arc, colour: lineColour(f.line),
+                          y: f.damage.map(function (d) { return d > 0 ? Math.log10(d) : null; }) };
+               }) });
+  }
+  if (data.clashDamage && data.clashDamage.some(function (c) { return c.impacts.some(function (n) { return n > 0; }); })) {
+    makePlot({ title: "Clash damage: impact energy per bin", xlabel: "arc length from end A (m)",
+               ylabel: "accumulated impact energy (J)", series: data.clashDamage.map(function (c) {
+                 return { name: data.lines[c.line].name, x: c.arc, y: c.energy, colour: lineColour(c.line) };
+               }) });
+  }
   if (data.vessels.length && h.vesselXY && h.vesselXY.length && h.t.length) {
     makePlot({ title: "Vessel drift path (plan view)", xlabel: "x (m)", ylabel: "y (m)", equalAxes: true, byDistance: true,
                series: data.vessels.map(function (v, i) {

@@ -1,0 +1,54 @@
+#pragma once
+/// @file ResponseStatistics.hpp
+/// The peaks of a run's responses for their extreme statistics (docs/theory.md 13.3): the tension at both
+/// ends of every line, the effective tension and bending moment at every node of every line, and any other
+/// series the run adds (vessel offsets), each over every accepted step after the ramp (a PeakTracker per
+/// series: bounded memory, however long the run).
+/// Units: those of the series (N, N m, m); times [s].
+
+#include <string>
+#include <vector>
+
+#include "tangle/analysis/ExtremeStatistics.hpp"
+#include "tangle/solver/LineResults.hpp"
+
+namespace tangle::analysis {
+
+/// Peak trackers of the lines of a run.
+class ResponseStatistics {
+ public:
+  /// The trackers of one line.
+  struct Line {
+    PeakTracker endA, endB;                  ///< end tensions [N]
+    std::vector<PeakTracker> tension;        ///< effective tension per node [N]
+    std::vector<PeakTracker> moment;         ///< bending moment per node [N m] (empty for a cable line)
+  };
+
+  /// @param initial the lines at the start (node counts; lines without bending get no moment trackers)
+  /// @param startTime samples before this time [s] are left out (the ramp)
+  ResponseStatistics(const std::vector<solver::LineSnapshot>& initial, double startTime);
+
+  /// Adds one accepted state of the lines at `time` [s].
+  void accumulate(const std::vector<solver::LineSnapshot>& lines, double time);
+
+  double startTime() const { return m_startTime; }
+  const std::vector<Line>& lines() const { return m_lines; }
+
+ private:
+  double m_startTime;
+  std::vector<Line> m_lines;
+};
+
+/// The extreme statistics of one series: its peaks, their Rayleigh and Weibull fits and the most probable
+/// maximum of a storm of `stormDuration` [s] (N = stormDuration / Tz peaks); `valid` is false with fewer than
+/// two peaks.
+struct ExtremeEstimate {
+  bool valid = false;
+  PeakSet peaks;
+  double maximum = 0.0;  ///< largest sample
+  PeakFit rayleigh, weibull;
+  double rayleighMpm = 0.0, weibullMpm = 0.0;
+};
+ExtremeEstimate extremeEstimate(const PeakTracker& tracker, double stormDuration);
+
+}  // namespace tangle::analysis

@@ -1,0 +1,243 @@
+#include "tangle/results/DesignOutputs.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tangle/analysis/ExtremeStatistics.hpp"
+#include "tangle/core/OutputFile.hpp"
+#include "tangle/io/ResultWriter.hpp"
+
+namespace tangle::results {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The columns of an extreme estimate: mean, sd, Tz, peaks, largest, Rayleigh MPM, Weibull scale, shape and
+/// MPM, times `sign` for the values (-1: the statistics of a minimum, tracked as the peaks of -x); empty
+/// fields when there are too few peaks.
+std::string estimateFields(const analysis::ExtremeEstimate& e, double sign = 1.0) {
+  if (!e.valid) return fmt::format(",,,,{:.6e},,,,,", sign * e.maximum);
+  return fmt::format(",{:.6e},{:.6e},{:.6f},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6f},{:.6e}", sign * e.peaks.mean,
+                     e.peaks.standardDeviation, e.peaks.upcrossingPeriod, e.peaks.peaks.size(), sign * e.maximum,
+                     e.rayleigh.scale / std::sqrt(2.0), sign * e.rayleighMpm, e.weibull.scale, e.weibull.shape,
+                     sign * e.weibullMpm);
+}
+
+/// A fit the log may quote: at least 20 peaks and a Weibull shape within [1.5, 3] (a short record or a
+/// response far from Rayleigh's shape 2 extrapolates to nonsense; the CSV files keep every fit).
+bool credible(const analysis::ExtremeEstimate& e) {
+  return e.valid && e.peaks.peaks.size() >= 20 && e.weibull.shape >= 1.5 && e.weibull.shape <= 3.0;
+}
+
+/// "; rough: n peaks, shape b" for a fit that is not credible, else "".
+std::string roughness(const analysis::ExtremeEstimate& e) {
+  return credible(e) ? std::string()
+                     : fmt::format("; rough: {} peaks, shape {:.2f}", e.peaks.peaks.size(), e.weibull.shape);
+}
+
+/// The header of estimateFields; `minimum`: the columns of a minimum (min, most probable minimum "mp_min").
+std::string estimateHeader(const std::string& prefix, const std::string& unit, bool minimum = false) {
+  return fmt::format(",{0}mean_{1},{0}standard_deviation_{1},{0}upcrossing_period_s,{0}peaks,{0}{2}_{1},"
+                     "{0}rayleigh_sigma_{1},{0}rayleigh_{3}_{1},{0}weibull_scale_{1},{0}weibull_shape,{0}weibull_{3}_{1}",
+                     prefix, unit, minimum ? "min" : "max", minimum ? "mp_min" : "mpm");
+}
+
+}  // namespace
+
+std::string writeExtremeStatistics(const fs::path& dir, const model::Model& model,
+                                   const std::vector<solver::LineSnapshot>& lines,
+                                   const analysis::ResponseStatistics& statistics,
+                                   const std::vector<analysis::PeakTracker>& offsets,
+                                   const std::vector<std::array<int, 2>>& pairs,
+                                   const std::vector<analysis::PeakTracker>& clearance, double storm) {
+  std::string text;
+  // Line ends (the fairlead and anchor tensions of DNV-OS-E301 and API RP 2SK).
+  {
+    core::OutputFile out(dir / "dynamics" / "statistics.csv");
+    out.write("line,end,samples,duration_s,storm_duration_s" + estimateHeader("", "N") + "\n");
+    for (std::size_t l = 0; l < lines.size(); ++l)
+      for (int end = 0; end < 2; ++end) {
+        const analysis::ResponseStatistics::Line& t = statistics.lines()[l];
+        const analysis::PeakTracker& tracker = end == 0 ? t.endA : t.endB;
+        const analysis::ExtremeEstimate e = analysis::extremeEstimate(tracker, storm);
+        out.write(fmt::format("{},{},{},{:.6f},{:.1f}", lines[l].name, end == 0 ? 'A' : 'B', tracker.samples(),
+                              tracker.duration(), storm) +
+                  estimateFields(e) + "\n");
+        if (end == 1 && e.valid) {
+          text += fmt::format("  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
+                              "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
+                              lines[l].name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
+                              e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
+          // A Rayleigh distribution of the peaks is a Weibull of shape 2: far from it (a response driven by a
+          // regular motion has peaks of one size, a snapping one a long tail) the Rayleigh estimate misleads.
+          if (e.weibull.shape < 1.5 || e.weibull.shape > 3.0)
+            text += fmt::format("  warning: the peaks of line '{}' end B are not Rayleigh distributed (Weibull shape "
+                                "{:.2f}, 2 for Rayleigh): use the Weibull estimate or the maxima of several seeds\n",
+                                lines[l].name, e.weibull.shape);
+        }
+        if (end == 1 && e.peaks.peaks.size() < 20)
+          text += fmt::format("  warning: only {} peaks of line '{}' end B: the fits are rough (a longer record)\n",
+                              e.peaks.peaks.size(), lines[l].name);
+      }
+    out.close();
+  }
+  // Along every line: the range graph's statistical counterpart.
+  const std::vector<std::string> stems = io::lineFileStems(lines);
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const analysis::ResponseStatistics::Line& t = statistics.lines()[l];
+    fs::create_directories(dir / "dynamics" / stems[l]);
+    core::OutputFile out(dir / "dynamics" / stems[l] / "statistics.csv");
+    out.write("arc_length_m" + estimateHeader("tension_", "N") + estimateHeader("moment_", "Nm") + "\n");
+    // The log names the largest most probable maxima among the credible fits only.
+    double worstTension = 0.0, worstMoment = 0.0, tensionAt = 0.0, momentAt = 0.0;
+    for (std::size_t i = 0; i < t.tension.size(); ++i) {
+      const analysis::ExtremeEstimate te = analysis::extremeEstimate(t.tension[i], storm);
+      std::string row = fmt::format("{:.4f}", lines[l].arcLength[i]) + estimateFields(te);
+      if (credible(te) && te.weibullMpm > worstTension) {
+        worstTension = te.weibullMpm;
+        tensionAt = lines[l].arcLength[i];
+      }
+      if (t.moment.empty()) {
+        row += ",,,,,,,,,,";
+      } else {
+        const analysis::ExtremeEstimate me = analysis::extremeEstimate(t.moment[i], storm);
+        row += estimateFields(me);
+        if (credible(me) && me.weibullMpm > worstMoment) {
+          worstMoment = me.weibullMpm;
+          momentAt = lines[l].arcLength[i];
+        }
+      }
+      out.write(row + "\n");
+    }
+    out.close();
+    if (worstTension == 0.0 && worstMoment == 0.0)
+      text += fmt::format("  line '{}' along its length: no credible fit (fewer than 20 peaks or a Weibull shape outside "
+                          "[1.5, 3] at every node; dynamics/{}/statistics.csv has them all)\n",
+                          lines[l].name, stems[l]);
+    else
+      text += fmt::format("  line '{}' along its length: most probable maximum tension {} at {:.1f} m{} "
+                          "(Weibull, where the fit is credible; dynamics/{}/statistics.csv)\n",
+                          lines[l].name, worstTension > 0.0 ? fmt::format("{:.1f} kN", worstTension / 1000.0) : "-",
+                          tensionAt,
+                          worstMoment > 0.0 ? fmt::format(", bending moment {:.2f} kN m at {:.1f} m", worstMoment / 1000.0,
+                                                          momentAt)
+                                            : std::string(),
+                          stems[l]);
+  }
+  if (!offsets.empty()) {
+    core::OutputFile out(dir / "dynamics" / "vessel_statistics.csv");
+    out.write("vessel,samples,duration_s,storm_duration_s" + estimateHeader("offset_", "m") + "\n");
+    for (std::size_t v = 0; v < offsets.size(); ++v) {
+      const analysis::ExtremeEstimate e = analysis::extremeEstimate(offsets[v], storm);
+      out.write(fmt::format("{},{},{:.6f},{:.1f}", model.vessels()[v].name, offsets[v].samples(),
+                            offsets[v].duration(), storm) +
+                estimateFields(e) + "\n");
+      if (e.valid)
+        text += fmt::format("  vessel '{}': most probable maximum offset {:.2f} m (Weibull{}), largest in the run {:.2f} m\n",
+                            model.vessels()[v].name, e.weibullMpm, roughness(e), e.maximum);
+    }
+    out.close();
+  }
+  if (!pairs.empty()) {
+    // The minimum clearance: the peaks of minus the clearance, reported with their sign turned back.
+    fs::create_directories(dir / "contact");
+    core::OutputFile out(dir / "contact" / "clearance_statistics.csv");
+    out.write("line_1,line_2,samples,duration_s,storm_duration_s" + estimateHeader("clearance_", "m", true) + "\n");
+    for (std::size_t p = 0; p < pairs.size(); ++p) {
+      const analysis::ExtremeEstimate e = analysis::extremeEstimate(clearance[p], storm);
+      const std::string& a = model.lines()[static_cast<std::size_t>(pairs[p][0])].name;
+      const std::string& b = model.lines()[static_cast<std::size_t>(pairs[p][1])].name;
+      out.write(fmt::format("{},{},{},{:.6f},{:.1f}", a, b, clearance[p].samples(), clearance[p].duration(), storm) +
+                estimateFields(e, -1.0) + "\n");
+      if (e.valid)
+        text += fmt::format("  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull{}), smallest in the "
+                            "run {:.3f} m\n",
+                            a, b, -e.weibullMpm, roughness(e), -e.maximum);
+    }
+    out.close();
+  }
+  return text.empty() ? std::string() : "extreme statistics (dynamics/statistics.csv):\n" + text;
+}
+
+std::string writeFatigue(const fs::path& dir, const model::Model& model, const analysis::FatigueDamage& fatigue,
+                         const std::vector<analysis::FatigueDamage::Line>& damage) {
+  if (damage.empty()) return {};
+  const model::FatigueSpec& spec = model.spec().fatigue;
+  const double factor = fatigue.annualFactor();
+  std::vector<std::string> names;
+  for (const model::Line& l : model.lines()) names.push_back(l.name);
+  const std::vector<std::string> stems = io::uniqueFileStems(names);
+  const auto number = [](double v) { return std::isfinite(v) ? fmt::format("{:.6e}", v) : std::string("inf"); };
+  std::string text = fmt::format(
+      "fatigue (fatigue/): {:.1f} s counted from t = {:.1f} s, scaled to a year by occurrence {:g}, design "
+      "factor {:g}\n",
+      fatigue.countedDuration(), fatigue.firstCountedTime(), spec.occurrence, spec.designFactor);
+  fs::create_directories(dir / "fatigue");
+  core::OutputFile summary(dir / "fatigue" / "summary.csv");
+  summary.write(
+      "line,arc_length_m,line_type,curve,damage_run,damage_per_year,life_years,counted_duration_s,occurrence,"
+      "design_factor\n");
+  for (const analysis::FatigueDamage::Line& line : damage) {
+    core::OutputFile out(dir / "fatigue" / (stems[static_cast<std::size_t>(line.line)] + ".csv"));
+    out.write(
+        "arc_length_m,line_type,curve,damage_run,damage_per_year,life_years,cycles,largest_stress_range_MPa,"
+        "largest_tension_range_kN,worst_point_deg\n");
+    const analysis::FatigueDamage::Node* worst = nullptr;
+    for (const analysis::FatigueDamage::Node& n : line.nodes) {
+      out.write(fmt::format("{:.4f},{},{},{:.6e},{},{},{:.1f},{},{},{:.1f}\n", n.arcLength, n.lineType,
+                            n.tension ? "T-N" : "S-N", n.damage, number(n.damage * factor),
+                            number(fatigue.life(n.damage)), n.cycles,
+                            n.tension ? "" : fmt::format("{:.6g}", n.largestRange / 1e6),
+                            n.tension ? fmt::format("{:.6g}", n.largestRange / 1e3) : "", n.worstAngle));
+      if (!worst || n.damage > worst->damage) worst = &n;
+    }
+    out.close();
+    summary.write(fmt::format("{},{:.4f},{},{},{:.6e},{},{},{:.6f},{:g},{:g}\n", line.name, worst->arcLength,
+                              worst->lineType, worst->tension ? "T-N" : "S-N", worst->damage,
+                              number(worst->damage * factor), number(fatigue.life(worst->damage)),
+                              fatigue.countedDuration(), spec.occurrence, spec.designFactor));
+    text += fmt::format("  line '{}': shortest life {} years at {:.1f} m from end A (line type '{}', {}{}), "
+                        "damage {:.3e} per year\n",
+                        line.name, fmt::format("{:.4g}", fatigue.life(worst->damage)), worst->arcLength,
+                        worst->lineType,
+                        worst->tension ? fmt::format("largest tension range {:.1f} kN", worst->largestRange / 1e3)
+                                       : fmt::format("largest stress range {:.1f} MPa", worst->largestRange / 1e6),
+                        worst->tension ? "" : fmt::format(" at the point at {:.0f} deg", worst->worstAngle),
+                        worst->damage * factor);
+  }
+  summary.close();
+  return text;
+}
+
+std::string writeClashDamage(const fs::path& dir, const model::Model& model,
+                             const std::vector<analysis::LineClashDamage>& damage, double energyThreshold) {
+  fs::create_directories(dir / "contact");
+  core::OutputFile out(dir / "contact" / "clash_damage.csv");
+  out.write(fmt::format(
+      "line,from_m,to_m,impacts,impacts_above_{:g}_J,energy_J,largest_energy_J,largest_velocity_m_s\n",
+      energyThreshold));
+  std::string text;
+  for (const analysis::LineClashDamage& d : damage) {
+    const std::string& name = model.lines()[static_cast<std::size_t>(d.line)].name;
+    const analysis::ClashDamageBin* worst = nullptr;
+    int above = 0;
+    for (const analysis::ClashDamageBin& b : d.bins) {
+      out.write(fmt::format("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n", name, b.from, b.to, b.impacts,
+                            b.impactsAbove, b.energy, b.largestEnergy, b.largestVelocity));
+      if (b.impacts > 0 && (!worst || b.energy > worst->energy)) worst = &b;
+      above += b.impactsAbove;
+    }
+    if (worst)
+      text += fmt::format(
+          "  line '{}': {} impacts ({} above {:g} J); most energy {:.4g} J in {} impacts at {:.1f}-{:.1f} m\n", name,
+          d.impacts(), above, energyThreshold, worst->energy, worst->impacts, worst->from, worst->to);
+  }
+  out.close();
+  return text.empty() ? std::string() : "clash damage (contact/clash_damage.csv):\n" + text;
+}
+
+}  // namespace tangle::results
