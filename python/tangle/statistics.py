@@ -114,26 +114,37 @@ def gumbel_fit(maxima: Sequence[float]) -> GumbelFit:
     return GumbelFit(*_tangle.fit_gumbel([float(x) for x in maxima]))
 
 
+def _read_columns(path) -> dict:
+    """The columns of a results CSV file as numpy arrays (numbers; NaN for an empty field) or lists (text)."""
+    import csv
+
+    with open(path, newline="") as f:
+        rows = list(csv.DictReader(f))
+    columns = {}
+    for key in rows[0].keys() if rows else []:
+        values = [r[key] for r in rows]
+        try:
+            columns[key] = np.array([float(v) if v != "" else math.nan for v in values])
+        except ValueError:
+            columns[key] = values
+    return columns
+
+
 def read_fatigue(folder) -> dict:
     """The fatigue results of a run (``tangle run`` or ``Model.run`` of a model with a ``fatigue`` block):
     per line (keyed by its file stem, the line name for plain names) the columns of fatigue/<line>.csv as
     numpy arrays: arc_length_m, damage_run, damage_per_year, life_years, cycles, largest_stress_range_MPa,
     largest_tension_range_kN (NaN where not applicable), worst_point_deg; and line_type, curve (lists)."""
-    import csv
     from pathlib import Path
 
-    out = {}
-    for path in sorted((Path(folder) / "fatigue").glob("*.csv")):
-        if path.name == "summary.csv":
-            continue
-        with open(path, newline="") as f:
-            rows = list(csv.DictReader(f))
-        columns = {}
-        for key in rows[0].keys() if rows else []:
-            values = [r[key] for r in rows]
-            if key in ("line_type", "curve"):
-                columns[key] = values
-            else:
-                columns[key] = np.array([float(v) if v != "" else math.nan for v in values])
-        out[path.stem] = columns
-    return out
+    return {p.stem: _read_columns(p) for p in sorted((Path(folder) / "fatigue").glob("*.csv")) if p.name != "summary.csv"}
+
+
+def read_line_statistics(folder) -> dict:
+    """The extreme statistics along the lines of a dynamic run (dynamics/<line>/statistics.csv, docs/theory.md
+    13.3): per line file stem, the columns as numpy arrays: arc_length_m and, for tension_ (N) and moment_
+    (N m), mean, standard_deviation, upcrossing_period_s, peaks, max, rayleigh_sigma, rayleigh_mpm,
+    weibull_scale, weibull_shape, weibull_mpm (NaN where a node had too few peaks)."""
+    from pathlib import Path
+
+    return {p.parent.name: _read_columns(p) for p in sorted((Path(folder) / "dynamics").glob("*/statistics.csv"))}

@@ -173,6 +173,18 @@ def test_annual_damage_life_and_summary(run):
     assert "fatigue (fatigue/)" in log and "shortest life" in log
 
 
+def test_statistics_along_the_line_read_back(run):
+    # dynamics/riser/statistics.csv: every node, its largest tension at least its most probable maximum's
+    # mean, and the regular motion's peaks at the motion's period (10 s) where the tension follows it.
+    s = st.read_line_statistics(run)["riser"]
+    f = st.read_fatigue(run)["riser"]
+    np.testing.assert_allclose(s["arc_length_m"], f["arc_length_m"])
+    assert np.all(s["tension_max_N"] >= s["tension_mean_N"])
+    top = -1  # the flex joint, moved by the motion
+    assert s["tension_upcrossing_period_s"][top] == pytest.approx(10.0, rel=0.02)
+    assert s["tension_peaks"][top] == 5  # 60 s after the ramp (10 s): six up-crossings, five peaks between
+
+
 def test_clash_damage_bins_the_impacts_of_the_clash_report(tmp_path):
     """tests/data/clash-damage.yaml: a hose striking a pipe once a period. contact/clash_damage.csv must hold
     every impact of contact/events.csv once on each line, in the bin where it began, with its energy; and

@@ -34,39 +34,6 @@ PeakSet findPeaks(const std::vector<double>& times, const std::vector<double>& v
   return out;
 }
 
-void PeakTracker::add(double time, double value) {
-  if (m_samples == 0) {
-    m_points.push_back({time, value});
-    m_candidate = {time, value};
-    m_min = m_max = value;
-  } else {
-    // Trapezoidal time weights: each interval counts the mean of its two samples.
-    const double dt = time - m_lastTime;
-    const double mid = 0.5 * (value + m_lastValue);
-    m_weight += dt;
-    m_sum += dt * mid;
-    m_sumSquares += dt * 0.5 * (value * value + m_lastValue * m_lastValue);
-    m_min = std::min(m_min, value);
-    m_max = std::max(m_max, value);
-    const double gate = m_gate * (m_max - m_min);
-    if (m_direction == 0) {
-      if (std::abs(value - m_points.back().value) > gate) {
-        m_direction = value > m_points.back().value ? 1 : -1;
-        m_candidate = {time, value};
-      }
-    } else if ((value - m_candidate.value) * m_direction >= 0.0) {
-      m_candidate = {time, value};  // carries on beyond the candidate
-    } else if (std::abs(value - m_candidate.value) > gate) {
-      m_points.push_back(m_candidate);  // turned back by more than the gate: the candidate was a turning point
-      m_candidate = {time, value};
-      m_direction = -m_direction;
-    }
-  }
-  m_lastTime = time;
-  m_lastValue = value;
-  ++m_samples;
-}
-
 PeakSet PeakTracker::peaks() const {
   PeakSet out;
   if (m_samples == 0) return out;

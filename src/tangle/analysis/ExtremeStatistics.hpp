@@ -14,6 +14,8 @@
 ///   probability q: mode - scale ln(-ln q).
 /// Units: those of the history (N, m, N m, ...); times [s].
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace tangle::analysis {
@@ -39,7 +41,8 @@ PeakSet findPeaks(const std::vector<double>& times, const std::vector<double>& v
 class PeakTracker {
  public:
   explicit PeakTracker(double gate = 1e-3) : m_gate(gate) {}
-  /// Adds the sample `value` at `time` [s] (increasing).
+  /// Adds the sample `value` at `time` [s] (increasing). Inline: a run calls it for every node at every
+  /// step (1.7 % of the mooring example's profile out of line).
   void add(double time, double value);
   /// Number of samples added.
   long samples() const { return m_samples; }
@@ -66,6 +69,39 @@ class PeakTracker {
   double m_weight = 0.0, m_sum = 0.0, m_sumSquares = 0.0;  // time-weighted
   long m_samples = 0;
 };
+
+inline void PeakTracker::add(double time, double value) {
+  if (m_samples == 0) {
+    m_points.push_back({time, value});
+    m_candidate = {time, value};
+    m_min = m_max = value;
+  } else {
+    // Trapezoidal time weights: each interval counts the mean of its two samples.
+    const double dt = time - m_lastTime;
+    const double mid = 0.5 * (value + m_lastValue);
+    m_weight += dt;
+    m_sum += dt * mid;
+    m_sumSquares += dt * 0.5 * (value * value + m_lastValue * m_lastValue);
+    m_min = std::min(m_min, value);
+    m_max = std::max(m_max, value);
+    const double gate = m_gate * (m_max - m_min);
+    if (m_direction == 0) {
+      if (std::abs(value - m_points.back().value) > gate) {
+        m_direction = value > m_points.back().value ? 1 : -1;
+        m_candidate = {time, value};
+      }
+    } else if ((value - m_candidate.value) * m_direction >= 0.0) {
+      m_candidate = {time, value};  // carries on beyond the candidate
+    } else if (std::abs(value - m_candidate.value) > gate) {
+      m_points.push_back(m_candidate);  // turned back by more than the gate: the candidate was a turning point
+      m_candidate = {time, value};
+      m_direction = -m_direction;
+    }
+  }
+  m_lastTime = time;
+  m_lastValue = value;
+  ++m_samples;
+}
 
 /// A fitted distribution of the peaks' excess a over the mean, as a Weibull F(a) = 1 - exp(-(a / alpha)^beta)
 /// (a Rayleigh of parameter sigma is alpha = sigma sqrt(2), beta = 2).

@@ -269,6 +269,13 @@ void HtmlReport::setFatigue(const analysis::FatigueDamage& fatigue,
   });
 }
 
+void HtmlReport::setPeakFit(int line, const analysis::PeakSet& peaks, const analysis::PeakFit& rayleigh,
+                            const analysis::PeakFit& weibull) {
+  m_peakFits.push_back(fmt::format("{{\"line\":{},\"mean\":{},\"peaks\":{},\"rayleigh\":[{},{}],\"weibull\":[{},{}]}}",
+                                   line, sig(peaks.mean, 8), sigArray(peaks.peaks, 6), sig(rayleigh.scale, 6),
+                                   sig(rayleigh.shape, 6), sig(weibull.scale, 6), sig(weibull.shape, 6)));
+}
+
 void HtmlReport::setClashDamage(const std::vector<analysis::LineClashDamage>& damage) {
   m_clashDamage = array(damage.size(), [&](std::size_t i) {
     const analysis::LineClashDamage& l = damage[i];
@@ -432,7 +439,8 @@ std::string HtmlReport::json() const {
             [&](std::size_t l) { return m_rangeParts[l].empty() ? std::string("null") : m_rangeParts[l]; }) +
       ",");
   f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + ",\"fatigue\":" + m_fatigue +
-          ",\"clashDamage\":" + m_clashDamage + "}\n");
+          ",\"clashDamage\":" + m_clashDamage +
+          ",\"peakFits\":" + array(m_peakFits.size(), [&](std::size_t i) { return m_peakFits[i]; }) + "}\n");
   return std::move(f.s);
 }
 

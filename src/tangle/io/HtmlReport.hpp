@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tangle/analysis/ClashDamage.hpp"
+#include "tangle/analysis/ExtremeStatistics.hpp"
 #include "tangle/analysis/FatigueDamage.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
@@ -65,6 +66,9 @@ class HtmlReport {
   void setFatigue(const analysis::FatigueDamage& fatigue, const std::vector<analysis::FatigueDamage::Line>& damage);
   /// Impact energy accumulated per bin along the lines (clash damage).
   void setClashDamage(const std::vector<analysis::LineClashDamage>& damage);
+  /// The peaks of line `line`'s end B tension [N] and their fits (extreme statistics), for a Weibull plot.
+  void setPeakFit(int line, const analysis::PeakSet& peaks, const analysis::PeakFit& rayleigh,
+                  const analysis::PeakFit& weibull);
   /// Status of the run ("completed", ...) and its end time [s].
   void setStatus(const std::string& status) { m_status = status; }
 
@@ -98,6 +102,7 @@ class HtmlReport {
   std::vector<std::vector<double>> m_vesselXY;    ///< per vessel x, y (2 per vessel), per output [m]
   std::vector<std::string> m_rangeParts;          ///< JSON range graphs per line
   std::string m_clash = "null", m_envelope = "[]", m_fatigue = "[]", m_clashDamage = "[]";
+  std::vector<std::string> m_peakFits;
 };
 
 }  // namespace tangle::io

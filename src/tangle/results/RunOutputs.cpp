@@ -595,6 +595,14 @@ bool RunOutputs::runDynamics() {
     }
     log.info(writeExtremeStatistics(outDir, m, lines, statistics, offsetPeaks, pairs, clearancePeaks,
                                     m.spec().output.stormDuration));
+    if (report)
+      timed([&] {
+        for (std::size_t l = 0; l < lines.size(); ++l) {
+          const analysis::ExtremeEstimate e =
+              analysis::extremeEstimate(statistics.lines()[l].endB, m.spec().output.stormDuration);
+          if (e.valid) report->setPeakFit(static_cast<int>(l), e.peaks, e.rayleigh, e.weibull);
+        }
+      });
   }
   if (energy) {
     energyFile->close();

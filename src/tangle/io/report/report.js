@@ -730,6 +730,24 @@
     });
     makePlot({ title: "Clearance envelope", xlabel: "arc length (m)", ylabel: "clearance (m)", series: es });
   }
+  // Weibull plot of the peaks of each line's end B tension: ln(-ln(1 - F)) against ln(excess over the mean),
+  // F = i / (n + 1); a Weibull distribution is a straight line of slope shape (Rayleigh: 2).
+  (data.peakFits || []).forEach(function (p) {
+    var a = p.peaks.map(function (v) { return (v - p.mean) / 1000; }).filter(function (v) { return v > 0; }).sort(function (x, y) { return x - y; });
+    if (a.length < 3) return;
+    var n = a.length, xs = a.map(Math.log), ys = a.map(function (_, i) { return Math.log(-Math.log(1 - (i + 1) / (n + 1))); });
+    var x0 = xs[0] - 0.2, x1 = xs[n - 1] + 0.2;
+    function line(fit) {  // y = shape (x - ln(scale / 1 kN))
+      var c = Math.log(fit[0] / 1000);
+      return { x: [x0, x1], y: [fit[1] * (x0 - c), fit[1] * (x1 - c)] };
+    }
+    var r = line(p.rayleigh), w = line(p.weibull);
+    makePlot({ title: data.lines[p.line].name + " end B tension peaks: Weibull plot of the fits", xlabel: "ln(peak - mean, kN)",
+               ylabel: "ln(-ln(1 - F))", series: [
+                 { name: "peaks", x: xs, y: ys, colour: "#333", dash: "1 4" },
+                 { name: "Rayleigh", x: r.x, y: r.y, colour: lineColour(0) },
+                 { name: "Weibull (shape " + p.weibull[1].toFixed(2) + ")", x: w.x, y: w.y, colour: lineColour(1), dash: "5 3" }] });
+  });
   if (data.fatigue && data.fatigue.length) {
     makePlot({ title: "Fatigue damage per year (log10)", xlabel: "arc length from end A (m)",
                ylabel: "log10 damage per year", series: data.fatigue.map(function (f, i) {
