@@ -194,3 +194,27 @@ def test_xdmf_opens_in_paraview(mooring: Path, tmp_path: Path) -> None:
         bounds = [position[:, 0].min(), position[:, 0].max(), position[:, 1].min(), position[:, 1].max(),
                   position[:, 2].min(), position[:, 2].max()]
         assert got["bounds"] == pytest.approx(bounds, rel=1e-6, abs=1e-5), name
+
+
+def test_time_histories_written_are_those_the_model_asks_for(mooring: Path, tmp_path: Path) -> None:
+    # output.time_histories: [effective_tension, position] writes those two (CSV and results.h5) and no
+    # other time history along the line; end forces, range graphs and statistics stay; the values equal
+    # the full run's.
+    out = run(ROOT / "examples" / "mooring-dynamics" / "model.yaml", tmp_path / "some",
+              {"  duration: 200 ": "  duration: 12 ",
+               "output:\n": "output:\n  format: both\n  time_histories: [effective_tension, position]\n"})
+    files = sorted(p.name for p in (out / "dynamics" / "mooring1").iterdir())
+    assert files == ["effective_tension_N.csv", "range.csv", "statistics.csv", "x_m.csv", "y_m.csv", "z_m.csv"]
+    assert (out / "dynamics" / "end_forces.csv").is_file()
+    with h5py.File(out / "results.h5", "r") as some, h5py.File(mooring / "results.h5", "r") as full:
+        g = some["dynamics/lines/mooring1"]
+        assert sorted(g.keys()) == ["arc_length", "effective_tension", "end_force", "end_tension", "position", "range"]
+        np.testing.assert_array_equal(g["effective_tension"][...], full["dynamics/lines/mooring1/effective_tension"][...])
+    header, a = read_csv(out / "dynamics" / "mooring1" / "effective_tension_N.csv")
+    header_full, b = read_csv(mooring / "dynamics" / "mooring1" / "effective_tension_N.csv")
+    assert header == header_full
+    np.testing.assert_array_equal(a, b)
+    # `none`: no time history along the lines at all.
+    out = run(ROOT / "examples" / "mooring-dynamics" / "model.yaml", tmp_path / "none",
+              {"  duration: 200 ": "  duration: 2 ", "output:\n": "output:\n  format: both\n  time_histories: none\n"})
+    assert sorted(p.name for p in (out / "dynamics" / "mooring1").iterdir()) == ["range.csv", "statistics.csv"]

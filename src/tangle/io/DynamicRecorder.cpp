@@ -55,8 +55,16 @@ std::vector<VtkPolyline> toPolylines(const std::vector<solver::LineSnapshot>& li
 }
 
 DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::LineSnapshot>& initial,
-                                 double vtkInterval, bool timeHistories)
+                                 double vtkInterval, const model::TimeHistorySelection& timeHistories)
     : m_dir(dir), m_stems(lineFileStems(initial)), m_vtkInterval(vtkInterval), m_ranges(initial) {
+  const model::TimeHistorySelection& t = timeHistories;
+  // kQuantities: x, y, z, tension, moment, curvature, moment x, y, z, torque.
+  const bool selected[kQuantityCount] = {t.position,      t.position,  t.position,
+                                         t.effectiveTension, t.bendingMoment, t.curvature,
+                                         t.bendingMomentVector, t.bendingMomentVector, t.bendingMomentVector,
+                                         t.torque};
+  for (int q = 0; q < kQuantityCount; ++q)
+    if (selected[q]) m_quantities.push_back(q);
   const fs::path dyn = dir / "dynamics";
   fs::create_directories(dyn);
   m_endForces = std::make_unique<core::OutputFile>(dyn / "end_forces.csv");
@@ -67,7 +75,7 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
     const fs::path ld = dyn / m_stems[l];
     fs::create_directories(ld);
     std::vector<std::unique_ptr<core::OutputFile>> streams;
-    for (int q = 0; q < (timeHistories ? kQuantityCount : 0); ++q) {
+    for (const int q : m_quantities) {
       auto f = std::make_unique<core::OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));
       std::string row = "time_s";
       for (double a : s.arcLength) row += fmt::format(",s={:.3f}m", a);
@@ -94,7 +102,7 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
       fmt::memory_buffer row;
       fmt::format_to(std::back_inserter(row), FMT_COMPILE("{:.6f}"), time);
       for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
-        const double value = quantity(s, static_cast<int>(q), i);
+        const double value = quantity(s, m_quantities[q], i);
         // Exact zeros (the moments and torque of cable lines: 5 of the 11 quantities) as the text fmt would
         // give, without formatting them.
         if (value == 0.0 && !std::signbit(value)) {

@@ -20,6 +20,7 @@
 #include "tangle/analysis/RangeGraphs.hpp"
 #include "tangle/core/OutputFile.hpp"
 #include "tangle/io/VtkWriter.hpp"
+#include "tangle/model/ModelSpec.hpp"
 #include "tangle/solver/LineResults.hpp"
 
 namespace tangle::io {
@@ -29,10 +30,10 @@ class DynamicRecorder {
  public:
   /// @param dir output directory; @param initial the lines at t = 0 (names, arc lengths)
   /// @param vtkInterval time between ParaView frames [s] (<= 0: no ParaView output)
-  /// @param timeHistories write dynamics/<line>/<quantity>.csv (false: results.h5 holds them; the range
-  ///        graphs and end_forces.csv are written either way)
+  /// @param timeHistories the dynamics/<line>/<quantity>.csv written (none: results.h5 holds them, or the
+  ///        model asked for none; the range graphs and end_forces.csv are written either way)
   DynamicRecorder(const std::filesystem::path& dir, const std::vector<solver::LineSnapshot>& initial,
-                  double vtkInterval, bool timeHistories = true);
+                  double vtkInterval, const model::TimeHistorySelection& timeHistories = {});
   ~DynamicRecorder();
   DynamicRecorder(const DynamicRecorder&) = delete;
   DynamicRecorder& operator=(const DynamicRecorder&) = delete;
@@ -63,7 +64,8 @@ class DynamicRecorder {
   std::filesystem::path m_dir;
   std::vector<std::string> m_stems;
   std::vector<std::vector<double>> m_arc;
-  std::vector<std::vector<std::unique_ptr<core::OutputFile>>> m_streams;  // per line, per quantity
+  std::vector<int> m_quantities;  // the quantities written (indices of the CSV quantities)
+  std::vector<std::vector<std::unique_ptr<core::OutputFile>>> m_streams;  // per line, per written quantity
   std::unique_ptr<core::OutputFile> m_endForces;
   std::unique_ptr<PvdSeries> m_vtk;
   double m_vtkInterval;

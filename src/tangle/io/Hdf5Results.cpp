@@ -147,17 +147,21 @@ void Hdf5Results::beginDynamics(const std::vector<solver::LineSnapshot>& initial
     m_file->setAttribute(g, "line", initial[l].name);
     m_file->writeArray(g + "/arc_length", initial[l].arcLength, {n}, "m",
                        "unstretched arc length from end A");
-    std::vector<int> series(kCount);
-    series[kPosition] =
-        m_file->createSeries(g + "/position", {n, 3}, "m", "node positions [time, node, xyz]");
-    series[kTension] =
-        m_file->createSeries(g + "/effective_tension", {n}, "N", "effective tension [time, node]");
-    series[kMoment] =
-        m_file->createSeries(g + "/bending_moment", {n}, "N m", "bending moment magnitude [time, node]");
-    series[kMomentVector] = m_file->createSeries(g + "/bending_moment_vector", {n, 3}, "N m",
-                                                 "bending moment, global axes [time, node, xyz]");
-    series[kCurvature] = m_file->createSeries(g + "/curvature", {n}, "1/m", "curvature [time, node]");
-    series[kTorque] = m_file->createSeries(g + "/torque", {n}, "N m", "torque [time, node]");
+    // Only the time histories the model asks for (output.time_histories); -1: not written.
+    const model::TimeHistorySelection& t = m_model->spec().output.timeHistories;
+    std::vector<int> series(kCount, -1);
+    if (t.position)
+      series[kPosition] = m_file->createSeries(g + "/position", {n, 3}, "m", "node positions [time, node, xyz]");
+    if (t.effectiveTension)
+      series[kTension] = m_file->createSeries(g + "/effective_tension", {n}, "N", "effective tension [time, node]");
+    if (t.bendingMoment)
+      series[kMoment] =
+          m_file->createSeries(g + "/bending_moment", {n}, "N m", "bending moment magnitude [time, node]");
+    if (t.bendingMomentVector)
+      series[kMomentVector] = m_file->createSeries(g + "/bending_moment_vector", {n, 3}, "N m",
+                                                   "bending moment, global axes [time, node, xyz]");
+    if (t.curvature) series[kCurvature] = m_file->createSeries(g + "/curvature", {n}, "1/m", "curvature [time, node]");
+    if (t.torque) series[kTorque] = m_file->createSeries(g + "/torque", {n}, "N m", "torque [time, node]");
     series[kEndTension] = m_file->createSeries(g + "/end_tension", {2}, "N",
                                                "effective tension at end A and end B [time, end]");
     series[kEndForce] = m_file->createSeries(g + "/end_force", {2, 3}, "N",
@@ -181,12 +185,12 @@ void Hdf5Results::record(double time, const std::vector<solver::LineSnapshot>& l
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
     const std::vector<int>& k = m_lineSeries[l];
-    m_file->append(k[kPosition], flatten(s.position).data());
-    m_file->append(k[kTension], s.tension.data());
-    m_file->append(k[kMoment], s.bendingMoment.data());
-    m_file->append(k[kMomentVector], flatten(s.bendingMomentVector).data());
-    m_file->append(k[kCurvature], s.curvature.data());
-    m_file->append(k[kTorque], s.torque.data());
+    if (k[kPosition] >= 0) m_file->append(k[kPosition], flatten(s.position).data());
+    if (k[kTension] >= 0) m_file->append(k[kTension], s.tension.data());
+    if (k[kMoment] >= 0) m_file->append(k[kMoment], s.bendingMoment.data());
+    if (k[kMomentVector] >= 0) m_file->append(k[kMomentVector], flatten(s.bendingMomentVector).data());
+    if (k[kCurvature] >= 0) m_file->append(k[kCurvature], s.curvature.data());
+    if (k[kTorque] >= 0) m_file->append(k[kTorque], s.torque.data());
     const double ends[2] = {s.endTensionA, s.endTensionB};
     m_file->append(k[kEndTension], ends);
     const Vec3 &a = s.endTensionForceA, &b = s.endTensionForceB;

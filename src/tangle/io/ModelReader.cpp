@@ -944,7 +944,7 @@ void readDynamics(const Value& v, ModelSpec& spec) {
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"format", "vtk", "vtk_interval", "plots", "energy", "storm_duration"});
+  const Map m(v, {"format", "vtk", "vtk_interval", "plots", "energy", "storm_duration", "time_histories"});
   const model::OutputSpec d;
   if (const std::optional<Value> format = m.find("format"))
     spec.output.format = format->choice<model::ResultFormat>({{"auto", model::ResultFormat::Auto},
@@ -957,6 +957,29 @@ void readOutput(const Value& v, ModelSpec& spec) {
   spec.output.energy = m.boolean("energy", d.energy);
   spec.output.stormDuration =
       m.number("storm_duration", d.stormDuration, positiveUpTo(1e7).withHint("seconds: 10800 for a 3 h storm"));
+  if (const std::optional<Value> histories = m.find("time_histories")) {
+    // `all`, `none`, or a list of quantity names.
+    model::TimeHistorySelection& t = spec.output.timeHistories;
+    const std::string names = "position, effective_tension, bending_moment, bending_moment_vector, curvature, torque";
+    if (histories->isSequence()) {
+      t = model::TimeHistorySelection{false, false, false, false, false, false};
+      for (const Value& item : histories->items(0)) {
+        const std::string q = item.text("a quantity name");
+        bool* flag = q == "position"                ? &t.position
+                     : q == "effective_tension"     ? &t.effectiveTension
+                     : q == "bending_moment"        ? &t.bendingMoment
+                     : q == "bending_moment_vector" ? &t.bendingMomentVector
+                     : q == "curvature"             ? &t.curvature
+                     : q == "torque"                ? &t.torque
+                                                    : nullptr;
+        if (!flag) item.fail(fmt::format("unknown quantity '{}'; expected one of {}", q, names));
+        *flag = true;
+      }
+    } else {
+      const bool all = histories->choice<bool>({{"all", true}, {"none", false}});
+      t = model::TimeHistorySelection{all, all, all, all, all, all};
+    }
+  }
 }
 
 /// `name` read as the name of a line of `spec`; an unknown one fails with "unknown line 'X'", followed by

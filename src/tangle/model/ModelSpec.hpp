@@ -360,6 +360,22 @@ enum class ResultFormat {
   Both   ///< both
 };
 
+/// The time histories along the lines a dynamic run writes at its output times (`output.time_histories`;
+/// CSV files dynamics/<line>/<quantity>.csv and results.h5 series). End forces, range graphs, extremes
+/// and statistics are written whatever the selection.
+struct TimeHistorySelection {
+  bool position = true;             ///< x_m, y_m, z_m / position
+  bool effectiveTension = true;     ///< effective_tension_N / effective_tension
+  bool bendingMoment = true;        ///< bending_moment_Nm / bending_moment
+  bool bendingMomentVector = true;  ///< bending_moment_{x,y,z}_Nm / bending_moment_vector
+  bool curvature = true;            ///< curvature_1_per_m / curvature
+  bool torque = true;               ///< torque_Nm / torque
+  /// Values per node and output time (the CSV columns: 3 for a vector).
+  int valuesPerNode() const {
+    return 3 * position + effectiveTension + bendingMoment + 3 * bendingMomentVector + curvature + torque;
+  }
+};
+
 struct OutputSpec {
   /// Estimated CSV time-history volume above which `auto` writes HDF5 only [bytes].
   static constexpr double kAutoCsvLimit = 100e6;
@@ -373,6 +389,7 @@ struct OutputSpec {
   /// Storm duration of the extreme statistics of the dynamics (dynamics/statistics.csv): the most probable
   /// maximum is that of stormDuration / Tz peaks [s] (3 h, DNV-OS-E301 and API RP 2SK's storm).
   double stormDuration = 10800.0;
+  TimeHistorySelection timeHistories;
 };
 
 /// The whole model as read from the file.

@@ -149,7 +149,7 @@ ResultFiles resultFiles(const model::Model& m, bool staticsOnly) {
   if (!d.enabled || staticsOnly) return {true, true};
   // 10 quantities per node, ~13 characters per value ("-1.234567e+05,").
   const double records = std::floor(d.duration / d.outputInterval) + 1.0;
-  const double bytes = 10.0 * 13.0 * static_cast<double>(m.nodeCount()) * records;
+  const double bytes = m.spec().output.timeHistories.valuesPerNode() * 13.0 * static_cast<double>(m.nodeCount()) * records;
   return {bytes <= model::OutputSpec::kAutoCsvLimit, true};
 }
 
@@ -341,7 +341,9 @@ bool RunOutputs::runDynamics() {
   std::unique_ptr<contact::ClearanceEnvelope>& envelope = m_envelope;
   std::unique_ptr<io::HtmlReport>& report = m_report;
   const std::vector<solver::LineSnapshot>& lines = m_static;
-  io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0, m_csv);
+  io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0,
+                               m_csv ? m.spec().output.timeHistories
+                                     : model::TimeHistorySelection{false, false, false, false, false, false});
   if (h5) h5->beginDynamics(lines);
   recorder.setSeabedLevels(analysis::RangeGraphs::seabedLevels(m));
   std::vector<double> vesselMotion(6 * m.vessels().size());

@@ -1264,5 +1264,22 @@ TEST(ModelReader, ReadsClashDamageSettings) {
                    "contact.clash_damage.bin_length", "expected");
 }
 
+
+TEST(ModelReader, ReadsTheTimeHistorySelection) {
+  const ModelSpec some = readModelString(
+      edited(kBaseModel, "  plots: false\n", "  plots: false\n  time_histories: [effective_tension, bending_moment_vector]\n"),
+      kSource);
+  const model::TimeHistorySelection& t = some.output.timeHistories;
+  EXPECT_TRUE(t.effectiveTension && t.bendingMomentVector);
+  EXPECT_FALSE(t.position || t.bendingMoment || t.curvature || t.torque);
+  EXPECT_EQ(t.valuesPerNode(), 4);
+  EXPECT_EQ(readModelString(kBaseModel, kSource).output.timeHistories.valuesPerNode(), 10);
+  const ModelSpec none =
+      readModelString(edited(kBaseModel, "  plots: false\n", "  plots: false\n  time_histories: none\n"), kSource);
+  EXPECT_EQ(none.output.timeHistories.valuesPerNode(), 0);
+  const std::string bad = edited(kBaseModel, "  plots: false\n", "  plots: false\n  time_histories: [tension]\n");
+  expectInputError(bad, "time_histories:", "output.time_histories[0]", "unknown quantity 'tension'; expected one of position");
+}
+
 }  // namespace
 }  // namespace tangle::io
