@@ -96,8 +96,10 @@ FatigueDamage::FatigueDamage(const model::Model& model) : m_model(&model) {
   m_largest.assign(static_cast<std::size_t>(histories), 0.0);
 }
 
-double FatigueDamage::cyclesToFailure(const Section& s, double range) const {
-  return s.tension ? s.tn.cyclesToFailure(range) : s.sn.cyclesToFailure(range);
+void FatigueDamage::addCycles(const Section& s, std::size_t history, double range, double count) {
+  m_damage[history] += count / (s.tension ? s.tn.cyclesToFailure(range) : s.sn.cyclesToFailure(range));
+  m_cycles[history] += count;
+  m_largest[history] = std::max(m_largest[history], range);
 }
 
 void FatigueDamage::accumulate(const std::vector<solver::LineSnapshot>& lines, const model::State& state) {
@@ -114,12 +116,8 @@ void FatigueDamage::accumulate(const std::vector<solver::LineSnapshot>& lines, c
     const solver::LineSnapshot& snap = lines[static_cast<std::size_t>(st.line)];
     const auto node = static_cast<std::size_t>(st.node);
     const std::size_t first = static_cast<std::size_t>(st.firstHistory);
-    const auto sink = [&](std::size_t h) {
-      return [this, &s, h](double range, double, double count) {
-        m_damage[h] += count / cyclesToFailure(s, range);
-        m_cycles[h] += count;
-        m_largest[h] = std::max(m_largest[h], range);
-      };
+    const auto sink = [this, &s](std::size_t h) {
+      return [this, &s, h](double range, double, double count) { addCycles(s, h, range, count); };
     };
     if (s.tension) {
       m_counters[first].add(snap.tension[node], sink(first));
@@ -154,11 +152,7 @@ std::vector<FatigueDamage::Line> FatigueDamage::finish() {
     int worst = 0;
     for (int k = 0; k < st.points; ++k) {
       const auto h = static_cast<std::size_t>(st.firstHistory + k);
-      m_counters[h].finish([&](double range, double, double count) {
-        m_damage[h] += count / cyclesToFailure(s, range);
-        m_cycles[h] += count;
-        m_largest[h] = std::max(m_largest[h], range);
-      });
+      m_counters[h].finish([&](double range, double, double count) { addCycles(s, h, range, count); });
       if (m_damage[h] > m_damage[static_cast<std::size_t>(st.firstHistory + worst)]) worst = k;
     }
     const auto h = static_cast<std::size_t>(st.firstHistory + worst);

@@ -88,7 +88,8 @@ class FatigueDamage {
     int points = 1;
     std::vector<double> sinTheta, cosTheta;  ///< of the points' angles theta_k
   };
-  double cyclesToFailure(const Section& s, double range) const;
+  /// Miner's sum: `count` cycles of `range` at history `history` against section `s`'s curve.
+  void addCycles(const Section& s, std::size_t history, double range, double count);
 
   const model::Model* m_model;
   std::vector<Section> m_sections;
