@@ -28,6 +28,7 @@
 #include <mpi.h>
 #endif
 
+#include "tangle/app/BatchFatigue.hpp"
 #include "tangle/app/BatchPlan.hpp"
 #include "tangle/app/CaseSummary.hpp"
 #include "tangle/app/SeedStatistics.hpp"
@@ -324,6 +325,13 @@ int runBatch(const BatchOptions& options) {
   if (!plan.seeds.empty()) {
     const std::string statistics = writeSeedStatistics(dir / "summary_statistics.csv", plan, lineNames, rows);
     if (!options.quiet) std::cout << statistics;
+  }
+  // Long-term fatigue: the damage of every sea state (case) summed (docs/batch.md).
+  {
+    std::vector<fs::path> caseDirs;
+    for (const CasePaths& p : paths) caseDirs.push_back(p.results);
+    const std::string fatigue = writeBatchFatigue(dir, plan, caseDirs, rows);
+    if (!options.quiet) std::cout << fatigue;
   }
 #ifdef TANGLE_WITH_MPI
   if (ranks.mpi) MPI_Finalize();

@@ -12,6 +12,7 @@
 #include <limits>
 #include <set>
 
+#include "tangle/core/Csv.hpp"
 #include "tangle/core/OutputFile.hpp"
 
 namespace tangle::app {
@@ -45,13 +46,6 @@ double number(const YAML::Node& n) {
 std::string numberText(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : ""; }
 
 }  // namespace
-
-std::string csvField(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' ? ' ' : c);
-  return out + "\"";
-}
 
 CaseSummary readCaseSummary(const fs::path& caseDir, const fs::path& log) {
   CaseSummary row;
@@ -163,22 +157,22 @@ std::string writeSummaryTable(const fs::path& file, const std::vector<std::strin
       if (std::find(lines.begin(), lines.end(), l.name) == lines.end()) lines.push_back(l.name);
   core::OutputFile out(file);
   std::string header = "case";
-  for (const std::string& p : parameterNames) header += "," + csvField(p);
+  for (const std::string& p : parameterNames) header += "," + core::csvField(p);
   header += ",status,exit_code,statics_converged";
   for (const std::string& l : lines)
     for (const char* q : {"_max_tension_N", "_min_tension_N", "_end_a_max_tension_N", "_end_b_max_tension_N",
                           "_slack_events"})
-      header += "," + csvField(l + q);
+      header += "," + core::csvField(l + q);
   header += ",max_offset_m,min_clearance_m,impacts,max_contact_force_N,wall_time_s,reused,rank,message\n";
   out.write(header);
   std::string table = fmt::format("{:<36} {:<24} {:>14} {:>12} {:>8} {:>9}\n", "case", "status", "max tension kN",
                                   "clearance m", "impacts", "wall s");
   int failed = 0;
   for (const CaseSummary& r : rows) {
-    std::string row = csvField(r.name);
+    std::string row = core::csvField(r.name);
     for (std::size_t k = 0; k < parameterNames.size(); ++k)
-      row += "," + csvField(k < r.parameterValues.size() ? r.parameterValues[k] : "");
-    row += fmt::format(",{},{},{}", csvField(r.status), r.exitCode, r.staticsConverged ? "true" : "false");
+      row += "," + core::csvField(k < r.parameterValues.size() ? r.parameterValues[k] : "");
+    row += fmt::format(",{},{},{}", core::csvField(r.status), r.exitCode, r.staticsConverged ? "true" : "false");
     double worst = kNaN;
     for (const std::string& l : lines) {
       CaseSummary::LineRow values{l, kNaN, kNaN, kNaN, kNaN, kNaN};
@@ -191,7 +185,7 @@ std::string writeSummaryTable(const fs::path& file, const std::vector<std::strin
     }
     row += fmt::format(",{},{},{},{},{:.3f},{},{},{}\n", numberText(r.maxOffset), numberText(r.minClearance), r.impacts,
                        numberText(r.maxContactForce), r.wallSeconds, r.reused ? "true" : "false", r.rank,
-                       csvField(r.message));
+                       core::csvField(r.message));
     out.write(row);
     if (r.exitCode != 0) ++failed;
     table += fmt::format("{:<36} {:<24} {:>14} {:>12} {:>8} {:>9.2f}\n", r.name.substr(0, 36), r.status.substr(0, 24),

@@ -41,9 +41,6 @@ struct CaseSummary {
   static CaseSummary deserialise(const std::string& text);
 };
 
-/// A CSV field of the batch tables: quoted when it holds a comma, quote or newline (a newline becomes a space).
-std::string csvField(const std::string& s);
-
 /// Reads the row of a finished case from its results folder. Missing files leave their fields at the
 /// defaults (a case that failed in statics has no dynamics summary). `log` (may be empty) is searched
 /// for the first "error:" line.

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "tangle/analysis/ExtremeStatistics.hpp"
+#include "tangle/core/Csv.hpp"
 #include "tangle/core/OutputFile.hpp"
 
 namespace tangle::app {
@@ -44,7 +45,7 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
 
   core::OutputFile out(file);
   std::string header = "case";
-  for (std::size_t k = 0; k + 1 < plan.parameterNames.size(); ++k) header += "," + csvField(plan.parameterNames[k]);
+  for (std::size_t k = 0; k + 1 < plan.parameterNames.size(); ++k) header += "," + core::csvField(plan.parameterNames[k]);
   const std::string q = fmt::format("{:g}", 100.0 * plan.probability);
   header += ",quantity,seeds,completed_seeds,mean,standard_deviation,min,max,gumbel_scale,most_probable_maximum,"
             "value_at_" + q + "_percent,maxima\n";
@@ -68,10 +69,10 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
         list += (s == first ? "" : ";") + number(v);
       }
       if (!any) continue;  // a quantity no seed has (no vessel, no contact)
-      std::string row = csvField(name);
+      std::string row = core::csvField(name);
       for (std::size_t k = 0; k + 1 < plan.parameterNames.size(); ++k)
-        row += "," + csvField(k < rows[first].parameterValues.size() ? rows[first].parameterValues[k] : "");
-      row += fmt::format(",{},{},{}", csvField(quantity.name), seeds, maxima.size());
+        row += "," + core::csvField(k < rows[first].parameterValues.size() ? rows[first].parameterValues[k] : "");
+      row += fmt::format(",{},{},{}", core::csvField(quantity.name), seeds, maxima.size());
       if (maxima.size() >= 2) {
         const analysis::GumbelFit g = analysis::fitGumbel(maxima);
         double lo = maxima.front(), hi = maxima.front();
@@ -87,7 +88,7 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
       } else {
         row += ",,,,,,,";
       }
-      out.write(row + "," + csvField(list) + "\n");
+      out.write(row + "," + core::csvField(list) + "\n");
     }
   }
   out.close();

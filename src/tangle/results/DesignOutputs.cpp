@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "tangle/analysis/ExtremeStatistics.hpp"
+#include "tangle/core/Csv.hpp"
 #include "tangle/core/OutputFile.hpp"
 #include "tangle/io/ResultWriter.hpp"
 
@@ -64,7 +65,7 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
         const analysis::ResponseStatistics::Line& t = statistics.lines()[l];
         const analysis::PeakTracker& tracker = end == 0 ? t.endA : t.endB;
         const analysis::ExtremeEstimate e = analysis::extremeEstimate(tracker, storm);
-        out.write(fmt::format("{},{},{},{:.6f},{:.1f}", lines[l].name, end == 0 ? 'A' : 'B', tracker.samples(),
+        out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B', tracker.samples(),
                               tracker.duration(), storm) +
                   estimateFields(e) + "\n");
         if (end == 1 && e.valid) {
@@ -133,7 +134,7 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     out.write("vessel,samples,duration_s,storm_duration_s" + estimateHeader("offset_", "m") + "\n");
     for (std::size_t v = 0; v < offsets.size(); ++v) {
       const analysis::ExtremeEstimate e = analysis::extremeEstimate(offsets[v], storm);
-      out.write(fmt::format("{},{},{:.6f},{:.1f}", model.vessels()[v].name, offsets[v].samples(),
+      out.write(fmt::format("{},{},{:.6f},{:.1f}", core::csvField(model.vessels()[v].name), offsets[v].samples(),
                             offsets[v].duration(), storm) +
                 estimateFields(e) + "\n");
       if (e.valid)
@@ -151,7 +152,8 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       const analysis::ExtremeEstimate e = analysis::extremeEstimate(clearance[p], storm);
       const std::string& a = model.lines()[static_cast<std::size_t>(pairs[p][0])].name;
       const std::string& b = model.lines()[static_cast<std::size_t>(pairs[p][1])].name;
-      out.write(fmt::format("{},{},{},{:.6f},{:.1f}", a, b, clearance[p].samples(), clearance[p].duration(), storm) +
+      out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(a), core::csvField(b), clearance[p].samples(),
+                            clearance[p].duration(), storm) +
                 estimateFields(e, -1.0) + "\n");
       if (e.valid)
         text += fmt::format("  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull{}), smallest in the "
@@ -188,7 +190,7 @@ std::string writeFatigue(const fs::path& dir, const model::Model& model, const a
         "largest_tension_range_kN,worst_point_deg\n");
     const analysis::FatigueDamage::Node* worst = nullptr;
     for (const analysis::FatigueDamage::Node& n : line.nodes) {
-      out.write(fmt::format("{:.4f},{},{},{:.6e},{},{},{:.1f},{},{},{:.1f}\n", n.arcLength, n.lineType,
+      out.write(fmt::format("{:.4f},{},{},{:.6e},{},{},{:.1f},{},{},{:.1f}\n", n.arcLength, core::csvField(n.lineType),
                             n.tension ? "T-N" : "S-N", n.damage, number(n.damage * factor),
                             number(fatigue.life(n.damage)), n.cycles,
                             n.tension ? "" : fmt::format("{:.6g}", n.largestRange / 1e6),
@@ -196,8 +198,8 @@ std::string writeFatigue(const fs::path& dir, const model::Model& model, const a
       if (!worst || n.damage > worst->damage) worst = &n;
     }
     out.close();
-    summary.write(fmt::format("{},{:.4f},{},{},{:.6e},{},{},{:.6f},{:g},{:g}\n", line.name, worst->arcLength,
-                              worst->lineType, worst->tension ? "T-N" : "S-N", worst->damage,
+    summary.write(fmt::format("{},{:.4f},{},{},{:.6e},{},{},{:.6f},{:g},{:g}\n", core::csvField(line.name),
+                              worst->arcLength, core::csvField(worst->lineType), worst->tension ? "T-N" : "S-N", worst->damage,
                               number(worst->damage * factor), number(fatigue.life(worst->damage)),
                               fatigue.countedDuration(), spec.occurrence, spec.designFactor));
     text += fmt::format("  line '{}': shortest life {} years at {:.1f} m from end A (line type '{}', {}{}), "
@@ -226,7 +228,7 @@ std::string writeClashDamage(const fs::path& dir, const model::Model& model,
     const analysis::ClashDamageBin* worst = nullptr;
     int above = 0;
     for (const analysis::ClashDamageBin& b : d.bins) {
-      out.write(fmt::format("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n", name, b.from, b.to, b.impacts,
+      out.write(fmt::format("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n", core::csvField(name), b.from, b.to, b.impacts,
                             b.impactsAbove, b.energy, b.largestEnergy, b.largestVelocity));
       if (b.impacts > 0 && (!worst || b.energy > worst->energy)) worst = &b;
       above += b.impactsAbove;
