@@ -32,7 +32,8 @@ struct LineSnapshot {
   /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N],
   /// pointing from the end into the line: the section force of the end elements extrapolated as above,
   /// with the shear of beam lines (e x (M2 - M1) / L per element, LineResults.cpp) as well as the
-  /// tension; for bar lines |endTensionForceA| = endTensionA. At a free end with nothing attached ~0.
+  /// tension; for bar lines |endTensionForceA| = endTensionA. At a free end with nothing attached exactly 0
+  /// (the extrapolation would give the end element's own section force, e.g. an LMRP's weight).
   /// The static results (Simulation::snapshot in statics) replace both end forces and end tensions by the
   /// exact ones, the end element's section force plus the line's own loads lumped on the end node
   /// (analysis::setStaticEndForces), which the equilibrium audit checks.
