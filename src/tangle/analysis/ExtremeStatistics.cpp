@@ -5,32 +5,55 @@
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 namespace tangle::analysis {
+
+namespace {
+
+/// The peaks of a history given as `n` points (time(i) [s], value(i)) in time order, about `mean`: the
+/// largest value between consecutive up-crossings (linear between the points), and Tz. Shared by the
+/// sampled histories of findPeaks and the turning points of PeakTracker.
+template <class Time, class Value>
+void peaksBetweenUpcrossings(std::size_t n, Time time, Value value, PeakSet& out) {
+  std::size_t crossings = 0;
+  double first = 0.0, last = 0.0;
+  double peak = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < n; ++i) {
+    const double a = value(i - 1), b = value(i);
+    if (a < out.mean && b >= out.mean) {
+      if (crossings > 0) out.peaks.push_back(peak);
+      const double t = time(i - 1) + (out.mean - a) / (b - a) * (time(i) - time(i - 1));
+      if (crossings == 0) first = t;
+      last = t;
+      ++crossings;
+      peak = -std::numeric_limits<double>::infinity();
+    }
+    peak = std::max(peak, b);
+  }
+  if (crossings >= 2) out.upcrossingPeriod = (last - first) / static_cast<double>(crossings - 1);
+}
+
+/// Mean and sample standard deviation (n - 1) of `x` (at least two values).
+std::pair<double, double> meanAndDeviation(const std::vector<double>& x) {
+  const double n = static_cast<double>(x.size());
+  double mean = 0.0;
+  for (const double v : x) mean += v / n;
+  double var = 0.0;
+  for (const double v : x) var += (v - mean) * (v - mean);
+  return {mean, std::sqrt(var / (n - 1.0))};
+}
+
+}  // namespace
 
 PeakSet findPeaks(const std::vector<double>& times, const std::vector<double>& values) {
   if (times.size() != values.size() || values.size() < 3)
     throw std::invalid_argument("findPeaks: times and values must have the same length, at least 3");
   PeakSet out;
-  const double n = static_cast<double>(values.size());
-  for (const double v : values) out.mean += v / n;
-  double var = 0.0;
-  for (const double v : values) var += (v - out.mean) * (v - out.mean);
-  out.standardDeviation = std::sqrt(var / (n - 1.0));
-  // Up-crossings of the mean: the time where the history passes it upwards (linear between samples).
-  std::vector<double> crossings;
-  std::vector<std::size_t> crossingIndex;
-  for (std::size_t i = 1; i < values.size(); ++i)
-    if (values[i - 1] < out.mean && values[i] >= out.mean) {
-      const double f = (out.mean - values[i - 1]) / (values[i] - values[i - 1]);
-      crossings.push_back(times[i - 1] + f * (times[i] - times[i - 1]));
-      crossingIndex.push_back(i);
-    }
-  for (std::size_t k = 0; k + 1 < crossingIndex.size(); ++k)
-    out.peaks.push_back(*std::max_element(values.begin() + static_cast<std::ptrdiff_t>(crossingIndex[k]),
-                                          values.begin() + static_cast<std::ptrdiff_t>(crossingIndex[k + 1])));
-  if (crossings.size() >= 2)
-    out.upcrossingPeriod = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  std::tie(out.mean, out.standardDeviation) = meanAndDeviation(values);
+  peaksBetweenUpcrossings(values.size(), [&](std::size_t i) { return times[i]; },
+                          [&](std::size_t i) { return values[i]; }, out);
   return out;
 }
 
@@ -41,21 +64,8 @@ PeakSet PeakTracker::peaks() const {
   out.standardDeviation = m_weight > 0.0 ? std::sqrt(std::max(0.0, m_sumSquares / m_weight - out.mean * out.mean)) : 0.0;
   std::vector<Point> points = m_points;
   if (m_direction != 0) points.push_back(m_candidate);
-  std::vector<double> crossings;
-  double peak = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 1; i < points.size(); ++i) {
-    const Point& a = points[i - 1];
-    const Point& b = points[i];
-    if (a.value < out.mean && b.value >= out.mean) {
-      if (!crossings.empty()) out.peaks.push_back(peak);
-      const double f = (out.mean - a.value) / (b.value - a.value);
-      crossings.push_back(a.time + f * (b.time - a.time));
-      peak = -std::numeric_limits<double>::infinity();
-    }
-    peak = std::max(peak, b.value);
-  }
-  if (crossings.size() >= 2)
-    out.upcrossingPeriod = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  peaksBetweenUpcrossings(points.size(), [&](std::size_t i) { return points[i].time; },
+                          [&](std::size_t i) { return points[i].value; }, out);
   return out;
 }
 
@@ -108,11 +118,7 @@ double GumbelFit::quantile(double q) const { return mode - scale * std::log(-std
 GumbelFit fitGumbel(const std::vector<double>& maxima) {
   if (maxima.size() < 2) throw std::invalid_argument("fitGumbel: at least two maxima are needed");
   GumbelFit g;
-  const double n = static_cast<double>(maxima.size());
-  for (const double x : maxima) g.mean += x / n;
-  double var = 0.0;
-  for (const double x : maxima) var += (x - g.mean) * (x - g.mean);
-  g.standardDeviation = std::sqrt(var / (n - 1.0));
+  std::tie(g.mean, g.standardDeviation) = meanAndDeviation(maxima);
   constexpr double kEulerGamma = 0.5772156649015329;
   g.scale = g.standardDeviation * std::sqrt(6.0) / std::numbers::pi;
   g.mode = g.mean - kEulerGamma * g.scale;
