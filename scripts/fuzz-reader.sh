@@ -15,13 +15,14 @@ if ! command -v "$cxx" > /dev/null; then
 fi
 mkdir -p "$work/corpus"
 sources=("$root/tests/fuzz/ReaderFuzz.cpp" "$root/src/tangle/io/ModelReader.cpp" "$root/src/tangle/core/Error.cpp"
-         "$root/src/tangle/analysis/SnCurve.cpp")
+         "$root/src/tangle/analysis/SnCurve.cpp" "$root/src/tangle/io/MoorDynDeck.cpp"
+         "$root/src/tangle/io/MoorDynConversion.cpp")
 binary="$work/reader-fuzz"
 # Rebuild only when a source or header of the reader is newer than the binary.
 rebuild=1
 if [ -x "$binary" ]; then
   rebuild=0
-  for f in "${sources[@]}" "$root"/src/tangle/io/ModelReader.hpp "$root"/src/tangle/model/ModelSpec.hpp \
+  for f in "${sources[@]}" "$root"/src/tangle/io/ModelReader.hpp "$root"/src/tangle/model/ModelSpec.hpp "$root"/src/tangle/io/MoorDyn*.hpp \
            "$root"/src/tangle/core/*.hpp "$root"/src/tangle/section/LineType.hpp "$0"; do
     [ "$f" -nt "$binary" ] && rebuild=1
   done

@@ -30,9 +30,10 @@ from ._tangle import ConvergenceError, ModelError, __version__  # noqa: F401
 from . import _tangle
 from . import statistics  # noqa: F401  (design statistics: rainflow, S-N damage, extremes)
 from .statistics import rainflow  # noqa: F401
+from .coupling import Coupling  # noqa: F401  (co-simulation: a model stepped by a host)
 
 __all__ = ["Model", "StaticResults", "DynamicResults", "ModelError", "ConvergenceError", "Interrupted",
-           "DynamicsFailed", "__version__", "rainflow", "statistics"]
+           "DynamicsFailed", "__version__", "rainflow", "statistics", "Coupling"]
 
 
 class Interrupted(KeyboardInterrupt):

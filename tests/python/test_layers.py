@@ -21,7 +21,7 @@ LAYERS = [
     ("analysis",),
     ("io",),
     ("results",),
-    ("app", "python"),
+    ("app", "python", "capi"),
 ]
 
 INCLUDE = re.compile(r'^\s*#\s*include\s+"tangle/(\w+)/')

@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <utility>
@@ -13,8 +14,10 @@
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/core/Error.hpp"
 #include "tangle/io/HtmlReport.hpp"
 #include "tangle/io/ModelReader.hpp"
+#include "tangle/io/MoorDynConversion.hpp"
 #include "tangle/io/OutputFolder.hpp"
 #include "tangle/results/RunLog.hpp"
 #include "tangle/results/RunOutputs.hpp"
@@ -81,6 +84,29 @@ int runView(const ViewOptions& options) {
   report.setStatus("model before analysis (initial shapes)");
   io::HtmlReport::writePage(report.json(), "", page);
   fmt::print("view written to {}\n", page.string());
+  return 0;
+}
+
+int runConvert(const ConvertOptions& options) {
+  const io::MoorDynConversion conversion = io::convertMoorDynDeck(io::readMoorDynDeck(options.deckPath));
+  fs::path out = options.output;
+  if (out.empty()) {
+    const fs::path p(options.deckPath);
+    out = p.parent_path() / (p.stem().string() + ".yaml");
+  }
+  if (fs::exists(out) && !options.overwrite)
+    throw InputError(out.string(), 0, "", "the output file exists: give --overwrite to replace it");
+  // The model is read back before it is written: what convert writes is a model tangle runs.
+  const model::ModelSpec spec = io::readModelString(conversion.yaml, out.string());
+  analysis::Simulation check(spec);
+  std::ofstream file(out, std::ios::binary);
+  file << conversion.yaml;
+  file.close();
+  if (!file) throw OutputError(fmt::format("{}: cannot write the converted model", out.string()));
+  for (const std::string& note : conversion.notes) std::cerr << "note: " << note << "\n";
+  fmt::print("{}: {} line(s), {} point(s) of the MoorDyn deck -> {} tangle line(s); model written to {}\n",
+             options.deckPath, conversion.lines.size(), conversion.points.size(), check.model().lines().size(),
+             out.string());
   return 0;
 }
 

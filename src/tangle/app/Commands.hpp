@@ -35,6 +35,13 @@ struct ViewOptions {
   std::string output;  ///< page to write; empty: <model stem>_view.html beside the model file
 };
 
+/// Options of `tangle convert`.
+struct ConvertOptions {
+  std::string deckPath;
+  std::string output;      ///< model file to write; empty: <deck stem>.yaml beside the deck
+  bool overwrite = false;  ///< replace an existing output file
+};
+
 /// Validates a model and prints a summary (lines, elements, DOFs, masses, lengths).
 int runCheck(const CheckOptions& options);
 /// Runs the analysis and writes results.
@@ -43,5 +50,7 @@ int runAnalysis(const RunOptions& options);
 int runReport(const ReportOptions& options);
 /// Writes the report page of a model before any analysis (initial shapes, vessels, environment).
 int runView(const ViewOptions& options);
+/// Converts a MoorDyn v2 input file into a tangle model file (docs/moordyn.md), checked by the model reader.
+int runConvert(const ConvertOptions& options);
 
 }  // namespace tangle::app

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
 
   tangle::app::RunOptions runOptions;
   CLI::App* run = app.add_subcommand("run", "Run the analysis of a model (statics, then dynamics if requested)");
-  run->add_option("model", runOptions.modelPath, "Model file (YAML)")->required()->check(CLI::ExistingFile);
+  run->add_option("model", runOptions.modelPath, "Model file (YAML, or a MoorDyn v2 input file)")->required()->check(CLI::ExistingFile);
   run->add_option("-o,--output", runOptions.outputDir, "Output directory (default: <model name>_results next to it)");
   run->add_flag("--statics-only", runOptions.staticsOnly, "Stop after the static analysis");
   run->add_option("--memory-available-mb", runOptions.memoryAvailableMb,
@@ -69,6 +69,13 @@ int main(int argc, char** argv) {
   batch->add_flag("--no-report", noReports, "Do not write report.html for every case");
   batch->add_flag("-q,--quiet", batchOptions.quiet, "Print only errors");
 
+  tangle::app::ConvertOptions convertOptions;
+  CLI::App* convert = app.add_subcommand(
+      "convert", "Convert a MoorDyn v2 input file into a tangle model file (docs/moordyn.md)");
+  convert->add_option("deck", convertOptions.deckPath, "MoorDyn input file")->required()->check(CLI::ExistingFile);
+  convert->add_option("-o,--output", convertOptions.output, "Model file to write (default: <deck name>.yaml next to it)");
+  convert->add_flag("--overwrite", convertOptions.overwrite, "Replace the output file if it exists");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -79,6 +86,7 @@ int main(int argc, char** argv) {
     if (*check) return tangle::app::runCheck(checkOptions);
     if (*report) return tangle::app::runReport(reportOptions);
     if (*view) return tangle::app::runView(viewOptions);
+    if (*convert) return tangle::app::runConvert(convertOptions);
     if (*run) {
       // Ctrl-C ends the dynamics at the next step; every result so far (clash report included) is written.
       tangle::core::installInterruptHandler();

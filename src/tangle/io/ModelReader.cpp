@@ -32,6 +32,7 @@
 #include "tangle/analysis/SnCurve.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/io/MoorDynConversion.hpp"
 
 namespace tangle::io {
 
@@ -1550,6 +1551,21 @@ model::ModelSpec readModelFile(const std::string& path) {
   if (!fs::exists(path, ec)) throw InputError(path, 0, "", "cannot read the model file: it does not exist");
   if (fs::is_directory(path, ec))
     throw InputError(path, 0, "", "cannot read the model file: it is a directory");
+  // A MoorDyn v2 input file is converted (docs/moordyn.md); its own errors name the deck's lines.
+  if (isMoorDynDeck(path)) {
+    const MoorDynConversion conversion = convertMoorDynDeck(readMoorDynDeck(path));
+    model::ModelSpec spec;
+    try {
+      spec = readModelString(conversion.yaml, path);
+    } catch (const InputError& e) {
+      throw InputError(path, 0, "",
+                       fmt::format("the model converted from this MoorDyn deck is not valid: {} (`tangle convert {} -o "
+                                   "model.yaml` writes it, with the deck line of every value)",
+                                   e.what(), path));
+    }
+    for (const std::string& note : conversion.notes) spec.warnings.push_back("MoorDyn deck: " + note);
+    return spec;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "", "cannot open the model file for reading");
   std::ostringstream text;

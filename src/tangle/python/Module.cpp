@@ -12,6 +12,7 @@
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ModelDocument.hpp"
 #include "tangle/io/ModelReader.hpp"
+#include "tangle/python/PyCoupledRun.hpp"
 #include "tangle/python/PySimulation.hpp"
 #include "tangle/python/YamlPython.hpp"
 
@@ -192,4 +193,7 @@ PYBIND11_MODULE(_tangle, m) {
       .def("statics", &tangle::python::PySimulation::statics)
       .def("profiles", &tangle::python::PySimulation::profiles)
       .def("dynamics", &tangle::python::PySimulation::dynamics, py::arg("progress") = py::none());
+
+  // Co-simulation (tangle.Coupling, python/tangle/coupling.py): analysis::CoupledRun stepped by a host.
+  tangle::python::bindCoupledRun(m);
 }

@@ -39,9 +39,10 @@ struct LineSnapshot {
   /// (analysis::setStaticEndForces), which the equilibrium audit checks.
   Vec3 endTensionForceA = Vec3::Zero();
   Vec3 endTensionForceB = Vec3::Zero();
-  /// Support reaction at the end node: minus the out-of-balance force there, global axes [N]. Differs from
-  /// the end tension by the loads lumped on the end node itself (half an element of weight, drag, inertia,
-  /// seabed contact); kept for equilibrium checks.
+  /// Force the line exerts on its support at the end node: minus the out-of-balance force there (which is
+  /// the support's reaction on the line), global axes [N]; for a hanging line it points down, into the line.
+  /// Differs from the end tension by the loads lumped on the end node itself (half an element of weight,
+  /// drag, inertia, seabed contact); kept for equilibrium checks and for a coupled host's force.
   Vec3 endForceA = Vec3::Zero();
   Vec3 endForceB = Vec3::Zero();
   /// Arc length from end A of the touchdown point [m], -1 if none. Interpolated between the last grounded

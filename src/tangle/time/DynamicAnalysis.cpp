@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 
+#include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
 #include "tangle/time/CableSnapLimit.hpp"
 
@@ -53,25 +54,48 @@ DynamicAnalysis::DynamicAnalysis(solver::Assembler& assembler, const model::Dyna
     : m_assembler(&assembler), m_settings(settings) {}
 
 DynamicResult DynamicAnalysis::run(model::State& state) {
-  using Clock = std::chrono::steady_clock;
-  const auto wallStart = Clock::now();
-  auto lastPrint = wallStart;
+  start(state);
+  advance(state, m_settings.duration);
+  return finish(state);
+}
+
+const VecX& DynamicAnalysis::lastForce() const {
+  if (!m_stepper) throw Error("DynamicAnalysis::lastForce called before start");
+  return m_stepper->lastForce();
+}
+
+void DynamicAnalysis::start(model::State& state) {
+  m_wallStart = std::chrono::steady_clock::now();
+  m_lastPrint = m_wallStart;
   const model::Model& model = m_assembler->model();
   std::vector<model::PrescribedNode> prescribed = prescribedNodes(model);
   prescribed.insert(prescribed.end(), m_extraPrescribed.begin(), m_extraPrescribed.end());
-  GeneralizedAlpha stepper(*m_assembler, m_settings, std::move(prescribed));
-  DynamicResult result;
+  m_stepper = std::make_unique<GeneralizedAlpha>(*m_assembler, m_settings, std::move(prescribed));
+  m_result = DynamicResult();
+  m_stopped = false;
   state.time = 0.0;
-  stepper.initialize(state);
-  if (m_observer) m_observer(state, stepper.lastForce());
+  m_stepper->initialize(state);
+  if (m_observer) m_observer(state, m_stepper->lastForce());
   if (m_stepObserver) m_stepObserver(state, 0.0);
+  // Output times are k * interval (not a running sum, whose round-off would leave slivers of steps).
+  m_outputIndex = 1;
+  m_nextOutput = std::min(m_settings.outputInterval, m_settings.duration);
+  m_dt = m_settings.timeStep;
+  m_lastStep = m_settings.timeStep;  // the step grows at most twofold from one step to the next
+  m_successes = 0;
+}
 
+bool DynamicAnalysis::advance(model::State& state, double until) {
+  using Clock = std::chrono::steady_clock;
+  if (!m_stepper) throw Error("DynamicAnalysis::advance called before start");
+  if (m_stopped) return false;
+  GeneralizedAlpha& stepper = *m_stepper;
+  DynamicResult& result = m_result;
+  const model::Model& model = m_assembler->model();
   const double duration = m_settings.duration;
+  const double end = std::min(until, duration);
   const double nominal = m_settings.timeStep;
   const double out = m_settings.outputInterval;
-  // Output times are k * interval (not a running sum, whose round-off would leave slivers of steps).
-  long outputIndex = 1;
-  double nextOutput = std::min(out, duration);
   // Error control (dynamics.error_tolerance > 0): the step follows the local error estimate, up to
   // maxStep; otherwise fixed steps of `nominal`, cut on failure and regrown twofold after 4 successes.
   const double tolerance = m_settings.errorTolerance;
@@ -79,27 +103,28 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   const double maxStep =
       errorControl ? (m_settings.maxTimeStep > 0.0 ? m_settings.maxTimeStep : out) : nominal;
   const double betaError = std::abs(stepper.parameters().beta - 1.0 / 6.0);
-  double dt = nominal;
-  int successes = 0;
+  double& dt = m_dt;
+  int& successes = m_successes;
   // Remainders shorter than this are round-off, not time to simulate.
   const double eps = 1e-6 * nominal;
   model::State before;
   // Contributors that may refuse a converged step (lines passed through each other) need the state before it.
   const bool checkSteps = m_stepControl && m_assembler->rejectsSteps();
-  double lastStep = nominal;  // the step grows at most twofold from one step to the next
-  while (state.time < duration - eps) {
+  double& lastStep = m_lastStep;
+  while (state.time < end - eps) {
     if (core::interruptRequested() || (m_stop && m_stop())) {
       result.message = fmt::format("dynamic analysis interrupted by the user at t = {:.4f} s", state.time);
       result.interrupted = true;
-      break;
+      m_stopped = true;
+      return false;
     }
-    double h = std::min({dt, duration - state.time, 2.0 * lastStep});
+    double h = std::min({dt, end - state.time, 2.0 * lastStep});
     if (m_stepControl) h = std::min(h, std::max(m_settings.minTimeStep, m_assembler->limitStep(state)));
     h = std::min(h, std::max(m_settings.minTimeStep,
                              cableSnapStepLimit(model, state, m_settings.maxCableStrainStep, h)));
-    // Land exactly on output times.
-    if (state.time + h > nextOutput - eps) h = nextOutput - state.time;
-    if (h <= eps) h = std::min(dt, duration - state.time);
+    // Land exactly on output times (the end of this advance: h <= end - time above, snapped below).
+    if (state.time + h > m_nextOutput - eps) h = m_nextOutput - state.time;
+    if (h <= eps) h = std::min(dt, end - state.time);
     const bool clippedForOutput = h < dt * (1.0 - 1e-9);
     if (checkSteps || errorControl) before = state;
     StepOutcome o = stepper.step(state, h);
@@ -132,7 +157,8 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
                            "dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the "
                            "minimum time step {:.3g} s; largest out-of-balance force {:.4g} N at {}",
                            state.time, m_settings.minTimeStep, o.residual, where);
-        break;
+        m_stopped = true;
+        return false;
       }
       continue;
     }
@@ -158,28 +184,38 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
       dt = std::min(nominal, 2.0 * dt);
       successes = 0;
     }
-    const bool output = state.time >= nextOutput - eps;
-    if (output) state.time = nextOutput;  // land exactly (the step was cut to reach it)
+    const bool output = state.time >= m_nextOutput - eps;
+    if (output) state.time = m_nextOutput;  // land exactly (the step was cut to reach it)
+    else if (state.time >= end - eps) state.time = end;
     if (m_stepObserver) m_stepObserver(state, h);
     if (output) {
       if (m_observer) m_observer(state, stepper.lastForce());
-      ++outputIndex;
-      nextOutput = std::min(static_cast<double>(outputIndex) * out, duration);
+      ++m_outputIndex;
+      m_nextOutput = std::min(static_cast<double>(m_outputIndex) * out, duration);
     }
     if (m_progress) {
       const auto now = Clock::now();
-      if (std::chrono::duration<double>(now - lastPrint).count() > 2.0) {
-        const double wall = std::chrono::duration<double>(now - wallStart).count();
+      if (std::chrono::duration<double>(now - m_lastPrint).count() > 2.0) {
+        const double wall = std::chrono::duration<double>(now - m_wallStart).count();
         std::cerr << fmt::format("  t = {:8.2f} / {:.2f} s ({:3.0f} %), real-time factor {:.1f}\n",
                                  state.time, duration, 100.0 * state.time / duration, state.time / wall);
-        lastPrint = now;
+        m_lastPrint = now;
       }
     }
   }
+  return true;
+}
+
+DynamicResult DynamicAnalysis::finish(model::State& state) {
+  using Clock = std::chrono::steady_clock;
+  DynamicResult& result = m_result;
   m_assembler->finish(state.time);
+  const double duration = m_settings.duration;
+  const double eps = 1e-6 * m_settings.timeStep;
+  const bool errorControl = m_settings.errorTolerance > 0.0;
   result.endTime = state.time;
   result.completed = state.time >= duration - eps;
-  result.wallSeconds = std::chrono::duration<double>(Clock::now() - wallStart).count();
+  result.wallSeconds = std::chrono::duration<double>(Clock::now() - m_wallStart).count();
   if (result.completed) {
     result.message = fmt::format(
         "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}), {:.2f} s wall time, "

@@ -5,7 +5,9 @@
 /// through an observer, a progress line on the terminal, and a clean stop that keeps everything
 /// recorded so far when the run cannot go on.
 
+#include <chrono>
 #include <functional>
+#include <memory>
 #include <string>
 
 #include "tangle/model/State.hpp"
@@ -70,6 +72,21 @@ class DynamicAnalysis {
   /// may change the velocities: an impulse model), and finish at the end, however the run ends.
   DynamicResult run(model::State& state);
 
+  /// The same run in parts, for a host program that drives the model step by step (analysis::CoupledRun):
+  /// start (t = 0, the observers' first call), then advance to each time the host asks for (the steps are
+  /// cut to land on it; the step control carries over between calls), then finish. run() is these three.
+  void start(model::State& state);
+  /// Advances to `until` [s] (at most the duration). Returns false when the run had to stop (Newton failed
+  /// at the minimum step, a refused step, an interruption): result().message says why and the state is the
+  /// last accepted one.
+  bool advance(model::State& state, double until);
+  /// Ends the run (the contributors' finish) and returns its summary.
+  DynamicResult finish(model::State& state);
+  /// The summary so far.
+  const DynamicResult& result() const { return m_result; }
+  /// Out-of-balance force of the last converged state (support reactions at the constrained DOFs) [N].
+  const VecX& lastForce() const;
+
  private:
   solver::Assembler* m_assembler;
   model::DynamicSpec m_settings;
@@ -79,6 +96,17 @@ class DynamicAnalysis {
   StopRequest m_stop;
   std::vector<model::PrescribedNode> m_extraPrescribed;
   bool m_progress = false;
+
+  // The run's progress between start, advance and finish.
+  std::unique_ptr<GeneralizedAlpha> m_stepper;
+  DynamicResult m_result;
+  std::chrono::steady_clock::time_point m_wallStart, m_lastPrint;
+  long m_outputIndex = 1;
+  double m_nextOutput = 0.0;
+  double m_dt = 0.0;        ///< step to try next [s]
+  double m_lastStep = 0.0;  ///< last accepted step [s] (a step grows at most twofold)
+  int m_successes = 0;      ///< accepted steps since the last cut
+  bool m_stopped = false;   ///< advance failed: no further advance
 };
 
 /// The prescribed-motion nodes of a model (held ends with a motion).

@@ -1,0 +1,182 @@
+#include "tangle/analysis/CoupledRun.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <limits>
+
+#include "tangle/core/Error.hpp"
+
+namespace tangle::analysis {
+
+/// The host's kinematics of the coupled points over its current step: position x0 at time t0 and a
+/// constant velocity (MoorDyn2.cpp, Step: the coupled points move as x + xd (t - t0) within a step).
+struct CoupledRun::HostMotion {
+  std::vector<Vec3> start;     ///< [m]
+  std::vector<Vec3> velocity;  ///< [m/s]
+  double t0 = 0.0;             ///< [s]
+  Vec3 at(int point, double t) const {
+    return start[static_cast<std::size_t>(point)] + velocity[static_cast<std::size_t>(point)] * (t - t0);
+  }
+};
+
+CoupledRun::CoupledRun(model::ModelSpec spec, std::vector<CoupledPointSpec> points)
+    : m_spec(std::move(spec)), m_points(std::move(points)), m_motion(std::make_shared<HostMotion>()) {
+  const std::string& file = m_spec.sourceFile;
+  for (std::size_t p = 0; p < m_points.size(); ++p) {
+    const CoupledPointSpec& point = m_points[p];
+    const int first = static_cast<int>(m_ends.size());
+    if (point.ends.empty())
+      throw InputError(file, 0, fmt::format("coupled point {}", point.name),
+                       "a coupled point needs at least one line end");
+    for (const auto& [lineName, end] : point.ends) {
+      const std::string key =
+          fmt::format("coupled point {}: {} end {}", point.name, lineName, end == 0 ? "a" : "b");
+      int line = -1;
+      for (std::size_t l = 0; l < m_spec.lines.size(); ++l)
+        if (m_spec.lines[l].name == lineName) line = static_cast<int>(l);
+      if (line < 0) throw InputError(file, 0, key, fmt::format("no line named '{}'", lineName));
+      if (end != 0 && end != 1) throw InputError(file, 0, key, "expected end a (0) or b (1)");
+      const model::EndSpec& e = end == 0 ? m_spec.lines[static_cast<std::size_t>(line)].endA
+                                         : m_spec.lines[static_cast<std::size_t>(line)].endB;
+      if (e.kind != model::EndKind::Anchored && e.kind != model::EndKind::Pinned &&
+          e.kind != model::EndKind::Fixed)
+        throw InputError(file, e.sourceLine, key,
+                         "a coupled end must be held (type anchored, pinned or fixed): the host moves it");
+      if (e.motion.enabled)
+        throw InputError(file, e.sourceLine, key, "a coupled end must not have a motion of its own");
+      for (const auto& [l2, e2] : m_ends)
+        if (l2 == line && e2 == end)
+          throw InputError(file, e.sourceLine, key, "this end is in two coupled points");
+      m_ends.push_back({line, end});
+      m_endPoint.push_back(static_cast<int>(p));
+    }
+    m_pointOfEnd.push_back({first, static_cast<int>(m_ends.size())});
+  }
+  m_forces.assign(3 * m_points.size(), 0.0);
+  m_motion->start.assign(m_points.size(), Vec3::Zero());
+  m_motion->velocity.assign(m_points.size(), Vec3::Zero());
+  for (std::size_t p = 0; p < m_points.size(); ++p) {
+    const auto [line, end] = m_ends[static_cast<std::size_t>(m_pointOfEnd[p].first)];
+    const model::LineSpec& ls = m_spec.lines[static_cast<std::size_t>(line)];
+    m_motion->start[p] = end == 0 ? ls.endA.position : ls.endB.position;
+  }
+}
+
+CoupledRun::~CoupledRun() {
+  if (m_dynamics && m_simulation) {
+    try {
+      m_dynamics->finish(m_simulation->state());
+    } catch (const std::exception& e) {
+      std::cerr << "tangle: closing the coupled run: " << e.what() << "\n";
+    }
+  }
+}
+
+std::vector<double> CoupledRun::modelPositions() const {
+  std::vector<double> out;
+  for (std::size_t p = 0; p < m_points.size(); ++p) {
+    const auto [line, end] = m_ends[static_cast<std::size_t>(m_pointOfEnd[p].first)];
+    const model::LineSpec& ls = m_spec.lines[static_cast<std::size_t>(line)];
+    const Vec3 x = end == 0 ? ls.endA.position : ls.endB.position;
+    out.insert(out.end(), {x.x(), x.y(), x.z()});
+  }
+  return out;
+}
+
+void CoupledRun::setHostMotion(std::span<const double> x, std::span<const double> xd, double t0) {
+  const std::size_t n = 3 * m_points.size();
+  if (x.size() != n || xd.size() != n)
+    throw InputError(m_spec.sourceFile, 0, "coupled points",
+                     fmt::format("expected {} positions and velocities (3 per coupled point), got {} and {}",
+                                 n, x.size(), xd.size()));
+  for (std::size_t p = 0; p < m_points.size(); ++p) {
+    m_motion->start[p] = Vec3(x[3 * p], x[3 * p + 1], x[3 * p + 2]);
+    m_motion->velocity[p] = Vec3(xd[3 * p], xd[3 * p + 1], xd[3 * p + 2]);
+    if (!m_motion->start[p].allFinite() || !m_motion->velocity[p].allFinite())
+      throw InputError(m_spec.sourceFile, 0, fmt::format("coupled point {}", m_points[p].name),
+                       "the host gave a position or velocity that is not a finite number");
+  }
+  m_motion->t0 = t0;
+}
+
+void CoupledRun::initialize(std::span<const double> x, std::span<const double> xd) {
+  if (m_simulation) throw Error("CoupledRun::initialize: the run is initialised already");
+  setHostMotion(x, xd, 0.0);
+  model::ModelSpec spec = m_spec;
+  for (std::size_t k = 0; k < m_ends.size(); ++k) {
+    const auto [line, end] = m_ends[k];
+    model::EndSpec& e = end == 0 ? spec.lines[static_cast<std::size_t>(line)].endA
+                                 : spec.lines[static_cast<std::size_t>(line)].endB;
+    e.position = m_motion->start[static_cast<std::size_t>(m_endPoint[k])];
+  }
+  auto simulation = std::make_unique<Simulation>(std::move(spec));
+  const solver::StaticResult statics = simulation->solveStatics();
+  if (!statics.converged)
+    throw ConvergenceError(
+        fmt::format("the static analysis at the coupled points' initial positions did not converge: {}",
+                    statics.message));
+  // The host decides the duration: the run has none of its own, nor output times.
+  model::DynamicSpec settings = simulation->model().spec().dynamics;
+  settings.duration = std::numeric_limits<double>::max();
+  settings.outputInterval = std::numeric_limits<double>::max();
+  auto dynamics = std::make_unique<time::DynamicAnalysis>(simulation->assembler(), settings);
+  if (simulation->vessels()) dynamics->addPrescribed(simulation->vessels()->prescribedNodes());
+  std::vector<model::PrescribedNode> held;
+  const model::Model& model = simulation->model();
+  for (std::size_t k = 0; k < m_ends.size(); ++k) {
+    const auto [line, end] = m_ends[k];
+    const model::Line& ml = model.lines()[static_cast<std::size_t>(line)];
+    const int point = m_endPoint[k];
+    const Vec3 base = m_motion->start[static_cast<std::size_t>(point)];
+    std::shared_ptr<const HostMotion> motion = m_motion;
+    held.push_back({end == 0 ? ml.firstNode : ml.lastNode(), base, [motion, point, base](double t) {
+                      model::MotionValue v;
+                      v.displacement = motion->at(point, t) - base;
+                      v.velocity = motion->velocity[static_cast<std::size_t>(point)];
+                      return v;
+                    }});
+  }
+  dynamics->addPrescribed(std::move(held));
+  m_simulation = std::move(simulation);
+  m_dynamics = std::move(dynamics);
+  m_dynamics->start(m_simulation->state());
+  refreshResults(false);
+}
+
+void CoupledRun::step(std::span<const double> x, std::span<const double> xd, double dt) {
+  if (!m_simulation) throw Error("CoupledRun::step: initialize the run first");
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw InputError(m_spec.sourceFile, 0, "dt", fmt::format("expected a time step > 0, got {}", dt));
+  model::State& state = m_simulation->state();
+  setHostMotion(x, xd, state.time);
+  if (!m_dynamics->advance(state, state.time + dt)) throw ConvergenceError(m_dynamics->result().message);
+  refreshResults(true);
+}
+
+double CoupledRun::time() const { return m_simulation ? m_simulation->state().time : 0.0; }
+
+Vec3 CoupledRun::pointPosition(int point) const { return m_motion->at(point, time()); }
+
+Vec3 CoupledRun::pointVelocity(int point) const {
+  return m_motion->velocity[static_cast<std::size_t>(point)];
+}
+
+Simulation& CoupledRun::simulation() {
+  if (!m_simulation) throw Error("CoupledRun::simulation: initialize the run first");
+  return *m_simulation;
+}
+
+void CoupledRun::refreshResults(bool dynamic) {
+  m_lines = m_simulation->snapshot(dynamic);
+  std::fill(m_forces.begin(), m_forces.end(), 0.0);
+  for (std::size_t k = 0; k < m_ends.size(); ++k) {
+    const auto [line, end] = m_ends[k];
+    const solver::LineSnapshot& s = m_lines[static_cast<std::size_t>(line)];
+    // The force the line exerts on its support (LineSnapshot::endForceA/B): on the host.
+    const Vec3& onHost = end == 0 ? s.endForceA : s.endForceB;
+    for (int i = 0; i < 3; ++i) m_forces[3 * static_cast<std::size_t>(m_endPoint[k]) + i] += onHost[i];
+  }
+}
+
+}  // namespace tangle::analysis

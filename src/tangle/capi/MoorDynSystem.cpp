@@ -1,0 +1,327 @@
+#include "tangle/capi/MoorDynSystem.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <span>
+#include <utility>
+
+#include "MoorDynAPI.h"
+
+namespace tangle::capi {
+
+namespace {
+
+/// @throws InvalidValue when `values` (n of them) is null or holds a value that is not finite.
+void checkFinite(const double* values, int n, const char* name) {
+  if (n == 0) return;
+  if (values == nullptr) throw InvalidValue(fmt::format("{} is NULL ({} coupled DOFs expected)", name, n));
+  for (int k = 0; k < n; ++k)
+    if (!std::isfinite(values[k])) throw InvalidValue(fmt::format("{}[{}] is {}", name, k, values[k]));
+}
+
+}  // namespace
+
+MoorDynSystem::MoorDynSystem(const std::string& path)
+    : m_path(path.empty() ? std::string("Mooring/lines.txt") : path),
+      m_coupling(io::loadMoorDynCoupling(m_path)),
+      m_verbosity(MOORDYN_MSG_LEVEL),
+      m_logLevel(MOORDYN_MSG_LEVEL) {
+  const io::MoorDynConversion& c = m_coupling.conversion;
+  if (c.lines.size() != m_coupling.deck.lines.size() || c.points.size() != m_coupling.deck.points.size())
+    throw Error(fmt::format("{}: the conversion maps {} of {} lines and {} of {} points (a bug in tangle)",
+                            m_path, c.lines.size(), m_coupling.deck.lines.size(), c.points.size(),
+                            m_coupling.deck.points.size()));
+  // What the conversion changed or approximated, and the reader's plausibility warnings.
+  for (const std::string& warning : m_coupling.spec.warnings)
+    log(MOORDYN_WRN_LEVEL, "tangle (MoorDyn API): " + warning + "\n");
+  m_run = std::make_unique<analysis::CoupledRun>(m_coupling.spec, m_coupling.points);
+  int coupled = 0;
+  for (const io::MoorDynPointMap& p : c.points)
+    m_coupledIndex.push_back(p.kind == io::MoorDynPointKind::Coupled ? coupled++ : -1);
+  for (std::size_t l = 0; l < c.lines.size(); ++l)
+    m_lineHandles.push_back(std::make_unique<LineHandle>(LineHandle{this, static_cast<int>(l)}));
+  for (std::size_t p = 0; p < c.points.size(); ++p)
+    m_pointHandles.push_back(std::make_unique<PointHandle>(PointHandle{this, static_cast<int>(p)}));
+}
+
+MoorDynSystem::~MoorDynSystem() = default;
+
+void MoorDynSystem::setLogFile(const std::string& path) {
+  std::ofstream file(path, std::ios::out | std::ios::trunc);
+  if (!file) throw OutputError(fmt::format("cannot open the log file '{}'", path));
+  m_logFile = std::move(file);
+}
+
+void MoorDynSystem::log(int level, std::string_view text) {
+  if (level >= m_verbosity) std::cerr << text << std::flush;
+  if (m_logFile.is_open() && level >= m_logLevel) m_logFile << text << std::flush;
+}
+
+void MoorDynSystem::initialize(const double* x, const double* xd) {
+  if (initialized()) throw InvalidValue("MoorDyn_Init was already called on this system");
+  const int n = coupledDofCount();
+  checkFinite(x, n, "x");
+  std::vector<double> velocity(static_cast<std::size_t>(n), 0.0);
+  if (xd != nullptr) {
+    checkFinite(xd, n, "xd");
+    std::copy(xd, xd + n, velocity.begin());
+  }
+  m_run->initialize(std::span<const double>(x, static_cast<std::size_t>(n)), velocity);
+  m_tangleLines.clear();
+}
+
+void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t, double dt) {
+  requireInitialized();
+  const int n = coupledDofCount();
+  if (n > 0 && f == nullptr) throw InvalidValue(fmt::format("f is NULL ({} coupled DOFs)", n));
+  if (std::isnan(dt)) throw InvalidValue("dt is NaN");
+  if (dt > 0.0) {
+    if (!std::isfinite(dt)) throw InvalidValue("dt is infinite");
+    checkFinite(x, n, "x");
+    checkFinite(xd, n, "xd");
+    const auto size = static_cast<std::size_t>(n);
+    m_run->step(std::span<const double>(x, size), std::span<const double>(xd, size), dt);
+  }
+  const std::vector<double>& forces = m_run->forces();
+  if (n > 0) std::copy(forces.begin(), forces.begin() + n, f);
+  if (t != nullptr) *t = m_run->time();
+}
+
+void MoorDynSystem::setTimeStep(double dt) {
+  if (!(dt > 0.0) || !std::isfinite(dt))
+    throw InvalidValue(fmt::format("the time step must be > 0, not {}", dt));
+  if (initialized())
+    throw NotImplemented(
+        "the time step can only be changed before MoorDyn_Init (the analysis is set up with it)");
+  model::DynamicSpec& d = m_coupling.spec.dynamics;
+  d.timeStep = dt;
+  d.minTimeStep = std::min(d.minTimeStep, dt);
+  d.outputInterval = std::max(d.outputInterval, dt);
+  if (d.maxTimeStep > 0.0) d.maxTimeStep = std::max(d.maxTimeStep, dt);
+  m_run = std::make_unique<analysis::CoupledRun>(m_coupling.spec, m_coupling.points);
+}
+
+std::string MoorDynSystem::timeSchemeName() const {
+  switch (m_coupling.spec.dynamics.integrator) {
+    case model::IntegratorKind::GeneralizedAlpha:
+      return "generalized_alpha";
+    case model::IntegratorKind::Hht:
+      return "hht";
+    case model::IntegratorKind::Newmark:
+      return "newmark";
+  }
+  return "unknown";
+}
+
+LineHandle* MoorDynSystem::line(unsigned int id) {
+  if (id < 1 || id > m_lineHandles.size()) return nullptr;
+  return m_lineHandles[id - 1].get();
+}
+
+PointHandle* MoorDynSystem::point(unsigned int id) {
+  if (id < 1 || id > m_pointHandles.size()) return nullptr;
+  return m_pointHandles[id - 1].get();
+}
+
+void MoorDynSystem::requireInitialized() const {
+  if (!initialized())
+    throw InvalidValue("MoorDyn_Init has not been called on this system: there are no results yet");
+}
+
+const MoorDynSystem::TangleLine& MoorDynSystem::tangleLine(const std::string& name) {
+  requireInitialized();
+  if (const auto it = m_tangleLines.find(name); it != m_tangleLines.end()) return it->second;
+  const std::vector<solver::LineSnapshot>& results = m_run->lineResults();
+  const auto found = std::find_if(results.begin(), results.end(),
+                                  [&name](const solver::LineSnapshot& s) { return s.name == name; });
+  const int modelLine = m_run->simulation().model().lineIndex(name);
+  if (found == results.end() || modelLine < 0)
+    throw Error(
+        fmt::format("{}: the converted model has no results for line '{}' (a bug in tangle)", m_path, name));
+  return m_tangleLines[name] = TangleLine{static_cast<int>(found - results.begin()), modelLine};
+}
+
+MoorDynSystem::NodeRef MoorDynSystem::deckNode(int l, unsigned int i) {
+  const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
+  if (i > static_cast<unsigned int>(map.segments))
+    throw InvalidValue(fmt::format("line {} has nodes 0 to {}, not {}", deckLine(l).id, map.segments, i));
+  const TangleLine& t = tangleLine(map.tangleLine);
+  NodeRef n;
+  n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
+  n.modelLine = t.modelLine;
+  const int offset = static_cast<int>(i);
+  n.node = map.firstNode + (map.reversed ? -offset : offset);
+  if (n.node < 0 || n.node >= static_cast<int>(n.snapshot->position.size()))
+    throw Error(fmt::format(
+        "{}: node {} of line {} maps to node {} of tangle line '{}', which has {} (a bug in tangle)", m_path,
+        i, deckLine(l).id, n.node, map.tangleLine, n.snapshot->position.size()));
+  return n;
+}
+
+Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) const {
+  const solver::LineSnapshot& s = *n.snapshot;
+  const int last = static_cast<int>(s.position.size()) - 1;
+  if (n.node == 0) return s.endTensionForceA;
+  if (n.node == last) return -s.endTensionForceB;
+  // An inner node of the tangle line: the chord through its neighbours on the deck line (at a junction of
+  // two deck lines, the deck line's own segment only).
+  const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
+  const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
+  const int low = std::min(map.firstNode, other);
+  const int high = std::max(map.firstNode, other);
+  const auto before = static_cast<std::size_t>(n.node == low ? n.node : n.node - 1);
+  const auto after = static_cast<std::size_t>(n.node == high ? n.node : n.node + 1);
+  const Vec3 chord = s.position[after] - s.position[before];
+  const double length = chord.norm();
+  if (!(length > 0.0)) return Vec3::Zero();
+  return s.tension[static_cast<std::size_t>(n.node)] * (chord / length);
+}
+
+Vec3 MoorDynSystem::velocity(const NodeRef& n) {
+  analysis::Simulation& sim = m_run->simulation();
+  const model::Model& model = sim.model();
+  const int global = model.lines()[static_cast<std::size_t>(n.modelLine)].firstNode + n.node;
+  const Eigen::Index dof = model.dofs().firstDof(global);
+  return Vec3(sim.state().velocity.segment<3>(dof));
+}
+
+double MoorDynSystem::lineAxialStiffness(int l) const {
+  const std::string& type = deckLine(l).lineType;
+  for (const io::MoorDynLineType& t : m_coupling.deck.lineTypes)
+    if (t.name == type) return t.axialStiffness;
+  throw Error(fmt::format("{}: line {} has the unknown line type '{}'", m_path, deckLine(l).id, type));
+}
+
+Vec3 MoorDynSystem::nodePosition(int l, unsigned int i) {
+  const NodeRef n = deckNode(l, i);
+  return n.snapshot->position[static_cast<std::size_t>(n.node)];
+}
+
+Vec3 MoorDynSystem::nodeVelocity(int l, unsigned int i) { return velocity(deckNode(l, i)); }
+
+Vec3 MoorDynSystem::nodeForce(int l, unsigned int i) {
+  const NodeRef n = deckNode(l, i);
+  if (i == 0) return endForce(l, 0);
+  if (i == static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments))
+    return endForce(l, 1);
+  analysis::Simulation& sim = m_run->simulation();
+  const model::Model& model = sim.model();
+  const int global = model.lines()[static_cast<std::size_t>(n.modelLine)].firstNode + n.node;
+  const Eigen::Index dof = model.dofs().firstDof(global);
+  return model.nodeMass()[static_cast<std::size_t>(global)] * Vec3(sim.state().acceleration.segment<3>(dof));
+}
+
+Vec3 MoorDynSystem::nodeTension(int l, unsigned int i) {
+  const NodeRef n = deckNode(l, i);
+  const Vec3 t = tangleTension(n, l);
+  return m_coupling.conversion.lines[static_cast<std::size_t>(l)].reversed ? Vec3(-t) : t;
+}
+
+double MoorDynSystem::nodeCurvature(int l, unsigned int i) {
+  const NodeRef n = deckNode(l, i);
+  return n.snapshot->curvature[static_cast<std::size_t>(n.node)];
+}
+
+double MoorDynSystem::endTension(int l, int end) {
+  const auto segments =
+      static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
+  const NodeRef n = deckNode(l, end == 0 ? 0u : segments);
+  const solver::LineSnapshot& s = *n.snapshot;
+  if (n.node == 0) return s.endTensionA;
+  if (n.node == static_cast<int>(s.position.size()) - 1) return s.endTensionB;
+  return s.tension[static_cast<std::size_t>(n.node)];
+}
+
+double MoorDynSystem::maxTension(int l) {
+  const auto segments =
+      static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
+  const NodeRef a = deckNode(l, 0);
+  const NodeRef b = deckNode(l, segments);
+  const std::vector<double>& tension = a.snapshot->tension;
+  const auto first = tension.begin() + std::min(a.node, b.node);
+  const auto last = tension.begin() + std::max(a.node, b.node) + 1;
+  return *std::max_element(first, last);
+}
+
+Vec3 MoorDynSystem::endForce(int l, int end) {
+  if (end == 0) return nodeTension(l, 0);
+  const auto segments =
+      static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
+  return -nodeTension(l, segments);
+}
+
+int MoorDynSystem::pointType(int p) const {
+  switch (pointMap(p).kind) {
+    case io::MoorDynPointKind::Coupled:
+      return kPointCoupled;
+    case io::MoorDynPointKind::Free:
+      return kPointFree;
+    case io::MoorDynPointKind::Fixed:
+      return kPointFixed;
+  }
+  return kPointFixed;
+}
+
+Vec3 MoorDynSystem::endNodePosition(const std::pair<std::string, int>& end) {
+  const solver::LineSnapshot& s =
+      m_run->lineResults()[static_cast<std::size_t>(tangleLine(end.first).snapshot)];
+  return end.second == 0 ? s.position.front() : s.position.back();
+}
+
+Vec3 MoorDynSystem::endNodeVelocity(const std::pair<std::string, int>& end) {
+  const TangleLine& t = tangleLine(end.first);
+  NodeRef n;
+  n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
+  n.modelLine = t.modelLine;
+  n.node = end.second == 0 ? 0 : static_cast<int>(n.snapshot->position.size()) - 1;
+  return velocity(n);
+}
+
+Vec3 MoorDynSystem::pointPosition(int p) {
+  const io::MoorDynPointMap& map = pointMap(p);
+  if (!initialized()) return map.position;
+  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
+  if (coupled >= 0) return m_run->pointPosition(coupled);
+  if (!map.ends.empty()) return endNodePosition(map.ends.front());
+  if (!map.junctionLine.empty()) {
+    const solver::LineSnapshot& s =
+        m_run->lineResults()[static_cast<std::size_t>(tangleLine(map.junctionLine).snapshot)];
+    return s.position.at(static_cast<std::size_t>(map.junctionNode));
+  }
+  return map.position;  // a point no line is attached to
+}
+
+Vec3 MoorDynSystem::pointVelocity(int p) {
+  const io::MoorDynPointMap& map = pointMap(p);
+  if (!initialized() || map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
+  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
+  if (coupled >= 0) return m_run->pointVelocity(coupled);
+  if (!map.ends.empty()) return endNodeVelocity(map.ends.front());
+  if (!map.junctionLine.empty()) {
+    const TangleLine& t = tangleLine(map.junctionLine);
+    NodeRef n;
+    n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
+    n.modelLine = t.modelLine;
+    n.node = map.junctionNode;
+    return velocity(n);
+  }
+  return Vec3::Zero();
+}
+
+Vec3 MoorDynSystem::pointForce(int p) {
+  requireInitialized();
+  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
+  if (coupled >= 0) {
+    const std::vector<double>& f = m_run->forces();
+    const auto k = static_cast<std::size_t>(3 * coupled);
+    return Vec3(f[k], f[k + 1], f[k + 2]);
+  }
+  Vec3 sum = Vec3::Zero();
+  for (const auto& [deckId, end] : pointMap(p).attachedLines) sum += endForce(deckId - 1, end);
+  return sum;
+}
+
+}  // namespace tangle::capi

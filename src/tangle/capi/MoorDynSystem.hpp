@@ -1,0 +1,181 @@
+#pragma once
+/// @file MoorDynSystem.hpp
+/// The C++ object behind a MoorDyn handle of the MoorDyn-compatible C API (include/tangle-moordyn/): a
+/// MoorDyn deck converted into a tangle model (io::loadMoorDynCoupling) and run by analysis::CoupledRun,
+/// with the deck's lines and points answered in the deck's terms (ids from 1, nodes from end A of each deck
+/// line, MoorDyn's signs). Every query throws (InvalidValue, NotImplemented, tangle's own errors); the C
+/// functions (MoorDynApi.cpp, MoorDynObjectsApi.cpp, MoorDynV1Api.cpp) turn them into MOORDYN_* codes.
+///
+/// Deck line l, node i (0 at the deck line's end A) is node firstNode + i (firstNode - i when reversed) of
+/// tangle line MoorDynLineMap::tangleLine. Results come from CoupledRun::lineResults() (the state after the
+/// last initialize or step); the velocities and accelerations from the simulation's state.
+/// Units: SI (m, m/s, m/s^2, N, s).
+
+#include <fstream>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "tangle/analysis/CoupledRun.hpp"
+#include "tangle/core/Error.hpp"
+#include "tangle/core/Types.hpp"
+#include "tangle/io/MoorDynCoupling.hpp"
+
+namespace tangle::capi {
+
+/// A call the API refuses: a NULL output, an index out of range, a call out of order (MOORDYN_INVALID_VALUE).
+class InvalidValue : public Error {
+ public:
+  explicit InvalidValue(const std::string& message) : Error(message) {}
+};
+
+/// A function tangle does not implement (MOORDYN_NON_IMPLEMENTED); the message says why.
+class NotImplemented : public Error {
+ public:
+  explicit NotImplemented(const std::string& message) : Error(message) {}
+};
+
+class MoorDynSystem;
+
+/// What a MoorDynLine handle points to: a line of the deck (owned by its system).
+struct LineHandle {
+  MoorDynSystem* system = nullptr;
+  int index = 0;  ///< 0-based position in the deck's LINES table (deck id - 1)
+};
+
+/// What a MoorDynPoint handle points to: a point of the deck (owned by its system).
+struct PointHandle {
+  MoorDynSystem* system = nullptr;
+  int index = 0;  ///< 0-based position in the deck's POINTS table (deck id - 1)
+};
+
+/// MoorDyn's point types (MoorDyn's Point::types), as MoorDyn_GetPointType returns them.
+inline constexpr int kPointCoupled = -1;
+inline constexpr int kPointFree = 0;
+inline constexpr int kPointFixed = 1;
+
+class MoorDynSystem {
+ public:
+  /// Reads, converts and checks the deck (empty path: "Mooring/lines.txt", as MoorDyn) and sets up the
+  /// coupled run. @throws InputError for a deck tangle cannot represent or a model the reader refuses
+  explicit MoorDynSystem(const std::string& path);
+  ~MoorDynSystem();
+  MoorDynSystem(const MoorDynSystem&) = delete;
+  MoorDynSystem& operator=(const MoorDynSystem&) = delete;
+
+  /// @name Messages
+  /// A message reaches stderr when its level (MOORDYN_*_LEVEL) is at least the verbosity, and the log
+  /// file (if open) when at least the log level.
+  /// @{
+  void setVerbosity(int level) { m_verbosity = level; }
+  void setLogLevel(int level) { m_logLevel = level; }
+  /// Opens (truncates) the log file. @throws OutputError when it cannot be opened
+  void setLogFile(const std::string& path);
+  /// Writes `text` as it is (no newline added).
+  void log(int level, std::string_view text);
+  /// @}
+
+  /// @name The system
+  /// @{
+  /// Number of coupled DOFs: 3 per coupled point.
+  int coupledDofCount() const { return 3 * m_run->pointCount(); }
+  bool initialized() const { return m_run->initialized(); }
+  /// CoupledRun::initialize with x [m] and xd [m/s] (coupledDofCount() values each; xd may be null: zero).
+  /// @throws InvalidValue when called twice, for a null or non-finite x; ConvergenceError from the statics
+  void initialize(const double* x, const double* xd);
+  /// Advances by dt [s] (CoupledRun::step) and writes the forces on the coupled points [N] into f and the
+  /// time after the step [s] into *t; dt <= 0 only writes them. @throws InvalidValue before initialize or
+  /// for null or non-finite input; ConvergenceError when the model cannot be advanced
+  void step(const double* x, const double* xd, double* f, double* t, double dt);
+  /// The model's time step (dynamics.time_step) [s].
+  double timeStep() const { return m_coupling.spec.dynamics.timeStep; }
+  /// Sets the model's time step [s] (> 0). @throws NotImplemented after initialize (the analysis is set up
+  /// with it), InvalidValue for dt <= 0
+  void setTimeStep(double dt);
+  /// The model's integrator as the model file names it ("generalized_alpha", "hht", "newmark").
+  std::string timeSchemeName() const;
+  int lineCount() const { return static_cast<int>(m_lineHandles.size()); }
+  int pointCount() const { return static_cast<int>(m_pointHandles.size()); }
+  /// Handles by 1-based deck id; null when out of range. Owned by this system.
+  LineHandle* line(unsigned int id);
+  PointHandle* point(unsigned int id);
+  /// @}
+
+  /// @name Deck lines (index l = deck id - 1; node i from 0 at the deck line's end A to its segment count)
+  /// @{
+  const io::MoorDynLine& deckLine(int l) const { return m_coupling.deck.lines[static_cast<std::size_t>(l)]; }
+  /// EA of the deck line's type [N].
+  double lineAxialStiffness(int l) const;
+  Vec3 nodePosition(int l, unsigned int i);
+  Vec3 nodeVelocity(int l, unsigned int i);
+  /// At the deck line's ends: endForce(); at inner nodes: structural mass times acceleration [N].
+  Vec3 nodeForce(int l, unsigned int i);
+  /// Tension vector from the deck line's end A towards its end B [N]: at a tangle line end the end tension
+  /// force (LineSnapshot::endTensionForceA/B, oriented A to B); elsewhere the node's effective tension along
+  /// the chord through the neighbouring nodes of the same deck line.
+  Vec3 nodeTension(int l, unsigned int i);
+  /// LineSnapshot::curvature at the node [1/m].
+  double nodeCurvature(int l, unsigned int i);
+  /// Effective tension at end `end` (0 A, 1 B) of the deck line [N]: LineSnapshot::endTensionA/B where the
+  /// deck line ends a tangle line, the node's effective tension at a junction of two deck lines.
+  double endTension(int l, int end);
+  /// Largest effective tension over the deck line's nodes [N].
+  double maxTension(int l);
+  /// Force the deck line exerts on what holds its end `end` (0 A, 1 B) [N], pointing from the end into the
+  /// line: nodeTension at end A, minus nodeTension at end B.
+  Vec3 endForce(int l, int end);
+  /// @}
+
+  /// @name Deck points (index p = deck id - 1)
+  /// @{
+  const io::MoorDynPointMap& pointMap(int p) const {
+    return m_coupling.conversion.points[static_cast<std::size_t>(p)];
+  }
+  /// kPointCoupled, kPointFree or kPointFixed.
+  int pointType(int p) const;
+  Vec3 pointPosition(int p);
+  Vec3 pointVelocity(int p);
+  /// Coupled: CoupledRun::forces(); others: the sum of endForce() of the attached deck line ends [N].
+  Vec3 pointForce(int p);
+  /// @}
+
+ private:
+  /// A node of a deck line in the tangle model.
+  struct NodeRef {
+    const solver::LineSnapshot* snapshot = nullptr;
+    int modelLine = 0;  ///< index of the tangle line in model().lines()
+    int node = 0;       ///< index along the tangle line (0 = its end A)
+  };
+  /// Where a tangle line's results are.
+  struct TangleLine {
+    int snapshot = 0;   ///< index in CoupledRun::lineResults()
+    int modelLine = 0;  ///< index in model().lines()
+  };
+
+  void requireInitialized() const;
+  /// The tangle line named `name` (after initialize). @throws Error when the model has no such line
+  const TangleLine& tangleLine(const std::string& name);
+  /// Node i of deck line l. @throws InvalidValue for i above the line's segment count
+  NodeRef deckNode(int l, unsigned int i);
+  /// The tension vector at `n` oriented from the tangle line's end A to its end B [N]; `l` is the deck line.
+  Vec3 tangleTension(const NodeRef& n, int l) const;
+  Vec3 velocity(const NodeRef& n);
+  /// Position / velocity of a tangle line end (name, 0 A / 1 B).
+  Vec3 endNodePosition(const std::pair<std::string, int>& end);
+  Vec3 endNodeVelocity(const std::pair<std::string, int>& end);
+
+  std::string m_path;
+  io::DeckCoupling m_coupling;
+  std::unique_ptr<analysis::CoupledRun> m_run;
+  std::vector<int> m_coupledIndex;  ///< per deck point, its index among the coupled points (-1: not coupled)
+  std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)
+  std::vector<std::unique_ptr<LineHandle>> m_lineHandles;
+  std::vector<std::unique_ptr<PointHandle>> m_pointHandles;
+  int m_verbosity;
+  int m_logLevel;
+  std::ofstream m_logFile;
+};
+
+}  // namespace tangle::capi

@@ -1,0 +1,558 @@
+#include "tangle/io/MoorDynConversion.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
+
+#include "tangle/core/Error.hpp"
+
+namespace tangle::io {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+/// A number as YAML text: shortest form that reads back to the same double.
+std::string num(double v) {
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof(buffer), v);
+  return ec == std::errc() ? std::string(buffer, end) : fmt::format("{:.17g}", v);
+}
+
+std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", num(v.x()), num(v.y()), num(v.z())); }
+
+/// The options of a deck, resolved (MoorDyn2.cpp defaults; readOptionsLine names, case-insensitive).
+struct Options {
+  double timeStep = 0.001;  ///< dtM [s]
+  double gravity = 9.80665;
+  double density = 1025.0;
+  double depth = 0.0;                 ///< WtrDpth [m], 0 when not given
+  double seabedStiffness = 3.0e6;     ///< kBot [Pa/m]
+  double seabedDamping = 3.0e5;       ///< cBot [Pa s/m]
+  double friction = 0.0;              ///< FrictionCoefficient [-]
+  double frictionDamping = 200.0;     ///< FricDamp [N s/m]
+  double staticDynamicScale = 1.0;    ///< StatDynFricScale [-]
+  std::map<std::string, int> lineOf;  ///< option (lower case) -> deck line, for comments
+};
+
+double optionNumber(const MoorDynDeck& deck, const MoorDynOption& o) {
+  double v = 0.0;
+  const char* end = o.value.data() + o.value.size();
+  const auto [ptr, ec] = std::from_chars(o.value.data(), end, v);
+  if (ec != std::errc() || ptr != end)
+    throw InputError(deck.file, o.sourceLine, o.name, fmt::format("expected a number, got '{}'", o.value));
+  return v;
+}
+
+Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
+  Options opt;
+  // Options that change nothing in tangle, noted once per reason: (reason, "name (line N), ...").
+  std::vector<std::pair<std::string, std::string>> unused;
+  for (const MoorDynOption& o : deck.options) {
+    const std::string name = lower(o.name);
+    opt.lineOf[name] = o.sourceLine;
+    const auto value = [&] { return optionNumber(deck, o); };
+    const auto noted = [&](const std::string& why) {
+      const std::string entry = fmt::format("{} (line {})", o.name, o.sourceLine);
+      auto it = std::find_if(unused.begin(), unused.end(), [&](const auto& u) { return u.first == why; });
+      if (it == unused.end())
+        unused.push_back({why, entry});
+      else
+        it->second += ", " + entry;
+    };
+    if (name == "dtm" || name == "dt") {
+      opt.timeStep = value();
+      if (!(opt.timeStep > 0.0))
+        throw InputError(deck.file, o.sourceLine, o.name, "expected a time step > 0");
+    } else if (name == "g" || name == "gravity") {
+      opt.gravity = value();
+    } else if (name == "rho" || name == "wtrdnsty") {
+      opt.density = value();
+    } else if (name == "wtrdpth") {
+      opt.depth = value();
+    } else if (name == "kbot" || name == "kb") {
+      opt.seabedStiffness = value();
+      if (!(opt.seabedStiffness > 0.0))
+        throw InputError(deck.file, o.sourceLine, o.name, "expected kBot > 0 (tangle always has a seabed)");
+    } else if (name == "cbot" || name == "cb") {
+      opt.seabedDamping = value();
+    } else if (name == "frictioncoefficient") {
+      opt.friction = value();
+    } else if (name == "fricdamp") {
+      opt.frictionDamping = value();
+    } else if (name == "statdynfricscale") {
+      opt.staticDynamicScale = value();
+    } else if (name == "wavekin" && value() == 1.0) {
+      // Kinematics given by the host through MoorDyn_ExternalWaveKinSet: none in a standalone run (still
+      // water, as MoorDyn without a host); tangle's C API refuses that call (MOORDYN_NON_IMPLEMENTED).
+      noted(
+          "wave kinematics from the host program (WaveKin 1) are not taken by tangle: still water unless the "
+          "converted model's `environment` gives waves");
+    } else if (name == "wavekin" || name == "currents") {
+      if (value() != 0.0)
+        throw InputError(
+            deck.file, o.sourceLine, o.name,
+            fmt::format("{} = {}: wave and current kinematics from files or the API are not supported "
+                        "(set 0 and give waves and current in the converted model's `environment`)",
+                        o.name, o.value));
+    } else if (name == "seafloorfile") {
+      throw InputError(deck.file, o.sourceLine, o.name,
+                       "a 3D seafloor from a file is not supported (tangle's seabed is flat)");
+    } else if (name == "tscheme" || name == "cfl") {
+      noted(
+          "MoorDyn's explicit scheme and its step; tangle integrates with implicit generalized-alpha at "
+          "dynamics.time_step (docs/moordyn.md)");
+    } else if (name == "dtic" || name == "icdt" || name == "tmaxic" || name == "ictmax" ||
+               name == "cdscaleic" || name == "icdfac" || name == "threshic" || name == "icthresh" ||
+               name == "gendynamicic" || name == "icgendynamic" || name == "fileic" || name == "icfile") {
+      noted(
+          "initial-condition generation; tangle starts from its static equilibrium (Newton), not from a "
+          "relaxation");
+    } else if (name == "writelog" || name == "writeunits" || name == "dtout" || name == "disableoutput" ||
+               name == "disableouttime") {
+      noted("MoorDyn's output files; tangle writes its own (docs/moordyn.md, output channels)");
+    } else if (name == "dtwave" || name == "unifycurrentgrid") {
+      noted("wave-kinematics grid; not used (no wave kinematics from MoorDyn)");
+    } else {
+      throw InputError(
+          deck.file, o.sourceLine, o.name,
+          "unknown or unsupported MoorDyn option (docs/moordyn.md lists the options tangle reads)");
+    }
+  }
+  for (const auto& [why, names] : unused) notes.push_back(fmt::format("{}: {}: {}", deck.file, names, why));
+  return opt;
+}
+
+/// Largest seabed friction_velocity the model reader accepts [m/s].
+constexpr double kMaxFrictionVelocity = 10.0;
+
+/// One deck line placed in a chain of deck lines joined at free points.
+struct ChainEntry {
+  int line = 0;           ///< index in deck.lines
+  bool reversed = false;  ///< traversed from its end B to its end A
+};
+
+}  // namespace
+
+MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
+  MoorDynConversion out;
+  std::vector<std::string>& notes = out.notes;
+  const Options opt = readOptions(deck, notes);
+  const auto pointLine = [&](int id) { return deck.points[static_cast<std::size_t>(id - 1)].sourceLine; };
+
+  // Water depth: WtrDpth, deepened to the lowest point as MoorDyn does (MoorDyn2.cpp, point list).
+  double depth = opt.depth;
+  for (const MoorDynPoint& p : deck.points)
+    if (-p.position.z() > depth) {
+      if (opt.depth > 0.0)
+        notes.push_back(
+            fmt::format("{}:{}: point {} is below WtrDpth = {} m: the water depth is set to {} m, as "
+                        "MoorDyn does",
+                        deck.file, p.sourceLine, p.id, num(opt.depth), num(-p.position.z())));
+      depth = -p.position.z();
+    }
+  if (!(depth > 0.0))
+    throw InputError(deck.file, opt.lineOf.count("wtrdpth") ? opt.lineOf.at("wtrdpth") : 0, "WtrDpth",
+                     "expected a water depth > 0 (option WtrDpth, or a point below the surface)");
+
+  // Which deck line ends sit at each point.
+  std::vector<std::vector<std::pair<int, int>>> atPoint(deck.points.size());
+  for (std::size_t l = 0; l < deck.lines.size(); ++l) {
+    atPoint[static_cast<std::size_t>(deck.lines[l].pointA - 1)].push_back({static_cast<int>(l), 0});
+    atPoint[static_cast<std::size_t>(deck.lines[l].pointB - 1)].push_back({static_cast<int>(l), 1});
+  }
+  for (const MoorDynPoint& p : deck.points) {
+    const std::size_t n = atPoint[static_cast<std::size_t>(p.id - 1)].size();
+    if (n == 0)
+      throw InputError(
+          deck.file, p.sourceLine, fmt::format("point {}", p.id),
+          "no line is attached to this point (tangle models lines; a lone point has nothing to hold)");
+    if (p.kind == MoorDynPointKind::Free && n > 2)
+      throw InputError(
+          deck.file, p.sourceLine, fmt::format("point {}", p.id),
+          fmt::format("a free point joining {} lines (a bridle or a triplate) is not supported: tangle "
+                      "joins lines in series only (two lines at a free point)",
+                      n));
+  }
+  const auto isJunction = [&](int pointId) {
+    return deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
+           atPoint[static_cast<std::size_t>(pointId - 1)].size() == 2;
+  };
+  const auto pointAt = [&](int line, int end) {
+    const MoorDynLine& l = deck.lines[static_cast<std::size_t>(line)];
+    return end == 0 ? l.pointA : l.pointB;
+  };
+  const auto otherAt = [&](int pointId, int line) {
+    for (const auto& [l, e] : atPoint[static_cast<std::size_t>(pointId - 1)])
+      if (l != line) return std::pair{l, e};
+    return std::pair{-1, -1};
+  };
+
+  // Chains of deck lines joined in series at free points; each becomes one tangle line.
+  std::vector<std::vector<ChainEntry>> chains;
+  std::vector<bool> placed(deck.lines.size(), false);
+  for (std::size_t first = 0; first < deck.lines.size(); ++first) {
+    if (placed[first]) continue;
+    // Walk out through end A to the chain's start.
+    int line = static_cast<int>(first), outEnd = 0;
+    for (std::size_t guard = 0;; ++guard) {
+      const int p = pointAt(line, outEnd);
+      if (!isJunction(p)) break;
+      const auto [next, nextEnd] = otherAt(p, line);
+      if (next == static_cast<int>(first) || guard > deck.lines.size())
+        throw InputError(
+            deck.file, deck.lines[first].sourceLine, fmt::format("line {}", deck.lines[first].id),
+            "the lines joined at free points close a loop: tangle needs every chain of lines to end at a "
+            "fixed, coupled or free end point");
+      line = next;
+      outEnd = 1 - nextEnd;
+    }
+    // Walk forward from that end.
+    std::vector<ChainEntry> chain;
+    int inEnd = outEnd;
+    while (true) {
+      chain.push_back({line, inEnd == 1});
+      placed[static_cast<std::size_t>(line)] = true;
+      const int p = pointAt(line, 1 - inEnd);
+      if (!isJunction(p)) break;
+      const auto [next, nextEnd] = otherAt(p, line);
+      line = next;
+      inEnd = nextEnd;
+    }
+    chains.push_back(std::move(chain));
+  }
+
+  // Line types: one per deck type, or per deck line where a damping ratio (negative BA) gives each line's
+  // segments a different coefficient. MoorDyn (Line.cpp, setup): BA = -BA_in * (L/N) * sqrt(EA * w) [N s].
+  struct TypeUse {
+    std::string name;
+    const MoorDynLineType* type;
+    double damping;
+    std::vector<int> lines;
+  };
+  std::vector<TypeUse> types;
+  std::vector<std::string> typeOfLine(deck.lines.size());
+  for (const MoorDynLineType& t : deck.lineTypes) {
+    std::vector<TypeUse> uses;
+    for (std::size_t l = 0; l < deck.lines.size(); ++l) {
+      const MoorDynLine& dl = deck.lines[l];
+      if (dl.lineType != t.name) continue;
+      const double damping = t.axialDamping >= 0.0 ? t.axialDamping
+                                                   : -t.axialDamping * dl.length / dl.segments *
+                                                         std::sqrt(t.axialStiffness * t.massPerLength);
+      auto same = std::find_if(uses.begin(), uses.end(), [&](const TypeUse& u) {
+        return std::abs(u.damping - damping) <= 1e-12 * std::max(std::abs(damping), 1.0);
+      });
+      if (same == uses.end()) {
+        uses.push_back({t.name, &t, damping, {}});
+        same = uses.end() - 1;
+      }
+      same->lines.push_back(static_cast<int>(l));
+    }
+    if (uses.size() > 1)
+      for (TypeUse& u : uses)
+        u.name = fmt::format("{}-line{}", t.name, deck.lines[static_cast<std::size_t>(u.lines[0])].id);
+    for (TypeUse& u : uses) {
+      for (const int l : u.lines) typeOfLine[static_cast<std::size_t>(l)] = u.name;
+      types.push_back(std::move(u));
+    }
+  }
+
+  // Seabed: MoorDyn's kBot, cBot are per contact area (Pa/m, Pa s/m) over the node's diameter; tangle's per
+  // metre of line: the deck's longest line type sets the width.
+  const MoorDynLineType* widest = nullptr;
+  double longest = -1.0, longestSegment = 1.0;
+  for (const MoorDynLineType& t : deck.lineTypes) {
+    double total = 0.0, segment = 1.0;
+    for (const MoorDynLine& l : deck.lines)
+      if (l.lineType == t.name) {
+        total += l.length;
+        segment = l.length / l.segments;
+      }
+    if (total > longest) {
+      longest = total;
+      widest = &t;
+      longestSegment = segment;
+    }
+  }
+  const double width = widest->diameter;
+  bool typesDiffer = false;
+  for (const MoorDynLineType& t : deck.lineTypes) typesDiffer = typesDiffer || t.diameter != width;
+  if (typesDiffer)
+    notes.push_back(
+        fmt::format("seabed stiffness and damping per metre of line are kBot and cBot times the diameter "
+                    "{} m of line type {} (the longest); tangle has one seabed stiffness per metre for "
+                    "every line",
+                    num(width), widest->name));
+
+  // Layout of the YAML text.
+  std::string y;
+  const auto line = [&](const std::string& s) { y += s + "\n"; };
+  line(fmt::format("# tangle model converted from the MoorDyn input file {}", deck.file));
+  if (!deck.title.empty()) line(fmt::format("# deck title: {}", deck.title));
+  line(
+      "# Each value says where it came from (`deck line N`). The mapping and the differences from MoorDyn "
+      "are in");
+  line("# docs/moordyn.md. Units: SI (m, kg, N, s); angles in degrees.");
+  line("");
+  std::string title = deck.title.empty() ? std::string("MoorDyn deck") : deck.title;
+  std::replace(title.begin(), title.end(), '"', '\'');
+  line(fmt::format("title: \"{}\"", title));
+  line("");
+  line("environment:");
+  line(fmt::format("  water_depth: {}          # WtrDpth{}", num(depth),
+                   opt.lineOf.count("wtrdpth") ? fmt::format(" (deck line {})", opt.lineOf.at("wtrdpth"))
+                                               : " (deepest point)"));
+  const auto optionComment = [&](const char* name, const char* fallback) {
+    const auto it = opt.lineOf.find(name);
+    return it != opt.lineOf.end() ? fmt::format("deck line {}", it->second)
+                                  : fmt::format("MoorDyn default {}", fallback);
+  };
+  line(fmt::format("  water_density: {}        # WtrDnsty ({})", num(opt.density),
+                   optionComment("wtrdnsty", "1025")));
+  line(fmt::format("  gravity: {}               # g ({})", num(opt.gravity), optionComment("g", "9.80665")));
+  line("  seabed:");
+  line(fmt::format("    normal_stiffness: {}    # kBot {} Pa/m x diameter {} m ({})",
+                   num(opt.seabedStiffness * width), num(opt.seabedStiffness), num(width),
+                   optionComment("kbot", "3e6")));
+  line(fmt::format("    damping: {}             # cBot {} Pa s/m x diameter {} m ({})",
+                   num(opt.seabedDamping * width), num(opt.seabedDamping), num(width),
+                   optionComment("cbot", "3e5")));
+  line(fmt::format("    friction_coefficient: {}  # FrictionCoefficient ({})", num(opt.friction),
+                   optionComment("frictioncoefficient", "0")));
+  if (opt.friction > 0.0) {
+    // MoorDyn (Line.cpp): friction = min(mu FricDamp |v|, mu N) with N the node's seabed force: a viscous
+    // law saturating at |v| = N / FricDamp. tangle's viscous law mu N v / max(|v|, v_f) has the same slope
+    // when v_f = N / FricDamp, with N the submerged weight of one segment of the longest line type.
+    const double submerged =
+        (widest->massPerLength - opt.density * std::numbers::pi / 4.0 * width * width) * opt.gravity;
+    const double normal = std::max(submerged, 1e-6) * longestSegment;
+    const double matching = normal / opt.frictionDamping;
+    const double velocity = std::clamp(matching, 1e-4, kMaxFrictionVelocity);
+    if (velocity != matching)
+      notes.push_back(
+          fmt::format("seabed friction: MoorDyn's friction saturates only above {} m/s here (a weak viscous "
+                      "drag of mu FricDamp = "
+                      "{} N s/m per node below); tangle's friction_velocity is limited to {} m/s, so its "
+                      "friction is stronger "
+                      "at low speeds",
+                      num(matching), num(opt.friction * opt.frictionDamping), num(kMaxFrictionVelocity)));
+    line("    friction_model: viscous   # MoorDyn's saturated viscous friction");
+    line(fmt::format("    friction_velocity: {}   # = segment weight {} N / FricDamp {} N s/m ({})",
+                     num(velocity), num(normal), num(opt.frictionDamping), optionComment("fricdamp", "200")));
+    notes.push_back(fmt::format(
+        "seabed friction: MoorDyn's friction saturates at |v| = N / FricDamp with N each node's bottom "
+        "force; tangle "
+        "uses one friction_velocity = {} m/s (a segment of line type {} on the seabed) and holds the static "
+        "equilibrium with its elastic friction law",
+        num(velocity), widest->name));
+    if (opt.staticDynamicScale != 1.0)
+      notes.push_back(
+          fmt::format("StatDynFricScale = {}: tangle has one friction coefficient (static = dynamic)",
+                      num(opt.staticDynamicScale)));
+  }
+  line("");
+
+  line("line_types:");
+  for (const TypeUse& u : types) {
+    const MoorDynLineType& t = *u.type;
+    line(fmt::format("  - name: {}                # deck line {}", u.name, t.sourceLine));
+    line(fmt::format("    outer_diameter: {}      # Diam: drag, added mass and buoyancy (pi/4 d^2)",
+                     num(t.diameter)));
+    line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
+    line(fmt::format("    axial_stiffness: {}     # EA", num(t.axialStiffness)));
+    if (t.bendingStiffness > 0.0)
+      line(fmt::format("    bending_stiffness: {}   # EI", num(t.bendingStiffness)));
+    if (u.damping > 0.0) {
+      if (t.axialDamping < 0.0)
+        line(fmt::format(
+            "    axial_damping: {}       # BA/-zeta = {}: zeta x (L/N) x sqrt(EA m) of line {}, as MoorDyn",
+            num(u.damping), num(t.axialDamping), deck.lines[static_cast<std::size_t>(u.lines[0])].id));
+      else
+        line(fmt::format("    axial_damping: {}       # BA", num(u.damping)));
+    }
+    line(fmt::format("    drag_normal: {}         # Cd (on Diam)", num(t.dragNormal)));
+    line(fmt::format("    drag_axial: {}          # CdAx (on pi Diam, as MoorDyn)", num(t.dragAxial)));
+    line(fmt::format("    added_mass_normal: {}   # Ca", num(t.addedMassNormal)));
+    line(fmt::format("    added_mass_axial: {}    # CaAx", num(t.addedMassAxial)));
+  }
+  line("");
+
+  // Point maps, filled as the lines are written.
+  out.points.resize(deck.points.size());
+  for (const MoorDynPoint& p : deck.points) {
+    MoorDynPointMap& m = out.points[static_cast<std::size_t>(p.id - 1)];
+    m.deckId = p.id;
+    m.kind = p.kind;
+    m.position = p.position;
+    for (const auto& [l, e] : atPoint[static_cast<std::size_t>(p.id - 1)])
+      m.attachedLines.push_back({deck.lines[static_cast<std::size_t>(l)].id, e});
+  }
+  out.lines.resize(deck.lines.size());
+  for (const MoorDynPoint& p : deck.points)
+    if (p.kind == MoorDynPointKind::Coupled && (p.mass != 0.0 || p.volume != 0.0 || p.dragArea != 0.0))
+      notes.push_back(
+          fmt::format("{}:{}: point {} is coupled and has a mass, volume or drag area: the host carries "
+                      "them (tangle's force on the host is the lines' alone; MoorDyn adds the point's "
+                      "weight, buoyancy, drag and inertia)",
+                      deck.file, p.sourceLine, p.id));
+
+  const auto endBlock = [&](const char* key, int pointId, const std::string& lineName, int end) {
+    const MoorDynPoint& p = deck.points[static_cast<std::size_t>(pointId - 1)];
+    MoorDynPointMap& m = out.points[static_cast<std::size_t>(pointId - 1)];
+    m.ends.push_back({lineName, end});
+    switch (p.kind) {
+      case MoorDynPointKind::Fixed: {
+        const bool onSeabed = p.position.z() <= -depth + 1e-9 * depth;
+        line(fmt::format("    {}:", key));
+        line(fmt::format("      type: {}          # point {} {} (deck line {})",
+                         onSeabed ? "anchored" : "pinned", p.id, p.kindWord, p.sourceLine));
+        line(fmt::format("      position: {}", vec(p.position)));
+        break;
+      }
+      case MoorDynPointKind::Coupled:
+        line(fmt::format("    {}:", key));
+        line(
+            fmt::format("      type: pinned            # point {} {} (deck line {}): coupled, held here in a "
+                        "standalone run, moved by the host through the C API or tangle.Coupling",
+                        p.id, p.kindWord, p.sourceLine));
+        line(fmt::format("      position: {}", vec(p.position)));
+        break;
+      case MoorDynPointKind::Free:
+        line(fmt::format("    {}:", key));
+        line(fmt::format(
+            "      type: free              # point {} {} (deck line {}): the position is the starting "
+            "guess",
+            p.id, p.kindWord, p.sourceLine));
+        line(fmt::format("      position: {}", vec(p.position)));
+        break;
+    }
+  };
+  const auto attachment = [&](const MoorDynPoint& p, double arcLength) {
+    if (p.mass == 0.0 && p.volume == 0.0 && p.dragArea == 0.0) return;
+    line(fmt::format("      - arc_length: {}        # point {} (deck line {})", num(arcLength), p.id,
+                     p.sourceLine));
+    line(fmt::format("        mass: {}", num(p.mass)));
+    line(fmt::format("        volume: {}", num(p.volume)));
+    line(fmt::format("        drag_area: {}        # CdA", num(p.dragArea)));
+    line(fmt::format("        added_mass: {}       # Ca {} x rho x Volume",
+                     num(p.addedMass * opt.density * p.volume), num(p.addedMass)));
+  };
+
+  line("lines:");
+  for (const std::vector<ChainEntry>& chain : chains) {
+    std::string name;
+    for (const ChainEntry& c : chain)
+      name +=
+          (name.empty() ? "line" : "-line") + std::to_string(deck.lines[static_cast<std::size_t>(c.line)].id);
+    const ChainEntry& head = chain.front();
+    const ChainEntry& tail = chain.back();
+    const int startPoint = pointAt(head.line, head.reversed ? 1 : 0);
+    const int endPoint = pointAt(tail.line, tail.reversed ? 0 : 1);
+    std::string sources;
+    for (const ChainEntry& c : chain)
+      sources += fmt::format("{}{}", sources.empty() ? "" : ", ",
+                             deck.lines[static_cast<std::size_t>(c.line)].sourceLine);
+    line(fmt::format("  - name: {}                  # deck line{} {}{}", name, chain.size() > 1 ? "s" : "",
+                     sources, chain.size() > 1 ? " (joined in series at free points)" : ""));
+    endBlock("end_a", startPoint, name, 0);
+    endBlock("end_b", endPoint, name, 1);
+    line("    sections:");
+    int node = 0;
+    double arc = 0.0;
+    std::vector<std::pair<int, double>> junctions;  // (point id, arc length)
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const MoorDynLine& dl = deck.lines[static_cast<std::size_t>(chain[k].line)];
+      line(fmt::format("      - {{type: {}, length: {}, elements: {}}}   # line {}: UnstrLen, NumSegs{}",
+                       typeOfLine[static_cast<std::size_t>(chain[k].line)], num(dl.length), dl.segments,
+                       dl.id, chain[k].reversed ? " (its end A is at the far end)" : ""));
+      MoorDynLineMap& map = out.lines[static_cast<std::size_t>(chain[k].line)];
+      map.deckId = dl.id;
+      map.tangleLine = name;
+      map.segments = dl.segments;
+      map.reversed = chain[k].reversed;
+      map.firstNode = chain[k].reversed ? node + dl.segments : node;
+      node += dl.segments;
+      arc += dl.length;
+      if (k + 1 < chain.size()) {
+        const int p = pointAt(chain[k].line, chain[k].reversed ? 0 : 1);
+        junctions.push_back({p, arc});
+        MoorDynPointMap& m = out.points[static_cast<std::size_t>(p - 1)];
+        m.junctionLine = name;
+        m.junctionNode = node;
+      }
+    }
+    const MoorDynPoint& first = deck.points[static_cast<std::size_t>(startPoint - 1)];
+    const MoorDynPoint& last = deck.points[static_cast<std::size_t>(endPoint - 1)];
+    const bool startMass = first.kind == MoorDynPointKind::Free &&
+                           (first.mass != 0.0 || first.volume != 0.0 || first.dragArea != 0.0);
+    const bool endMass = last.kind == MoorDynPointKind::Free &&
+                         (last.mass != 0.0 || last.volume != 0.0 || last.dragArea != 0.0);
+    bool junctionMass = false;
+    for (const auto& [p, s] : junctions) {
+      const MoorDynPoint& jp = deck.points[static_cast<std::size_t>(p - 1)];
+      junctionMass = junctionMass || jp.mass != 0.0 || jp.volume != 0.0 || jp.dragArea != 0.0;
+    }
+    if (startMass || endMass || junctionMass) {
+      line("    attachments:                # free points' mass, volume, drag and added mass");
+      if (startMass) attachment(first, 0.0);
+      for (const auto& [p, s] : junctions) attachment(deck.points[static_cast<std::size_t>(p - 1)], s);
+      if (endMass) attachment(last, arc);
+    }
+    if (!junctions.empty()) {
+      line("    start_shape:                # the free points' positions in the deck, as the starting shape");
+      for (const auto& [p, s] : junctions)
+        line(fmt::format("      - {{position: {}, arc_length: {}}}   # point {} (deck line {})",
+                         vec(deck.points[static_cast<std::size_t>(p - 1)].position), num(s), p,
+                         pointLine(p)));
+    }
+  }
+  line("");
+
+  // Dynamics: MoorDyn has no duration of its own (the host decides): a standalone run is the statics, the
+  // initial conditions. The step is tangle's own (implicit), never below 0.01 s for dtM's explicit limit.
+  const double step = std::max(opt.timeStep, 0.01);
+  line("dynamics:");
+  line(
+      "  duration: 0                   # MoorDyn decks have no duration (the host program sets it): statics "
+      "only;");
+  line(
+      "                                # give a duration and a motion of the coupled ends to run dynamics "
+      "here");
+  line(fmt::format(
+      "  time_step: {}                # tangle's implicit step (dtM = {} s is an explicit scheme's "
+      "stability limit; a host's smaller step is used as given)",
+      num(step), num(opt.timeStep)));
+  line("  ramp_time: 0                  # MoorDyn ramps nothing");
+  line("  mass: lumped                  # as MoorDyn");
+  line("");
+  line("output:");
+  line("  plots: false");
+  if (!deck.outputs.empty()) {
+    std::string channels;
+    for (const std::string& c : deck.outputs) channels += (channels.empty() ? "" : " ") + c;
+    line(fmt::format("# MoorDyn OUTPUTS: {}", channels));
+    line(
+        "# tangle writes end forces (FairTen = end B, AnchTen = end A), tensions and positions at every node "
+        "instead");
+    line("# (dynamics/end_forces.csv, results.h5; docs/moordyn.md, output channels).");
+  }
+  if (!notes.empty()) {
+    y += "\n# Differences from MoorDyn for this deck:\n";
+    for (const std::string& n : notes) y += "#  - " + n + "\n";
+  }
+  out.yaml = std::move(y);
+  return out;
+}
+
+}  // namespace tangle::io

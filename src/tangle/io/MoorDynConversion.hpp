@@ -1,0 +1,51 @@
+#pragma once
+/// @file MoorDynConversion.hpp
+/// A MoorDyn v2 deck converted into a tangle model (YAML text with comments saying where each value came
+/// from) and the map from the deck's points and lines to the model's line ends and nodes, which `tangle
+/// run DECK`, `tangle convert` and the MoorDyn-compatible C API (capi/) use. The mapping is documented in
+/// docs/moordyn.md.
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tangle/io/MoorDynDeck.hpp"
+
+namespace tangle::io {
+
+/// Where a deck's line went in the tangle model: a tangle line may hold several deck lines joined in
+/// series at free points (each joined free point becomes an attachment at the junction node).
+struct MoorDynLineMap {
+  int deckId = 0;
+  std::string tangleLine;  ///< name of the tangle line
+  int firstNode = 0;       ///< index along the tangle line (0 = its end A) of the deck line's end A node
+  int segments = 0;        ///< the deck line's segments (= elements)
+  bool reversed = false;   ///< the deck line's end A is at the larger node index
+};
+
+/// Where a deck's point went in the tangle model.
+struct MoorDynPointMap {
+  int deckId = 0;
+  MoorDynPointKind kind = MoorDynPointKind::Fixed;
+  Vec3 position = Vec3::Zero();  ///< the deck's position [m]
+  /// The tangle line ends held at this point (line name, 0 = end A / 1 = end B): every end of a Fixed or
+  /// Coupled point; for a Free point the one end it is (a free end), or none when it joins two deck lines.
+  std::vector<std::pair<std::string, int>> ends;
+  std::string junctionLine;  ///< Free point joining two deck lines: the tangle line holding it
+  int junctionNode = -1;     ///< and the node index along that line
+  std::vector<std::pair<int, int>> attachedLines;  ///< (deck line id, 0 = end A / 1 = end B) attached here
+};
+
+/// A deck converted into a tangle model.
+struct MoorDynConversion {
+  std::string yaml;  ///< the tangle model file, with comments saying where each value came from
+  std::vector<MoorDynLineMap> lines;    ///< in deck order
+  std::vector<MoorDynPointMap> points;  ///< in deck order
+  std::vector<std::string> notes;       ///< what differs from MoorDyn (also in the YAML's comments)
+};
+
+/// Converts a deck. @throws InputError for what tangle cannot represent (a free point joining three or more
+/// lines, a line whose two ends are the same point, ...), naming the deck's file and line.
+MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck);
+
+}  // namespace tangle::io

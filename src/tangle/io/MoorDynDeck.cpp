@@ -1,0 +1,389 @@
+#include "tangle/io/MoorDynDeck.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <fstream>
+#include <sstream>
+
+#include "tangle/core/Error.hpp"
+
+namespace tangle::io {
+namespace {
+
+std::string upper(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return s;
+}
+
+std::vector<std::string> words(const std::string& line) {
+  std::vector<std::string> out;
+  std::istringstream in(line);
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+bool isBlank(const std::string& line) {
+  return std::all_of(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c) != 0; });
+}
+
+/// The sections of a MoorDyn v2 deck (MoorDyn2.cpp, ReadInFile): the names a "---" line may hold.
+enum class Section { None, LineTypes, Points, Lines, Options, Outputs, Unsupported };
+
+struct SectionName {
+  const char* name;
+  Section section;
+  const char* why;  ///< for unsupported sections: what tangle lacks
+};
+
+// Longer names first: "LINE TYPES" must not be taken for "LINES", "ROD TYPES" for "RODS".
+const SectionName kSections[] = {
+    {"LINE DICTIONARY", Section::LineTypes, ""},
+    {"LINE TYPES", Section::LineTypes, ""},
+    {"LINE PROPERTIES", Section::Lines, ""},
+    {"LINE LIST", Section::Lines, ""},
+    {"LINES", Section::Lines, ""},
+    {"ROD DICTIONARY", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
+    {"ROD TYPES", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
+    {"ROD PROPERTIES", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
+    {"ROD LIST", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
+    {"RODS", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
+    {"BODY PROPERTIES", Section::Unsupported,
+     "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
+     "bodies and add a `vessels` block)"},
+    {"BODY LIST", Section::Unsupported,
+     "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
+     "bodies and add a `vessels` block)"},
+    {"BODIES", Section::Unsupported,
+     "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
+     "bodies and add a `vessels` block)"},
+    {"POINT PROPERTIES", Section::Points, ""},
+    {"POINT LIST", Section::Points, ""},
+    {"CONNECTION PROPERTIES", Section::Points, ""},
+    {"NODE PROPERTIES", Section::Points, ""},
+    {"POINTS", Section::Points, ""},
+    {"FAILURE", Section::Unsupported, "line failures (ends released at a tension or time) are not supported"},
+    {"SYROPE IC", Section::Unsupported, "the Syrope rope model is not supported"},
+    {"EXTERNAL LOADS", Section::Unsupported, "external loads on points and bodies are not supported"},
+    {"OPTIONS", Section::Options, ""},
+    {"OUTPUT", Section::Outputs, ""},
+};
+
+class DeckParser {
+ public:
+  DeckParser(const std::string& text, std::string file) : m_file(std::move(file)) {
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line)) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      m_lines.push_back(line);
+    }
+  }
+
+  MoorDynDeck parse() {
+    MoorDynDeck deck;
+    deck.file = m_file;
+    if (m_lines.size() >= 2 && m_lines[0].find("---") != std::string::npos) deck.title = trim(m_lines[1]);
+    bool sawLineTypes = false;
+    for (std::size_t i = 0; i < m_lines.size(); ++i) {
+      if (m_lines[i].find("---") == std::string::npos) continue;
+      const std::string head = upper(m_lines[i]);
+      const SectionName* found = nullptr;
+      for (const SectionName& s : kSections)
+        if (head.find(s.name) != std::string::npos) {
+          found = &s;
+          break;
+        }
+      if (!found) continue;  // a decoration ("--- MoorDyn Input File ---", "--- need this line ---")
+      const int lineNo = static_cast<int>(i) + 1;
+      switch (found->section) {
+        case Section::Unsupported:
+          fail(lineNo, found->name, found->why);
+          break;
+        case Section::LineTypes:
+          sawLineTypes = true;
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            deck.lineTypes.push_back(lineType(n, w));
+          });
+          break;
+        case Section::Points:
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            deck.points.push_back(point(n, w, deck));
+          });
+          break;
+        case Section::Lines:
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            deck.lines.push_back(line(n, w, deck));
+          });
+          break;
+        case Section::Options:
+          i = readTable(i + 1, [&](int n, const std::vector<std::string>& w) {
+            if (w.size() < 2) fail(n, "OPTIONS", "expected `value name [description]`");
+            deck.options.push_back({w[1], w[0], n});
+          });
+          break;
+        case Section::Outputs:
+          i = readTable(i + 1, [&](int, const std::vector<std::string>& w) {
+            for (const std::string& channel : w) {
+              if (upper(channel) == "END") return;
+              deck.outputs.push_back(channel);
+            }
+          });
+          break;
+        case Section::None:
+          break;
+      }
+    }
+    if (!sawLineTypes)
+      fail(0, "LINE TYPES", "the deck has no LINE TYPES section (is it a MoorDyn v2 input file?)");
+    if (deck.lines.empty()) fail(0, "LINES", "the deck has no line (a LINES section with at least one row)");
+    // Lines may be listed before the points they name only if MoorDyn would read them: MoorDyn reads the
+    // sections in its own order (types, points, lines), so check the references once everything is read.
+    for (const MoorDynLine& l : deck.lines) {
+      for (const int p : {l.pointA, l.pointB})
+        if (p < 1 || p > static_cast<int>(deck.points.size()))
+          fail(l.sourceLine, fmt::format("line {} AttachA/AttachB", l.id),
+               fmt::format("point {} does not exist (the deck has {} points)", p, deck.points.size()));
+      const bool known = std::any_of(deck.lineTypes.begin(), deck.lineTypes.end(),
+                                     [&](const MoorDynLineType& t) { return t.name == l.lineType; });
+      if (!known)
+        fail(l.sourceLine, fmt::format("line {} LineType", l.id),
+             fmt::format("no line type named '{}'", l.lineType));
+    }
+    return deck;
+  }
+
+ private:
+  [[noreturn]] void fail(int line, const std::string& key, const std::string& expected) const {
+    throw InputError(m_file, line, key, expected);
+  }
+
+  static std::string trim(const std::string& s) {
+    const auto b = s.find_first_not_of(" \t");
+    if (b == std::string::npos) return "";
+    return s.substr(b, s.find_last_not_of(" \t") - b + 1);
+  }
+
+  /// Reads rows from `first` to the next "---" line (or the end); returns the index of the last line read.
+  template <class Row>
+  std::size_t readTable(std::size_t first, Row row) {
+    std::size_t i = first;
+    for (; i < m_lines.size(); ++i) {
+      if (m_lines[i].find("---") != std::string::npos) break;
+      if (isBlank(m_lines[i])) continue;
+      row(static_cast<int>(i) + 1, words(m_lines[i]));
+    }
+    return i - 1;
+  }
+
+  double number(int line, const std::string& key, const std::string& word) const {
+    double v = 0.0;
+    const char* end = word.data() + word.size();
+    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
+    if (ec != std::errc() || ptr != end) fail(line, key, fmt::format("expected a number, got '{}'", word));
+    return v;
+  }
+
+  int integer(int line, const std::string& key, const std::string& word) const {
+    const double v = number(line, key, word);
+    if (v != static_cast<double>(static_cast<int>(v)))
+      fail(line, key, fmt::format("expected an integer, got '{}'", word));
+    return static_cast<int>(v);
+  }
+
+  /// A value of a line-type column that MoorDyn may also take as a table file or a bar-separated set
+  /// (nonlinear or viscoelastic laws): tangle takes a single number.
+  double scalarProperty(int line, const std::string& type, const char* column, const std::string& word,
+                        const char* what) const {
+    const std::string key = fmt::format("line type {} {}", type, column);
+    if (word.find('|') != std::string::npos || upper(word).rfind("SYROPE:", 0) == 0)
+      fail(
+          line, key,
+          fmt::format("'{}': {} are not supported by tangle (one constant value per line type)", word, what));
+    double v = 0.0;
+    const char* end = word.data() + word.size();
+    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
+    if (ec != std::errc() || ptr != end)
+      fail(line, key,
+           fmt::format("'{}' is not a number: {} from a table file are not supported by tangle (one constant "
+                       "value per line type)",
+                       word, what));
+    return v;
+  }
+
+  MoorDynLineType lineType(int n, const std::vector<std::string>& w) const {
+    if (w.size() < 10)
+      fail(n, "LINE TYPES",
+           fmt::format("expected 10 columns (TypeName Diam Mass/m EA BA/-zeta EI Cd Ca CdAx CaAx), got {}",
+                       w.size()));
+    MoorDynLineType t;
+    t.name = w[0];
+    t.sourceLine = n;
+    const auto key = [&](const char* column) { return fmt::format("line type {} {}", t.name, column); };
+    t.diameter = number(n, key("Diam"), w[1]);
+    t.massPerLength = number(n, key("Mass/m"), w[2]);
+    t.axialStiffness =
+        scalarProperty(n, t.name, "EA", w[3], "nonlinear or viscoelastic axial stiffness laws");
+    t.axialDamping =
+        scalarProperty(n, t.name, "BA/-zeta", w[4], "tension-dependent or viscoelastic axial damping laws");
+    t.bendingStiffness = scalarProperty(n, t.name, "EI", w[5], "nonlinear bending stiffness laws");
+    t.dragNormal = number(n, key("Cd"), w[6]);
+    t.addedMassNormal = number(n, key("Ca"), w[7]);
+    t.dragAxial = number(n, key("CdAx"), w[8]);
+    t.addedMassAxial = number(n, key("CaAx"), w[9]);
+    if (w.size() > 10) {
+      const double lift = number(n, key("Cl"), w[10]);
+      if (lift != 0.0)
+        fail(n, key("Cl"), "vortex-induced vibration (a lift coefficient Cl > 0) is not supported by tangle");
+      if (w.size() != 11 && w.size() != 13)
+        fail(n, "LINE TYPES", fmt::format("expected 10, 11 or 13 columns, got {}", w.size()));
+    }
+    if (!(t.diameter > 0.0)) fail(n, key("Diam"), "expected a diameter > 0");
+    if (!(t.massPerLength > 0.0)) fail(n, key("Mass/m"), "expected a mass per length > 0");
+    if (!(t.axialStiffness > 0.0)) fail(n, key("EA"), "expected EA > 0");
+    if (t.bendingStiffness < 0.0) fail(n, key("EI"), "expected EI >= 0");
+    for (const auto& [value, column] : {std::pair{t.dragNormal, "Cd"}, std::pair{t.addedMassNormal, "Ca"},
+                                        std::pair{t.dragAxial, "CdAx"}, std::pair{t.addedMassAxial, "CaAx"}})
+      if (value < 0.0) fail(n, key(column), "expected a coefficient >= 0");
+    return t;
+  }
+
+  MoorDynPoint point(int n, const std::vector<std::string>& w, const MoorDynDeck& deck) const {
+    if (w.size() < 9)
+      fail(n, "POINTS",
+           fmt::format("expected 9 columns (ID Attachment X Y Z Mass Volume CdA Ca), got {}", w.size()));
+    MoorDynPoint p;
+    p.sourceLine = n;
+    p.id = integer(n, "POINTS ID", w[0]);
+    if (p.id != static_cast<int>(deck.points.size()) + 1)
+      fail(n, "POINTS ID",
+           fmt::format("point IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
+                       deck.points.size() + 1, p.id));
+    const auto key = [&](const char* column) { return fmt::format("point {} {}", p.id, column); };
+    p.kindWord = w[1];
+    const std::string kind = upper(w[1]);
+    // MoorDyn2.cpp splits the word into letters and a number; the letters decide the kind.
+    std::string letters;
+    for (const char c : kind)
+      if (std::isalpha(static_cast<unsigned char>(c)))
+        letters += c;
+      else
+        break;
+    if (letters == "ANCHOR" || letters == "FIXED" || letters == "FIX") {
+      p.kind = MoorDynPointKind::Fixed;
+    } else if (letters == "FAIRLEAD" || letters == "VESSEL" || letters == "VES" || letters == "COUPLED" ||
+               letters == "CPLD") {
+      p.kind = MoorDynPointKind::Coupled;
+    } else if (letters == "POINT" || letters == "CONNECT" || letters == "CON" || letters == "FREE") {
+      p.kind = MoorDynPointKind::Free;
+    } else if (letters == "BODY" || letters == "TURBINE") {
+      fail(n, key("Attachment"),
+           fmt::format("'{}': points on MoorDyn bodies are not supported (tangle's rigid bodies are vessels)",
+                       w[1]));
+    } else {
+      fail(n, key("Attachment"),
+           fmt::format("unknown point type '{}' (expected Fixed/Anchor, Coupled/Vessel/Fairlead or "
+                       "Free/Point/Connect)",
+                       w[1]));
+    }
+    for (int k = 0; k < 3; ++k) p.position[k] = number(n, key(k == 0 ? "X" : k == 1 ? "Y" : "Z"), w[2 + k]);
+    p.mass = number(n, key("Mass"), w[5]);
+    p.volume = number(n, key("Volume"), w[6]);
+    std::size_t next = 7;
+    if (w.size() >= 12) {
+      for (int k = 0; k < 3; ++k)
+        if (number(n, key("F"), w[7 + k]) != 0.0)
+          fail(n,
+               key(k == 0   ? "FX"
+                   : k == 1 ? "FY"
+                            : "FZ"),
+               "a constant external force on a point is not supported by tangle (use mass and volume for "
+               "weight and "
+               "buoyancy)");
+      next = 10;
+    }
+    p.dragArea = number(n, key("CdA"), w[next]);
+    p.addedMass = number(n, key("Ca"), w[next + 1]);
+    if (p.mass < 0.0) fail(n, key("Mass"), "expected a mass >= 0");
+    if (p.volume < 0.0) fail(n, key("Volume"), "expected a volume >= 0");
+    if (p.dragArea < 0.0) fail(n, key("CdA"), "expected CdA >= 0");
+    if (p.addedMass < 0.0) fail(n, key("Ca"), "expected Ca >= 0");
+    return p;
+  }
+
+  int attachment(int n, const std::string& key, const std::string& word) const {
+    const std::string u = upper(word);
+    std::size_t i = 0;
+    while (i < u.size() && std::isalpha(static_cast<unsigned char>(u[i]))) ++i;
+    const std::string letters = u.substr(0, i);
+    if (letters == "R" || letters == "ROD")
+      fail(n, key, fmt::format("'{}': lines attached to rods are not supported by tangle", word));
+    if (letters == "B" || letters == "BODY")
+      fail(n, key, fmt::format("'{}': lines attached to bodies are not supported by tangle", word));
+    if (!(letters.empty() || letters == "C" || letters == "CON" || letters == "P" || letters == "POINT"))
+      fail(n, key, fmt::format("'{}': expected a point number (e.g. 3 or P3)", word));
+    return integer(n, key, word.substr(i));
+  }
+
+  MoorDynLine line(int n, const std::vector<std::string>& w, const MoorDynDeck& deck) const {
+    if (w.size() < 7)
+      fail(
+          n, "LINES",
+          fmt::format("expected 7 columns (ID LineType AttachA AttachB UnstrLen NumSegs LineOutputs), got {}",
+                      w.size()));
+    MoorDynLine l;
+    l.sourceLine = n;
+    l.id = integer(n, "LINES ID", w[0]);
+    if (l.id != static_cast<int>(deck.lines.size()) + 1)
+      fail(n, "LINES ID",
+           fmt::format("line IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
+                       deck.lines.size() + 1, l.id));
+    const auto key = [&](const char* column) { return fmt::format("line {} {}", l.id, column); };
+    l.lineType = w[1];
+    l.pointA = attachment(n, key("AttachA"), w[2]);
+    l.pointB = attachment(n, key("AttachB"), w[3]);
+    l.length = number(n, key("UnstrLen"), w[4]);
+    l.segments = integer(n, key("NumSegs"), w[5]);
+    l.outputs = w[6];
+    if (!(l.length > 0.0)) fail(n, key("UnstrLen"), "expected an unstretched length > 0");
+    if (l.segments < 1) fail(n, key("NumSegs"), "expected at least 1 segment");
+    if (l.pointA == l.pointB) fail(n, key("AttachB"), "both ends of the line are on the same point");
+    return l;
+  }
+
+  std::string m_file;
+  std::vector<std::string> m_lines;
+};
+
+}  // namespace
+
+MoorDynDeck parseMoorDynDeck(const std::string& text, const std::string& file) {
+  return DeckParser(text, file).parse();
+}
+
+MoorDynDeck readMoorDynDeck(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "", "cannot open the file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return parseMoorDynDeck(buffer.str(), path);
+}
+
+bool isMoorDynDeck(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return false;
+  std::string line;
+  for (int i = 0; i < 200 && std::getline(in, line); ++i) {
+    if (line.find("---") == std::string::npos) continue;
+    const std::string head = upper(line);
+    if (head.find("LINE TYPES") != std::string::npos || head.find("LINE DICTIONARY") != std::string::npos)
+      return true;
+  }
+  return false;
+}
+
+}  // namespace tangle::io

@@ -1,0 +1,98 @@
+#pragma once
+/// @file MoorDynDeck.hpp
+/// A MoorDyn v2 input file ("deck") as written (its conversion into a tangle model: MoorDynConversion.hpp).
+///
+/// The deck is read section by section as MoorDyn v2 reads it (MoorDyn2.cpp: a section starts at a line
+/// holding "---" and the section's name; tables skip a column-name and a unit line; a section ends at the
+/// next "---" line): LINE TYPES / LINE DICTIONARY, POINTS / POINT LIST / POINT PROPERTIES / CONNECTION
+/// PROPERTIES / NODE PROPERTIES, LINES / LINE LIST / LINE PROPERTIES, OPTIONS, OUTPUTS. Every entry tangle
+/// cannot represent (rods, bodies, failures, VIV, nonlinear or viscoelastic stiffness tables, wave
+/// kinematics from files, ...) is refused with the file, the line and the entry's name: nothing is skipped
+/// silently. The mapping is documented in docs/moordyn.md.
+///
+/// Units as in MoorDyn: SI (m, kg, N, s).
+
+#include <string>
+#include <vector>
+
+#include "tangle/core/Types.hpp"
+
+namespace tangle::io {
+
+/// One LINE TYPES row.
+struct MoorDynLineType {
+  std::string name;
+  double diameter = 0.0;          ///< d [m]: drag, added mass, buoyancy (pi/4 d^2) and seabed contact width
+  double massPerLength = 0.0;     ///< [kg/m]
+  double axialStiffness = 0.0;    ///< EA [N]
+  double axialDamping = 0.0;      ///< BA [N s] (>= 0), or minus a damping ratio of the segments' axial mode
+  double bendingStiffness = 0.0;  ///< EI [N m^2]
+  double dragNormal = 0.0;        ///< Cd [-] on d
+  double addedMassNormal = 0.0;   ///< Ca [-] on pi/4 d^2
+  double dragAxial = 0.0;         ///< CdAx [-] on pi d
+  double addedMassAxial = 0.0;    ///< CaAx [-] on pi/4 d^2
+  int sourceLine = 0;
+};
+
+/// How a MoorDyn point is held.
+enum class MoorDynPointKind {
+  Fixed,    ///< Fixed / Anchor
+  Coupled,  ///< Coupled / Vessel / Fairlead: moved by the host program (held where the deck puts it
+            ///< standalone)
+  Free      ///< Free / Point / Connect: solved for, with its own mass, volume, drag and added mass
+};
+
+/// One POINTS row.
+struct MoorDynPoint {
+  int id = 0;
+  MoorDynPointKind kind = MoorDynPointKind::Fixed;
+  std::string kindWord;          ///< the attachment word as written (e.g. "Vessel")
+  Vec3 position = Vec3::Zero();  ///< [m]
+  double mass = 0.0;             ///< [kg]
+  double volume = 0.0;           ///< [m^3]
+  double dragArea = 0.0;         ///< CdA [m^2]
+  double addedMass = 0.0;        ///< Ca [-] on the volume
+  int sourceLine = 0;
+};
+
+/// One LINES row.
+struct MoorDynLine {
+  int id = 0;
+  std::string lineType;
+  int pointA = 0;       ///< id of the point at end A
+  int pointB = 0;       ///< id of the point at end B
+  double length = 0.0;  ///< unstretched length [m]
+  int segments = 1;
+  std::string outputs;  ///< the LineOutputs flags as written ("-" for none)
+  int sourceLine = 0;
+};
+
+/// One OPTIONS entry.
+struct MoorDynOption {
+  std::string name;   ///< as written
+  std::string value;  ///< as written
+  int sourceLine = 0;
+};
+
+/// A MoorDyn v2 input file.
+struct MoorDynDeck {
+  std::string file;   ///< path (used in messages)
+  std::string title;  ///< the first line after the file's first line of dashes, if any
+  std::vector<MoorDynLineType> lineTypes;
+  std::vector<MoorDynPoint> points;  ///< ids 1..n in order
+  std::vector<MoorDynLine> lines;    ///< ids 1..n in order
+  std::vector<MoorDynOption> options;
+  std::vector<std::string> outputs;  ///< OUTPUTS channel names
+};
+
+/// True when the file at `path` reads as a MoorDyn deck (a "---" line naming LINE TYPES or LINE DICTIONARY)
+/// rather than a YAML model.
+bool isMoorDynDeck(const std::string& path);
+
+/// Reads a MoorDyn v2 input file. @throws InputError naming the file, the line, the entry and what tangle
+/// expected (or why the entry is not supported).
+MoorDynDeck readMoorDynDeck(const std::string& path);
+/// The same from the deck's text; `file` is used in messages.
+MoorDynDeck parseMoorDynDeck(const std::string& text, const std::string& file);
+
+}  // namespace tangle::io

@@ -1,0 +1,217 @@
+// Unit tests of the MoorDyn-compatible C API (include/tangle-moordyn/), through the exported C functions
+// alone (this executable links libtangle_moordyn, not tangle_lib): the error codes of NULL and closed
+// handles, out-of-range ids and functions tangle does not implement; the answers about the coupled_chain
+// deck (one 410 m chain from a fixed anchor at (400, 0, -50) to a coupled fairlead at the origin, 41
+// segments) before and after MoorDyn_Init; the old single-system API.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "MoorDyn.h"
+#include "MoorDyn2.h"
+#include "TestPaths.hpp"
+
+namespace {
+
+std::string deckPath() { return std::string(tangle::test::kTestDataDir) + "/moordyn/coupled_chain.txt"; }
+
+double norm(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+TEST(MoorDynApi, CreateReturnsNullForAMissingFile) {
+  EXPECT_EQ(MoorDyn_Create("/nonexistent/tangle/deck.txt"), nullptr);
+}
+
+TEST(MoorDynApi, NullHandlesAreInvalidValues) {
+  unsigned int n = 7;
+  int id = 0;
+  double x[3] = {0, 0, 0}, f[3], t = 0.0, dt = 0.1;
+  float h = 0, v = 0, ah = 0, av = 0;
+  const int one = 1;
+  EXPECT_EQ(MoorDyn_NCoupledDOF(nullptr, &n), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(n, 7u);  // untouched
+  EXPECT_EQ(MoorDyn_Init(nullptr, x, x), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_Step(nullptr, x, x, f, &t, &dt), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetFASTtens(nullptr, &one, &h, &v, &ah, &av), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_Close(nullptr), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetLine(nullptr, 1), nullptr);
+  EXPECT_EQ(MoorDyn_GetPoint(nullptr, 1), nullptr);
+  EXPECT_EQ(MoorDyn_GetLineID(nullptr, &id), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetLineFairTen(nullptr, &t), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetPointType(nullptr, &id), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetPointPos(nullptr, x), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_SaveState(nullptr, "state.txt"), MOORDYN_INVALID_VALUE);
+}
+
+TEST(MoorDynApi, DescribesTheDeckBeforeInit) {
+  MoorDyn system = MoorDyn_Create(deckPath().c_str());
+  ASSERT_NE(system, nullptr);
+  unsigned int n = 0;
+  EXPECT_EQ(MoorDyn_NCoupledDOF(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 3u);
+  EXPECT_EQ(MoorDyn_GetNumberLines(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 1u);
+  EXPECT_EQ(MoorDyn_GetNumberPoints(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 2u);
+  EXPECT_EQ(MoorDyn_GetNumberBodies(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 0u);
+  EXPECT_EQ(MoorDyn_GetNumberRods(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 0u);
+  EXPECT_EQ(MoorDyn_GetLine(system, 0), nullptr);  // ids start at 1
+  EXPECT_EQ(MoorDyn_GetLine(system, 2), nullptr);
+  EXPECT_EQ(MoorDyn_GetPoint(system, 0), nullptr);
+  EXPECT_EQ(MoorDyn_GetPoint(system, 3), nullptr);
+  EXPECT_EQ(MoorDyn_GetBody(system, 1), nullptr);
+  EXPECT_EQ(MoorDyn_GetRod(system, 1), nullptr);
+
+  MoorDynLine line = MoorDyn_GetLine(system, 1);
+  ASSERT_NE(line, nullptr);
+  int id = 0;
+  EXPECT_EQ(MoorDyn_GetLineID(line, &id), MOORDYN_SUCCESS);
+  EXPECT_EQ(id, 1);
+  EXPECT_EQ(MoorDyn_GetLineN(line, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 41u);
+  EXPECT_EQ(MoorDyn_GetLineNumberNodes(line, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 42u);
+  double value = 0.0;
+  EXPECT_EQ(MoorDyn_GetLineUnstretchedLength(line, &value), MOORDYN_SUCCESS);
+  EXPECT_DOUBLE_EQ(value, 410.0);
+  EXPECT_EQ(MoorDyn_GetLineConstantEA(line, &value), MOORDYN_SUCCESS);
+  EXPECT_DOUBLE_EQ(value, 1.674e9);
+  EXPECT_EQ(MoorDyn_GetDt(system, &value), MOORDYN_SUCCESS);
+  EXPECT_DOUBLE_EQ(value, 0.01);
+
+  MoorDynPoint anchor = MoorDyn_GetPoint(system, 1);
+  MoorDynPoint fairlead = MoorDyn_GetPoint(system, 2);
+  ASSERT_NE(anchor, nullptr);
+  ASSERT_NE(fairlead, nullptr);
+  int type = 0;
+  EXPECT_EQ(MoorDyn_GetPointType(anchor, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, 1);  // MoorDyn's FIXED
+  EXPECT_EQ(MoorDyn_GetPointType(fairlead, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, -1);  // MoorDyn's COUPLED
+  double pos[3] = {1, 1, 1};
+  EXPECT_EQ(MoorDyn_GetPointPos(fairlead, pos), MOORDYN_SUCCESS);
+  EXPECT_EQ(norm(pos), 0.0);
+  EXPECT_EQ(MoorDyn_GetPointPos(anchor, pos), MOORDYN_SUCCESS);
+  EXPECT_DOUBLE_EQ(pos[0], 400.0);
+  EXPECT_DOUBLE_EQ(pos[2], -50.0);
+  EXPECT_EQ(MoorDyn_GetPointNAttached(fairlead, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 1u);
+  MoorDynLine attached = nullptr;
+  int end = -1;
+  EXPECT_EQ(MoorDyn_GetPointAttached(fairlead, 0, &attached, &end), MOORDYN_SUCCESS);
+  EXPECT_EQ(attached, line);
+  EXPECT_EQ(end, 1);  // end B
+  EXPECT_EQ(MoorDyn_GetPointAttached(fairlead, 1, &attached, &end), MOORDYN_INVALID_VALUE);
+
+  // No results before MoorDyn_Init.
+  double x[3] = {0, 0, 0}, f[3], t = 0.0, dt = 0.1;
+  EXPECT_EQ(MoorDyn_GetLineNodePos(line, 0, pos), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetLineFairTen(line, &value), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_GetPointForce(fairlead, pos), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_Step(system, x, x, f, &t, &dt), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDyn_SetDt(system, -1.0), MOORDYN_INVALID_VALUE);
+
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_INVALID_VALUE);  // closed handles are recognised
+}
+
+TEST(MoorDynApi, AnswersAfterInitAndStep) {
+  MoorDyn system = MoorDyn_Create(deckPath().c_str());
+  ASSERT_NE(system, nullptr);
+  MoorDynLine line = MoorDyn_GetLine(system, 1);
+  MoorDynPoint anchor = MoorDyn_GetPoint(system, 1);
+  MoorDynPoint fairlead = MoorDyn_GetPoint(system, 2);
+  double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0};
+  ASSERT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_INVALID_VALUE);  // once only
+  EXPECT_EQ(MoorDyn_SetDt(system, 0.005), MOORDYN_NON_IMPLEMENTED);
+
+  // The fairlead end: node 41 at the coupled point, its tension the end tension.
+  double pos[3], ten[3], fairTen = 0.0, maxTen = 0.0;
+  ASSERT_EQ(MoorDyn_GetLineNodePos(line, 41, pos), MOORDYN_SUCCESS);
+  EXPECT_NEAR(norm(pos), 0.0, 1e-9);
+  EXPECT_EQ(MoorDyn_GetLineNodePos(line, 42, pos), MOORDYN_INVALID_VALUE);
+  ASSERT_EQ(MoorDyn_GetLineFairTen(line, &fairTen), MOORDYN_SUCCESS);
+  EXPECT_GT(fairTen, 1e5);
+  ASSERT_EQ(MoorDyn_GetLineNodeTen(line, 41, ten), MOORDYN_SUCCESS);
+  EXPECT_NEAR(norm(ten), fairTen, 1e-9 * fairTen);  // a chain: the end force is the end tension
+  EXPECT_LT(ten[0], 0.0);  // pointing from end A (anchor, x = 400) towards end B (x = 0)
+  ASSERT_EQ(MoorDyn_GetLineMaxTen(line, &maxTen), MOORDYN_SUCCESS);
+  EXPECT_GE(maxTen, fairTen);
+  ASSERT_EQ(MoorDyn_GetLineNodePos(line, 0, pos), MOORDYN_SUCCESS);
+  EXPECT_NEAR(pos[0], 400.0, 1e-6);
+
+  // FAST's customary tensions: the line pulls the fairlead down and towards the anchor; the anchor's
+  // horizontal force is the fairlead's (no current, no friction, a grounded length at the anchor).
+  const int count = 1;
+  float fairH = 0, fairV = 0, anchH = 0, anchV = 0;
+  ASSERT_EQ(MoorDyn_GetFASTtens(system, &count, &fairH, &fairV, &anchH, &anchV), MOORDYN_SUCCESS);
+  EXPECT_GT(fairH, 0.0f);
+  EXPECT_LT(fairV, 0.0f);
+  EXPECT_NEAR(anchH, fairH, 1e-3 * fairH);
+  EXPECT_NEAR(std::hypot(fairH, fairV), fairTen, 1e-5 * fairTen);  // float precision
+  const int tooMany = 2;
+  EXPECT_EQ(MoorDyn_GetFASTtens(system, &tooMany, &fairH, &fairV, &anchH, &anchV), MOORDYN_INVALID_VALUE);
+
+  // MoorDyn_Step with dt = 0 only returns the forces: the coupled point's force.
+  double f[3], pointForce[3], t = -1.0, dt = 0.0;
+  ASSERT_EQ(MoorDyn_Step(system, x, xd, f, &t, &dt), MOORDYN_SUCCESS);
+  EXPECT_EQ(t, 0.0);
+  ASSERT_EQ(MoorDyn_GetPointForce(fairlead, pointForce), MOORDYN_SUCCESS);
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(pointForce[i], f[i]);
+  EXPECT_GT(f[0], 0.0);  // towards the anchor
+  ASSERT_EQ(MoorDyn_GetPointForce(anchor, pointForce), MOORDYN_SUCCESS);
+  EXPECT_LT(pointForce[0], 0.0);  // the anchor is pulled towards the fairlead
+
+  // Hold the fairlead for 0.5 s in host steps of 0.1 s (ten model steps each).
+  for (int k = 0; k < 5; ++k) {
+    dt = 0.1;
+    ASSERT_EQ(MoorDyn_Step(system, x, xd, f, &t, &dt), MOORDYN_SUCCESS);
+  }
+  EXPECT_NEAR(t, 0.5, 1e-9);
+  double vel[3] = {1, 1, 1};
+  ASSERT_EQ(MoorDyn_GetPointVel(fairlead, vel), MOORDYN_SUCCESS);
+  EXPECT_EQ(norm(vel), 0.0);
+  double nan[3] = {std::nan(""), 0, 0};
+  dt = 0.1;
+  EXPECT_EQ(MoorDyn_Step(system, nan, xd, f, &t, &dt), MOORDYN_INVALID_VALUE);
+
+  // What tangle does not have.
+  double node[3];
+  EXPECT_EQ(MoorDyn_GetLineNodeDrag(line, 3, node), MOORDYN_NON_IMPLEMENTED);
+  EXPECT_EQ(MoorDyn_SaveState(system, "state.txt"), MOORDYN_NON_IMPLEMENTED);
+  EXPECT_EQ(MoorDyn_BreakLine(system, fairlead, line), MOORDYN_NON_IMPLEMENTED);
+  unsigned int n = 0;
+  EXPECT_EQ(MoorDyn_ExternalWaveKinInit(system, &n), MOORDYN_NON_IMPLEMENTED);
+  EXPECT_EQ(MoorDyn_GetWaves(system), nullptr);
+  EXPECT_EQ(MoorDyn_GetSeafloor(system), nullptr);
+  size_t length = 0;
+  ASSERT_EQ(MoorDyn_GetTimeScheme(system, nullptr, &length), MOORDYN_SUCCESS);
+  std::string scheme(length, '\0');
+  ASSERT_EQ(MoorDyn_GetTimeScheme(system, scheme.data(), nullptr), MOORDYN_SUCCESS);
+  EXPECT_EQ(std::string(scheme.c_str()), "generalized_alpha");
+
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
+TEST(MoorDynApi, OldApiHoldsOneSystem) {
+  double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3], t = 0.0, dt = 0.1;
+  EXPECT_EQ(MoorDynStep(x, xd, f, &t, &dt), MOORDYN_INVALID_VALUE);  // no system yet
+  EXPECT_EQ(GetFairTen(1), -1.0);
+  ASSERT_EQ(MoorDynInit(x, xd, deckPath().c_str()), MOORDYN_SUCCESS);
+  EXPECT_GT(GetFairTen(1), 1e5);
+  EXPECT_EQ(GetFairTen(2), -1.0);
+  ASSERT_EQ(MoorDynStep(x, xd, f, &t, &dt), MOORDYN_SUCCESS);
+  EXPECT_NEAR(t, 0.1, 1e-12);
+  double pos[3];
+  ASSERT_EQ(GetNodePos(1, 41, pos), MOORDYN_SUCCESS);
+  EXPECT_NEAR(norm(pos), 0.0, 1e-9);
+  EXPECT_EQ(MoorDynClose(), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDynClose(), MOORDYN_INVALID_VALUE);
+  EXPECT_EQ(MoorDynInit(x, xd, "/nonexistent/tangle/deck.txt"), MOORDYN_UNHANDLED_ERROR);
+}
+
+}  // namespace

@@ -1,0 +1,142 @@
+"""tangle.Coupling: a model stepped by a host from Python (docs/moordyn.md, "C API and Python coupling").
+
+Run through ctest (it sets TANGLE_CLI and PYTHONPATH), or by hand:
+    PYTHONPATH=build/ci/python TANGLE_CLI=build/ci/tangle /usr/bin/python3 -m pytest -q tests/python/test_coupling.py
+
+The deck tests/data/moordyn/coupled_chain.txt: one 410 m chain in 50 m of water from an anchor at
+(400, 0, -50) to a coupled fairlead at the origin.
+- Held still for 5 s, the force on the fairlead stays the static force `tangle run --statics-only` gives for
+  that line end (summary.json `force_N`, the force the line exerts on what holds the end) within 1e-3: the
+  coupling starts from the same statics and a model at rest stays at rest.
+- Moved 1 m towards the anchor, the line slackens: the horizontal force drops.
+- The converted YAML model with the same points gives the same forces as the deck.
+- Bad input raises ModelError (files, end names), ValueError (array shapes) or RuntimeError (call order).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tangle
+
+ROOT = Path(__file__).resolve().parents[2]
+CLI = os.environ.get("TANGLE_CLI", str(ROOT / "build" / "ci" / "tangle"))
+DECK = ROOT / "tests" / "data" / "moordyn" / "coupled_chain.txt"
+YAML_MODEL = ROOT / "tests" / "data" / "model-reader-good.yaml"
+ANCHOR_DIRECTION = np.array([1.0, 0.0, 0.0])  # from the fairlead (0, 0, 0) towards the anchor (400, 0, -50)
+
+
+def run(*args) -> None:
+    result = subprocess.run([str(a) for a in args], capture_output=True, text=True, timeout=500)
+    assert result.returncode == 0, f"{' '.join(map(str, args))} exited {result.returncode}:\n{result.stderr}"
+
+
+@pytest.fixture(scope="module")
+def static_summary(tmp_path_factory):
+    out = tmp_path_factory.mktemp("coupling") / "statics"
+    run(CLI, "run", DECK, "-o", out, "--statics-only", "--no-plots", "--no-report", "-q")
+    return json.loads((out / "summary.json").read_text())
+
+
+def static_end_force(summary: dict, end_name: str) -> np.ndarray:
+    """summary.json's force_N at a line end named 'line:a' / 'line:b'."""
+    line, end = end_name.rsplit(":", 1)
+    entry = next(l for l in summary["lines"] if l["name"] == line)
+    return np.array(entry[f"end_{end}"]["force_N"], dtype=float)
+
+
+def test_a_deck_couples_its_coupled_points():
+    c = tangle.Coupling(DECK)
+    assert c.n_points == 1
+    assert len(c.points) == 1 and len(c.points[0]) == 1
+    np.testing.assert_allclose(c.model_positions, [[0.0, 0.0, 0.0]], atol=1e-12)
+    assert c.time == 0.0
+    assert c.forces.shape == (1, 3) and not c.forces.any()
+
+
+def test_held_still_the_force_stays_the_static_one(static_summary):
+    c = tangle.Coupling(DECK)
+    x = c.model_positions
+    c.init(x)
+    reference = static_end_force(static_summary, c.points[0][0])
+    assert np.linalg.norm(reference) > 1e5
+    assert np.linalg.norm(c.forces[0] - reference) <= 1e-3 * np.linalg.norm(reference)
+    xd = np.zeros_like(x)
+    for _ in range(50):
+        f = c.step(x, xd, 0.1)
+    assert c.time == pytest.approx(5.0, abs=1e-9)
+    assert f.shape == (1, 3)
+    np.testing.assert_array_equal(f, c.forces)
+    assert np.linalg.norm(f[0] - reference) <= 1e-3 * np.linalg.norm(reference), (
+        f"force after 5 s held still {f[0]} N, static {reference} N")
+    tensions = c.line_tensions()
+    line = c.points[0][0].rsplit(":", 1)[0]
+    assert line in tensions and tensions[line].shape == (42,)  # 41 segments
+    assert np.all(tensions[line] > 0.0)
+
+
+def test_moving_towards_the_anchor_lowers_the_horizontal_force():
+    c = tangle.Coupling(DECK)
+    x0 = c.model_positions
+    c.init(x0)
+    h0 = np.hypot(*c.forces[0, :2])
+    # 1 m towards the anchor over 5 s on a smooth (1 - cos) profile, then held 3 s; each step is given its
+    # start position and the chord velocity to its end (the C host's convention).
+    dt, ramp, hold = 0.05, 5.0, 3.0
+    offset = lambda t: 0.5 * (1.0 - np.cos(np.pi * min(t, ramp) / ramp))  # noqa: E731  [m]
+    for k in range(int(round((ramp + hold) / dt))):
+        t = k * dt
+        x = x0 + offset(t) * ANCHOR_DIRECTION
+        xd = (offset(t + dt) - offset(t)) / dt * ANCHOR_DIRECTION[None, :]
+        c.step(x, xd, dt)
+    np.testing.assert_allclose(c.model_positions, x0 + ANCHOR_DIRECTION, atol=1e-9)
+    h1 = np.hypot(*c.forces[0, :2])
+    assert h1 < 0.99 * h0, f"horizontal force {h1:.6g} N after moving 1 m towards the anchor, {h0:.6g} N before"
+    assert c.forces[0, 0] > 0.0  # still pulled towards the anchor
+
+
+def test_the_converted_model_with_the_same_points_gives_the_same_forces(tmp_path):
+    converted = tmp_path / "model.yaml"
+    run(CLI, "convert", DECK, "-o", converted)
+    deck = tangle.Coupling(DECK)
+    model = tangle.Coupling(converted, points=deck.points)
+    assert model.points == deck.points
+    x = deck.model_positions
+    deck.init(x)
+    model.init(x)
+    np.testing.assert_allclose(model.forces, deck.forces, rtol=1e-9, atol=1e-6)
+
+
+def test_bad_input_raises(tmp_path):
+    with pytest.raises(tangle.ModelError):
+        tangle.Coupling(tmp_path / "missing.txt")
+    with pytest.raises(tangle.ModelError, match="points"):
+        tangle.Coupling(YAML_MODEL)  # a YAML model has no default points
+    with pytest.raises(tangle.ModelError):
+        tangle.Coupling(DECK, points=[["no_such_line:b"]])
+    with pytest.raises(tangle.ModelError, match="line_name:a"):
+        tangle.Coupling(DECK, points=[["chain:c"]])
+    with pytest.raises(ValueError):
+        tangle.Coupling(DECK, points=["chain:b"])  # a list of ends, not a list of points
+
+    c = tangle.Coupling(DECK)
+    x = c.model_positions
+    with pytest.raises(RuntimeError):
+        c.step(x, np.zeros_like(x), 0.1)  # before init
+    with pytest.raises(RuntimeError):
+        c.line_tensions()
+    with pytest.raises(ValueError):
+        c.init(np.zeros((2, 3)))
+    c.init(x)
+    with pytest.raises(RuntimeError):
+        c.init(x)  # once only
+    with pytest.raises(ValueError):
+        c.step(x, np.zeros_like(x), 0.0)
+    with pytest.raises(ValueError):
+        c.step(x, np.zeros(4), 0.1)

@@ -1,0 +1,250 @@
+/// @file MoorDynDeckTest.cpp
+/// Tests of io::MoorDynDeck (reading a MoorDyn v2 input file) and io::MoorDynConversion (the tangle model it
+/// becomes): every supported kind of entry read and converted value by value, lines joined at free points,
+/// and one test per refused entry checking the file, the 1-based line and the entry's name.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "TestPaths.hpp"
+#include "tangle/core/Error.hpp"
+#include "tangle/io/ModelReader.hpp"
+#include "tangle/io/MoorDynConversion.hpp"
+#include "tangle/io/MoorDynDeck.hpp"
+
+namespace tangle::io {
+namespace {
+
+/// A deck with every supported kind of point; `points` and `lines` replace the tables, `options` the options.
+std::string deck(const std::string& points, const std::string& lines, const std::string& options = "",
+                 const std::string& types = "") {
+  return "--------------------- MoorDyn Input File ------------------------------------\n"       // 1
+         "Test deck\n"                                                                           // 2
+         "----------------------- LINE TYPES ------------------------------------------\n"       // 3
+         "TypeName   Diam    Mass/m     EA         BA/-zeta    EI   Cd    Ca    CdAx   CaAx\n"   // 4
+         "(name)     (m)     (kg/m)     (N)        (N-s/-)     (-)  (-)   (-)   (-)    (-)\n"    // 5
+         "chain      0.2     200        1.0e9      -0.5        0    1.2   1.0   0.4    0.5\n"    // 6
+         "rope       0.15    20         2.0e8      1.0e5       10   1.4   0.9   0.1    0.0\n" +  // 7
+         types +
+         "---------------------- POINTS --------------------------------\n"
+         "ID    Attachment  X       Y     Z      Mass   Volume  CdA    Ca\n"
+         "(#)   (-)         (m)     (m)   (m)    (kg)   (mˆ3)   (m^2)  (-)\n" +
+         points +
+         "---------------------- LINES ----------------------------------------\n"
+         "ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs\n"
+         "(#)  (name)     (#)      (#)      (m)       (-)      (-)\n" +
+         lines +
+         "---------------------- OPTIONS -----------------------------------------\n"
+         "0.001         dtM           time step (s)\n"
+         "100           WtrDpth       water depth (m)\n" +
+         options +
+         "---------------------- OUTPUTS -----------------------------------------\n"
+         "FairTen1\nAnchTen1\nEND\n"
+         "------------------------- need this line --------------------------------------\n";
+}
+
+const std::string kTwoPoints =
+    "1     Fixed     -300   0     -100   0      0       0      0\n"
+    "2     Vessel    0      0     -10    0      0       0      0\n";
+
+/// Expects an InputError from parsing and converting `text` at deck line `line` whose message holds `words`.
+void expectRefused(const std::string& text, int line, const std::string& words) {
+  try {
+    const MoorDynDeck d = parseMoorDynDeck(text, "deck.txt");
+    convertMoorDynDeck(d);
+    FAIL() << "expected an InputError mentioning '" << words << "'";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "deck.txt");
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+TEST(MoorDynDeck, ReadsEveryTableValueByValue) {
+  const MoorDynDeck d = parseMoorDynDeck(deck(kTwoPoints, "1 chain 1 2 320 40 pt\n"), "deck.txt");
+  EXPECT_EQ(d.title, "Test deck");
+  ASSERT_EQ(d.lineTypes.size(), 2u);
+  const MoorDynLineType& rope = d.lineTypes[1];
+  EXPECT_EQ(rope.name, "rope");
+  EXPECT_DOUBLE_EQ(rope.diameter, 0.15);
+  EXPECT_DOUBLE_EQ(rope.massPerLength, 20.0);
+  EXPECT_DOUBLE_EQ(rope.axialStiffness, 2.0e8);
+  EXPECT_DOUBLE_EQ(rope.axialDamping, 1.0e5);
+  EXPECT_DOUBLE_EQ(rope.bendingStiffness, 10.0);
+  EXPECT_DOUBLE_EQ(rope.dragNormal, 1.4);
+  EXPECT_DOUBLE_EQ(rope.addedMassNormal, 0.9);
+  EXPECT_DOUBLE_EQ(rope.dragAxial, 0.1);
+  EXPECT_DOUBLE_EQ(rope.addedMassAxial, 0.0);
+  EXPECT_EQ(rope.sourceLine, 7);
+  ASSERT_EQ(d.points.size(), 2u);
+  EXPECT_EQ(d.points[0].kind, MoorDynPointKind::Fixed);
+  EXPECT_EQ(d.points[1].kind, MoorDynPointKind::Coupled);
+  EXPECT_DOUBLE_EQ(d.points[0].position.x(), -300.0);
+  ASSERT_EQ(d.lines.size(), 1u);
+  EXPECT_EQ(d.lines[0].pointA, 1);
+  EXPECT_EQ(d.lines[0].pointB, 2);
+  EXPECT_DOUBLE_EQ(d.lines[0].length, 320.0);
+  EXPECT_EQ(d.lines[0].segments, 40);
+  ASSERT_EQ(d.options.size(), 2u);
+  EXPECT_EQ(d.options[1].name, "WtrDpth");
+  ASSERT_EQ(d.outputs.size(), 2u);
+  EXPECT_EQ(d.outputs[0], "FairTen1");
+}
+
+TEST(MoorDynDeck, ConvertsIntoTheModelMoorDynDescribes) {
+  const MoorDynDeck d = parseMoorDynDeck(
+      deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "3.0e6 kBot\n2.0e5 cBot\n1000 WtrDnsty\n9.81 g\n"),
+      "deck.txt");
+  const MoorDynConversion c = convertMoorDynDeck(d);
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  EXPECT_DOUBLE_EQ(spec.environment.waterDepth, 100.0);
+  EXPECT_DOUBLE_EQ(spec.environment.waterDensity, 1000.0);
+  EXPECT_DOUBLE_EQ(spec.environment.gravity, 9.81);
+  // kBot [Pa/m] and cBot [Pa s/m] over the diameter: per metre of line.
+  EXPECT_DOUBLE_EQ(spec.environment.seabed.normalStiffness, 3.0e6 * 0.2);
+  EXPECT_DOUBLE_EQ(spec.environment.seabed.damping, 2.0e5 * 0.2);
+  ASSERT_EQ(spec.lines.size(), 1u);
+  const model::LineSpec& line = spec.lines[0];
+  EXPECT_EQ(line.name, "line1");
+  EXPECT_EQ(line.endA.kind, model::EndKind::Anchored);  // a fixed point on the seabed
+  EXPECT_EQ(line.endB.kind, model::EndKind::Pinned);    // the coupled point, held in a standalone run
+  EXPECT_DOUBLE_EQ(line.endB.position.z(), -10.0);
+  ASSERT_EQ(line.sections.size(), 1u);
+  EXPECT_EQ(line.sections[0].elements, 40);
+  EXPECT_DOUBLE_EQ(line.sections[0].length, 320.0);
+  // BA = -0.5: MoorDyn's damping ratio, zeta (L/N) sqrt(EA m) N s (Line.cpp, setup).
+  const section::LineType& type = spec.lineTypes.at("chain");
+  EXPECT_NEAR(type.axialDamping, 0.5 * (320.0 / 40.0) * std::sqrt(1.0e9 * 200.0), 1e-6);
+  EXPECT_DOUBLE_EQ(type.dragAxial, 0.4);
+  EXPECT_DOUBLE_EQ(type.addedMassAxial, 0.5);
+  EXPECT_DOUBLE_EQ(spec.dynamics.rampTime, 0.0);
+  // The map a coupling host uses.
+  ASSERT_EQ(c.points.size(), 2u);
+  ASSERT_EQ(c.points[1].ends.size(), 1u);
+  EXPECT_EQ(c.points[1].ends[0], (std::pair<std::string, int>{"line1", 1}));
+  EXPECT_EQ(c.lines[0].tangleLine, "line1");
+  EXPECT_EQ(c.lines[0].firstNode, 0);
+  EXPECT_FALSE(c.lines[0].reversed);
+}
+
+TEST(MoorDynDeck, JoinsLinesInSeriesAtFreePointsWhateverTheirDirection) {
+  // Anchor 1 - line 1 - buoy 3 - line 2 (drawn from the vessel to the buoy) - vessel 2.
+  const std::string points = kTwoPoints + "3     Free      -150   0     -60    100    2.0     1.5    0.8\n";
+  const MoorDynDeck d =
+      parseMoorDynDeck(deck(points, "1 chain 1 3 200 20 -\n2 rope 2 3 160 16 -\n"), "deck.txt");
+  const MoorDynConversion c = convertMoorDynDeck(d);
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  ASSERT_EQ(spec.lines.size(), 1u);
+  const model::LineSpec& line = spec.lines[0];
+  EXPECT_EQ(line.name, "line1-line2");
+  ASSERT_EQ(line.sections.size(), 2u);
+  EXPECT_DOUBLE_EQ(line.sections[0].length, 200.0);
+  EXPECT_DOUBLE_EQ(line.sections[1].length, 160.0);
+  EXPECT_EQ(line.endA.kind, model::EndKind::Anchored);
+  EXPECT_EQ(line.endB.kind, model::EndKind::Pinned);
+  ASSERT_EQ(line.attachments.size(), 1u);
+  EXPECT_DOUBLE_EQ(line.attachments[0].arcLength, 200.0);
+  EXPECT_DOUBLE_EQ(line.attachments[0].mass, 100.0);
+  EXPECT_DOUBLE_EQ(line.attachments[0].volume, 2.0);
+  EXPECT_DOUBLE_EQ(line.attachments[0].dragArea, 1.5);
+  EXPECT_DOUBLE_EQ(line.attachments[0].addedMass, 0.8 * 1025.0 * 2.0);  // Ca rho V
+  ASSERT_EQ(line.startShape.size(), 1u);  // the buoy's deck position starts the static solve
+  EXPECT_DOUBLE_EQ(line.startShape[0].position.z(), -60.0);
+  EXPECT_DOUBLE_EQ(line.startShape[0].arcLength, 200.0);
+  // Deck line 2 runs from the vessel (end B of the tangle line, node 36) to the buoy (node 20).
+  EXPECT_EQ(c.lines[1].firstNode, 36);
+  EXPECT_TRUE(c.lines[1].reversed);
+  EXPECT_EQ(c.points[2].junctionLine, "line1-line2");
+  EXPECT_EQ(c.points[2].junctionNode, 20);
+}
+
+TEST(MoorDynDeck, FreeEndPointBecomesAFreeEndWithItsMass) {
+  const std::string points =
+      "1     Fixed     0   0     -100   0      0       0      0\n"
+      "2     Free      0   0     -40    0      3.0     0.5    1.0\n";
+  const MoorDynConversion c =
+      convertMoorDynDeck(parseMoorDynDeck(deck(points, "1 rope 1 2 70 10 -\n"), "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  EXPECT_EQ(spec.lines[0].endB.kind, model::EndKind::Free);
+  ASSERT_EQ(spec.lines[0].attachments.size(), 1u);
+  EXPECT_DOUBLE_EQ(spec.lines[0].attachments[0].arcLength, 70.0);
+  EXPECT_DOUBLE_EQ(spec.lines[0].attachments[0].volume, 3.0);
+  EXPECT_EQ(spec.lines[0].endA.kind, model::EndKind::Anchored);
+}
+
+TEST(MoorDynDeck, PublishedDecksConvertAndRead) {
+  for (const char* name : {"lines.txt", "WD0050_Chain.txt", "lowe_langley_jumper.txt"}) {
+    const std::string path = std::string(test::kTestDataDir) + "/moordyn/" + name;
+    EXPECT_TRUE(isMoorDynDeck(path)) << path;
+    const model::ModelSpec spec = readModelFile(path);  // the reader converts a deck itself
+    EXPECT_FALSE(spec.lines.empty()) << path;
+  }
+  EXPECT_FALSE(isMoorDynDeck(std::string(test::kExamplesDir) + "/mooring-dynamics/model.yaml"));
+}
+
+TEST(MoorDynDeck, RefusesRods) {
+  const std::string text = deck(kTwoPoints, "1 chain 1 2 320 40 -\n") +
+                           "---------------------- RODS ----------------------\nID RodType Attachment\n";
+  expectRefused(text, 25, "rods");
+}
+
+TEST(MoorDynDeck, RefusesBodiesAndPointsOnThem) {
+  expectRefused("---- LINE TYPES ----\na\nb\nchain 0.2 200 1e9 -1 0 1 1 0 0\n---- BODIES ----\nID\n", 5,
+                "bodies are not supported");
+  expectRefused(deck("1 Body1 0 0 -10 0 0 0 0\n", "1 chain 1 1 320 40 -\n"), 11, "Body1");
+}
+
+TEST(MoorDynDeck, RefusesLinesOnRods) {
+  expectRefused(deck(kTwoPoints, "1 chain R1A 2 320 40 -\n"), 16, "rods");
+}
+
+TEST(MoorDynDeck, RefusesNonlinearAndViscoelasticStiffness) {
+  expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 poly_ea.dat -1 0 1 1 0 0\n"), 8,
+                "table file");
+  expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 1e8|2e8 -1 0 1 1 0 0\n"), 8,
+                "viscoelastic");
+}
+
+TEST(MoorDynDeck, RefusesVortexInducedVibration) {
+  expectRefused(deck(kTwoPoints, "1 viv 1 2 320 40 -\n", "", "viv 0.2 20 1e8 -1 0 1 1 0 0 0.8\n"), 8,
+                "vortex-induced vibration");
+}
+
+TEST(MoorDynDeck, RefusesUnknownAndUnsupportedOptions) {
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1 NotAnOption\n"), 20, "NotAnOption");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "bathy.txt SeafloorFile\n"), 20, "3D seafloor");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "2 WaveKin\n"), 20, "WaveKin");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1 Currents\n"), 20, "Currents");
+}
+
+TEST(MoorDynDeck, RefusesAFreePointJoiningThreeLines) {
+  const std::string points = kTwoPoints + "3 Free -150 0 -60 0 0 0 0\n4 Fixed 300 0 -100 0 0 0 0\n";
+  expectRefused(deck(points, "1 chain 1 3 200 20 -\n2 chain 3 2 160 16 -\n3 chain 4 3 200 20 -\n"), 13,
+                "bridle");
+}
+
+TEST(MoorDynDeck, RefusesALoopOfLines) {
+  const std::string points = "1 Free 0 0 -50 0 0 0 0\n2 Free 10 0 -50 0 0 0 0\n";
+  expectRefused(deck(points, "1 chain 1 2 20 4 -\n2 chain 2 1 20 4 -\n"), 16, "loop");
+}
+
+TEST(MoorDynDeck, RefusesBadRowsNamingTheEntry) {
+  expectRefused(deck(kTwoPoints, "1 nylon 1 2 320 40 -\n"), 16, "no line type named 'nylon'");
+  expectRefused(deck(kTwoPoints, "1 chain 1 5 320 40 -\n"), 16, "point 5 does not exist");
+  expectRefused(deck(kTwoPoints, "2 chain 1 2 320 40 -\n"), 16, "in order");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 -\n"), 16, "7 columns");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 long 40 -\n"), 16, "'long'");
+  expectRefused(deck("1 Fixed 0 0 -100 0 0 0 0\n2 Tethered 0 0 -10 0 0 0 0\n", "1 chain 1 2 320 40 -\n"), 12,
+                "unknown point type 'Tethered'");
+  expectRefused(deck(kTwoPoints + "3 Free 0 0 -50 0 0 0 0\n", "1 chain 1 2 320 40 -\n"), 13,
+                "no line is attached");
+  expectRefused(deck(kTwoPoints, "1 chain 2 2 320 40 -\n"), 16, "same point");
+  expectRefused(
+      deck("1 Fixed 0 0 -100 0 0 0 0 1000 0 0 0 0\n2 Vessel 0 0 -10 0 0 0 0\n", "1 chain 1 2 320 40 -\n"), 11,
+      "external force");
+}
+
+}  // namespace
+}  // namespace tangle::io
