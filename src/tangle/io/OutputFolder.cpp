@@ -8,6 +8,7 @@
 #include "tangle/core/Error.hpp"
 #include "tangle/core/JsonWriter.hpp"
 #include "tangle/core/OutputFile.hpp"
+#include "tangle/io/MoorDynConversion.hpp"
 
 namespace tangle::io {
 
@@ -31,6 +32,16 @@ OutputFolder::OutputFolder(fs::path dir, const std::string& modelPath, bool over
   prepare(overwrite);
   // The model as it was run: results are only readable with the input that made them.
   std::error_code ec;
+  if (isMoorDynDeck(modelPath)) {
+    // A MoorDyn deck: the deck as given and the tangle model it became (what results.h5 and a re-run read).
+    const fs::path deckCopy = m_dir / ("moordyn_" + fs::path(modelPath).filename().string());
+    fs::copy_file(modelPath, deckCopy, fs::copy_options::overwrite_existing, ec);
+    if (ec) throw OutputError(fmt::format("cannot write {}: {}", deckCopy.string(), ec.message()));
+    core::OutputFile copy(m_dir / "model.yaml");
+    copy.write(convertMoorDynDeck(readMoorDynDeck(modelPath)).yaml);
+    copy.close();
+    return;
+  }
   fs::copy_file(modelPath, m_dir / "model.yaml", fs::copy_options::overwrite_existing, ec);
   if (ec) throw OutputError(fmt::format("cannot write {}: {}", (m_dir / "model.yaml").string(), ec.message()));
 }
