@@ -202,8 +202,12 @@ class Model:
 
     @classmethod
     def load(cls, path: str | Path) -> "Model":
-        """Reads a model file (YAML). Raises ModelError naming the file when it cannot be read or parsed."""
+        """Reads a model file (YAML), or a MoorDyn v2 input file, which is converted as `tangle convert` does
+        (docs/moordyn.md). Raises ModelError naming the file when it cannot be read or parsed."""
         path = str(path)
+        if Path(path).is_file() and _tangle.is_moordyn_deck(path):
+            text, _notes = _tangle.convert_moordyn(path)
+            return cls.from_yaml(text, path)
         try:
             text = Path(path).read_text(encoding="utf-8")
         except OSError as e:

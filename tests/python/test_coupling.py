@@ -140,3 +140,14 @@ def test_bad_input_raises(tmp_path):
         c.step(x, np.zeros_like(x), 0.0)
     with pytest.raises(ValueError):
         c.step(x, np.zeros(4), 0.1)
+
+
+def test_model_load_reads_a_deck_as_convert_writes_it() -> None:
+    """tangle.Model.load on a MoorDyn deck: the converted model (docs/moordyn.md), editable and runnable."""
+    model = tangle.Model.load(DECK)
+    assert model.get("lines[line1].end_b.type") == "pinned"  # the coupled fairlead
+    assert model.get("line_types[chain].outer_diameter") == pytest.approx(0.252)
+    statics = model.run_statics()
+    assert statics.converged
+    lines = statics.lines if isinstance(statics.lines, dict) else {l["name"]: l for l in statics.lines}
+    assert "line1" in lines

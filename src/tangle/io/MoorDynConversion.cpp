@@ -119,7 +119,7 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
           "initial-condition generation; tangle starts from its static equilibrium (Newton), not from a "
           "relaxation");
     } else if (name == "writelog" || name == "writeunits" || name == "dtout" || name == "disableoutput" ||
-               name == "disableouttime") {
+               name == "disableouttime" || name == "outswitch") {
       noted("MoorDyn's output files; tangle writes its own (docs/moordyn.md, output channels)");
     } else if (name == "dtwave" || name == "unifycurrentgrid") {
       noted("wave-kinematics grid; not used (no wave kinematics from MoorDyn)");

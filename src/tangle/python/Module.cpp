@@ -12,6 +12,7 @@
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ModelDocument.hpp"
 #include "tangle/io/ModelReader.hpp"
+#include "tangle/io/MoorDynConversion.hpp"
 #include "tangle/python/PyCoupledRun.hpp"
 #include "tangle/python/PySimulation.hpp"
 #include "tangle/python/YamlPython.hpp"
@@ -53,6 +54,15 @@ PYBIND11_MODULE(_tangle, m) {
       },
       py::arg("text"), py::arg("source"), "YAML model text -> nested dicts and lists (syntax only).");
   m.def("dump_yaml", &yamlText, py::arg("tree"), "Nested dicts and lists -> YAML text.");
+  m.def("is_moordyn_deck", &tangle::io::isMoorDynDeck, py::arg("path"),
+        "True when the file reads as a MoorDyn v2 input file (docs/moordyn.md).");
+  m.def(
+      "convert_moordyn",
+      [](const std::string& path) {
+        const tangle::io::MoorDynConversion c = tangle::io::convertMoorDynDeck(tangle::io::readMoorDynDeck(path));
+        return py::make_tuple(c.yaml, c.notes);
+      },
+      py::arg("path"), "MoorDyn v2 deck -> (tangle model YAML text, notes); raises ModelError naming the deck line.");
   m.def(
       "check",
       [](const std::string& text, const std::string& source) { tangle::io::readModelString(text, source); },
