@@ -184,8 +184,13 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
   EXPECT_EQ(MoorDyn_GetLineNodeDrag(line, 3, node), MOORDYN_NON_IMPLEMENTED);
   EXPECT_EQ(MoorDyn_SaveState(system, "state.txt"), MOORDYN_NON_IMPLEMENTED);
   EXPECT_EQ(MoorDyn_BreakLine(system, fairlead, line), MOORDYN_NON_IMPLEMENTED);
-  unsigned int n = 0;
-  EXPECT_EQ(MoorDyn_ExternalWaveKinInit(system, &n), MOORDYN_NON_IMPLEMENTED);
+  // The deck has no WaveKin 1: no points for external wave kinematics, and setting them is refused (MoorDyn's
+  // answers).
+  unsigned int n = 7;
+  EXPECT_EQ(MoorDyn_ExternalWaveKinInit(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 0u);
+  const double zeros[3] = {0.0, 0.0, 0.0};
+  EXPECT_EQ(MoorDyn_ExternalWaveKinSet(system, zeros, zeros, 0.0), MOORDYN_INVALID_VALUE);
   EXPECT_EQ(MoorDyn_GetWaves(system), nullptr);
   EXPECT_EQ(MoorDyn_GetSeafloor(system), nullptr);
   size_t length = 0;
@@ -194,6 +199,42 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
   ASSERT_EQ(MoorDyn_GetTimeScheme(system, scheme.data(), nullptr), MOORDYN_SUCCESS);
   EXPECT_EQ(std::string(scheme.c_str()), "generalized_alpha");
 
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
+// The jumper deck has WaveKin 1: the host gives the fluid kinematics at every line node (0 to 68) and at the
+// two points, in MoorDyn's order; a current across the line raises the top tension over still water.
+TEST(MoorDynApi, ExternalWaveKinematicsReachTheLine) {
+  const std::string jumper = std::string(tangle::test::kTestDataDir) + "/moordyn/lowe_langley_jumper.txt";
+  MoorDyn system = MoorDyn_Create(jumper.c_str());
+  ASSERT_NE(system, nullptr);
+  MoorDynPoint top = MoorDyn_GetPoint(system, 2);
+  double x[3], xd[3] = {0.0, 0.0, 0.0}, f[3], t = 0.0, dt = 0.01;
+  ASSERT_EQ(MoorDyn_GetPointPos(top, x), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_SUCCESS);
+  unsigned int n = 0;
+  ASSERT_EQ(MoorDyn_ExternalWaveKinInit(system, &n), MOORDYN_SUCCESS);
+  ASSERT_EQ(n, 69u + 2u);
+  std::vector<double> r(3 * n);
+  ASSERT_EQ(MoorDyn_ExternalWaveKinGetCoordinates(system, r.data()), MOORDYN_SUCCESS);
+  MoorDynLine line = MoorDyn_GetLine(system, 1);
+  double node[3];
+  ASSERT_EQ(MoorDyn_GetLineNodePos(line, 30, node), MOORDYN_SUCCESS);
+  for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(r[3 * 30 + k], node[k]);
+  for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(r[3 * 70 + k], x[k]);  // the last point: the top
+  std::vector<double> u(3 * n, 0.0), a(3 * n, 0.0);
+  // Still water given by the host: the jumper stays in its plane (no force across it on the top).
+  ASSERT_EQ(MoorDyn_ExternalWaveKinSet(system, u.data(), a.data(), 0.0), MOORDYN_SUCCESS);
+  for (int s = 0; s < 50; ++s) ASSERT_EQ(MoorDyn_Step(system, x, xd, f, &t, &dt), MOORDYN_SUCCESS);
+  EXPECT_LT(std::abs(f[1]), 1.0);
+  // 1 m/s across the jumper's plane (drag about 0.2 kN/m): the flow pushes the line along +y, and the line
+  // pulls the top with it.
+  for (unsigned int i = 0; i < n; ++i) u[3 * i + 1] = 1.0;
+  ASSERT_EQ(MoorDyn_ExternalWaveKinSet(system, u.data(), a.data(), 0.0), MOORDYN_SUCCESS);
+  for (int s = 0; s < 200; ++s) ASSERT_EQ(MoorDyn_Step(system, x, xd, f, &t, &dt), MOORDYN_SUCCESS);
+  EXPECT_GT(f[1], 1e3);
+  std::vector<double> notNumbers(3 * n, std::nan(""));
+  EXPECT_EQ(MoorDyn_ExternalWaveKinSet(system, notNumbers.data(), a.data(), 0.0), MOORDYN_INVALID_VALUE);
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 

@@ -103,28 +103,32 @@ MoorDynSeafloor MoorDyn_GetSeafloor(MoorDyn system) {
   return nullptr;
 }
 
-int MoorDyn_ExternalWaveKinInit(MoorDyn system, unsigned int* /*n*/) {
-  return capi::withSystem("MoorDyn_ExternalWaveKinInit", system, [](capi::MoorDynSystem&) {
-    capi::throwNotImplemented("external wave kinematics (WaveKin 1); tangle's waves are the model's own");
+// External wave kinematics (the deck's WaveKin 1): the host gives the fluid velocity and acceleration at
+// every line node and point (MoorDynSystem::setWaveKinematics); without WaveKin 1 there are no points (as
+// MoorDyn: Init returns 0 and Set is refused).
+int MoorDyn_ExternalWaveKinInit(MoorDyn system, unsigned int* n) {
+  return capi::withSystem("MoorDyn_ExternalWaveKinInit", system, [&](capi::MoorDynSystem& s) {
+    capi::output(n, "n") = static_cast<unsigned int>(s.waveKinematicsPointCount());
   });
 }
 
-int MoorDyn_ExternalWaveKinGetN(MoorDyn system, unsigned int* /*n*/) {
-  return capi::withSystem("MoorDyn_ExternalWaveKinGetN", system, [](capi::MoorDynSystem&) {
-    capi::throwNotImplemented("external wave kinematics (WaveKin 1); tangle's waves are the model's own");
+int MoorDyn_ExternalWaveKinGetN(MoorDyn system, unsigned int* n) {
+  return capi::withSystem("MoorDyn_ExternalWaveKinGetN", system, [&](capi::MoorDynSystem& s) {
+    capi::output(n, "n") = static_cast<unsigned int>(s.waveKinematicsPointCount());
   });
 }
 
-int MoorDyn_ExternalWaveKinGetCoordinates(MoorDyn system, double* /*r*/) {
-  return capi::withSystem("MoorDyn_ExternalWaveKinGetCoordinates", system, [](capi::MoorDynSystem&) {
-    capi::throwNotImplemented("external wave kinematics (WaveKin 1); tangle's waves are the model's own");
+int MoorDyn_ExternalWaveKinGetCoordinates(MoorDyn system, double* r) {
+  return capi::withSystem("MoorDyn_ExternalWaveKinGetCoordinates", system, [&](capi::MoorDynSystem& s) {
+    const std::vector<double> points = s.waveKinematicsPoints();
+    if (!points.empty()) std::copy(points.begin(), points.end(), &capi::output(r, "r"));
   });
 }
 
-int MoorDyn_ExternalWaveKinSet(MoorDyn system, const double* /*U*/, const double* /*Ud*/, double /*t*/) {
-  return capi::withSystem("MoorDyn_ExternalWaveKinSet", system, [](capi::MoorDynSystem&) {
-    capi::throwNotImplemented("external wave kinematics (WaveKin 1); tangle's waves are the model's own");
-  });
+int MoorDyn_ExternalWaveKinSet(MoorDyn system, const double* U, const double* Ud, double /*t*/) {
+  // MoorDyn keeps the kinematics until the next call whatever t says (Waves::setWaveKinematics).
+  return capi::withSystem("MoorDyn_ExternalWaveKinSet", system,
+                          [&](capi::MoorDynSystem& s) { s.setWaveKinematics(U, Ud); });
 }
 
 int MoorDyn_GetNumberBodies(MoorDyn system, unsigned int* n) {

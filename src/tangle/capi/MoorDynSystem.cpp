@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdlib>
 #include <cmath>
 #include <iostream>
 #include <span>
@@ -322,6 +324,62 @@ Vec3 MoorDynSystem::pointForce(int p) {
   Vec3 sum = Vec3::Zero();
   for (const auto& [deckId, end] : pointMap(p).attachedLines) sum += endForce(deckId - 1, end);
   return sum;
+}
+
+int MoorDynSystem::waveKinematicsPointCount() const {
+  const auto& options = m_coupling.deck.options;
+  const bool external = std::any_of(options.begin(), options.end(), [](const io::MoorDynOption& o) {
+    std::string name = o.name;
+    std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+    return name == "wavekin" && std::strtod(o.value.c_str(), nullptr) == 1.0;
+  });
+  if (!external) return 0;
+  int n = static_cast<int>(m_coupling.deck.points.size());
+  for (const io::MoorDynLine& l : m_coupling.deck.lines) n += l.segments + 1;
+  return n;
+}
+
+std::vector<double> MoorDynSystem::waveKinematicsPoints() {
+  requireInitialized();
+  std::vector<double> r;
+  if (waveKinematicsPointCount() == 0) return r;
+  const auto put = [&r](const Vec3& x) { r.insert(r.end(), {x.x(), x.y(), x.z()}); };
+  for (int l = 0; l < lineCount(); ++l)
+    for (int i = 0; i <= deckLine(l).segments; ++i) put(nodePosition(l, static_cast<unsigned int>(i)));
+  for (int p = 0; p < pointCount(); ++p) put(pointPosition(p));
+  return r;
+}
+
+void MoorDynSystem::setWaveKinematics(const double* U, const double* Ud) {
+  requireInitialized();
+  const int n = waveKinematicsPointCount();
+  if (n == 0)
+    throw InvalidValue(fmt::format("{}: the deck does not take its wave kinematics from the host (option WaveKin 1)",
+                                   m_path));
+  if (U == nullptr || Ud == nullptr) throw InvalidValue("U and Ud must not be NULL");
+  for (int k = 0; k < 3 * n; ++k)
+    if (!std::isfinite(U[k]) || !std::isfinite(Ud[k]))
+      throw InvalidValue(fmt::format("the wave kinematics of point {} are not finite numbers", k / 3));
+  const model::Model& model = m_run->simulation().model();
+  const std::size_t nodes = static_cast<std::size_t>(model.nodeCount());
+  std::vector<Vec3> velocity(nodes, Vec3::Zero()), acceleration(nodes, Vec3::Zero());
+  std::vector<int> count(nodes, 0);
+  int k = 0;
+  for (int l = 0; l < lineCount(); ++l)
+    for (int i = 0; i <= deckLine(l).segments; ++i, ++k) {
+      const NodeRef ref = deckNode(l, static_cast<unsigned int>(i));
+      const auto global =
+          static_cast<std::size_t>(model.lines()[static_cast<std::size_t>(ref.modelLine)].firstNode + ref.node);
+      velocity[global] += Vec3(U[3 * k], U[3 * k + 1], U[3 * k + 2]);
+      acceleration[global] += Vec3(Ud[3 * k], Ud[3 * k + 1], Ud[3 * k + 2]);
+      ++count[global];
+    }
+  for (std::size_t g = 0; g < nodes; ++g)
+    if (count[g] > 1) {
+      velocity[g] /= count[g];
+      acceleration[g] /= count[g];
+    }
+  m_run->simulation().hydro().setNodeKinematics(std::move(velocity), std::move(acceleration));
 }
 
 }  // namespace tangle::capi

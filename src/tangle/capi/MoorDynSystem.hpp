@@ -128,6 +128,22 @@ class MoorDynSystem {
   Vec3 endForce(int l, int end);
   /// @}
 
+  /// @name External wave kinematics (MoorDyn_ExternalWaveKin*, for a deck with option WaveKin 1)
+  /// The points where the host gives the fluid kinematics, in MoorDyn's order (Waves.cpp,
+  /// kinematicsForAllNodes): every node of every deck line (0 to N, in deck order), then every deck point.
+  /// @{
+  /// Their number; 0 when the deck's WaveKin is not 1 (as MoorDyn).
+  int waveKinematicsPointCount() const;
+  /// Their current positions [m], 3 values per point. @throws InvalidValue before initialize
+  std::vector<double> waveKinematicsPoints();
+  /// Fluid velocity U [m/s] and acceleration Ud [m/s^2] at those points (3 values per point each), used by
+  /// the dynamics from the next step on (hydro::HydroLoads::setNodeKinematics: each element takes the mean
+  /// of its nodes; a node shared by two deck lines takes the mean of its values). The points' own values
+  /// are not used: attachments (free points' mass, buoyancy, drag) see the current only.
+  /// @throws InvalidValue before initialize, without WaveKin 1, for null or non-finite values
+  void setWaveKinematics(const double* U, const double* Ud);
+  /// @}
+
   /// @name Deck points (index p = deck id - 1)
   /// @{
   const io::MoorDynPointMap& pointMap(int p) const {

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
+#include "tangle/core/Error.hpp"
 #include "tangle/core/ForEachIndex.hpp"
 #include "tangle/core/Ramp.hpp"
 #include "tangle/hydro/AiryWave.hpp"
@@ -97,7 +100,37 @@ FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const
   return k;
 }
 
+void HydroLoads::setNodeKinematics(std::vector<Vec3> velocity, std::vector<Vec3> acceleration) {
+  const std::size_t n = static_cast<std::size_t>(m_model->nodeCount());
+  if (velocity.size() != n || acceleration.size() != n)
+    throw Error(fmt::format("wave kinematics for {} and {} nodes given to a model of {} nodes", velocity.size(),
+                            acceleration.size(), n));
+  m_nodeVelocity = std::move(velocity);
+  m_nodeAcceleration = std::move(acceleration);
+  m_cacheTime = -1e300;  // the elements' kinematics are refilled
+}
+
+void HydroLoads::clearNodeKinematics() {
+  m_nodeVelocity.clear();
+  m_nodeAcceleration.clear();
+  m_cacheTime = -1e300;
+}
+
 bool HydroLoads::prepareWaves(const model::State& state, const solver::AssemblyRequest& request) {
+  if (!m_nodeVelocity.empty()) {
+    if (!(request.dynamic && request.waves)) return false;
+    if (m_cacheTime != -2e300) {  // filled once per setNodeKinematics
+      const auto& elements = m_model->elements();
+      for (std::size_t e = 0; e < elements.size(); ++e) {
+        const auto n1 = static_cast<std::size_t>(elements[e].node1), n2 = static_cast<std::size_t>(elements[e].node2);
+        m_surface[e] = 0.0;
+        m_fluid[e].velocity = 0.5 * (m_nodeVelocity[n1] + m_nodeVelocity[n2]);
+        m_fluid[e].acceleration = 0.5 * (m_nodeAcceleration[n1] + m_nodeAcceleration[n2]);
+      }
+      m_cacheTime = -2e300;
+    }
+    return true;
+  }
   const bool waves = request.dynamic && request.waves && m_waves && core::ramp(request.time, m_rampTime).value > 0.0;
   if (waves && (request.time != m_cacheTime || !m_cacheDynamic)) {
     // Wave kinematics (the costly part) once per time value; the current is cheap and is evaluated

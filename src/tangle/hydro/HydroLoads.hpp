@@ -48,6 +48,14 @@ class HydroLoads final : public solver::LoadContributor {
   /// Surface elevation (ramped) at (x, y) [m] and time [s].
   double surfaceAt(double x, double y, double t, bool dynamic) const;
   const WaveField* waves() const { return m_waves.get(); }  ///< nullptr without waves
+  /// Wave kinematics given per model node by a host program (MoorDyn's external wave kinematics,
+  /// MoorDyn_ExternalWaveKinSet; docs/moordyn.md): fluid velocity [m/s] and acceleration [m/s^2] at every
+  /// node, used in the dynamics instead of the model's waves (the current is added) until cleared; each
+  /// element takes the mean of its two nodes, the surface is still water (z = 0), nothing is ramped.
+  /// Attachments see the current only. @throws Error when the sizes are not the model's node count
+  void setNodeKinematics(std::vector<Vec3> velocity, std::vector<Vec3> acceleration);
+  void clearNodeKinematics();
+  bool hasNodeKinematics() const { return !m_nodeVelocity.empty(); }
   /// The wake at every element from the last addForces() call (empty without wake_interference).
   const std::vector<ElementWake>& elementWake() const { return m_elementWake; }
 
@@ -70,6 +78,7 @@ class HydroLoads final : public solver::LoadContributor {
   bool m_cacheDynamic = false;
   std::vector<FluidKinematics> m_fluid;  // per element, at the cached time
   std::vector<double> m_surface;         // per element
+  std::vector<Vec3> m_nodeVelocity, m_nodeAcceleration;  // setNodeKinematics (empty: the model's waves)
   std::vector<AddedMass> m_addedMass;    // per element, per node
   // Morison coefficients per line type (validated once, at construction) and each element's index into
   // them: a few entries that stay in cache, not one per element.

@@ -93,11 +93,11 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
     } else if (name == "statdynfricscale") {
       opt.staticDynamicScale = value();
     } else if (name == "wavekin" && value() == 1.0) {
-      // Kinematics given by the host through MoorDyn_ExternalWaveKinSet: none in a standalone run (still
-      // water, as MoorDyn without a host); tangle's C API refuses that call (MOORDYN_NON_IMPLEMENTED).
+      // Kinematics given by the host through MoorDyn_ExternalWaveKinSet (capi/MoorDynSystem): none in a
+      // standalone run (still water, as MoorDyn without a host).
       noted(
-          "wave kinematics from the host program (WaveKin 1) are not taken by tangle: still water unless the "
-          "converted model's `environment` gives waves");
+          "wave kinematics from the host program (WaveKin 1): through the C API (MoorDyn_ExternalWaveKinSet); a "
+          "standalone run has still water unless the converted model's `environment` gives waves");
     } else if (name == "wavekin" || name == "currents") {
       if (value() != 0.0)
         throw InputError(
