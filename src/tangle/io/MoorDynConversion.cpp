@@ -6,10 +6,13 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <numbers>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "tangle/core/Error.hpp"
 
@@ -42,6 +45,7 @@ struct Options {
   double friction = 0.0;              ///< FrictionCoefficient [-]
   double frictionDamping = 200.0;     ///< FricDamp [N s/m]
   double staticDynamicScale = 1.0;    ///< StatDynFricScale [-]
+  int currentMode = 0;                ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt
   std::map<std::string, int> lineOf;  ///< option (lower case) -> deck line, for comments
 };
 
@@ -98,6 +102,9 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
       noted(
           "wave kinematics from the host program (WaveKin 1): through the C API (MoorDyn_ExternalWaveKinSet); a "
           "standalone run has still water unless the converted model's `environment` gives waves");
+    } else if (name == "currents" && (value() == 1.0 || value() == 3.0)) {
+      // A steady profile, interpolated on a grid (1) or at the nodes (3): the same profile in tangle.
+      opt.currentMode = static_cast<int>(value());
     } else if (name == "wavekin" || name == "currents") {
       if (value() != 0.0)
         throw InputError(
@@ -131,6 +138,59 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
   }
   for (const auto& [why, names] : unused) notes.push_back(fmt::format("{}: {}: {}", deck.file, names, why));
   return opt;
+}
+
+/// One level of a MoorDyn steady current profile (current_profile.txt).
+struct ProfileLevel {
+  double z = 0.0;
+  Vec3 velocity = Vec3::Zero();  ///< ux, uy, uz [m/s]
+  int sourceLine = 0;
+};
+
+/// MoorDyn's steady current profile (Waves/WaveGrid.cpp, constructSteadyCurrentGrid): current_profile.txt
+/// beside the deck, three header lines, then rows `z ux [uy [uz]]`. tangle's current is horizontal, below
+/// the still water level, one value per level. @throws InputError naming the file and its line
+std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int optionLine) {
+  const std::string path = (std::filesystem::path(deck.file).parent_path() / "current_profile.txt").string();
+  std::ifstream in(path);
+  if (!in)
+    throw InputError(deck.file, optionLine, "Currents",
+                     fmt::format("a steady current profile is read from {}, which cannot be opened", path));
+  std::vector<ProfileLevel> levels;
+  std::string text;
+  for (int lineNo = 1; std::getline(in, text); ++lineNo) {
+    if (lineNo <= 3) continue;  // title, description, column names
+    for (char& c : text)
+      if (c == ',' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream words(text);
+    std::vector<std::string> w;
+    for (std::string s; words >> s;) w.push_back(s);
+    if (w.empty()) continue;
+    if (w.size() < 2) throw InputError(path, lineNo, "z ux", "expected at least two columns: z [m], ux [m/s]");
+    ProfileLevel level;
+    level.sourceLine = lineNo;
+    const char* names[] = {"z", "ux", "uy", "uz"};
+    double values[4] = {0.0, 0.0, 0.0, 0.0};
+    for (std::size_t k = 0; k < std::min<std::size_t>(w.size(), 4); ++k) {
+      const char* end = w[k].data() + w[k].size();
+      const auto [ptr, ec] = std::from_chars(w[k].data(), end, values[k]);
+      if (ec != std::errc() || ptr != end)
+        throw InputError(path, lineNo, names[k], fmt::format("expected a number, got '{}'", w[k]));
+    }
+    level.z = values[0];
+    level.velocity = Vec3(values[1], values[2], values[3]);
+    if (level.z > 0.0)
+      throw InputError(path, lineNo, "z", "a level above the still water level (tangle's current is below z = 0)");
+    if (level.velocity.z() != 0.0)
+      throw InputError(path, lineNo, "uz", "a vertical current is not supported (tangle's current is horizontal)");
+    for (const ProfileLevel& other : levels)
+      if (other.z == level.z)
+        throw InputError(path, lineNo, "z", fmt::format("level z = {} is given twice (line {})", num(level.z),
+                                                          other.sourceLine));
+    levels.push_back(level);
+  }
+  if (levels.empty()) throw InputError(path, 0, "", "the current profile has no level");
+  return levels;
 }
 
 /// Largest seabed friction_velocity the model reader accepts [m/s].
@@ -360,6 +420,25 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
       notes.push_back(
           fmt::format("StatDynFricScale = {}: tangle has one friction coefficient (static = dynamic)",
                       num(opt.staticDynamicScale)));
+  }
+  if (opt.currentMode != 0) {
+    const std::vector<ProfileLevel> levels = readCurrentProfile(deck, opt.lineOf.at("currents"));
+    line(fmt::format("  current:                  # Currents {} (deck line {}): current_profile.txt, (ux, uy) as "
+                     "speed and azimuth",
+                     opt.currentMode, opt.lineOf.at("currents")));
+    bool turning = false;
+    for (const ProfileLevel& l : levels) {
+      const double speed = std::hypot(l.velocity.x(), l.velocity.y());
+      const double azimuth = speed > 0.0 ? std::atan2(l.velocity.y(), l.velocity.x()) * 180.0 / std::numbers::pi : 0.0;
+      line(fmt::format("    - {{z: {}, speed: {}, azimuth: {}}}   # current_profile.txt line {}", num(l.z), num(speed),
+                       num(azimuth), l.sourceLine));
+      const Vec3& first = levels.front().velocity;
+      turning = turning || std::abs(first.x() * l.velocity.y() - first.y() * l.velocity.x()) >
+                               1e-12 * std::max(first.squaredNorm() + l.velocity.squaredNorm(), 1e-300);
+    }
+    if (turning)
+      notes.push_back("current profile: its direction turns with depth; tangle interpolates the speed and the "
+                      "direction between levels, MoorDyn the components (the same where the direction is constant)");
   }
   line("");
 

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
 #include <string>
 
 #include "TestPaths.hpp"
@@ -216,7 +219,48 @@ TEST(MoorDynDeck, RefusesUnknownAndUnsupportedOptions) {
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1 NotAnOption\n"), 20, "NotAnOption");
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "bathy.txt SeafloorFile\n"), 20, "3D seafloor");
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "2 WaveKin\n"), 20, "WaveKin");
-  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1 Currents\n"), 20, "Currents");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "2 Currents\n"), 20, "Currents");  // dynamic grid
+}
+
+/// A deck and its current_profile.txt in a fresh folder; returns the deck's path.
+std::string writeDeckWithProfile(const std::string& name, const std::string& profileRows) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("tangle-moordyn-" + name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "deck.txt") << deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1 Currents\n");
+  std::ofstream(dir / "current_profile.txt") << "--- MoorDyn steady currents File ---\nTabulated\n"
+                                                "z (m), ux (m/s), uy (m/s), uz (m/s)\n"
+                                             << profileRows;
+  return (dir / "deck.txt").string();
+}
+
+TEST(MoorDynDeck, ReadsASteadyCurrentProfile) {
+  // MoorDyn's Currents 1: (ux, uy) at each level from current_profile.txt beside the deck, linear in z.
+  const std::string path = writeDeckWithProfile("profile", "-100 0.3 0.4 0\n-50 0.0 1.0\n0 1.0\n");
+  const model::ModelSpec spec = readModelFile(path);
+  const auto& current = spec.environment.current;
+  ASSERT_EQ(current.size(), 3u);
+  EXPECT_DOUBLE_EQ(current[0].z, -100.0);
+  EXPECT_DOUBLE_EQ(current[0].speed, 0.5);
+  EXPECT_NEAR(current[0].azimuth, std::atan2(0.4, 0.3), 1e-12);
+  EXPECT_NEAR(current[1].azimuth, std::numbers::pi / 2.0, 1e-12);  // along +y
+  EXPECT_DOUBLE_EQ(current[2].speed, 1.0);
+  EXPECT_DOUBLE_EQ(current[2].azimuth, 0.0);
+  // The direction turns with depth: noted (tangle interpolates speed and direction, MoorDyn components).
+  bool noted = false;
+  for (const std::string& w : spec.warnings) noted = noted || w.find("turns with depth") != std::string::npos;
+  EXPECT_TRUE(noted);
+}
+
+TEST(MoorDynDeck, RefusesAVerticalCurrentNamingTheProfileLine) {
+  const std::string path = writeDeckWithProfile("vertical", "-100 0.3 0 0\n-50 0.2 0 0.1\n");
+  try {
+    readModelFile(path);
+    FAIL() << "a vertical current was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(e.file().find("current_profile.txt"), std::string::npos) << e.what();
+    EXPECT_EQ(e.line(), 5);
+    EXPECT_EQ(e.key(), "uz");
+  }
 }
 
 TEST(MoorDynDeck, RefusesAFreePointJoiningThreeLines) {
