@@ -238,6 +238,31 @@ TEST(MoorDynApi, ExternalWaveKinematicsReachTheLine) {
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
+// A buoy joining two deck lines (buoy_and_clump.txt: point 2, 1000 kg, 12 m^3, between a chain and a
+// polyester rope) sits inside one tangle line: the lines' forces on it are each line's own end segment, so
+// they hold the buoy's net lift down less the half segments of line lumped on its node (statics).
+TEST(MoorDynApi, FreePointJoiningTwoLinesIsBalanced) {
+  const std::string deck = std::string(tangle::test::kTestDataDir) + "/moordyn/buoy_and_clump.txt";
+  MoorDyn system = MoorDyn_Create(deck.c_str());
+  ASSERT_NE(system, nullptr);
+  double x[3], xd[3] = {0.0, 0.0, 0.0};
+  ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(system, 3), x), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_SUCCESS);
+  double f[3];
+  ASSERT_EQ(MoorDyn_GetPointForce(MoorDyn_GetPoint(system, 2), f), MOORDYN_SUCCESS);
+  const double g = 9.80665, rho = 1025.0, pi = 3.141592653589793;
+  const double lift = (12.0 * rho - 1000.0) * g;
+  const double halfSegments = 5.0 * g * ((140.0 - rho * pi / 4.0 * 0.15 * 0.15) + (20.0 - rho * pi / 4.0 * 0.16 * 0.16));
+  EXPECT_NEAR(f[0], 0.0, 1.0);
+  EXPECT_NEAR(f[2], -(lift - halfSegments), 10.0);
+  // The chain below the buoy carries far more than the rope above it, each at its own end.
+  double chain = 0.0, rope = 0.0;
+  ASSERT_EQ(MoorDyn_GetLineFairTen(MoorDyn_GetLine(system, 1), &chain), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetLineFairTen(MoorDyn_GetLine(system, 2), &rope), MOORDYN_SUCCESS);
+  EXPECT_GT(chain, 20.0 * rope);
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
 TEST(MoorDynApi, OldApiHoldsOneSystem) {
   double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3], t = 0.0, dt = 0.1;
   EXPECT_EQ(MoorDynStep(x, xd, f, &t, &dt), MOORDYN_INVALID_VALUE);  // no system yet

@@ -73,6 +73,7 @@ void MoorDynSystem::initialize(const double* x, const double* xd) {
   }
   m_run->initialize(std::span<const double>(x, static_cast<std::size_t>(n)), velocity);
   m_tangleLines.clear();
+  m_elementTension.clear();
 }
 
 void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t, double dt) {
@@ -86,6 +87,7 @@ void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t
     checkFinite(xd, n, "xd");
     const auto size = static_cast<std::size_t>(n);
     m_run->step(std::span<const double>(x, size), std::span<const double>(xd, size), dt);
+    m_elementTension.clear();
   }
   const std::vector<double>& forces = m_run->forces();
   if (n > 0) std::copy(forces.begin(), forces.begin() + n, f);
@@ -163,13 +165,12 @@ MoorDynSystem::NodeRef MoorDynSystem::deckNode(int l, unsigned int i) {
   return n;
 }
 
-Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) const {
+Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) {
   const solver::LineSnapshot& s = *n.snapshot;
   const int last = static_cast<int>(s.position.size()) - 1;
   if (n.node == 0) return s.endTensionForceA;
   if (n.node == last) return -s.endTensionForceB;
-  // An inner node of the tangle line: the chord through its neighbours on the deck line (at a junction of
-  // two deck lines, the deck line's own segment only).
+  // An inner node of the tangle line: the chord through its neighbours on the deck line.
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
   const int low = std::min(map.firstNode, other);
@@ -179,7 +180,23 @@ Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) const {
   const Vec3 chord = s.position[after] - s.position[before];
   const double length = chord.norm();
   if (!(length > 0.0)) return Vec3::Zero();
-  return s.tension[static_cast<std::size_t>(n.node)] * (chord / length);
+  if (n.node != low && n.node != high) return s.tension[static_cast<std::size_t>(n.node)] * (chord / length);
+  // A junction of two deck lines (a free point inside the tangle line): the deck line's own segment, with its
+  // own tension. The node's tension is the mean of the two segments, which differ by the point's load (a
+  // buoy's lift): the lines' forces on the point would not balance it.
+  const model::Line& line = m_run->simulation().model().lines()[static_cast<std::size_t>(n.modelLine)];
+  const int element = line.firstElement + static_cast<int>(std::min(before, after));
+  return elementTensions()[static_cast<std::size_t>(element)] * (chord / length);
+}
+
+const std::vector<double>& MoorDynSystem::elementTensions() {
+  const double now = m_run->time();
+  if (m_elementTensionTime != now || m_elementTension.empty()) {
+    analysis::Simulation& sim = m_run->simulation();
+    sim.assembler().elementTension(sim.state(), m_elementTension, nullptr);
+    m_elementTensionTime = now;
+  }
+  return m_elementTension;
 }
 
 Vec3 MoorDynSystem::velocity(const NodeRef& n) {
@@ -228,13 +245,17 @@ double MoorDynSystem::nodeCurvature(int l, unsigned int i) {
 }
 
 double MoorDynSystem::endTension(int l, int end) {
-  const auto segments =
-      static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
+  const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
+  const auto segments = static_cast<unsigned int>(map.segments);
   const NodeRef n = deckNode(l, end == 0 ? 0u : segments);
   const solver::LineSnapshot& s = *n.snapshot;
   if (n.node == 0) return s.endTensionA;
   if (n.node == static_cast<int>(s.position.size()) - 1) return s.endTensionB;
-  return s.tension[static_cast<std::size_t>(n.node)];
+  // A junction with another deck line inside the tangle line: this deck line's own end segment.
+  const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
+  const int segment = n.node == std::min(map.firstNode, other) ? n.node : n.node - 1;
+  const model::Line& line = m_run->simulation().model().lines()[static_cast<std::size_t>(n.modelLine)];
+  return elementTensions()[static_cast<std::size_t>(line.firstElement + segment)];
 }
 
 double MoorDynSystem::maxTension(int l) {

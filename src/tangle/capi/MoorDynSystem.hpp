@@ -119,7 +119,7 @@ class MoorDynSystem {
   /// LineSnapshot::curvature at the node [1/m].
   double nodeCurvature(int l, unsigned int i);
   /// Effective tension at end `end` (0 A, 1 B) of the deck line [N]: LineSnapshot::endTensionA/B where the
-  /// deck line ends a tangle line, the node's effective tension at a junction of two deck lines.
+  /// deck line ends a tangle line, the tension of its own end segment at a junction of two deck lines.
   double endTension(int l, int end);
   /// Largest effective tension over the deck line's nodes [N].
   double maxTension(int l);
@@ -176,7 +176,9 @@ class MoorDynSystem {
   /// Node i of deck line l. @throws InvalidValue for i above the line's segment count
   NodeRef deckNode(int l, unsigned int i);
   /// The tension vector at `n` oriented from the tangle line's end A to its end B [N]; `l` is the deck line.
-  Vec3 tangleTension(const NodeRef& n, int l) const;
+  Vec3 tangleTension(const NodeRef& n, int l);
+  /// Axial tension of every element of the model at the current state [N] (computed once per state).
+  const std::vector<double>& elementTensions();
   Vec3 velocity(const NodeRef& n);
   /// Position / velocity of a tangle line end (name, 0 A / 1 B).
   Vec3 endNodePosition(const std::pair<std::string, int>& end);
@@ -185,6 +187,8 @@ class MoorDynSystem {
   std::string m_path;
   io::DeckCoupling m_coupling;
   std::unique_ptr<analysis::CoupledRun> m_run;
+  std::vector<double> m_elementTension;  ///< elementTensions() of the state at m_elementTensionTime
+  double m_elementTensionTime = -1.0;     ///< [s]; < 0: not computed since the last initialize or step
   std::vector<int> m_coupledIndex;  ///< per deck point, its index among the coupled points (-1: not coupled)
   std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)
   std::vector<std::unique_ptr<LineHandle>> m_lineHandles;
