@@ -32,6 +32,17 @@ std::string num(double v) {
   return ec == std::errc() ? std::string(buffer, end) : fmt::format("{:.17g}", v);
 }
 
+/// A name as a YAML double-quoted string: a MoorDyn type name is any word ("#1", "a:b", "*poly"), which plain
+/// YAML would read as a comment, a map or an alias.
+std::string yamlQuoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
 std::string vec(const Vec3& v) { return fmt::format("[{}, {}, {}]", num(v.x()), num(v.y()), num(v.z())); }
 
 /// The options of a deck, resolved (MoorDyn2.cpp defaults; readOptionsLine names, case-insensitive).
@@ -445,7 +456,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
   line("line_types:");
   for (const TypeUse& u : types) {
     const MoorDynLineType& t = *u.type;
-    line(fmt::format("  - name: {}                # deck line {}", u.name, t.sourceLine));
+    line(fmt::format("  - name: {}                # deck line {}", yamlQuoted(u.name), t.sourceLine));
     line(fmt::format("    outer_diameter: {}      # Diam: drag, added mass and buoyancy (pi/4 d^2)",
                      num(t.diameter)));
     line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
@@ -553,7 +564,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     for (std::size_t k = 0; k < chain.size(); ++k) {
       const MoorDynLine& dl = deck.lines[static_cast<std::size_t>(chain[k].line)];
       line(fmt::format("      - {{type: {}, length: {}, elements: {}}}   # line {}: UnstrLen, NumSegs{}",
-                       typeOfLine[static_cast<std::size_t>(chain[k].line)], num(dl.length), dl.segments,
+                       yamlQuoted(typeOfLine[static_cast<std::size_t>(chain[k].line)]), num(dl.length), dl.segments,
                        dl.id, chain[k].reversed ? " (its end A is at the far end)" : ""));
       MoorDynLineMap& map = out.lines[static_cast<std::size_t>(chain[k].line)];
       map.deckId = dl.id;

@@ -163,6 +163,19 @@ TEST(MoorDynDeck, JoinsLinesInSeriesAtFreePointsWhateverTheirDirection) {
   EXPECT_EQ(c.points[2].junctionNode, 20);
 }
 
+TEST(MoorDynDeck, TypeNamesYamlWouldMisreadAreQuoted) {
+  // MoorDyn takes any word as a type name: "#1" would be a YAML comment, "a:b" a map, "*p" an alias.
+  const std::string types = "#1 0.2 200 1e9 -1 0 1 1 0 0\na:b 0.2 200 1e9 -1 0 1 1 0 0\n*p\"q 0.2 200 1e9 -1 0 1 1 0 0\n";
+  const std::string points = kTwoPoints + "3 Fixed 300 0 -100 0 0 0 0\n4 Fixed 0 300 -100 0 0 0 0\n";
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
+      deck(points, "1 #1 1 2 320 40 -\n2 a:b 3 2 320 40 -\n3 *p\"q 4 2 320 40 -\n", "", types), "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  EXPECT_EQ(spec.lines[0].sections[0].lineType, "#1");
+  EXPECT_EQ(spec.lines[1].sections[0].lineType, "a:b");
+  EXPECT_EQ(spec.lines[2].sections[0].lineType, "*p\"q");
+  EXPECT_EQ(spec.lineTypes.count("*p\"q"), 1u);
+}
+
 TEST(MoorDynDeck, FreeEndPointBecomesAFreeEndWithItsMass) {
   const std::string points =
       "1     Fixed     0   0     -100   0      0       0      0\n"
