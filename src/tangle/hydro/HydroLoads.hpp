@@ -55,7 +55,6 @@ class HydroLoads final : public solver::LoadContributor {
   /// Attachments see the current only. @throws Error when the sizes are not the model's node count
   void setNodeKinematics(std::vector<Vec3> velocity, std::vector<Vec3> acceleration);
   void clearNodeKinematics();
-  bool hasNodeKinematics() const { return !m_nodeVelocity.empty(); }
   /// The wake at every element from the last addForces() call (empty without wake_interference).
   const std::vector<ElementWake>& elementWake() const { return m_elementWake; }
 

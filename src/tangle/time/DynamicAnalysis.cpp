@@ -59,11 +59,6 @@ DynamicResult DynamicAnalysis::run(model::State& state) {
   return finish(state);
 }
 
-const VecX& DynamicAnalysis::lastForce() const {
-  if (!m_stepper) throw Error("DynamicAnalysis::lastForce called before start");
-  return m_stepper->lastForce();
-}
-
 void DynamicAnalysis::start(model::State& state) {
   m_wallStart = std::chrono::steady_clock::now();
   m_lastPrint = m_wallStart;

@@ -84,8 +84,6 @@ class DynamicAnalysis {
   DynamicResult finish(model::State& state);
   /// The summary so far.
   const DynamicResult& result() const { return m_result; }
-  /// Out-of-balance force of the last converged state (support reactions at the constrained DOFs) [N].
-  const VecX& lastForce() const;
 
  private:
   solver::Assembler* m_assembler;
