@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdlib>
 #include <cmath>
 #include <iostream>
 #include <span>
@@ -181,22 +180,22 @@ Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) {
   const double length = chord.norm();
   if (!(length > 0.0)) return Vec3::Zero();
   if (n.node != low && n.node != high) return s.tension[static_cast<std::size_t>(n.node)] * (chord / length);
-  // A junction of two deck lines (a free point inside the tangle line): the deck line's own segment, with its
-  // own tension. The node's tension is the mean of the two segments, which differ by the point's load (a
-  // buoy's lift): the lines' forces on the point would not balance it.
-  const model::Line& line = m_run->simulation().model().lines()[static_cast<std::size_t>(n.modelLine)];
-  const int element = line.firstElement + static_cast<int>(std::min(before, after));
-  return elementTensions()[static_cast<std::size_t>(element)] * (chord / length);
+  return junctionTension(n, l) * (chord / length);
 }
 
-const std::vector<double>& MoorDynSystem::elementTensions() {
-  const double now = m_run->time();
-  if (m_elementTensionTime != now || m_elementTension.empty()) {
+double MoorDynSystem::junctionTension(const NodeRef& n, int l) {
+  // A junction of two deck lines (a free point inside the tangle line): the deck line's own end segment, with
+  // its own tension. The node's tension is the mean of the two segments, which differ by the point's load (a
+  // buoy's lift): the lines' forces on the point would not balance it.
+  const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
+  const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
+  const int segment = n.node == std::min(map.firstNode, other) ? n.node : n.node - 1;
+  if (m_elementTension.empty()) {  // once per state: emptied by initialize and step
     analysis::Simulation& sim = m_run->simulation();
     sim.assembler().elementTension(sim.state(), m_elementTension, nullptr);
-    m_elementTensionTime = now;
   }
-  return m_elementTension;
+  const model::Line& line = m_run->simulation().model().lines()[static_cast<std::size_t>(n.modelLine)];
+  return m_elementTension[static_cast<std::size_t>(line.firstElement + segment)];
 }
 
 Vec3 MoorDynSystem::velocity(const NodeRef& n) {
@@ -251,11 +250,7 @@ double MoorDynSystem::endTension(int l, int end) {
   const solver::LineSnapshot& s = *n.snapshot;
   if (n.node == 0) return s.endTensionA;
   if (n.node == static_cast<int>(s.position.size()) - 1) return s.endTensionB;
-  // A junction with another deck line inside the tangle line: this deck line's own end segment.
-  const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
-  const int segment = n.node == std::min(map.firstNode, other) ? n.node : n.node - 1;
-  const model::Line& line = m_run->simulation().model().lines()[static_cast<std::size_t>(n.modelLine)];
-  return elementTensions()[static_cast<std::size_t>(line.firstElement + segment)];
+  return junctionTension(n, l);  // a junction with another deck line inside the tangle line
 }
 
 double MoorDynSystem::maxTension(int l) {
@@ -352,7 +347,7 @@ int MoorDynSystem::waveKinematicsPointCount() const {
   const bool external = std::any_of(options.begin(), options.end(), [](const io::MoorDynOption& o) {
     std::string name = o.name;
     std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
-    return name == "wavekin" && std::strtod(o.value.c_str(), nullptr) == 1.0;
+    return name == "wavekin" && io::deckNumber(o.value) == 1.0;
   });
   if (!external) return 0;
   int n = static_cast<int>(m_coupling.deck.points.size());

@@ -177,8 +177,9 @@ class MoorDynSystem {
   NodeRef deckNode(int l, unsigned int i);
   /// The tension vector at `n` oriented from the tangle line's end A to its end B [N]; `l` is the deck line.
   Vec3 tangleTension(const NodeRef& n, int l);
-  /// Axial tension of every element of the model at the current state [N] (computed once per state).
-  const std::vector<double>& elementTensions();
+  /// Tension of deck line l's own end segment at `n`, a junction with another deck line inside the tangle
+  /// line [N].
+  double junctionTension(const NodeRef& n, int l);
   Vec3 velocity(const NodeRef& n);
   /// Position / velocity of a tangle line end (name, 0 A / 1 B).
   Vec3 endNodePosition(const std::pair<std::string, int>& end);
@@ -187,8 +188,7 @@ class MoorDynSystem {
   std::string m_path;
   io::DeckCoupling m_coupling;
   std::unique_ptr<analysis::CoupledRun> m_run;
-  std::vector<double> m_elementTension;  ///< elementTensions() of the state at m_elementTensionTime
-  double m_elementTensionTime = -1.0;     ///< [s]; < 0: not computed since the last initialize or step
+  std::vector<double> m_elementTension;  ///< every element's tension at the current state [N]; empty: not yet
   std::vector<int> m_coupledIndex;  ///< per deck point, its index among the coupled points (-1: not coupled)
   std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)
   std::vector<std::unique_ptr<LineHandle>> m_lineHandles;

@@ -61,12 +61,9 @@ struct Options {
 };
 
 double optionNumber(const MoorDynDeck& deck, const MoorDynOption& o) {
-  double v = 0.0;
-  const char* end = o.value.data() + o.value.size();
-  const auto [ptr, ec] = std::from_chars(o.value.data(), end, v);
-  if (ec != std::errc() || ptr != end)
-    throw InputError(deck.file, o.sourceLine, o.name, fmt::format("expected a number, got '{}'", o.value));
-  return v;
+  const std::optional<double> v = deckNumber(o.value);
+  if (!v) throw InputError(deck.file, o.sourceLine, o.name, fmt::format("expected a number, got '{}'", o.value));
+  return *v;
 }
 
 Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
@@ -183,10 +180,9 @@ std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int option
     const char* names[] = {"z", "ux", "uy", "uz"};
     double values[4] = {0.0, 0.0, 0.0, 0.0};
     for (std::size_t k = 0; k < std::min<std::size_t>(w.size(), 4); ++k) {
-      const char* end = w[k].data() + w[k].size();
-      const auto [ptr, ec] = std::from_chars(w[k].data(), end, values[k]);
-      if (ec != std::errc() || ptr != end)
-        throw InputError(path, lineNo, names[k], fmt::format("expected a number, got '{}'", w[k]));
+      const std::optional<double> v = deckNumber(w[k]);
+      if (!v) throw InputError(path, lineNo, names[k], fmt::format("expected a number, got '{}'", w[k]));
+      values[k] = *v;
     }
     level.z = values[0];
     level.velocity = Vec3(values[1], values[2], values[3]);

@@ -181,11 +181,9 @@ class DeckParser {
   }
 
   double number(int line, const std::string& key, const std::string& word) const {
-    double v = 0.0;
-    const char* end = word.data() + word.size();
-    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
-    if (ec != std::errc() || ptr != end) fail(line, key, fmt::format("expected a number, got '{}'", word));
-    return v;
+    const std::optional<double> v = deckNumber(word);
+    if (!v) fail(line, key, fmt::format("expected a number, got '{}'", word));
+    return *v;
   }
 
   int integer(int line, const std::string& key, const std::string& word) const {
@@ -204,15 +202,13 @@ class DeckParser {
       fail(
           line, key,
           fmt::format("'{}': {} are not supported by tangle (one constant value per line type)", word, what));
-    double v = 0.0;
-    const char* end = word.data() + word.size();
-    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
-    if (ec != std::errc() || ptr != end)
+    const std::optional<double> v = deckNumber(word);
+    if (!v)
       fail(line, key,
            fmt::format("'{}' is not a number: {} from a table file are not supported by tangle (one constant "
                        "value per line type)",
                        word, what));
-    return v;
+    return *v;
   }
 
   MoorDynLineType lineType(int n, const std::vector<std::string>& w) const {
@@ -360,6 +356,14 @@ class DeckParser {
 };
 
 }  // namespace
+
+std::optional<double> deckNumber(std::string_view word) {
+  double v = 0.0;
+  const char* end = word.data() + word.size();
+  const auto [ptr, ec] = std::from_chars(word.data(), end, v);
+  if (word.empty() || ec != std::errc() || ptr != end) return std::nullopt;
+  return v;
+}
 
 MoorDynDeck parseMoorDynDeck(const std::string& text, const std::string& file) {
   return DeckParser(text, file).parse();

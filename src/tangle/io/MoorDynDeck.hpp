@@ -12,7 +12,9 @@
 ///
 /// Units as in MoorDyn: SI (m, kg, N, s).
 
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
@@ -84,6 +86,10 @@ struct MoorDynDeck {
   std::vector<MoorDynOption> options;
   std::vector<std::string> outputs;  ///< OUTPUTS channel names
 };
+
+/// A whole word of a deck (or of a file it names) read as a number, as MoorDyn's columns are; nullopt when
+/// the word is not one number (a table file's name, "1e9|2e9", trailing characters).
+std::optional<double> deckNumber(std::string_view word);
 
 /// True when the file at `path` reads as a MoorDyn deck (a "---" line naming LINE TYPES or LINE DICTIONARY)
 /// rather than a YAML model.
