@@ -134,7 +134,8 @@ def test_statics_and_dynamics_equal_the_cli(mooring: tangle.Model, tmp_path: Pat
     assert len(calls) == len(run.time_s) and calls[-1] == pytest.approx((12.0, 12.0))
     # The solver counters, as the CLI's dynamics/summary.json (the same iterations: the same results).
     summary = json.loads((out / "dynamics" / "summary.json").read_text())
-    for key in ("newton_iterations", "newton_iterations_on_parts", "matrix_refreshes", "converged_blocks_left_out"):
+    for key in ("newton_iterations", "newton_iterations_on_parts", "matrix_refreshes", "block_refreshes",
+                "converged_blocks_left_out"):
         assert getattr(run, key) == summary[key], key
     assert run.matrix_refreshes > 0
 

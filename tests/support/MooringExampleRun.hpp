@@ -43,6 +43,7 @@ inline FairleadRun runMooringExample(double duration, const std::string& environ
                                      const std::vector<double>& azimuthsDeg = {}) {
   unsetenv("TANGLE_WHOLE_ASSEMBLY");
   unsetenv("TANGLE_KEEP_MATRIX");
+  unsetenv("TANGLE_WHOLE_REFRESH");
   if (!environmentSwitch.empty()) setenv(environmentSwitch.c_str(), "1", 1);
   model::ModelSpec spec = io::readModelFile(std::string(kExamplesDir) + "/mooring-dynamics/model.yaml");
   if (!azimuthsDeg.empty()) {

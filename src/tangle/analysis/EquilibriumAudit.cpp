@@ -50,7 +50,7 @@ LoadTerms staticLoads(Simulation& simulation) {
       solver::AssemblyPart part;
       for (std::size_t i = 0; i < model.attachments().size(); ++i)
         if (isLineEnd(model, model.attachments()[i].node)) part.attachments.push_back(static_cast<int>(i));
-      if (!part.attachments.empty()) c->addPartForces(state, request, part, terms.endAttachmentDrag);
+      if (!part.attachments.empty()) c->addPartForces(state, request, part, terms.endAttachmentDrag, nullptr);
     } else if (c->source() == solver::LoadSource::Contact) {
       c->addForces(state, request, terms.contact, nullptr);
     } else {

@@ -160,10 +160,10 @@ void HydroLoads::addForces(const model::State& state, const solver::AssemblyRequ
 }
 
 void HydroLoads::addPartForces(const model::State& state, const solver::AssemblyRequest& request,
-                               const solver::AssemblyPart& part, VecX& force) {
+                               const solver::AssemblyPart& part, VecX& force, solver::SystemMatrix* matrix) {
   const bool waves = prepareWaves(state, request);
-  addElementForces(state, request, waves, force, nullptr, &part.elements);
-  addAttachmentDrag(state, request, force, nullptr, &part.attachments);
+  addElementForces(state, request, waves, force, matrix, &part.elements);
+  addAttachmentDrag(state, request, force, matrix, &part.attachments);
 }
 
 void HydroLoads::addElementForces(const model::State& state, const solver::AssemblyRequest& request,
@@ -275,9 +275,9 @@ void HydroLoads::addMass(const model::State&, double mf, solver::SystemMatrix* m
   addElementMass(mf, matrix, acceleration, out, nullptr);
 }
 
-void HydroLoads::addPartMass(const model::State&, const solver::AssemblyPart& part, const VecX& acceleration,
-                             VecX& out) {
-  addElementMass(0.0, nullptr, &acceleration, &out, &part.elements);
+void HydroLoads::addPartMass(const model::State&, const solver::AssemblyPart& part, double mf,
+                             solver::SystemMatrix* matrix, const VecX* acceleration, VecX* out) {
+  addElementMass(mf, matrix, acceleration, out, &part.elements);
 }
 
 void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const VecX* acceleration, VecX* out,

@@ -39,9 +39,9 @@ class HydroLoads final : public solver::LoadContributor {
   solver::LoadSource source() const override { return solver::LoadSource::Hydrodynamic; }
   bool supportsParts() const override { return !m_wake; }
   void addPartForces(const model::State& state, const solver::AssemblyRequest& request,
-                     const solver::AssemblyPart& part, VecX& force) override;
-  void addPartMass(const model::State& state, const solver::AssemblyPart& part, const VecX& acceleration,
-                   VecX& out) override;
+                     const solver::AssemblyPart& part, VecX& force, solver::SystemMatrix* matrix) override;
+  void addPartMass(const model::State& state, const solver::AssemblyPart& part, double mf,
+                   solver::SystemMatrix* matrix, const VecX* acceleration, VecX* out) override;
 
   /// Total fluid kinematics (current + ramped waves) at a point [m] and time [s].
   FluidKinematics fluidAt(const Vec3& p, double t, bool dynamic) const;

@@ -75,6 +75,7 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
   j.field("newton_iterations_on_parts", static_cast<double>(r.partIterations));
   j.field("converged_blocks_left_out", static_cast<double>(r.blocksLeft));
   j.field("matrix_refreshes", static_cast<double>(r.matrixRefreshes));
+  j.field("block_refreshes", static_cast<double>(r.blockRefreshes));
   j.field("wall_time_s", r.wallSeconds);
   j.field("real_time_factor", r.endTime / std::max(r.wallSeconds, 1e-9));
   j.field("message", r.message);

@@ -216,7 +216,7 @@ void Assembler::addAll(const model::State& state, const AssemblyRequest& request
   addSeabed(state, request, force, matrix, part ? &part->nodes : nullptr);
   for (LoadContributor* c : m_contributors) {
     if (part)
-      c->addPartForces(state, request, *part, force);
+      c->addPartForces(state, request, *part, force, matrix);
     else
       c->addForces(state, request, force, matrix);
   }
@@ -413,7 +413,7 @@ void Assembler::addAllMass(const model::State& state, double mf, SystemMatrix* m
              part ? &part->attachments : nullptr);
   for (LoadContributor* c : m_contributors) {
     if (part)
-      c->addPartMass(state, *part, *acceleration, *out);
+      c->addPartMass(state, *part, mf, matrix, acceleration, out);
     else
       c->addMass(state, mf, matrix, acceleration, out);
   }
@@ -603,6 +603,15 @@ void Assembler::addPartMass(const model::State& state, const AssemblyPart& part,
   zeroNodes(dofs, part.writtenNodes, m_partWork);
   addAllMass(state, 0.0, nullptr, &acceleration, &m_partWork, &part);
   copyNodes(dofs, part.nodes, m_partWork, out);
+}
+
+void Assembler::addPartMatrix(const model::State& state, const AssemblyRequest& request, double mf,
+                              const AssemblyPart& part, SystemMatrix& matrix) {
+  // The part's terms in the order of assemble() and addMass(), with the matrix; the forces computed on
+  // the way are those the last evaluation at `state` gave (the same arithmetic) and are dropped.
+  m_partWork.resize(m_model->dofs().fullDofCount());
+  addAll(state, request, m_partWork, &matrix, &part);
+  addAllMass(state, mf, &matrix, nullptr, nullptr, &part);
 }
 
 std::vector<double> Assembler::elementTension(const model::State& state,

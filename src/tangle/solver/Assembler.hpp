@@ -90,6 +90,13 @@ class Assembler {
   /// Sets the entries of `out` at part.nodes to those of M * acceleration (addMass with out zeroed),
   /// keeping the others. Requires supportsParts().
   void addPartMass(const model::State& state, const AssemblyPart& part, const VecX& acceleration, VecX& out);
+  /// Adds the iteration matrix's terms of a part, H = kf dF/dq + cf dF/dv (as assemble with request.wantMatrix)
+  /// and mf M (as addMass), of its elements, nodes and attachments, to `matrix`: with part = whole
+  /// independent blocks and `matrix` in a patch of their equations (SystemMatrix::beginPatch), their entries
+  /// of a whole assembly at `state` (GeneralizedAlpha's refresh of blocks). Side effects as assemblePart at
+  /// `state`. Requires supportsParts().
+  void addPartMatrix(const model::State& state, const AssemblyRequest& request, double mf,
+                     const AssemblyPart& part, SystemMatrix& matrix);
 
   /// Statics length continuation: element e is given the unstretched length restLengths[e] [m] instead of
   /// its own (NaN keeps its own); an empty vector restores every element. Weight stays the nominal one.

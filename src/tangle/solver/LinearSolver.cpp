@@ -60,6 +60,18 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
   return true;
 }
 
+bool LinearSolver::factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks) {
+  // The pattern's outer index only: a changed pattern changes it (entries in other columns) or the
+  // count; an identical count and column layout with other rows would need a contact made and another
+  // released between two refreshes, which a refresh of the whole matrix handles anyway (SystemMatrix's patch
+  // fails on an entry outside the built pattern).
+  if (m_method != Method::Banded || k.rows() != m_rows || static_cast<int>(m_inner.size()) != k.nonZeros() ||
+      !std::equal(m_outer.begin(), m_outer.end(), k.outerIndexPtr()))
+    return false;
+  // On false the factors are partly overwritten: the caller factorises the whole matrix before solving.
+  return m_skyline.factorizeBlocks(k, blocks);
+}
+
 VecX LinearSolver::solve(const VecX& b) const {
   VecX x = b;
   solveInPlace(x);

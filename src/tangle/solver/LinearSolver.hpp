@@ -27,6 +27,10 @@ class LinearSolver {
   explicit LinearSolver(bool allowBanded = false) : m_allowBanded(allowBanded) {}
   /// Factorises k. Returns false if the matrix is singular for every method.
   bool factorize(const SparseMatrix& k);
+  /// Factorises again the listed independent blocks of the last factorisation (blockCount; ascending) from
+  /// `k`, whose other blocks must equal the last factorised matrix's: SkylineLdlt::factorizeBlocks. False
+  /// (the caller factorises the whole matrix) unless the last factorisation is the banded one of k's pattern.
+  bool factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks);
   /// Solves with the last factorisation.
   VecX solve(const VecX& b) const;
   /// Overwrites b with the solution (no allocation on the banded path).

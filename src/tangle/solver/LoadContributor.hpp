@@ -82,13 +82,14 @@ class LoadContributor {
   /// (its loads are zero at the part's nodes and unchanged elsewhere, since no node it reads moved). False
   /// (the default): the contributor's terms come from addPartForces / addPartMass.
   virtual bool markLoadedNodes(std::vector<char>& /*mark*/) const { return false; }
-  /// As addForces without a matrix, for the elements and attachments of `part` only (Assembler::assemblePart
-  /// keeps the entries of part.nodes; what lands elsewhere is discarded).
+  /// As addForces, for the elements and attachments of `part` only (Assembler::assemblePart keeps the
+  /// entries of part.nodes; what lands elsewhere is discarded); `matrix` (when not null) receives their
+  /// entries of H (Assembler::addPartMatrix: a refresh of independent blocks).
   virtual void addPartForces(const model::State& /*state*/, const AssemblyRequest& /*request*/,
-                             const AssemblyPart& /*part*/, VecX& /*force*/) {}
-  /// As addMass without a matrix, for the elements and attachments of `part` only.
-  virtual void addPartMass(const model::State& /*state*/, const AssemblyPart& /*part*/,
-                           const VecX& /*acceleration*/, VecX& /*out*/) {}
+                             const AssemblyPart& /*part*/, VecX& /*force*/, SystemMatrix* /*matrix*/) {}
+  /// As addMass, for the elements and attachments of `part` only.
+  virtual void addPartMass(const model::State& /*state*/, const AssemblyPart& /*part*/, double /*mf*/,
+                           SystemMatrix* /*matrix*/, const VecX* /*acceleration*/, VecX* /*out*/) {}
   /// What kind of load this is, for the accounts that split the loads by source (equilibrium audit,
   /// energy account).
   virtual LoadSource source() const { return LoadSource::Other; }

@@ -372,14 +372,24 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
   return m_values.size() + static_cast<std::size_t>(m_n);
 }
 
-bool SkylineLdlt::factorize(const SparseMatrix& k) {
-  if (m_bandWidth > 0) return factorizeBand(k);
-  scatterValues(k, m_map, m_values, m_diagonal);
+double SkylineLdlt::pivotThreshold(const std::vector<double>& diagonal) {
   double largest = 0.0;
-  for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
-  const double tiny = 1e-14 * largest;
+  for (const double d : diagonal) largest = std::max(largest, std::abs(d));
+  return 1e-14 * largest;
+}
+
+bool SkylineLdlt::factorize(const SparseMatrix& k) {
+  m_factorized = false;
+  if (m_bandWidth > 0) return m_factorized = factorizeBand(k);
+  scatterValues(k, m_map, m_values, m_diagonal);
+  m_kDiagonal = m_diagonal;
+  m_inverseDiagonal.resize(m_n);
+  return m_factorized = factorizeEnvelopeRows(0, m_n, pivotThreshold(m_diagonal));
+}
+
+bool SkylineLdlt::factorizeEnvelopeRows(int begin, int end, double tiny) {
   double* v = m_values.data();
-  for (int i = 0; i < m_n; ++i) {
+  for (int i = begin; i < end; ++i) {
     const int fi = m_first[i];
     const std::ptrdiff_t rowI = rowBase(i);  // v[rowI + j] = entry (i, j), j in [fi, i)
     // v[rowI + j] <- w_j = L(i, j) D(j) = A(i, j) - sum_{k < j} w_k L(j, k)  (Crout, row by row)
@@ -400,10 +410,54 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
     m_diagonal[i] = d;
   }
   // L by columns for the backward substitution (see solveInPlace; the structure is the pattern's, set by
-  // analyzePattern) and 1 / D.
-  for (std::size_t q = 0; q < m_columnValue.size(); ++q) m_columnValue[q] = v[m_columnSource[q]];
-  m_inverseDiagonal.resize(m_n);
-  for (int i = 0; i < m_n; ++i) m_inverseDiagonal[i] = 1.0 / m_diagonal[i];
+  // analyzePattern: the columns of rows [begin, end) are those columns, a union of blocks) and 1 / D.
+  for (std::size_t q = m_columnStart[static_cast<std::size_t>(begin)];
+       q < m_columnStart[static_cast<std::size_t>(end)]; ++q)
+    m_columnValue[q] = v[m_columnSource[q]];
+  for (int i = begin; i < end; ++i) m_inverseDiagonal[i] = 1.0 / m_diagonal[i];
+  return true;
+}
+
+bool SkylineLdlt::factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks) {
+  if (!m_factorized || k.rows() != m_n || !k.isCompressed()) return false;
+  m_factorized = false;
+  const int* outer = k.outerIndexPtr();
+  const double* a = k.valuePtr();
+  const bool band = m_bandWidth > 0;
+  const std::vector<std::ptrdiff_t>& map = band ? m_bandMap : m_map;
+  std::vector<double>& lower = band ? m_band : m_values;
+  std::vector<double>& diagonal = band ? m_originalDiagonal : m_kDiagonal;
+  // K's values of the blocks (scatterValues on their columns, which hold their rows only): into the band's
+  // copy of K (m_original) or the envelope, the other blocks' entries kept.
+  for (const int block : blocks) {
+    const int b0 = blockStart(block), b1 = blockStart(block + 1);
+    const std::size_t lo = band ? static_cast<std::size_t>(b0) * static_cast<std::size_t>(m_bandWidth) : m_start[b0];
+    const std::size_t hi = band ? static_cast<std::size_t>(b1) * static_cast<std::size_t>(m_bandWidth) : m_start[b1];
+    std::fill(lower.begin() + static_cast<std::ptrdiff_t>(lo), lower.begin() + static_cast<std::ptrdiff_t>(hi), 0.0);
+    std::fill(diagonal.begin() + b0, diagonal.begin() + b1, 0.0);
+    for (int p = outer[b0]; p < outer[b1]; ++p) {
+      const std::ptrdiff_t m = map[static_cast<std::size_t>(p)];
+      if (m >= 0)
+        lower[static_cast<std::size_t>(m)] += a[p];
+      else if (m != kUpper)
+        diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
+    }
+    if (band) {
+      std::copy(m_band.begin() + static_cast<std::ptrdiff_t>(lo), m_band.begin() + static_cast<std::ptrdiff_t>(hi),
+                m_original.begin() + static_cast<std::ptrdiff_t>(lo));
+    }
+    std::copy(diagonal.begin() + b0, diagonal.begin() + b1, m_diagonal.begin() + b0);
+  }
+  const double tiny = pivotThreshold(diagonal);
+  for (const int block : blocks) {
+    const bool ok = band ? withBandWidth(m_bandWidth,
+                                         [&](auto width) {
+                                           return factorizeBandBlock<decltype(width)::value>(block, tiny);
+                                         })
+                         : factorizeEnvelopeRows(blockStart(block), blockStart(block + 1), tiny);
+    if (!ok) return false;
+  }
+  m_factorized = true;
   return true;
 }
 
@@ -413,9 +467,7 @@ bool SkylineLdlt::factorizeBand(const SparseMatrix& k) {
   // long block is factorised from both ends at once (twisted, see twistedSubstitutions): two independent
   // chains of rows, as the substitutions.
   scatterValues(k, m_bandMap, m_band, m_diagonal);
-  double largest = 0.0;
-  for (double d : m_diagonal) largest = std::max(largest, std::abs(d));
-  const double tiny = 1e-14 * largest;
+  const double tiny = pivotThreshold(m_diagonal);
   m_original = m_band;  // K itself: the bottom-up rows read it, and a failed twist starts again from it
   m_originalDiagonal = m_diagonal;
   m_inverseDiagonal.resize(m_n);
@@ -429,27 +481,31 @@ bool SkylineLdlt::factorizeBandBlocks(double tiny) {
   m_twistRow.assign(static_cast<std::size_t>(blocks), -1);
   m_bandUp.resize(m_band.size());
   m_twistFactor.resize(static_cast<std::size_t>(blocks) * static_cast<std::size_t>(W * W));
+  for (int block = 0; block < blocks; ++block)
+    if (!factorizeBandBlock<W>(block, tiny)) return false;
+  return true;
+}
+
+template <int W>
+bool SkylineLdlt::factorizeBandBlock(int block, double tiny) {
   double* band = m_band.data();
   double* diagonal = m_diagonal.data();
   double* inverse = m_inverseDiagonal.data();
-  for (int block = 0; block < blocks; ++block) {
-    const int b0 = blockStart(block), b1 = blockStart(block + 1);
-    if (b1 - b0 >= kMinTwistedBlock * W) {
-      const int m = b0 + (b1 - b0 - W) / 2;
-      if (twistedFactorizeEnds<W>(band, m_bandUp.data(), m_original.data(), diagonal, inverse, b0, b1, m,
-                                  tiny) &&
-          factorizeSeparator<W>(block, m, tiny)) {
-        m_twistRow[static_cast<std::size_t>(block)] = m;
-        continue;
-      }
-      // A vanishing pivot in the twisted order: the block top-down, from K again.
-      const auto from = static_cast<std::ptrdiff_t>(b0) * W, to = static_cast<std::ptrdiff_t>(b1) * W;
-      std::copy(m_original.begin() + from, m_original.begin() + to, m_band.begin() + from);
-      std::copy(m_originalDiagonal.begin() + b0, m_originalDiagonal.begin() + b1, m_diagonal.begin() + b0);
+  const int b0 = blockStart(block), b1 = blockStart(block + 1);
+  m_twistRow[static_cast<std::size_t>(block)] = -1;
+  if (b1 - b0 >= kMinTwistedBlock * W) {
+    const int m = b0 + (b1 - b0 - W) / 2;
+    if (twistedFactorizeEnds<W>(band, m_bandUp.data(), m_original.data(), diagonal, inverse, b0, b1, m, tiny) &&
+        factorizeSeparator<W>(block, m, tiny)) {
+      m_twistRow[static_cast<std::size_t>(block)] = m;
+      return true;
     }
-    if (!bandFactorizeRows<W>(band, diagonal, inverse, b0, b1, tiny)) return false;
+    // A vanishing pivot in the twisted order: the block top-down, from K again.
+    const auto from = static_cast<std::ptrdiff_t>(b0) * W, to = static_cast<std::ptrdiff_t>(b1) * W;
+    std::copy(m_original.begin() + from, m_original.begin() + to, m_band.begin() + from);
+    std::copy(m_originalDiagonal.begin() + b0, m_originalDiagonal.begin() + b1, m_diagonal.begin() + b0);
   }
-  return true;
+  return bandFactorizeRows<W>(band, diagonal, inverse, b0, b1, tiny);
 }
 
 template <int W>

@@ -49,6 +49,12 @@ class SkylineLdlt {
   double factorizationCost() const { return m_cost; }
   /// Factorises `k` (same pattern as analysed). False on a vanishing pivot (see the file comment).
   bool factorize(const SparseMatrix& k);
+  /// Factorises again the listed independent blocks (ascending block indices) from `k` (the analysed
+  /// pattern; its other blocks' values are not read) and keeps the others' factors: after a factorize, when
+  /// only those blocks' entries changed. The same arithmetic as factorize on those blocks, with the
+  /// vanishing-pivot threshold of the whole matrix as now stored. False on a vanishing pivot or without a
+  /// preceding successful factorize (then factorize the whole matrix).
+  bool factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks);
   /// Overwrites b with the solution x of K x = b.
   void solveInPlace(VecX& b) const;
 
@@ -70,6 +76,15 @@ class SkylineLdlt {
   /// m_twistRow, m_bandUp, m_twistFactor), the others top-down.
   template <int W>
   bool factorizeBandBlocks(double tiny);
+  /// One block of factorizeBandBlocks (its work space sized by it).
+  template <int W>
+  bool factorizeBandBlock(int block, double tiny);
+  /// The envelope's Crout rows [begin, end) (a union of blocks; envelope mode), then their columns of L for
+  /// the backward substitution and 1 / D. False on |D(i)| <= tiny (or NaN).
+  bool factorizeEnvelopeRows(int begin, int end, double tiny);
+  /// 1e-14 of the largest |diagonal entry| of K as stored (m_originalDiagonal or m_diagonal before the
+  /// factorisation): the vanishing-pivot threshold.
+  static double pivotThreshold(const std::vector<double>& diagonal);
   /// The separator of twisted block `block` at rows [m, m + w): Schur complement and its dense LDL^T. False
   /// on a vanishing pivot.
   template <int W>
@@ -89,6 +104,8 @@ class SkylineLdlt {
   std::vector<std::ptrdiff_t> m_map;  // each stored value of the input: index in m_values, -1 - row for the
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
+  bool m_factorized = false;           // the last factorize succeeded (factorizeBlocks may follow)
+  std::vector<double> m_kDiagonal;     // envelope mode: K's diagonal of the last factorisation
   std::vector<int> m_blockStart;  // first equation of each independent block, then m_n
   // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1]); the
   // structure set by analyzePattern, the values by factorize) and

@@ -5,6 +5,8 @@
 namespace tangle::solver {
 
 void SystemMatrix::clear() {
+  m_built = false;
+  m_patch = nullptr;
   m_triplets.clear();
   m_cursor = 0;
   m_replaying = m_recorded;
@@ -16,6 +18,10 @@ void SystemMatrix::clear() {
 }
 
 void SystemMatrix::addRecorded(int row, int col, double v) {
+  if (m_patch) {
+    addPatched(row, col, v);
+    return;
+  }
   if (m_replaying) startRecording();
   m_calls.push_back({row, col, {-1, -1, -1}, false});
   const int r = m_dofs->equation(row);
@@ -26,6 +32,10 @@ void SystemMatrix::addRecorded(int row, int col, double v) {
 }
 
 void SystemMatrix::add3x3Recorded(int rowFirst, int colFirst, const Mat3& m) {
+  if (m_patch) {
+    add3x3Patched(rowFirst, colFirst, m);
+    return;
+  }
   if (m_replaying) startRecording();
   const int r = m_dofs->equation(rowFirst), c = m_dofs->equation(colFirst);
   bool whole = r >= 0 && c >= 0;
@@ -63,6 +73,7 @@ void SystemMatrix::startRecording() {
         take(call.position[static_cast<std::size_t>(j)] + i, call.row + i, call.col + j);
   }
   m_calls.resize(m_cursor);
+  m_patchSequences.clear();
   m_replaying = false;
   m_replayCount = 0;
   m_recorded = false;
@@ -82,6 +93,7 @@ void SystemMatrix::build(SparseMatrix& out) {
       out = Eigen::Map<const SparseMatrix>(n, n, static_cast<Eigen::Index>(m_values.size()), m_outer.data(),
                                            m_inner.data(), m_values.data());
     }
+    m_built = true;
     return;
   }
   out.resize(n, n);
@@ -95,6 +107,7 @@ void SystemMatrix::build(SparseMatrix& out) {
     const int* found = std::lower_bound(m_inner.data() + m_outer[c], m_inner.data() + m_outer[c + 1], r);
     return static_cast<int>(found - m_inner.data());
   };
+  m_patchSequences.clear();
   for (Call& call : m_calls) {
     const int r = m_dofs->equation(call.row), c = m_dofs->equation(call.col);
     if (call.block) {
@@ -105,6 +118,84 @@ void SystemMatrix::build(SparseMatrix& out) {
     call.position[0] = r < 0 || c < 0 ? -1 : positionOf(r, c);
   }
   m_recorded = true;
+  m_built = true;
+}
+
+bool SystemMatrix::beginPatch(int begin, int end) {
+  if (!m_built || m_patch) return false;
+  auto found = std::find_if(m_patchSequences.begin(), m_patchSequences.end(),
+                            [&](const PatchSequence& p) { return p.begin == begin && p.end == end; });
+  if (found == m_patchSequences.end()) {
+    // The recorded calls with an entry in rows [begin, end), in order (their columns are there too when the
+    // range is a union of independent blocks).
+    PatchSequence sequence{begin, end, {}};
+    for (std::size_t k = 0; k < m_calls.size(); ++k) {
+      const Call& call = m_calls[k];
+      const int r = m_dofs->equation(call.row);
+      if ((call.block || call.position[0] >= 0) && r >= begin && r < end) sequence.calls.push_back(k);
+    }
+    m_patchSequences.push_back(std::move(sequence));
+    found = m_patchSequences.end() - 1;
+  }
+  std::fill(m_values.begin() + m_outer[static_cast<std::size_t>(begin)],
+            m_values.begin() + m_outer[static_cast<std::size_t>(end)], 0.0);
+  // The inline add and add3x3 replay while m_cursor < m_replayCount: with no count they come to
+  // addRecorded / add3x3Recorded, which replay the patch's subsequence.
+  m_replayCountBeforePatch = m_replayCount;
+  m_replayCount = 0;
+  m_patch = &*found;
+  m_patchCursor = 0;
+  m_patchFailed = false;
+  return true;
+}
+
+void SystemMatrix::addPatched(int row, int col, double v) {
+  if (m_patchCursor < m_patch->calls.size()) {
+    const Call& c = m_calls[m_patch->calls[m_patchCursor]];
+    if (!c.block && c.row == row && c.col == col) {
+      ++m_patchCursor;
+      m_values[static_cast<std::size_t>(c.position[0])] += v;
+      return;
+    }
+  }
+  if (m_dofs->equation(row) < 0 || m_dofs->equation(col) < 0) return;  // no entry, as in an assembly
+  m_patchFailed = true;
+}
+
+void SystemMatrix::add3x3Patched(int rowFirst, int colFirst, const Mat3& m) {
+  if (m_patchCursor < m_patch->calls.size()) {
+    const Call& c = m_calls[m_patch->calls[m_patchCursor]];
+    if (c.block && c.row == rowFirst && c.col == colFirst) {
+      ++m_patchCursor;
+      for (int j = 0; j < 3; ++j) {
+        double* v = m_values.data() + c.position[static_cast<std::size_t>(j)];
+        for (int i = 0; i < 3; ++i) v[i] += m(i, j);
+      }
+      return;
+    }
+  }
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) addPatched(rowFirst + i, colFirst + j, m(i, j));
+}
+
+bool SystemMatrix::endPatch(SparseMatrix& out) {
+  if (!m_patch) return false;
+  const PatchSequence& patch = *m_patch;
+  m_patch = nullptr;
+  m_replayCount = m_replayCountBeforePatch;
+  const int n = m_dofs->equationCount();
+  const auto from = static_cast<std::size_t>(patch.begin), to = static_cast<std::size_t>(patch.end);
+  const bool ok = !m_patchFailed && m_patchCursor == patch.calls.size() && out.rows() == n && out.cols() == n &&
+                  out.isCompressed() && out.nonZeros() == static_cast<Eigen::Index>(m_values.size()) &&
+                  std::equal(m_outer.begin() + from, m_outer.begin() + to + 1, out.outerIndexPtr() + patch.begin) &&
+                  std::equal(m_inner.begin() + m_outer[from], m_inner.begin() + m_outer[to],
+                             out.innerIndexPtr() + m_outer[from]);
+  if (!ok) {
+    m_built = false;  // the values are neither the last build nor a whole assembly
+    return false;
+  }
+  std::copy(m_values.begin() + m_outer[from], m_values.begin() + m_outer[to], out.valuePtr() + m_outer[from]);
+  return true;
 }
 
 }  // namespace tangle::solver

@@ -22,6 +22,10 @@ namespace tangle::solver {
 ///   either way, so both modes give the same matrix bit for bit. A call that differs from the recorded one
 ///   (a contact appears, a pattern changes) turns the assembly back into recording, with the entries
 ///   summed so far as triplets.
+/// And a third, patching, for a refresh of some independent blocks of the matrix (GeneralizedAlpha): after a
+/// build, beginPatch zeroes the built matrix's entries in the columns of whole blocks and the calls that
+/// follow (those blocks' elements and nodes) sum into the built pattern's entries, found by search;
+/// endPatch copies those columns into the built matrix. The recorded sequence is left as it was.
 class SystemMatrix {
  public:
   explicit SystemMatrix(const model::DofMap& dofs) : m_dofs(&dofs) {}
@@ -91,6 +95,18 @@ class SystemMatrix {
   /// True while the current assembly replays the recorded sequence (for tests).
   bool replaying() const { return m_replaying; }
 
+  /// Starts a patch of the equations [begin, end) (an independent block of the built matrix, or a union of
+  /// them: no entry couples them to other equations): their columns of the last built matrix are zeroed, and
+  /// the calls until endPatch sum into them. The calls must be the recorded sequence's calls of those
+  /// equations in their order (an assembly of the block's elements and nodes; calls at constrained DOFs
+  /// alone are ignored): they are replayed as that subsequence, kept per block. False (nothing changed)
+  /// when there is no built matrix to patch (no build since the last clear).
+  bool beginPatch(int begin, int end);
+  /// Ends the patch: copies the patched columns into `out`, which must hold the last build. False when the
+  /// calls of the patch were not the subsequence (a contact made since the build, a changed pattern) or
+  /// `out` is not the last build: `out` is left as it was and the matrix must be assembled whole (clear()).
+  bool endPatch(SparseMatrix& out);
+
  private:
   /// One call of the sequence: full DOF row and column, and the position of its entry in the recorded
   /// matrix's value array (-1: a constrained DOF; set by build).
@@ -106,6 +122,10 @@ class SystemMatrix {
   /// add3x3 outside a replay: leaves the replay if one was running, then keeps one block call (three free
   /// consecutive rows and columns) or nine scalar calls. `m` holds the scaled values.
   [[gnu::noinline]] void add3x3Recorded(int rowFirst, int colFirst, const Mat3& m);
+  /// A scalar call of a patch: the next call of the patch's subsequence, or ignored at a constrained DOF.
+  void addPatched(int row, int col, double v);
+  /// A 3x3 call of a patch (`m` scaled): the next block call of the subsequence, else nine scalar calls.
+  void add3x3Patched(int rowFirst, int colFirst, const Mat3& m);
   /// Leaves replaying at the current call: the calls replayed so far stay in the sequence and their
   /// summed entries become triplets.
   void startRecording();
@@ -121,6 +141,20 @@ class SystemMatrix {
   std::vector<int> m_outer, m_inner;
   std::vector<double> m_values;
   bool m_recorded = false;
+  bool m_built = false;  // m_values hold the last build (no clear since)
+  // Patching: the subsequence of the recorded calls of each patched equation range (indices into m_calls,
+  // those with an entry; kept until the sequence changes), the current one and its cursor, the replay
+  // count set aside meanwhile, and whether a call missed.
+  struct PatchSequence {
+    int begin;
+    int end;
+    std::vector<std::size_t> calls;
+  };
+  std::vector<PatchSequence> m_patchSequences;
+  const PatchSequence* m_patch = nullptr;
+  std::size_t m_patchCursor = 0;
+  bool m_patchFailed = false;
+  std::size_t m_replayCountBeforePatch = 0;
 };
 
 }  // namespace tangle::solver

@@ -127,6 +127,7 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
     result.partIterations += o.partIterations;
     result.blocksLeft += o.blocksLeft;
     result.matrixRefreshes += o.refreshes;
+    result.blockRefreshes += o.blockRefreshes;
     bool rejected = false;
     std::string rejection;
     if (o.converged && checkSteps) rejection = m_assembler->rejectStep(before, state);

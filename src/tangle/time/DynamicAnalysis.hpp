@@ -27,6 +27,7 @@ struct DynamicResult {
   long partIterations = 0;   ///< Newton iterations evaluated on a part of the model (theory manual 8.2)
   long blocksLeft = 0;       ///< converged independent blocks left out of a Newton correction (8.2)
   long matrixRefreshes = 0;  ///< iteration matrices assembled and factorised (modified Newton, 8.2)
+  long blockRefreshes = 0;   ///< independent blocks of it (lines) assembled and factorised on their own
   double wallSeconds = 0.0;  ///< wall-clock time of the run [s]
   std::string message;       ///< summary or the reason the run stopped (time, line, node)
   bool interrupted = false;  ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)

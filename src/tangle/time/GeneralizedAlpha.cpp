@@ -84,7 +84,8 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr),
       m_modifiedNewton(std::getenv("TANGLE_FULL_NEWTON") == nullptr),
       m_wholeAssembly(std::getenv("TANGLE_WHOLE_ASSEMBLY") != nullptr),
-      m_refreshRule(std::getenv("TANGLE_KEEP_MATRIX") == nullptr) {
+      m_refreshRule(std::getenv("TANGLE_KEEP_MATRIX") == nullptr),
+      m_blockRefresh(std::getenv("TANGLE_WHOLE_REFRESH") == nullptr) {
   const model::DofMap& dofs = assembler.model().dofs();
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
@@ -308,6 +309,43 @@ double GeneralizedAlpha::residualRatio(const VecX& r, bool onPart) {
   return nan ? std::numeric_limits<double>::quiet_NaN() : ratio;
 }
 
+void GeneralizedAlpha::findSlowBlocks() {
+  m_slowBlocks.clear();
+  const std::size_t blocks = m_blockRatio.size();
+  for (std::size_t k = 0; k < blocks; ++k)
+    if (m_blockTouched[k] && m_blockRatio[k] > 1.0 && m_blockRatio[k] > 0.25 * m_previousBlockRatio[k])
+      m_slowBlocks.push_back(static_cast<int>(k));
+}
+
+bool GeneralizedAlpha::refreshBlocks(const model::State& state, const solver::AssemblyRequest& request,
+                                     double mf) {
+  // A line converging slowly (its touchdown point moved since the matrix was made) among lines converging
+  // fast: its own matrix is assembled and factorised again, the others' kept (12 independent lines: a
+  // whole refresh for one line cost 12 lines' matrices; docs/performance.md). Its nodes make a part
+  // (Assembler::selectPart: their elements, seabed, attachments and hydrodynamics; refused where a vessel or
+  // a contact loads a node), whose matrix terms replace the blocks' entries (SystemMatrix's patch).
+  const model::DofMap& dofs = m_assembler->model().dofs();
+  const auto& eqDofs = dofs.equationDofs();
+  solver::AssemblyRequest matrixRequest = request;
+  matrixRequest.wantMatrix = true;
+  for (const int k : m_slowBlocks) {
+    const int begin = m_solver.blockStart(k), end = m_solver.blockStart(k + 1);
+    m_slowNodes.clear();
+    for (int node = dofs.nodeOf(eqDofs[begin]); node <= dofs.nodeOf(eqDofs[end - 1]); ++node)
+      m_slowNodes.push_back(node);
+    if (!m_assembler->selectPart(m_slowNodes, m_refreshPart) || !m_matrix.beginPatch(begin, end)) return false;
+    m_assembler->addPartMatrix(state, matrixRequest, mf, m_refreshPart, m_matrix);
+    if (!m_matrix.endPatch(m_k)) return false;
+  }
+  if (!m_solver.factorizeBlocks(m_k, m_slowBlocks)) {
+    m_factorValid = false;
+    return false;
+  }
+  for (const int k : m_slowBlocks)
+    for (int i = m_solver.blockStart(k); i < m_solver.blockStart(k + 1); ++i) m_kDiagonal[i] = m_k.coeff(i, i);
+  return true;
+}
+
 int GeneralizedAlpha::solveCorrection(const VecX& r) {
   const int blocks = m_solver.blockCount();
   m_activeRanges.clear();
@@ -438,6 +476,10 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   bool haveFactor = m_reuseAcrossSteps && m_factorValid && sameStep(dt, m_factorStep) && !m_refreshDue;
   bool refreshed = false;
   double previousResidual = std::numeric_limits<double>::infinity();
+  m_previousBlockRatio.clear();  // no block is slow at the first iteration
+  // Slow blocks refreshed on their own: with modified Newton on parts (the blocks' matrices are assembled as
+  // parts), not in dynamic relaxation (partsAllowed).
+  const bool blockwise = partsAllowed && m_blockRefresh;
   bool haveResidual = false;
   for (int it = 0; it < m_settings.maxIterations; ++it) {
     outcome.iterations = it + 1;
@@ -542,10 +584,28 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       onPart = false;
       continue;
     }
-    if (!refresh && ratio > 0.25 * previousResidual) {
-      // Slow convergence with the old matrix: redo this iteration with a fresh one.
+    // Slow convergence with the old matrix (a residual that fell by less than 4x): with independent blocks
+    // the slow blocks' matrix is made again at this iterate, else (or when that cannot be done) this
+    // iteration is redone with a whole fresh matrix.
+    bool wholeRefresh = false;
+    if (!refresh && blockwise && !m_blockStart.empty() && m_previousBlockRatio.size() == m_blockRatio.size()) {
+      findSlowBlocks();
+      if (!m_slowBlocks.empty()) {
+        if (refreshBlocks(state, request, mf))
+          outcome.blockRefreshes += static_cast<int>(m_slowBlocks.size());
+        else
+          wholeRefresh = true;
+        if (m_debug)
+          std::cerr << "      " << m_slowBlocks.size() << " of " << m_blockRatio.size() << " blocks slow: "
+                    << (wholeRefresh ? "whole refresh\n" : "refreshed alone\n");
+      }
+    } else if (!refresh && ratio > 0.25 * previousResidual) {
+      wholeRefresh = true;
+    }
+    if (wholeRefresh) {
       haveFactor = false;
       previousResidual = std::numeric_limits<double>::infinity();
+      m_previousBlockRatio.clear();
       onPart = false;  // the refresh assembles the whole matrix at this iterate
       --it;
       continue;
@@ -563,6 +623,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       ++outcome.refreshes;
     }
     outcome.blocksLeft += solveCorrection(r);
+    m_previousBlockRatio = m_blockRatio;  // of the kept matrix's blocks (solveCorrection follows a refresh's)
     const VecX& delta = m_delta;
     if (m_debug) {
       Eigen::Index imax = 0;
@@ -605,7 +666,11 @@ void GeneralizedAlpha::planRefresh(const StepOutcome& outcome, bool refreshed) {
   constexpr double kRefreshCost = 3.0;
   constexpr double kSmoothing = 0.3;
   const double evaluations = outcome.iterations - 0.5 * outcome.partIterations;
-  if (refreshed || m_stepsSinceRefresh == 0) {
+  // A step that refreshed blocks on their own (refreshBlocks) starts the count again as a whole refresh does:
+  // the blocks that converged slowly have a new matrix, the others converged fast with the old one.
+  // (Counted on, three independent lines at dt 0.01 s, tests/verification/dynamics/BlockIterationTest.cpp,
+  // refreshed the whole matrix 167 times against 86 with whole refreshes alone.)
+  if (refreshed || outcome.blockRefreshes > 0 || m_stepsSinceRefresh == 0) {
     m_stepsSinceRefresh = 0;
     m_evaluationsSinceRefresh = 0.0;
     m_recentEvaluations = evaluations;

@@ -4,7 +4,9 @@
 /// (Chung & Hulbert 1993, J. Appl. Mech. 60:371), which contains HHT-alpha (Hilber, Hughes & Taylor
 /// 1977) and Newmark's average-acceleration rule (Newmark 1959) as special cases, with Newton
 /// iterations every step (modified Newton: the factorised matrix is reused while the residual falls by
-/// 4x or more per iteration, refreshed otherwise; TANGLE_FULL_NEWTON=1 refreshes it every iteration).
+/// 4x or more per iteration, refreshed otherwise; TANGLE_FULL_NEWTON=1 refreshes it every iteration). With
+/// independent blocks in the matrix (lines not coupled to each other) the test and the refresh are per block
+/// (TANGLE_WHOLE_REFRESH=1: the whole matrix, for comparison).
 ///
 /// Contract of step(): on input `state` holds q_n, v_n, a_n at t_n (a_n consistent with the
 /// previous step); on success it holds q_{n+1}, v_{n+1}, a_{n+1} at t_n + dt. On failure the state is
@@ -44,6 +46,7 @@ struct StepOutcome {
   int partIterations = 0;  ///< of those, evaluated on a part of the model (Assembler::assemblePart)
   int blocksLeft = 0;      ///< converged independent blocks not solved at a correction (solveCorrection)
   int refreshes = 0;       ///< iteration matrices assembled and factorised in this step
+  int blockRefreshes = 0;  ///< independent blocks of the kept matrix assembled and factorised on their own
   double residual = 0.0;  ///< last max out-of-balance force [N] of a failed step (0 for a converged one)
   int worstNode = -1;     ///< node with the largest out-of-balance force (of a failed step)
 };
@@ -96,7 +99,7 @@ class GeneralizedAlpha {
   /// outside them. Returns the number of blocks left out.
   int solveCorrection(const VecX& r);
   /// After a converged step: whether the next step refreshes the kept matrix (m_refreshDue), from the
-  /// residual evaluations of the steps since the last refresh (`refreshed`: this step made one).
+  /// residual evaluations of the steps since the last refresh (`refreshed`: this step made a whole one).
   void planRefresh(const StepOutcome& outcome, bool refreshed);
   /// Largest out-of-balance relative to what each equation is allowed (NaN if r holds a NaN); with
   /// independent blocks in the kept matrix also each block's (m_blockRatio), recomputed on a part
@@ -104,6 +107,15 @@ class GeneralizedAlpha {
   double residualRatio(const VecX& r, bool onPart);
   /// True when m_blockStart is the kept matrix's block partition.
   bool sameBlocks() const;
+  /// Sets m_slowBlocks to the blocks of the kept matrix, evaluated at this iterate, whose out-of-balance is
+  /// above the tolerance and fell by less than 4x since the last iteration (m_blockRatio against
+  /// m_previousBlockRatio, of the same partition).
+  void findSlowBlocks();
+  /// Assembles and factorises the iteration matrix of the blocks m_slowBlocks alone at `state` (the iterate
+  /// whose residual is being corrected), the other blocks kept. False when that cannot stand for a whole
+  /// refresh (a block holds a vessel's or a contact's node, the pattern changed, a pivot vanished): the
+  /// caller refreshes the whole matrix (m_factorValid is false when the factors were touched).
+  bool refreshBlocks(const model::State& state, const solver::AssemblyRequest& request, double mf);
   /// Time at which loads and prescribed motions are evaluated for a state at time t [s].
   double environmentTime(double t) const { return m_frozen ? m_frozenTime : t; }
 
@@ -132,6 +144,10 @@ class GeneralizedAlpha {
   std::vector<double> m_blockRatio;                 // largest out-of-balance / allowed in each block
   std::vector<char> m_blockTouched;                 // work space of residualRatio
   std::vector<int> m_activeBlocks;                  // blocks solved by the last solveCorrection
+  std::vector<double> m_previousBlockRatio;         // m_blockRatio at the last iteration (findSlowBlocks)
+  std::vector<int> m_slowBlocks;                    // blocks to refresh on their own (findSlowBlocks)
+  std::vector<int> m_slowNodes;                     // one's nodes (refreshBlocks)
+  solver::AssemblyPart m_refreshPart;               // the part of the model they make
   std::vector<std::pair<int, int>> m_activeRanges;  // their equations [begin, end), ascending
   std::vector<unsigned char>
       m_equationMoved;  // applyCorrection: 1 where an equation's correction is not negligible
@@ -145,6 +161,7 @@ class GeneralizedAlpha {
   bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: every iteration on the whole model: no part,
                                  // every independent block solved (for comparison)
   bool m_refreshRule = true;     // TANGLE_KEEP_MATRIX unset: planRefresh may refresh (else only slow steps do)
+  bool m_blockRefresh = true;    // TANGLE_WHOLE_REFRESH unset: slow blocks refreshed on their own
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   int m_stepsSinceRefresh = 0;     // converged steps with the kept matrix (planRefresh)

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -335,6 +336,73 @@ TEST(SkylineLdlt, TwistedAndTopDownBlocksSolvedAlone) {
       }
     }
   }
+}
+
+TEST(SkylineLdlt, BlocksFactorisedAgainEqualAWholeFactorisation) {
+  // GeneralizedAlpha's refresh of slow lines: the changed blocks factorised again, the others kept, solve as
+  // a whole factorisation of the changed matrix does, bit for bit (the same arithmetic per block). On the
+  // fixed-width band of bar lines (width 5) and beam lines (width 11), each with a twisted and a top-down
+  // block, and on the envelope (an arrow in the middle block).
+  struct Case {
+    int dofsPerNode;
+    bool envelope;
+  };
+  for (const Case c : {Case{3, false}, Case{6, false}, Case{3, true}}) {
+    const int d = c.dofsPerNode;
+    std::vector<std::pair<int, int>> arrow;
+    if (c.envelope)
+      for (int i = 0; i < d; ++i) arrow.emplace_back(9 * d + i, i);
+    const std::array<int, 3> nodes{60, 10, 50};
+    const auto lines = [&](const std::vector<int>& changed) {
+      std::vector<SparseMatrix> out;
+      for (int b = 0; b < 3; ++b) {
+        const bool isChanged = std::find(changed.begin(), changed.end(), b) != changed.end();
+        out.push_back(lineMatrix(nodes[static_cast<std::size_t>(b)], d, b == 1 ? arrow : std::vector<std::pair<int, int>>{},
+                                 (isChanged ? 100u : 40u) + static_cast<unsigned>(b)));
+      }
+      return blockDiagonal(out, {});
+    };
+    const SparseMatrix k = lines({});
+    const int n = static_cast<int>(k.rows());
+    solver::SkylineLdlt s;
+    s.analyzePattern(k);
+    ASSERT_EQ(s.blockCount(), 3);
+    ASSERT_EQ(s.bandWidth(), c.envelope ? 0 : 2 * d - 1);
+    EXPECT_FALSE(s.factorizeBlocks(k, {0})) << "no factorisation to keep yet";
+    ASSERT_TRUE(s.factorize(k));
+    if (!c.envelope) {
+      EXPECT_EQ(s.twistedBlockCount(), 2);
+    }
+    for (const std::vector<int>& changed : std::vector<std::vector<int>>{{0}, {1}, {0, 2}, {0, 1, 2}}) {
+      const SparseMatrix changedMatrix = lines(changed);
+      ASSERT_TRUE(s.factorize(k));
+      ASSERT_TRUE(s.factorizeBlocks(changedMatrix, changed));
+      solver::SkylineLdlt whole;
+      whole.analyzePattern(changedMatrix);
+      ASSERT_TRUE(whole.factorize(changedMatrix));
+      const VecX b = VecX::Random(n);
+      VecX x = b, y = b;
+      s.solveInPlace(x);
+      whole.solveInPlace(y);
+      EXPECT_EQ((x - y).cwiseAbs().maxCoeff(), 0.0)
+          << d << " DOFs per node" << (c.envelope ? ", envelope" : "") << ", first changed block " << changed.front();
+      EXPECT_LT(relativeResidual(changedMatrix, x, b), 1e-13);
+    }
+  }
+}
+
+TEST(SkylineLdlt, VanishingPivotInABlockFactorisedAgainIsReported) {
+  const SparseMatrix k = blockDiagonal({lineMatrix(10, 3, {}, 51), lineMatrix(10, 3, {}, 52)}, {});
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_TRUE(s.factorize(k));
+  SparseMatrix singular = k;
+  for (int c = 30; c < 60; ++c)
+    for (SparseMatrix::InnerIterator it(singular, c); it; ++it) it.valueRef() = 0.0;
+  EXPECT_FALSE(s.factorizeBlocks(singular, {1}));
+  EXPECT_FALSE(s.factorizeBlocks(k, {1})) << "the factors were touched: a whole factorisation comes first";
+  ASSERT_TRUE(s.factorize(k));
+  EXPECT_TRUE(s.factorizeBlocks(k, {1}));
 }
 
 TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {

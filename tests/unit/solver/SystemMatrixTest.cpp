@@ -151,5 +151,121 @@ TEST(SystemMatrix, BlockCallsReplayAsTheirScalarSums) {
   }
 }
 
+/// Two independent "lines" of two nodes each (nodes 0-1: equations 0-5 with full DOF 1 constrained, so
+/// 0-4; nodes 2-3: equations 5-10), each line's calls scaled on its own.
+model::DofMap twoLines() {
+  model::DofMap dofs;
+  for (int n = 0; n < 4; ++n) dofs.addNode(3);
+  dofs.constrain(1);
+  dofs.finalize();
+  return dofs;
+}
+
+void fillLine(solver::SystemMatrix& m, int first, double scale) {
+  Mat3 block;
+  block << 4, 1, 0, 1, 5, 2, 0, 2, 6;
+  m.add3x3(first, first, scale * block);
+  m.add3x3(first + 3, first + 3, block);
+  m.add3x3(first, first + 3, scale * block);
+  m.add3x3(first + 3, first, scale * block.transpose());
+  m.add(first + 2, first + 5, 0.25 * scale);  // a scalar call summed with a block's entry
+}
+
+Eigen::MatrixXd freshLines(const model::DofMap& dofs, double scaleA, double scaleB) {
+  solver::SystemMatrix m(dofs);
+  m.clear();
+  fillLine(m, 0, scaleA);
+  fillLine(m, 6, scaleB);
+  SparseMatrix k;
+  m.build(k);
+  return Eigen::MatrixXd(k);
+}
+
+TEST(SystemMatrix, PatchOfABlockReplacesItsEntriesOnly) {
+  // A refresh of one independent block (GeneralizedAlpha::refreshBlocks): the block's calls alone give its
+  // entries of a whole assembly; the other block keeps the last build's.
+  const model::DofMap dofs = twoLines();
+  const int secondLine = dofs.equation(6);
+  ASSERT_EQ(secondLine, 5);
+  solver::SystemMatrix m(dofs);
+  SparseMatrix k;
+  m.clear();
+  fillLine(m, 0, 1.0);
+  fillLine(m, 6, 1.0);
+  m.build(k);
+  ASSERT_TRUE(m.beginPatch(secondLine, dofs.equationCount()));
+  fillLine(m, 6, -3.0);
+  ASSERT_TRUE(m.endPatch(k));
+  EXPECT_EQ(Eigen::MatrixXd(k), freshLines(dofs, 1.0, -3.0));
+  // The first block, then both: each patch starts from the last matrix.
+  ASSERT_TRUE(m.beginPatch(0, secondLine));
+  fillLine(m, 0, 2.0);
+  ASSERT_TRUE(m.endPatch(k));
+  EXPECT_EQ(Eigen::MatrixXd(k), freshLines(dofs, 2.0, -3.0));
+  ASSERT_TRUE(m.beginPatch(0, dofs.equationCount()));
+  fillLine(m, 0, 0.5);
+  fillLine(m, 6, 0.5);
+  ASSERT_TRUE(m.endPatch(k));
+  EXPECT_EQ(Eigen::MatrixXd(k), freshLines(dofs, 0.5, 0.5));
+  // A whole assembly after patches still replays the recorded sequence.
+  m.clear();
+  fillLine(m, 0, 1.5);
+  fillLine(m, 6, 1.5);
+  EXPECT_TRUE(m.replaying());
+  m.build(k);
+  EXPECT_EQ(Eigen::MatrixXd(k), freshLines(dofs, 1.5, 1.5));
+}
+
+TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
+  const model::DofMap dofs = twoLines();
+  solver::SystemMatrix m(dofs);
+  SparseMatrix k;
+  m.clear();
+  fillLine(m, 0, 1.0);
+  fillLine(m, 6, 1.0);
+  // No build since the last clear: nothing to patch.
+  EXPECT_FALSE(m.beginPatch(5, 11));
+  m.build(k);
+  const Eigen::MatrixXd built(k);
+  // A call into the other block.
+  ASSERT_TRUE(m.beginPatch(5, 11));
+  fillLine(m, 6, 2.0);
+  m.add(0, 0, 1.0);
+  EXPECT_FALSE(m.endPatch(k));
+  EXPECT_EQ(Eigen::MatrixXd(k), built);
+  // The values are no longer a build: a patch is refused until the next whole assembly.
+  EXPECT_FALSE(m.beginPatch(5, 11));
+  m.clear();
+  fillLine(m, 0, 1.0);
+  fillLine(m, 6, 1.0);
+  m.build(k);
+  // An entry outside the built pattern (a contact made since the build) within the block.
+  ASSERT_TRUE(m.beginPatch(5, 11));
+  fillLine(m, 6, 2.0);
+  m.add(6, 11, 1.0);
+  EXPECT_FALSE(m.endPatch(k));
+  EXPECT_EQ(Eigen::MatrixXd(k), built);
+  // Fewer calls than the block's recorded ones (an element left out).
+  m.clear();
+  fillLine(m, 0, 1.0);
+  fillLine(m, 6, 1.0);
+  m.build(k);
+  ASSERT_TRUE(m.beginPatch(5, 11));
+  Mat3 block;
+  block << 4, 1, 0, 1, 5, 2, 0, 2, 6;
+  m.add3x3(6, 6, block);
+  EXPECT_FALSE(m.endPatch(k));
+  EXPECT_EQ(Eigen::MatrixXd(k), built);
+  // A target that is not the last build.
+  m.clear();
+  fillLine(m, 0, 1.0);
+  fillLine(m, 6, 1.0);
+  m.build(k);
+  SparseMatrix other(3, 3);
+  ASSERT_TRUE(m.beginPatch(5, 11));
+  fillLine(m, 6, 2.0);
+  EXPECT_FALSE(m.endPatch(other));
+}
+
 }  // namespace
 }  // namespace tangle
