@@ -60,16 +60,22 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
   return true;
 }
 
-bool LinearSolver::factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks) {
+bool LinearSolver::samePatternAsBanded(const SparseMatrix& k) const {
   // The pattern's outer index only: a changed pattern changes it (entries in other columns) or the
   // count; an identical count and column layout with other rows would need a contact made and another
   // released between two refreshes, which a refresh of the whole matrix handles anyway (SystemMatrix's patch
   // fails on an entry outside the built pattern).
-  if (m_method != Method::Banded || k.rows() != m_rows || static_cast<int>(m_inner.size()) != k.nonZeros() ||
-      !std::equal(m_outer.begin(), m_outer.end(), k.outerIndexPtr()))
-    return false;
+  return m_method == Method::Banded && k.rows() == m_rows && static_cast<int>(m_inner.size()) == k.nonZeros() &&
+         std::equal(m_outer.begin(), m_outer.end(), k.outerIndexPtr());
+}
+
+bool LinearSolver::factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks) {
   // On false the factors are partly overwritten: the caller factorises the whole matrix before solving.
-  return m_skyline.factorizeBlocks(k, blocks);
+  return samePatternAsBanded(k) && m_skyline.factorizeBlocks(k, blocks);
+}
+
+bool LinearSolver::factorizeRows(const SparseMatrix& k, int block, int begin, int end) {
+  return samePatternAsBanded(k) && m_skyline.factorizeRows(k, block, begin, end);
 }
 
 VecX LinearSolver::solve(const VecX& b) const {

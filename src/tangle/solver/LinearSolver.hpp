@@ -31,6 +31,10 @@ class LinearSolver {
   /// `k`, whose other blocks must equal the last factorised matrix's: SkylineLdlt::factorizeBlocks. False
   /// (the caller factorises the whole matrix) unless the last factorisation is the banded one of k's pattern.
   bool factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks);
+  /// Factorises again what changes in block `block` of the last factorisation when k's entries in the rows
+  /// and columns [begin, end) changed (SkylineLdlt::factorizeRows); the same conditions as factorizeBlocks
+  /// (and the fixed-width band).
+  bool factorizeRows(const SparseMatrix& k, int block, int begin, int end);
   /// Solves with the last factorisation.
   VecX solve(const VecX& b) const;
   /// Overwrites b with the solution (no allocation on the banded path).
@@ -68,6 +72,8 @@ class LinearSolver {
 
  private:
   enum class Method { Banded, Ldlt, Lu };
+  /// True when the last factorisation is the banded one and k has its pattern (factorizeBlocks, factorizeRows).
+  bool samePatternAsBanded(const SparseMatrix& k) const;
   bool m_allowBanded;
   Method m_method = Method::Ldlt;
   SkylineLdlt m_skyline;

@@ -508,6 +508,75 @@ bool SkylineLdlt::factorizeBandBlock(int block, double tiny) {
   return bandFactorizeRows<W>(band, diagonal, inverse, b0, b1, tiny);
 }
 
+bool SkylineLdlt::factorizeRows(const SparseMatrix& k, int block, int begin, int end) {
+  if (!m_factorized || m_bandWidth == 0 || k.rows() != m_n || !k.isCompressed() || block < 0 ||
+      block >= blockCount())
+    return false;
+  m_factorized = withBandWidth(m_bandWidth, [&](auto width) {
+    return factorizeBandRows<decltype(width)::value>(k, block, begin, end);
+  });
+  return m_factorized;
+}
+
+template <int W>
+bool SkylineLdlt::factorizeBandRows(const SparseMatrix& k, int block, int begin, int end) {
+  const int b0 = blockStart(block), b1 = blockStart(block + 1);
+  begin = std::max(begin, b0);
+  end = std::min(end, b1);
+  if (begin >= end) return true;
+  // K's entries in rows and columns [begin, end) changed: in the lower triangle, rows [begin, last) (a row
+  // reaches back W columns). Those rows of K again into m_original (the others hold K as last factorised).
+  const int last = std::min(end + W, b1);
+  const auto rowFrom = static_cast<std::ptrdiff_t>(begin) * W, rowTo = static_cast<std::ptrdiff_t>(last) * W;
+  std::fill(m_original.begin() + rowFrom, m_original.begin() + rowTo, 0.0);
+  std::fill(m_originalDiagonal.begin() + begin, m_originalDiagonal.begin() + last, 0.0);
+  const int* outer = k.outerIndexPtr();
+  const int* inner = k.innerIndexPtr();
+  const double* a = k.valuePtr();
+  for (int c = std::max(b0, begin - W); c < last; ++c)
+    for (int p = outer[c]; p < outer[c + 1]; ++p) {
+      const int r = inner[p];
+      if (r < begin || r >= last) continue;
+      const std::ptrdiff_t m = m_bandMap[static_cast<std::size_t>(p)];
+      if (m >= 0)
+        m_original[static_cast<std::size_t>(m)] += a[p];
+      else if (m != kUpper)
+        m_originalDiagonal[static_cast<std::size_t>(-1 - m)] += a[p];
+    }
+  const double tiny = pivotThreshold(m_originalDiagonal);
+  double* band = m_band.data();
+  double* diagonal = m_diagonal.data();
+  double* inverse = m_inverseDiagonal.data();
+  const int twist = m_twistRow[static_cast<std::size_t>(block)];
+  // The rows of one end that read a changed row are those after it in that end's order: from `begin` on
+  // top-down (rows before it keep their factor), from last - 1 back bottom-up. Each restarts from K.
+  const auto topDownFrom = [&](int from, int to) {
+    std::copy(m_original.begin() + static_cast<std::ptrdiff_t>(from) * W,
+              m_original.begin() + static_cast<std::ptrdiff_t>(to) * W, m_band.begin() + static_cast<std::ptrdiff_t>(from) * W);
+    std::copy(m_originalDiagonal.begin() + from, m_originalDiagonal.begin() + to, m_diagonal.begin() + from);
+  };
+  if (twist < 0) {
+    topDownFrom(begin, b1);
+    for (int i = begin; i < b1; ++i)
+      if (!bandRowDown<W>(band, diagonal, inverse, i, b0, i - 1, true, tiny)) return false;
+    return true;
+  }
+  const int m = twist, t1 = twist + W;
+  if (begin < t1) {
+    topDownFrom(begin, t1);
+    for (int i = begin; i < t1; ++i)
+      if (!bandRowDown<W>(band, diagonal, inverse, i, b0, std::min(i, m) - 1, i < m, tiny)) return false;
+  }
+  if (last > m) {
+    for (int j = last - 1; j >= m; --j) {
+      if (j >= t1) diagonal[j] = m_originalDiagonal[static_cast<std::size_t>(j)];
+      if (!bandRowUp<W>(m_bandUp.data(), m_original.data(), diagonal, inverse, j, b1 - 1, t1, j >= t1, tiny))
+        return false;
+    }
+  }
+  return factorizeSeparator<W>(block, m, tiny);
+}
+
 template <int W>
 bool SkylineLdlt::factorizeSeparator(int block, int m, double tiny) {
   // The separator [m, m + W) takes the Schur complement of both ends,

@@ -55,6 +55,14 @@ class SkylineLdlt {
   /// vanishing-pivot threshold of the whole matrix as now stored. False on a vanishing pivot or without a
   /// preceding successful factorize (then factorize the whole matrix).
   bool factorizeBlocks(const SparseMatrix& k, const std::vector<int>& blocks);
+  /// Factorises again the part of independent block `block` that changes when K's entries in the rows and
+  /// columns [begin, end) change (a stretch of a line: GeneralizedAlpha's refresh of its touchdown zone) from
+  /// `k` (the analysed pattern; its other entries must equal the last factorised matrix's): the rows from
+  /// `begin` on of a block factorised top-down, or of a twisted block the rows between the change and the
+  /// separator from either end, and the separator. The same arithmetic as factorize. Fixed-width band only;
+  /// false on the envelope, on a vanishing pivot or without a preceding successful factorize (then factorize
+  /// the whole matrix).
+  bool factorizeRows(const SparseMatrix& k, int block, int begin, int end);
   /// Overwrites b with the solution x of K x = b.
   void solveInPlace(VecX& b) const;
 
@@ -79,6 +87,9 @@ class SkylineLdlt {
   /// One block of factorizeBandBlocks (its work space sized by it).
   template <int W>
   bool factorizeBandBlock(int block, double tiny);
+  /// factorizeRows on the band of width W.
+  template <int W>
+  bool factorizeBandRows(const SparseMatrix& k, int block, int begin, int end);
   /// The envelope's Crout rows [begin, end) (a union of blocks; envelope mode), then their columns of L for
   /// the backward substitution and 1 / D. False on |D(i)| <= tiny (or NaN).
   bool factorizeEnvelopeRows(int begin, int end, double tiny);

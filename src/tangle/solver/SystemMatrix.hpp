@@ -95,14 +95,18 @@ class SystemMatrix {
   /// True while the current assembly replays the recorded sequence (for tests).
   bool replaying() const { return m_replaying; }
 
-  /// Starts a patch of the equations [begin, end) (an independent block of the built matrix, or a union of
-  /// them: no entry couples them to other equations): their columns of the last built matrix are zeroed, and
-  /// the calls until endPatch sum into them. The calls must be the recorded sequence's calls of those
-  /// equations in their order (an assembly of the block's elements and nodes; calls at constrained DOFs
-  /// alone are ignored): they are replayed as that subsequence, kept per block. False (nothing changed)
-  /// when there is no built matrix to patch (no build since the last clear).
-  bool beginPatch(int begin, int end);
-  /// Ends the patch: copies the patched columns into `out`, which must hold the last build. False when the
+  /// Starts a patch of the entries in the rows and columns of the equations [begin, end) (whole nodes): those
+  /// entries of the last built matrix are zeroed, and the calls until endPatch sum into them. The calls must
+  /// hold the recorded sequence's calls with a row or a column there, in their order (an assembly of the
+  /// elements and nodes at those equations, e.g. a part of the model made of their nodes); calls whose row
+  /// and column both lie outside (the part's other entries) and calls at constrained DOFs are ignored. The
+  /// subsequence of [blockBegin, blockEnd) (an independent block holding [begin, end), or the whole matrix)
+  /// is kept, and a stretch's is taken from it. False (nothing changed) when there is no built matrix to
+  /// patch (no build since the last clear).
+  bool beginPatch(int begin, int end, int blockBegin, int blockEnd);
+  /// A patch of a whole block (or of a union of blocks).
+  bool beginPatch(int begin, int end) { return beginPatch(begin, end, begin, end); }
+  /// Ends the patch: copies the patched entries into `out`, which must hold the last build. False when the
   /// calls of the patch were not the subsequence (a contact made since the build, a changed pattern) or
   /// `out` is not the last build: `out` is left as it was and the matrix must be assembled whole (clear()).
   bool endPatch(SparseMatrix& out);
@@ -122,10 +126,21 @@ class SystemMatrix {
   /// add3x3 outside a replay: leaves the replay if one was running, then keeps one block call (three free
   /// consecutive rows and columns) or nine scalar calls. `m` holds the scaled values.
   [[gnu::noinline]] void add3x3Recorded(int rowFirst, int colFirst, const Mat3& m);
-  /// A scalar call of a patch: the next call of the patch's subsequence, or ignored at a constrained DOF.
+  /// The recorded calls of a patch: those with an entry in a row or a column of [begin, end) (indices into
+  /// m_calls, in order) and the entries they sum into (zeroed and copied).
+  struct PatchSequence {
+    int begin;
+    int end;
+    std::vector<std::size_t> calls;
+    std::vector<int> positions;  // the entries the calls sum into (zeroed and copied)
+  };
+  /// A scalar call of a patch: the next call of the patch's subsequence, or ignored (outside the patch).
   void addPatched(int row, int col, double v);
   /// A 3x3 call of a patch (`m` scaled): the next block call of the subsequence, else nine scalar calls.
   void add3x3Patched(int rowFirst, int colFirst, const Mat3& m);
+  /// The calls among `from` (indices into m_calls, ascending) with an entry in a row or a column of
+  /// [begin, end), into `sequence` (calls and positions; its range set).
+  void selectPatchCalls(const std::vector<std::size_t>* from, int begin, int end, PatchSequence& sequence) const;
   /// Leaves replaying at the current call: the calls replayed so far stay in the sequence and their
   /// summed entries become triplets.
   void startRecording();
@@ -142,15 +157,12 @@ class SystemMatrix {
   std::vector<double> m_values;
   bool m_recorded = false;
   bool m_built = false;  // m_values hold the last build (no clear since)
-  // Patching: the subsequence of the recorded calls of each patched equation range (indices into m_calls,
-  // those with an entry; kept until the sequence changes), the current one and its cursor, the replay
-  // count set aside meanwhile, and whether a call missed.
-  struct PatchSequence {
-    int begin;
-    int end;
-    std::vector<std::size_t> calls;
-  };
+  // Patching: the subsequence of each patched block (kept until the recorded sequence changes), a stretch's
+  // (taken from its block's), the current one and its cursor, the replay count set aside meanwhile, and
+  // whether a call missed.
+  static constexpr std::size_t kKeptPatchSequences = 64;  // ranges kept (more: all dropped, made again)
   std::vector<PatchSequence> m_patchSequences;
+  PatchSequence m_stretch;  // a stretch's, taken from its block's
   const PatchSequence* m_patch = nullptr;
   std::size_t m_patchCursor = 0;
   bool m_patchFailed = false;

@@ -112,10 +112,12 @@ class GeneralizedAlpha {
   /// m_previousBlockRatio, of the same partition).
   void findSlowBlocks();
   /// Assembles and factorises the iteration matrix of the blocks m_slowBlocks alone at `state` (the iterate
-  /// whose residual is being corrected), the other blocks kept. False when that cannot stand for a whole
+  /// whose residual `r` is being corrected), the other blocks kept; of a block only the stretch of its nodes
+  /// out of balance when that stretch is at most half the block and has no rotations (a cable's). With one
+  /// block, only a stretch (else false). False when that cannot stand for a whole
   /// refresh (a block holds a vessel's or a contact's node, the pattern changed, a pivot vanished): the
   /// caller refreshes the whole matrix (m_factorValid is false when the factors were touched).
-  bool refreshBlocks(const model::State& state, const solver::AssemblyRequest& request, double mf);
+  bool refreshBlocks(const model::State& state, const solver::AssemblyRequest& request, double mf, const VecX& r);
   /// Time at which loads and prescribed motions are evaluated for a state at time t [s].
   double environmentTime(double t) const { return m_frozen ? m_frozenTime : t; }
 
@@ -146,7 +148,8 @@ class GeneralizedAlpha {
   std::vector<int> m_activeBlocks;                  // blocks solved by the last solveCorrection
   std::vector<double> m_previousBlockRatio;         // m_blockRatio at the last iteration (findSlowBlocks)
   std::vector<int> m_slowBlocks;                    // blocks to refresh on their own (findSlowBlocks)
-  std::vector<int> m_slowNodes;                     // one's nodes (refreshBlocks)
+  std::vector<int> m_wholeSlowBlocks;               // those refreshed whole (refreshBlocks)
+  std::vector<int> m_slowNodes;                     // one's nodes or stretch (refreshBlocks)
   solver::AssemblyPart m_refreshPart;               // the part of the model they make
   std::vector<std::pair<int, int>> m_activeRanges;  // their equations [begin, end), ascending
   std::vector<unsigned char>

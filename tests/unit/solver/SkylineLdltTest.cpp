@@ -391,6 +391,47 @@ TEST(SkylineLdlt, BlocksFactorisedAgainEqualAWholeFactorisation) {
   }
 }
 
+TEST(SkylineLdlt, StretchFactorisedAgainEqualsAWholeFactorisation) {
+  // GeneralizedAlpha's refresh of a line's touchdown zone: K changed in the rows and columns of a stretch of
+  // one block; the rows it reaches factorised again solve as a whole factorisation of the changed matrix,
+  // bit for bit. Bar (width 5) and beam (width 11) lines: a twisted block of 60 nodes (stretches in its top
+  // part, across its separator, in its bottom part, at either end), a top-down one of 10.
+  for (const int d : {3, 6}) {
+    const SparseMatrix k = blockDiagonal({lineMatrix(60, d, {}, 61), lineMatrix(10, d, {}, 62)}, {});
+    const int n = static_cast<int>(k.rows());
+    solver::SkylineLdlt s;
+    s.analyzePattern(k);
+    ASSERT_EQ(s.blockCount(), 2);
+    ASSERT_TRUE(s.factorize(k));
+    ASSERT_EQ(s.twistedBlockCount(), 1);
+    struct Stretch {
+      int block, firstNode, nodes;
+    };
+    for (const Stretch st : {Stretch{0, 10, 5}, Stretch{0, 28, 4}, Stretch{0, 45, 6}, Stretch{0, 0, 3},
+                             Stretch{0, 57, 3}, Stretch{1, 3, 2}}) {
+      const int begin = s.blockStart(st.block) + st.firstNode * d, end = begin + st.nodes * d;
+      SparseMatrix changed = k;
+      for (int c = 0; c < n; ++c)
+        for (SparseMatrix::InnerIterator it(changed, c); it; ++it) {
+          const int r = static_cast<int>(it.row());
+          if ((r >= begin && r < end) || (c >= begin && c < end)) it.valueRef() += 0.1 * std::sin(r + c);
+        }
+      ASSERT_TRUE(s.factorize(k));
+      ASSERT_TRUE(s.factorizeRows(changed, st.block, begin, end));
+      solver::SkylineLdlt whole;
+      whole.analyzePattern(changed);
+      ASSERT_TRUE(whole.factorize(changed));
+      const VecX b = VecX::Random(n);
+      VecX x = b, y = b;
+      s.solveInPlace(x);
+      whole.solveInPlace(y);
+      EXPECT_EQ((x - y).cwiseAbs().maxCoeff(), 0.0)
+          << d << " DOFs per node, block " << st.block << ", stretch from node " << st.firstNode;
+      EXPECT_LT(relativeResidual(changed, x, b), 1e-13);
+    }
+  }
+}
+
 TEST(SkylineLdlt, VanishingPivotInABlockFactorisedAgainIsReported) {
   const SparseMatrix k = blockDiagonal({lineMatrix(10, 3, {}, 51), lineMatrix(10, 3, {}, 52)}, {});
   solver::SkylineLdlt s;

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <array>
 
 #include "tangle/model/DofMap.hpp"
 #include "tangle/solver/SystemMatrix.hpp"
@@ -227,10 +228,12 @@ TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
   EXPECT_FALSE(m.beginPatch(5, 11));
   m.build(k);
   const Eigen::MatrixXd built(k);
-  // A call into the other block.
+  // A call coupling the block to the other one (a call within the other block alone is ignored: not an
+  // entry of the patch).
   ASSERT_TRUE(m.beginPatch(5, 11));
   fillLine(m, 6, 2.0);
   m.add(0, 0, 1.0);
+  m.add(0, 6, 1.0);
   EXPECT_FALSE(m.endPatch(k));
   EXPECT_EQ(Eigen::MatrixXd(k), built);
   // The values are no longer a build: a patch is refused until the next whole assembly.
@@ -265,6 +268,60 @@ TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
   ASSERT_TRUE(m.beginPatch(5, 11));
   fillLine(m, 6, 2.0);
   EXPECT_FALSE(m.endPatch(other));
+}
+
+/// A line of four nodes: elements (n, n + 1) with their own scales, then a diagonal term per node.
+void fillChain(solver::SystemMatrix& m, const std::array<double, 3>& elementScale,
+               const std::array<double, 4>& nodeScale, int firstElement = 0, int lastElement = 2,
+               int firstNode = 0, int lastNode = 3) {
+  Mat3 block;
+  block << 4, 1, 0, 1, 5, 2, 0, 2, 6;
+  for (int e = firstElement; e <= lastElement; ++e) {
+    const double s = elementScale[static_cast<std::size_t>(e)];
+    const int a = 3 * e, b = 3 * e + 3;
+    m.add3x3(a, a, s * block);
+    m.add3x3(a, b, -s * block);
+    m.add3x3(b, a, -s * block.transpose());
+    m.add3x3(b, b, s * block);
+  }
+  for (int n = firstNode; n <= lastNode; ++n) m.addDiagonal3(3 * n, nodeScale[static_cast<std::size_t>(n)]);
+}
+
+TEST(SystemMatrix, PatchOfAStretchReplacesTheEntriesOfItsRowsAndColumns) {
+  // A refresh of a stretch of a line (node 1 of four): the part's calls (its elements and their nodes, as
+  // Assembler::selectPart gives them) set every entry in node 1's rows and columns to a whole assembly's;
+  // the other entries keep the last build's, also where the part's calls reach them (node 0's and 2's own
+  // blocks, which elements outside the part also load).
+  model::DofMap dofs;
+  for (int n = 0; n < 4; ++n) dofs.addNode(3);
+  dofs.finalize();
+  const std::array<double, 3> oldElements{1.0, 2.0, 3.0}, newElements{-1.5, 0.5, 7.0};
+  const std::array<double, 4> oldNodes{10.0, 20.0, 30.0, 40.0}, newNodes{11.0, 21.0, 31.0, 41.0};
+  const auto fresh = [&](const std::array<double, 3>& e, const std::array<double, 4>& n) {
+    solver::SystemMatrix f(dofs);
+    f.clear();
+    fillChain(f, e, n);
+    SparseMatrix k;
+    f.build(k);
+    return Eigen::MatrixXd(k);
+  };
+  solver::SystemMatrix m(dofs);
+  SparseMatrix k;
+  m.clear();
+  fillChain(m, oldElements, oldNodes);
+  m.build(k);
+  ASSERT_TRUE(m.beginPatch(3, 6));
+  fillChain(m, newElements, newNodes, 0, 2, 0, 2);  // the part: elements 0-2 and nodes 0-2
+  ASSERT_TRUE(m.endPatch(k));
+  Eigen::MatrixXd expected = fresh(oldElements, oldNodes);
+  const Eigen::MatrixXd updated = fresh(newElements, newNodes);
+  expected.block(3, 0, 3, 12) = updated.block(3, 0, 3, 12);
+  expected.block(0, 3, 12, 3) = updated.block(0, 3, 12, 3);
+  EXPECT_EQ(Eigen::MatrixXd(k), expected);
+  // A part that leaves out an element at the stretch: refused.
+  ASSERT_TRUE(m.beginPatch(3, 6));
+  fillChain(m, newElements, newNodes, 1, 2, 0, 2);
+  EXPECT_FALSE(m.endPatch(k));
 }
 
 }  // namespace
