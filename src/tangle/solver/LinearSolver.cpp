@@ -65,7 +65,8 @@ bool LinearSolver::samePatternAsBanded(const SparseMatrix& k) const {
   // count; an identical count and column layout with other rows would need a contact made and another
   // released between two refreshes, which a refresh of the whole matrix handles anyway (SystemMatrix's patch
   // fails on an entry outside the built pattern).
-  return m_method == Method::Banded && k.rows() == m_rows && static_cast<int>(m_inner.size()) == k.nonZeros() &&
+  return m_method == Method::Banded && k.rows() == m_rows &&
+         static_cast<int>(m_inner.size()) == k.nonZeros() &&
          std::equal(m_outer.begin(), m_outer.end(), k.outerIndexPtr());
 }
 

@@ -69,10 +69,13 @@ class LinearSolver {
   }
   /// True when the last factorisation is the banded one.
   bool usedBanded() const { return m_method == Method::Banded; }
+  /// True when factorizeRows can follow: the last factorisation is on the fixed-width band.
+  bool canFactorizeRows() const { return m_method == Method::Banded && m_skyline.bandWidth() > 0; }
 
  private:
   enum class Method { Banded, Ldlt, Lu };
-  /// True when the last factorisation is the banded one and k has its pattern (factorizeBlocks, factorizeRows).
+  /// True when the last factorisation is the banded one and k has its pattern (factorizeBlocks,
+  /// factorizeRows).
   bool samePatternAsBanded(const SparseMatrix& k) const;
   bool m_allowBanded;
   Method m_method = Method::Ldlt;

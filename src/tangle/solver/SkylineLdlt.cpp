@@ -431,9 +431,10 @@ bool SkylineLdlt::factorizeBlocks(const SparseMatrix& k, const std::vector<int>&
   // copy of K (m_original) or the envelope, the other blocks' entries kept.
   for (const int block : blocks) {
     const int b0 = blockStart(block), b1 = blockStart(block + 1);
-    const std::size_t lo = band ? static_cast<std::size_t>(b0) * static_cast<std::size_t>(m_bandWidth) : m_start[b0];
-    const std::size_t hi = band ? static_cast<std::size_t>(b1) * static_cast<std::size_t>(m_bandWidth) : m_start[b1];
-    std::fill(lower.begin() + static_cast<std::ptrdiff_t>(lo), lower.begin() + static_cast<std::ptrdiff_t>(hi), 0.0);
+    const auto width = static_cast<std::ptrdiff_t>(m_bandWidth);
+    const std::ptrdiff_t lo = band ? b0 * width : static_cast<std::ptrdiff_t>(m_start[b0]);
+    const std::ptrdiff_t hi = band ? b1 * width : static_cast<std::ptrdiff_t>(m_start[b1]);
+    std::fill(lower.begin() + lo, lower.begin() + hi, 0.0);
     std::fill(diagonal.begin() + b0, diagonal.begin() + b1, 0.0);
     for (int p = outer[b0]; p < outer[b1]; ++p) {
       const std::ptrdiff_t m = map[static_cast<std::size_t>(p)];
@@ -443,8 +444,7 @@ bool SkylineLdlt::factorizeBlocks(const SparseMatrix& k, const std::vector<int>&
         diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
     }
     if (band) {
-      std::copy(m_band.begin() + static_cast<std::ptrdiff_t>(lo), m_band.begin() + static_cast<std::ptrdiff_t>(hi),
-                m_original.begin() + static_cast<std::ptrdiff_t>(lo));
+      std::copy(m_band.begin() + lo, m_band.begin() + hi, m_original.begin() + lo);
     }
     std::copy(diagonal.begin() + b0, diagonal.begin() + b1, m_diagonal.begin() + b0);
   }
@@ -495,7 +495,8 @@ bool SkylineLdlt::factorizeBandBlock(int block, double tiny) {
   m_twistRow[static_cast<std::size_t>(block)] = -1;
   if (b1 - b0 >= kMinTwistedBlock * W) {
     const int m = b0 + (b1 - b0 - W) / 2;
-    if (twistedFactorizeEnds<W>(band, m_bandUp.data(), m_original.data(), diagonal, inverse, b0, b1, m, tiny) &&
+    if (twistedFactorizeEnds<W>(band, m_bandUp.data(), m_original.data(), diagonal, inverse, b0, b1, m,
+                                tiny) &&
         factorizeSeparator<W>(block, m, tiny)) {
       m_twistRow[static_cast<std::size_t>(block)] = m;
       return true;
@@ -551,8 +552,8 @@ bool SkylineLdlt::factorizeBandRows(const SparseMatrix& k, int block, int begin,
   // The rows of one end that read a changed row are those after it in that end's order: from `begin` on
   // top-down (rows before it keep their factor), from last - 1 back bottom-up. Each restarts from K.
   const auto topDownFrom = [&](int from, int to) {
-    std::copy(m_original.begin() + static_cast<std::ptrdiff_t>(from) * W,
-              m_original.begin() + static_cast<std::ptrdiff_t>(to) * W, m_band.begin() + static_cast<std::ptrdiff_t>(from) * W);
+    const auto rowsFrom = static_cast<std::ptrdiff_t>(from) * W, rowsTo = static_cast<std::ptrdiff_t>(to) * W;
+    std::copy(m_original.begin() + rowsFrom, m_original.begin() + rowsTo, m_band.begin() + rowsFrom);
     std::copy(m_originalDiagonal.begin() + from, m_originalDiagonal.begin() + to, m_diagonal.begin() + from);
   };
   if (twist < 0) {

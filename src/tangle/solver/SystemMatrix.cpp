@@ -143,7 +143,8 @@ void SystemMatrix::selectPatchCalls(const std::vector<std::size_t>* from, int be
       continue;
     }
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 3; ++i) sequence.positions.push_back(call.position[static_cast<std::size_t>(j)] + i);
+      for (int i = 0; i < 3; ++i)
+        sequence.positions.push_back(call.position[static_cast<std::size_t>(j)] + i);
   }
 }
 
@@ -212,8 +213,9 @@ bool SystemMatrix::endPatch(SparseMatrix& out) {
   m_patch = nullptr;
   m_replayCount = m_replayCountBeforePatch;
   const int n = m_dofs->equationCount();
-  const bool ok = !m_patchFailed && m_patchCursor == patch.calls.size() && out.rows() == n && out.cols() == n &&
-                  out.isCompressed() && out.nonZeros() == static_cast<Eigen::Index>(m_values.size()) &&
+  const bool ok = !m_patchFailed && m_patchCursor == patch.calls.size() && out.rows() == n &&
+                  out.cols() == n && out.isCompressed() &&
+                  out.nonZeros() == static_cast<Eigen::Index>(m_values.size()) &&
                   std::equal(m_outer.begin(), m_outer.end(), out.outerIndexPtr());
   if (!ok) {
     m_built = false;  // the values are neither the last build nor a whole assembly

@@ -140,7 +140,8 @@ class SystemMatrix {
   void add3x3Patched(int rowFirst, int colFirst, const Mat3& m);
   /// The calls among `from` (indices into m_calls, ascending) with an entry in a row or a column of
   /// [begin, end), into `sequence` (calls and positions; its range set).
-  void selectPatchCalls(const std::vector<std::size_t>* from, int begin, int end, PatchSequence& sequence) const;
+  void selectPatchCalls(const std::vector<std::size_t>* from, int begin, int end,
+                        PatchSequence& sequence) const;
   /// Leaves replaying at the current call: the calls replayed so far stay in the sequence and their
   /// summed entries become triplets.
   void startRecording();

@@ -117,7 +117,8 @@ class GeneralizedAlpha {
   /// block, only a stretch (else false). False when that cannot stand for a whole
   /// refresh (a block holds a vessel's or a contact's node, the pattern changed, a pivot vanished): the
   /// caller refreshes the whole matrix (m_factorValid is false when the factors were touched).
-  bool refreshBlocks(const model::State& state, const solver::AssemblyRequest& request, double mf, const VecX& r);
+  bool refreshBlocks(const model::State& state, const solver::AssemblyRequest& request, double mf,
+                     const VecX& r);
   /// Time at which loads and prescribed motions are evaluated for a state at time t [s].
   double environmentTime(double t) const { return m_frozen ? m_frozenTime : t; }
 
