@@ -221,9 +221,12 @@ TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
   const model::DofMap dofs = twoLines();
   solver::SystemMatrix m(dofs);
   SparseMatrix k;
-  m.clear();
-  fillLine(m, 0, 1.0);
-  fillLine(m, 6, 1.0);
+  const auto assembleBoth = [&] {
+    m.clear();
+    fillLine(m, 0, 1.0);
+    fillLine(m, 6, 1.0);
+  };
+  assembleBoth();
   // No build since the last clear: nothing to patch.
   EXPECT_FALSE(m.beginPatch(5, 11));
   m.build(k);
@@ -238,9 +241,7 @@ TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
   EXPECT_EQ(Eigen::MatrixXd(k), built);
   // The values are no longer a build: a patch is refused until the next whole assembly.
   EXPECT_FALSE(m.beginPatch(5, 11));
-  m.clear();
-  fillLine(m, 0, 1.0);
-  fillLine(m, 6, 1.0);
+  assembleBoth();
   m.build(k);
   // An entry outside the built pattern (a contact made since the build) within the block.
   ASSERT_TRUE(m.beginPatch(5, 11));
@@ -249,9 +250,7 @@ TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
   EXPECT_FALSE(m.endPatch(k));
   EXPECT_EQ(Eigen::MatrixXd(k), built);
   // Fewer calls than the block's recorded ones (an element left out).
-  m.clear();
-  fillLine(m, 0, 1.0);
-  fillLine(m, 6, 1.0);
+  assembleBoth();
   m.build(k);
   ASSERT_TRUE(m.beginPatch(5, 11));
   Mat3 block;
@@ -260,9 +259,7 @@ TEST(SystemMatrix, PatchRefusesCallsOutsideItsBlocksOrPattern) {
   EXPECT_FALSE(m.endPatch(k));
   EXPECT_EQ(Eigen::MatrixXd(k), built);
   // A target that is not the last build.
-  m.clear();
-  fillLine(m, 0, 1.0);
-  fillLine(m, 6, 1.0);
+  assembleBoth();
   m.build(k);
   SparseMatrix other(3, 3);
   ASSERT_TRUE(m.beginPatch(5, 11));

@@ -31,6 +31,17 @@ namespace {
 
 using test::rangeAfter;
 
+/// The three lines' fairlead tensions of `other` against `reference` (test::expectSameFairleadResponse) with
+/// the bounds of the file comment, each line's largest step difference recorded.
+void expectSameResponseOfThreeLines(const test::FairleadRun& reference, const test::FairleadRun& other) {
+  const std::array<double, 3> stepBound{5e-5 * rangeAfter(reference, 0, 20.0), 0.5, 0.5};  // [N], see above
+  for (std::size_t l = 0; l < 3; ++l) {
+    const double worst = test::expectSameFairleadResponse(reference, other, l, stepBound[l]);
+    ::testing::Test::RecordProperty("largest_tension_difference_N_line" + std::to_string(l + 1),
+                                    std::to_string(worst));
+  }
+}
+
 TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceTolerance) {
   const std::vector<double> azimuths{0.0, 120.0, 250.0};  // [deg]
   const test::FairleadRun whole = test::runMooringExample(30.0, "TANGLE_WHOLE_ASSEMBLY", azimuths);
@@ -41,11 +52,7 @@ TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceToleran
   EXPECT_EQ(whole.result.blocksLeft, 0);
   EXPECT_GT(blocks.result.blocksLeft, blocks.result.newtonIterations / 10);
   ASSERT_EQ(whole.time.size(), blocks.time.size());
-  const std::array<double, 3> stepBound{5e-5 * rangeAfter(whole, 0, 20.0), 0.5, 0.5};  // [N], see above
-  for (std::size_t l = 0; l < 3; ++l) {
-    const double worst = test::expectSameFairleadResponse(whole, blocks, l, stepBound[l]);
-    RecordProperty("largest_tension_difference_N_line" + std::to_string(l + 1), std::to_string(worst));
-  }
+  expectSameResponseOfThreeLines(whole, blocks);
 }
 
 // The same three lines with the kept matrix refreshed per block (GeneralizedAlpha::refreshBlocks: a line whose
@@ -66,11 +73,7 @@ TEST(BlockIterationTest, SlowLinesRefreshedAloneSameResponseWithinTheConvergence
   RecordProperty("block_run_whole_refreshes", std::to_string(blocks.result.matrixRefreshes));
   RecordProperty("block_refreshes", std::to_string(blocks.result.blockRefreshes));
   ASSERT_EQ(whole.time.size(), blocks.time.size());
-  const std::array<double, 3> stepBound{5e-5 * rangeAfter(whole, 0, 20.0), 0.5, 0.5};  // [N], see above
-  for (std::size_t l = 0; l < 3; ++l) {
-    const double worst = test::expectSameFairleadResponse(whole, blocks, l, stepBound[l]);
-    RecordProperty("largest_tension_difference_N_line" + std::to_string(l + 1), std::to_string(worst));
-  }
+  expectSameResponseOfThreeLines(whole, blocks);
 }
 
 }  // namespace
