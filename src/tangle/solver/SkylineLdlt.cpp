@@ -267,20 +267,24 @@ bool twistedFactorizeEnds(double* band, double* up, const double* original, doub
   }
   return true;
 }
-/// K's stored values summed into `lower` (at the index `map` gives a lower entry) and `diagonal` (map -1 -
-/// row), both zeroed first; the upper triangle (kUpper) skipped.
+/// Stored value p of K (`value`) summed into `lower` (at the index `map` gives a lower entry) or `diagonal`
+/// (map -1 - row); an upper-triangle value (kUpper) skipped.
+inline void scatterValue(const std::vector<std::ptrdiff_t>& map, std::ptrdiff_t p, double value,
+                         std::vector<double>& lower, std::vector<double>& diagonal) {
+  const std::ptrdiff_t m = map[static_cast<std::size_t>(p)];
+  if (m >= 0)
+    lower[static_cast<std::size_t>(m)] += value;
+  else if (m != kUpper)
+    diagonal[static_cast<std::size_t>(-1 - m)] += value;
+}
+/// K's stored values summed into `lower` and `diagonal` (scatterValue), both zeroed first.
 void scatterValues(const SparseMatrix& k, const std::vector<std::ptrdiff_t>& map, std::vector<double>& lower,
                    std::vector<double>& diagonal) {
   std::fill(lower.begin(), lower.end(), 0.0);
   std::fill(diagonal.begin(), diagonal.end(), 0.0);
   const double* a = k.valuePtr();
-  for (std::size_t p = 0; p < map.size(); ++p) {
-    const std::ptrdiff_t m = map[p];
-    if (m >= 0)
-      lower[static_cast<std::size_t>(m)] += a[p];
-    else if (m != kUpper)
-      diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
-  }
+  for (std::size_t p = 0; p < map.size(); ++p)
+    scatterValue(map, static_cast<std::ptrdiff_t>(p), a[p], lower, diagonal);
 }
 }  // namespace
 
@@ -382,7 +386,7 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
   m_factorized = false;
   if (m_bandWidth > 0) return m_factorized = factorizeBand(k);
   scatterValues(k, m_map, m_values, m_diagonal);
-  m_kDiagonal = m_diagonal;
+  m_originalDiagonal = m_diagonal;
   m_inverseDiagonal.resize(m_n);
   return m_factorized = factorizeEnvelopeRows(0, m_n, pivotThreshold(m_diagonal));
 }
@@ -426,7 +430,6 @@ bool SkylineLdlt::factorizeBlocks(const SparseMatrix& k, const std::vector<int>&
   const bool band = m_bandWidth > 0;
   const std::vector<std::ptrdiff_t>& map = band ? m_bandMap : m_map;
   std::vector<double>& lower = band ? m_band : m_values;
-  std::vector<double>& diagonal = band ? m_originalDiagonal : m_kDiagonal;
   // K's values of the blocks (scatterValues on their columns, which hold their rows only): into the band's
   // copy of K (m_original) or the envelope, the other blocks' entries kept.
   for (const int block : blocks) {
@@ -435,20 +438,14 @@ bool SkylineLdlt::factorizeBlocks(const SparseMatrix& k, const std::vector<int>&
     const std::ptrdiff_t lo = band ? b0 * width : static_cast<std::ptrdiff_t>(m_start[b0]);
     const std::ptrdiff_t hi = band ? b1 * width : static_cast<std::ptrdiff_t>(m_start[b1]);
     std::fill(lower.begin() + lo, lower.begin() + hi, 0.0);
-    std::fill(diagonal.begin() + b0, diagonal.begin() + b1, 0.0);
-    for (int p = outer[b0]; p < outer[b1]; ++p) {
-      const std::ptrdiff_t m = map[static_cast<std::size_t>(p)];
-      if (m >= 0)
-        lower[static_cast<std::size_t>(m)] += a[p];
-      else if (m != kUpper)
-        diagonal[static_cast<std::size_t>(-1 - m)] += a[p];
-    }
+    std::fill(m_originalDiagonal.begin() + b0, m_originalDiagonal.begin() + b1, 0.0);
+    for (int p = outer[b0]; p < outer[b1]; ++p) scatterValue(map, p, a[p], lower, m_originalDiagonal);
     if (band) {
       std::copy(m_band.begin() + lo, m_band.begin() + hi, m_original.begin() + lo);
     }
-    std::copy(diagonal.begin() + b0, diagonal.begin() + b1, m_diagonal.begin() + b0);
+    std::copy(m_originalDiagonal.begin() + b0, m_originalDiagonal.begin() + b1, m_diagonal.begin() + b0);
   }
-  const double tiny = pivotThreshold(diagonal);
+  const double tiny = pivotThreshold(m_originalDiagonal);
   for (const int block : blocks) {
     const bool ok = band ? withBandWidth(m_bandWidth,
                                          [&](auto width) {
@@ -537,12 +534,7 @@ bool SkylineLdlt::factorizeBandRows(const SparseMatrix& k, int block, int begin,
   for (int c = std::max(b0, begin - W); c < last; ++c)
     for (int p = outer[c]; p < outer[c + 1]; ++p) {
       const int r = inner[p];
-      if (r < begin || r >= last) continue;
-      const std::ptrdiff_t m = m_bandMap[static_cast<std::size_t>(p)];
-      if (m >= 0)
-        m_original[static_cast<std::size_t>(m)] += a[p];
-      else if (m != kUpper)
-        m_originalDiagonal[static_cast<std::size_t>(-1 - m)] += a[p];
+      if (r >= begin && r < last) scatterValue(m_bandMap, p, a[p], m_original, m_originalDiagonal);
     }
   const double tiny = pivotThreshold(m_originalDiagonal);
   double* band = m_band.data();

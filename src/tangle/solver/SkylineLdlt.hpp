@@ -93,8 +93,8 @@ class SkylineLdlt {
   /// The envelope's Crout rows [begin, end) (a union of blocks; envelope mode), then their columns of L for
   /// the backward substitution and 1 / D. False on |D(i)| <= tiny (or NaN).
   bool factorizeEnvelopeRows(int begin, int end, double tiny);
-  /// 1e-14 of the largest |diagonal entry| of K as stored (m_originalDiagonal or m_diagonal before the
-  /// factorisation): the vanishing-pivot threshold.
+  /// 1e-14 of the largest |diagonal entry| of K (m_originalDiagonal, or m_diagonal before the factorisation):
+  /// the vanishing-pivot threshold.
   static double pivotThreshold(const std::vector<double>& diagonal);
   /// The separator of twisted block `block` at rows [m, m + w): Schur complement and its dense LDL^T. False
   /// on a vanishing pivot.
@@ -116,7 +116,6 @@ class SkylineLdlt {
                                       // diagonal, or a value below -m_n - 1 for the upper triangle (skipped)
   double m_cost = 0.0;
   bool m_factorized = false;           // the last factorize succeeded (factorizeBlocks may follow)
-  std::vector<double> m_kDiagonal;     // envelope mode: K's diagonal of the last factorisation
   std::vector<int> m_blockStart;  // first equation of each independent block, then m_n
   // L by columns (compressed: rows and values of column j at [m_columnStart[j], m_columnStart[j + 1]); the
   // structure set by analyzePattern, the values by factorize) and
@@ -137,7 +136,7 @@ class SkylineLdlt {
   std::vector<double> m_bandUp;
   std::vector<double> m_twistFactor;
   std::vector<double> m_original;  // K's band (as m_band): the bottom-up rows read it
-  std::vector<double> m_originalDiagonal;
+  std::vector<double> m_originalDiagonal;  // K's diagonal as last factorised (band and envelope modes)
   std::vector<std::ptrdiff_t> m_bandMap;  // as m_map, with a lower entry's index in the band
 };
 

@@ -22,10 +22,11 @@ namespace tangle::solver {
 ///   either way, so both modes give the same matrix bit for bit. A call that differs from the recorded one
 ///   (a contact appears, a pattern changes) turns the assembly back into recording, with the entries
 ///   summed so far as triplets.
-/// And a third, patching, for a refresh of some independent blocks of the matrix (GeneralizedAlpha): after a
-/// build, beginPatch zeroes the built matrix's entries in the columns of whole blocks and the calls that
-/// follow (those blocks' elements and nodes) sum into the built pattern's entries, found by search;
-/// endPatch copies those columns into the built matrix. The recorded sequence is left as it was.
+/// And a third, patching, for a refresh of an independent block of the matrix or of a stretch of it
+/// (GeneralizedAlpha::refreshBlocks): after a build, beginPatch zeroes the built matrix's entries in the rows
+/// and columns of the patched equations, and the calls that follow (the elements and nodes there) replay
+/// the recorded sequence's subsequence of those entries; endPatch copies them into the built matrix. The
+/// recorded sequence is left as it was.
 class SystemMatrix {
  public:
   explicit SystemMatrix(const model::DofMap& dofs) : m_dofs(&dofs) {}
