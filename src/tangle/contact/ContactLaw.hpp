@@ -69,4 +69,60 @@ struct RegularisedPenalty {
   double dampingFraction(double p) const { return p <= 0.0 ? 0.0 : std::min(1.0, p / depth); }
 };
 
+/// Penalty law of the distributed formulation with a barrier that bounds the penetration by construction
+/// (force per unit length [N/m] at penetration p [m]; DistributedContact.hpp, docs/theory.md 9.11):
+///     f = k p^2 / (2 p0)                                          0 <= p <= p0   (regularised first touch)
+///     f = k (p - p0 / 2)                                          p0 <= p <= p1  (linear penalty)
+///     f = k (p - p0 / 2) + k D (p - p1)^2 / (pmax - p)^2          p1 <= p < pmax (barrier), D = pmax - p1
+/// The barrier term and its slope vanish at p1 (the law is C1 everywhere) and it grows without bound as p
+/// approaches pmax; so does its work (like k D^3 / (pmax - p)), so any finite kinetic energy is taken up
+/// before the surfaces overlap by pmax (the idea of the barrier of Incremental Potential Contact, Li et al.
+/// 2020, placed here on the penetration side of an ordinary penalty so that the stiffness a user chose
+/// governs every contact that stays above p1). Beyond pcap = pmax - D / 20 the law continues along its
+/// tangent at pcap (finite: the barrier adds 361 k D there): a Newton iterate that overshoots gets a
+/// finite, large restoring force, and a converged state there is refused (beyondCap()).
+struct BarrierPenalty {
+  double stiffness = 0.0;     ///< k [N/m per m]
+  double depth = 0.0;         ///< p0 [m] (> 0)
+  double barrierStart = 0.0;  ///< p1 [m] (> p0)
+  double limit = 0.0;         ///< pmax [m] (> p1)
+
+  /// Barrier law of a pair with contact radii summing to `radii` [m]: p0 = 1 %, p1 = 25 %, pmax = 50 % of
+  /// the radii (the point formulation refused overlaps beyond half the radii; the same bound here).
+  static BarrierPenalty forRadii(double stiffness, double radii) {
+    return {stiffness, 0.01 * radii, 0.25 * radii, 0.5 * radii};
+  }
+  double cap() const { return limit - 0.05 * (limit - barrierStart); }
+  bool beyondCap(double p) const { return p >= cap(); }
+  double value(double p) const {
+    if (p <= 0.0) return 0.0;
+    if (p < depth) return 0.5 * stiffness * p * p / depth;
+    double f = stiffness * (p - 0.5 * depth);
+    if (p > barrierStart) {
+      const double c = cap();
+      f += p < c ? stiffness * barrier(p) : stiffness * (barrier(c) + barrierSlope(c) * (p - c));
+    }
+    return f;
+  }
+  double slope(double p) const {
+    if (p <= 0.0) return 0.0;
+    if (p < depth) return stiffness * p / depth;
+    if (p <= barrierStart) return stiffness;
+    return stiffness * (1.0 + barrierSlope(std::min(p, cap())));
+  }
+  /// Fraction of the full dashpot that acts at penetration p (ramps in over p0, as RegularisedPenalty).
+  double dampingFraction(double p) const { return p <= 0.0 ? 0.0 : std::min(1.0, p / depth); }
+
+ private:
+  /// D (p - p1)^2 / (pmax - p)^2 [m] and its derivative [-].
+  double barrier(double p) const {
+    const double a = p - barrierStart, b = limit - p;
+    return (limit - barrierStart) * a * a / (b * b);
+  }
+  double barrierSlope(double p) const {
+    const double a = p - barrierStart, b = limit - p;
+    return (limit - barrierStart) * (2.0 * a / (b * b) + 2.0 * a * a / (b * b * b));
+  }
+};
+
 }  // namespace tangle::contact

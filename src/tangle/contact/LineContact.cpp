@@ -90,6 +90,8 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
     if (ls.endA.kind != model::EndKind::Free || ls.endB.kind != model::EndKind::Free)
       m_lineMassWithAdded[l] = kInf;
   }
+  if (spec.formulation == model::ContactFormulation::Distributed)
+    m_distributed = std::make_unique<DistributedContact>(model, spec, m_radius, m_zeta);
 }
 
 double LineContact::stiffness(int a, int b) const {
@@ -441,6 +443,12 @@ void LineContact::addForces(const model::State& state, const solver::AssemblyReq
     m_margin = broadPhaseMargin(state, request.dynamic);
     m_candidateTime = request.dynamic ? request.time : std::numeric_limits<double>::quiet_NaN();
   }
+  m_lastDynamic = request.dynamic && !request.relaxation;
+  if (m_distributed) {
+    if (refresh) refreshCandidates(state);
+    addDistributedForces(state, request, force, matrix);
+    return;
+  }
   findContacts(state, request.dynamic, refresh, true);
   if (m_debug)
     for (const ContactPoint& c : m_trial)
@@ -517,6 +525,7 @@ bool LineContact::updateActiveSet() {
   // Release the active pairs that pull (the spring-dashpot never pulls lines together) or no longer
   // overlap. After a few rounds in one step the set is accepted as it is (the remaining pulls are
   // reported as zero force).
+  if (m_distributed) return false;  // a smooth law: no active set
   if (++m_releaseRounds > 8) return false;
   bool changed = false;
   for (const ContactPoint& c : m_trial) {
@@ -549,12 +558,14 @@ double LineContact::limitStep(const model::State& state) {
     Vec3 n = d.closest0 - d.closest1;
     Vec3 relativeVelocity = Vec3::Zero(), relativeAcceleration = Vec3::Zero();
     const bool hasAcceleration = state.acceleration.size() == state.velocity.size();
-    if (hasSmoothCentreline(*m_model, a.element) || hasSmoothCentreline(*m_model, b.element)) {
+    const bool smoothCables = m_distributed != nullptr;
+    if (hasSmoothCentreline(*m_model, a.element, smoothCables) || hasSmoothCentreline(*m_model, b.element, smoothCables)) {
       // A beam's contact is measured on its smooth centreline, which lies off the chord by up to
       // kappa L^2 / 8 (6 cm for a flexible riser of 10 m elements near its touchdown): the chords' gap
       // would see a touch that late and let a nominal step run into it (an unresolved impact, its
       // force applied over the whole step).
-      const CentrelineDistance cd = centrelineDistance(*m_model, state.position, a.element, b.element, d.s, d.t);
+      const CentrelineDistance cd =
+          centrelineDistance(*m_model, state.position, a.element, b.element, d.s, d.t, false, false, smoothCables);
       gap = cd.distance - radii;
       n = cd.pointA - cd.pointB;
       relativeVelocity = stencilValue(state.velocity, cd.a) - stencilValue(state.velocity, cd.b);
@@ -602,8 +613,10 @@ double LineContact::limitStep(const model::State& state) {
       if (!std::isfinite(toTouch)) continue;
       const double touchSpeed = closing + closingAcceleration * toTouch;  // [m/s]
       const double ma = lumpedMass(a.element, d.s), mb = lumpedMass(b.element, d.t);
+      // Point formulation: the lumped pair mass and the point stiffness; distributed: the lumped pair mass
+      // and the stiffness of a crossing halfway into the law's linear range, k_line (rA + rB).
       const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
-      const double k = stiffness(a.line, b.line);
+      const double k = m_distributed ? m_distributed->lineStiffness(a.line, b.line) * radii : stiffness(a.line, b.line);
       if (std::isfinite(m) && touchSpeed * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius)) {
         const double impactStep = contactDuration(k, m, m_zeta) / kImpactSteps;
         const double firstStep = impactStep / 16.0;
@@ -628,6 +641,7 @@ double LineContact::limitStep(const model::State& state) {
       limit = std::min(limit, duration / kImpactSteps);
   }
   (void)elements;
+  if (m_distributed) limit = std::min(limit, m_distributed->impactStepLimit());
   if (m_debug) std::cerr << fmt::format("    limitStep: t {:.6e} limit {:.6e}\n", state.time, limit);
   return limit;
 }
@@ -649,6 +663,10 @@ void LineContact::applyImpulse(model::State& state, const ContactPoint& c, doubl
 
 std::string LineContact::rejectStep(const model::State& before, const model::State& after) {
   const auto& elements = m_model->elements();
+  if (m_distributed) {
+    // The samples of the last assembly are those of `after` (the converged iterate).
+    if (std::string why = m_distributed->rejectSamples(); !why.empty()) return why;
+  }
   for (const CandidatePair& cp : m_search.candidates()) {
     const SegmentProxy& a = m_search.proxies()[cp.first];
     const SegmentProxy& b = m_search.proxies()[cp.second];
@@ -661,11 +679,23 @@ std::string LineContact::rejectStep(const model::State& before, const model::Sta
         geometry::segmentDistance(after.position[ea.node1], after.position[ea.node2],
                                   after.position[eb.node1], after.position[eb.node2]);
     const double radii = a.radius + b.radius;
-    const bool tooDeep = d1.distance - radii < -0.5 * radii;  // far too deep: the step was too long
+    // Far too deep: the step was too long (the distributed formulation's barrier bounds the depth of its
+    // own measure, the C1 centrelines, checked above; a kinked cable's chord may lie deeper than that).
+    const bool tooDeep = !m_distributed && d1.distance - radii < -0.5 * radii;
     // Tunnelling: the centrelines crossed (the separation vector reversed) within both segments, from a
     // separated state or from one in contact (every committed state is uncrossed: findContacts tells the
     // side of a pair from its chords at the last committed state).
-    const bool crossed = !tooDeep && d0.distance > 1e-12 && passedThrough(a.element, b.element, d0, d1);
+    bool crossed = !tooDeep && d0.distance > 1e-12 && passedThrough(a.element, b.element, d0, d1);
+    if (crossed && m_distributed) {
+      // The distributed formulation measures the C1 centrelines: a chord of a sharply folded cable can
+      // cut through a line the smooth curve wraps. Crossed only if the smooth curves' separation reversed
+      // too, at a stationary point inside both.
+      const CentrelineDistance c0 =
+          centrelineDistance(*m_model, before.position, a.element, b.element, d0.s, d0.t, false, false, true);
+      const CentrelineDistance c1 =
+          centrelineDistance(*m_model, after.position, a.element, b.element, d1.s, d1.t, false, false, true);
+      crossed = c1.sFree && c1.tFree && (c0.pointA - c0.pointB).dot(c1.pointA - c1.pointB) < 0.0;
+    }
     if (!tooDeep && !crossed) continue;
     const model::Line& la = m_model->lines()[ea.line];
     const model::Line& lb = m_model->lines()[eb.line];
@@ -686,6 +716,10 @@ std::string LineContact::rejectStep(const model::State& before, const model::Sta
 }
 
 void LineContact::commitStep(model::State& state, double dt) {
+  if (m_distributed) {
+    commitDistributed(state, dt);
+    return;
+  }
   m_time = state.time;
   m_reference = state.position;
   commitFriction();
@@ -937,6 +971,34 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   }
   if (best[0] > m_spec.clearanceMargin) best[0] = kInf;
   return best;
+}
+
+void LineContact::addDistributedForces(const model::State& state, const solver::AssemblyRequest& request,
+                                       VecX& force, solver::SystemMatrix* matrix) {
+  if (m_reference.size() != state.position.size()) m_reference = state.position;
+  m_distributed->findSamples(state, m_search, request.dynamic, request.relaxation, m_reference);
+  m_distributed->addForces(state, request, force, matrix);
+}
+
+void LineContact::commitDistributed(const model::State& state, double dt) {
+  m_time = state.time;
+  const bool dynamic = dt > 0.0;
+  if (m_reference.size() != state.position.size()) m_reference = state.position;
+  m_distributed->findSamples(state, m_search, dynamic, false, m_reference);
+  m_reference = state.position;
+  std::vector<ContactSpot> spots = m_distributed->spots(state, dt, dynamic);
+  for (ContactSpot& spot : spots) {
+    // The element of each line nearest the spot: the mass bounds of the event (ContactEvents.hpp).
+    const auto [ea, wa] = pointAtArc(spot.lineA, spot.arcA);
+    const auto [eb, wb] = pointAtArc(spot.lineB, spot.arcB);
+    (void)wa;
+    (void)wb;
+    spot.elementPairMass = reducedMass(elementMass(ea), elementMass(eb));
+    spot.linePairMass = pairMassBound(m_lineMassWithAdded[spot.lineA], m_lineMassWithAdded[spot.lineB]);
+  }
+  m_eventTracker.update(state.time, dt, dynamic, spots, [&](int a, int b, double a0, double a1, double b0, double b1) {
+    return gapBetween(state, a, b, a0, a1, b0, b1);
+  });
 }
 
 }  // namespace tangle::contact

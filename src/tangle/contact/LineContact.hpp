@@ -29,6 +29,7 @@
 #include "tangle/contact/BroadPhase.hpp"
 #include "tangle/contact/ContactCandidates.hpp"
 #include "tangle/contact/ContactEvents.hpp"
+#include "tangle/contact/DistributedContact.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/model/Model.hpp"
@@ -183,6 +184,10 @@ class LineContact final : public solver::LoadContributor {
   /// the user can change), and the step must be cut.
   std::string rejectStep(const model::State& before, const model::State& after) override;
   bool rejectsSteps() const override { return true; }
+  /// The distributed formulation's barrier needs its step filter in dynamics too (limitIncrement).
+  bool limitsDynamicIncrements() const override { return m_distributed != nullptr; }
+  /// The distributed formulation (contact.formulation: distributed), or null for the point formulation.
+  const DistributedContact* distributed() const { return m_distributed.get(); }
   /// Commits the contacts of the accepted state `state` reached with step dt: updates impulses, Eq. 5
   /// effective masses, events. After every accepted step, and once for the static solution with dt = 0.
   /// With the impulse model, new impacts change the velocities of `state` (momentum-conserving jump).
@@ -301,6 +306,12 @@ class LineContact final : public solver::LoadContributor {
   /// last accepted step). Contact normals point to the side the lines were on there (findContacts).
   std::vector<Vec3> m_reference;
   bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
+  std::unique_ptr<DistributedContact> m_distributed;  // contact.formulation: distributed
+  bool m_lastDynamic = false;                         // the last assembly was a dynamic one
+  /// The distributed formulation's parts of addForces, commitStep and limitStep.
+  void addDistributedForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                            solver::SystemMatrix* matrix);
+  void commitDistributed(const model::State& state, double dt);
 };
 
 }  // namespace tangle::contact

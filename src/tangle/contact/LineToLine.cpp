@@ -162,6 +162,7 @@ void LineContact::addLineToLineForces(const model::State& state, const solver::A
 }
 
 Vec3 LineContact::pairForce(int lineA, int lineB) const {
+  if (m_distributed) return m_distributed->pairForce(lineA, lineB);
   Vec3 total = Vec3::Zero();
   for (const ContactPoint& c : m_trial)
     if (c.lineA == lineA && c.lineB == lineB) total += std::max(0.0, c.normalForce) * c.normal + c.frictionForce;

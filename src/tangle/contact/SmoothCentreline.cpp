@@ -23,14 +23,14 @@ Vec3 CentrelineStencil::secondDerivative(const std::vector<Vec3>& x) const {
   return p;
 }
 
-bool hasSmoothCentreline(const model::Model& model, int element) {
-  return model.elements()[element].type->isBeam();
+bool hasSmoothCentreline(const model::Model& model, int element, bool smoothCables) {
+  return smoothCables || model.elements()[element].type->isBeam();
 }
 
-CentrelineStencil centrelineStencil(const model::Model& model, int element, double s) {
+CentrelineStencil centrelineStencil(const model::Model& model, int element, double s, bool smoothCables) {
   const auto& elements = model.elements();
   const model::LineElement& el = elements[element];
-  if (!el.type->isBeam()) {
+  if (!hasSmoothCentreline(model, element, smoothCables)) {
     // A cable's centreline is its polyline (see the header).
     CentrelineStencil st;
     st.node = {el.node1, el.node1, el.node2, el.node2};
@@ -76,8 +76,8 @@ CentrelineStencil centrelineStencil(const model::Model& model, int element, doub
 
 namespace {
 /// Search range of an element's parameter (widened at interior nodes, see kParameterOverlap).
-std::pair<double, double> parameterRange(const model::Model& model, int element) {
-  if (!hasSmoothCentreline(model, element)) return {0.0, 1.0};
+std::pair<double, double> parameterRange(const model::Model& model, int element, bool smoothCables) {
+  if (!hasSmoothCentreline(model, element, smoothCables)) return {0.0, 1.0};
   const model::Line& line = model.lines()[model.elements()[element].line];
   const int index = element - line.firstElement;
   return {index > 0 ? -kParameterOverlap : 0.0, index < line.elementCount - 1 ? 1.0 + kParameterOverlap : 1.0};
@@ -85,19 +85,20 @@ std::pair<double, double> parameterRange(const model::Model& model, int element)
 }  // namespace
 
 CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position, int elementA,
-                                      int elementB, double s0, double t0, bool holdS, bool holdT) {
-  const auto [sLo, sHi] = parameterRange(model, elementA);
-  const auto [tLo, tHi] = parameterRange(model, elementB);
+                                      int elementB, double s0, double t0, bool holdS, bool holdT,
+                                      bool smoothCables) {
+  const auto [sLo, sHi] = parameterRange(model, elementA, smoothCables);
+  const auto [tLo, tHi] = parameterRange(model, elementB, smoothCables);
   const double lo[2] = {sLo, tLo}, hi[2] = {sHi, tHi};
   double p[2] = {holdS ? s0 : std::clamp(s0, sLo, sHi), holdT ? t0 : std::clamp(t0, tLo, tHi)};
   auto value = [&](const double q[2]) {
-    return 0.5 * (centrelineStencil(model, elementA, q[0]).point(position) -
-                  centrelineStencil(model, elementB, q[1]).point(position))
+    return 0.5 * (centrelineStencil(model, elementA, q[0], smoothCables).point(position) -
+                  centrelineStencil(model, elementB, q[1], smoothCables).point(position))
                      .squaredNorm();
   };
   auto gradientNorm = [&](const double q[2]) {
-    const CentrelineStencil a = centrelineStencil(model, elementA, q[0]);
-    const CentrelineStencil b = centrelineStencil(model, elementB, q[1]);
+    const CentrelineStencil a = centrelineStencil(model, elementA, q[0], smoothCables);
+    const CentrelineStencil b = centrelineStencil(model, elementB, q[1], smoothCables);
     const Vec3 u = a.point(position) - b.point(position);
     double gs = u.dot(a.tangent(position)), gt = -u.dot(b.tangent(position));
     if (holdS || (q[0] <= lo[0] && gs > 0.0) || (q[0] >= hi[0] && gs < 0.0)) gs = 0.0;
@@ -109,8 +110,8 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
   // (a scaled gradient step where the reduced Hessian is not positive definite), projected on the range,
   // halved until V decreases.
   for (int iteration = 0; iteration < 40; ++iteration) {
-    const CentrelineStencil a = centrelineStencil(model, elementA, p[0]);
-    const CentrelineStencil b = centrelineStencil(model, elementB, p[1]);
+    const CentrelineStencil a = centrelineStencil(model, elementA, p[0], smoothCables);
+    const CentrelineStencil b = centrelineStencil(model, elementB, p[1], smoothCables);
     const Vec3 u = a.point(position) - b.point(position);
     const Vec3 ca = a.tangent(position), cb = b.tangent(position);
     const Vec3 caa = a.secondDerivative(position), cbb = b.secondDerivative(position);
@@ -164,8 +165,8 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
   r.t = p[1];
   r.sFree = !holdS && p[0] > sLo && p[0] < sHi;
   r.tFree = !holdT && p[1] > tLo && p[1] < tHi;
-  r.a = centrelineStencil(model, elementA, r.s);
-  r.b = centrelineStencil(model, elementB, r.t);
+  r.a = centrelineStencil(model, elementA, r.s, smoothCables);
+  r.b = centrelineStencil(model, elementB, r.t, smoothCables);
   r.pointA = r.a.point(position);
   r.pointB = r.b.point(position);
   r.distance = (r.pointA - r.pointB).norm();

@@ -48,12 +48,13 @@ struct CentrelineStencil {
   Vec3 secondDerivative(const std::vector<Vec3>& x) const;  ///< d2c/ds2 [m]
 };
 
-/// True if `element` belongs to a line measured on the smooth centreline (a beam), false for a cable.
-bool hasSmoothCentreline(const model::Model& model, int element);
+/// True if `element` belongs to a line measured on the smooth centreline (a beam), false for a cable;
+/// always true with smoothCables (the distributed formulation rounds cables too, DistributedContact.hpp).
+bool hasSmoothCentreline(const model::Model& model, int element, bool smoothCables = false);
 
 /// Stencil of the smooth centreline (the chord's linear interpolation for a cable) on `element` at parameter s (s may lie a little outside [0, 1]:
 /// the cubic is extrapolated).
-CentrelineStencil centrelineStencil(const model::Model& model, int element, double s);
+CentrelineStencil centrelineStencil(const model::Model& model, int element, double s, bool smoothCables = false);
 
 /// Range of the parameter of an element's piece searched for a closest point: [0, 1], widened by
 /// kParameterOverlap at an interior node of a beam, so that a minimum at or near a node is strictly inside the
@@ -73,8 +74,10 @@ struct CentrelineDistance {
 /// with a backtracking line search on the squared distance, started from (s0, t0) (the closest points
 /// of the two chords). holdS (holdT) keeps s = s0 (t = t0): the closest point of B's centreline to a given
 /// point of A's (then not free).
+/// smoothCables: cables on their C1 centreline too (the distributed formulation).
 CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position, int elementA,
-                                      int elementB, double s0, double t0, bool holdS = false, bool holdT = false);
+                                      int elementB, double s0, double t0, bool holdS = false, bool holdT = false,
+                                      bool smoothCables = false);
 
 /// The distance between the closest points and its exact derivatives with respect to the eight node
 /// positions of the two stencils (A's four, then B's four; a node in both gets both contributions).

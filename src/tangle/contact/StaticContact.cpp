@@ -44,12 +44,18 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
     largest = std::max(largest, move[n].norm());
   }
   if (largest <= 0.0) return 1.0;
+  if (m_distributed && m_lastDynamic) {
+    // Dynamics: this step's candidates (found at its first assembly; no contact arises outside them within
+    // the step), so the parts of the model away from them stay valid.
+    return m_distributed->limitIncrement(state, move, m_search, m_search.candidates());
+  }
   // Candidates: pairs whose boxes, grown by the largest node move, come within the radii.
   const std::vector<CandidatePair> pairs = m_search.pairsWithin(state, m_search.maxRadius() + largest);
   m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
   // The pairs' distances at `state` are recomputed for every trial fraction instead of stored: a large
   // increment makes most element pairs of a many-line model candidates (4.6 million for 150 lines of 60
   // elements), and a stored 100-byte record per pair was 0.6 GB (issue 30).
+  if (m_distributed) return m_distributed->limitIncrement(state, move, m_search, pairs);
   const auto& proxies = m_search.proxies();
   auto admissible = [&](double alpha) {
     for (const CandidatePair& cp : pairs) {
@@ -76,6 +82,10 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
 
 std::string LineContact::rejectState(const model::State& state) {
   if (m_reference.empty()) m_reference = m_model->initialState().position;
+  if (m_distributed) {
+    // The samples of the last assembly are those of the converged state.
+    if (std::string why = m_distributed->rejectSamples(); !why.empty()) return why;
+  }
   const auto& elements = m_model->elements();
   // Pairs within reach of each other now or at the reference state: the radii plus the largest move
   // of a node since the reference (a line that passed right through another is no longer near it).
@@ -94,13 +104,22 @@ std::string LineContact::rejectState(const model::State& state) {
     const std::string where =
         fmt::format("lines '{}' and '{}' at arc lengths {:.2f} m and {:.2f} m", m_model->lines()[a.line].name,
                     m_model->lines()[b.line].name, arcOf(a.line, a.element, d.s), arcOf(b.line, b.element, d.t));
-    if (d.distance - radii < -kRejectDepth * radii)
+    if (!m_distributed && d.distance - radii < -kRejectDepth * radii)
       return fmt::format("{} overlap by {:.3f} m, more than half the sum of their radii ({:.3f} m)", where,
                          radii - d.distance, radii);
     const geometry::SegmentDistanceResult r = geometry::segmentDistance(
         m_reference[ea.node1], m_reference[ea.node2], m_reference[eb.node1], m_reference[eb.node2]);
-    if (r.distance > 0.5 * radii && r.distance < radii + largestMove && passedThrough(a.element, b.element, r, d))
-      return fmt::format("{} have passed through each other", where);
+    bool crossed =
+        r.distance > 0.5 * radii && r.distance < radii + largestMove && passedThrough(a.element, b.element, r, d);
+    if (crossed && m_distributed) {
+      // On the C1 centrelines the distributed formulation measures (see rejectStep).
+      const CentrelineDistance c0 =
+          centrelineDistance(*m_model, m_reference, a.element, b.element, r.s, r.t, false, false, true);
+      const CentrelineDistance c1 =
+          centrelineDistance(*m_model, state.position, a.element, b.element, d.s, d.t, false, false, true);
+      crossed = c1.sFree && c1.tFree && (c0.pointA - c0.pointB).dot(c1.pointA - c1.pointB) < 0.0;
+    }
+    if (crossed) return fmt::format("{} have passed through each other", where);
   }
   return {};
 }

@@ -57,6 +57,29 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
                      lines[s.lineA].name, lines[s.lineB].name, s.arcA, s.arcB, x.x(), x.y(), x.z(), s.normal.x(),
                      s.normal.y(), s.normal.z(), s.lineForce * s.length, s.lineForce, s.length, s.gap);
   }
+  if (const DistributedContact* distributed = contact.distributed()) {
+    // Gauss points of both passes, each with half the weight: a pair's sums are over both (the contact
+    // length is the mean of the lengths along the two lines), reported with the lower line index first.
+    for (const ContactSample& s : distributed->samples()) {
+      if (s.lineForce <= 0.0) continue;
+      const bool swapped = s.lineA > s.lineB;
+      const int first = swapped ? s.lineB : s.lineA, second = swapped ? s.lineA : s.lineB;
+      const double arc1 = swapped ? s.arcB : s.arcA, arc2 = swapped ? s.arcA : s.arcB;
+      const Vec3 onFirst = (swapped ? -1.0 : 1.0) * s.length * (s.lineForce * s.normal + s.friction);
+      const Vec3 normal = swapped ? Vec3(-s.normal) : s.normal;
+      PairTotal& t = pairs[{first, second}];
+      t.force += onFirst;
+      t.normal += s.lineForce * s.length;
+      t.length += s.length;
+      t.peakPerLength = std::max(t.peakPerLength, s.lineForce);
+      ++t.samples;
+      extend(t, arc1, arc2);
+      const Vec3 x = s.curve.pointA;
+      f << fmt::format("{},{},length,{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.5f},{:.4e}\n",
+                       lines[first].name, lines[second].name, arc1, arc2, x.x(), x.y(), x.z(), normal.x(),
+                       normal.y(), normal.z(), s.lineForce * s.length, s.lineForce, s.length, s.gap);
+    }
+  }
   for (const FrictionPatch& p : contact.frictionPatches()) {
     auto it = pairs.find({p.lineA, p.lineB});
     if (it != pairs.end()) it->second.force += p.force;

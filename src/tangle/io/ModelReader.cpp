@@ -994,7 +994,7 @@ std::string knownLine(const Value& name, const ModelSpec& spec, std::string_view
 }
 
 void readContact(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"pairs", "self_contact", "stiffness", "restitution", "model", "friction_coefficient",
+  const Map m(v, {"formulation", "pairs", "self_contact", "stiffness", "restitution", "model", "friction_coefficient",
                   "friction_velocity", "clearance_margin", "exclude", "exclusion_zones", "exclude_connections",
                   "impact_velocity_threshold", "event_separation_time", "clash_damage"});
   const model::ContactSpec d;
@@ -1016,6 +1016,12 @@ void readContact(const Value& v, ModelSpec& spec) {
   if (const std::optional<Value> model = m.find("model"))
     c.model = model->choice<model::ImpactModel>(
         {{"penalty", model::ImpactModel::Penalty}, {"impulse", model::ImpactModel::Impulse}});
+  if (const std::optional<Value> formulation = m.find("formulation")) {
+    c.formulation = formulation->choice<model::ContactFormulation>(
+        {{"point", model::ContactFormulation::Point}, {"distributed", model::ContactFormulation::Distributed}});
+    if (c.formulation == model::ContactFormulation::Distributed && c.model == model::ImpactModel::Impulse)
+      formulation->fail("formulation: distributed has no velocity-jump (impulse) model: use model: penalty");
+  }
   c.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
   c.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());
   c.clearanceMargin = m.number("clearance_margin", d.clearanceMargin, positive());

@@ -253,8 +253,15 @@ enum class ImpactModel {
 };
 
 /// Line-to-line contact settings.
+/// How line-to-line contact is formulated (docs/theory.md section 9).
+enum class ContactFormulation {
+  Point,       ///< closest points of element pairs, blended with line-to-line by the crossing angle
+  Distributed  ///< Gauss points along both lines against the other's C1 centreline, barrier-bounded
+};
+
 struct ContactSpec {
   bool enabled = false;          ///< contact block present
+  ContactFormulation formulation = ContactFormulation::Point;  ///< contact.formulation
   std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs that may touch (empty: all pairs)
   bool selfContact = false;      ///< a line may touch itself
   double stiffness = 0.0;        ///< penalty stiffness per contact point [N/m]; 0: automatic from line properties

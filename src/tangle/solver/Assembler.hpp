@@ -116,6 +116,18 @@ class Assembler {
   void beginStep() {
     for (LoadContributor* c : m_contributors) c->beginStep();
   }
+  /// True if a contributor filters the Newton corrections of dynamics (LoadContributor::limitsDynamicIncrements).
+  bool limitsDynamicIncrements() const {
+    return std::any_of(m_contributors.begin(), m_contributors.end(),
+                       [](const LoadContributor* c) { return c->limitsDynamicIncrements(); });
+  }
+  /// The smallest fraction of the correction `fullIncrement` (full DOFs) those contributors accept.
+  double limitDynamicIncrement(const model::State& state, const VecX& fullIncrement) {
+    double alpha = 1.0;
+    for (LoadContributor* c : m_contributors)
+      if (c->limitsDynamicIncrements()) alpha = std::min(alpha, c->limitIncrement(state, fullIncrement));
+    return std::max(alpha, 0.0);
+  }
   /// Forwards LoadContributor::updateActiveSet; true if any contributor changed its active set.
   bool updateActiveSet() {
     bool changed = false;

@@ -116,6 +116,9 @@ class LoadContributor {
   /// `state`) that this contributor accepts (e.g. so that no two lines close by more than a fraction of
   /// their radii in one Newton iteration). 1 accepts the whole increment.
   virtual double limitIncrement(const model::State& /*state*/, const VecX& /*fullIncrement*/) { return 1.0; }
+  /// True if limitIncrement must also filter the Newton corrections of dynamics (a barrier that no iterate
+  /// may jump past); the dynamics then calls it with the correction of the displacements.
+  virtual bool limitsDynamicIncrements() const { return false; }
   /// Statics starts (or restarts, or reverts to its last converged increment) from `state`: the reference
   /// for rejectState until the next commitIncrement (a contributor that tracks crossings compares with it).
   virtual void beginStatic(const model::State& /*state*/) {}

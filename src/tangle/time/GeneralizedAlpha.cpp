@@ -686,6 +686,14 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
                                eqDofs[imax], delta.cwiseAbs().maxCoeff(),
                                (m_k * delta + r).norm() / r.norm());
     }
+    // A contact barrier (the distributed formulation) filters the correction so no iterate jumps past it.
+    if (m_assembler->limitsDynamicIncrements()) {
+      VecX full = VecX::Zero(nfull);
+      for (int i = 0; i < neq; ++i) full[eqDofs[i]] = m_delta[i];
+      const double alpha = m_assembler->limitDynamicIncrement(state, full);
+      if (alpha < 1.0) m_delta *= alpha;
+      if (m_debug && alpha < 1.0) std::cerr << fmt::format("      contact filter: correction x {:.3e}\n", alpha);
+    }
     onPart = applyCorrection(dq, partsAllowed);
   }
   // The norm in N and its node are for the message of a failed step (a converged step's largest

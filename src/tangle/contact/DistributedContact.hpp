@@ -1,0 +1,149 @@
+#pragma once
+/// @file DistributedContact.hpp
+/// The distributed formulation of line-to-line contact (`contact.formulation: distributed`): one code path
+/// for crossings, folds, wraps, kinks and parallel contact alike.
+///
+/// Geometry: every line, cable or beam, is measured on its C1 centreline (SmoothCentreline.hpp, a
+/// non-uniform Catmull-Rom curve through the nodes). A fold of a cable at a node is then a tight but smooth
+/// bend, and the distance from any point to a line is a C1 function of the positions: no corner acts like
+/// a sphere, no closest point hops from element to element, and no fold rule is needed.
+///
+/// Integration (Gauss-point-to-curve, Meier, Popp & Wall 2016 without the point-to-point blending of
+/// Meier, Wall & Popp 2017): for each element of line A near line B, the interval of the element where its
+/// centreline is closer to B's centreline than the sum of the radii is found (the minimum of the distance,
+/// then the two roots of gap(xi) = 0 on either side by the Illinois method); kPieces x kGaussPoints Gauss
+/// points on that interval carry the penalty law f(p) per unit length along the closest-point normal to B.
+/// The same is done with the roles of A and B exchanged, and each pass gets half the weight (a symmetric,
+/// unbiased formulation: at a crossing the two passes give the same integral, on parallel lines each
+/// integrates the same pressure). The interval's ends need no linearisation: the regularised law and its
+/// slope vanish there (Leibniz's rule leaves no boundary term). At a crossing the integral of the
+/// penetration over the short interval gives a force that grows like p^(3/2) (a Hertz-like law); at a fold,
+/// a wrap or along a length it is the pressure integrated over the contact length.
+///
+/// Law: BarrierPenalty (ContactLaw.hpp): regularised at first touch, linear with the stiffness per unit
+/// length k_line, and a barrier that grows without bound at half the radii, so the penetration is bounded by
+/// construction; Newton increments are filtered (limitIncrement) so no iterate jumps past the barrier.
+/// Dashpot per unit length c = 2 zeta sqrt(k_line mu) with mu the reduced mass per unit length of the two
+/// lines (restitution exact for a parallel contact of any length).
+///
+/// Friction: regularised Coulomb at every Gauss point, f_t = -mu_f f_n u_t / sqrt(|u_t|^2 + eps^2), with
+/// u_t the tangential relative velocity (dynamics, eps = contact.friction_velocity) or the tangential
+/// relative displacement of the two material points since the last converged state (statics, eps =
+/// kStaticSlipFraction of the radii), and its consistent (symmetric part of the) tangent.
+///
+/// Stiffness per unit length k_line = k / (rA + rB) [N/m^2], with k [N/m] contact.stiffness or, automatic,
+/// 0.1 EA_min / (kReferenceLengthFactor (rA + rB)) (the point formulation's 0.1 EA / L with the element length
+/// L replaced by a length that does not change with the mesh). Why k / radii: at a crossing the penetration
+/// p(u) = p - u^2 / (2 (rA + rB)) along the line integrates to F = (4/3) k_line sqrt(2 (rA + rB)) p^(3/2),
+/// whose slope dF/dp = 2 k_line sqrt(2 (rA + rB) p) equals k at p = (rA + rB) / 8: a crossing is as stiff as
+/// a point contact of stiffness k halfway into the linear range of the law; a parallel contact of length L
+/// is k L / (rA + rB) stiff.
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tangle/contact/ContactCandidates.hpp"
+#include "tangle/contact/ContactEvents.hpp"
+#include "tangle/contact/ContactLaw.hpp"
+#include "tangle/contact/SmoothCentreline.hpp"
+#include "tangle/model/Model.hpp"
+#include "tangle/solver/LoadContributor.hpp"
+
+namespace tangle::contact {
+
+/// Reference contact length as a multiple of the sum of the radii [-] (see the file comment).
+inline constexpr double kReferenceLengthFactor = 20.0;
+/// Tangential slip at which statics friction is fully mobilised, as a fraction of the radii [-].
+inline constexpr double kStaticSlipFraction = 1e-3;
+
+/// A Gauss point of the distributed contact at the current (trial) state: a point of line A's centreline
+/// (the line integrated along) and its closest point on line B's.
+struct ContactSample {
+  int lineA = 0, lineB = 0;        ///< line integrated along, line measured against
+  int elementA = 0, elementB = 0;  ///< element of the Gauss point; master element of its closest point
+  double xi = 0.0, t = 0.0;        ///< parameters on them [-]
+  CentrelineDistance curve;        ///< the Gauss point (held) and its projection (stencils, points)
+  Vec3 normal = Vec3::UnitZ();     ///< unit normal from B to A
+  double gap = 0.0;                ///< surface gap [m] (< 0: penetration)
+  double gapRate = 0.0;            ///< d gap / dt [m/s] (< 0 approaching)
+  double length = 0.0;             ///< integration weight: half (two passes) x Gauss weight x rest length [m]
+  double lineForce = 0.0;          ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
+  double slope = 0.0;              ///< d lineForce / d penetration [N/m^2]
+  double damping = 0.0;            ///< dashpot per unit length [N s/m^2]
+  Vec3 friction = Vec3::Zero();    ///< friction force per unit length on A [N/m]
+  Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d u_t, symmetric part, sign of a stiffness [N/m^2 or N s/m^3]
+  bool frictionOnVelocity = false;      ///< the tangent above is a damping (dynamics) or a stiffness (statics)
+  double arcA = 0.0, arcB = 0.0;   ///< arc lengths of the two points [m]
+  double radii = 0.0;              ///< sum of the contact radii [m]
+};
+
+/// The distributed contact (see the file comment). Owned by LineContact, which keeps the candidates, the
+/// events and the trial / commit protocol.
+class DistributedContact {
+ public:
+  /// @param radius contact radius per element [m]; @param zeta damping ratio of the dashpot [-]
+  DistributedContact(const model::Model& model, const model::ContactSpec& spec, const std::vector<double>& radius,
+                     double zeta);
+
+  /// Stiffness per unit length between two lines [N/m^2] (file comment).
+  double lineStiffness(int lineA, int lineB) const;
+  /// The law between two elements.
+  BarrierPenalty law(int elementA, int elementB) const;
+  /// Dashpot per unit length between two elements [N s/m^2].
+  double lineDamping(int elementA, int elementB) const;
+  /// Reduced mass per unit length of two elements' lines at a point [kg/m] (+inf if both are held).
+  double pairMassPerLength(int elementA, int elementB) const;
+
+  /// Finds the Gauss points of every candidate pair at `state`; `reference`: the positions of the last
+  /// converged state (statics friction). Dynamic: dashpot and velocity friction.
+  void findSamples(const model::State& state, const ContactCandidates& search, bool dynamic, bool relaxation,
+                   const std::vector<Vec3>& reference);
+  /// Adds the forces (and tangent) of the samples found by the last findSamples.
+  void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
+                 solver::SystemMatrix* matrix) const;
+  const std::vector<ContactSample>& samples() const { return m_samples; }
+
+  /// The largest fraction in (0, 1] of the increment `move` (per node [m]) from `state` such that no Gauss
+  /// point of the last findSamples (at `state`) closes by more than 80 % of what is left to the barrier's
+  /// limit (linearised: the step filter of a barrier method, no iterate jumps past the singularity), and no
+  /// pair of `pairs` (indices into the proxies of `search`) passes through or its chords close by more
+  /// than a quarter of the radii.
+  double limitIncrement(const model::State& state, const std::vector<Vec3>& move, const ContactCandidates& search,
+                        const std::vector<CandidatePair>& pairs) const;
+  /// Empty, or why the samples' state is not admissible (a Gauss point beyond the barrier's cap).
+  std::string rejectSamples() const;
+  /// Largest step [s] that resolves every moving contact patch with kImpactSteps steps (its duration from
+  /// the patch's stiffness, the barrier's slope included, and the lumped pair mass at its deepest point).
+  double impactStepLimit() const;
+  /// Event spots of the samples at a committed state reached with step dt.
+  std::vector<ContactSpot> spots(const model::State& state, double dt, bool dynamic) const;
+  /// Total force on line A from line B [N] of the samples, both passes.
+  Vec3 pairForce(int lineA, int lineB) const;
+
+ private:
+  /// Arc length [m] of the point at parameter w of an element.
+  double arcOf(int element, double w) const;
+  /// The stencil's value of a per-DOF field (velocity [m/s], acceleration [m/s^2]).
+  Vec3 stencilValue(const VecX& field, const CentrelineStencil& stencil) const;
+  /// The projection of slave element e's point at xi on master element f, started at t0.
+  CentrelineDistance project(const model::State& state, int slave, double xi, int master, double t0) const;
+  /// The interval of slave element e whose centreline lies within the radii of master element f's; false
+  /// if none.
+  bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi) const;
+  void addSample(const model::State& state, int slave, double xi, double weight, const std::vector<int>& masters,
+                 bool dynamic, bool relaxation, const std::vector<Vec3>& reference);
+  double nodeMass(int node) const;
+  /// Instantaneous effective mass of a centreline point with lumped node masses [kg].
+  double stencilMass(const CentrelineStencil& stencil) const;
+
+  const model::Model* m_model;
+  model::ContactSpec m_spec;
+  std::vector<double> m_radius;
+  double m_zeta;
+  std::vector<double> m_lineAxialStiffness;  ///< smallest EA per line [N]
+  std::vector<ContactSample> m_samples;
+};
+
+}  // namespace tangle::contact
