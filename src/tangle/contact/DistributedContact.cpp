@@ -25,13 +25,22 @@ constexpr double kGaussW[kPoints] = {0.3478548451374538, 0.6521451548625461, 0.6
                                      0.3478548451374538};
 /// Steps per impact duration (as the point formulation's LineContact::limitStep).
 constexpr double kImpactSteps = 40.0;
-/// Tolerance on an interval end's parameter [-]: the integrand vanishes with its slope there, so an error
-/// delta of the end changes the integral by O(delta^3).
-constexpr double kRootTolerance = 1e-7;
+/// Tolerance on an interval end's parameter [-]. The integrand vanishes with its slope there, so an error
+/// delta of the end changes the integral only by O(delta^3), but the Gauss points move with the end: at
+/// 1e-7 their forces moved by ~1e-4 N from iterate to iterate at random (a wire folded over another), above
+/// the Newton tolerance; the ends are found to round-off instead (Illinois converges superlinearly).
+constexpr double kRootTolerance = 1e-15;
 /// Largest closing of a pair in one Newton iteration, as a fraction of the sum of the radii (as statics'
 /// point formulation), and the fraction of what is left to the barrier's limit an iterate may close.
 constexpr double kClosingFraction = 0.25;
 constexpr double kBarrierFraction = 0.8;
+
+/// Curvature [1/m] of a centreline at a stencil: |c' x c''| / |c'|^3 (parametrisation-invariant).
+double curvature(const CentrelineStencil& st, const std::vector<Vec3>& x) {
+  const Vec3 c1 = st.tangent(x), c2 = st.secondDerivative(x);
+  const double speed = c1.norm();
+  return speed > 0.0 ? c1.cross(c2).norm() / (speed * speed * speed) : 0.0;
+}
 
 double reducedMass(double a, double b) {
   if (std::isinf(a)) return b;
@@ -46,6 +55,14 @@ DistributedContact::DistributedContact(const model::Model& model, const model::C
   m_lineAxialStiffness.assign(model.lines().size(), kInf);
   for (const model::LineElement& el : model.elements())
     m_lineAxialStiffness[el.line] = std::min(m_lineAxialStiffness[el.line], el.type->axialStiffness);
+}
+
+bool DistributedContact::bent(const model::State& state, int element, double radii) const {
+  // The curvature of the C1 piece at five points (it is largest at a node of a folded cable; the pieces
+  // of the neighbours meet it there with their own second derivative, so both are asked by their patches).
+  for (int i = 0; i <= 4; ++i)
+    if (curvature(centrelineStencil(*m_model, element, 0.25 * i, true), state.position) * radii >= 0.5) return true;
+  return false;
 }
 
 double DistributedContact::lineStiffness(int lineA, int lineB) const {
@@ -162,23 +179,26 @@ bool DistributedContact::contactInterval(const model::State& state, int slave, i
   // The root of gap between x0 (gap >= 0) and x1 (gap < 0) by the Illinois method (regula falsi that halves
   // the retained end's value: superlinear, bracketed).
   const auto root = [&](double x0, double g0, double x1, double g1) {
+    // g0, g1: the values used by the secant (the retained end's is halved); t0, t1: the true ones.
+    double t0 = g0, t1 = g1;
     int side = 0;
-    for (int i = 0; i < 60 && std::abs(x1 - x0) > kRootTolerance; ++i) {
+    for (int i = 0; i < 100 && std::abs(x1 - x0) > kRootTolerance && t0 != 0.0; ++i) {
       const double x = x1 - g1 * (x1 - x0) / (g1 - g0);
+      if (!(x > std::min(x0, x1) && x < std::max(x0, x1))) break;  // round-off: the bracket cannot shrink
       const double g = gap(x);
       if (g >= 0.0) {
         x0 = x;
-        g0 = g;
+        g0 = t0 = g;
         if (side == -1) g1 *= 0.5;
         side = -1;
       } else {
         x1 = x;
-        g1 = g;
+        g1 = t1 = g;
         if (side == 1) g0 *= 0.5;
         side = 1;
       }
     }
-    return 0.5 * (x0 + x1);
+    return std::abs(t0) <= std::abs(t1) ? x0 : x1;
   };
   const double gLo = xiMin > 0.0 ? gap(0.0) : gMin;
   lo = gLo < 0.0 ? 0.0 : root(0.0, gLo, xiMin, gMin);
@@ -225,7 +245,10 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   smp.normal = (best.pointA - best.pointB) / best.distance;
   smp.gap = gap;
   smp.radii = radii;
-  smp.length = weight;
+  const auto shareIt = m_shares.find({slave, elements[bestMaster].line});
+  smp.share = shareIt != m_shares.end() ? shareIt->second : 0.5;
+  if (smp.share <= 0.0) return;
+  smp.length = smp.share * weight;
   const Vec3 va = stencilValue(state.velocity, best.a), vb = stencilValue(state.velocity, best.b);
   smp.gapRate = smp.normal.dot(va - vb);
   const BarrierPenalty lawAB = law(slave, bestMaster);
@@ -277,14 +300,34 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
       Patch& patch = patches[{slave, elements[master].line}];
       patch.masters.push_back(master);
       double lo = 0.0, hi = 0.0;
-      const bool found = contactInterval(state, slave, master, lo, hi);
-      if (found) patch.intervals.emplace_back(lo, hi);
+      if (contactInterval(state, slave, master, lo, hi)) patch.intervals.emplace_back(lo, hi);
+    }
+  }
+  for (auto& [key, patch] : patches) {
+    std::sort(patch.masters.begin(), patch.masters.end());
+    patch.masters.erase(std::unique(patch.masters.begin(), patch.masters.end()), patch.masters.end());
+  }
+  if (!m_sharesFixed) {
+    // The passes' shares for this step (header): per patch in contact, whether its own element or one of
+    // the other line's elements near it is bent on the contact's scale.
+    m_sharesFixed = true;
+    std::map<int, bool> bentElement;
+    const auto isBent = [&](int e, double radii) {
+      const auto it = bentElement.find(e);
+      if (it != bentElement.end()) return it->second;
+      return bentElement[e] = bent(state, e, radii);
+    };
+    for (const auto& [key, patch] : patches) {
+      if (patch.intervals.empty() || patch.masters.empty()) continue;
+      const double radii = m_radius[key.first] + m_radius[patch.masters.front()];
+      const bool slaveBent = isBent(key.first, radii);
+      bool masterBent = false;
+      for (const int f : patch.masters) masterBent = masterBent || isBent(f, radii);
+      m_shares[key] = masterBent == slaveBent ? 0.5 : masterBent ? 0.0 : 1.0;
     }
   }
   for (auto& [key, patch] : patches) {
     if (patch.intervals.empty()) continue;
-    std::sort(patch.masters.begin(), patch.masters.end());
-    patch.masters.erase(std::unique(patch.masters.begin(), patch.masters.end()), patch.masters.end());
     // The union of the intervals found against each master element (where two meet, the integrand is zero
     // or both cover the same points: a merge changes the integral continuously).
     std::sort(patch.intervals.begin(), patch.intervals.end());
@@ -302,8 +345,8 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
         const double a = lo + (hi - lo) * piece / kPieces, b = lo + (hi - lo) * (piece + 1) / kPieces;
         for (int g = 0; g < kPoints; ++g) {
           const double xi = 0.5 * (a + b) + 0.5 * (b - a) * kGaussX[g];
-          // Half (two passes) x Gauss weight x d(arc)/d(xi) on the piece.
-          const double weight = 0.5 * kGaussW[g] * 0.5 * (b - a) * restLength;
+          // Gauss weight x d(arc)/d(xi) on the piece (the pass's share is applied in addSample).
+          const double weight = kGaussW[g] * 0.5 * (b - a) * restLength;
           addSample(state, slave, xi, weight, patch.masters, dynamic, relaxation, reference);
         }
       }

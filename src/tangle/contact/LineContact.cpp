@@ -514,6 +514,7 @@ bool LineContact::sameContact(const std::pair<int, int>& key, const Vec3& pA, co
 }
 
 void LineContact::beginStep() {
+  if (m_distributed) m_distributed->beginStep();
   m_pendingAnchors.clear();
   m_pendingPointAnchors.clear();
   m_sticky.clear();

@@ -144,6 +144,7 @@ class LineContact final : public solver::LoadContributor {
   void commitIncrement(const model::State& state) override;
   solver::LoadSource source() const override { return solver::LoadSource::Contact; }
   void beginStatic(const model::State& state) override {
+    if (m_distributed) m_distributed->beginStep();
     m_reference = state.position;
     m_pendingAnchors.clear();
     m_pendingPointAnchors.clear();

@@ -237,17 +237,22 @@ INSTANTIATE_TEST_SUITE_P(Issue29, DrapeDynamics, ::testing::Values(DrapeCase{1.0
 INSTANTIATE_TEST_SUITE_P(DISABLED_Issue29WithFriction, DrapeDynamics,
                          ::testing::Values(DrapeCase{1.0, 0.3}, DrapeCase{0.5, 0.3}), caseName);
 
-// The distributed formulation (issue 43): the same drop, the short wire rounded to its C1 centreline. e = 1
-// on 4 bars runs through. Known failures, run by ctest as expected to fail (tests/CMakeLists.txt,
-// validation.distributed_drape_expected_fail) so that it says when they start to pass; measured on
-// 2026-11-29: e = 0.5 on 4 bars stops at t = 6.29 s, on 40 bars at 0.84 s, and with mu = 0.3 at 0.72 s, each
-// with "Newton did not converge even with the minimum time step" at the taut wire's middle node (3.5 N,
-// 109 N, 1608 N): a force that still jumps somewhere within an iteration (not found yet: the projection
-// on the master line and the step filter were ruled out).
+// The distributed formulation (issue 43): the same drop, the short wire rounded to its C1 centreline; e = 1 on
+// 4 bars passes every check. Known failures, run by ctest as expected to fail (tests/CMakeLists.txt,
+// validation.distributed_drape_expected_fail) so that it says when they start to pass; measured on 2026-11-29:
+// - e = 0.5, 4 bars: runs its 12 s, but the first event loses 0.56 J where (1 - e^2) of the 3.59 J impact is
+//   2.69 J: the dashpot per unit length, 2 zeta sqrt(k_line mu), is calibrated for a parallel contact; at a
+//   crossing the contact is a few centimetres long and the mass is the nodes', so the damping ratio of the
+//   impact is about sqrt(mu L_contact / M) = 0.17 of zeta (restitution ~0.9). Wants a dashpot per patch from
+//   the patch's stiffness and mass.
+// - mu = 0.3 (e = 1 and 0.5): both run their 12 s (20 and 17 s CPU) but the first impact's Eq. 5 mass, 0.783
+//   kg, is reported below one element's reduced mass, 0.800 kg (an energy warning).
+// - 40 bars (e = 0.5): stops at t = 0.84 s, Newton at the minimum step: the C1 curve of a hairpin fold of
+//   0.1 m bars round a 20 mm wire wiggles, and the gap along one element has several dips.
 INSTANTIATE_TEST_SUITE_P(Distributed, DrapeDynamics, ::testing::Values(DrapeCase{1.0, 0.0, true, 4}), caseName);
 INSTANTIATE_TEST_SUITE_P(DISABLED_DistributedKnownFailures, DrapeDynamics,
-                         ::testing::Values(DrapeCase{0.5, 0.0, true, 4}, DrapeCase{0.5, 0.0, true, 40},
-                                           DrapeCase{0.5, 0.3, true, 4}),
+                         ::testing::Values(DrapeCase{0.5, 0.0, true, 4}, DrapeCase{1.0, 0.3, true, 4},
+                                           DrapeCase{0.5, 0.3, true, 4}, DrapeCase{0.5, 0.0, true, 40}),
                          caseName);
 
 }  // namespace
