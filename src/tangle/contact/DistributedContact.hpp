@@ -29,8 +29,8 @@
 /// Law: BarrierPenalty (ContactLaw.hpp): regularised at first touch, linear with the stiffness per unit
 /// length k_line, and a barrier that grows without bound at half the radii, so the penetration is bounded by
 /// construction; Newton increments are filtered (limitIncrement) so no iterate jumps past the barrier.
-/// Dashpot per unit length c = 2 zeta sqrt(k_line mu) with mu the reduced mass per unit length of the two
-/// lines (restitution exact for a parallel contact of any length).
+/// Dashpot per contact patch (finishSamples): damping ratio zeta against the patch's stiffness and mass,
+/// shared by the Gauss points in proportion to their stiffness.
 ///
 /// Friction: regularised Coulomb at every Gauss point, f_t = -mu_f f_n u_t / sqrt(|u_t|^2 + eps^2), with
 /// u_t the tangential relative velocity (dynamics, eps = contact.friction_velocity) or the tangential
@@ -78,7 +78,10 @@ struct ContactSample {
   double share = 0.5;              ///< this pass's share of the contact [-] (0, 1/2 or 1: file comment)
   double lineForce = 0.0;          ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
   double slope = 0.0;              ///< d lineForce / d penetration [N/m^2]
-  double damping = 0.0;            ///< dashpot per unit length [N s/m^2]
+  double damping = 0.0;            ///< dashpot per unit length [N s/m^2] (its patch's, DistributedContact::finishSamples)
+  double spring = 0.0;             ///< the law's force per unit length f(p) [N/m]
+  double pairMass = 0.0;           ///< lumped pair mass at the two points [kg] (+inf if both are held)
+  Vec3 relative = Vec3::Zero();    ///< relative motion of A against B friction acts on [m/s dynamics, m statics]
   Vec3 friction = Vec3::Zero();    ///< friction force per unit length on A [N/m]
   Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d u_t, symmetric part, sign of a stiffness [N/m^2 or N s/m^3]
   bool frictionOnVelocity = false;      ///< the tangent above is a damping (dynamics) or a stiffness (statics)
@@ -98,8 +101,6 @@ class DistributedContact {
   double lineStiffness(int lineA, int lineB) const;
   /// The law between two elements.
   BarrierPenalty law(int elementA, int elementB) const;
-  /// Dashpot per unit length between two elements [N s/m^2].
-  double lineDamping(int elementA, int elementB) const;
   /// Reduced mass per unit length of two elements' lines at a point [kg/m] (+inf if both are held).
   double pairMassPerLength(int elementA, int elementB) const;
 
@@ -143,8 +144,10 @@ class DistributedContact {
   /// if none.
   bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi) const;
   void addSample(const model::State& state, int slave, double xi, double weight, const std::vector<int>& masters,
-                 bool dynamic, bool relaxation, const std::vector<Vec3>& reference);
+                 bool dynamic, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
+  /// The dashpots per contact patch, the normal forces and the friction of the samples just found.
+  void finishSamples(bool dashpot);
   /// Instantaneous effective mass of a centreline point with lumped node masses [kg].
   double stencilMass(const CentrelineStencil& stencil) const;
 
