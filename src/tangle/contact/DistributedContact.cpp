@@ -497,8 +497,10 @@ double DistributedContact::impactStepLimit() const {
   // Per pair of lines in contact: the patch's stiffness K = sum of the Gauss points' slopes x lengths and
   // the lumped pair mass M at its deepest point (a crossing engages the nodes there; a parallel contact of
   // length L has K = k_line L against the nodes' mass). A patch whose relative normal motion is dynamically
-  // significant (|v| sqrt(M / K) above a thousandth of the radii) has its period resolved with
-  // kImpactSteps steps.
+  // significant (|v| sqrt(M / K), the penetration of a rigid impact at that speed, above a hundredth of the
+  // radii) has its period resolved with kImpactSteps steps. (A thousandth kept resolving the slow normal
+  // motion of sustained contacts: the drilling-riser example took 136 000 steps and 78.7 s CPU against
+  // 20 200 steps and 6.7 s, with the same impact energy within 1 % and peak force within 0.01 %.)
   struct Patch {
     double stiffness = 0.0, mass = 0.0, speed = 0.0, radii = 0.0, deepest = kInf;
   };
@@ -517,7 +519,7 @@ double DistributedContact::impactStepLimit() const {
   double limit = kInf;
   for (const auto& [key, patch] : patches) {
     if (!std::isfinite(patch.mass) || patch.mass <= 0.0 || patch.stiffness <= 0.0) continue;
-    if (patch.speed * std::sqrt(patch.mass / patch.stiffness) <= 1e-3 * patch.radii) continue;
+    if (patch.speed * std::sqrt(patch.mass / patch.stiffness) <= 1e-2 * patch.radii) continue;
     limit = std::min(limit, contactDuration(patch.stiffness, patch.mass, m_zeta) / kImpactSteps);
   }
   return limit;
