@@ -428,7 +428,7 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
 
 double DistributedContact::limitIncrement(const model::State& state, const std::vector<Vec3>& move,
                                           const ContactCandidates& search,
-                                          const std::vector<CandidatePair>& pairs) const {
+                                          const std::vector<CandidatePair>& pairs, bool strict) const {
   double alpha = 1.0;
   // The barrier, on the measure it acts on (the C1 centrelines; a kinked cable's chords lie deeper): at
   // every Gauss point of this iterate the change of the distance, linear in the increment (grad d = w_k n),
@@ -469,12 +469,14 @@ double DistributedContact::limitIncrement(const model::State& state, const std::
       return !(inside && judged &&
                (before.closest0 - before.closest1).dot(d.closest0 - d.closest1) < 0.0);
     };
-    // A chord test is a guard against tunnelling between Gauss points, not the barrier: one that no short
-    // fraction satisfies (a chord degenerate against the other, a fold's chord near the line) is left
-    // out rather than stopping the iteration with a zero correction.
+    // In dynamics a chord test is a guard against tunnelling between Gauss points, not the barrier: one that
+    // no short fraction satisfies (a chord degenerate against the other, a fold's chord near the line) is
+    // left out rather than stopping the iteration with a zero correction. Statics' increments can be
+    // thousands of times the radii (a cable's first Newton step): there it is halved as far as it takes.
     double trial = alpha;
-    for (int i = 0; i < 10 && !admissible(trial); ++i) trial *= 0.5;
-    if (admissible(trial)) alpha = trial;
+    const int halvings = strict ? 40 : 10;
+    for (int i = 0; i < halvings && !admissible(trial); ++i) trial *= 0.5;
+    if (strict || admissible(trial)) alpha = trial;
   }
   return alpha;
 }

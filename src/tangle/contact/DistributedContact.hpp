@@ -121,8 +121,10 @@ class DistributedContact {
   /// limit (linearised: the step filter of a barrier method, no iterate jumps past the singularity), and no
   /// pair of `pairs` (indices into the proxies of `search`) passes through or its chords close by more
   /// than a quarter of the radii.
+  /// strict (statics): the chord tests are halved until they hold; otherwise (dynamics) a chord test no
+  /// fraction down to 1/1024 satisfies is left out.
   double limitIncrement(const model::State& state, const std::vector<Vec3>& move, const ContactCandidates& search,
-                        const std::vector<CandidatePair>& pairs) const;
+                        const std::vector<CandidatePair>& pairs, bool strict) const;
   /// Empty, or why the samples' state is not admissible (a Gauss point beyond the barrier's cap).
   std::string rejectSamples() const;
   /// Largest step [s] that resolves every moving contact patch with kImpactSteps steps (its duration from

@@ -665,7 +665,8 @@ void LineContact::applyImpulse(model::State& state, const ContactPoint& c, doubl
 std::string LineContact::rejectStep(const model::State& before, const model::State& after) {
   const auto& elements = m_model->elements();
   if (m_distributed) {
-    // The samples of the last assembly are those of `after` (the converged iterate).
+    // At `after` itself (the last assembly may have been of a trial the solver did not keep).
+    m_distributed->findSamples(after, m_search, m_lastDynamic, false, m_reference.size() == after.position.size() ? m_reference : after.position);
     if (std::string why = m_distributed->rejectSamples(); !why.empty()) return why;
   }
   for (const CandidatePair& cp : m_search.candidates()) {

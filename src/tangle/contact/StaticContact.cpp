@@ -47,7 +47,7 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   if (m_distributed && m_lastDynamic) {
     // Dynamics: this step's candidates (found at its first assembly; no contact arises outside them within
     // the step), so the parts of the model away from them stay valid.
-    return m_distributed->limitIncrement(state, move, m_search, m_search.candidates());
+    return m_distributed->limitIncrement(state, move, m_search, m_search.candidates(), false);
   }
   // Candidates: pairs whose boxes, grown by the largest node move, come within the radii.
   const std::vector<CandidatePair> pairs = m_search.pairsWithin(state, m_search.maxRadius() + largest);
@@ -55,7 +55,7 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   // The pairs' distances at `state` are recomputed for every trial fraction instead of stored: a large
   // increment makes most element pairs of a many-line model candidates (4.6 million for 150 lines of 60
   // elements), and a stored 100-byte record per pair was 0.6 GB (issue 30).
-  if (m_distributed) return m_distributed->limitIncrement(state, move, m_search, pairs);
+  if (m_distributed) return m_distributed->limitIncrement(state, move, m_search, pairs, true);
   const auto& proxies = m_search.proxies();
   auto admissible = [&](double alpha) {
     for (const CandidatePair& cp : pairs) {
@@ -83,7 +83,8 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
 std::string LineContact::rejectState(const model::State& state) {
   if (m_reference.empty()) m_reference = m_model->initialState().position;
   if (m_distributed) {
-    // The samples of the last assembly are those of the converged state.
+    // At `state` itself (the last assembly may have been of a trial the solver did not keep).
+    m_distributed->findSamples(state, m_search, false, false, m_reference);
     if (std::string why = m_distributed->rejectSamples(); !why.empty()) return why;
   }
   const auto& elements = m_model->elements();
