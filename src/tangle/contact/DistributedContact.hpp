@@ -11,8 +11,10 @@
 /// Integration (Gauss-point-to-curve, Meier, Popp & Wall 2016 without the point-to-point blending of
 /// Meier, Wall & Popp 2017): for each element of line A near line B, the interval of the element where its
 /// centreline is closer to B's centreline than the sum of the radii is found (the minimum of the distance,
-/// then the two roots of gap(xi) = 0 on either side by the Illinois method); kPieces x kGaussPoints Gauss
-/// points on that interval carry the penalty law f(p) per unit length along the closest-point normal to B.
+/// then the two roots of gap(xi) = 0 on either side by the Illinois method); 4 Gauss points on each piece
+/// of that interval between the points where the integrand is not smooth (where the penetration passes
+/// the law's p0 and p1) carry the penalty law f(p) per unit length along the
+/// closest-point normal to B.
 /// The same is done with the roles of A and B exchanged, and each pass gets a share of the weight (a
 /// symmetric, unbiased formulation: at a crossing the two passes give the same integral, on parallel lines
 /// each integrates the same pressure). The share is half, except where one line is bent on the contact's
@@ -21,8 +23,8 @@
 /// nearest one changes from leg to leg within an iteration (a force jump: measured 105 N of 5 kN on a wire
 /// folded over another), so that pass gets nothing and the pass along the bent line all. The shares are
 /// decided per (element, other line) at the first assembly of a step or load increment and held through
-/// its iterations (beginStep), so Newton sees a smooth force. The interval's ends need no linearisation: the regularised law and its
-/// slope vanish there (Leibniz's rule leaves no boundary term). At a crossing the integral of the
+/// its iterations (beginStep), so Newton sees a smooth force. The interval's ends need no linearisation:
+/// the regularised law and its slope vanish there (Leibniz's rule leaves no boundary term). At a crossing the integral of the
 /// penetration over the short interval gives a force that grows like p^(3/2) (a Hertz-like law); at a fold,
 /// a wrap or along a length it is the pressure integrated over the contact length.
 ///
@@ -142,9 +144,16 @@ class DistributedContact {
   Vec3 stencilValue(const VecX& field, const CentrelineStencil& stencil) const;
   /// The projection of slave element e's point at xi on master element f, started at t0.
   CentrelineDistance project(const model::State& state, int slave, double xi, int master, double t0) const;
+  /// A contact interval of a slave element's parameter, with the points inside it where the integrand is
+  /// not smooth (where the penetration passes the law's p0 and p1).
+  struct Interval {
+    double lo = 0.0, hi = 0.0;
+    std::vector<double> cuts;
+  };
   /// The interval of slave element e whose centreline lies within the radii of master element f's; false
   /// if none.
-  bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi) const;
+  bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi,
+                       std::vector<double>& cuts) const;
   void addSample(const model::State& state, int slave, double xi, double weight, const std::vector<int>& masters,
                  bool dynamic, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <charconv>
 #include <fstream>
@@ -188,7 +189,9 @@ class DeckParser {
 
   int integer(int line, const std::string& key, const std::string& word) const {
     const double v = number(line, key, word);
-    if (v != static_cast<double>(static_cast<int>(v)))
+    // Range first: converting a double outside int's range is undefined (the reader fuzzer found 7.8e125).
+    constexpr double kLargest = 2147483647.0;
+    if (!(std::abs(v) <= kLargest) || v != std::floor(v))
       fail(line, key, fmt::format("expected an integer, got '{}'", word));
     return static_cast<int>(v);
   }

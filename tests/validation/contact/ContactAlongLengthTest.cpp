@@ -153,8 +153,8 @@ TEST(ContactAlongLength, TautStringRestingOnARigidSupportMatchesTheClosedForm) {
 
 // The distributed formulation (issue 43; the issue's hose on a pipeline in statics), the same checks.
 // Measured 2026-11-29: tension 20 021 N (closed form 20 039.5), load per length 980.97 N/m (q = 980.66),
-// tangency 4.442 m (4.549 m); 90 s CPU against 0.045 s for the point formulation (theory 9.11: the statics of
-// the distributed formulation is slow, its Newton modes fail from this start shape and the continuation creeps).
+// tangency 4.442 m (4.549 m); 0.45 s CPU (90 s before the Gauss points' pieces were cut where the penetration
+// passes the law's p0 and p1: the tangent was off and Newton crept).
 TEST(ContactAlongLength, DistributedTautStringRestingOnARigidSupportMatchesTheClosedForm) { restingString(true); }
 
 // Two tensioned strings side by side pressed together by the same drag (current across them): along
