@@ -6,7 +6,8 @@
 /// lines: crossing at right angles, the distance from a point of A at offset u to B's axis is
 /// sqrt(d^2 + u^2) (d the axes' distance), integrated here by the composite trapezoidal rule on 200 000
 /// intervals; lying side by side over a common length L, the force is f(p) L. The implementation finds the
-/// contact interval by root finding and integrates with 2 x 4 Gauss points per interval and per pass.
+/// contact interval by root finding, cuts it where the penetration passes the law's p0 and p1, and integrates with
+/// 4 Gauss points per piece and per pass.
 
 #include <gtest/gtest.h>
 
