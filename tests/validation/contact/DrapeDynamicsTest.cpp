@@ -253,7 +253,8 @@ INSTANTIATE_TEST_SUITE_P(DISABLED_Issue29WithFriction, DrapeDynamics,
 // The distributed formulation (issue 43): the same drop, every line on its C1 centreline; e = 1 and 0.5 on 4
 // bars and e = 0.5 on 40 bars pass every check (40 bars: about 2 min CPU, the impacts of a 0.1 m hairpin round
 // a 20 mm wire resolved step by step). Known failures, run by ctest as expected to fail (tests/CMakeLists.txt,
-// validation.distributed_drape_expected_fail) so that it says when they start to pass; measured on
+// validation.distributed_drape_expected_fail; left out of the discovered tests by TEST_FILTER) so that it says
+// when they start to pass; measured on
 // 2026-11-29: with mu = 0.3 (e = 1 and 0.5) both run their 12 s and the energy balances hold with friction's
 // work counted, but the first impact's Eq. 5 mass, 0.783 kg, is 2 % below one element's reduced mass, 0.800 kg
 // (the test's bound: an energy warning).
@@ -261,7 +262,7 @@ INSTANTIATE_TEST_SUITE_P(Distributed, DrapeDynamics,
                          ::testing::Values(DrapeCase{1.0, 0.0, true, 4}, DrapeCase{0.5, 0.0, true, 4},
                                            DrapeCase{0.5, 0.0, true, 40}),
                          caseName);
-INSTANTIATE_TEST_SUITE_P(DISABLED_DistributedKnownFailures, DrapeDynamics,
+INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, DrapeDynamics,
                          ::testing::Values(DrapeCase{1.0, 0.3, true, 4}, DrapeCase{0.5, 0.3, true, 4}), caseName);
 
 }  // namespace
