@@ -103,14 +103,6 @@ double DistributedContact::arcOf(int element, double w) const {
   return l.arcLength[i] + w * (l.arcLength[i + 1] - l.arcLength[i]);
 }
 
-Vec3 DistributedContact::stencilValue(const VecX& field, const CentrelineStencil& stencil) const {
-  const model::DofMap& dofs = m_model->dofs();
-  Vec3 v = Vec3::Zero();
-  for (int k = 0; k < 4; ++k)
-    if (stencil.N[k] != 0.0) v += stencil.N[k] * field.segment<3>(dofs.firstDof(stencil.node[k]));
-  return v;
-}
-
 CentrelineDistance DistributedContact::project(const model::State& state, int slave, double xi, int master,
                                                double t0) const {
   // Projected Newton on V(t) = |x - c(t)|^2 / 2 over t in [0, 1] exactly: the master line is then the union
@@ -256,7 +248,7 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   smp.share = shareIt != m_shares.end() ? shareIt->second : 0.5;
   if (smp.share <= 0.0) return;
   smp.length = smp.share * weight;
-  const Vec3 va = stencilValue(state.velocity, best.a), vb = stencilValue(state.velocity, best.b);
+  const Vec3 va = best.a.value(m_model->dofs(), state.velocity), vb = best.b.value(m_model->dofs(), state.velocity);
   smp.gapRate = smp.normal.dot(va - vb);
   const BarrierPenalty lawAB = law(slave, bestMaster);
   const double p = -gap;
@@ -578,13 +570,13 @@ std::vector<ContactSpot> DistributedContact::spots(const model::State& state, do
     // Approach speed before the step (trapezoidal change over the step, as the point formulation).
     const double accelerationRate =
         dynamic && state.acceleration.size() == state.velocity.size()
-            ? smp.normal.dot(stencilValue(state.acceleration, smp.curve.a) - stencilValue(state.acceleration, smp.curve.b))
+            ? smp.normal.dot(smp.curve.a.value(m_model->dofs(), state.acceleration) - smp.curve.b.value(m_model->dofs(), state.acceleration))
             : 0.0;  // the rates are the same seen from either line
     spot.approachSpeed = std::max(0.0, -(smp.gapRate - 0.5 * dt * accelerationRate));
     spot.gap = smp.gap;
     spot.pairMass = pairMassPerLength(smp.elementA, smp.elementB) * smp.length;
     spot.stiffness = lineStiffness(smp.lineA, smp.lineB) * smp.length;
-    const Vec3 va = stencilValue(state.velocity, smp.curve.a), vb = stencilValue(state.velocity, smp.curve.b);
+    const Vec3 va = smp.curve.a.value(m_model->dofs(), state.velocity), vb = smp.curve.b.value(m_model->dofs(), state.velocity);
     spot.velocityBeforeA = spot.velocityA = swapped ? vb : va;
     spot.velocityBeforeB = spot.velocityB = swapped ? va : vb;
     spot.radii = smp.radii;

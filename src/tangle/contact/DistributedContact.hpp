@@ -140,8 +140,6 @@ class DistributedContact {
  private:
   /// Arc length [m] of the point at parameter w of an element.
   double arcOf(int element, double w) const;
-  /// The stencil's value of a per-DOF field (velocity [m/s], acceleration [m/s^2]).
-  Vec3 stencilValue(const VecX& field, const CentrelineStencil& stencil) const;
   /// The projection of slave element e's point at xi on master element f, started at t0.
   CentrelineDistance project(const model::State& state, int slave, double xi, int master, double t0) const;
   /// A contact interval of a slave element's parameter, with the points inside it where the integrand is

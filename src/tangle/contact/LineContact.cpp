@@ -127,11 +127,7 @@ Vec3 LineContact::pointValue(const VecX& field, int element, double w) const {
 }
 
 Vec3 LineContact::stencilValue(const VecX& field, const CentrelineStencil& stencil) const {
-  const model::DofMap& dofs = m_model->dofs();
-  Vec3 v = Vec3::Zero();
-  for (int k = 0; k < 4; ++k)
-    if (stencil.N[k] != 0.0) v += stencil.N[k] * field.segment<3>(dofs.firstDof(stencil.node[k]));
-  return v;
+  return stencil.value(m_model->dofs(), field);
 }
 
 double LineContact::stencilMass(const CentrelineStencil& stencil) const {

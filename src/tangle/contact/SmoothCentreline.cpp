@@ -23,6 +23,13 @@ Vec3 CentrelineStencil::secondDerivative(const std::vector<Vec3>& x) const {
   return p;
 }
 
+Vec3 CentrelineStencil::value(const model::DofMap& dofs, const VecX& field) const {
+  Vec3 v = Vec3::Zero();
+  for (int k = 0; k < 4; ++k)
+    if (N[k] != 0.0) v += N[k] * field.segment<3>(dofs.firstDof(node[k]));
+  return v;
+}
+
 bool hasSmoothCentreline(const model::Model& model, int element, bool smoothCables) {
   return smoothCables || model.elements()[element].type->isBeam();
 }

@@ -46,6 +46,8 @@ struct CentrelineStencil {
   Vec3 point(const std::vector<Vec3>& x) const;      ///< c(s) [m]
   Vec3 tangent(const std::vector<Vec3>& x) const;    ///< dc/ds [m]
   Vec3 secondDerivative(const std::vector<Vec3>& x) const;  ///< d2c/ds2 [m]
+  /// The same combination of a per-DOF field (velocity [m/s], acceleration [m/s^2]).
+  Vec3 value(const model::DofMap& dofs, const VecX& field) const;
 };
 
 /// True if `element` belongs to a line measured on the smooth centreline (a beam), false for a cable;
