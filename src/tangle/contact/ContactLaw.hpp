@@ -87,10 +87,11 @@ struct BarrierPenalty {
   double barrierStart = 0.0;  ///< p1 [m] (> p0)
   double limit = 0.0;         ///< pmax [m] (> p1)
 
-  /// Barrier law of a pair with contact radii summing to `radii` [m]: p0 = 1 %, p1 = 25 %, pmax = 50 % of
-  /// the radii (the point formulation refused overlaps beyond half the radii; the same bound here).
-  static BarrierPenalty forRadii(double stiffness, double radii) {
-    return {stiffness, 0.01 * radii, 0.25 * radii, 0.5 * radii};
+  /// Barrier law of a pair whose penetration scale is D [m] (DistributedContact: the sum of the contact
+  /// radii): p0 = 1 %, p1 = 25 %, pmax = 50 % of D (the point formulation refused overlaps beyond half the
+  /// radii; the same bound here).
+  static BarrierPenalty forScale(double stiffness, double scale) {
+    return {stiffness, 0.01 * scale, 0.25 * scale, 0.5 * scale};
   }
   double cap() const { return limit - 0.05 * (limit - barrierStart); }
   bool beyondCap(double p) const { return p >= cap(); }

@@ -21,7 +21,10 @@
 /// scale (a fold or a wrap: radius of curvature below twice the contact distance, kappa R >= 1/2) and the
 /// other is not: a point of the straight line inside the fold has a nearest point on each leg, and the
 /// nearest one changes from leg to leg within an iteration (a force jump: measured 105 N of 5 kN on a wire
-/// folded over another), so that pass gets nothing and the pass along the bent line all. The shares are
+/// folded over another), so that pass gets nothing and the pass along the bent line all. Between
+/// (1/4 <= kappa R <= 1/2) the shares move continuously: 1/2 + (b_slave - b_master) / 2 with b the
+/// bentness (a smoothstep of kappa R), so a share never jumps from step to step as a bend tightens (a jump
+/// 0.5 -> 1 pumped a wire folding over another at the minimum step until it passed the barrier's cap). The shares are
 /// decided per (element, other line) at the first assembly of a step or load increment and held through
 /// its iterations (beginStep), so Newton sees a smooth force. The interval's ends need no linearisation:
 /// the regularised law and its slope vanish there (Leibniz's rule leaves no boundary term). At a crossing the integral of the
@@ -30,7 +33,8 @@
 ///
 /// Law: BarrierPenalty (ContactLaw.hpp): regularised at first touch, linear with the stiffness per unit
 /// length k_line, and a barrier that grows without bound at half the radii, so the penetration is bounded by
-/// construction; Newton increments are filtered (limitIncrement) so no iterate jumps past the barrier.
+/// construction; Newton increments, and each step's predictor, are filtered (limitIncrement) so no iterate
+/// jumps past the barrier.
 /// Dashpot per contact patch (finishSamples): damping ratio zeta against the patch's stiffness and mass,
 /// shared by the Gauss points in proportion to their stiffness.
 ///
@@ -101,6 +105,9 @@ class DistributedContact {
 
   /// Stiffness per unit length between two lines [N/m^2] (file comment).
   double lineStiffness(int lineA, int lineB) const;
+  /// The point stiffness k between two lines [N/m]: contact.stiffness or the automatic one (file comment);
+  /// a crossing's stiffness at the penetration (rA + rB) / 8.
+  double pointStiffness(int lineA, int lineB) const;
   /// The law between two elements.
   BarrierPenalty law(int elementA, int elementB) const;
   /// Reduced mass per unit length of two elements' lines at a point [kg/m] (+inf if both are held).
@@ -130,7 +137,7 @@ class DistributedContact {
   /// Empty, or why the samples' state is not admissible (a Gauss point beyond the barrier's cap).
   std::string rejectSamples() const;
   /// Largest step [s] that resolves every moving contact patch with kImpactSteps steps (its duration from
-  /// the patch's stiffness, the barrier's slope included, and the lumped pair mass at its deepest point).
+  /// the patch's stiffness, the barrier's slope included, and its mass, patchMass).
   double impactStepLimit() const;
   /// Event spots of the samples at a committed state reached with step dt.
   std::vector<ContactSpot> spots(const model::State& state, double dt, bool dynamic) const;
@@ -159,6 +166,11 @@ class DistributedContact {
   void finishSamples(bool dashpot);
   /// Instantaneous effective mass of a centreline point with lumped node masses [kg].
   double stencilMass(const CentrelineStencil& stencil) const;
+  /// The samples grouped in contact patches: one pair of lines, Gauss points of both passes within four
+  /// radii of each other along the lower-index line (indices into m_samples).
+  std::vector<std::vector<int>> patches() const;
+  /// Mass taking part in a patch's normal motion [kg] (finishSamples).
+  double patchMass(const std::vector<int>& patch) const;
 
   const model::Model* m_model;
   model::ContactSpec m_spec;
@@ -169,8 +181,9 @@ class DistributedContact {
   /// Share of the pass along element (key.first) against line key.second, held through a step.
   std::map<std::pair<int, int>, double> m_shares;
   bool m_sharesFixed = false;
-  /// Whether an element's C1 piece bends with kappa R >= 1/2 for the contact distance R [m].
-  bool bent(const model::State& state, int element, double radii) const;
+  /// How bent an element's C1 piece is on the scale of the contact distance R [m], in [0, 1]: 0 where its
+  /// largest kappa R <= 1/4, 1 where >= 1/2 (a fold or a wrap), a smoothstep between.
+  double bentness(const model::State& state, int element, double radii) const;
 };
 
 }  // namespace tangle::contact

@@ -610,10 +610,10 @@ double LineContact::limitStep(const model::State& state) {
       if (!std::isfinite(toTouch)) continue;
       const double touchSpeed = closing + closingAcceleration * toTouch;  // [m/s]
       const double ma = lumpedMass(a.element, d.s), mb = lumpedMass(b.element, d.t);
-      // Point formulation: the lumped pair mass and the point stiffness; distributed: the lumped pair mass
-      // and the stiffness of a crossing halfway into the law's linear range, k_line (rA + rB).
+      // The lumped pair mass and the point stiffness (distributed: a crossing's stiffness at the law's
+      // reference penetration, DistributedContact::pointStiffness).
       const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
-      const double k = m_distributed ? m_distributed->lineStiffness(a.line, b.line) * radii : stiffness(a.line, b.line);
+      const double k = m_distributed ? m_distributed->pointStiffness(a.line, b.line) : stiffness(a.line, b.line);
       if (std::isfinite(m) && touchSpeed * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius)) {
         const double impactStep = contactDuration(k, m, m_zeta) / kImpactSteps;
         const double firstStep = impactStep / 16.0;

@@ -473,6 +473,16 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   // Other constrained DOFs stay where they are.
   for (const int dof : m_constrainedDofs)
     if (!m_prescribedDof[dof]) dq[dof] = 0.0;
+  // A contact barrier filters the predictor too: extrapolated over a step much longer than an impact, it
+  // can carry a line through another (a 20 m/s bar 1 m past a wire in one 0.05 s step: TunnellingTest),
+  // where no corrected iterate finds the way back. The free DOFs' increment is shortened; Newton then
+  // starts on the right side of every contact.
+  if (m_assembler->limitsDynamicIncrements()) {
+    const double alpha = m_assembler->limitDynamicIncrement(start, dq);
+    if (alpha < 1.0)
+      for (int i = 0; i < neq; ++i) dq[eqDofs[i]] *= alpha;
+    if (m_debug && alpha < 1.0) std::cerr << fmt::format("    contact filter: predictor x {:.3e}\n", alpha);
+  }
 
   const double mf =
       (1.0 - p.alphaM) / (p.beta * dt * dt) + rayleighAlpha * (1.0 - p.alphaF) * p.gamma / (p.beta * dt);

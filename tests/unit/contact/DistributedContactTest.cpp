@@ -22,7 +22,7 @@ namespace tangle::contact {
 namespace {
 
 TEST(BarrierPenalty, IsContinuousMonotonicAndUnboundedAtTheLimit) {
-  const BarrierPenalty law = BarrierPenalty::forRadii(1e6, 0.2);
+  const BarrierPenalty law = BarrierPenalty::forScale(1e6, 0.2);
   EXPECT_DOUBLE_EQ(law.value(0.0), 0.0);
   EXPECT_DOUBLE_EQ(law.slope(0.0), 0.0);
   // C1 at p0, p1 and the cap: the one-sided differences of value and slope shrink with the step (a jump
