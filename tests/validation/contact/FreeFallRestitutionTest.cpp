@@ -65,6 +65,7 @@ struct Case {
   model::ImpactModel model;
   int smallElements;
   double stiffness;  // [N/m], 0 = automatic
+  bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
 };
 
 std::string caseName(const ::testing::TestParamInfo<Case>& p) {
@@ -94,6 +95,7 @@ TEST_P(FreeFall, ReboundHeightIsRestitutionSquaredTimesDropHeight) {
   spec.contact.restitution = c.restitution;
   spec.contact.model = c.model;
   spec.contact.stiffness = c.stiffness;
+  if (c.distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
   spec.dynamics.enabled = true;
   const double fallTime = std::sqrt(2.0 * kDrop / kStandardGravity);
   spec.dynamics.duration = fallTime * (1.0 + c.restitution) + 0.05;  // just past the rebound apex
@@ -178,6 +180,22 @@ INSTANTIATE_TEST_SUITE_P(Paper62OneElement, FreeFall,
                                            Case{0.75, model::ImpactModel::Impulse, 1, 0.0},
                                            Case{0.5, model::ImpactModel::Impulse, 1, 0.0},
                                            Case{0.1, model::ImpactModel::Impulse, 1, 0.0}),
+                         caseName);
+
+// The distributed formulation (issue 43), the paper's mesh and stiffness: known failures, run as expected to
+// fail (tests/CMakeLists.txt) so they say when they start to pass. Measured 2026-11-29 (rebound over e^2 h):
+// e = 1: 4.794 m (-1.2 %), e = 0.9: 3.842 m (-2.2 %), e = 0.75: 3.084 m (+13 %), e = 0.5: 1.307 m (+7.8 %);
+// the Eq. 5 mass is the body's within 1.5 %, the impact phase's work 0.075 - 0.099 J against 0.100 J. Why:
+// the law is scaled with the sum of the radii (5.005 m), so its regularised first 1 % (5 cm) holds the
+// whole impact (penetration ~4 mm; the force grows like p^(5/2) there, not linearly, and the dashpot
+// calibrated for a linear spring misses e). Scaled with the smaller diameter the rebounds were -1.2 %,
+// -1.8 %, -2.3 % (e = 1, 0.9, 0.75), the rest being the Hertz-like p^(3/2) of a crossing against the linear
+// calibration (theory 9.11).
+INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, FreeFall,
+                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 2, 3e5, true},
+                                           Case{0.9, model::ImpactModel::Penalty, 2, 3e5, true},
+                                           Case{0.75, model::ImpactModel::Penalty, 2, 3e5, true},
+                                           Case{0.5, model::ImpactModel::Penalty, 2, 3e5, true}),
                          caseName);
 
 // Known limitation (README): the impulse model with the paper's two-element body hit at its middle node
