@@ -22,7 +22,8 @@ namespace tangle {
 namespace {
 
 TEST(DriftIntoSpread, RiserHitsTheOneLegInItsWayAndTheMooredUnitHolds) {
-  model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/drift-into-spread/model.yaml");
+  model::ModelSpec spec =
+      io::readModelFile(std::string(test::kExamplesDir) + "/drift-into-spread/model.yaml");
   spec.dynamics.duration = 165.0;
   spec.output.plots = false;
   analysis::Simulation sim(std::move(spec));
@@ -45,7 +46,8 @@ TEST(DriftIntoSpread, RiserHitsTheOneLegInItsWayAndTheMooredUnitHolds) {
   events.insert(events.end(), sim.contact()->openEvents().begin(), sim.contact()->openEvents().end());
   ASSERT_EQ(events.size(), 1u);
   const contact::ContactEvent& hit = events.front();
-  const std::string leg = m.lines()[hit.lineA].name == "riser" ? m.lines()[hit.lineB].name : m.lines()[hit.lineA].name;
+  const std::string leg =
+      m.lines()[hit.lineA].name == "riser" ? m.lines()[hit.lineB].name : m.lines()[hit.lineA].name;
   EXPECT_EQ(leg, "leg5");  // towards 180 deg
   EXPECT_TRUE(hit.impact);
   EXPECT_NEAR(hit.impactVelocity, 0.445, 0.02 * 0.445);
@@ -57,13 +59,14 @@ TEST(DriftIntoSpread, RiserHitsTheOneLegInItsWayAndTheMooredUnitHolds) {
 // Issue 43: the same example run on to 300 s stops with the point formulation at t = 255.5 s ("Newton did
 // not converge even with the minimum time step 1e-05 s; largest out-of-balance force 3.4e4 N at line 'leg5'
 // node 118": the wire kinked over the riser at a node). With `contact.formulation: distributed` it runs
-// through (measured 2026-11-29 with the CLI, output included: 30 335 steps, 35.8 s CPU against 31.3 s for the point formulation's
-// 255.5 s). Asserts: the run completes; one event, leg5 against the riser, the impact at the example's
-// speed (2 %) with its energies within the bounds; the contact slides along the wire (more than 20 m: it
-// went from 764 to 700 m along leg5 and is still on at 300 s), and its deepest penetration stays below the
-// barrier's bound, half the sum of the radii (measured 21 mm).
+// through (measured 2026-11-29 with the CLI, output included: 30 335 steps, 35.8 s CPU against 31.3 s for
+// the point formulation's 255.5 s). Asserts: the run completes; one event, leg5 against the riser, the impact
+// at the example's speed (2 %) with its energies within the bounds; the contact slides along the wire (more
+// than 20 m: it went from 764 to 700 m along leg5 and is still on at 300 s), and its deepest penetration
+// stays below the barrier's bound, half the sum of the radii (measured 21 mm).
 TEST(DriftIntoSpread, DistributedContactRunsOnTo300sWhereThePointContactStopped) {
-  model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/drift-into-spread/model.yaml");
+  model::ModelSpec spec =
+      io::readModelFile(std::string(test::kExamplesDir) + "/drift-into-spread/model.yaml");
   spec.dynamics.duration = 300.0;
   spec.output.plots = false;
   spec.contact.formulation = model::ContactFormulation::Distributed;

@@ -69,7 +69,8 @@ double DistributedContact::bentness(const model::State& state, int element, doub
   // 1/2 (a fold or a wrap).
   double largest = 0.0;
   for (int i = 0; i <= 4; ++i)
-    largest = std::max(largest, curvature(centrelineStencil(*m_model, element, 0.25 * i, true), state.position) * radii);
+    largest = std::max(
+        largest, curvature(centrelineStencil(*m_model, element, 0.25 * i, true), state.position) * radii);
   const double x = std::clamp((largest - 0.25) / 0.25, 0.0, 1.0);
   return x * x * (3.0 - 2.0 * x);
 }
@@ -77,14 +78,17 @@ double DistributedContact::bentness(const model::State& state, int element, doub
 double DistributedContact::pointStiffness(int lineA, int lineB) const {
   // Radii of the two lines' first elements (a line's contact diameter is one per section; the first is
   // representative and keeps the stiffness one number per pair of lines).
-  const double rA = m_radius[m_model->lines()[lineA].firstElement], rB = m_radius[m_model->lines()[lineB].firstElement];
-  return m_spec.stiffness > 0.0 ? m_spec.stiffness
-                                : kAutoStiffnessFactor * std::min(m_lineAxialStiffness[lineA], m_lineAxialStiffness[lineB]) /
-                                      (kReferenceLengthFactor * (rA + rB));
+  const double rA = m_radius[m_model->lines()[lineA].firstElement],
+               rB = m_radius[m_model->lines()[lineB].firstElement];
+  return m_spec.stiffness > 0.0
+             ? m_spec.stiffness
+             : kAutoStiffnessFactor * std::min(m_lineAxialStiffness[lineA], m_lineAxialStiffness[lineB]) /
+                   (kReferenceLengthFactor * (rA + rB));
 }
 
 double DistributedContact::lineStiffness(int lineA, int lineB) const {
-  const double rA = m_radius[m_model->lines()[lineA].firstElement], rB = m_radius[m_model->lines()[lineB].firstElement];
+  const double rA = m_radius[m_model->lines()[lineA].firstElement],
+               rB = m_radius[m_model->lines()[lineB].firstElement];
   return pointStiffness(lineA, lineB) / contactScale(rA, rB);
 }
 
@@ -233,7 +237,8 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   const Vec3 x = centrelineStencil(*m_model, slave, xi, true).point(state.position);
   for (const int f : masters) {
     const model::LineElement& eb = elements[f];
-    const double t0 = std::clamp(projectOnAxis(x, state.position[eb.node1], state.position[eb.node2]), 0.0, 1.0);
+    const double t0 =
+        std::clamp(projectOnAxis(x, state.position[eb.node1], state.position[eb.node2]), 0.0, 1.0);
     const CentrelineDistance p = project(state, slave, xi, f, t0);
     const double tie = 1e-12 * std::max(1.0, p.distance);
     const bool better = bestMaster < 0 || p.distance < best.distance - tie ||
@@ -262,7 +267,8 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   smp.share = shareIt != m_shares.end() ? shareIt->second : 0.5;
   if (smp.share <= 0.0) return;
   smp.length = smp.share * weight;
-  const Vec3 va = best.a.value(m_model->dofs(), state.velocity), vb = best.b.value(m_model->dofs(), state.velocity);
+  const Vec3 va = best.a.value(m_model->dofs(), state.velocity),
+             vb = best.b.value(m_model->dofs(), state.velocity);
   smp.gapRate = smp.normal.dot(va - vb);
   const BarrierPenalty lawAB = law(slave, bestMaster);
   const double p = -gap;
@@ -299,7 +305,8 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
       Patch& patch = patches[{slave, elements[master].line}];
       patch.masters.push_back(master);
       Interval iv;
-      if (contactInterval(state, slave, master, iv.lo, iv.hi, iv.cuts)) patch.intervals.push_back(std::move(iv));
+      if (contactInterval(state, slave, master, iv.lo, iv.hi, iv.cuts))
+        patch.intervals.push_back(std::move(iv));
     }
   }
   for (auto& [key, patch] : patches) {
@@ -373,9 +380,12 @@ void DistributedContact::finishSamples(bool dashpot) {
   if (dashpot && m_zeta > 0.0) {
     for (const std::vector<int>& patch : patches()) {
       double stiffness = 0.0;
-      for (const int i : patch) stiffness += m_samples[static_cast<std::size_t>(i)].slope * m_samples[static_cast<std::size_t>(i)].length;
+      for (const int i : patch)
+        stiffness +=
+            m_samples[static_cast<std::size_t>(i)].slope * m_samples[static_cast<std::size_t>(i)].length;
       const double mass = patchMass(patch);
-      const double factor = stiffness > 0.0 && std::isfinite(mass) ? 2.0 * m_zeta * std::sqrt(mass / stiffness) : 0.0;
+      const double factor =
+          stiffness > 0.0 && std::isfinite(mass) ? 2.0 * m_zeta * std::sqrt(mass / stiffness) : 0.0;
       for (const int i : patch) {
         ContactSample& x = m_samples[static_cast<std::size_t>(i)];
         x.damping = factor * x.slope;
@@ -397,8 +407,8 @@ void DistributedContact::finishSamples(bool dashpot) {
   }
 }
 
-void DistributedContact::addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
-                                   solver::SystemMatrix* matrix) const {
+void DistributedContact::addForces(const model::State& state, const solver::AssemblyRequest& request,
+                                   VecX& force, solver::SystemMatrix* matrix) const {
   const model::DofMap& dofs = m_model->dofs();
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
@@ -411,7 +421,8 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
     // SmoothCentreline.hpp); the dashpot c n n^T on the velocities; friction on the displacements
     // (statics) or the velocities (dynamics).
     const Eigen::Matrix<double, 24, 24> block =
-        request.kf * smp.length * (smp.slope * kin.gradient * kin.gradient.transpose() - smp.lineForce * kin.hessian);
+        request.kf * smp.length *
+        (smp.slope * kin.gradient * kin.gradient.transpose() - smp.lineForce * kin.hessian);
     Mat3 pointBlock = request.cf * smp.length * smp.damping * smp.normal * smp.normal.transpose();
     pointBlock += (smp.frictionOnVelocity ? request.cf : request.kf) * smp.length * smp.frictionTangent;
     for (int i = 0; i < 8; ++i) {
@@ -453,8 +464,9 @@ double DistributedContact::limitIncrement(const model::State& state, const std::
     const model::LineElement& ea = elements[a.element];
     const model::LineElement& eb = elements[b.element];
     const double radii = a.radius + b.radius;
-    const geometry::SegmentDistanceResult before = geometry::segmentDistance(
-        state.position[ea.node1], state.position[ea.node2], state.position[eb.node1], state.position[eb.node2]);
+    const geometry::SegmentDistanceResult before =
+        geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
+                                  state.position[eb.node1], state.position[eb.node2]);
     const double allowed = std::max(radii - before.distance, 0.0) + kClosingFraction * radii;
     auto admissible = [&](double f) {
       const geometry::SegmentDistanceResult d = geometry::segmentDistance(
@@ -465,8 +477,7 @@ double DistributedContact::limitIncrement(const model::State& state, const std::
       // already within the barrier's reach are a sharp fold's, which the smooth curve wraps: not judged).
       const bool inside = d.s > 0.0 && d.s < 1.0 && d.t > 0.0 && d.t < 1.0;
       const bool judged = before.distance > radii - law(a.element, b.element).limit;
-      return !(inside && judged &&
-               (before.closest0 - before.closest1).dot(d.closest0 - d.closest1) < 0.0);
+      return !(inside && judged && (before.closest0 - before.closest1).dot(d.closest0 - d.closest1) < 0.0);
     };
     // In dynamics a chord test is a guard against tunnelling between Gauss points, not the barrier: one that
     // no short fraction satisfies (a chord degenerate against the other, a fold's chord near the line) is
@@ -531,9 +542,12 @@ std::vector<std::vector<int>> DistributedContact::patches() const {
   std::vector<int> order(m_samples.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   const auto sample = [&](int i) -> const ContactSample& { return m_samples[static_cast<std::size_t>(i)]; };
-  const auto lowArc = [&](int i) { return sample(i).lineA <= sample(i).lineB ? sample(i).arcA : sample(i).arcB; };
+  const auto lowArc = [&](int i) {
+    return sample(i).lineA <= sample(i).lineB ? sample(i).arcA : sample(i).arcB;
+  };
   const auto pairKey = [&](int i) {
-    return std::make_pair(std::min(sample(i).lineA, sample(i).lineB), std::max(sample(i).lineA, sample(i).lineB));
+    return std::make_pair(std::min(sample(i).lineA, sample(i).lineB),
+                          std::max(sample(i).lineA, sample(i).lineB));
   };
   std::sort(order.begin(), order.end(), [&](int a, int b) {
     return std::make_pair(pairKey(a), lowArc(a)) < std::make_pair(pairKey(b), lowArc(b));
@@ -558,7 +572,8 @@ double DistributedContact::patchMass(const std::vector<int>& patch) const {
   //   pass finds under it (the seed paper's free fall, section 6.2: that overdamped e = 0.9 to 0.57).
   const ContactSample& first = m_samples[static_cast<std::size_t>(patch.front())];
   const int lines[2] = {std::min(first.lineA, first.lineB), std::max(first.lineA, first.lineB)};
-  double passLength[2] = {0.0, 0.0}, lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf}, perLength[2] = {kInf, kInf};
+  double passLength[2] = {0.0, 0.0}, lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf},
+         perLength[2] = {kInf, kInf};
   double deepest = kInf, lumped = kInf;
   for (const int i : patch) {
     const ContactSample& x = m_samples[static_cast<std::size_t>(i)];
@@ -622,13 +637,15 @@ std::vector<ContactSpot> DistributedContact::spots(const model::State& state, do
     // Approach speed before the step (trapezoidal change over the step, as the point formulation).
     const double accelerationRate =
         dynamic && state.acceleration.size() == state.velocity.size()
-            ? smp.normal.dot(smp.curve.a.value(m_model->dofs(), state.acceleration) - smp.curve.b.value(m_model->dofs(), state.acceleration))
+            ? smp.normal.dot(smp.curve.a.value(m_model->dofs(), state.acceleration) -
+                             smp.curve.b.value(m_model->dofs(), state.acceleration))
             : 0.0;  // the rates are the same seen from either line
     spot.approachSpeed = std::max(0.0, -(smp.gapRate - 0.5 * dt * accelerationRate));
     spot.gap = smp.gap;
     spot.pairMass = pairMassPerLength(smp.elementA, smp.elementB) * smp.length;
     spot.stiffness = lineStiffness(smp.lineA, smp.lineB) * smp.length;
-    const Vec3 va = smp.curve.a.value(m_model->dofs(), state.velocity), vb = smp.curve.b.value(m_model->dofs(), state.velocity);
+    const Vec3 va = smp.curve.a.value(m_model->dofs(), state.velocity),
+               vb = smp.curve.b.value(m_model->dofs(), state.velocity);
     spot.velocityBeforeA = spot.velocityA = swapped ? vb : va;
     spot.velocityBeforeB = spot.velocityB = swapped ? va : vb;
     spot.radii = smp.radii;

@@ -24,12 +24,13 @@
 /// folded over another), so that pass gets nothing and the pass along the bent line all. Between
 /// (1/4 <= kappa R <= 1/2) the shares move continuously: 1/2 + (b_slave - b_master) / 2 with b the
 /// bentness (a smoothstep of kappa R), so a share never jumps from step to step as a bend tightens (a jump
-/// 0.5 -> 1 pumped a wire folding over another at the minimum step until it passed the barrier's cap). The shares are
-/// decided per (element, other line) at the first assembly of a step or load increment and held through
-/// its iterations (beginStep), so Newton sees a smooth force. The interval's ends need no linearisation:
-/// the regularised law and its slope vanish there (Leibniz's rule leaves no boundary term). At a crossing the integral of the
-/// penetration over the short interval gives a force that grows like p^(3/2) (a Hertz-like law); at a fold,
-/// a wrap or along a length it is the pressure integrated over the contact length.
+/// 0.5 -> 1 pumped a wire folding over another at the minimum step until it passed the barrier's cap). The
+/// shares are decided per (element, other line) at the first assembly of a step or load increment and held
+/// through its iterations (beginStep), so Newton sees a smooth force. The interval's ends need no
+/// linearisation: the regularised law and its slope vanish there (Leibniz's rule leaves no boundary term). At
+/// a crossing the integral of the penetration over the short interval gives a force that grows like p^(3/2)
+/// (a Hertz-like law); at a fold, a wrap or along a length it is the pressure integrated over the contact
+/// length.
 ///
 /// Law: BarrierPenalty (ContactLaw.hpp): regularised at first touch, linear with the stiffness per unit
 /// length k_line, and a barrier that grows without bound at half the radii, so the penetration is bounded by
@@ -44,12 +45,12 @@
 /// kStaticSlipFraction of the radii), and its consistent (symmetric part of the) tangent.
 ///
 /// Stiffness per unit length k_line = k / (rA + rB) [N/m^2], with k [N/m] contact.stiffness or, automatic,
-/// 0.1 EA_min / (kReferenceLengthFactor (rA + rB)) (the point formulation's 0.1 EA / L with the element length
-/// L replaced by a length that does not change with the mesh). Why k / radii: at a crossing the penetration
-/// p(u) = p - u^2 / (2 (rA + rB)) along the line integrates to F = (4/3) k_line sqrt(2 (rA + rB)) p^(3/2),
-/// whose slope dF/dp = 2 k_line sqrt(2 (rA + rB) p) equals k at p = (rA + rB) / 8: a crossing is as stiff as
-/// a point contact of stiffness k halfway into the linear range of the law; a parallel contact of length L
-/// is k L / (rA + rB) stiff.
+/// 0.1 EA_min / (kReferenceLengthFactor (rA + rB)) (the point formulation's 0.1 EA / L with the element
+/// length L replaced by a length that does not change with the mesh). Why k / radii: at a crossing the
+/// penetration p(u) = p - u^2 / (2 (rA + rB)) along the line integrates to F = (4/3) k_line sqrt(2 (rA + rB))
+/// p^(3/2), whose slope dF/dp = 2 k_line sqrt(2 (rA + rB) p) equals k at p = (rA + rB) / 8: a crossing is as
+/// stiff as a point contact of stiffness k halfway into the linear range of the law; a parallel contact of
+/// length L is k L / (rA + rB) stiff.
 
 #include <map>
 #include <string>
@@ -73,26 +74,26 @@ inline constexpr double kStaticSlipFraction = 1e-3;
 /// A Gauss point of the distributed contact at the current (trial) state: a point of line A's centreline
 /// (the line integrated along) and its closest point on line B's.
 struct ContactSample {
-  int lineA = 0, lineB = 0;        ///< line integrated along, line measured against
-  int elementA = 0, elementB = 0;  ///< element of the Gauss point; master element of its closest point
-  double xi = 0.0, t = 0.0;        ///< parameters on them [-]
-  CentrelineDistance curve;        ///< the Gauss point (held) and its projection (stencils, points)
-  Vec3 normal = Vec3::UnitZ();     ///< unit normal from B to A
-  double gap = 0.0;                ///< surface gap [m] (< 0: penetration)
-  double gapRate = 0.0;            ///< d gap / dt [m/s] (< 0 approaching)
-  double length = 0.0;             ///< integration weight: share x Gauss weight x rest length [m]
-  double share = 0.5;              ///< this pass's share of the contact [-] (0, 1/2 or 1: file comment)
-  double lineForce = 0.0;          ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
-  double slope = 0.0;              ///< d lineForce / d penetration [N/m^2]
-  double damping = 0.0;            ///< dashpot per unit length [N s/m^2] (its patch's, DistributedContact::finishSamples)
-  double spring = 0.0;             ///< the law's force per unit length f(p) [N/m]
-  double pairMass = 0.0;           ///< lumped pair mass at the two points [kg] (+inf if both are held)
-  Vec3 relative = Vec3::Zero();    ///< relative motion of A against B friction acts on [m/s dynamics, m statics]
-  Vec3 friction = Vec3::Zero();    ///< friction force per unit length on A [N/m]
-  Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d u_t, symmetric part, sign of a stiffness [N/m^2 or N s/m^3]
-  bool frictionOnVelocity = false;      ///< the tangent above is a damping (dynamics) or a stiffness (statics)
-  double arcA = 0.0, arcB = 0.0;   ///< arc lengths of the two points [m]
-  double radii = 0.0;              ///< sum of the contact radii [m]
+  int lineA = 0, lineB = 0;             ///< line integrated along, line measured against
+  int elementA = 0, elementB = 0;       ///< element of the Gauss point; master element of its closest point
+  double xi = 0.0, t = 0.0;             ///< parameters on them [-]
+  CentrelineDistance curve;             ///< the Gauss point (held) and its projection (stencils, points)
+  Vec3 normal = Vec3::UnitZ();          ///< unit normal from B to A
+  double gap = 0.0;                     ///< surface gap [m] (< 0: penetration)
+  double gapRate = 0.0;                 ///< d gap / dt [m/s] (< 0 approaching)
+  double length = 0.0;                  ///< integration weight: share x Gauss weight x rest length [m]
+  double share = 0.5;                   ///< this pass's share of the contact [-] (in [0, 1]: file comment)
+  double lineForce = 0.0;               ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
+  double slope = 0.0;                   ///< d lineForce / d penetration [N/m^2]
+  double damping = 0.0;                 ///< dashpot per unit length [N s/m^2] (its patch's: finishSamples)
+  double spring = 0.0;                  ///< the law's force per unit length f(p) [N/m]
+  double pairMass = 0.0;                ///< lumped pair mass at the two points [kg] (+inf if both are held)
+  Vec3 relative = Vec3::Zero();         ///< A's motion against B's that friction resists [m/s; statics: m]
+  Vec3 friction = Vec3::Zero();         ///< friction force per unit length on A [N/m]
+  Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d u_t, symmetric part [N s/m^3; statics: N/m^2]
+  bool frictionOnVelocity = false;  ///< the tangent above is a damping (dynamics) or a stiffness (statics)
+  double arcA = 0.0, arcB = 0.0;    ///< arc lengths of the two points [m]
+  double radii = 0.0;               ///< sum of the contact radii [m]
 };
 
 /// The distributed contact (see the file comment). Owned by LineContact, which keeps the candidates, the
@@ -100,8 +101,8 @@ struct ContactSample {
 class DistributedContact {
  public:
   /// @param radius contact radius per element [m]; @param zeta damping ratio of the dashpot [-]
-  DistributedContact(const model::Model& model, const model::ContactSpec& spec, const std::vector<double>& radius,
-                     double zeta);
+  DistributedContact(const model::Model& model, const model::ContactSpec& spec,
+                     const std::vector<double>& radius, double zeta);
 
   /// Stiffness per unit length between two lines [N/m^2] (file comment).
   double lineStiffness(int lineA, int lineB) const;
@@ -114,7 +115,10 @@ class DistributedContact {
   double pairMassPerLength(int elementA, int elementB) const;
 
   /// A step, load increment or retry starts: the passes' shares are decided again at the next findSamples.
-  void beginStep() { m_shares.clear(); m_sharesFixed = false; }
+  void beginStep() {
+    m_shares.clear();
+    m_sharesFixed = false;
+  }
 
   /// Finds the Gauss points of every candidate pair at `state`; `reference`: the positions of the last
   /// converged state (statics friction). Dynamic: dashpot and velocity friction.
@@ -132,8 +136,9 @@ class DistributedContact {
   /// than a quarter of the radii.
   /// strict (statics): the chord tests are halved until they hold; otherwise (dynamics) a chord test no
   /// fraction down to 1/1024 satisfies is left out.
-  double limitIncrement(const model::State& state, const std::vector<Vec3>& move, const ContactCandidates& search,
-                        const std::vector<CandidatePair>& pairs, bool strict) const;
+  double limitIncrement(const model::State& state, const std::vector<Vec3>& move,
+                        const ContactCandidates& search, const std::vector<CandidatePair>& pairs,
+                        bool strict) const;
   /// Empty, or why the samples' state is not admissible (a Gauss point beyond the barrier's cap).
   std::string rejectSamples() const;
   /// Largest step [s] that resolves every moving contact patch with kImpactSteps steps (its duration from
@@ -159,8 +164,8 @@ class DistributedContact {
   /// if none.
   bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi,
                        std::vector<double>& cuts) const;
-  void addSample(const model::State& state, int slave, double xi, double weight, const std::vector<int>& masters,
-                 bool dynamic, const std::vector<Vec3>& reference);
+  void addSample(const model::State& state, int slave, double xi, double weight,
+                 const std::vector<int>& masters, bool dynamic, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
   /// The dashpots per contact patch, the normal forces and the friction of the samples just found.
   void finishSamples(bool dashpot);

@@ -64,7 +64,7 @@ struct Case {
   double restitution;
   model::ImpactModel model;
   int smallElements;
-  double stiffness;  // [N/m], 0 = automatic
+  double stiffness;          // [N/m], 0 = automatic
   bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
 };
 

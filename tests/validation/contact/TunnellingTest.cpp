@@ -123,7 +123,8 @@ TEST(Tunnelling, DistributedPlainFixedStepsDoNotPassThrough) {
   time::DynamicAnalysis plain(sim.assembler(), sim.model().spec().dynamics);
   plain.setStepControl(false);
   double smallest = 1e30;
-  plain.setObserver([&](const model::State& s, const VecX&) { smallest = std::min(smallest, separation(sim.model(), s)); });
+  plain.setObserver(
+      [&](const model::State& s, const VecX&) { smallest = std::min(smallest, separation(sim.model(), s)); });
   const time::DynamicResult run = plain.run(sim.state());
   ASSERT_TRUE(run.completed) << run.message;
   EXPECT_GT(smallest, 0.0) << "B passed through A";
