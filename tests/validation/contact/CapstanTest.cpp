@@ -53,7 +53,7 @@ namespace {
 constexpr double kPi = 3.141592653589793;
 
 /// The capstan run with either contact formulation; expects the tension ratio within 3 %.
-void runCapstan(bool distributed) {
+void runCapstan(bool distributed, double frictionVelocity = 0.0) {
   constexpr double kBollardDiameter = 0.5, kRopeDiameter = 0.02, kRopeMass = 1.0, kRopeEA = 2.0e6;
   constexpr double kLeg = 1.0, kWeight = 50.0, kMu = 0.3, kDamping = 2.0;
   constexpr int kArcElements = 16, kLegElements = 10;
@@ -63,12 +63,12 @@ void runCapstan(bool distributed) {
   spec.environment.gravity = kStandardGravity;
   spec.lineTypes["bollard"] = test::solidRodType("bollard", kBollardDiameter, 2.1e11, 7850.0);
   spec.lineTypes["rope"] = test::cableType("rope", kRopeDiameter, kRopeMass, kRopeEA);
-  const double z = 10.0;  // bollard axis, in air
+  const double z = 10.0;           // bollard axis, in air
   constexpr double kRopeY = 0.25;  // over the middle of a bollard element
   const double radius = 0.5 * (kBollardDiameter + kRopeDiameter) + 0.001;
   const double arc = kPi * radius;
-  model::LineSpec bollard = test::simpleLine("bollard", "bollard", 2.0, 4, model::EndKind::Fixed, Vec3(0, -1, z),
-                                             model::EndKind::Fixed, Vec3(0, 1, z));
+  model::LineSpec bollard = test::simpleLine("bollard", "bollard", 2.0, 4, model::EndKind::Fixed,
+                                             Vec3(0, -1, z), model::EndKind::Fixed, Vec3(0, 1, z));
   model::LineSpec rope;
   rope.name = "rope";
   rope.endA.kind = model::EndKind::Free;
@@ -94,6 +94,7 @@ void runCapstan(bool distributed) {
   spec.contact.enabled = true;
   spec.contact.restitution = 0.5;
   spec.contact.frictionCoefficient = kMu;
+  if (frictionVelocity > 0.0) spec.contact.frictionVelocity = frictionVelocity;
   spec.contact.pairs = {{"bollard", "rope"}};
   if (distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
   spec.dynamics.enabled = true;
@@ -136,7 +137,21 @@ void runCapstan(bool distributed) {
 TEST(Capstan, DISABLED_TensionRatioDuringSlipIsExpMuTheta) { runCapstan(false); }
 
 // The distributed formulation (issue 43): Gauss points along the rope against the bollard's C1 centreline.
+// (Its pass is a cancellation of two errors: see the known failure below.)
 TEST(Capstan, DistributedTensionRatioDuringSlipIsExpMuTheta) { runCapstan(true); }
+
+// Known failure (issue 43), run as expected to fail (tests/CMakeLists.txt) so it says when it starts to
+// pass. The distributed friction is regularised smoothly, f_t = mu f_n v / sqrt(v^2 + v_f^2): at the slip
+// speed of 0.031 m/s the default v_f = 0.01 m/s gives 0.952 mu, a ratio of exp(0.952 mu pi) = 2.453, yet the
+// test above measures 2.5518. With v_f = 0.002 m/s (0.998 mu, expected 2.562) it measures 2.678 mean (2.672 -
+// 2.690, 2026-11-29): 4.3 % above exp(mu pi), outside the 3 %. So the test above passes by a cancellation
+// of -4.8 % (regularisation) and about +4.4 %. The likely cause of the excess, estimated and not measured:
+// with the law scaled by the sum of the radii (0.26 m) the 2 cm rope sinks about 3 cm into the bollard, and
+// its legs then touch it over roughly sqrt(2 p / R) ~ 0.3-0.5 rad more than pi. (Scaled with the rope's
+// diameter the ratio was 2.449 at v_f = 0.01 m/s, 0.998 of the regularised law's value: issue 43's note.)
+class CapstanSharpFriction : public ::testing::TestWithParam<double> {};
+TEST_P(CapstanSharpFriction, DistributedTensionRatioDuringSlipIsExpMuTheta) { runCapstan(true, GetParam()); }
+INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, CapstanSharpFriction, ::testing::Values(0.002));
 
 }  // namespace
 }  // namespace tangle
