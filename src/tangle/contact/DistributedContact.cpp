@@ -104,14 +104,14 @@ double DistributedContact::nodeMass(int node) const {
   return m_model->nodeMass()[node];
 }
 
+double DistributedContact::massPerLength(int element) const {
+  const model::LineElement& x = m_model->elements()[element];
+  if (std::isinf(nodeMass(x.node1)) && std::isinf(nodeMass(x.node2))) return kInf;
+  return x.type->massPerLength;
+}
+
 double DistributedContact::pairMassPerLength(int elementA, int elementB) const {
-  const auto& el = m_model->elements();
-  auto perLength = [&](int e) {
-    const model::LineElement& x = el[e];
-    if (std::isinf(nodeMass(x.node1)) && std::isinf(nodeMass(x.node2))) return kInf;
-    return x.type->massPerLength;
-  };
-  return reducedMass(perLength(elementA), perLength(elementB));
+  return reducedMass(massPerLength(elementA), massPerLength(elementB));
 }
 
 double DistributedContact::arcOf(int element, double w) const {
@@ -587,9 +587,7 @@ double DistributedContact::patchMass(const std::vector<int>& patch) const {
       const double arc = own ? x.arcA : x.arcB;
       lo[side] = std::min(lo[side], arc);
       hi[side] = std::max(hi[side], arc);
-      const model::LineElement& el = m_model->elements()[own ? x.elementA : x.elementB];
-      if (!(std::isinf(nodeMass(el.node1)) && std::isinf(nodeMass(el.node2))))
-        perLength[side] = std::min(perLength[side], el.type->massPerLength);
+      perLength[side] = std::min(perLength[side], massPerLength(own ? x.elementA : x.elementB));
       if (own && x.share > 0.0 && lines[0] != lines[1]) passLength[side] += x.length / x.share;
     }
   }

@@ -167,6 +167,8 @@ class DistributedContact {
   void addSample(const model::State& state, int slave, double xi, double weight,
                  const std::vector<int>& masters, bool dynamic, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
+  /// Mass per unit length of an element's line [kg/m] (+inf if both its nodes are held).
+  double massPerLength(int element) const;
   /// The dashpots per contact patch, the normal forces and the friction of the samples just found.
   void finishSamples(bool dashpot);
   /// Instantaneous effective mass of a centreline point with lumped node masses [kg].
