@@ -1,7 +1,7 @@
 #pragma once
 // Dynamic runs of the mooring example (examples/mooring-dynamics) recording the fairlead tension of every
-// line at every step, optionally with one of the solver's comparison switches set (TANGLE_WHOLE_ASSEMBLY:
-// every Newton iteration on the whole model; TANGLE_KEEP_MATRIX: no refresh by the renewal rule): the set-up
+// line at every step, optionally with another Newton path (dynamics.solver: `assembly: whole`, every Newton
+// iteration on the whole model; `matrix_refresh: when_slow`, no refresh by the renewal rule): the set-up
 // of the verification tests of the iterations on a part, by independent blocks and of the refresh rule
 // (issue 8).
 
@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -35,16 +34,29 @@ struct FairleadRun {
 /// 1088 N and 2.7e-3 from each other: no sharp check of a switch at that tolerance.
 inline constexpr double kComparisonTolerance = 1.0e-8;
 
-/// Runs the mooring example for `duration` s with output at every step, at the tolerance kComparisonTolerance. With azimuths [deg], its line is
-/// copied around a point instead: fairleads on a 20 m circle, anchors 1000 m further out, each fairlead
-/// moved as the example's (5 m / 10 s along x). `environmentSwitch`: the variable set during the run (empty:
-/// none).
-inline FairleadRun runMooringExample(double duration, const std::string& environmentSwitch = "",
+/// The Newton paths the fast default is compared with (dynamics.solver).
+inline model::DynamicSolverSpec wholeAssembly() {
+  model::DynamicSolverSpec s;
+  s.partIterations = false;
+  return s;
+}
+inline model::DynamicSolverSpec wholeRefresh() {
+  model::DynamicSolverSpec s;
+  s.blockRefresh = false;
+  return s;
+}
+inline model::DynamicSolverSpec whenSlow() {
+  model::DynamicSolverSpec s;
+  s.renewalRule = false;
+  return s;
+}
+
+/// Runs the mooring example for `duration` s with output at every step, at the tolerance kComparisonTolerance.
+/// With azimuths [deg], its line is copied around a point instead: fairleads on a 20 m circle, anchors 1000 m
+/// further out, each fairlead moved as the example's (5 m / 10 s along x). `solver`: the Newton path
+/// (dynamics.solver; the default: the fast path).
+inline FairleadRun runMooringExample(double duration, const model::DynamicSolverSpec& solver = {},
                                      const std::vector<double>& azimuthsDeg = {}) {
-  unsetenv("TANGLE_WHOLE_ASSEMBLY");
-  unsetenv("TANGLE_KEEP_MATRIX");
-  unsetenv("TANGLE_WHOLE_REFRESH");
-  if (!environmentSwitch.empty()) setenv(environmentSwitch.c_str(), "1", 1);
   model::ModelSpec spec = io::readModelFile(std::string(kExamplesDir) + "/mooring-dynamics/model.yaml");
   if (!azimuthsDeg.empty()) {
     const model::LineSpec base = spec.lines.at(0);
@@ -60,6 +72,7 @@ inline FairleadRun runMooringExample(double duration, const std::string& environ
     }
   }
   spec.dynamics.duration = duration;
+  spec.dynamics.solver = solver;
   spec.dynamics.tolerance = kComparisonTolerance;
   spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
   spec.output.vtk = false;
@@ -75,7 +88,6 @@ inline FairleadRun runMooringExample(double duration, const std::string& environ
     const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
     for (std::size_t l = 0; l < lines; ++l) run.tension[l].push_back(snap.at(l).endForceB.norm());
   });
-  if (!environmentSwitch.empty()) unsetenv(environmentSwitch.c_str());
   return run;
 }
 

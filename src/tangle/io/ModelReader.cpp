@@ -909,7 +909,7 @@ void readDynamics(const Value& v, ModelSpec& spec) {
   using model::IntegratorKind;
   const Map m(v, {"duration", "time_step", "min_time_step", "ramp_time", "output_interval", "integrator",
                   "spectral_radius", "mass", "rayleigh", "max_iterations", "tolerance", "max_cable_strain_step",
-                  "error_tolerance", "max_time_step"});
+                  "error_tolerance", "max_time_step", "solver"});
   const model::DynamicSpec d;
   model::DynamicSpec& s = spec.dynamics;
   s.duration = m.number("duration", nonNegativeUpTo(kMaxDuration).withHint("0 switches dynamics off"));
@@ -942,6 +942,18 @@ void readDynamics(const Value& v, ModelSpec& spec) {
                               closed(0.0, 0.5).withHint("0: fixed steps of time_step; e.g. 1e-3 asks for error control"));
   s.maxTimeStep = m.number("max_time_step", s.outputInterval,
                            Range{s.timeStep, s.outputInterval, false, false, "between time_step and output_interval"});
+  if (const std::optional<Value> solver = m.find("solver")) {
+    const Map sm(*solver, {"newton", "assembly", "refresh", "matrix_refresh"});
+    model::DynamicSolverSpec& c = s.solver;
+    if (const std::optional<Value> x = sm.find("newton"))
+      c.modifiedNewton = x->choice<bool>({{"modified", true}, {"full", false}});
+    if (const std::optional<Value> x = sm.find("assembly"))
+      c.partIterations = x->choice<bool>({{"parts", true}, {"whole", false}});
+    if (const std::optional<Value> x = sm.find("refresh"))
+      c.blockRefresh = x->choice<bool>({{"blocks", true}, {"whole", false}});
+    if (const std::optional<Value> x = sm.find("matrix_refresh"))
+      c.renewalRule = x->choice<bool>({{"renewal", true}, {"when_slow", false}});
+  }
 }
 
 void readOutput(const Value& v, ModelSpec& spec) {

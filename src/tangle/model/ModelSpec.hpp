@@ -221,6 +221,24 @@ struct StaticSpec {
 enum class IntegratorKind { GeneralizedAlpha, Hht, Newmark };
 
 /// Dynamic analysis settings.
+/// How each dynamic step's Newton iteration is solved (`dynamics.solver`, docs/theory.md 8.2). The defaults
+/// are the fast path; the plainest choice (full Newton, whole assembly, whole refresh) is the reference the
+/// fast path is checked against. Whatever is chosen, a step that fails is retried with a whole refresh and then
+/// with full Newton before it is cut (GeneralizedAlpha::step).
+struct DynamicSolverSpec {
+  /// newton: `modified` (the factorised iteration matrix is kept while the residual falls fast) or `full`
+  /// (refreshed at every iteration).
+  bool modifiedNewton = true;
+  /// assembly: `parts` (an iteration re-evaluates only the part of the model its correction moved) or
+  /// `whole` (every iteration on the whole model, every independent block solved).
+  bool partIterations = true;
+  /// refresh: `blocks` (slow independent blocks and stretches refreshed on their own) or `whole`.
+  bool blockRefresh = true;
+  /// matrix_refresh: `renewal` (the kept matrix is also refreshed when keeping it costs more iterations
+  /// than a refresh, the renewal rule of theory 8.2) or `when_slow` (only when a step converges slowly).
+  bool renewalRule = true;
+};
+
 struct DynamicSpec {
   bool enabled = false;
   double duration = 0.0;        ///< simulated time [s]
@@ -243,6 +261,7 @@ struct DynamicSpec {
   double errorTolerance = 0.0;
   /// Largest step with error control [s] (0: the output interval).
   double maxTimeStep = 0.0;
+  DynamicSolverSpec solver;  ///< dynamics.solver
 };
 
 /// How an impact between lines is resolved.

@@ -76,6 +76,17 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
   j.field("converged_blocks_left_out", static_cast<double>(r.blocksLeft));
   j.field("matrix_refreshes", static_cast<double>(r.matrixRefreshes));
   j.field("block_refreshes", static_cast<double>(r.blockRefreshes));
+  j.field("fallback_steps", static_cast<double>(r.fallbackSteps));
+  {
+    const model::DynamicSolverSpec& c = m.spec().dynamics.solver;
+    j.key("solver");
+    j.beginObject();
+    j.field("newton", c.modifiedNewton ? "modified" : "full");
+    j.field("assembly", c.partIterations ? "parts" : "whole");
+    j.field("refresh", c.blockRefresh ? "blocks" : "whole");
+    j.field("matrix_refresh", c.renewalRule ? "renewal" : "when_slow");
+    j.endObject();
+  }
   j.field("wall_time_s", r.wallSeconds);
   j.field("real_time_factor", r.endTime / std::max(r.wallSeconds, 1e-9));
   j.field("message", r.message);

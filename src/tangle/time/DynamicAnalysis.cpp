@@ -128,6 +128,7 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
     result.blocksLeft += o.blocksLeft;
     result.matrixRefreshes += o.refreshes;
     result.blockRefreshes += o.blockRefreshes;
+    if (o.fallback > 0) ++result.fallbackSteps;
     bool rejected = false;
     std::string rejection;
     if (o.converged && checkSteps) rejection = m_assembler->rejectStep(before, state);
@@ -149,10 +150,16 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
                            "dynamic analysis stopped at t = {:.6g} s: the step is refused even with the "
                            "minimum time step {:.3g} s: {}",
                            state.time, m_settings.minTimeStep, rejection)
-                     : fmt::format(
-                           "dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with the "
-                           "minimum time step {:.3g} s; largest out-of-balance force {:.4g} N at {}",
-                           state.time, m_settings.minTimeStep, o.residual, where);
+                     : !o.failure.empty()
+                           ? fmt::format(
+                                 "dynamic analysis stopped at t = {:.6g} s: a step fails even with the minimum "
+                                 "time step {:.3g} s, with full Newton: {}",
+                                 state.time, m_settings.minTimeStep, o.failure)
+                           : fmt::format(
+                                 "dynamic analysis stopped at t = {:.6g} s: Newton did not converge even with "
+                                 "the minimum time step {:.3g} s and full Newton; largest out-of-balance force "
+                                 "{:.4g} N at {}",
+                                 state.time, m_settings.minTimeStep, o.residual, where);
         m_stopped = true;
         return false;
       }
@@ -213,15 +220,20 @@ DynamicResult DynamicAnalysis::finish(model::State& state) {
   result.completed = state.time >= duration - eps;
   result.wallSeconds = std::chrono::duration<double>(Clock::now() - m_wallStart).count();
   if (result.completed) {
+    const model::DynamicSolverSpec& c = m_settings.solver;
     result.message = fmt::format(
-        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}), {:.2f} s wall time, "
-        "real-time "
-        "factor {:.1f}",
+        "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}{}), {:.2f} s wall time, "
+        "real-time factor {:.1f}; solver: {} Newton, assembly {}, refresh {}, matrix refresh {}",
         result.endTime, result.steps, result.cutbacks,
         errorControl ? fmt::format(", {} redone for accuracy, mean step {:.4g} s", result.errorRejections,
                                    result.endTime / std::max(result.steps, 1))
                      : "",
-        result.wallSeconds, result.endTime / std::max(result.wallSeconds, 1e-9));
+        result.fallbackSteps > 0
+            ? fmt::format(", {} retried with a whole refresh or full Newton", result.fallbackSteps)
+            : "",
+        result.wallSeconds, result.endTime / std::max(result.wallSeconds, 1e-9),
+        c.modifiedNewton ? "modified" : "full", c.partIterations ? "parts" : "whole",
+        c.blockRefresh ? "blocks" : "whole", c.renewalRule ? "renewal" : "when_slow");
   }
   return result;
 }

@@ -28,6 +28,9 @@ struct DynamicResult {
   long blocksLeft = 0;       ///< converged independent blocks left out of a Newton correction (8.2)
   long matrixRefreshes = 0;  ///< iteration matrices assembled and factorised (modified Newton, 8.2)
   long blockRefreshes = 0;   ///< independent blocks of it (lines) assembled and factorised on their own
+  /// Steps the chosen Newton path (dynamics.solver) did not converge and a fallback did (a whole refresh,
+  /// then full Newton: GeneralizedAlpha::step), steps cut after every fallback failed included.
+  long fallbackSteps = 0;
   double wallSeconds = 0.0;  ///< wall-clock time of the run [s]
   std::string message;       ///< summary or the reason the run stopped (time, line, node)
   bool interrupted = false;  ///< stopped by Ctrl-C / SIGTERM (core::interruptRequested)

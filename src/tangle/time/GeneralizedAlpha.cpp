@@ -82,10 +82,8 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_params(AlphaParameters::from(settings.integrator, settings.spectralRadius)),
       m_matrix(assembler.model().dofs()),
       m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr),
-      m_modifiedNewton(std::getenv("TANGLE_FULL_NEWTON") == nullptr),
-      m_wholeAssembly(std::getenv("TANGLE_WHOLE_ASSEMBLY") != nullptr),
-      m_refreshRule(std::getenv("TANGLE_KEEP_MATRIX") == nullptr),
-      m_blockRefresh(std::getenv("TANGLE_WHOLE_REFRESH") == nullptr) {
+      m_choice(settings.solver),
+      m_mode(settings.solver) {
   const model::DofMap& dofs = assembler.model().dofs();
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
@@ -399,7 +397,7 @@ bool GeneralizedAlpha::refreshBlocks(const model::State& state, const solver::As
 int GeneralizedAlpha::solveCorrection(const VecX& r) {
   const int blocks = m_solver.blockCount();
   m_activeRanges.clear();
-  if (blocks <= 1 || m_wholeAssembly) {
+  if (blocks <= 1 || !m_mode.partIterations) {
     m_delta = -r;
     m_solver.solveInPlace(m_delta);
     m_activeRanges.emplace_back(0, static_cast<int>(r.size()));
@@ -433,6 +431,47 @@ int GeneralizedAlpha::solveCorrection(const VecX& r) {
 }
 
 StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
+  // The chosen path first; a step it does not converge is tried again, from the same start, with a whole
+  // refresh of the matrix (no parts, no blocks or stretches refreshed on their own) and then with full
+  // Newton, before the caller cuts it: a speed path may change the cost of a run, never whether it completes
+  // (issue 44: a hose lowered onto a pipeline stopped at t = 0.43 s on block refreshes that kept converging
+  // linearly, and ran its 40 s with whole refreshes).
+  m_mode = m_choice;
+  StepOutcome outcome = attempt(state, dt);
+  if (outcome.converged) return outcome;
+  model::DynamicSolverSpec wholeRefresh = m_choice;
+  wholeRefresh.partIterations = false;
+  wholeRefresh.blockRefresh = false;
+  model::DynamicSolverSpec fullNewton = wholeRefresh;
+  fullNewton.modifiedNewton = false;
+  int level = 0;
+  for (const model::DynamicSolverSpec& fallback : {wholeRefresh, fullNewton}) {
+    ++level;
+    const bool plainer = fallback.modifiedNewton != m_mode.modifiedNewton ||
+                         fallback.partIterations != m_mode.partIterations ||
+                         fallback.blockRefresh != m_mode.blockRefresh;
+    if (!plainer) continue;  // already tried: the chosen path was this plain
+    m_mode = fallback;
+    m_factorValid = false;  // a fresh matrix at the step's first iterate
+    if (m_debug) std::cerr << fmt::format("    step of {:.3e} s retried: fallback {}\n", dt, level);
+    StepOutcome retry = attempt(state, dt);
+    retry.iterations += outcome.iterations;
+    retry.partIterations += outcome.partIterations;
+    retry.blocksLeft += outcome.blocksLeft;
+    retry.refreshes += outcome.refreshes;
+    retry.blockRefreshes += outcome.blockRefreshes;
+    retry.fallback = level;
+    if (!retry.converged && retry.failure.empty()) retry.failure = outcome.failure;
+    outcome = retry;
+    if (outcome.converged) break;
+  }
+  m_mode = m_choice;
+  // The fallback's matrix is of the chosen kind for the next step as well (a whole matrix is a valid kept
+  // matrix); a full Newton's last factorisation is of the last iterate, which the next step may keep.
+  return outcome;
+}
+
+StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
   const model::Model& model = m_assembler->model();
   const model::DofMap& dofs = model.dofs();
   const int nfull = dofs.fullDofCount();
@@ -528,7 +567,8 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   // Not in dynamic relaxation (a statics method): there line contact's active set, which grows with every
   // whole assembly of a step, took a different path with parts, and the lazy-wave SCR in contact of the
   // statics trials (converged in 147 s with whole assemblies) no longer converged.
-  const bool partsAllowed = m_modifiedNewton && !m_wholeAssembly && !m_frozen && m_assembler->supportsParts();
+  const bool partsAllowed =
+      m_mode.modifiedNewton && m_mode.partIterations && !m_frozen && m_assembler->supportsParts();
   bool onPart = false;  // this iterate differs from the last evaluated one only at the nodes m_moved
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, when the step size changed, or when keeping
@@ -539,7 +579,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   m_previousBlockRatio.clear();  // no block is slow at the first iteration
   // Slow blocks refreshed on their own: with modified Newton on parts (the blocks' matrices are assembled as
   // parts), not in dynamic relaxation (partsAllowed).
-  const bool blockwise = partsAllowed && m_blockRefresh;
+  const bool blockwise = partsAllowed && m_mode.blockRefresh;
   bool haveResidual = false;
   for (int it = 0; it < m_settings.maxIterations; ++it) {
     outcome.iterations = it + 1;
@@ -561,7 +601,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       applyPrescribed(state, environmentTime(t1));
     }
 
-    const bool refresh = !haveFactor || !m_modifiedNewton;
+    const bool refresh = !haveFactor || !m_mode.modifiedNewton;
     request.wantMatrix = refresh;
     try {
       // On a part the other entries of m_force are those of the last iterate, which they equal.
@@ -573,6 +613,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       // An element cannot be evaluated at this iterate (e.g. folded back on itself): the step is too
       // long; report a failed step so the controller cuts it.
       if (m_debug) std::cerr << "    assembly failed: " << e.what() << "\n";
+      outcome.failure = fmt::format("an element cannot be evaluated ({})", e.what());
       break;
     }
     // Every mass term is M times one combination of accelerations and velocities; on a part only the
@@ -634,7 +675,18 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
           it, outcome.residual, ratio, outcome.worstNode,
           onPart ? fmt::format(" (part of {} nodes)", m_part.nodes.size()) : std::string());
     }
-    if (!std::isfinite(ratio)) break;
+    if (!std::isfinite(ratio)) {
+      // Name where: the first equation whose out-of-balance is not finite, and what it is.
+      for (int i = 0; i < neq; ++i) {
+        if (std::isfinite(r[i])) continue;
+        outcome.failure = fmt::format(
+            "the out-of-balance force is not finite ({}) at {}: an element or a load there gave {}", r[i],
+            model.describeNode(dofs.nodeOf(eqDofs[i])), r[i]);
+        outcome.worstNode = dofs.nodeOf(eqDofs[i]);
+        break;
+      }
+      break;
+    }
     if (ratio <= 1.0) {
       // Converged for this active set; if a contact had to be released, iterate on.
       if (!m_assembler->updateActiveSet()) {
@@ -662,8 +714,8 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
         else
           wholeRefresh = true;
         if (m_debug)
-          std::cerr << "      " << m_slowBlocks.size() << " of " << m_solver.blockCount() << " blocks slow: "
-                    << (wholeRefresh ? "whole refresh\n" : "refreshed alone\n");
+          std::cerr << "      " << m_slowBlocks.size() << " of " << m_solver.blockCount()
+                    << " blocks slow: " << (wholeRefresh ? "whole refresh\n" : "refreshed alone\n");
       }
     }
     if (wholeRefresh) {
@@ -679,7 +731,10 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       m_matrix.build(m_k);
       m_kDiagonal = m_k.diagonal();
       m_factorValid = false;
-      if (!m_solver.factorize(m_k)) break;
+      if (!m_solver.factorize(m_k)) {
+        outcome.failure = "the iteration matrix is singular";
+        break;
+      }
       m_factorValid = true;
       m_factorStep = dt;
       haveFactor = true;
@@ -702,13 +757,14 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
       for (int i = 0; i < neq; ++i) full[eqDofs[i]] = m_delta[i];
       const double alpha = m_assembler->limitDynamicIncrement(state, full);
       if (alpha < 1.0) m_delta *= alpha;
-      if (m_debug && alpha < 1.0) std::cerr << fmt::format("      contact filter: correction x {:.3e}\n", alpha);
+      if (m_debug && alpha < 1.0)
+        std::cerr << fmt::format("      contact filter: correction x {:.3e}\n", alpha);
     }
     onPart = applyCorrection(dq, partsAllowed);
   }
   // The norm in N and its node are for the message of a failed step (a converged step's largest
   // out-of-balance is below the tolerance by definition; the norm per step is not free: docs/performance.md).
-  if (haveResidual && (!outcome.converged || m_debug))
+  if (haveResidual && (!outcome.converged || m_debug) && outcome.failure.empty())
     outcome.residual =
         solver::residualNorm(model, r, solver::ResidualIndexing::Equations, &outcome.worstNode);
   if (!outcome.converged) {
@@ -751,7 +807,7 @@ void GeneralizedAlpha::planRefresh(const StepOutcome& outcome, bool refreshed) {
   ++m_stepsSinceRefresh;
   m_evaluationsSinceRefresh += evaluations;
   m_recentEvaluations += kSmoothing * (evaluations - m_recentEvaluations);
-  if (m_frozen || !m_modifiedNewton || !m_refreshRule) return;
+  if (m_frozen || !m_mode.modifiedNewton || !m_mode.renewalRule) return;
   const double average = (kRefreshCost + m_evaluationsSinceRefresh) / m_stepsSinceRefresh;
   m_refreshDue = m_stepsSinceRefresh >= 2 && m_recentEvaluations > average;
 }

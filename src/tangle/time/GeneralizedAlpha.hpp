@@ -4,9 +4,10 @@
 /// (Chung & Hulbert 1993, J. Appl. Mech. 60:371), which contains HHT-alpha (Hilber, Hughes & Taylor
 /// 1977) and Newmark's average-acceleration rule (Newmark 1959) as special cases, with Newton
 /// iterations every step (modified Newton: the factorised matrix is reused while the residual falls by
-/// 4x or more per iteration, refreshed otherwise; TANGLE_FULL_NEWTON=1 refreshes it every iteration). With
-/// independent blocks in the matrix (lines not coupled to each other) the test and the refresh are per block
-/// (TANGLE_WHOLE_REFRESH=1: the whole matrix, for comparison).
+/// 4x or more per iteration, refreshed otherwise; `dynamics.solver.newton: full` refreshes it every
+/// iteration). With independent blocks in the matrix (lines not coupled to each other) the test and the
+/// refresh are per block (`refresh: whole`: the whole matrix). A step the chosen path does not converge is
+/// retried with a whole refresh, then with full Newton, before it is reported as failed (step()).
 ///
 /// Contract of step(): on input `state` holds q_n, v_n, a_n at t_n (a_n consistent with the
 /// previous step); on success it holds q_{n+1}, v_{n+1}, a_{n+1} at t_n + dt. On failure the state is
@@ -16,6 +17,7 @@
 /// consistent treatment of the rotational inertia, which is tiny for slender lines).
 
 #include <cstdlib>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -49,6 +51,11 @@ struct StepOutcome {
   int blockRefreshes = 0;  ///< independent blocks of the kept matrix assembled and factorised on their own
   double residual = 0.0;  ///< last max out-of-balance force [N] of a failed step (0 for a converged one)
   int worstNode = -1;     ///< node with the largest out-of-balance force (of a failed step)
+  /// Newton path that converged it: 0 the chosen one (dynamics.solver), 1 a whole refresh, 2 full Newton.
+  int fallback = 0;
+  /// Why a failed step has no out-of-balance force to name (an element that cannot be evaluated, a
+  /// singular matrix, a force that is not finite); empty when the residual and worstNode say it.
+  std::string failure;
 };
 
 /// Generalized-alpha stepper.
@@ -85,6 +92,8 @@ class GeneralizedAlpha {
   const VecX& lastForce() const { return m_forceOld; }
 
  private:
+  /// One attempt at a step with the Newton path m_mode (step() tries the fallbacks); the contract of step().
+  StepOutcome attempt(model::State& state, double dt);
   void applyPrescribed(model::State& state, double t) const;
   /// Sets the moved nodes (m_moved) of `state` from the step's start and increment dq: positions, triads,
   /// and the Newmark velocities and accelerations of their free DOFs; the other nodes keep theirs.
@@ -95,7 +104,7 @@ class GeneralizedAlpha {
   bool applyCorrection(VecX& dq, bool partsAllowed);
   /// Sets m_delta to the Newton correction for the out-of-balance r (equations) with the kept
   /// factorisation, in the independent blocks of the matrix that have not converged (all of it when it is
-  /// one block, or with TANGLE_WHOLE_ASSEMBLY), and m_activeRanges to their equations; m_delta is not set
+  /// one block, or with `assembly: whole`), and m_activeRanges to their equations; m_delta is not set
   /// outside them. Returns the number of blocks left out.
   int solveCorrection(const VecX& r);
   /// After a converged step: whether the next step refreshes the kept matrix (m_refreshDue), from the
@@ -161,11 +170,8 @@ class GeneralizedAlpha {
   solver::AssemblyPart m_part;
   VecX m_kDiagonal;
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
-  bool m_modifiedNewton = true;  // TANGLE_FULL_NEWTON set: refresh the matrix every iteration
-  bool m_wholeAssembly = false;  // TANGLE_WHOLE_ASSEMBLY set: every iteration on the whole model: no part,
-                                 // every independent block solved (for comparison)
-  bool m_refreshRule = true;     // TANGLE_KEEP_MATRIX unset: planRefresh may refresh (else only slow steps do)
-  bool m_blockRefresh = true;    // TANGLE_WHOLE_REFRESH unset: slow blocks refreshed on their own
+  model::DynamicSolverSpec m_choice;  // dynamics.solver: the path every step tries first
+  model::DynamicSolverSpec m_mode;    // the path of the attempt under way (step(): the choice or a fallback)
   bool m_factorValid = false;    // m_solver holds a factorisation usable for the next step
   bool m_reuseAcrossSteps = true;  // keep the factorisation from step to step while it converges fast
   int m_stepsSinceRefresh = 0;     // converged steps with the kept matrix (planRefresh)

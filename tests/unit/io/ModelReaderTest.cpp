@@ -582,6 +582,31 @@ TEST(ModelReaderErrors, UnknownEndType) {
                   "expected one of: anchored, fixed, pinned, free, vessel, got welded");
 }
 
+TEST(ModelReaderErrors, UnknownNewtonPath) {
+  expectEditError("  spectral_radius: 0.7\n", "  spectral_radius: 0.7\n  solver: {newton: quasi}\n",
+                  "solver:", "dynamics.solver.newton", "expected one of: modified, full");
+  expectEditError("  spectral_radius: 0.7\n", "  spectral_radius: 0.7\n  solver: {refresh: blocks, fast: true}\n",
+                  "solver:", "dynamics.solver.fast", "expected one of: newton, assembly, refresh, matrix_refresh");
+}
+
+TEST(ModelReader, DynamicsSolverChoice) {
+  // Issue 44: the Newton path in the model file (the default: the fast path).
+  const ModelSpec base = readModelString(kBaseModel, kSource);
+  EXPECT_TRUE(base.dynamics.solver.modifiedNewton);
+  EXPECT_TRUE(base.dynamics.solver.partIterations);
+  EXPECT_TRUE(base.dynamics.solver.blockRefresh);
+  EXPECT_TRUE(base.dynamics.solver.renewalRule);
+  const ModelSpec plain = readModelString(
+      edited(kBaseModel, "  spectral_radius: 0.7\n",
+             "  spectral_radius: 0.7\n  solver:\n    newton: full\n    assembly: whole\n    refresh: whole\n"
+             "    matrix_refresh: when_slow\n"),
+      kSource);
+  EXPECT_FALSE(plain.dynamics.solver.modifiedNewton);
+  EXPECT_FALSE(plain.dynamics.solver.partIterations);
+  EXPECT_FALSE(plain.dynamics.solver.blockRefresh);
+  EXPECT_FALSE(plain.dynamics.solver.renewalRule);
+}
+
 TEST(ModelReaderErrors, UnknownIntegrator) {
   expectEditError("  spectral_radius: 0.7\n", "  spectral_radius: 0.7\n  integrator: euler\n",
                   "integrator:", "dynamics.integrator", "expected one of: generalized_alpha, hht, newmark");

@@ -7,7 +7,7 @@
 // solution within the same tolerance. Checked on three copies of the mooring example's line
 // (examples/mooring-dynamics, 200 bars) around a point, fairleads on a 20 m circle at azimuths 0, 120 and
 // 250 deg, each moved 5 m / 10 s along x (in-line for the first, across for the others), 30 s at dt 0.01 s:
-// against whole-model iterations (TANGLE_WHOLE_ASSEMBLY: every block solved, no part) the fairlead tension of
+// against whole-model iterations (`assembly: whole`: every block solved, no part) the fairlead tension of
 // every step and its range over the last period agree to within what the convergence tolerance leaves open.
 // Both run at test::kComparisonTolerance (1e-8 of each line's weight), where that latitude is a few newtons
 // (MooringExampleRun.hpp; at the default 1e-6 the in-line line's touchdown chatter leaves hundreds).
@@ -44,8 +44,8 @@ void expectSameResponseOfThreeLines(const test::FairleadRun& reference, const te
 
 TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceTolerance) {
   const std::vector<double> azimuths{0.0, 120.0, 250.0};  // [deg]
-  const test::FairleadRun whole = test::runMooringExample(30.0, "TANGLE_WHOLE_ASSEMBLY", azimuths);
-  const test::FairleadRun blocks = test::runMooringExample(30.0, "", azimuths);
+  const test::FairleadRun whole = test::runMooringExample(30.0, test::wholeAssembly(), azimuths);
+  const test::FairleadRun blocks = test::runMooringExample(30.0, {}, azimuths);
   ASSERT_TRUE(whole.result.completed) << whole.result.message;
   ASSERT_TRUE(blocks.result.completed) << blocks.result.message;
   // The switch works both ways: every block solved without it; with it, converged lines are left out.
@@ -57,13 +57,13 @@ TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceToleran
 
 // The same three lines with the kept matrix refreshed per block (GeneralizedAlpha::refreshBlocks: a line whose
 // out-of-balance falls by less than 4x in an iteration has its own matrix assembled and factorised again,
-// the others kept) against refreshes of the whole matrix (TANGLE_WHOLE_REFRESH): the same response within
+// the others kept) against refreshes of the whole matrix (`refresh: whole`): the same response within
 // the convergence tolerance, with the bounds above (the same latitude: another sequence of iterates
 // converged to the same tolerance).
 TEST(BlockIterationTest, SlowLinesRefreshedAloneSameResponseWithinTheConvergenceTolerance) {
   const std::vector<double> azimuths{0.0, 120.0, 250.0};  // [deg]
-  const test::FairleadRun whole = test::runMooringExample(30.0, "TANGLE_WHOLE_REFRESH", azimuths);
-  const test::FairleadRun blocks = test::runMooringExample(30.0, "", azimuths);
+  const test::FairleadRun whole = test::runMooringExample(30.0, test::wholeRefresh(), azimuths);
+  const test::FairleadRun blocks = test::runMooringExample(30.0, {}, azimuths);
   ASSERT_TRUE(whole.result.completed) << whole.result.message;
   ASSERT_TRUE(blocks.result.completed) << blocks.result.message;
   // The switch works both ways.

@@ -7,7 +7,7 @@
 // model's convergence test, so the result is a different solution within the same tolerance, not an
 // approximation of it. Checked here on the mooring example (examples/mooring-dynamics, 200 bars, fairlead
 // 5 m / 10 s, ramped over 10 s), 30 s at its dt 0.01 s: against the whole-model iterations
-// (TANGLE_WHOLE_ASSEMBLY) the fairlead tension of every step and its range over the last period agree
+// (`dynamics.solver.assembly: whole`) the fairlead tension of every step and its range over the last period agree
 // to within what the convergence tolerance leaves open. Both run at test::kComparisonTolerance (1e-8 of the
 // line's weight), where that latitude is a few newtons; at the default 1e-6 it is the touchdown chatter's
 // phase (3-5 Hz, undamped seabed), up to 753 N against the converged answer, too loose to see a switch
@@ -29,7 +29,7 @@ namespace {
 using test::rangeAfter;
 
 TEST(PartIterationTest, MooringLineSameResponseWithinTheConvergenceTolerance) {
-  const test::FairleadRun whole = test::runMooringExample(30.0, "TANGLE_WHOLE_ASSEMBLY");
+  const test::FairleadRun whole = test::runMooringExample(30.0, test::wholeAssembly());
   const test::FairleadRun parts = test::runMooringExample(30.0);
   ASSERT_TRUE(whole.result.completed) << whole.result.message;
   ASSERT_TRUE(parts.result.completed) << parts.result.message;

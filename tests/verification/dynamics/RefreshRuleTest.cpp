@@ -4,7 +4,7 @@
 // The rule only changes which matrix the modified Newton iterations use; every step still passes the same
 // convergence test on the exact residual, so the result is another solution within the same tolerance.
 // Checked on the mooring example (200 bars, fairlead 5 m / 10 s, ramped over 10 s), 30 s at dt 0.01 s,
-// against the old rule (TANGLE_KEEP_MATRIX: the matrix kept while the residual falls 4x per iteration):
+// against the old rule (`matrix_refresh: when_slow`: the matrix kept while the residual falls 4x per iteration):
 // - the rule refreshes and saves residual evaluations: over 200 s, 968 refreshes (403 kept) and 3.31
 //   evaluations per step against 3.62 (parts counted); here at least one refresh per 100 steps and fewer
 //   iterations in all;
@@ -28,7 +28,7 @@ namespace {
 using test::rangeAfter;
 
 TEST(RefreshRuleTest, MooringLineFewerIterationsSameResponseWithinTheConvergenceTolerance) {
-  const test::FairleadRun kept = test::runMooringExample(30.0, "TANGLE_KEEP_MATRIX");
+  const test::FairleadRun kept = test::runMooringExample(30.0, test::whenSlow());
   const test::FairleadRun rule = test::runMooringExample(30.0);
   ASSERT_TRUE(kept.result.completed) << kept.result.message;
   ASSERT_TRUE(rule.result.completed) << rule.result.message;
