@@ -178,6 +178,11 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
                                                   "static equilibrium found in {} iterations (max "
                                                   "out-of-balance {:.3g} N, tolerance {:.3g} N)",
                                                   result.iterations, result.residual, result.tolerance);
+    // The path taken, for the log: Newton at the full load failed and the load was continued from the start
+    // shape (a hint that the start shape is far from the equilibrium: docs/model-format.md, start_shape).
+    if (result.continuationSteps > 0)
+      result.message += fmt::format(", by continuation from the start shape in {} load steps",
+                                    result.continuationSteps);
   } else {
     if (result.message.empty()) result.message = diagnose(trial, result, "");
     state = start;
@@ -325,6 +330,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
       reached = target;
       result.loadFraction = reached;
       result.roundoffLimited = step.roundoff;
+      ++result.continuationSteps;
       increment = std::min(1.0, increment * (step.iterations <= 6 ? 2.0 : 1.0));
     } else {
       lastFailure = step.failure;

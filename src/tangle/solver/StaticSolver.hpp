@@ -37,6 +37,7 @@ struct StaticResult {
   double tolerance = 0.0;        ///< force tolerance that was applied [N]
   bool roundoffLimited = false;  ///< accepted at the round-off floor, above the requested tolerance
   int worstNode = -1;            ///< global node with the largest out-of-balance force
+  int continuationSteps = 0;     ///< load steps of the continuation from the start shape (0: Newton at full load)
   std::string message;           ///< human-readable summary (on failure: where, how large, what to change)
   std::vector<std::string> warnings;  ///< e.g. bar elements left in compression
 };
