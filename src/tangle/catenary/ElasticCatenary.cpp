@@ -548,13 +548,9 @@ InitialShape initialLineShape(const Vec3& endA, const Vec3& endB,
       const bool buoyantSection = std::any_of(sections.begin(), sections.end(),
                                               [](const CatenarySection& c) { return c.weight <= 0.0; });
       if (buoyantSection && span > 0.0) {
-        MultiSectionCatenary multi;
-        multi.canGround = anchored;
-        multi.sections = sections;
+        MultiSectionCatenary multi(sections, anchored);
         const bool fromA = !anchored || anchoredAtA;  // `origin` is end A
         if (!fromA) std::reverse(multi.sections.begin(), multi.sections.end());
-        multi.length = length;
-        for (const CatenarySection& c : sections) multi.weightScale += std::abs(c.weight) * c.length;
         const double guessU = sol.groundedLength > 0.0 ? sol.groundedLength / length : -1e-3;
         const bool ok =
             multi.solve(span, height, std::max(sol.horizontalTension, 1e-3 * multi.weightScale), guessU);

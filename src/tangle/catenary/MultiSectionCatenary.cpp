@@ -3,8 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace tangle::catenary {
+
+MultiSectionCatenary::MultiSectionCatenary(std::vector<CatenarySection> lineSections, bool groundable)
+    : sections(std::move(lineSections)), canGround(groundable) {
+  for (const CatenarySection& c : sections) {
+    length += c.length;
+    weightScale += std::abs(c.weight) * c.length;
+  }
+}
 
 void MultiSectionCatenary::setUnknowns(double logH, double u) {
   horizontal = std::exp(logH);

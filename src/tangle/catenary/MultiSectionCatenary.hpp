@@ -20,6 +20,10 @@
 namespace tangle::catenary {
 
 struct MultiSectionCatenary {
+  /// The line of `sections` (from the anchor, or from end A when nothing can ground: `canGround` false);
+  /// its length and weight scale follow from them.
+  explicit MultiSectionCatenary(std::vector<CatenarySection> lineSections, bool groundable = true);
+
   std::vector<CatenarySection> sections;  ///< from the anchor (or end A when nothing can ground)
   double length = 0.0;                    ///< [m]
   double weightScale = 0.0;               ///< sum |w_i| L_i [N]

@@ -22,21 +22,11 @@
 namespace tangle::catenary {
 namespace {
 
-MultiSectionCatenary lineOf(const std::vector<CatenarySection>& sections) {
-  MultiSectionCatenary m;
-  m.sections = sections;
-  for (const CatenarySection& c : sections) {
-    m.length += c.length;
-    m.weightScale += std::abs(c.weight) * c.length;
-  }
-  return m;
-}
-
 void expectSameAsUniformCatenary(double span, double height, bool grounded) {
   const double length = 1000.0, weight = 800.0, ea = 5.0e8;
   const CatenarySolution reference = solveAnchoredCatenary({span, height, length, weight, ea});
   EXPECT_EQ(reference.groundedLength > 0.0, grounded);
-  MultiSectionCatenary m = lineOf({{400.0, weight, ea}, {600.0, weight, ea}});
+  MultiSectionCatenary m({{400.0, weight, ea}, {600.0, weight, ea}});
   ASSERT_TRUE(m.solve(span, height, 0.5 * reference.horizontalTension, 0.3));
   EXPECT_NEAR(m.horizontal, reference.horizontalTension, 1e-7 * reference.horizontalTension);
   EXPECT_NEAR(m.grounded, reference.groundedLength, 1e-7 * length);
@@ -64,7 +54,7 @@ void expectLazyWaveWithItsHog(double span, double buoyancyMass) {
   constexpr double kPi = 3.141592653589793, g = 9.80665;
   const double wRiser = 130.0 * g - 1025.0 * g * 0.25 * kPi * 0.2731 * 0.2731;
   const double wBuoy = buoyancyMass * g - 1025.0 * g * 0.25 * kPi * 0.9 * 0.9;
-  MultiSectionCatenary m = lineOf(
+  MultiSectionCatenary m(
       {{500.0, wRiser, 3.3e9}, {800.0, wRiser, 3.3e9}, {400.0, wBuoy, 3.3e9}, {1540.0, wRiser, 3.3e9}});
   const double height = 1490.0;
   ASSERT_TRUE(m.solve(span, height, 1e-3 * m.weightScale, 0.5));
@@ -102,7 +92,7 @@ TEST(MultiSectionCatenary, LazyWaveDoesNotLayItsBuoyancySectionOnTheSeabed) {
 }
 
 TEST(MultiSectionCatenary, AGroundedBuoyantSectionIsNotHeavy) {
-  MultiSectionCatenary m = lineOf({{100.0, 500.0, 1e9}, {50.0, -300.0, 1e9}, {100.0, 500.0, 1e9}});
+  MultiSectionCatenary m({{100.0, 500.0, 1e9}, {50.0, -300.0, 1e9}, {100.0, 500.0, 1e9}});
   m.setUnknowns(std::log(1e4), 160.0 / 250.0);  // grounded over the buoyant section into the third
   EXPECT_FALSE(m.groundedHeavy());
   m.setUnknowns(std::log(1e4), 90.0 / 250.0);

@@ -64,13 +64,11 @@ TEST_P(LazyWaveStatics, ConvergesInFewIterationsToTheCableSolution) {
   EXPECT_LE(statics.iterations, 30);
 
   const double g = sim.model().environment().gravity, rho = sim.model().environment().waterDensity;
-  catenary::MultiSectionCatenary cable;
+  std::vector<catenary::CatenarySection> sections;
   for (const auto& [type, length] :
-       {std::pair{riser, 1300.0}, std::pair{buoyant, 400.0}, std::pair{riser, 1540.0}}) {
-    cable.sections.push_back({length, type.submergedWeight(rho, g), type.axialStiffness});
-    cable.length += length;
-    cable.weightScale += std::abs(cable.sections.back().weight) * length;
-  }
+       {std::pair{riser, 1300.0}, std::pair{buoyant, 400.0}, std::pair{riser, 1540.0}})
+    sections.push_back({length, type.submergedWeight(rho, g), type.axialStiffness});
+  catenary::MultiSectionCatenary cable(sections);
   // The anchor end rests one contact radius above the seabed (as the model places it).
   const Vec3 anchor = sim.model().endPosition(sim.model().lines()[0].spec->endA);
   ASSERT_TRUE(cable.solve(c.span, -10.0 - anchor.z(), 1e-3 * cable.weightScale, 0.5));
