@@ -25,6 +25,20 @@ inline section::LineType solidRodType(const std::string& name, double d, double 
   return t;
 }
 
+/// A beam line type of given properties (a flexible pipe, a hose): diameter [m], mass per length [kg/m], EA [N],
+/// EI [N m^2] (torsional stiffness GJ = EI), normal drag and added-mass coefficients [-].
+inline section::LineType beamType(const std::string& name, double diameter, double massPerLength, double ea,
+                                  double ei, double dragNormal, double addedMassNormal) {
+  section::LineType t = solidRodType(name, diameter, 1.0, 1.0);
+  t.massPerLength = massPerLength;
+  t.axialStiffness = ea;
+  t.bendingStiffness = ei;
+  t.torsionalStiffness = ei;
+  t.dragNormal = dragNormal;
+  t.addedMassNormal = addedMassNormal;
+  return t;
+}
+
 /// A cable (bar) line type.
 inline section::LineType cableType(const std::string& name, double diameter, double massPerLength, double ea) {
   section::LineType t;

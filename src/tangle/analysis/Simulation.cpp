@@ -8,6 +8,7 @@
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/core/Error.hpp"
@@ -66,8 +67,22 @@ void Simulation::checkStartShapes() const {
 
 Simulation::~Simulation() = default;
 
-solver::StaticResult Simulation::solveStatics() {
+solver::StaticResult Simulation::solveStatics(bool progress) {
+  // Progress lines: this solve's own, unless a caller's (the finer model of a mesh continuation) is shown.
+  std::optional<core::ConsoleProgress> ownProgress;
+  if (progress && !m_staticsProgress) {
+    ownProgress.emplace();
+    m_staticsProgress = &*ownProgress;
+  }
+  struct Release {
+    Simulation* sim;
+    bool own;
+    ~Release() {
+      if (own) sim->m_staticsProgress = nullptr;
+    }
+  } release{this, ownProgress.has_value()};
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
+  solver.setProgress(m_staticsProgress);
   const model::State start = m_state;
   solver::StaticResult result = solver.solve(m_state);
   // Fallbacks, cheapest first: in a current, the tangent with the drag's follower stiffness (theory 6.4);
@@ -91,6 +106,8 @@ bool Simulation::solveWithDragStiffness(const model::State& start, solver::Stati
   model::State trial = start;
   solver::StaticSolver withDrag(*m_assembler, m_model->spec().statics);
   withDrag.setDragStiffness(true);
+  if (m_staticsProgress) m_staticsProgress->stage("statics: trying again with the drag's stiffness in the tangent");
+  withDrag.setProgress(m_staticsProgress, "(drag stiffness)");
   solver::StaticResult again = withDrag.solve(trial);
   if (solver::StaticSolver::debugOutput())
     std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
@@ -131,6 +148,8 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   const int newtonIterations = result.iterations;
   int lastRound = 0;
   for (int round = 0; round < kRounds; ++round) {
+    if (m_staticsProgress)
+      m_staticsProgress->stage(fmt::format("statics: dynamic relaxation, round {} of up to {}", round + 1, kRounds));
     const time::RelaxationResult r = relaxation.run(relaxed, m_state.time, 2.0 * period, kRestSpeed);
     if (solver::StaticSolver::debugOutput())
       std::cerr << fmt::format("  dynamic relaxation round {}: {}\n", round + 1, r.message);
@@ -138,6 +157,7 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
     if (r.steps == 0) break;  // the relaxation cannot move: Newton would start where it failed
     model::State trial = relaxed;
     solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
+    solver.setProgress(m_staticsProgress, fmt::format("(after dynamic relaxation round {})", round + 1));
     solver::StaticResult again = solver.solve(trial);
     if (again.converged) {
       again.iterations += newtonIterations;
@@ -184,7 +204,11 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
     return false;  // e.g. an attachment that the coarse mesh cannot place
   }
   coarse->m_coarseFallback = false;
+  if (m_staticsProgress)
+    m_staticsProgress->stage("statics: solving the model with a quarter of the elements first");
+  coarse->m_staticsProgress = m_staticsProgress;
   const solver::StaticResult coarseResult = coarse->solveStatics();
+  coarse->m_staticsProgress = nullptr;
   if (solver::StaticSolver::debugOutput())
     std::cerr << "  coarse mesh (1/" << kFactor << " of the elements): " << coarseResult.message << "\n";
   if (!coarseResult.converged) {
@@ -241,6 +265,7 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
   }
   const model::State interpolated = start;
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
+  solver.setProgress(m_staticsProgress, "(from the coarse mesh's equilibrium)");
   solver::StaticResult again = solver.solve(start);
   if (!again.converged) {
     result.message +=

@@ -9,6 +9,7 @@
 #include "tangle/contact/LineContact.hpp"
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
+#include "tangle/core/ConsoleProgress.hpp"
 #include "tangle/solver/Assembler.hpp"
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
@@ -36,7 +37,9 @@ class Simulation {
 
   /// Static equilibrium from the initial shape; when the Newton solve fails, from the shape reached by
   /// dynamic relaxation (time::DynamicRelaxation; not for models with line contact or free vessels).
-  solver::StaticResult solveStatics();
+  /// `progress`: a solve that takes more than a few seconds prints its progress and each fallback it tries on
+  /// stderr (core::ConsoleProgress).
+  solver::StaticResult solveStatics(bool progress = false);
   /// Results along every line at the current state.
   std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
   /// The same results without the support reactions (endForceA/B are zero): tensions, moments,
@@ -73,6 +76,7 @@ class Simulation {
   std::unique_ptr<contact::LineContact> m_contact;
   std::unique_ptr<vessel::VesselSystem> m_vessels;
   model::State m_state;
+  core::ConsoleProgress* m_staticsProgress = nullptr;  // progress lines of the statics under way (solveStatics)
   bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)
   mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;  // sectionSnapshot's buffer
   std::vector<int> m_snapshotEnds;      // the lines' end nodes (ascending; snapshot fills it once)

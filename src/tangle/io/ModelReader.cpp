@@ -943,16 +943,13 @@ void readDynamics(const Value& v, ModelSpec& spec) {
   s.maxTimeStep = m.number("max_time_step", s.outputInterval,
                            Range{s.timeStep, s.outputInterval, false, false, "between time_step and output_interval"});
   if (const std::optional<Value> solver = m.find("solver")) {
-    const Map sm(*solver, {"newton", "assembly", "refresh", "matrix_refresh"});
-    model::DynamicSolverSpec& c = s.solver;
-    if (const std::optional<Value> x = sm.find("newton"))
-      c.modifiedNewton = x->choice<bool>({{"modified", true}, {"full", false}});
-    if (const std::optional<Value> x = sm.find("assembly"))
-      c.partIterations = x->choice<bool>({{"parts", true}, {"whole", false}});
-    if (const std::optional<Value> x = sm.find("refresh"))
-      c.blockRefresh = x->choice<bool>({{"blocks", true}, {"whole", false}});
-    if (const std::optional<Value> x = sm.find("matrix_refresh"))
-      c.renewalRule = x->choice<bool>({{"renewal", true}, {"when_slow", false}});
+    using Choices = model::DynamicSolverSpec;
+    std::vector<std::string> keys;
+    for (const Choices::Choice& c : Choices::kChoices) keys.emplace_back(c.key);
+    const Map sm(*solver, keys);
+    for (const Choices::Choice& c : Choices::kChoices)
+      if (const std::optional<Value> x = sm.find(c.key))
+        s.solver.*c.member = x->choice<bool>({{c.whenTrue, true}, {c.whenFalse, false}});
   }
 }
 

@@ -237,6 +237,24 @@ struct DynamicSolverSpec {
   /// matrix_refresh: `renewal` (the kept matrix is also refreshed when keeping it costs more iterations
   /// than a refresh, the renewal rule of theory 8.2) or `when_slow` (only when a step converges slowly).
   bool renewalRule = true;
+
+  /// One key of `dynamics.solver`: its name, the names of its two values and the member it sets. The reader,
+  /// the run log and summary.json all name the choices from this table.
+  struct Choice {
+    const char* key;
+    const char* whenTrue;
+    const char* whenFalse;
+    bool DynamicSolverSpec::*member;
+  };
+  /// The four keys, in the order of docs/model-format.md.
+  static constexpr std::array<Choice, 4> kChoices{{
+      {"newton", "modified", "full", &DynamicSolverSpec::modifiedNewton},
+      {"assembly", "parts", "whole", &DynamicSolverSpec::partIterations},
+      {"refresh", "blocks", "whole", &DynamicSolverSpec::blockRefresh},
+      {"matrix_refresh", "renewal", "when_slow", &DynamicSolverSpec::renewalRule},
+  }};
+  /// The name of the value chosen for `choice`.
+  const char* valueOf(const Choice& choice) const { return this->*choice.member ? choice.whenTrue : choice.whenFalse; }
 };
 
 struct DynamicSpec {

@@ -81,10 +81,8 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
     const model::DynamicSolverSpec& c = m.spec().dynamics.solver;
     j.key("solver");
     j.beginObject();
-    j.field("newton", c.modifiedNewton ? "modified" : "full");
-    j.field("assembly", c.partIterations ? "parts" : "whole");
-    j.field("refresh", c.blockRefresh ? "blocks" : "whole");
-    j.field("matrix_refresh", c.renewalRule ? "renewal" : "when_slow");
+    for (const model::DynamicSolverSpec::Choice& choice : model::DynamicSolverSpec::kChoices)
+      j.field(choice.key, c.valueOf(choice));
     j.endObject();
   }
   j.field("wall_time_s", r.wallSeconds);
@@ -242,7 +240,7 @@ bool RunOutputs::writeStatics() {
   log.info(modelSummary(m));
   log.error(warningText(m.spec()));
 
-  const solver::StaticResult result = sim.solveStatics();
+  const solver::StaticResult result = sim.solveStatics(m_options.progress);
   for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
   m_static = sim.snapshot();
   const std::vector<solver::LineSnapshot>& lines = m_static;

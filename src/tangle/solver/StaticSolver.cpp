@@ -304,6 +304,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   std::string lastFailure = failure;
   while (reached < 1.0 && budget > 0) {
     const double target = std::min(1.0, reached + increment);
+    m_progressFraction = target;
     model::State trial = state;
     const VecX offset = (1.0 - target) * r0;
     m_assembler->setRestLengths(lengthsAt(target));
@@ -339,6 +340,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
       m_assembler->beginStatics(state);  // back to the anchors of the last converged increment
     }
   }
+  m_progressFraction = 1.0;
   if (reached >= 1.0) return true;
   failure = lastFailure;
   return false;
@@ -458,6 +460,11 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       continue;
     }
     out.iterations = it + 1;
+    ++m_progressIterations;
+    if (m_progress && m_progress->due())
+      m_progress->print(fmt::format("statics{}: {} Newton iterations, load fraction {:.3f}, out-of-balance {:.3g} N",
+                                    m_progressStage.empty() ? "" : " " + m_progressStage, m_progressIterations,
+                                    m_progressFraction, out.residual));
     const SparseMatrix* system = &kAccepted;
     if (mu > 0.0) {
       k = kAccepted;

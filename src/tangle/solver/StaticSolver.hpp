@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "tangle/core/ConsoleProgress.hpp"
 #include "tangle/model/State.hpp"
 #include "tangle/solver/Assembler.hpp"
 
@@ -61,6 +62,12 @@ class StaticSolver {
   /// True when TANGLE_DEBUG_STATICS is set: statics and its fallbacks (Simulation::solveStatics) print their
   /// progress on stderr.
   static bool debugOutput();
+  /// Prints progress lines (iterations, load fraction, out-of-balance) on `progress` while solving; `stage`
+  /// names the attempt in them (e.g. "with a quarter of the elements"). Null: none (the default).
+  void setProgress(core::ConsoleProgress* progress, std::string stage = {}) {
+    m_progress = progress;
+    m_progressStage = std::move(stage);
+  }
 
  private:
   struct NewtonOutcome {
@@ -104,6 +111,10 @@ class StaticSolver {
   model::StaticSpec m_settings;
   double m_forceScale = 1.0;
   bool m_dragStiffness = false;
+  core::ConsoleProgress* m_progress = nullptr;  // setProgress
+  std::string m_progressStage;
+  int m_progressIterations = 0;     // Newton iterations of this solve so far (for the progress lines)
+  double m_progressFraction = 1.0;  // load fraction being solved for [-]
 };
 
 }  // namespace tangle::solver

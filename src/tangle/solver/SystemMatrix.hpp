@@ -23,7 +23,7 @@ namespace tangle::solver {
 ///   (a contact appears, a pattern changes) turns the assembly back into recording, with the entries
 ///   summed so far as triplets.
 /// And a third, patching, for a refresh of an independent block of the matrix or of a stretch of it
-/// (GeneralizedAlpha::refreshBlocks): after a build, beginPatch zeroes the built matrix's entries in the rows
+/// (NewtonIteration::refreshBlocks): after a build, beginPatch zeroes the built matrix's entries in the rows
 /// and columns of the patched equations, and the calls that follow (the elements and nodes there) replay
 /// the recorded sequence's subsequence of those entries; endPatch copies them into the built matrix. The
 /// recorded sequence is left as it was.

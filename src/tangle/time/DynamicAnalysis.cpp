@@ -14,6 +14,16 @@
 
 namespace tangle::time {
 
+namespace {
+/// The solver's choices as the model file names them: "newton modified, assembly parts, ...".
+std::string solverChoices(const model::DynamicSolverSpec& solver) {
+  std::string text;
+  for (const model::DynamicSolverSpec::Choice& choice : model::DynamicSolverSpec::kChoices)
+    text += fmt::format("{}{} {}", text.empty() ? "" : ", ", choice.key, solver.valueOf(choice));
+  return text;
+}
+}  // namespace
+
 std::vector<model::PrescribedNode> prescribedNodes(const model::Model& model) {
   std::vector<model::PrescribedNode> out;
   const double rampTime = model.spec().dynamics.rampTime;
@@ -223,7 +233,7 @@ DynamicResult DynamicAnalysis::finish(model::State& state) {
     const model::DynamicSolverSpec& c = m_settings.solver;
     result.message = fmt::format(
         "dynamic analysis completed: {:.2f} s simulated in {} steps ({} cut back{}{}), {:.2f} s wall time, "
-        "real-time factor {:.1f}; solver: {} Newton, assembly {}, refresh {}, matrix refresh {}",
+        "real-time factor {:.1f}; solver: {}",
         result.endTime, result.steps, result.cutbacks,
         errorControl ? fmt::format(", {} redone for accuracy, mean step {:.4g} s", result.errorRejections,
                                    result.endTime / std::max(result.steps, 1))
@@ -232,8 +242,7 @@ DynamicResult DynamicAnalysis::finish(model::State& state) {
             ? fmt::format(", {} retried with a whole refresh or full Newton", result.fallbackSteps)
             : "",
         result.wallSeconds, result.endTime / std::max(result.wallSeconds, 1e-9),
-        c.modifiedNewton ? "modified" : "full", c.partIterations ? "parts" : "whole",
-        c.blockRefresh ? "blocks" : "whole", c.renewalRule ? "renewal" : "when_slow");
+        solverChoices(c));
   }
   return result;
 }

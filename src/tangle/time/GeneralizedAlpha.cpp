@@ -15,38 +15,8 @@
 namespace tangle::time {
 
 using solver::LinearSolver;
+using solver::sameStep;
 
-namespace {
-/// max_i |r_i| w_i in four register-held accumulators; NaN if any r_i is NaN (std::max would drop it).
-/// Not inlined: inside GeneralizedAlpha::step the compiler kept an accumulator in a stack slot, and the
-/// loop, waiting on a store and a load per element, was a fifth of that function (docs/performance.md).
-/// Over entries [0, n) of a (out-of-balance) and b (1 / allowed).
-[[gnu::noinline]] double largestScaled(const double* a, const double* b, Eigen::Index n) {
-  double m0 = 0.0, m1 = 0.0, m2 = 0.0, m3 = 0.0;
-  bool nan = false;
-  Eigen::Index i = 0;
-  for (; i + 3 < n; i += 4) {
-    const double v0 = std::abs(a[i]) * b[i], v1 = std::abs(a[i + 1]) * b[i + 1];
-    const double v2 = std::abs(a[i + 2]) * b[i + 2], v3 = std::abs(a[i + 3]) * b[i + 3];
-    m0 = v0 > m0 ? v0 : m0;
-    m1 = v1 > m1 ? v1 : m1;
-    m2 = v2 > m2 ? v2 : m2;
-    m3 = v3 > m3 ? v3 : m3;
-    nan |= (v0 != v0) | (v1 != v1) | (v2 != v2) | (v3 != v3);
-  }
-  for (; i < n; ++i) {
-    const double v = std::abs(a[i]) * b[i];
-    m0 = v > m0 ? v : m0;
-    nan |= v != v;
-  }
-  return nan ? std::numeric_limits<double>::quiet_NaN() : std::max(std::max(m0, m1), std::max(m2, m3));
-}
-/// True when two step lengths [s] are the same step: equal but for round-off. A step cut to land on an
-/// output time is the difference of two times (0.1 - 0.09 = 0.010000000000000009, not 0.01): compared
-/// exactly, the step to and the step after every output time threw the kept factorisation away and fell
-/// back to the constant-velocity predictor (4 000 refreshes in the 20 000 steps of the mooring example).
-bool sameStep(double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); }
-}  // namespace
 
 AlphaParameters AlphaParameters::from(model::IntegratorKind kind, double rho) {
   rho = std::clamp(rho, 0.0, 1.0);
@@ -80,10 +50,9 @@ GeneralizedAlpha::GeneralizedAlpha(solver::Assembler& assembler, const model::Dy
       m_settings(settings),
       m_prescribed(std::move(prescribed)),
       m_params(AlphaParameters::from(settings.integrator, settings.spectralRadius)),
-      m_matrix(assembler.model().dofs()),
+      m_newton(assembler, std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr),
       m_debug(std::getenv("TANGLE_DEBUG_DYNAMICS") != nullptr),
-      m_choice(settings.solver),
-      m_mode(settings.solver) {
+      m_choice(settings.solver) {
   const model::DofMap& dofs = assembler.model().dofs();
   for (int dof = 0; dof < dofs.fullDofCount(); ++dof)
     if (dofs.equation(dof) < 0) m_constrainedDofs.push_back(dof);
@@ -140,19 +109,20 @@ void GeneralizedAlpha::initialize(model::State& state) {
   VecX known = state.acceleration;
   for (int i = 0; i < neq; ++i) known[dofs.equationDofs()[i]] = 0.0;
   VecX inertia = VecX::Zero(dofs.fullDofCount());
-  m_matrix.clear();
-  m_assembler->addMass(state, 1.0, &m_matrix, &known, &inertia);
+  solver::SystemMatrix& matrix = m_newton.matrix();  // work space: the kept factorisation is dropped below
+  matrix.clear();
+  m_assembler->addMass(state, 1.0, &matrix, &known, &inertia);
   VecX rhs(neq);
   for (int i = 0; i < neq; ++i)
     rhs[i] = -(m_forceOld[dofs.equationDofs()[i]] + inertia[dofs.equationDofs()[i]]);
   if (rhs.cwiseAbs().maxCoeff() <= m_settings.tolerance * m_assembler->forceScale()) return;  // at rest
   SparseMatrix mass;
-  m_matrix.build(mass);
+  matrix.build(mass);
   LinearSolver solver;
   if (!solver.factorize(mass)) return;
   const VecX a0 = solver.solve(rhs);
   for (int i = 0; i < neq; ++i) state.acceleration[dofs.equationDofs()[i]] = a0[i];
-  m_factorValid = false;
+  m_newton.invalidate();
 }
 
 void GeneralizedAlpha::moveNodes(model::State& state, const model::State& start, const VecX& dq,
@@ -161,7 +131,7 @@ void GeneralizedAlpha::moveNodes(model::State& state, const model::State& start,
   const AlphaParameters& p = m_params;
   const VecX& v0 = start.velocity;
   const VecX& a0 = start.acceleration;
-  for (const int n : m_moved) {
+  for (const int n : m_newton.movedNodes()) {
     const int d = dofs.firstDof(n);
     // Free directions only: prescribed ones keep what applyPrescribed set, fixed ones their start.
     for (int k = 0; k < 3; ++k)
@@ -181,263 +151,13 @@ void GeneralizedAlpha::moveNodes(model::State& state, const model::State& start,
   }
 }
 
-bool GeneralizedAlpha::applyCorrection(VecX& dq, bool partsAllowed) {
-  const model::DofMap& dofs = m_assembler->model().dofs();
-  const auto& eqDofs = dofs.equationDofs();
-  const int neq = dofs.equationCount();
-  const int nodes = dofs.nodeCount();
-  // Where parts never apply (corrections spread over most of the model, or into a vessel's or a contact's
-  // nodes: the drilling riser, 259 parts in 57 046 corrections), trying costs a pass over the equations and
-  // the nodes at every correction (docs/performance.md): after kFutileTries corrections in a row without a
-  // part, the next kPausedTries go whole without trying.
-  constexpr int kFutileTries = 64, kPausedTries = 512;
-  if (m_partsPaused > 0) {
-    --m_partsPaused;
-    partsAllowed = false;
-  }
-  if (partsAllowed && m_kDiagonal.size() == neq) {
-    // A correction delta_i changes the force at its DOF by about H_ii delta_i (H: the iteration matrix, whose
-    // diagonal dominates: mass / (beta dt^2) plus the stiffness to the neighbours). A node where that is
-    // at most kNegligibleCorrection of the allowed out-of-balance at every DOF is left where it is. After
-    // the first correction of a step only the touchdown zone of a mooring line still moves by more. The
-    // convergence test stays on the exact residual of the whole model (the part's assembly gives the
-    // whole model's entries), so a dropped correction can cost an iteration but never passes an
-    // unconverged state. Measured (theory manual 8.2): 0.5 saved most on the 200-bar mooring example but
-    // cost 16 % more iterations on 800 bars, where the dropped corrections add up; 0.2 costs 1 % there.
-    constexpr double kNegligibleCorrection = 0.2;
-    // Node by node in ascending order (AssemblyPart's): a node's equations are consecutive (DofMap) and lie
-    // in one block, so the nodes of a range of equations are those between its first and last equation's.
-    // A node's test is formed without branches (whether a correction is negligible does not follow a
-    // pattern) over its equations and stored once (an update of a mark per equation waited on the store of
-    // the one before: docs/performance.md).
-    // The equations' tests first, in one pass without branches, then their OR per node (docs/performance.md).
-    m_moved.clear();
-    m_equationMoved.resize(static_cast<std::size_t>(neq));
-    for (const auto& range : m_activeRanges) {
-      // Bounds and arrays in locals: the flags' stores (unsigned char) may alias anything, so a bound read
-      // through the range was loaded again at every equation.
-      const int begin = range.first, end = range.second;
-      const double* delta = m_delta.data();
-      const double* diagonal = m_kDiagonal.data();
-      const double* inverseAllowed = m_inverseAllowed.data();
-      unsigned char* flag = m_equationMoved.data();
-      for (int i = begin; i < end; ++i)
-        flag[i] = std::abs(delta[i] * diagonal[i]) * inverseAllowed[i] > kNegligibleCorrection ? 1 : 0;
-      for (int node = dofs.nodeOf(eqDofs[begin]); node <= dofs.nodeOf(eqDofs[end - 1]); ++node) {
-        unsigned char moved = 0;
-        for (int i = dofs.firstEquation(node); i < dofs.firstEquation(node + 1); ++i) moved |= flag[i];
-        if (moved) m_moved.push_back(node);
-      }
-    }
-    // A part pays while it is clearly smaller than the model (its assembly also re-evaluates the moved
-    // nodes' neighbours and their elements), and a correction spread over most of the model is better
-    // applied whole: up to half the nodes (measured on 200 and 800 bars against 30 % and 80 %: equal within
-    // the machine's noise at 200 bars, 80 % costs more iterations at 800).
-    // (And when no contributor left out of parts loads a node of the part: a vessel, a contact.)
-    if (!m_moved.empty() && 2 * m_moved.size() <= static_cast<std::size_t>(nodes) &&
-        m_assembler->selectPart(m_moved, m_part)) {
-      for (const int node : m_moved) {
-        const int d = dofs.firstDof(node);
-        for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
-          const int i = dofs.equation(dof);
-          if (i >= 0) dq[dof] += m_delta[i];
-        }
-      }
-      if (m_debug) std::cerr << "      correction at " << m_moved.size() << " of " << nodes << " nodes\n";
-      m_futileTries = 0;
-      return true;
-    }
-    if (++m_futileTries >= kFutileTries) {
-      m_futileTries = 0;
-      m_partsPaused = kPausedTries;
-    }
-  }
-  for (const auto& [begin, end] : m_activeRanges)
-    for (int i = begin; i < end; ++i) dq[eqDofs[i]] += m_delta[i];
-  return false;
-}
-
-bool GeneralizedAlpha::sameBlocks() const {
-  const int blocks = m_solver.blockCount();
-  if (m_blockStart.size() != static_cast<std::size_t>(blocks) + 1) return false;
-  for (int k = 0; k <= blocks; ++k)
-    if (m_blockStart[static_cast<std::size_t>(k)] != m_solver.blockStart(k)) return false;
-  return true;
-}
-
-double GeneralizedAlpha::residualRatio(const VecX& r, bool onPart) {
-  const int neq = static_cast<int>(r.size());
-  const int blocks = m_solver.blockCount();
-  if (blocks <= 1 || m_solver.blockStart(blocks) != neq) {
-    m_blockStart.clear();
-    m_blockRatio.clear();
-    return largestScaled(r.data(), m_inverseAllowed.data(), neq);
-  }
-  // Per independent block of the kept matrix (any partition gives the same largest ratio): solveCorrection
-  // reads them, and on a part only the blocks holding one of its nodes changed.
-  if (!sameBlocks()) {
-    m_blockStart.resize(static_cast<std::size_t>(blocks) + 1);
-    for (int k = 0; k <= blocks; ++k) m_blockStart[static_cast<std::size_t>(k)] = m_solver.blockStart(k);
-    m_blockRatio.assign(static_cast<std::size_t>(blocks), 0.0);
-    onPart = false;
-  }
-  m_blockTouched.assign(static_cast<std::size_t>(blocks), onPart ? 0 : 1);
-  if (onPart) {
-    const model::DofMap& dofs = m_assembler->model().dofs();
-    for (const int node : m_part.nodes) {
-      const int eq = dofs.firstEquation(node);
-      if (eq == dofs.firstEquation(node + 1)) continue;  // held in every DOF
-      const auto k =
-          std::upper_bound(m_blockStart.begin(), m_blockStart.end(), eq) - m_blockStart.begin() - 1;
-      m_blockTouched[static_cast<std::size_t>(k)] = 1;
-    }
-  }
-  double ratio = 0.0;
-  bool nan = false;
-  for (int k = 0; k < blocks; ++k) {
-    double& blockRatio = m_blockRatio[static_cast<std::size_t>(k)];
-    if (m_blockTouched[static_cast<std::size_t>(k)]) {
-      const int begin = m_blockStart[static_cast<std::size_t>(k)];
-      blockRatio = largestScaled(r.data() + begin, m_inverseAllowed.data() + begin,
-                                 m_blockStart[static_cast<std::size_t>(k) + 1] - begin);
-    }
-    nan = nan || std::isnan(blockRatio);
-    ratio = std::max(ratio, blockRatio);
-  }
-  return nan ? std::numeric_limits<double>::quiet_NaN() : ratio;
-}
-
-void GeneralizedAlpha::findSlowBlocks() {
-  m_slowBlocks.clear();
-  const std::size_t blocks = m_blockRatio.size();
-  for (std::size_t k = 0; k < blocks; ++k)
-    if (m_blockTouched[k] && m_blockRatio[k] > 1.0 && m_blockRatio[k] > 0.25 * m_previousBlockRatio[k])
-      m_slowBlocks.push_back(static_cast<int>(k));
-}
-
-bool GeneralizedAlpha::refreshBlocks(const model::State& state, const solver::AssemblyRequest& request,
-                                     double mf, const VecX& r) {
-  // A line converging slowly (its touchdown point moved since the matrix was made) among lines converging
-  // fast: its own matrix is assembled and factorised again, the others' kept (12 independent lines: a
-  // whole refresh for one line cost 12 lines' matrices; docs/performance.md). Its nodes make a part
-  // (Assembler::selectPart: their elements, seabed, attachments and hydrodynamics; refused where a vessel or
-  // a contact loads a node), whose matrix terms replace the blocks' entries (SystemMatrix's patch).
-  // When the block's out-of-balance beyond the tolerance lies in a stretch of a cable (its touchdown zone,
-  // where the seabed spring switches and the kept matrix is stale), only that stretch's entries are made
-  // again and only the rows of the factor that depend on them (SkylineLdlt::factorizeRows): the same for a
-  // model of one block, where a whole refresh is the alternative.
-  // Margin [nodes] around the stretch: the neighbours whose entries the stretch's elements share.
-  constexpr int kStretchMargin = 2;
-  const model::DofMap& dofs = m_assembler->model().dofs();
-  const auto& eqDofs = dofs.equationDofs();
-  solver::AssemblyRequest matrixRequest = request;
-  matrixRequest.wantMatrix = true;
-  const bool oneBlock = m_solver.blockCount() == 1;
-  m_wholeSlowBlocks.clear();
-  for (const int k : m_slowBlocks) {
-    const int begin = m_solver.blockStart(k), end = m_solver.blockStart(k + 1);
-    const int firstNode = dofs.nodeOf(eqDofs[begin]), lastNode = dofs.nodeOf(eqDofs[end - 1]);
-    // The block's nodes out of balance: [low, high].
-    int low = lastNode + 1, high = firstNode - 1;
-    for (int i = begin; i < end; ++i)
-      if (std::abs(r[i]) * m_inverseAllowed[i] > 1.0) {
-        low = std::min(low, dofs.nodeOf(eqDofs[i]));
-        break;
-      }
-    for (int i = end - 1; i >= begin; --i)
-      if (std::abs(r[i]) * m_inverseAllowed[i] > 1.0) {
-        high = std::max(high, dofs.nodeOf(eqDofs[i]));
-        break;
-      }
-    bool stretch = false;
-    if (low <= high) {
-      low = std::max(firstNode, low - kStretchMargin);
-      high = std::min(lastNode, high + kStretchMargin);
-      stretch = m_solver.canFactorizeRows() && 2 * (high - low + 1) <= lastNode - firstNode + 1;
-      // Cable stretches only: on a beam riser in a plane (examples/scr-fatigue) stretch refreshes let the
-      // out-of-plane round-off grow a hundredfold (2e-6 m, 2.6 N m against 0.28 N m with whole refreshes)
-      // for 5 % of CPU time.
-      for (int node = low; node <= high && stretch; ++node) stretch = !dofs.hasRotations(node);
-    }
-    if (!stretch && oneBlock) return false;  // the whole matrix: a replayed whole assembly is faster
-    if (!stretch) {
-      low = firstNode;
-      high = lastNode;
-    }
-    const int patchBegin = stretch ? dofs.firstEquation(low) : begin;
-    const int patchEnd = stretch ? dofs.firstEquation(high + 1) : end;
-    m_slowNodes.clear();
-    for (int node = low; node <= high; ++node) m_slowNodes.push_back(node);
-    if (!m_assembler->selectPart(m_slowNodes, m_refreshPart) ||
-        !m_matrix.beginPatch(patchBegin, patchEnd, begin, end))
-      return false;
-    m_assembler->addPartMatrix(state, matrixRequest, mf, m_refreshPart, m_matrix);
-    if (!m_matrix.endPatch(m_k)) return false;
-    if (!stretch) {
-      m_wholeSlowBlocks.push_back(k);
-      continue;
-    }
-    if (!m_solver.factorizeRows(m_k, k, patchBegin, patchEnd)) {
-      m_factorValid = false;
-      return false;
-    }
-    for (int i = patchBegin; i < patchEnd; ++i) m_kDiagonal[i] = m_k.coeff(i, i);
-  }
-  if (m_wholeSlowBlocks.empty()) return true;
-  if (!m_solver.factorizeBlocks(m_k, m_wholeSlowBlocks)) {
-    m_factorValid = false;
-    return false;
-  }
-  for (const int k : m_wholeSlowBlocks)
-    for (int i = m_solver.blockStart(k); i < m_solver.blockStart(k + 1); ++i)
-      m_kDiagonal[i] = m_k.coeff(i, i);
-  return true;
-}
-
-int GeneralizedAlpha::solveCorrection(const VecX& r) {
-  const int blocks = m_solver.blockCount();
-  m_activeRanges.clear();
-  if (blocks <= 1 || !m_mode.partIterations) {
-    m_delta = -r;
-    m_solver.solveInPlace(m_delta);
-    m_activeRanges.emplace_back(0, static_cast<int>(r.size()));
-    return 0;
-  }
-  // Independent blocks of the matrix (lines not coupled to each other): a block whose out-of-balance is
-  // already within the tolerance has converged and is left as it is; only the others are solved and
-  // corrected. Nothing outside a block changes its residual (the kept matrix has no coupling there; a
-  // coupling the matrix does not hold, e.g. a contact made since it was factorised, is assembled in the
-  // residual, and the convergence test stays on every equation). 12 independent mooring lines: the lines
-  // converge at different iterations of a step, and the solve of all 7 200 equations at every one of them
-  // was wasted on the converged ones (docs/performance.md).
-  if (!sameBlocks()) residualRatio(r, false);  // the refreshed matrix has other blocks
-  m_delta.resize(r.size());
-  m_activeBlocks.clear();
-  for (int k = 0; k < blocks; ++k) {
-    const int begin = m_solver.blockStart(k), end = m_solver.blockStart(k + 1);
-    if (!(m_blockRatio[static_cast<std::size_t>(k)] <= 1.0)) {
-      m_activeBlocks.push_back(k);
-      m_delta.segment(begin, end - begin) = -r.segment(begin, end - begin);
-      if (!m_activeRanges.empty() && m_activeRanges.back().second == begin)
-        m_activeRanges.back().second = end;
-      else
-        m_activeRanges.emplace_back(begin, end);
-    } else if (m_debug) {
-      m_delta.segment(begin, end - begin).setZero();
-    }
-  }
-  m_solver.solveBlocksInPlace(m_delta, m_activeBlocks);
-  return blocks - static_cast<int>(m_activeBlocks.size());
-}
-
 StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   // The chosen path first; a step it does not converge is tried again, from the same start, with a whole
   // refresh of the matrix (no parts, no blocks or stretches refreshed on their own) and then with full
   // Newton, before the caller cuts it: a speed path may change the cost of a run, never whether it completes
   // (issue 44: a hose lowered onto a pipeline stopped at t = 0.43 s on block refreshes that kept converging
   // linearly, and ran its 40 s with whole refreshes).
-  m_mode = m_choice;
-  StepOutcome outcome = attempt(state, dt);
+  StepOutcome outcome = attempt(state, dt, m_choice);
   if (outcome.converged) return outcome;
   model::DynamicSolverSpec wholeRefresh = m_choice;
   wholeRefresh.partIterations = false;
@@ -447,31 +167,29 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
   int level = 0;
   for (const model::DynamicSolverSpec& fallback : {wholeRefresh, fullNewton}) {
     ++level;
-    const bool plainer = fallback.modifiedNewton != m_mode.modifiedNewton ||
-                         fallback.partIterations != m_mode.partIterations ||
-                         fallback.blockRefresh != m_mode.blockRefresh;
+    const model::DynamicSolverSpec& tried = m_newton.mode();
+    const bool plainer = fallback.modifiedNewton != tried.modifiedNewton ||
+                         fallback.partIterations != tried.partIterations ||
+                         fallback.blockRefresh != tried.blockRefresh;
     if (!plainer) continue;  // already tried: the chosen path was this plain
-    m_mode = fallback;
-    m_factorValid = false;  // a fresh matrix at the step's first iterate
+    m_newton.invalidate();  // a fresh matrix at the step's first iterate
     if (m_debug) std::cerr << fmt::format("    step of {:.3e} s retried: fallback {}\n", dt, level);
-    StepOutcome retry = attempt(state, dt);
+    StepOutcome retry = attempt(state, dt, fallback);
     retry.iterations += outcome.iterations;
     retry.partIterations += outcome.partIterations;
     retry.blocksLeft += outcome.blocksLeft;
     retry.refreshes += outcome.refreshes;
     retry.blockRefreshes += outcome.blockRefreshes;
     retry.fallback = level;
-    if (!retry.converged && retry.failure.empty()) retry.failure = outcome.failure;
     outcome = retry;
     if (outcome.converged) break;
   }
-  m_mode = m_choice;
   // The fallback's matrix is of the chosen kind for the next step as well (a whole matrix is a valid kept
   // matrix); a full Newton's last factorisation is of the last iterate, which the next step may keep.
   return outcome;
 }
 
-StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
+StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const model::DynamicSolverSpec& mode) {
   const model::Model& model = m_assembler->model();
   const model::DofMap& dofs = model.dofs();
   const int nfull = dofs.fullDofCount();
@@ -539,21 +257,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
   // as the mesh was refined (1e-8 of the tension on a 200-bar mooring line, 4.8 residual assemblies per
   // step where 3.5 give the same tension ranges to 1.5e-4).
   m_assembler->nodeRoundoffFloor(start, m_nodeFloor);
-  {
-    // Per node (its equations are consecutive, DofMap::firstEquation): two divisions for a beam node, one
-    // for a bar node, instead of one per equation.
-    const std::vector<double>& scale = m_assembler->nodeForceScale();
-    m_inverseAllowed.resize(neq);
-    for (int node = 0; node < dofs.nodeCount(); ++node) {
-      const int first = dofs.firstDof(node);
-      const double allowed = std::max(m_settings.tolerance * scale[node], m_nodeFloor[node]);
-      const double inverseForce = 1.0 / allowed;
-      const double inverseMoment =
-          dofs.hasRotations(node) ? 1.0 / (allowed * std::max(model.momentScale(node), 1e-6)) : 0.0;
-      for (int i = dofs.firstEquation(node); i < dofs.firstEquation(node + 1); ++i)
-        m_inverseAllowed[i] = eqDofs[i] - first >= 3 ? inverseMoment : inverseForce;
-    }
-  }
+  m_newton.setAllowed(m_settings.tolerance, m_nodeFloor);
 
   StepOutcome outcome;
   VecX& combo = m_combo;
@@ -568,18 +272,13 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
   // whole assembly of a step, took a different path with parts, and the lazy-wave SCR in contact of the
   // statics trials (converged in 147 s with whole assemblies) no longer converged.
   const bool partsAllowed =
-      m_mode.modifiedNewton && m_mode.partIterations && !m_frozen && m_assembler->supportsParts();
-  bool onPart = false;  // this iterate differs from the last evaluated one only at the nodes m_moved
+      mode.modifiedNewton && mode.partIterations && !m_frozen && m_assembler->supportsParts();
+  bool onPart = false;  // this iterate differs from the last evaluated one only at the nodes moved
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, when the step size changed, or when keeping
-  // it has come to cost more iterations than a refresh (planRefresh).
-  bool haveFactor = m_reuseAcrossSteps && m_factorValid && sameStep(dt, m_factorStep) && !m_refreshDue;
-  bool refreshed = false;
-  double previousResidual = std::numeric_limits<double>::infinity();
-  m_previousBlockRatio.clear();  // no block is slow at the first iteration
-  // Slow blocks refreshed on their own: with modified Newton on parts (the blocks' matrices are assembled as
-  // parts), not in dynamic relaxation (partsAllowed).
-  const bool blockwise = partsAllowed && m_mode.blockRefresh;
+  // it has come to cost more iterations than a refresh (solver::NewtonIteration).
+  m_newton.startAttempt(dt, mode);
+  const solver::AssemblyPart& part = m_newton.part();
   bool haveResidual = false;
   for (int it = 0; it < m_settings.maxIterations; ++it) {
     outcome.iterations = it + 1;
@@ -601,14 +300,14 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
       applyPrescribed(state, environmentTime(t1));
     }
 
-    const bool refresh = !haveFactor || !m_mode.modifiedNewton;
+    const bool refresh = m_newton.wantsMatrix();
     request.wantMatrix = refresh;
     try {
       // On a part the other entries of m_force are those of the last iterate, which they equal.
       if (onPart)
-        m_assembler->assemblePart(state, request, m_part, m_force);
+        m_assembler->assemblePart(state, request, part, m_force);
       else
-        m_assembler->assemble(state, request, m_force, &m_matrix);
+        m_assembler->assemble(state, request, m_force, &m_newton.matrix());
     } catch (const Error& e) {
       // An element cannot be evaluated at this iterate (e.g. folded back on itself): the step is too
       // long; report a failed step so the controller cuts it.
@@ -631,7 +330,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
       comboData[dof] = c;
     };
     if (onPart) {
-      for (const int node : m_moved)
+      for (const int node : m_newton.movedNodes())
         for (int dof = dofs.firstDof(node); dof < dofs.firstDof(node) + dofs.dofCount(node); ++dof)
           setCombination(dof);
     } else if (rayleighAlpha > 0.0) {
@@ -642,8 +341,8 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
         comboData[dof] = newAcceleration * acceleration[dof] + oldAcceleration * a0Data[dof];
     }
     if (onPart) {
-      m_assembler->addPartMass(state, m_part, combo, inertia);
-      for (const int node : m_part.nodes) {
+      m_assembler->addPartMass(state, part, combo, inertia);
+      for (const int node : part.nodes) {
         const int d = dofs.firstDof(node);
         for (int dof = d; dof < d + dofs.dofCount(node); ++dof) {
           const int i = dofs.equation(dof);
@@ -652,7 +351,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
       }
     } else {
       inertia.setZero();
-      m_assembler->addMass(state, mf, refresh ? &m_matrix : nullptr, &combo, &inertia);
+      m_assembler->addMass(state, mf, refresh ? &m_newton.matrix() : nullptr, &combo, &inertia);
       const double* inertiaData = inertia.data();
       const double* force = m_force.data();
       const double* forceOld = m_forceOld.data();
@@ -666,14 +365,14 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
     haveResidual = true;
     // Largest out-of-balance relative to what each DOF is allowed (NaN if r holds a NaN). The norm in
     // N (outcome.residual) is for the report: computed once, after the iterations.
-    const double ratio = residualRatio(r, onPart);
+    const double ratio = m_newton.residualRatio(r, onPart);
     if (m_debug) {
       outcome.residual =
           solver::residualNorm(model, r, solver::ResidualIndexing::Equations, &outcome.worstNode);
       std::cerr << fmt::format(
           "    t {:.6f} dt {:.3e} it {:2d} |r| {:.4e} ({:.3e} of the tolerance) worst node {}{}\n", t1, dt,
           it, outcome.residual, ratio, outcome.worstNode,
-          onPart ? fmt::format(" (part of {} nodes)", m_part.nodes.size()) : std::string());
+          onPart ? fmt::format(" (part of {} nodes)", part.nodes.size()) : std::string());
     }
     if (!std::isfinite(ratio)) {
       // Name where: the first equation whose out-of-balance is not finite, and what it is.
@@ -696,77 +395,44 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
       onPart = false;
       continue;
     }
-    // Slow convergence with the old matrix (a residual that fell by less than 4x): with independent blocks
-    // the slow blocks' matrix is made again at this iterate, else (or when that cannot be done) this
-    // iteration is redone with a whole fresh matrix.
-    bool wholeRefresh = false;
-    if (!refresh) {
-      m_slowBlocks.clear();
-      if (blockwise && !m_blockStart.empty() && m_previousBlockRatio.size() == m_blockRatio.size())
-        findSlowBlocks();
-      else if (ratio > 0.25 * previousResidual && blockwise && m_solver.blockCount() == 1)
-        m_slowBlocks.push_back(0);  // one block: a stretch of it, or the whole matrix (refreshBlocks)
-      else if (ratio > 0.25 * previousResidual)
-        wholeRefresh = true;
-      if (!m_slowBlocks.empty()) {
-        if (refreshBlocks(state, request, mf, r))
-          outcome.blockRefreshes += static_cast<int>(m_slowBlocks.size());
-        else
-          wholeRefresh = true;
-        if (m_debug)
-          std::cerr << "      " << m_slowBlocks.size() << " of " << m_solver.blockCount()
-                    << " blocks slow: " << (wholeRefresh ? "whole refresh\n" : "refreshed alone\n");
-      }
-    }
-    if (wholeRefresh) {
-      haveFactor = false;
-      previousResidual = std::numeric_limits<double>::infinity();
-      m_previousBlockRatio.clear();
+    if (!m_newton.afterResidual(state, request, mf, r, ratio, refresh)) {
       onPart = false;  // the refresh assembles the whole matrix at this iterate
       --it;
       continue;
     }
-    previousResidual = ratio;
-    if (refresh) {
-      m_matrix.build(m_k);
-      m_kDiagonal = m_k.diagonal();
-      m_factorValid = false;
-      if (!m_solver.factorize(m_k)) {
-        outcome.failure = "the iteration matrix is singular";
-        break;
-      }
-      m_factorValid = true;
-      m_factorStep = dt;
-      haveFactor = true;
-      refreshed = true;
-      ++outcome.refreshes;
+    if (refresh && !m_newton.factorize(dt)) {
+      outcome.failure = "the iteration matrix is singular";
+      break;
     }
-    outcome.blocksLeft += solveCorrection(r);
-    m_previousBlockRatio = m_blockRatio;  // of the kept matrix's blocks (solveCorrection follows a refresh's)
-    const VecX& delta = m_delta;
+    m_newton.solveCorrection(r);
+    VecX& delta = m_newton.correction();
     if (m_debug) {
       Eigen::Index imax = 0;
       r.cwiseAbs().maxCoeff(&imax);
-      std::cerr << fmt::format("      max |r| at eq {} (full dof {}), |delta| {:.3e}, relres {:.3e}\n", imax,
-                               eqDofs[imax], delta.cwiseAbs().maxCoeff(),
-                               (m_k * delta + r).norm() / r.norm());
+      std::cerr << fmt::format("      max |r| at eq {} (full dof {}), |delta| {:.3e}\n", imax, eqDofs[imax],
+                               delta.cwiseAbs().maxCoeff());
     }
     // A contact barrier (the distributed formulation) filters the correction so no iterate jumps past it.
     if (m_assembler->limitsDynamicIncrements()) {
-      VecX full = VecX::Zero(nfull);
-      for (int i = 0; i < neq; ++i) full[eqDofs[i]] = m_delta[i];
+      VecX& full = m_fullCorrection;
+      full.setZero(nfull);
+      for (int i = 0; i < neq; ++i) full[eqDofs[i]] = delta[i];
       const double alpha = m_assembler->limitDynamicIncrement(state, full);
-      if (alpha < 1.0) m_delta *= alpha;
+      if (alpha < 1.0) delta *= alpha;
       if (m_debug && alpha < 1.0)
         std::cerr << fmt::format("      contact filter: correction x {:.3e}\n", alpha);
     }
-    onPart = applyCorrection(dq, partsAllowed);
+    onPart = m_newton.applyCorrection(dq, partsAllowed);
   }
   // The norm in N and its node are for the message of a failed step (a converged step's largest
   // out-of-balance is below the tolerance by definition; the norm per step is not free: docs/performance.md).
   if (haveResidual && (!outcome.converged || m_debug) && outcome.failure.empty())
     outcome.residual =
         solver::residualNorm(model, r, solver::ResidualIndexing::Equations, &outcome.worstNode);
+  const solver::MatrixWork& work = m_newton.work();
+  outcome.refreshes = work.refreshes;
+  outcome.blockRefreshes = work.blockRefreshes;
+  outcome.blocksLeft = work.blocksLeft;
   if (!outcome.converged) {
     state = start;
     return outcome;
@@ -774,42 +440,8 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt) {
   state.orthonormaliseTriads(dofs);
   m_forceOld = m_force;
   m_lastStep = dt;
-  planRefresh(outcome, refreshed);
+  m_newton.planRefresh(outcome.iterations, outcome.partIterations, m_frozen);
   return outcome;
-}
-
-void GeneralizedAlpha::planRefresh(const StepOutcome& outcome, bool refreshed) {
-  // A kept matrix ages: the elements turn and the seabed contact of touchdown nodes changes, and each
-  // correction removes less of the out-of-balance (the mooring example: 2.16 residual evaluations per
-  // step with a matrix made at every step's predictor, 3.6 with one kept as long as it converges 4x per
-  // iteration). A refresh costs about kRefreshCost evaluations (measured on the mooring example: 2.8 with
-  // the replayed matrix assembly, 4.7 before it; the times of that example and of the drilling riser
-  // differ by under 2 % for any value from 2 to 5, against 7 % and 17 % without the rule). Keeping the matrix
-  // for n steps that take I_1..I_n evaluations costs (kRefreshCost + sum I_k) / n per step; that average is
-  // least when the evaluations of the latest steps reach it (the renewal rule of replacement theory, e.g.
-  // Ross 1996, "Stochastic processes", sec. 3.6), so the matrix is refreshed at the next step from then on.
-  // The latest steps' count is smoothed (exponential average over about 3 steps); a step on a part counts
-  // half (its assembly is local, its solve whole). Not in dynamic relaxation (statics), where the matrix
-  // keeps the old rule (line contact's active set follows the iteration path there).
-  constexpr double kRefreshCost = 3.0;
-  constexpr double kSmoothing = 0.3;
-  const double evaluations = outcome.iterations - 0.5 * outcome.partIterations;
-  // A step that refreshed blocks on their own (refreshBlocks) starts the count again as a whole refresh does:
-  // the blocks that converged slowly have a new matrix, the others converged fast with the old one.
-  // (Counted on, three independent lines at dt 0.01 s, tests/verification/dynamics/BlockIterationTest.cpp,
-  // refreshed the whole matrix 167 times against 86 with whole refreshes alone.)
-  if (refreshed || outcome.blockRefreshes > 0 || m_stepsSinceRefresh == 0) {
-    m_stepsSinceRefresh = 0;
-    m_evaluationsSinceRefresh = 0.0;
-    m_recentEvaluations = evaluations;
-    m_refreshDue = false;
-  }
-  ++m_stepsSinceRefresh;
-  m_evaluationsSinceRefresh += evaluations;
-  m_recentEvaluations += kSmoothing * (evaluations - m_recentEvaluations);
-  if (m_frozen || !m_mode.modifiedNewton || !m_mode.renewalRule) return;
-  const double average = (kRefreshCost + m_evaluationsSinceRefresh) / m_stepsSinceRefresh;
-  m_refreshDue = m_stepsSinceRefresh >= 2 && m_recentEvaluations > average;
 }
 
 }  // namespace tangle::time

@@ -183,7 +183,7 @@ Eigen::MatrixXd freshLines(const model::DofMap& dofs, double scaleA, double scal
 }
 
 TEST(SystemMatrix, PatchOfABlockReplacesItsEntriesOnly) {
-  // A refresh of one independent block (GeneralizedAlpha::refreshBlocks): the block's calls alone give its
+  // A refresh of one independent block (NewtonIteration::refreshBlocks): the block's calls alone give its
   // entries of a whole assembly; the other block keeps the last build's.
   const model::DofMap dofs = twoLines();
   const int secondLine = dofs.equation(6);

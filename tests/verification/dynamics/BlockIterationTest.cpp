@@ -55,7 +55,7 @@ TEST(BlockIterationTest, IndependentLinesSameResponseWithinTheConvergenceToleran
   expectSameResponseOfThreeLines(whole, blocks);
 }
 
-// The same three lines with the kept matrix refreshed per block (GeneralizedAlpha::refreshBlocks: a line whose
+// The same three lines with the kept matrix refreshed per block (NewtonIteration::refreshBlocks: a line whose
 // out-of-balance falls by less than 4x in an iteration has its own matrix assembled and factorised again,
 // the others kept) against refreshes of the whole matrix (`refresh: whole`): the same response within
 // the convergence tolerance, with the bounds above (the same latitude: another sequence of iterates

@@ -1,5 +1,5 @@
 // Dynamic verification of the renewal rule that decides when the kept Newton matrix is refreshed (issue 8;
-// theory manual 8.2, GeneralizedAlpha::planRefresh).
+// theory manual 8.2, NewtonIteration::planRefresh).
 //
 // The rule only changes which matrix the modified Newton iterations use; every step still passes the same
 // convergence test on the exact residual, so the result is another solution within the same tolerance.

@@ -42,22 +42,8 @@ model::ModelSpec hoseOverPipeline(double duration) {
   model::ModelSpec spec;
   spec.sourceFile = "hose lowered onto a pipeline (test)";
   spec.environment.waterDepth = 100.0;
-  section::LineType hose = test::solidRodType("hose", 0.3, 1.0, 1.0);
-  hose.massPerLength = 120.0;
-  hose.axialStiffness = 4.0e8;
-  hose.bendingStiffness = 1.0e5;
-  hose.torsionalStiffness = 1.0e5;
-  hose.dragNormal = 1.2;
-  hose.addedMassNormal = 1.0;
-  section::LineType pipe = test::solidRodType("pipe", 0.5, 1.0, 1.0);
-  pipe.massPerLength = 400.0;
-  pipe.axialStiffness = 6.0e9;
-  pipe.bendingStiffness = 2.0e8;
-  pipe.torsionalStiffness = 2.0e8;
-  pipe.dragNormal = 1.0;
-  pipe.addedMassNormal = 1.0;
-  spec.lineTypes["hose"] = hose;
-  spec.lineTypes["pipe"] = pipe;
+  spec.lineTypes["hose"] = test::beamType("hose", 0.3, 120.0, 4.0e8, 1.0e5, 1.2, 1.0);
+  spec.lineTypes["pipe"] = test::beamType("pipe", 0.5, 400.0, 6.0e9, 2.0e8, 1.0, 1.0);
   model::LineSpec pipeline =
       test::simpleLine("pipeline", "pipe", 120.0, 60, model::EndKind::Anchored, Vec3(-60, 0, -100),
                        model::EndKind::Anchored, Vec3(60, 0, -100));
