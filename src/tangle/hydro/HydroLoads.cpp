@@ -190,6 +190,7 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     FluidKinematics fluid;
     fluid.velocity = m_current.velocity(0.5 * (x1.z() + x2.z()));
     if (m_wake) fluid.velocity += m_elementWake[e].velocityChange;
+    if (!request.dynamic) fluid.velocity *= request.currentFactor;  // the statics' current continuation
     if (waves) {
       fluid.velocity += m_fluid[e].velocity;
       fluid.acceleration = m_fluid[e].acceleration;
@@ -209,7 +210,8 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     m_addedMass[e] = forces.addedMassPerNode;
     if (m_wake && !m_elementWake[e].liftPerLength.isZero(0.0)) {
       // Wake lift (Blevins) on the wetted length, half on each node.
-      const Vec3 lift = 0.5 * wet * (x2 - x1).norm() * m_elementWake[e].liftPerLength;
+      const double liftFactor = request.dynamic ? 1.0 : request.currentFactor * request.currentFactor;
+      const Vec3 lift = 0.5 * wet * (x2 - x1).norm() * liftFactor * m_elementWake[e].liftPerLength;
       force.segment<3>(d1) -= lift;
       force.segment<3>(d2) -= lift;
     }
@@ -261,7 +263,7 @@ void HydroLoads::addAttachmentDrag(const model::State& state, const solver::Asse
     if (x.z() > surfaceAt(x.x(), x.y(), request.time, withWaves)) return;
     const int d = dofs.firstDof(a.node);
     const Vec3 v = request.dynamic ? Vec3(state.velocity.segment<3>(d)) : Vec3::Zero();
-    const Vec3 w = fluidAt(x, request.time, withWaves).velocity - v;
+    const Vec3 w = (request.dynamic ? 1.0 : request.currentFactor) * fluidAt(x, request.time, withWaves).velocity - v;
     const double speed = w.norm();
     const double k = 0.5 * rho * a.spec.dragArea;
     force.segment<3>(d) -= k * speed * w;

@@ -32,6 +32,10 @@ struct AssemblyRequest {
   /// Statics: include the drag's follower stiffness (its dependence on the element directions, Morison.hpp)
   /// in H. It makes H non-symmetric: the caller must solve with a general (LU) factorisation.
   bool dragStiffness = false;
+  /// Statics: multiplies the current's velocity (and its wake's) at the lines and their attachments [-]; the
+  /// current continuation (StaticSolver) ramps the drag, which goes with its square, from still water.
+  /// Vessels' current loads are not scaled. Ignored in dynamics.
+  double currentFactor = 1.0;
 };
 
 /// The part of the model whose out-of-balance forces change when only some nodes move: a modified Newton

@@ -183,6 +183,9 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     if (result.continuationSteps > 0)
       result.message += fmt::format(", by continuation from the start shape in {} load steps",
                                     result.continuationSteps);
+    if (result.currentSteps > 0)
+      result.message += fmt::format(", from the equilibrium in still water with the current ramped in {} steps",
+                                    result.currentSteps);
   } else {
     if (result.message.empty()) result.message = diagnose(trial, result, "");
     state = start;
@@ -235,6 +238,12 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   //    their own length as lambda grows; all others keep their length. Every load is then ramped from
   //    the state the start shape balances, like a line paid out onto its final position.
   std::string failure = full.failure;
+  // 2a. In a current, the current continued from still water (currentContinuation).
+  if (budget > 0 && m_currentFactor == 1.0 && hasCurrent(model)) {
+    if (currentContinuation(state, time, result, budget, tautStart)) return true;
+    state = start;
+    m_assembler->beginStatics(start);
+  }
   if (budget > 0 && continuation(state, start, time, result, budget, tautStart, failure)) return true;
   if (debugOutput()) std::cerr << "  continuation failed (" << failure << ")\n";
   state = start;
@@ -291,6 +300,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   request.time = time;
   request.dynamic = false;
   request.wantMatrix = false;
+  request.currentFactor = m_currentFactor;
   try {
     m_assembler->assemble(start, request, force, nullptr);
   } catch (const Error& e) {
@@ -346,6 +356,75 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   return false;
 }
 
+bool StaticSolver::currentContinuation(model::State& state, double time, StaticResult& result, int& budget,
+                                       bool tautStart) {
+  // Why: a long line across a strong current swings hundreds of metres sideways (a lazy wave in 1500 m with
+  // 1 m/s at the surface: about 300 m), the drag turns with it, and Newton at the full current, or the
+  // homotopy from the start shape, crawls or stalls at a fold of the homotopy path (a fixed force field
+  // (1 - lambda) r(q0) that does not turn with the line): 3 000 - 6 000 iterations, or a coarse mesh first.
+  // In still water the analytic start shape is close (a few iterations), and every increment of a weaker
+  // current is a physical equilibrium on the same stable branch, so the path has no fold.
+  const model::Model& model = m_assembler->model();
+  const int neq = model.dofs().equationCount();
+  const double tolerance = result.tolerance;
+  const int perSolve = std::max(m_settings.maxIterations, 10);
+  struct RestoreFactor {
+    double* factor;
+    ~RestoreFactor() { *factor = 1.0; }
+  } restore{&m_currentFactor};
+  m_currentFactor = 0.0;
+  if (m_progress) m_progress->stage("statics: the model in still water first, then the current ramped");
+  model::State still = state;
+  StaticResult stage = result;
+  const bool calm = solveFrom(still, time, stage, budget, tautStart);
+  result.iterations = stage.iterations;
+  if (debugOutput()) std::cerr << "  current continuation: still water " << (calm ? "ok" : "failed") << "\n";
+  if (!calm) return false;
+  const int stillSteps = stage.continuationSteps;
+  const VecX noOffset = VecX::Zero(neq);
+  double reached = 0.0;  // fraction of the drag (of the current's speed squared) in equilibrium
+  double increment = 0.25;
+  int steps = 0;
+  while (reached < 1.0 && budget > 0) {
+    const double target = std::min(1.0, reached + increment);
+    m_currentFactor = std::sqrt(target);
+    m_progressFraction = target;
+    model::State trial = still;
+    // Every increment to the full tolerance: a looser one (the homotopy's 1e-4 of the force scale) is more
+    // than the drag on a node of a long line, and the steps "converged" without moving.
+    // Plain Newton only: an increment it does not converge is halved, which costs less than the damped
+    // variants (about 80 iterations for each failed increment of the lazy wave in 1.5 m/s).
+    NewtonOutcome step = newton(trial, noOffset, time, std::min(perSolve, budget), tolerance, NewtonMode::Plain);
+    budget -= step.iterations;
+    result.iterations += step.iterations;
+    result.residual = step.residual;
+    result.worstNode = step.worstNode;
+    if (step.converged && !inadmissible(trial).empty()) step.converged = false;
+    if (debugOutput())
+      std::cerr << fmt::format("  current continuation: drag fraction {:.5f} -> {}, {} iterations\n", target,
+                               step.converged ? "ok" : step.failure, step.iterations);
+    if (step.converged) {
+      still = trial;
+      m_assembler->commitIncrement(still);
+      reached = target;
+      result.roundoffLimited = step.roundoff;
+      ++steps;
+      increment = std::min(1.0, increment * (step.iterations <= 6 ? 2.0 : 1.0));
+    } else {
+      increment *= 0.5;
+      if (increment < 1e-4) break;
+      m_assembler->beginStatics(still);  // back to the anchors of the last converged increment
+    }
+  }
+  m_progressFraction = 1.0;
+  if (reached < 1.0) return false;
+  state = still;
+  result.loadFraction = 1.0;
+  result.continuationSteps = stillSteps;
+  result.currentSteps = steps;
+  return true;
+}
+
 StaticSolver::NewtonOutcome StaticSolver::newtonWithFallback(model::State& state, const VecX& offset,
                                                              double time, int maxIterations,
                                                              double tolerance) {
@@ -399,6 +478,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   request.dynamic = false;
   // In a current, when asked for: the drag's follower stiffness (theory 6.4) in the tangent, solved by LU.
   request.dragStiffness = m_dragStiffness && hasCurrent(model);
+  request.currentFactor = m_currentFactor;
   SystemMatrix matrix(dofs);
   SparseMatrix kAccepted;
   SparseMatrix k;

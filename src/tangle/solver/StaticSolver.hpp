@@ -39,6 +39,7 @@ struct StaticResult {
   bool roundoffLimited = false;  ///< accepted at the round-off floor, above the requested tolerance
   int worstNode = -1;            ///< global node with the largest out-of-balance force
   int continuationSteps = 0;     ///< load steps of the continuation from the start shape (0: Newton at full load)
+  int currentSteps = 0;  ///< steps of the current continuation from still water (0: not used; StaticSolver)
   std::string message;           ///< human-readable summary (on failure: where, how large, what to change)
   std::vector<std::string> warnings;  ///< e.g. bar elements left in compression
 };
@@ -87,6 +88,10 @@ class StaticSolver {
   /// elements at a small strain. On failure `failure` says why.
   bool continuation(model::State& state, const model::State& start, double time, StaticResult& result, int& budget,
                     bool tautStart, std::string& failure);
+  /// Stage 2a, in a current: the equilibrium in still water from `state` (solveFrom without the current), then
+  /// the current's drag ramped from there to its full value (its speed times sqrt(f) for f from 0 to 1), every
+  /// increment an equilibrium of the model in a weaker current. On success `state` is the equilibrium.
+  bool currentContinuation(model::State& state, double time, StaticResult& result, int& budget, bool tautStart);
   /// Newton (trust region) at a fixed load fraction; `offset` is (1 - lambda) r(q0) over the equations.
   enum class NewtonMode { Plain, Merit, Natural };
   /// Plain: every step that can be evaluated is taken (full Newton within the displacement caps; fails
@@ -115,6 +120,7 @@ class StaticSolver {
   std::string m_progressStage;
   int m_progressIterations = 0;     // Newton iterations of this solve so far (for the progress lines)
   double m_progressFraction = 1.0;  // load fraction being solved for [-]
+  double m_currentFactor = 1.0;     // AssemblyRequest::currentFactor of every assembly (currentContinuation)
 };
 
 }  // namespace tangle::solver

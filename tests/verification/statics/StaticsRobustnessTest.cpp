@@ -457,11 +457,12 @@ INSTANTIATE_TEST_SUITE_P(LazyAndSteep, WaveRiser, ::testing::Values(true, false)
                          });
 
 // The lazy wave of a new user's trial in a current across its plane (1 m/s at the surface, 0.2 m/s at
-// the seabed, towards +y) on a 10 m mesh: the continuation stalls on the buoyancy hump swinging across the
-// current (Newton proposes tens of metres on a few hundred newtons); statics reaches it through the
-// same model on a quarter of the elements (theory 7.6). Checks, independent of the friction path: the
-// vertical end forces carry the suspended weight (friction acts in the seabed plane) within two elements'
-// weight (the touchdown element is counted whole or not at all), and the hump is pushed downstream.
+// the seabed, towards +y) on a 10 m mesh: the homotopy from the start shape stalls on the buoyancy hump
+// swinging across the current (Newton proposes tens of metres on a few hundred newtons); statics reaches it
+// from the equilibrium in still water with the current ramped (theory 7.6; it went through the same model
+// on a quarter of the elements before, 8 s). Checks, independent of the friction path: the vertical end
+// forces carry the suspended weight (friction acts in the seabed plane) within two elements' weight (the
+// touchdown element is counted whole or not at all), and the hump is pushed downstream.
 TEST(WaveRiser, LazyWaveAcrossTheCurrentOnAFineMesh) {
   Solved s = solveYaml(R"(
 environment:
@@ -498,6 +499,69 @@ lines:
   EXPECT_NEAR(std::abs(ends.z()), suspended, 2.0 * wRiser * 10.0);
   EXPECT_GT(apexY, 10.0);  // downstream, towards +y
 }
+
+// Issue 44: a 10 in steel lazy wave in 1500 m (470 beams, 3240 m; the buoyancy section 0.9 m across) in a
+// current across its plane, 0.3 of the surface speed at the seabed. In 1 - 1.5 m/s the hump swings 300 m or
+// more downstream: statics took 3 000 - 6 000 iterations and 7 - 22 s CPU (the homotopy from the start
+// shape, then the drag's stiffness or a coarse mesh); by the current continuation (still water, then the
+// drag ramped) 175 and 245 iterations, 0.6 and 0.8 s. Bound: 400 iterations (1.6x the larger). Checks: the
+// path, the balance of every force on the line by source (the equilibrium audit, theory 7.8: drag
+// recomputed from the converged shape), the vertical end forces against the suspended weight within two
+// elements' weight, and the hump downstream by more than 100 m times the square of the surface speed in m/s
+// (measured 266 m and 457 m; the flat-string estimate q L^2 / (8 H) is about 300 m at 1 m/s, and the drag
+// goes with the speed squared).
+class LazyWaveInCurrent : public ::testing::TestWithParam<double> {};
+
+TEST_P(LazyWaveInCurrent, ReachedFromStillWaterWithTheCurrentRamped) {
+  const double speed = GetParam();
+  Solved s = solveYaml(fmt::format(R"(
+environment:
+  water_depth: 1500
+  current: [{{z: 0, speed: {}, azimuth: 90}}, {{z: -1500, speed: {}, azimuth: 90}}]
+line_types:
+  - {{name: riser, outer_diameter: 0.2731, mass_per_length: 130, axial_stiffness: 3.3e9, bending_stiffness: 2.6e7, drag_normal: 1.0}}
+  - {{name: buoyant, outer_diameter: 0.9, mass_per_length: 350, axial_stiffness: 3.3e9, bending_stiffness: 2.6e7, drag_normal: 1.0}}
+vessels:
+  - {{name: fpso, position: [0, 0, 0], heading: 0}}
+lines:
+  - name: riser
+    end_a: {{type: anchored, position: [-2300, 0, -1500]}}
+    end_b: {{type: vessel, vessel: fpso, position: [0, 0, -10], flex_joint: {{stiffness: 5.0e4}}}}
+    sections:
+      - {{type: riser, length: 500, elements: 50}}
+      - {{type: riser, length: 800, elements: 100}}
+      - {{type: buoyant, length: 400, elements: 100}}
+      - {{type: riser, length: 1540, elements: 220}}
+)",
+                                   speed, 0.3 * speed));
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  EXPECT_LE(s.result.iterations, 400) << s.result.message;
+  EXPECT_GT(s.result.currentSteps, 0) << s.result.message;
+  EXPECT_NE(s.result.message.find("current ramped"), std::string::npos) << s.result.message;
+  const solver::EquilibriumAudit audit = analysis::auditStatics(*s.sim, s.lines);
+  EXPECT_TRUE(audit.warnings().empty()) << audit.warnings().front();
+  const solver::LineSnapshot& line = s.lines[0];
+  const double g = 9.80665, rho = 1025.0;
+  const auto weight = [&](double mass, double d) { return (mass - rho * M_PI / 4.0 * d * d) * g; };
+  const double wRiser = weight(130.0, 0.2731), wBuoy = weight(350.0, 0.9);  // N/m
+  double suspended = 0.0, apexY = 0.0;
+  const double clear = -1500.0 + 0.5 * 0.2731 + 0.01;
+  for (std::size_t i = 0; i + 1 < line.position.size(); ++i) {
+    const double mid = 0.5 * (line.arcLength[i] + line.arcLength[i + 1]);
+    const bool buoy = mid > 1300.0 && mid < 1700.0;
+    if (std::min(line.position[i].z(), line.position[i + 1].z()) > clear)
+      suspended += (buoy ? wBuoy : wRiser) * (line.arcLength[i + 1] - line.arcLength[i]);
+    if (buoy) apexY = std::max(apexY, line.position[i].y());
+  }
+  const Vec3 ends = line.endTensionForceA + line.endTensionForceB;
+  EXPECT_NEAR(std::abs(ends.z()), suspended, 2.0 * wRiser * 8.0);
+  EXPECT_GT(apexY, 100.0 * speed * speed);
+}
+
+INSTANTIATE_TEST_SUITE_P(Issue44, LazyWaveInCurrent, ::testing::Values(1.0, 1.5),
+                         [](const ::testing::TestParamInfo<double>& p) {
+                           return p.param == 1.0 ? "OneMetrePerSecond" : "OneAndAHalfMetresPerSecond";
+                         });
 
 // A flexible riser and an SCR 8 m apart at the top in a 1 m/s current across both (a new user's trial,
 // here on 20 m elements). The current pushes the flexible 12-14 m downstream, across the SCR's plane, where
