@@ -144,7 +144,8 @@ def read_line_statistics(folder) -> dict:
     """The extreme statistics along the lines of a dynamic run (dynamics/<line>/statistics.csv, docs/theory.md
     13.3): per line file stem, the columns as numpy arrays: arc_length_m and, for tension_ (N) and moment_
     (N m), mean, standard_deviation, upcrossing_period_s, peaks, max, rayleigh_sigma, rayleigh_mpm,
-    weibull_scale, weibull_shape, weibull_mpm (NaN where a node had too few peaks)."""
+    weibull_scale, weibull_shape, weibull_mpm (NaN where the fit is not credible: docs/theory.md 13.3), and note
+    (why, where it is not)."""
     from pathlib import Path
 
     return {p.parent.name: _read_columns(p) for p in sorted((Path(folder) / "dynamics").glob("*/statistics.csv"))}

@@ -18,6 +18,7 @@ and the commit says what changed and why (results bit-identical or explained).
 
 from __future__ import annotations
 
+import csv
 import json
 import math
 import os
@@ -76,6 +77,34 @@ def differences(reference: Any, value: Any, where: str = "") -> list[str]:
     return [f"{where}: {value!r}, reference {reference!r}"]
 
 
+def malformed_tables(folder: Path) -> list[str]:
+    """Issue 45: every CSV a run writes has as many fields in every row as in its header (an absent value is an
+    empty field, never a missing one), and in the extreme statistics every row without a most probable maximum
+    (or minimum) says why in its note column."""
+    problems = []
+    for path in sorted(folder.rglob("*.csv")):
+        with path.open(newline="") as f:
+            rows = list(csv.reader(f))
+        where = path.relative_to(folder)
+        if not rows:
+            problems.append(f"{where}: empty")
+            continue
+        header = rows[0]
+        for i, row in enumerate(rows[1:], start=2):
+            if len(row) != len(header):
+                problems.append(f"{where}:{i}: {len(row)} fields, header {len(header)}")
+        if "statistics" not in path.name:
+            continue
+        for column, name in enumerate(header):
+            if "mpm_" not in name and "mp_min_" not in name:
+                continue
+            note = header.index(name.split("rayleigh_")[0].split("weibull_")[0] + "note")
+            for i, row in enumerate(rows[1:], start=2):
+                if len(row) == len(header) and row[column] == "" and row[note] == "":
+                    problems.append(f"{where}:{i}: no {name} and no note saying why")
+    return problems
+
+
 @pytest.fixture(scope="module")
 def reference() -> dict[str, Any]:
     return json.loads(REFERENCE.read_text()) if REFERENCE.exists() else {}
@@ -91,6 +120,8 @@ def test_every_example_has_a_reference(reference: dict[str, Any]) -> None:
 def test_example_results_equal_the_reference(name: str, reference: dict[str, Any], tmp_path: Path) -> None:
     results = run_example(name, tmp_path / name)
     assert "summary.json" in results
+    problems = malformed_tables(tmp_path / name)
+    assert not problems, f"{name}: {len(problems)} malformed table row(s):\n" + "\n".join(problems[:40])
     if os.environ.get("TANGLE_UPDATE_EXAMPLES"):
         stored = json.loads(REFERENCE.read_text()) if REFERENCE.exists() else {}
         stored[name] = results

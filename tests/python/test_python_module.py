@@ -339,13 +339,16 @@ def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_pa
     # dynamics/statistics.csv (theory 13.3) is the library's estimate on the end tension at every step after
     # the ramp (PeakTracker: turning points, time-weighted mean): recomputed here with tangle.statistics from
     # dynamics/end_forces.csv written at every step (printed to 7 digits). The fairlead held still in a
-    # JONSWAP sea (6 m, 10 s): a wave-driven response.
+    # JONSWAP sea (6 m, 10 s): a wave-driven response, 235 s after the ramp. The run writes its fits only where
+    # they are credible (issue 45: 20 peaks or more, a Weibull shape in [1.5, 3], a stationary record), else a
+    # note saying why; this record's peaks fit a Weibull of shape 0.68 (a long tail), so the note must give the
+    # library's shape, and the most probable maxima are compared with the library's own fits of the record.
     from tangle import statistics as st
 
     m = tangle.Model.load(MOORING)
     m.set("lines[mooring1].end_b.motion", {"amplitude": [0, 0, 0], "period": 10})
     m.set("environment.waves", {"type": "jonswap", "significant_height": 6, "peak_period": 10, "azimuth": 0})
-    m.set("dynamics.duration", 120)
+    m.set("dynamics.duration", 240)
     m.set("dynamics.time_step", 0.05)
     m.set("dynamics.output_interval", 0.05)
     m.set("output.vtk", False)
@@ -360,12 +363,12 @@ def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_pa
     e = st.extreme_estimate(ends[after, 0], ends[after, col["mooring1_end_b_tension_N"]], storm_duration_s=7200)
     assert abs(int(b["samples"]) - int(after.sum())) <= 1  # the step at the ramp's end: a rounding of time
     # The same peaks (the largest values between up-crossings: exact, to the CSV's digits) ...
-    assert int(b["peaks"]) == len(e.peaks) > 5
+    assert int(b["peaks"]) == len(e.peaks) >= 20
     assert float(b["storm_duration_s"]) == 7200
     # ... the same mean (time-weighted by the trapezoid rule against the samples' mean: 1/n apart at the ends)
     # and so the same fits; Tz within 2 %: the run interpolates each up-crossing between the turning points
     # around it, not between samples, which moves the first and last crossing by up to a quarter period over
-    # ~10 periods; the most probable maxima within 0.5 % (2 % on Tz is 0.3 % on ln N); the Weibull shape
+    # ~30 periods; the most probable maxima within 0.5 % (2 % on Tz is 0.3 % on ln N); the Weibull shape
     # within 1 %: its least-squares fit on ln(peak - mean) is sensitive to the mean through the smallest
     # excesses (0.6 % here for the means' 1e-5).
     assert float(b["mean_N"]) == pytest.approx(e.mean, rel=1e-4)
@@ -373,6 +376,11 @@ def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_pa
     # The Rayleigh sigma (sigma^2 = sum a^2 / 2n, a the peaks' excess over the mean) moves with the mean by
     # d sigma / d mean = -sum a / (2 n sigma), at most 1/sqrt(2) in size (Cauchy-Schwarz): here the response is
     # 90 N about a 200 kN mean, where the means' end effect (0.016 N in a run) moves sigma by 1.3e-4 (0.012 N).
+    if b["note"]:
+        assert b["note"].startswith("Weibull shape") and not 1.5 <= e.weibull_shape <= 3.0, b["note"]
+        assert float(b["note"].split()[2]) == pytest.approx(e.weibull_shape, abs=0.01 + 1e-2 * e.weibull_shape)
+        assert b["rayleigh_mpm_N"] == b["weibull_mpm_N"] == b["weibull_shape"] == ""
+        return
     sigma_tolerance = 1e-4 * e.rayleigh_sigma + abs(float(b["mean_N"]) - e.mean) / math.sqrt(2.0)
     assert float(b["rayleigh_sigma_N"]) == pytest.approx(e.rayleigh_sigma, abs=sigma_tolerance)
     for key, value, tolerance in (("rayleigh_mpm_N", e.rayleigh_mpm, 5e-3), ("weibull_mpm_N", e.weibull_mpm, 5e-3),

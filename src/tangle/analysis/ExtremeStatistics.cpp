@@ -69,6 +69,22 @@ PeakSet PeakTracker::peaks() const {
   return out;
 }
 
+double PeakTracker::meanShift() const {
+  if (m_points.size() < 3 || !(m_weight > 0.0)) return 0.0;
+  const double mean = m_sum / m_weight;
+  const double sd = std::sqrt(std::max(0.0, m_sumSquares / m_weight - mean * mean));
+  if (!(sd > 0.0)) return 0.0;
+  // The turning point nearest the middle of the record (the first sample is m_points[0], at time 0 weight).
+  const double middle = m_points.front().time + 0.5 * m_weight;
+  const Point* split = &m_points.front();
+  for (const Point& p : m_points)
+    if (std::abs(p.time - middle) < std::abs(split->time - middle)) split = &p;
+  if (!(split->weight > 0.0) || !(m_weight - split->weight > 0.0)) return 0.0;
+  const double first = split->sum / split->weight;
+  const double second = (m_sum - split->sum) / (m_weight - split->weight);
+  return (second - first) / sd;
+}
+
 double PeakFit::mostProbableMaximum(double mean, double count) const {
   if (!(count > 1.0)) return mean;
   return mean + scale * std::pow(std::log(count), 1.0 / shape);

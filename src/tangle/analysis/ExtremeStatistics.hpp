@@ -55,14 +55,20 @@ class PeakTracker {
   /// The peaks, mean (time-weighted), standard deviation and Tz of what was added (the open extreme at the
   /// end counts as the last turning point).
   PeakSet peaks() const;
+  /// The time-weighted mean of the second half of the record minus that of the first, in standard deviations
+  /// of the whole record [-] (the halves split at the turning point nearest the middle): near 0 for a
+  /// stationary record of many cycles, about 1.7 for a steady trend (a drift). 0 with fewer than three
+  /// turning points or no spread.
+  double meanShift() const;
 
  private:
   struct Point {
     double time, value;
+    double weight, sum;  // the time-weighted sums up to this point (meanShift)
   };
   double m_gate;
   std::vector<Point> m_points;  // confirmed turning points (the first sample is the first)
-  Point m_candidate{0.0, 0.0};  // the extreme since the last turning point
+  Point m_candidate{0.0, 0.0, 0.0, 0.0};  // the extreme since the last turning point
   int m_direction = 0;          // +1 rising to the candidate, -1 falling, 0 not yet moved beyond the gate
   double m_min = 0.0, m_max = 0.0;
   double m_lastTime = 0.0, m_lastValue = 0.0;
@@ -72,8 +78,8 @@ class PeakTracker {
 
 inline void PeakTracker::add(double time, double value) {
   if (m_samples == 0) {
-    m_points.push_back({time, value});
-    m_candidate = {time, value};
+    m_points.push_back({time, value, 0.0, 0.0});
+    m_candidate = {time, value, 0.0, 0.0};
     m_min = m_max = value;
   } else {
     // Trapezoidal time weights: each interval counts the mean of its two samples.
@@ -88,13 +94,13 @@ inline void PeakTracker::add(double time, double value) {
     if (m_direction == 0) {
       if (std::abs(value - m_points.back().value) > gate) {
         m_direction = value > m_points.back().value ? 1 : -1;
-        m_candidate = {time, value};
+        m_candidate = {time, value, m_weight, m_sum};
       }
     } else if ((value - m_candidate.value) * m_direction >= 0.0) {
-      m_candidate = {time, value};  // carries on beyond the candidate
+      m_candidate = {time, value, m_weight, m_sum};  // carries on beyond the candidate
     } else if (std::abs(value - m_candidate.value) > gate) {
       m_points.push_back(m_candidate);  // turned back by more than the gate: the candidate was a turning point
-      m_candidate = {time, value};
+      m_candidate = {time, value, m_weight, m_sum};
       m_direction = -m_direction;
     }
   }

@@ -43,7 +43,21 @@ class ResponseStatistics {
 /// maximum of a storm of `stormDuration` [s] (N = stormDuration / Tz peaks); `valid` is false with fewer than
 /// two peaks.
 struct ExtremeEstimate {
-  bool valid = false;
+  bool valid = false;  ///< at least two peaks: the fits exist
+  /// Why the most probable maximum is not to be quoted, or empty when it is (credible()): fewer than
+  /// kMinimumPeaks peaks; a Weibull shape outside [kShapeLow, kShapeHigh] (the peaks are not those of a
+  /// narrow-band random response, and the extrapolation to a storm runs away: shape 0.35 gave 441 MN for a
+  /// chain of 7 MN); a record that is not stationary (PeakTracker::meanShift beyond kMaximumMeanShift
+  /// standard deviations: a transient such as a drift, a release or a start-up, whose peaks are no sample of
+  /// a storm); or a most probable maximum below the largest value of a record shorter than the storm.
+  std::string doubt;
+  bool credible() const { return valid && doubt.empty(); }
+  double meanShift = 0.0;  ///< PeakTracker::meanShift of the record [standard deviations]
+  static constexpr int kMinimumPeaks = 20;
+  static constexpr double kShapeLow = 1.5, kShapeHigh = 3.0;
+  /// A steady trend gives 1.7 (sqrt(3)); the halves of a stationary record of 20 or more cycles differ by a
+  /// small fraction of a standard deviation.
+  static constexpr double kMaximumMeanShift = 0.5;
   PeakSet peaks;
   double maximum = 0.0;  ///< largest sample
   PeakFit rayleigh, weibull;

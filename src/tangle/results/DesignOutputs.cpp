@@ -17,33 +17,44 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The columns of an extreme estimate: mean, sd, Tz, peaks, largest, Rayleigh MPM, Weibull scale, shape and
-/// MPM, times `sign` for the values (-1: the statistics of a minimum, tracked as the peaks of -x); empty
-/// fields when there are too few peaks.
-std::string estimateFields(const analysis::ExtremeEstimate& e, double sign = 1.0) {
-  if (!e.valid) return fmt::format(",,,,{:.6e},,,,,", sign * e.maximum);
-  return fmt::format(",{:.6e},{:.6e},{:.6f},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6f},{:.6e}", sign * e.peaks.mean,
-                     e.peaks.standardDeviation, e.peaks.upcrossingPeriod, e.peaks.peaks.size(), sign * e.maximum,
-                     e.rayleigh.scale / std::sqrt(2.0), sign * e.rayleighMpm, e.weibull.scale, e.weibull.shape,
-                     sign * e.weibullMpm);
+/// The columns of an extreme estimate, each after a comma: mean, sd, Tz, peaks, largest (whenever there are
+/// samples), then the Rayleigh sigma and MPM and the Weibull scale, shape and MPM only where the fit is
+/// credible (ExtremeEstimate::credible), and a note that says why they are empty otherwise. The values are
+/// times `sign` (-1: the statistics of a minimum, tracked as the peaks of -x). Always 11 fields
+/// (issue 45: an absent fit dropped a field and shifted the largest value into the peaks column).
+std::string estimateFields(const analysis::ExtremeEstimate& e, long samples, double sign = 1.0) {
+  std::string out;
+  const auto field = [&](const std::string& text) { out += "," + text; };
+  const bool any = samples > 0;
+  const bool moments = any && e.peaks.upcrossingPeriod > 0.0;
+  field(any ? fmt::format("{:.6e}", sign * e.peaks.mean) : "");
+  field(any ? fmt::format("{:.6e}", e.peaks.standardDeviation) : "");
+  field(moments ? fmt::format("{:.6f}", e.peaks.upcrossingPeriod) : "");
+  field(any ? fmt::format("{}", e.peaks.peaks.size()) : "");
+  field(any ? fmt::format("{:.6e}", sign * e.maximum) : "");
+  const bool fit = e.credible();
+  field(fit ? fmt::format("{:.6e}", e.rayleigh.scale / std::sqrt(2.0)) : "");
+  field(fit ? fmt::format("{:.6e}", sign * e.rayleighMpm) : "");
+  field(fit ? fmt::format("{:.6e}", e.weibull.scale) : "");
+  field(fit ? fmt::format("{:.6f}", e.weibull.shape) : "");
+  field(fit ? fmt::format("{:.6e}", sign * e.weibullMpm) : "");
+  field(core::csvField(any ? e.doubt : std::string("no samples")));
+  return out;
 }
 
-/// A fit the log may quote: at least 20 peaks and a Weibull shape within [1.5, 3] (a short record or a
-/// response far from Rayleigh's shape 2 extrapolates to nonsense; the CSV files keep every fit).
-bool credible(const analysis::ExtremeEstimate& e) {
-  return e.valid && e.peaks.peaks.size() >= 20 && e.weibull.shape >= 1.5 && e.weibull.shape <= 3.0;
-}
+/// The 11 fields of a quantity the line does not have (the bending moment of a cable): ten empty, and why.
+std::string absentFields(const std::string& why) { return std::string(11, ',') + core::csvField(why); }
 
-/// "; rough: n peaks, shape b" for a fit that is not credible, else "".
+/// "; no storm extreme: why" for an estimate that is not credible, else "".
 std::string roughness(const analysis::ExtremeEstimate& e) {
-  return credible(e) ? std::string()
-                     : fmt::format("; rough: {} peaks, shape {:.2f}", e.peaks.peaks.size(), e.weibull.shape);
+  return e.credible() ? std::string() : "; no storm extreme: " + e.doubt;
 }
 
 /// The header of estimateFields; `minimum`: the columns of a minimum (min, most probable minimum "mp_min").
 std::string estimateHeader(const std::string& prefix, const std::string& unit, bool minimum = false) {
   return fmt::format(",{0}mean_{1},{0}standard_deviation_{1},{0}upcrossing_period_s,{0}peaks,{0}{2}_{1},"
-                     "{0}rayleigh_sigma_{1},{0}rayleigh_{3}_{1},{0}weibull_scale_{1},{0}weibull_shape,{0}weibull_{3}_{1}",
+                     "{0}rayleigh_sigma_{1},{0}rayleigh_{3}_{1},{0}weibull_scale_{1},{0}weibull_shape,{0}weibull_{3}_{1},"
+                     "{0}note",
                      prefix, unit, minimum ? "min" : "max", minimum ? "mp_min" : "mpm");
 }
 
@@ -67,22 +78,15 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
         const analysis::ExtremeEstimate e = analysis::extremeEstimate(tracker, storm);
         out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B', tracker.samples(),
                               tracker.duration(), storm) +
-                  estimateFields(e) + "\n");
-        if (end == 1 && e.valid) {
+                  estimateFields(e, tracker.samples()) + "\n");
+        if (end == 1 && e.credible())
           text += fmt::format("  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
                               "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
                               lines[l].name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
                               e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
-          // A Rayleigh distribution of the peaks is a Weibull of shape 2: far from it (a response driven by a
-          // regular motion has peaks of one size, a snapping one a long tail) the Rayleigh estimate misleads.
-          if (e.weibull.shape < 1.5 || e.weibull.shape > 3.0)
-            text += fmt::format("  warning: the peaks of line '{}' end B are not Rayleigh distributed (Weibull shape "
-                                "{:.2f}, 2 for Rayleigh): use the Weibull estimate or the maxima of several seeds\n",
-                                lines[l].name, e.weibull.shape);
-        }
-        if (end == 1 && e.peaks.peaks.size() < 20)
-          text += fmt::format("  warning: only {} peaks of line '{}' end B: the fits are rough (a longer record)\n",
-                              e.peaks.peaks.size(), lines[l].name);
+        else if (end == 1 && tracker.samples() > 0)
+          text += fmt::format("  line '{}' end B: largest in the run {:.1f} kN; no storm extreme: {}\n", lines[l].name,
+                              e.maximum / 1000.0, e.doubt);
       }
     out.close();
   }
@@ -97,17 +101,17 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     double worstTension = 0.0, worstMoment = 0.0, tensionAt = 0.0, momentAt = 0.0;
     for (std::size_t i = 0; i < t.tension.size(); ++i) {
       const analysis::ExtremeEstimate te = analysis::extremeEstimate(t.tension[i], storm);
-      std::string row = fmt::format("{:.4f}", lines[l].arcLength[i]) + estimateFields(te);
-      if (credible(te) && te.weibullMpm > worstTension) {
+      std::string row = fmt::format("{:.4f}", lines[l].arcLength[i]) + estimateFields(te, t.tension[i].samples());
+      if (te.credible() && te.weibullMpm > worstTension) {
         worstTension = te.weibullMpm;
         tensionAt = lines[l].arcLength[i];
       }
       if (t.moment.empty()) {
-        row += ",,,,,,,,,,";
+        row += absentFields("a line without bending stiffness");
       } else {
         const analysis::ExtremeEstimate me = analysis::extremeEstimate(t.moment[i], storm);
-        row += estimateFields(me);
-        if (credible(me) && me.weibullMpm > worstMoment) {
+        row += estimateFields(me, t.moment[i].samples());
+        if (me.credible() && me.weibullMpm > worstMoment) {
           worstMoment = me.weibullMpm;
           momentAt = lines[l].arcLength[i];
         }
@@ -116,8 +120,8 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     }
     out.close();
     if (worstTension == 0.0 && worstMoment == 0.0)
-      text += fmt::format("  line '{}' along its length: no credible fit (fewer than 20 peaks or a Weibull shape outside "
-                          "[1.5, 3] at every node; dynamics/{}/statistics.csv has them all)\n",
+      text += fmt::format("  line '{}' along its length: no storm extreme at any node (dynamics/{}/statistics.csv says "
+                          "why, node by node)\n",
                           lines[l].name, stems[l]);
     else
       text += fmt::format("  line '{}' along its length: most probable maximum tension {} at {:.1f} m{} "
@@ -136,10 +140,13 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       const analysis::ExtremeEstimate e = analysis::extremeEstimate(offsets[v], storm);
       out.write(fmt::format("{},{},{:.6f},{:.1f}", core::csvField(model.vessels()[v].name), offsets[v].samples(),
                             offsets[v].duration(), storm) +
-                estimateFields(e) + "\n");
-      if (e.valid)
-        text += fmt::format("  vessel '{}': most probable maximum offset {:.2f} m (Weibull{}), largest in the run {:.2f} m\n",
-                            model.vessels()[v].name, e.weibullMpm, roughness(e), e.maximum);
+                estimateFields(e, offsets[v].samples()) + "\n");
+      if (e.credible())
+        text += fmt::format("  vessel '{}': most probable maximum offset {:.2f} m (Weibull), largest in the run {:.2f} m\n",
+                            model.vessels()[v].name, e.weibullMpm, e.maximum);
+      else if (offsets[v].samples() > 0)
+        text += fmt::format("  vessel '{}': largest offset in the run {:.2f} m{}\n", model.vessels()[v].name, e.maximum,
+                            roughness(e));
     }
     out.close();
   }
@@ -154,11 +161,14 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       const std::string& b = model.lines()[static_cast<std::size_t>(pairs[p][1])].name;
       out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(a), core::csvField(b), clearance[p].samples(),
                             clearance[p].duration(), storm) +
-                estimateFields(e, -1.0) + "\n");
-      if (e.valid)
-        text += fmt::format("  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull{}), smallest in the "
+                estimateFields(e, clearance[p].samples(), -1.0) + "\n");
+      if (e.credible())
+        text += fmt::format("  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull), smallest in the "
                             "run {:.3f} m\n",
-                            a, b, -e.weibullMpm, roughness(e), -e.maximum);
+                            a, b, -e.weibullMpm, -e.maximum);
+      else if (clearance[p].samples() > 0)
+        text += fmt::format("  lines '{}' / '{}': smallest clearance in the run {:.3f} m{}\n", a, b, -e.maximum,
+                            roughness(e));
     }
     out.close();
   }

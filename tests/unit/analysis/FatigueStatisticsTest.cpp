@@ -12,6 +12,7 @@
 
 #include "tangle/analysis/ExtremeStatistics.hpp"
 #include "tangle/analysis/Rainflow.hpp"
+#include "tangle/analysis/ResponseStatistics.hpp"
 #include "tangle/analysis/SnCurve.hpp"
 
 namespace tangle::analysis {
@@ -143,6 +144,64 @@ TEST(ExtremeStatistics, NarrowBandGaussianMostProbableMaximumIsSigmaSqrtTwoLnN) 
                  std::to_string((fitRayleigh(peaks).mostProbableMaximum(peaks.mean, n) - peaks.mean) / expected));
   RecordProperty("weibull_mpm_ratio", std::to_string((weibull.mostProbableMaximum(peaks.mean, n) - peaks.mean) / expected));
   RecordProperty("weibull_shape", std::to_string(weibull.shape));
+}
+
+/// A narrow-band Gaussian record (60 components about 0.1 Hz, sigma ~5.5) of `hours`, plus `trend` times the
+/// time over the record [units per record], into a PeakTracker at 0.25 s.
+PeakTracker narrowBandRecord(double seconds, double trend, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> phase(0.0, 2.0 * std::numbers::pi), df(-0.005, 0.005);
+  std::vector<double> f(60), p(60);
+  for (std::size_t k = 0; k < f.size(); ++k) {
+    f[k] = 0.1 + df(rng);
+    p[k] = phase(rng);
+  }
+  PeakTracker tracker;
+  for (double time = 0.0; time <= seconds; time += 0.25) {
+    double v = 100.0 + trend * time / seconds;
+    for (std::size_t k = 0; k < f.size(); ++k) v += std::cos(2.0 * std::numbers::pi * f[k] * time + p[k]);
+    tracker.add(time, v);
+  }
+  return tracker;
+}
+
+// Issue 45: a storm extreme only where it is credible. A stationary narrow-band record of 1 h (about 360
+// peaks) is quoted; the same with a trend of 4 standard deviations over the record (a drift) is a transient
+// (mean shift near 4 / 2 = 2 standard deviations of the record, which the trend also widens); 120 s of it
+// (about 12 peaks) are too few; a pure ramp has no peaks at all. Each doubt says why.
+TEST(ExtremeCredibility, OnlyStationaryRecordsOfEnoughPeaksAreQuoted) {
+  const double storm = 3.0 * 3600.0;
+  const ExtremeEstimate stationary = extremeEstimate(narrowBandRecord(3600.0, 0.0, 7), storm);
+  EXPECT_TRUE(stationary.credible()) << stationary.doubt;
+  EXPECT_LT(std::abs(stationary.meanShift), 0.2);
+  EXPECT_GT(stationary.weibullMpm, stationary.maximum);  // a 3 h storm from a 1 h record
+
+  const ExtremeEstimate drift = extremeEstimate(narrowBandRecord(3600.0, 4.0 * 5.5, 7), storm);
+  EXPECT_FALSE(drift.credible());
+  EXPECT_GT(drift.meanShift, 1.0);
+  EXPECT_NE(drift.doubt.find("not stationary"), std::string::npos) << drift.doubt;
+
+  const ExtremeEstimate shortRecord = extremeEstimate(narrowBandRecord(120.0, 0.0, 7), storm);
+  EXPECT_FALSE(shortRecord.credible());
+  EXPECT_NE(shortRecord.doubt.find("fewer than 20"), std::string::npos) << shortRecord.doubt;
+
+  PeakTracker ramp;
+  for (int i = 0; i <= 1000; ++i) ramp.add(0.1 * i, 2.0 * i);
+  const ExtremeEstimate monotonic = extremeEstimate(ramp, storm);
+  EXPECT_FALSE(monotonic.credible());
+  EXPECT_FALSE(monotonic.doubt.empty());
+}
+
+// The mean shift of a linear trend is sqrt(3) standard deviations (the halves' means are T/2 apart for a ramp
+// of rise T, whose standard deviation is T / sqrt(12)); wiggles of 2 on a rise of 1000 (above the tracker's
+// gate, so that there are turning points to split the record at) change that by under 1e-5.
+TEST(ExtremeCredibility, MeanShiftOfALinearTrendIsSqrtThree) {
+  PeakTracker tracker;
+  for (int i = 0; i <= 100000; ++i) {
+    const double t = 0.01 * i;
+    tracker.add(t, t + 2.0 * std::sin(2.0 * std::numbers::pi * t));  // a 1000 s ramp with 1 s wiggles
+  }
+  EXPECT_NEAR(tracker.meanShift(), std::sqrt(3.0), 0.01);
 }
 
 }  // namespace
