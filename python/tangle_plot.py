@@ -442,7 +442,8 @@ def _interp_along(arcs: np.ndarray, values: np.ndarray, arc: float) -> float:
 
 
 def drift_path_figure(results: Path) -> Figure:
-    """Paper Fig. 11: XY path of every free vessel and of the contact points (from the clash report)."""
+    """XY path of every free vessel and of the contact points (from the clash report), in plan; the kind of
+    figure of the seed paper's Fig. 11 (which shows the riser's contact path after the collision)."""
     vessels = read_csv(results / "dynamics" / "vessels.csv")
     fig = Figure(figsize=(8, 7))
     ax = fig.add_subplot(1, 1, 1)
@@ -496,7 +497,7 @@ def drift_path_figure(results: Path) -> Figure:
         ax.set_xlim(cx - half, cx + half)
         ax.set_ylim(cy - half, cy + half)
     ax.set_aspect("equal", adjustable="box")
-    ax.set_title("Drift path of the vessels and contact points (plan view, cf. paper Fig. 11)")
+    ax.set_title("Paths of the moving vessels and of the contact points (plan view)")
     ax.legend(loc="best", fontsize="small")
     _finish(ax, "x [m]", "y [m]")
     return fig

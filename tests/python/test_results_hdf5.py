@@ -218,3 +218,26 @@ def test_time_histories_written_are_those_the_model_asks_for(mooring: Path, tmp_
     out = run(ROOT / "examples" / "mooring-dynamics" / "model.yaml", tmp_path / "none",
               {"  duration: 200 ": "  duration: 2 ", "output:\n": "output:\n  format: both\n  time_histories: none\n"})
     assert sorted(p.name for p in (out / "dynamics" / "mooring1").iterdir()) == ["range.csv", "statistics.csv"]
+
+
+def test_quiet_prints_only_errors_and_the_log_keeps_the_warnings(tmp_path: Path) -> None:
+    # Issue 45: `-q` ("print only errors") still printed warnings. A model with one (a line type lighter than
+    # the water it displaces) run with -q prints nothing; run.log keeps the warning; without -q it is printed.
+    model = tmp_path / "floats.yaml"
+    model.write_text(
+        "environment: {water_depth: 100}\n"
+        "line_types:\n"
+        "  - {name: hose, outer_diameter: 0.5, mass_per_length: 50, axial_stiffness: 1.0e8}\n"
+        "lines:\n"
+        "  - name: hose\n"
+        "    end_a: {type: anchored, position: [0, 0, -100]}\n"
+        "    end_b: {type: anchored, position: [80, 0, -100]}\n"
+        "    sections: [{type: hose, length: 100, elements: 10}]\n")
+    quiet = subprocess.run([CLI, "run", str(model), "-o", str(tmp_path / "q"), "--no-plots", "--no-report", "-q"],
+                           capture_output=True, text=True)
+    assert quiet.returncode == 0, quiet.stderr
+    assert quiet.stdout == "" and quiet.stderr == "", (quiet.stdout, quiet.stderr)
+    assert "floats" in (tmp_path / "q" / "run.log").read_text()
+    loud = subprocess.run([CLI, "run", str(model), "-o", str(tmp_path / "l"), "--no-plots", "--no-report"],
+                          capture_output=True, text=True)
+    assert loud.returncode == 0 and "warning" in loud.stderr and "floats" in loud.stderr, loud.stderr

@@ -11,10 +11,15 @@
 // tolerance leaves, which grows through the run where the response is sensitive (touchdown chatter,
 // contact). The examples are run at a Newton tolerance of 1e-8, where every path gives the converged answer
 // (measured 2026-11-29 over 20 s: at most 1.6 N of 2.1 MN, 7e-7, on drift-into-spread; 0.5 N of 8.6 MN on
-// flexibles-at-touchdown; below 0.4 N on the others); 1e-5 of the largest end tension leaves ten times that
+// flexibles-at-touchdown when its riser was stretched taut, issue 45; below 0.4 N on the others); 1e-5 of the largest end tension leaves ten times that
 // for another compiler or libm and is far below any change of the physics (a change of the contact
 // stiffness or the drag moves tensions by percents). The absolute 1 N covers lines whose tension is itself a
-// few newtons. The three examples without dynamics (cantilever, catenary-mooring, riser-in-current) are
+// few newtons. flexibles-at-touchdown is compared over its first 5 s only: from t = 6 s the vessel pushes the
+// slack riser towards its anchor at up to 0.79 m/s, its laid length goes into compression (-60 kN on a
+// flexible of EI 30 kN m^2) and buckles, and from then on the physics amplifies what any tolerance leaves
+// (measured: the two paths 0.45 N apart at 8 s, 478 N of 277 kN at 19 s, on the same 200 steps; the default
+// path alone 472 N apart between tolerances 1e-8 and 1e-10). Its full run is TouchdownClash's. The three
+// examples without dynamics (cantilever, catenary-mooring, riser-in-current) are
 // left out; the hose lowered by a time table onto a pipeline is SolverFallbackTest.
 //
 // Generated models (GeneratedModel below, one per seed) add what no example combines: one to four lines at
@@ -41,6 +46,7 @@ namespace {
 
 constexpr double kDuration = 20.0;   // [s] of each example's dynamics
 constexpr double kTolerance = 1e-8;  // Newton tolerance of both runs [-]
+constexpr double kBucklingFree = 5.0;  // [s] of flexibles-at-touchdown (file comment)
 constexpr double kRelative = 1e-5;   // of the largest end tension [-]
 constexpr double kAbsolute = 1.0;    // [N]
 
@@ -132,7 +138,8 @@ model::ModelSpec readCase(const std::string& name) {
 
 ExampleRun runExample(const std::string& name, const model::DynamicSolverSpec& solver) {
   model::ModelSpec spec = readCase(name);
-  spec.dynamics.duration = std::min(spec.dynamics.duration, kDuration);
+  spec.dynamics.duration =
+      std::min(spec.dynamics.duration, name == "flexibles-at-touchdown" ? kBucklingFree : kDuration);
   spec.dynamics.tolerance = kTolerance;
   if (name.rfind("generated ", 0) == 0) {  // see below
     spec.dynamics.timeStep = 0.01;

@@ -30,6 +30,11 @@ void RunLog::error(const std::string& text) {
   toLog(text);
 }
 
+void RunLog::warning(const std::string& text) {
+  if (!m_quiet) std::cerr << text << std::flush;
+  toLog(text);
+}
+
 void RunLog::close() {
   if (m_file) m_file->close();
 }

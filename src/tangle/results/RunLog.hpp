@@ -19,8 +19,10 @@ class RunLog {
   void open(const std::filesystem::path& path);
   /// Progress and results: stdout (unless quiet) and the log.
   void info(const std::string& text);
-  /// Warnings and errors: stderr (always) and the log.
+  /// Errors: stderr (always) and the log.
   void error(const std::string& text);
+  /// Warnings: stderr (unless quiet: `-q` prints only errors) and the log (always).
+  void warning(const std::string& text);
   /// Only into the log (what the caller reports on the terminal itself, e.g. a fatal error).
   void logOnly(const std::string& text) { toLog(text); }
   /// Flushes and closes the log. @throws OutputError on a failed write

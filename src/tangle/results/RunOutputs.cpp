@@ -132,7 +132,7 @@ void makePlots(const fs::path& script, const fs::path& outDir, RunLog& log) {
   const std::string cmd = fmt::format("/usr/bin/python3 '{}' '{}' > '{}' 2>&1", script.string(),
                                       outDir.string(), (outDir / "plots.log").string());
   if (std::system(cmd.c_str()) != 0) {
-    log.error(fmt::format("warning: plotting failed, see {}\n", (outDir / "plots.log").string()));
+    log.warning(fmt::format("warning: plotting failed, see {}\n", (outDir / "plots.log").string()));
   } else {
     log.info(fmt::format("plots written to {}\n", (outDir / "plots").string()));
   }
@@ -182,7 +182,7 @@ void writeReport(const io::HtmlReport& report, const fs::path& outDir, RunLog& l
   try {
     io::HtmlReport::writePage(data, readTextFile(outDir / "run.log"), page);
   } catch (const InputError& e) {
-    log.error(fmt::format("warning: report.html not written: {}\n", e.what()));
+    log.warning(fmt::format("warning: report.html not written: {}\n", e.what()));
     return;
   }
   const double seconds =
@@ -238,10 +238,10 @@ bool RunOutputs::writeStatics() {
   std::unique_ptr<contact::ClearanceEnvelope>& envelope = m_envelope;
   std::unique_ptr<io::HtmlReport>& report = m_report;
   log.info(modelSummary(m));
-  log.error(warningText(m.spec()));
+  log.warning(warningText(m.spec()));
 
   const solver::StaticResult result = sim.solveStatics(m_options.progress);
-  for (const std::string& w : result.warnings) std::cerr << "warning: " << w << "\n";
+  for (const std::string& w : result.warnings) log.warning("warning: " + w + "\n");
   m_static = sim.snapshot();
   const std::vector<solver::LineSnapshot>& lines = m_static;
   // The equilibrium audit (theory 7.8) of a converged solution: every force on every line and free vessel
@@ -249,7 +249,7 @@ bool RunOutputs::writeStatics() {
   std::optional<solver::EquilibriumAudit> audit;
   if (result.converged) {
     audit = analysis::auditStatics(sim, lines);
-    for (const std::string& w : audit->warnings()) log.error("warning: " + w + "\n");
+    for (const std::string& w : audit->warnings()) log.warning("warning: " + w + "\n");
   }
   io::writeStaticSummary(outDir, m, result, lines, audit ? &*audit : nullptr);
   if (!result.converged) {
@@ -336,7 +336,7 @@ bool RunOutputs::writeStatics() {
     }
     vesselFile.close();
   }
-  log.error(strainWarnings(m, lines, kStrainWarning));
+  log.warning(strainWarnings(m, lines, kStrainWarning));
   return true;
 }
 
@@ -624,10 +624,10 @@ bool RunOutputs::runDynamics() {
                     "{:.3g} % of the {:.4g} J that flowed (dynamics/energy.csv)\n",
                     t.kineticChange, t.kineticChange - t.residual,
                     t.throughput > 0.0 ? 100.0 * t.residual / t.throughput : 0.0, t.throughput));
-    if (const std::string w = energy->warning(); !w.empty()) log.error("warning: " + w + "\n");
+    if (const std::string w = energy->warning(); !w.empty()) log.warning("warning: " + w + "\n");
   }
   if (maxStopForce > 0.0)
-    log.error(
+    log.warning(
         fmt::format("warning: a tensioner reached its end stop during the dynamics (largest stop force "
                     "{:.1f} kN, see dynamics/tensioners.csv)\n",
                     maxStopForce / 1000.0));

@@ -103,9 +103,18 @@ std::string modelSummary(const model::Model& m) {
   if (!spec.contact.enabled) {
     out += "contact: off\n";
   } else if (spec.contact.pairs.empty()) {
-    out +=
-        fmt::format("contact: every pair of lines{}, restitution {:.2f}\n",
-                    spec.contact.selfContact ? " and each line with itself" : "", spec.contact.restitution);
+    // What "every pair" means here: the lines that take part, and what the model excludes.
+    std::size_t taking = 0;
+    for (const model::LineSpec& line : spec.lines) taking += line.contact ? 1 : 0;
+    std::string except;
+    for (const auto& [a, b] : spec.contact.exclude) except += fmt::format("{}{}-{}", except.empty() ? "" : ", ", a, b);
+    out += fmt::format(
+        "contact: every pair of {}{}{}{}{}, restitution {:.2f}\n",
+        taking == spec.lines.size() ? "lines" : fmt::format("the {} lines of {} that take part", taking, spec.lines.size()),
+        spec.contact.selfContact ? " and each line with itself" : "", except.empty() ? "" : ", except " + except,
+        spec.contact.exclusionZones.empty() ? ""
+                                            : fmt::format(", {} exclusion zone(s)", spec.contact.exclusionZones.size()),
+        spec.contact.excludeConnections ? "" : ", connections not excluded", spec.contact.restitution);
   } else {
     out += fmt::format("contact: {} pair(s):", spec.contact.pairs.size());
     for (const auto& [a, b] : spec.contact.pairs) out += fmt::format(" {}-{};", a, b);
