@@ -48,6 +48,7 @@ import sys
 from pathlib import Path
 from typing import Any, Iterable
 
+import matplotlib
 import numpy as np
 from matplotlib.figure import Figure
 
@@ -292,17 +293,23 @@ def _end_label(column: str) -> str:
 
 
 def end_tensions_figure(table: Table) -> Figure:
-    """Tension [kN] at every line end vs time from a ``dynamics/end_forces.csv`` table (every
-    numeric column other than ``time_s``)."""
+    """Tension [kN] at every line end vs time from a ``dynamics/end_forces.csv`` table: the
+    ``<line>_end_<a|b>_tension_N`` columns only (the signed force components beside them are not tensions),
+    one colour per line, end A solid and end B dashed."""
     _require(table, ("time_s",), "end forces table")
     t = _numeric(table, "time_s", "end forces table")
-    columns = [c for c in table if c != "time_s" and table[c].dtype != object]
+    columns = [c for c in table if _END_COLUMN.match(c) and table[c].dtype != object]
     fig = Figure(figsize=(10.0, 5.5), layout="constrained")
     if not columns:
         return _no_data(fig, "no end tension columns")
     ax = fig.subplots()
+    lines = list(dict.fromkeys(_END_COLUMN.match(c)["line"] for c in columns))
+    palette = matplotlib.colormaps["tab10" if len(lines) <= 10 else "tab20"]
     for column in columns:
-        ax.plot(t, table[column] * KN, linewidth=1.0, label=_end_label(column))
+        m = _END_COLUMN.match(column)
+        colour = palette(lines.index(m["line"]) % palette.N)
+        ax.plot(t, table[column] * KN, linewidth=1.0, color=colour, linestyle="-" if m["end"] == "a" else "--",
+                label=_end_label(column))
     _finish(ax, "time [s]", "tension [kN]")
     ax.set_title("Line end tensions")
     ax.legend(loc="best", fontsize="small", ncol=max(1, (len(columns) + 7) // 8))

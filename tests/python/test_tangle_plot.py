@@ -114,6 +114,9 @@ def make_results(root: Path) -> None:
         for end, phase in (("a", 0.0), ("b", 1.0)):
             header.append(f"{line}_end_{end}_tension_N")
             columns.append(1.0e5 * (1.0 + k) + 2.0e4 * np.sin(2.0 * math.pi * t / 12.0 + phase))
+            for axis in "xyz":  # the signed force components the real file has beside each tension
+                header.append(f"{line}_end_{end}_f{axis}_N")
+                columns.append(-5.0e4 * np.cos(2.0 * math.pi * t / 12.0 + phase))
     write_csv(root / "dynamics" / "end_forces.csv", header, zip(*columns))
 
     write_csv(
@@ -288,8 +291,12 @@ def test_figures_have_the_expected_subplots(tmp: Path) -> None:
     fig = tangle_plot.range_figure(tangle_plot.read_csv(tmp / "dynamics" / LINES[1] / "range.csv"), LINES[1])
     assert len(fig.axes) == 3 and all(ax.collections for ax in fig.axes)  # shaded min-max band
     fig = tangle_plot.end_tensions_figure(tangle_plot.read_csv(tmp / "dynamics" / "end_forces.csv"))
-    labels = [ln.get_label() for ln in fig.axes[0].get_lines()]
+    plotted = fig.axes[0].get_lines()
+    labels = [ln.get_label() for ln in plotted]
+    # Issue 45: tensions only (not the force components), labelled by line and end, a colour per line.
     assert labels == ["riser-1 end A", "riser-1 end B", "mooring_2 end A", "mooring_2 end B"], labels
+    assert plotted[0].get_color() == plotted[1].get_color() != plotted[2].get_color() == plotted[3].get_color()
+    assert [ln.get_linestyle() for ln in plotted] == ["-", "--", "-", "--"]
     fig = tangle_plot.clash_events_figure(tangle_plot.read_csv(tmp / "contact" / "events.csv"))
     assert len(fig.axes) == 2
     fig = tangle_plot.clearance_figure(tangle_plot.read_csv(tmp / "contact" / "clearance.csv"))

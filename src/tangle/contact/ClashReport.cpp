@@ -199,14 +199,20 @@ std::string ClashReport::terminalSummary() const {
   std::string s = fmt::format("clash report: {} contact event(s)\n", m_contact->events().size());
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
     const int a = m_pairs[p][0], b = m_pairs[p][1];
-    int count = 0, sustained = 0;
+    // Each event counted once (issue 45: an impact that then stayed in contact was counted as an impact and
+    // as a sustained contact): impacts (and how many of them stayed), sustained contacts that began slowly,
+    // and brief touches (neither).
+    int count = 0, stayed = 0, sustained = 0, brief = 0;
     double vmax = 0.0, emax = 0.0, fmax = 0.0;
     for (const ContactEvent& e : m_contact->events()) {
       if (e.lineA != a || e.lineB != b) continue;
       fmax = std::max(fmax, e.peakForce);
-      if (e.sustained) ++sustained;
-      if (!e.impact) continue;
+      if (!e.impact) {
+        ++(e.sustained ? sustained : brief);
+        continue;
+      }
       ++count;
+      if (e.sustained) ++stayed;
       vmax = std::max(vmax, e.impactVelocity);
       emax = std::max(emax, e.impactEnergy);
     }
@@ -214,9 +220,10 @@ std::string ClashReport::terminalSummary() const {
     for (const ClearanceSample& c : m_samples)
       if (c.pair == p) minClear = std::min(minClear, c.clearance);
     s += fmt::format(
-        "  {} / {}: {} impact(s), {} sustained contact(s), max impact velocity {:.3f} m/s, max impact energy "
-        "{:.4g} J, max contact force {:.4g} kN, min clearance {}\n",
-        lines[a].name, lines[b].name, count, sustained, vmax, emax, fmax / 1000.0,
+        "  {} / {}: {} impact(s){}, {} sustained contact(s) without an impact, {} brief touch(es); max impact "
+        "velocity {:.3f} m/s, max impact energy {:.4g} J, max contact force {:.4g} kN, min clearance {}\n",
+        lines[a].name, lines[b].name, count, stayed > 0 ? fmt::format(" ({} then sustained)", stayed) : "",
+        sustained, brief, vmax, emax, fmax / 1000.0,
         std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
   }
   for (const ContactEvent& e : m_contact->events())
