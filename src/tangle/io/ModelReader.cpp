@@ -594,7 +594,8 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
   for (const Value& item : v.items(1, ItemLabel::Name)) {
     const Map m(item, {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
                        "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal",
-                       "drag_axial", "added_mass_normal", "added_mass_axial", "axial_damping"});
+                       "drag_axial", "added_mass_normal", "added_mass_axial", "axial_damping",
+                       "minimum_breaking_load"});
     const section::LineType d;
     section::LineType t;
     t.name = names.add(m);
@@ -611,6 +612,9 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     t.addedMassNormal = m.number("added_mass_normal", d.addedMassNormal, nonNegativeUpTo(kMaxCoefficient));
     t.addedMassAxial = m.number("added_mass_axial", d.addedMassAxial, nonNegativeUpTo(kMaxCoefficient));
     t.axialDamping = m.number("axial_damping", d.axialDamping, nonNegativeUpTo(kMaxStiffness));
+    if (m.find("minimum_breaking_load"))
+      t.minimumBreakingLoad =
+          m.number("minimum_breaking_load", positiveUpTo(kMaxStiffness).withHint("in N (e.g. 6.5e6 for a 76 mm R4 chain)"));
     // Plausibility (warnings, not errors: the values are legal, but usually a unit mistake).
     for (const char* key : {"outer_diameter", "buoyancy_diameter"}) {
       const double value = std::string_view(key) == "outer_diameter" ? t.outerDiameter : t.buoyancyDiameter;

@@ -107,6 +107,11 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
     j.field("end_b_min_tension_N", range.endTensionMinB);
     j.field("slack_events", range.slackEvents);
     j.field("slack_time_s", range.slackTime);
+    // Only where a line type of the line gives its minimum breaking load.
+    if (const BreakingLoadUse use = breakingLoadUse(m, l, range.tensionMax); use.ratio > 0.0) {
+      j.field("max_tension_over_mbl", use.ratio);
+      j.field("max_tension_over_mbl_at_m", use.arc);
+    }
     j.endObject();
   }
   j.endArray();
@@ -337,6 +342,11 @@ bool RunOutputs::writeStatics() {
     vesselFile.close();
   }
   log.warning(strainWarnings(m, lines, kStrainWarning));
+  {
+    std::vector<BreakingLoadUse> use;
+    for (std::size_t l = 0; l < lines.size(); ++l) use.push_back(breakingLoadUse(m, l, lines[l].tension));
+    log.warning(breakingLoadWarnings(m, use, "at the static equilibrium"));
+  }
   return true;
 }
 
@@ -592,6 +602,11 @@ bool RunOutputs::runDynamics() {
     if (report) timed([&] { report->setClashDamage(damage); });
   }
   writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
+  {
+    std::vector<BreakingLoadUse> use;
+    for (std::size_t l = 0; l < lines.size(); ++l) use.push_back(breakingLoadUse(m, l, recorder.ranges()[l].tensionMax));
+    log.warning(breakingLoadWarnings(m, use, "during the dynamics"));
+  }
   {
     // The minimum clearance of each contact pair at the output times after the ramp (ClashReport's samples;
     // beyond the clearance margin: the margin).

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "tangle/core/Units.hpp"
@@ -139,6 +140,42 @@ std::string modelSummary(const model::Model& m) {
 std::string warningText(const model::ModelSpec& spec) {
   std::string out;
   for (const std::string& w : spec.warnings) out += "warning: " + w + "\n";
+  return out;
+}
+
+BreakingLoadUse breakingLoadUse(const model::Model& m, std::size_t lineIndex, const std::vector<double>& nodeTension) {
+  BreakingLoadUse use;
+  const model::Line& line = m.lines()[lineIndex];
+  for (int i = 0; i < line.nodeCount && i < static_cast<int>(nodeTension.size()); ++i) {
+    double mbl = 0.0;
+    for (const int e : {i - 1, i}) {
+      if (e < 0 || e >= line.elementCount) continue;
+      const double b = m.elements()[static_cast<std::size_t>(line.firstElement + e)].type->minimumBreakingLoad;
+      if (b > 0.0 && (mbl == 0.0 || b < mbl)) mbl = b;
+    }
+    if (mbl <= 0.0) continue;
+    const double ratio = nodeTension[static_cast<std::size_t>(i)] / mbl;
+    if (ratio > use.ratio) {
+      use.ratio = ratio;
+      use.arc = line.arcLength[static_cast<std::size_t>(i)];
+      use.tension = nodeTension[static_cast<std::size_t>(i)];
+      use.mbl = mbl;
+      const int e = std::min(i, line.elementCount - 1);
+      use.lineType = m.elements()[static_cast<std::size_t>(line.firstElement + e)].type->name;
+    }
+  }
+  return use;
+}
+
+std::string breakingLoadWarnings(const model::Model& m, const std::vector<BreakingLoadUse>& use, const std::string& when) {
+  std::string out;
+  for (std::size_t l = 0; l < use.size(); ++l)
+    if (use[l].ratio > 1.0)
+      out += fmt::format(
+          "warning: line '{}': effective tension {:.1f} kN at {:.1f} m from end A {} exceeds the minimum breaking "
+          "load of line type '{}' ({:.1f} kN, {:.0f} %)\n",
+          m.lines()[l].name, use[l].tension / 1000.0, use[l].arc, when, use[l].lineType, use[l].mbl / 1000.0,
+          100.0 * use[l].ratio);
   return out;
 }
 

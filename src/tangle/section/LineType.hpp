@@ -23,6 +23,9 @@ struct LineType {
   double addedMassNormal = 1.0;     ///< normal added-mass coefficient Can [-]
   double addedMassAxial = 0.0;      ///< axial added-mass coefficient Caa [-]
   double axialDamping = 0.0;        ///< structural axial damping coefficient c [N s] (force = c * strain rate)
+  /// Minimum breaking load, MBL [N] (line_types[].minimum_breaking_load); 0: not given. The run warns where
+  /// the effective tension exceeds it and reports the largest tension over MBL of each line.
+  double minimumBreakingLoad = 0.0;
   /// Cables only: fraction of EA kept while an element is shorter than its unstretched length [-]. Chain
   /// and wire rope carry no compression (they buckle at once); the small default keeps the tangent regular.
   /// 1 makes the bar a linear spring in compression too (e.g. a stiff link of a verification model).
