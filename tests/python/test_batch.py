@@ -197,10 +197,14 @@ def test_seeds_give_statistics_over_the_seeds(tmp_path: Path) -> None:
     p = tmp_path / "seeds.yaml"
     p.write_text(SEED_BATCH)
     out = tmp_path / "out"
-    r = run([CLI, "batch", str(p), "-o", str(out), "-j", "2", "--no-report", "-q"])
+    r = run([CLI, "batch", str(p), "-o", str(out), "-j", "2", "--no-report"])
     assert r.returncode == 0, r.stdout + r.stderr
     table = rows(out)
     assert sorted(table) == sorted(f"heading={h}_seed={s}" for h in (0, 90) for s in (1, 2, 3))
+    # Issue 45: the terminal's statistics in kN, as the summary table beside them (the file stays in N).
+    printed = [ln for ln in r.stdout.splitlines() if "mooring1_end_b_max_tension [kN]" in ln]
+    assert len(printed) == 2, r.stdout
+    assert "mooring1_end_b_max_tension_N " not in r.stdout
     with (out / "summary_statistics.csv").open() as f:
         stats = {(s["case"], s["quantity"]): s for s in csv.DictReader(f)}
     import numpy as np
@@ -222,6 +226,8 @@ def test_seeds_give_statistics_over_the_seeds(tmp_path: Path) -> None:
         assert float(s["gumbel_scale"]) == pytest.approx(scale, abs=tol)
         assert float(s["most_probable_maximum"]) == pytest.approx(mode, abs=tol)
         assert float(s["value_at_90_percent"]) == pytest.approx(mode - scale * np.log(-np.log(0.9)), abs=2 * tol)
+        line = next(ln for ln in printed if ln.startswith(f"heading={h} "))
+        assert float(line.split()[-3]) == pytest.approx(float(s["mean"]) / 1000.0, rel=1e-5), line
     # Seeds need an irregular sea: the base model without one is refused before anything runs.
     p.write_text(f"model: {BASE}\nseeds: [1, 2]\n")
     r = run([CLI, "batch", str(p), "-o", str(tmp_path / "bad")])

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <functional>
+#include <string_view>
 #include <utility>
 
 #include "tangle/analysis/ExtremeStatistics.hpp"
@@ -15,6 +16,15 @@ namespace tangle::app {
 namespace {
 
 std::string number(double v) { return std::isfinite(v) ? fmt::format("{:.6e}", v) : ""; }
+
+/// The terminal table's name and scale of a quantity: forces in kN as in the batch's summary table (issue 45:
+/// the statistics were printed in N beside it), the file keeps SI units.
+std::pair<std::string, double> display(const std::string& quantity) {
+  constexpr std::string_view newtons = "_N";
+  if (quantity.size() > newtons.size() && quantity.ends_with(newtons))
+    return {quantity.substr(0, quantity.size() - newtons.size()) + " [kN]", 1e-3};
+  return {quantity, 1.0};
+}
 
 /// One maximum of a row: its name and how to read it (NaN where the case has none).
 struct Quantity {
@@ -50,7 +60,7 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
   header += ",quantity,seeds,completed_seeds,mean,standard_deviation,min,max,gumbel_scale,most_probable_maximum,"
             "value_at_" + q + "_percent,maxima\n";
   out.write(header);
-  std::string table = fmt::format("{:<36} {:<28} {:>6} {:>14} {:>14} {:>14}\n", "case", "quantity", "seeds", "mean",
+  std::string table = fmt::format("{:<36} {:<36} {:>6} {:>14} {:>14} {:>14}\n", "case", "quantity", "seeds", "mean",
                                   "MPM (Gumbel)", q + " % value");
   for (std::size_t first = 0; first + seeds <= rows.size(); first += seeds) {
     // The case's name: its first seed's, without "_seed=<value>".
@@ -83,8 +93,9 @@ std::string writeSeedStatistics(const std::filesystem::path& file, const BatchPl
         const double atQ = g.quantile(plan.probability);
         row += fmt::format(",{},{},{},{},{},{},{}", number(g.mean), number(g.standardDeviation), number(lo),
                            number(hi), number(g.scale), number(g.mode), number(atQ));
-        table += fmt::format("{:<36} {:<28} {:>6} {:>14.6g} {:>14.6g} {:>14.6g}\n", name.substr(0, 36),
-                             quantity.name.substr(0, 28), maxima.size(), g.mean, g.mode, atQ);
+        const auto [label, scale] = display(quantity.name);
+        table += fmt::format("{:<36} {:<36} {:>6} {:>14.6g} {:>14.6g} {:>14.6g}\n", name.substr(0, 36),
+                             label.substr(0, 36), maxima.size(), scale * g.mean, scale * g.mode, scale * atQ);
       } else {
         row += ",,,,,,,";
       }
