@@ -456,6 +456,34 @@ INSTANTIATE_TEST_SUITE_P(LazyAndSteep, WaveRiser, ::testing::Values(true, false)
                            return p.param ? "LazyWave" : "SteepWave";
                          });
 
+/// Mass per length [kg/m] and outer diameter [m] of a section of a wave riser.
+struct SectionMass {
+  double mass, diameter;
+};
+/// What the lazy-wave checks read from a converged riser: the submerged weight of its elements clear of the
+/// seabed (depth [m]; the riser's contact surface plus 1 cm) [N], the riser section's submerged weight per
+/// length [N/m], and the largest y of the buoyancy section (arc lengths [buoyFrom, buoyTo] m) [m].
+struct WaveInCurrent {
+  double suspendedWeight = 0.0, riserWeight = 0.0, humpY = 0.0;
+};
+WaveInCurrent waveInCurrent(const solver::LineSnapshot& line, double depth, SectionMass riser, SectionMass buoy,
+                            double buoyFrom, double buoyTo) {
+  const double g = 9.80665, rho = 1025.0;
+  const auto weight = [&](SectionMass s) { return (s.mass - rho * M_PI / 4.0 * s.diameter * s.diameter) * g; };
+  WaveInCurrent w;
+  w.riserWeight = weight(riser);
+  const double buoyWeight = weight(buoy);
+  const double clear = -depth + 0.5 * riser.diameter + 0.01;
+  for (std::size_t i = 0; i + 1 < line.position.size(); ++i) {
+    const double mid = 0.5 * (line.arcLength[i] + line.arcLength[i + 1]);
+    const bool inBuoy = mid > buoyFrom && mid < buoyTo;
+    if (std::min(line.position[i].z(), line.position[i + 1].z()) > clear)
+      w.suspendedWeight += (inBuoy ? buoyWeight : w.riserWeight) * (line.arcLength[i + 1] - line.arcLength[i]);
+    if (inBuoy) w.humpY = std::max(w.humpY, line.position[i].y());
+  }
+  return w;
+}
+
 // The lazy wave of a new user's trial in a current across its plane (1 m/s at the surface, 0.2 m/s at
 // the seabed, towards +y) on a 10 m mesh: the homotopy from the start shape stalls on the buoyancy hump
 // swinging across the current (Newton proposes tens of metres on a few hundred newtons); statics reaches it
@@ -483,21 +511,10 @@ lines:
 )");
   ASSERT_TRUE(s.result.converged) << s.result.message;
   const solver::LineSnapshot& line = s.lines[0];
-  const double g = 9.80665, rho = 1025.0;
-  const auto weight = [&](double mass, double d) { return (mass - rho * M_PI / 4.0 * d * d) * g; };
-  const double wRiser = weight(160.0, 0.35), wBuoy = weight(870.0, 1.1);  // N/m
-  double suspended = 0.0, apexY = 0.0;
-  const double clear = -1000.0 + 0.5 * 0.35 + 0.01;
-  for (std::size_t i = 0; i + 1 < line.position.size(); ++i) {
-    const double mid = 0.5 * (line.arcLength[i] + line.arcLength[i + 1]);
-    const bool buoy = mid > 900.0 && mid < 1200.0;
-    if (std::min(line.position[i].z(), line.position[i + 1].z()) > clear)
-      suspended += (buoy ? wBuoy : wRiser) * (line.arcLength[i + 1] - line.arcLength[i]);
-    if (buoy) apexY = std::max(apexY, line.position[i].y());
-  }
+  const WaveInCurrent w = waveInCurrent(line, 1000.0, {160.0, 0.35}, {870.0, 1.1}, 900.0, 1200.0);
   const Vec3 ends = line.endTensionForceA + line.endTensionForceB;
-  EXPECT_NEAR(std::abs(ends.z()), suspended, 2.0 * wRiser * 10.0);
-  EXPECT_GT(apexY, 10.0);  // downstream, towards +y
+  EXPECT_NEAR(std::abs(ends.z()), w.suspendedWeight, 2.0 * w.riserWeight * 10.0);
+  EXPECT_GT(w.humpY, 10.0);  // downstream, towards +y
 }
 
 // Issue 44: a 10 in steel lazy wave in 1500 m (470 beams, 3240 m; the buoyancy section 0.9 m across) in a
@@ -541,21 +558,10 @@ lines:
   const solver::EquilibriumAudit audit = analysis::auditStatics(*s.sim, s.lines);
   EXPECT_TRUE(audit.warnings().empty()) << audit.warnings().front();
   const solver::LineSnapshot& line = s.lines[0];
-  const double g = 9.80665, rho = 1025.0;
-  const auto weight = [&](double mass, double d) { return (mass - rho * M_PI / 4.0 * d * d) * g; };
-  const double wRiser = weight(130.0, 0.2731), wBuoy = weight(350.0, 0.9);  // N/m
-  double suspended = 0.0, apexY = 0.0;
-  const double clear = -1500.0 + 0.5 * 0.2731 + 0.01;
-  for (std::size_t i = 0; i + 1 < line.position.size(); ++i) {
-    const double mid = 0.5 * (line.arcLength[i] + line.arcLength[i + 1]);
-    const bool buoy = mid > 1300.0 && mid < 1700.0;
-    if (std::min(line.position[i].z(), line.position[i + 1].z()) > clear)
-      suspended += (buoy ? wBuoy : wRiser) * (line.arcLength[i + 1] - line.arcLength[i]);
-    if (buoy) apexY = std::max(apexY, line.position[i].y());
-  }
+  const WaveInCurrent w = waveInCurrent(line, 1500.0, {130.0, 0.2731}, {350.0, 0.9}, 1300.0, 1700.0);
   const Vec3 ends = line.endTensionForceA + line.endTensionForceB;
-  EXPECT_NEAR(std::abs(ends.z()), suspended, 2.0 * wRiser * 8.0);
-  EXPECT_GT(apexY, 100.0 * speed * speed);
+  EXPECT_NEAR(std::abs(ends.z()), w.suspendedWeight, 2.0 * w.riserWeight * 8.0);
+  EXPECT_GT(w.humpY, 100.0 * speed * speed);
 }
 
 INSTANTIATE_TEST_SUITE_P(Issue44, LazyWaveInCurrent, ::testing::Values(1.0, 1.5),
