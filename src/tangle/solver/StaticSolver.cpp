@@ -399,7 +399,13 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     result.iterations += step.iterations;
     result.residual = step.residual;
     result.worstNode = step.worstNode;
-    if (step.converged && !inadmissible(trial).empty()) step.converged = false;
+    if (step.converged) {
+      const std::string why = inadmissible(trial);
+      if (!why.empty()) {
+        step.converged = false;
+        step.failure = why;
+      }
+    }
     if (debugOutput())
       std::cerr << fmt::format("  current continuation: drag fraction {:.5f} -> {}, {} iterations\n", target,
                                step.converged ? "ok" : step.failure, step.iterations);
