@@ -39,10 +39,14 @@
 /// Dashpot per contact patch (finishSamples): damping ratio zeta against the patch's stiffness and mass,
 /// shared by the Gauss points in proportion to their stiffness.
 ///
-/// Friction: regularised Coulomb at every Gauss point, f_t = -mu_f f_n u_t / sqrt(|u_t|^2 + eps^2), with
-/// u_t the tangential relative velocity (dynamics, eps = contact.friction_velocity) or the tangential
-/// relative displacement of the two material points since the last converged state (statics, eps =
-/// kStaticSlipFraction of the radii), and its consistent (symmetric part of the) tangent.
+/// Friction: elastic stick then Coulomb slip at every Gauss point, in statics and dynamics alike, on the
+/// slip u_t: the slip committed at the last converged state (per pair of lines, by arc length along the
+/// line integrated along) plus the tangential displacement of the two material points since then. The
+/// force -mu_f f_n phi(|u_t|) u_t / |u_t| rises smoothly (phi(r) = 2 r / u_s - (r / u_s)^2) to mu_f f_n at
+/// the slip distance u_s = 2 mu_f f_n / k_line (the stick as stiff as the normal law: slipDistance) and
+/// stays there; what is committed is held at
+/// u_s (the rest has slid), so stick holds for any time and sliding costs no more than stick. Its
+/// consistent (symmetric part of the) tangent is assembled.
 ///
 /// Stiffness per unit length k_line = k / (rA + rB) [N/m^2], with k [N/m] contact.stiffness or, automatic,
 /// 0.1 EA_min / (kReferenceLengthFactor (rA + rB)) (the point formulation's 0.1 EA / L with the element
@@ -68,8 +72,8 @@ namespace tangle::contact {
 
 /// Reference contact length as a multiple of the sum of the radii [-] (see the file comment).
 inline constexpr double kReferenceLengthFactor = 20.0;
-/// Tangential slip at which statics friction is fully mobilised, as a fraction of the radii [-].
-inline constexpr double kStaticSlipFraction = 1e-3;
+/// Damping ratio of the elastic stick in dynamics [-] (critical: finishSamples).
+inline constexpr double kStickDampingRatio = 1.0;
 
 /// A Gauss point of the distributed contact at the current (trial) state: a point of line A's centreline
 /// (the line integrated along) and its closest point on line B's.
@@ -88,12 +92,13 @@ struct ContactSample {
   double damping = 0.0;                 ///< dashpot per unit length [N s/m^2] (its patch's: finishSamples)
   double spring = 0.0;                  ///< the law's force per unit length f(p) [N/m]
   double pairMass = 0.0;                ///< lumped pair mass at the two points [kg] (+inf if both are held)
-  Vec3 relative = Vec3::Zero();         ///< A's motion against B's that friction resists [m/s; statics: m]
+  Vec3 relative = Vec3::Zero();         ///< slip of A against B that friction resists [m] (addSample)
+  Vec3 slipRate = Vec3::Zero();         ///< velocity of A's point against B's [m/s] (friction's power)
   Vec3 friction = Vec3::Zero();         ///< friction force per unit length on A [N/m]
-  Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d u_t, symmetric part [N s/m^3; statics: N/m^2]
-  bool frictionOnVelocity = false;  ///< the tangent above is a damping (dynamics) or a stiffness (statics)
-  double arcA = 0.0, arcB = 0.0;    ///< arc lengths of the two points [m]
-  double radii = 0.0;               ///< sum of the contact radii [m]
+  double slipDelay = 0.0;               ///< tau of the stick's dashpot: friction acts on slip + tau rate [s]
+  Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d (slip + tau rate), symmetric part [N/m^2]
+  double arcA = 0.0, arcB = 0.0;        ///< arc lengths of the two points [m]
+  double radii = 0.0;                   ///< sum of the contact radii [m]
 };
 
 /// The distributed contact (see the file comment). Owned by LineContact, which keeps the candidates, the
@@ -148,8 +153,26 @@ class DistributedContact {
   std::vector<ContactSpot> spots(const model::State& state, double dt, bool dynamic) const;
   /// Total force on line A from line B [N] of the samples, both passes.
   Vec3 pairForce(int lineA, int lineB) const;
+  /// Keeps the samples found at a converged state (the last findSamples): their slip for friction from
+  /// there on (the elastic stick, at most the slip distance: file comment), and where they touch for
+  /// crossedSinceCommit.
+  void commitSamples();
+  /// Forgets what was committed (a new analysis).
+  void clearCommitted() {
+    m_slip.clear();
+    m_committed.clear();
+  }
+  /// Empty, or why `state` is not admissible: a point in contact at the last commit whose separation from
+  /// the same piece of the other line has reversed (the lines passed through each other there).
+  std::string crossedSinceCommit(const model::State& state) const;
 
  private:
+  /// Slip at which friction is fully mobilised at a sample [m]: 2 mu f_n / k_line, so the stick spring is
+  /// as stiff as the normal law (a fixed thousandth of the radii made it up to 1e4 times stiffer in an
+  /// impact: a wire dropped across another with friction stopped in Newton at the minimum step; the law's
+  /// regularisation depth, 1 mm for a 10 cm rod, let a rod bouncing onto an incline creep 5 mm).
+  /// Its dependence on f_n is left out of the tangent.
+  double slipDistance(const ContactSample& smp) const;
   /// Arc length [m] of the point at parameter w of an element.
   double arcOf(int element, double w) const;
   /// The projection of slave element e's point at xi on master element f, started at t0.
@@ -165,7 +188,7 @@ class DistributedContact {
   bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi,
                        std::vector<double>& cuts) const;
   void addSample(const model::State& state, int slave, double xi, double weight,
-                 const std::vector<int>& masters, bool dynamic, const std::vector<Vec3>& reference);
+                 const std::vector<int>& masters, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
   /// Mass per unit length of an element's line [kg/m] (+inf if both its nodes are held).
   double massPerLength(int element) const;
@@ -178,6 +201,23 @@ class DistributedContact {
   std::vector<std::vector<int>> patches() const;
   /// Mass taking part in a patch's normal motion [kg] (finishSamples).
   double patchMass(const std::vector<int>& patch) const;
+
+  /// The committed slip [m] of line A against line B at arc length arcA of A [m] (commitSlip): linear
+  /// between committed points, zero farther than `reach` [m] from all of them.
+  Vec3 committedSlip(int lineA, int lineB, double arcA, double reach) const;
+  /// Committed slip of a Gauss point of the pass along lineA against lineB.
+  struct SlipRecord {
+    double arc = 0.0;          ///< arc length of the point on line A [m]
+    Vec3 slip = Vec3::Zero();  ///< tangential slip of A against B, |slip| <= u_s [m]
+  };
+  std::map<std::pair<int, int>, std::vector<SlipRecord>> m_slip;  ///< per (lineA, lineB), by arc
+  /// A Gauss point in contact at the last commit: its piece of each line and the normal from B to A.
+  struct CommittedContact {
+    int elementA = 0, elementB = 0;
+    double xi = 0.0, t = 0.0;
+    Vec3 normal = Vec3::UnitZ();
+  };
+  std::vector<CommittedContact> m_committed;
 
   const model::Model* m_model;
   model::ContactSpec m_spec;

@@ -182,7 +182,8 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
   for (const CandidatePair& c : m_search.candidates()) {
     int pa = c.first, pb = c.second;
     if (m_search.proxies()[pa].line > m_search.proxies()[pb].line ||
-        (m_search.proxies()[pa].line == m_search.proxies()[pb].line && m_search.proxies()[pa].element > m_search.proxies()[pb].element))
+        (m_search.proxies()[pa].line == m_search.proxies()[pb].line &&
+         m_search.proxies()[pa].element > m_search.proxies()[pb].element))
       std::swap(pa, pb);
     const model::LineElement& ea = elements[m_search.proxies()[pa].element];
     const model::LineElement& eb = elements[m_search.proxies()[pb].element];
@@ -199,21 +200,23 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     r.smoothB = hasSmoothCentreline(*m_model, m_search.proxies()[pb].element);
     const double radii = m_search.proxies()[pa].radius + m_search.proxies()[pb].radius;
     const double bulge = 0.25 * std::max(r.smoothA ? ea.restLength : 0.0, r.smoothB ? eb.restLength : 0.0);
-    const bool sticky = inNeighbourhood({m_search.proxies()[pa].element, m_search.proxies()[pb].element}, m_sticky);
+    const bool sticky =
+        inNeighbourhood({m_search.proxies()[pa].element, m_search.proxies()[pb].element}, m_sticky);
     if (!sticky && r.d.distance >= (1.0 + 0.05) * radii + bulge) continue;
     // Point-to-point weight of the ABC blending (docs/theory.md 9.3): by the crossing angle of the two
     // elements; 1 for an end contact that the line-to-line part cannot see (both closest points at
     // segment ends, one of them a free line end: lines meeting end to end or end to node).
     r.endContact = atSegmentEnd(r.d.s) && atSegmentEnd(r.d.t) &&
-                   (atLineEnd(m_search.proxies()[pa].element, r.d.s) || atLineEnd(m_search.proxies()[pb].element, r.d.t));
+                   (atLineEnd(m_search.proxies()[pa].element, r.d.s) ||
+                    atLineEnd(m_search.proxies()[pb].element, r.d.t));
     r.weight =
         r.endContact ? 1.0 : pointToPointWeight(crossingAngle(a0, a1, b0, b1), kBlendLower, kBlendUpper);
     r.distance = r.d.distance;
     if (r.weight > 0.0 && (r.smoothA || r.smoothB)) {
       // The point-to-point part is measured between the smooth centrelines (SmoothCentreline.hpp): a
       // polyline corner would act like a sphere and make Newton cycle between the elements at a node.
-      r.curve = centrelineDistance(*m_model, state.position, m_search.proxies()[pa].element, m_search.proxies()[pb].element,
-                                   r.d.s, r.d.t);
+      r.curve = centrelineDistance(*m_model, state.position, m_search.proxies()[pa].element,
+                                   m_search.proxies()[pb].element, r.d.s, r.d.t);
       r.distance = r.curve.distance;
     }
     raw.push_back(std::move(r));
@@ -277,7 +280,8 @@ void LineContact::findContacts(const model::State& state, bool dynamic, bool ref
     }
     for (std::size_t i = 0; i < raw.size(); ++i) {
       if (snapA[i] < 0 && snapB[i] < 0) continue;
-      const int elementA = m_search.proxies()[raw[i].proxyA].element, elementB = m_search.proxies()[raw[i].proxyB].element;
+      const int elementA = m_search.proxies()[raw[i].proxyA].element,
+                elementB = m_search.proxies()[raw[i].proxyB].element;
       const CentrelineDistance& old = raw[i].curve;
       const double s0 = snapA[i] >= 0 ? snapA[i] : old.s, t0 = snapB[i] >= 0 ? snapB[i] : old.t;
       raw[i].curve = centrelineDistance(*m_model, state.position, elementA, elementB, s0, t0, snapA[i] >= 0,
@@ -556,20 +560,23 @@ double LineContact::limitStep(const model::State& state) {
     Vec3 relativeVelocity = Vec3::Zero(), relativeAcceleration = Vec3::Zero();
     const bool hasAcceleration = state.acceleration.size() == state.velocity.size();
     const bool smoothCables = m_distributed != nullptr;
-    if (hasSmoothCentreline(*m_model, a.element, smoothCables) || hasSmoothCentreline(*m_model, b.element, smoothCables)) {
+    if (hasSmoothCentreline(*m_model, a.element, smoothCables) ||
+        hasSmoothCentreline(*m_model, b.element, smoothCables)) {
       // A beam's contact is measured on its smooth centreline, which lies off the chord by up to
       // kappa L^2 / 8 (6 cm for a flexible riser of 10 m elements near its touchdown): the chords' gap
       // would see a touch that late and let a nominal step run into it (an unresolved impact, its
       // force applied over the whole step).
-      const CentrelineDistance cd =
-          centrelineDistance(*m_model, state.position, a.element, b.element, d.s, d.t, false, false, smoothCables);
+      const CentrelineDistance cd = centrelineDistance(*m_model, state.position, a.element, b.element, d.s,
+                                                       d.t, false, false, smoothCables);
       gap = cd.distance - radii;
       n = cd.pointA - cd.pointB;
       relativeVelocity = stencilValue(state.velocity, cd.a) - stencilValue(state.velocity, cd.b);
       if (hasAcceleration)
-        relativeAcceleration = stencilValue(state.acceleration, cd.a) - stencilValue(state.acceleration, cd.b);
+        relativeAcceleration =
+            stencilValue(state.acceleration, cd.a) - stencilValue(state.acceleration, cd.b);
     } else {
-      relativeVelocity = pointValue(state.velocity, a.element, d.s) - pointValue(state.velocity, b.element, d.t);
+      relativeVelocity =
+          pointValue(state.velocity, a.element, d.s) - pointValue(state.velocity, b.element, d.t);
       if (hasAcceleration)
         relativeAcceleration =
             pointValue(state.acceleration, a.element, d.s) - pointValue(state.acceleration, b.element, d.t);
@@ -579,7 +586,7 @@ double LineContact::limitStep(const model::State& state) {
     // Closing speed and acceleration along the normal: a line at the top of a bounce, or released at rest,
     // is not approaching yet but falls onto the other within the step (a flexible at the apex of its
     // rebound fell 6 mm in a nominal step of 0.1 s and touched at 0.11 m/s, unresolved).
-    const double closing = -n.dot(relativeVelocity);          // [m/s]
+    const double closing = -n.dot(relativeVelocity);                  // [m/s]
     const double closingAcceleration = -n.dot(relativeAcceleration);  // [m/s^2]
     if (closing <= 0.0 && closingAcceleration <= 0.0) continue;
     // Earliest t > 0 with closing t + 1/2 closingAcceleration t^2 = distance (+inf if never) [s].
@@ -613,7 +620,8 @@ double LineContact::limitStep(const model::State& state) {
       // The lumped pair mass and the point stiffness (distributed: a crossing's stiffness at the law's
       // reference penetration, DistributedContact::pointStiffness).
       const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
-      const double k = m_distributed ? m_distributed->pointStiffness(a.line, b.line) : stiffness(a.line, b.line);
+      const double k =
+          m_distributed ? m_distributed->pointStiffness(a.line, b.line) : stiffness(a.line, b.line);
       if (std::isfinite(m) && touchSpeed * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius)) {
         const double impactStep = contactDuration(k, m, m_zeta) / kImpactSteps;
         const double firstStep = impactStep / 16.0;
@@ -623,8 +631,8 @@ double LineContact::limitStep(const model::State& state) {
       }
     }
   }
-  // Resolve every impact with at least kImpactSteps (40) steps while it lasts. An impact is dynamic when the rigid
-  // impact penetration v0 sqrt(m / k) is not negligible (> 1e-3 of the smaller contact radius: a thin
+  // Resolve every impact with at least kImpactSteps (40) steps while it lasts. An impact is dynamic when the
+  // rigid impact penetration v0 sqrt(m / k) is not negligible (> 1e-3 of the smaller contact radius: a thin
   // line hitting a thick one is judged by its own size); a quasi-static touch needs no resolution in
   // time and keeps the nominal step.
   for (const TrackedContact& tr : m_tracked) {
@@ -662,8 +670,10 @@ std::string LineContact::rejectStep(const model::State& before, const model::Sta
   const auto& elements = m_model->elements();
   if (m_distributed) {
     // At `after` itself (the last assembly may have been of a trial the solver did not keep).
-    m_distributed->findSamples(after, m_search, m_lastDynamic, false, m_reference.size() == after.position.size() ? m_reference : after.position);
+    m_distributed->findSamples(after, m_search, m_lastDynamic, false,
+                               m_reference.size() == after.position.size() ? m_reference : after.position);
     if (std::string why = m_distributed->rejectSamples(); !why.empty()) return why;
+    if (std::string why = m_distributed->crossedSinceCommit(after); !why.empty()) return why;
   }
   for (const CandidatePair& cp : m_search.candidates()) {
     const SegmentProxy& a = m_search.proxies()[cp.first];
@@ -952,9 +962,9 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
         for (int j = std::max(j0 - 1, 0); j <= std::min(j0 + 1, lb.elementCount - 1); ++j) {
           if (lineA == lineB && std::abs(i - j) <= 1) continue;
           const int ea = la.firstElement + i, eb = lb.firstElement + j;
-          const geometry::SegmentDistanceResult d =
-              geometry::segmentDistance(state.position[elements[ea].node1], state.position[elements[ea].node2],
-                                        state.position[elements[eb].node1], state.position[elements[eb].node2]);
+          const geometry::SegmentDistanceResult d = geometry::segmentDistance(
+              state.position[elements[ea].node1], state.position[elements[ea].node2],
+              state.position[elements[eb].node1], state.position[elements[eb].node2]);
           const CentrelineDistance c = centrelineDistance(*m_model, state.position, ea, eb, d.s, d.t);
           const double gap = c.distance - m_radius[ea] - m_radius[eb];
           if (gap < refined) {
@@ -975,6 +985,13 @@ void LineContact::addDistributedForces(const model::State& state, const solver::
                                        VecX& force, solver::SystemMatrix* matrix) {
   if (m_reference.size() != state.position.size()) m_reference = state.position;
   m_distributed->findSamples(state, m_search, request.dynamic, request.relaxation, m_reference);
+  if (m_debug)
+    for (const ContactSample& x : m_distributed->samples())
+      std::cerr << fmt::format(
+          "      sample e{}-e{} xi {:.9f} t {:.9f} gap {:.6e} rate {:.4e} w {:.6e} f {:.6e} damp {:.4e} fr "
+          "({:.4e},{:.4e},{:.4e})\n",
+          x.elementA, x.elementB, x.xi, x.t, x.gap, x.gapRate, x.length, x.lineForce, x.damping,
+          x.friction.x(), x.friction.y(), x.friction.z());
   m_distributed->addForces(state, request, force, matrix);
 }
 
@@ -983,6 +1000,7 @@ void LineContact::commitDistributed(const model::State& state, double dt) {
   const bool dynamic = dt > 0.0;
   if (m_reference.size() != state.position.size()) m_reference = state.position;
   m_distributed->findSamples(state, m_search, dynamic, false, m_reference);
+  m_distributed->commitSamples();
   m_reference = state.position;
   std::vector<ContactSpot> spots = m_distributed->spots(state, dt, dynamic);
   for (ContactSpot& spot : spots) {
@@ -994,9 +1012,10 @@ void LineContact::commitDistributed(const model::State& state, double dt) {
     spot.elementPairMass = reducedMass(elementMass(ea), elementMass(eb));
     spot.linePairMass = pairMassBound(m_lineMassWithAdded[spot.lineA], m_lineMassWithAdded[spot.lineB]);
   }
-  m_eventTracker.update(state.time, dt, dynamic, spots, [&](int a, int b, double a0, double a1, double b0, double b1) {
-    return gapBetween(state, a, b, a0, a1, b0, b1);
-  });
+  m_eventTracker.update(state.time, dt, dynamic, spots,
+                        [&](int a, int b, double a0, double a1, double b0, double b1) {
+                          return gapBetween(state, a, b, a0, a1, b0, b1);
+                        });
 }
 
 }  // namespace tangle::contact

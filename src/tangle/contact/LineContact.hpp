@@ -144,7 +144,10 @@ class LineContact final : public solver::LoadContributor {
   void commitIncrement(const model::State& state) override;
   solver::LoadSource source() const override { return solver::LoadSource::Contact; }
   void beginStatic(const model::State& state) override {
-    if (m_distributed) m_distributed->beginStep();
+    if (m_distributed) {
+      m_distributed->beginStep();
+      m_distributed->clearCommitted();
+    }
     m_reference = state.position;
     m_pendingAnchors.clear();
     m_pendingPointAnchors.clear();
@@ -265,8 +268,8 @@ class LineContact final : public solver::LoadContributor {
   /// The stick / slip force of one patch with key `key`, anchored at arc lengths arcA, arcB at first
   /// touch: stick spring kt [N/m per unit patch length], slip limit [N per unit length]; fills `patch`
   /// and adds its force (and tangent) to the nodes.
-  void stickSlip(const model::State& state, const solver::AssemblyRequest& request, const std::pair<int, int>& key,
-                 double arcA, double arcB, double kt, double limit,
+  void stickSlip(const model::State& state, const solver::AssemblyRequest& request,
+                 const std::pair<int, int>& key, double arcA, double arcB, double kt, double limit,
                  const std::map<std::pair<int, int>, FrictionAnchor>& anchors,
                  std::map<std::pair<int, int>, FrictionAnchor>& pending, FrictionPatch& patch, VecX& force,
                  solver::SystemMatrix* matrix) const;
@@ -282,10 +285,11 @@ class LineContact final : public solver::LoadContributor {
   model::ContactSpec m_spec;
   double m_timeStep;
   double m_zeta;
-  std::vector<double> m_lineStiffness;      // automatic stiffness per line [N/m]
-  std::vector<double> m_lineMassWithAdded;  // structural + attachment + normal added mass per line, +inf if held [kg]
-  std::vector<double> m_radius;             // contact radius per element [m]
-  ContactCandidates m_search;               // which element pairs may touch and are close
+  std::vector<double> m_lineStiffness;  // automatic stiffness per line [N/m]
+  std::vector<double>
+      m_lineMassWithAdded;       // structural + attachment + normal added mass per line, +inf if held [kg]
+  std::vector<double> m_radius;  // contact radius per element [m]
+  ContactCandidates m_search;    // which element pairs may touch and are close
   double m_candidateTime = std::numeric_limits<double>::quiet_NaN();
   double m_margin = 0.0;
   std::vector<ContactPoint> m_trial;

@@ -2,9 +2,10 @@
 /// Statics hooks of the contact (increment limit, crossed-state rejection, commit) and the exclusions
 /// (user pairs and zones, shared connection points). docs/theory.md 9.7 and 9.10.
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
-#include <fmt/format.h>
 
 #include "tangle/contact/LineContact.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
@@ -51,7 +52,8 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   }
   // Candidates: pairs whose boxes, grown by the largest node move, come within the radii.
   const std::vector<CandidatePair> pairs = m_search.pairsWithin(state, m_search.maxRadius() + largest);
-  m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
+  m_candidateTime =
+      std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
   // The pairs' distances at `state` are recomputed for every trial fraction instead of stored: a large
   // increment makes most element pairs of a many-line model candidates (4.6 million for 150 lines of 60
   // elements), and a stored 100-byte record per pair was 0.6 GB (issue 30).
@@ -66,9 +68,11 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
       const double gap0 = before.distance - radii;
       const model::LineElement& ea = elements[a.element];
       const model::LineElement& eb = elements[b.element];
-      const geometry::SegmentDistanceResult d = geometry::segmentDistance(
-          state.position[ea.node1] + alpha * move[ea.node1], state.position[ea.node2] + alpha * move[ea.node2],
-          state.position[eb.node1] + alpha * move[eb.node1], state.position[eb.node2] + alpha * move[eb.node2]);
+      const geometry::SegmentDistanceResult d =
+          geometry::segmentDistance(state.position[ea.node1] + alpha * move[ea.node1],
+                                    state.position[ea.node2] + alpha * move[ea.node2],
+                                    state.position[eb.node1] + alpha * move[eb.node1],
+                                    state.position[eb.node2] + alpha * move[eb.node2]);
       const double gap = d.distance - radii;
       if (gap < std::min(gap0, 0.0) - kClosingFraction * radii) return false;
       if (passedThrough(a.element, b.element, before, d)) return false;
@@ -86,6 +90,7 @@ std::string LineContact::rejectState(const model::State& state) {
     // At `state` itself (the last assembly may have been of a trial the solver did not keep).
     m_distributed->findSamples(state, m_search, false, false, m_reference);
     if (std::string why = m_distributed->rejectSamples(); !why.empty()) return why;
+    if (std::string why = m_distributed->crossedSinceCommit(state); !why.empty()) return why;
   }
   const auto& elements = m_model->elements();
   // Pairs within reach of each other now or at the reference state: the radii plus the largest move
@@ -94,7 +99,8 @@ std::string LineContact::rejectState(const model::State& state) {
   for (int n = 0; n < m_model->nodeCount(); ++n)
     largestMove = std::max(largestMove, (state.position[n] - m_reference[n]).norm());
   const std::vector<CandidatePair> pairs = m_search.pairsWithin(state, m_search.maxRadius() + largestMove);
-  m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
+  m_candidateTime =
+      std::numeric_limits<double>::quiet_NaN();  // the proxies changed: refresh at the next assembly
   for (const CandidatePair& cp : pairs) {
     const SegmentProxy& a = m_search.proxies()[cp.first];
     const SegmentProxy& b = m_search.proxies()[cp.second];
@@ -102,16 +108,16 @@ std::string LineContact::rejectState(const model::State& state) {
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a.a, a.b, b.a, b.b);
     const model::LineElement& ea = elements[a.element];
     const model::LineElement& eb = elements[b.element];
-    const std::string where =
-        fmt::format("lines '{}' and '{}' at arc lengths {:.2f} m and {:.2f} m", m_model->lines()[a.line].name,
-                    m_model->lines()[b.line].name, arcOf(a.line, a.element, d.s), arcOf(b.line, b.element, d.t));
+    const std::string where = fmt::format("lines '{}' and '{}' at arc lengths {:.2f} m and {:.2f} m",
+                                          m_model->lines()[a.line].name, m_model->lines()[b.line].name,
+                                          arcOf(a.line, a.element, d.s), arcOf(b.line, b.element, d.t));
     if (!m_distributed && d.distance - radii < -kRejectDepth * radii)
       return fmt::format("{} overlap by {:.3f} m, more than half the sum of their radii ({:.3f} m)", where,
                          radii - d.distance, radii);
     const geometry::SegmentDistanceResult r = geometry::segmentDistance(
         m_reference[ea.node1], m_reference[ea.node2], m_reference[eb.node1], m_reference[eb.node2]);
-    bool crossed =
-        r.distance > 0.5 * radii && r.distance < radii + largestMove && passedThrough(a.element, b.element, r, d);
+    bool crossed = r.distance > 0.5 * radii && r.distance < radii + largestMove &&
+                   passedThrough(a.element, b.element, r, d);
     if (crossed && m_distributed) {
       // On the C1 centrelines the distributed formulation measures (see rejectStep).
       const CentrelineDistance c0 =
@@ -126,6 +132,11 @@ std::string LineContact::rejectState(const model::State& state) {
 }
 
 void LineContact::commitIncrement(const model::State& state) {
+  if (m_distributed) {
+    if (m_reference.size() != state.position.size()) m_reference = state.position;
+    m_distributed->findSamples(state, m_search, false, false, m_reference);
+    m_distributed->commitSamples();
+  }
   m_reference = state.position;
   commitFriction();
 }
