@@ -426,6 +426,7 @@ void DistributedContact::finishSamples(bool dashpot) {
   }
   for (ContactSample& smp : m_samples) smp.lineForce = std::max(0.0, smp.spring - smp.damping * smp.gapRate);
   if (!friction) return;
+  for (ContactSample& smp : m_samples) smp.slipLimit = slipDistance(smp);
   // The stick spring's dashpot (dynamics): per patch, the delay tau = 2 zeta_t sqrt(M / K_t) with the
   // patch's stick stiffness K_t = sum 2 mu f_n / u_s w_i and its mass M, critically damped (zeta_t = 1).
   // Without it the stick spring, as stiff as the normal law, rang at +-mu f_n for as long as the run (a rod
@@ -434,7 +435,7 @@ void DistributedContact::finishSamples(bool dashpot) {
     double stiffness = 0.0;
     for (const int i : patch) {
       const ContactSample& x = m_samples[static_cast<std::size_t>(i)];
-      stiffness += 2.0 * m_spec.frictionCoefficient * x.lineForce / slipDistance(x) * x.length;
+      stiffness += 2.0 * m_spec.frictionCoefficient * x.lineForce / x.slipLimit * x.length;
     }
     const double mass = patchMass(patch);
     const double delay =
@@ -449,7 +450,7 @@ void DistributedContact::finishSamples(bool dashpot) {
     // without changing it: commitSlip). d(phi w / r) / dw = (phi / r) P + (phi' - phi / r) w w^T / r^2,
     // symmetric (P = I - n n^T).
     const Mat3 projector = Mat3::Identity() - smp.normal * smp.normal.transpose();
-    const double us = slipDistance(smp);
+    const double us = smp.slipLimit;
     const Vec3 w = projector * (smp.relative + smp.slipDelay * smp.slipRate);
     const double r = w.norm();
     const double mu = m_spec.frictionCoefficient * smp.lineForce;
@@ -496,7 +497,7 @@ void DistributedContact::commitSamples() {
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0 || m_spec.frictionCoefficient <= 0.0) continue;
     const Vec3 ut = (Mat3::Identity() - smp.normal * smp.normal.transpose()) * smp.relative;
-    const double us = slipDistance(smp), r = ut.norm();
+    const double us = smp.slipLimit, r = ut.norm();
     m_slip[{smp.lineA, smp.lineB}].push_back({smp.arcA, r > us ? Vec3(ut * (us / r)) : ut});
   }
   for (auto& [key, records] : m_slip)

@@ -95,6 +95,7 @@ struct ContactSample {
   Vec3 relative = Vec3::Zero();         ///< slip of A against B that friction resists [m] (addSample)
   Vec3 slipRate = Vec3::Zero();         ///< velocity of A's point against B's [m/s] (friction's power)
   Vec3 friction = Vec3::Zero();         ///< friction force per unit length on A [N/m]
+  double slipLimit = 0.0;               ///< slip distance u_s at which friction is mu f_n [m] (slipDistance)
   double slipDelay = 0.0;               ///< tau of the stick's dashpot: friction acts on slip + tau rate [s]
   Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d (slip + tau rate), symmetric part [N/m^2]
   double arcA = 0.0, arcB = 0.0;        ///< arc lengths of the two points [m]
