@@ -173,6 +173,12 @@ double Assembler::limitStep(const model::State& state) {
   return limit;
 }
 
+double Assembler::maxStepGrowth() const {
+  double growth = 2.0;
+  for (const LoadContributor* c : m_contributors) growth = std::min(growth, c->maxStepGrowth());
+  return growth;
+}
+
 std::string Assembler::rejectStep(const model::State& before, const model::State& after) {
   for (LoadContributor* c : m_contributors) {
     std::string why = c->rejectStep(before, after);

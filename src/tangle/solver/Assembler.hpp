@@ -44,6 +44,8 @@ class Assembler {
   std::string rejectState(const model::State& state);
   /// The smallest LoadContributor::limitStep [s] (+inf if none limits).
   double limitStep(const model::State& state);
+  /// The smallest LoadContributor::maxStepGrowth [-] (2 if none is stricter).
+  double maxStepGrowth() const;
   /// Forwards LoadContributor::rejectStep: the first contributor's reason, empty if none.
   std::string rejectStep(const model::State& before, const model::State& after);
   /// True if any contributor's rejectStep can refuse a step (LoadContributor::rejectsSteps).

@@ -86,7 +86,7 @@ void DynamicAnalysis::start(model::State& state) {
   m_outputIndex = 1;
   m_nextOutput = std::min(m_settings.outputInterval, m_settings.duration);
   m_dt = m_settings.timeStep;
-  m_lastStep = m_settings.timeStep;  // the step grows at most twofold from one step to the next
+  m_lastStep = m_settings.timeStep;  // the step grows at most twofold (maxStepGrowth) per step
   m_successes = 0;
 }
 
@@ -116,6 +116,9 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
   // Contributors that may refuse a converged step (lines passed through each other) need the state before it.
   const bool checkSteps = m_stepControl && m_assembler->rejectsSteps();
   double& lastStep = m_lastStep;
+  // The largest ratio of a step to the one before it (2, or less where a contributor asks: the distributed
+  // contact, LineContact::maxStepGrowth).
+  const double growth = m_stepControl ? m_assembler->maxStepGrowth() : 2.0;
   while (state.time < end - eps) {
     if (core::interruptRequested() || (m_stop && m_stop())) {
       result.message = fmt::format("dynamic analysis interrupted by the user at t = {:.4f} s", state.time);
@@ -123,7 +126,7 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
       m_stopped = true;
       return false;
     }
-    double h = std::min({dt, end - state.time, 2.0 * lastStep});
+    double h = std::min({dt, end - state.time, growth * lastStep});
     if (m_stepControl) h = std::min(h, std::max(m_settings.minTimeStep, m_assembler->limitStep(state)));
     h = std::min(h, std::max(m_settings.minTimeStep,
                              cableSnapStepLimit(model, state, m_settings.maxCableStrainStep, h)));
@@ -191,6 +194,9 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
         dt = std::clamp(h * factor, m_settings.minTimeStep, maxStep);
     }
     ++result.steps;
+    // With fixed steps, a step shortened to land on an output time is the one the next grows from. (A long
+    // step right after such a sliver amplifies the sliver's acceleration error, (dq - h v) / (beta h^2): with
+    // the step free to jump back, a distributed free fall of 5 m rebounded to 43 m.)
     lastStep = errorControl && clippedForOutput ? std::max(h, lastStep) : h;
     m_assembler->commitStep(state, h);  // path-dependent state: trial -> committed
     if (!errorControl && ++successes >= 4 && dt < nominal) {
