@@ -113,6 +113,16 @@ struct BarrierPenalty {
   }
   /// Fraction of the full dashpot that acts at penetration p (ramps in over p0, as RegularisedPenalty).
   double dampingFraction(double p) const { return p <= 0.0 ? 0.0 : std::min(1.0, p / depth); }
+  /// d slope / d p [N/m^3]: k / p0 in the regularised start, 0 on the linear range, the barrier's beyond
+  /// p1 (central difference of its slope, up to the cap; 0 beyond, where the law is linear).
+  double slopeDerivative(double p) const {
+    if (p <= 0.0) return 0.0;
+    if (p < depth) return stiffness / depth;
+    if (p <= barrierStart || p >= cap()) return 0.0;
+    const double h = 1e-6 * (limit - barrierStart);
+    return stiffness * (barrierSlope(std::min(p + h, cap())) - barrierSlope(std::max(p - h, barrierStart))) /
+           (std::min(p + h, cap()) - std::max(p - h, barrierStart));
+  }
 
  private:
   /// D (p - p1)^2 / (pmax - p)^2 [m] and its derivative [-].

@@ -90,6 +90,7 @@ struct ContactSample {
   double lineForce = 0.0;               ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
   double slope = 0.0;                   ///< d lineForce / d penetration [N/m^2]
   double damping = 0.0;                 ///< dashpot per unit length [N s/m^2] (its patch's: finishSamples)
+  double dampingSlope = 0.0;            ///< d damping / d penetration at the patch's factor [N s/m^3]
   double spring = 0.0;                  ///< the law's force per unit length f(p) [N/m]
   double pairMass = 0.0;                ///< lumped pair mass at the two points [kg] (+inf if both are held)
   Vec3 relative = Vec3::Zero();         ///< slip of A against B that friction resists [m] (addSample)
