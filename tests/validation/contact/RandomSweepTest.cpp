@@ -258,11 +258,11 @@ INSTANTIATE_TEST_SUITE_P(Distributed, RandomSweep, ::testing::Values(SweepCase{3
 // (validation.random_sweep_expected_fail, tests/CMakeLists.txt) so that it says when they start to pass.
 // Measured 2026-11-29; none passed through another or created energy (peak kinetic energy 1.0009 of the
 // launch's at most), each stops:
-// - seed 1 (e = 0): t = 2.574 s, Newton does not converge at the minimum step (1542 N);
-// - seed 2 (e = 0.5): t = 1.086 s, Newton does not converge at the minimum step (6.4e6 N);
-// - seed 5 (e = 1, mu = 0.3): t = 1.136 s, an iterate jumps past the barrier (12.8 mm against its 9.75 mm
-//   cap) at every step down to the minimum;
-// - seed 6 (e = 0): t = 1.677 s, Newton does not converge at the minimum step (4.8e4 N).
+// - seed 1 (e = 0): t = 2.582 s, Newton does not converge at the minimum step (920 N);
+// - seed 2 (e = 0.5): t = 2.334 s, an iterate jumps past the barrier (14.9 mm against its 9.75 mm cap) at
+//   every step down to the minimum;
+// - seed 5 (e = 1, mu = 0.3): t = 1.136 s, the same (12.8 mm);
+// - seed 6 (e = 0): t = 1.723 s, Newton does not converge at the minimum step (8450 N).
 INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, RandomSweep,
                          ::testing::Values(SweepCase{1}, SweepCase{2}, SweepCase{5}, SweepCase{6}), caseName);
 
