@@ -261,7 +261,10 @@ INSTANTIATE_TEST_SUITE_P(Distributed, RandomSweep, ::testing::Values(SweepCase{3
 // - seed 1 (e = 0): t = 2.582 s, Newton does not converge at the minimum step (920 N);
 // - seed 2 (e = 0.5): t = 2.334 s, an iterate jumps past the barrier (14.9 mm against its 9.75 mm cap) at
 //   every step down to the minimum;
-// - seed 5 (e = 1, mu = 0.3): t = 1.136 s, the same (12.8 mm);
+// - seed 5 (e = 1, mu = 0.3): t = 1.136 s, the same (12.8 mm). Diagnosed: wire 0's pass against wire 1
+//   carries the contact with a share of ~1e-9 (its Gauss weights 1e-11 m; the neighbours of the element it
+//   meets are bent, DistributedContact::findSamples) and wire 1's pass has no sample there: the two passes'
+//   shares, taken per element against the other line's candidate elements, need not sum to one at a point;
 // - seed 6 (e = 0): t = 1.723 s, Newton does not converge at the minimum step (8450 N).
 INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, RandomSweep,
                          ::testing::Values(SweepCase{1}, SweepCase{2}, SweepCase{5}, SweepCase{6}), caseName);
