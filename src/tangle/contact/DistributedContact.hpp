@@ -25,8 +25,10 @@
 /// (1/4 <= kappa R <= 1/2) the shares move continuously: 1/2 + (b_slave - b_master) / 2 with b the
 /// bentness (a smoothstep of kappa R), so a share never jumps from step to step as a bend tightens (a jump
 /// 0.5 -> 1 pumped a wire folding over another at the minimum step until it passed the barrier's cap). The
-/// shares are decided per (element, other line) at the first assembly of a step or load increment and held
-/// through its iterations (beginStep), so Newton sees a smooth force. The interval's ends need no
+/// bentness is taken at the Gauss point and at its projection on the other line (bentnessAt: continuous
+/// along each line), so the two passes' shares at one point of contact sum to one; the elements' bentness
+/// is decided at their first use in a step or load increment and held through its iterations (beginStep),
+/// so Newton sees a smooth force. The interval's ends need no
 /// linearisation: the regularised law and its slope vanish there (Leibniz's rule leaves no boundary term). At
 /// a crossing the integral of the penetration over the short interval gives a force that grows like p^(3/2)
 /// (a Hertz-like law); at a fold, a wrap or along a length it is the pressure integrated over the contact
@@ -122,10 +124,7 @@ class DistributedContact {
   double pairMassPerLength(int elementA, int elementB) const;
 
   /// A step, load increment or retry starts: the passes' shares are decided again at the next findSamples.
-  void beginStep() {
-    m_shares.clear();
-    m_sharesFixed = false;
-  }
+  void beginStep() { m_bent.clear(); }
 
   /// Finds the Gauss points of every candidate pair at `state`; `reference`: the positions of the last
   /// converged state (statics friction). Dynamic: dashpot and velocity friction.
@@ -227,12 +226,15 @@ class DistributedContact {
   double m_zeta;
   std::vector<double> m_lineAxialStiffness;  ///< smallest EA per line [N]
   std::vector<ContactSample> m_samples;
-  /// Share of the pass along element (key.first) against line key.second, held through a step.
-  std::map<std::pair<int, int>, double> m_shares;
-  bool m_sharesFixed = false;
+  /// Bentness per element, held through a step (beginStep clears it).
+  std::map<int, double> m_bent;
   /// How bent an element's C1 piece is on the scale of the contact distance R [m], in [0, 1]: 0 where its
   /// largest kappa R <= 1/4, 1 where >= 1/2 (a fold or a wrap), a smoothstep between.
   double bentness(const model::State& state, int element, double radii) const;
+  /// The bentness along a line at parameter w in [0, 1] of an element: linear between its nodes' values,
+  /// a node's the larger of its elements' (held through the step: m_bent), so it is continuous along the
+  /// line and the two passes' shares at one point of contact sum to one (addSample).
+  double bentnessAt(const model::State& state, int element, double w, double radii);
 };
 
 }  // namespace tangle::contact
