@@ -87,9 +87,9 @@ struct BarrierPenalty {
   double barrierStart = 0.0;  ///< p1 [m] (> p0)
   double limit = 0.0;         ///< pmax [m] (> p1)
 
-  /// Barrier law of a pair whose penetration scale is D [m] (DistributedContact: the sum of the contact
-  /// radii): p0 = 1 %, p1 = 25 %, pmax = 50 % of D (the point formulation refused overlaps beyond half the
-  /// radii; the same bound here).
+  /// Barrier law of a pair whose penetration scale is D [m] (DistributedContact: the smaller contact
+  /// diameter, contactScale): p0 = 1 %, p1 = 25 %, pmax = 50 % of D (an overlap is bounded by the smaller
+  /// radius).
   static BarrierPenalty forScale(double stiffness, double scale) {
     return {stiffness, 0.01 * scale, 0.25 * scale, 0.5 * scale};
   }

@@ -419,13 +419,17 @@ void DistributedContact::finishSamples(bool dashpot) {
   const bool friction = m_spec.frictionCoefficient > 0.0;
   const std::vector<std::vector<int>> groups =
       dashpot && (m_zeta > 0.0 || friction) ? patches() : std::vector<std::vector<int>>{};
+  // The patches' masses, for the normal dashpot and the stick's (one patchMass each).
+  std::vector<double> masses(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g) masses[g] = patchMass(groups[g]);
   if (m_zeta > 0.0) {
-    for (const std::vector<int>& patch : groups) {
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+      const std::vector<int>& patch = groups[g];
       double stiffness = 0.0;
       for (const int i : patch)
         stiffness +=
             m_samples[static_cast<std::size_t>(i)].slope * m_samples[static_cast<std::size_t>(i)].length;
-      const double mass = patchMass(patch);
+      const double mass = masses[g];
       const double factor =
           stiffness > 0.0 && std::isfinite(mass) ? 2.0 * m_zeta * std::sqrt(mass / stiffness) : 0.0;
       for (const int i : patch) {
@@ -442,13 +446,14 @@ void DistributedContact::finishSamples(bool dashpot) {
   // patch's stick stiffness K_t = sum 2 mu f_n / u_s w_i and its mass M, critically damped (zeta_t = 1).
   // Without it the stick spring, as stiff as the normal law, rang at +-mu f_n for as long as the run (a rod
   // held on an incline: the friction swung between -0.3 and +0.3 of the normal force from step to step).
-  for (const std::vector<int>& patch : groups) {
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const std::vector<int>& patch = groups[g];
     double stiffness = 0.0;
     for (const int i : patch) {
       const ContactSample& x = m_samples[static_cast<std::size_t>(i)];
       stiffness += 2.0 * m_spec.frictionCoefficient * x.lineForce / x.slipLimit * x.length;
     }
-    const double mass = patchMass(patch);
+    const double mass = masses[g];
     const double delay =
         stiffness > 0.0 && std::isfinite(mass) ? 2.0 * kStickDampingRatio * std::sqrt(mass / stiffness) : 0.0;
     for (const int i : patch) m_samples[static_cast<std::size_t>(i)].slipDelay = delay;

@@ -50,13 +50,13 @@
 /// u_s (the rest has slid), so stick holds for any time and sliding costs no more than stick. Its
 /// consistent (symmetric part of the) tangent is assembled.
 ///
-/// Stiffness per unit length k_line = k / (rA + rB) [N/m^2], with k [N/m] contact.stiffness or, automatic,
-/// 0.1 EA_min / (kReferenceLengthFactor (rA + rB)) (the point formulation's 0.1 EA / L with the element
-/// length L replaced by a length that does not change with the mesh). Why k / radii: at a crossing the
-/// penetration p(u) = p - u^2 / (2 (rA + rB)) along the line integrates to F = (4/3) k_line sqrt(2 (rA + rB))
-/// p^(3/2), whose slope dF/dp = 2 k_line sqrt(2 (rA + rB) p) equals k at p = (rA + rB) / 8: a crossing is as
-/// stiff as a point contact of stiffness k halfway into the linear range of the law; a parallel contact of
-/// length L is k L / (rA + rB) stiff.
+/// Stiffness per unit length k_line = k / D [N/m^2], D = 2 min(rA, rB) the law's scale (contactScale), with
+/// k [N/m] contact.stiffness or, automatic, 0.1 EA_min / (kReferenceLengthFactor (rA + rB)) (the point
+/// formulation's 0.1 EA / L with the element length L replaced by a length that does not change with the
+/// mesh). Why k / D: at a crossing the penetration p(u) = p - u^2 / (2 (rA + rB)) along the line integrates
+/// to F = (4/3) k_line sqrt(2 (rA + rB)) p^(3/2), whose slope dF/dp = 2 k_line sqrt(2 (rA + rB) p) equals k
+/// at p = D^2 / (8 (rA + rB)) ((rA + rB) / 8 for equal radii): a crossing is as stiff as a point contact of
+/// stiffness k within the linear range of the law; a parallel contact of length L is k L / D stiff.
 
 #include <map>
 #include <string>
@@ -90,7 +90,7 @@ struct ContactSample {
   double length = 0.0;                  ///< integration weight: share x Gauss weight x rest length [m]
   double share = 0.5;                   ///< this pass's share of the contact [-] (in [0, 1]: file comment)
   double lineForce = 0.0;               ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
-  double slope = 0.0;                   ///< d lineForce / d penetration [N/m^2]
+  double slope = 0.0;                   ///< d spring / d penetration [N/m^2]
   double damping = 0.0;                 ///< dashpot per unit length [N s/m^2] (its patch's: finishSamples)
   double dampingSlope = 0.0;            ///< d damping / d penetration at the patch's factor [N s/m^3]
   double spring = 0.0;                  ///< the law's force per unit length f(p) [N/m]
@@ -116,7 +116,7 @@ class DistributedContact {
   /// Stiffness per unit length between two lines [N/m^2] (file comment).
   double lineStiffness(int lineA, int lineB) const;
   /// The point stiffness k between two lines [N/m]: contact.stiffness or the automatic one (file comment);
-  /// a crossing's stiffness at the penetration (rA + rB) / 8.
+  /// a crossing's stiffness at the penetration D^2 / (8 (rA + rB)) (file comment).
   double pointStiffness(int lineA, int lineB) const;
   /// The law between two elements.
   BarrierPenalty law(int elementA, int elementB) const;
