@@ -15,7 +15,7 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 /// Automatic stiffness: the point formulation's 0.1 EA / L with L = l_ref (file comment of the header).
 constexpr double kAutoStiffnessFactor = 0.1;
-/// Gauss points per piece of an interval (pieces between its ends and cuts: contactInterval).
+/// Gauss points per piece of an interval (pieces between its ends and cuts: contactIntervals).
 constexpr int kPoints = 4;
 constexpr double kGaussX[kPoints] = {-0.8611363115940526, -0.3399810435848563, 0.3399810435848563,
                                      0.8611363115940526};
@@ -28,6 +28,9 @@ constexpr double kImpactSteps = 40.0;
 /// 1e-7 their forces moved by ~1e-4 N from iterate to iterate at random (a wire folded over another), above
 /// the Newton tolerance; the ends are found to round-off instead (Illinois converges superlinearly).
 constexpr double kRootTolerance = 1e-15;
+/// Tolerance on the parameter of a dip's deepest point [-] (contactIntervals): the depth found is then
+/// exact to about the centreline's curvature times 1e-18 m.
+constexpr double kMinimumTolerance = 1e-9;
 /// Largest closing of a pair in one Newton iteration, as a fraction of the sum of the radii (as statics'
 /// point formulation), and the fraction of what is left to the barrier's limit an iterate may close.
 constexpr double kClosingFraction = 0.25;
@@ -46,6 +49,68 @@ double curvature(const CentrelineStencil& st, const std::vector<Vec3>& x) {
 /// exp(mu pi) with sharp friction; with this scale the taut string on a rigid support of twice its
 /// diameter, which stalled at 2.5 N when this was first tried, converges since the committed-slip friction.)
 double contactScale(double radiusA, double radiusB) { return 2.0 * std::min(radiusA, radiusB); }
+
+/// The minimum of f on [a, b], started from x in [a, b] with f(x) = fx, by Brent's method: parabolic steps
+/// through the three best points where they fall well inside the bracket, golden sections otherwise (R. P.
+/// Brent, Algorithms for Minimization without Derivatives, 1973, ch. 5). Returns (x, f(x)) of the lowest
+/// value found after at most `evaluations` evaluations or when the bracket is within `tolerance` of x.
+template <class Function>
+std::pair<double, double> brentMinimum(const Function& f, double a, double b, double x, double fx,
+                                       double tolerance, int evaluations) {
+  constexpr double kGoldenSection = 0.3819660112501051;  // (3 - sqrt 5) / 2
+  double w = x, v = x, fw = fx, fv = fx;
+  double step = 0.0, previousStep = 0.0;
+  for (int n = 0; n < evaluations; ++n) {
+    const double middle = 0.5 * (a + b);
+    if (std::abs(x - middle) <= 2.0 * tolerance - 0.5 * (b - a)) break;
+    bool parabolic = false;
+    if (std::abs(previousStep) > tolerance) {
+      // The vertex of the parabola through (x, fx), (w, fw), (v, fv), as x + p / q.
+      const double r = (x - w) * (fx - fv);
+      double q = (x - v) * (fx - fw);
+      double p = (x - v) * q - (x - w) * r;
+      q = 2.0 * (q - r);
+      if (q > 0.0) p = -p;
+      q = std::abs(q);
+      const double older = previousStep;
+      previousStep = step;
+      // Accepted if it is less than half the step before last (the iteration converges) and inside.
+      if (std::abs(p) < std::abs(0.5 * q * older) && p > q * (a - x) && p < q * (b - x)) {
+        step = p / q;
+        const double u = x + step;
+        if (u - a < 2.0 * tolerance || b - u < 2.0 * tolerance) step = x < middle ? tolerance : -tolerance;
+        parabolic = true;
+      }
+    }
+    if (!parabolic) {
+      previousStep = (x < middle ? b : a) - x;
+      step = kGoldenSection * previousStep;
+    }
+    const double u = x + (std::abs(step) >= tolerance ? step : (step > 0.0 ? tolerance : -tolerance));
+    const double fu = f(u);
+    if (fu <= fx) {
+      (u < x ? b : a) = x;
+      v = w;
+      fv = fw;
+      w = x;
+      fw = fx;
+      x = u;
+      fx = fu;
+    } else {
+      (u < x ? a : b) = u;
+      if (fu <= fw || w == x) {
+        v = w;
+        fv = fw;
+        w = u;
+        fw = fu;
+      } else if (fu <= fv || v == x || v == w) {
+        v = u;
+        fv = fu;
+      }
+    }
+  }
+  return {x, fx};
+}
 
 double reducedMass(double a, double b) {
   if (std::isinf(a)) return b;
@@ -175,8 +240,8 @@ CentrelineDistance DistributedContact::project(const model::State& state, int sl
   return r;
 }
 
-bool DistributedContact::contactInterval(const model::State& state, int slave, int master, double& lo,
-                                         double& hi, std::vector<double>& cuts) const {
+bool DistributedContact::contactIntervals(const model::State& state, int slave, int master,
+                                          std::vector<Interval>& intervals) const {
   const auto& elements = m_model->elements();
   const model::LineElement& ea = elements[slave];
   const model::LineElement& eb = elements[master];
@@ -196,40 +261,63 @@ bool DistributedContact::contactInterval(const model::State& state, int slave, i
     const CentrelineDistance p = project(state, slave, xi, master, tGuess);
     return p.distance - radii;
   };
-  // A point of the slave inside the interval, with its gap on the master's exact range (the Illinois
-  // brackets below need the true value there). The joint minimisation above runs over the extended search
-  // ranges: where it ends with t off [0, 1] (on the extrapolated piece past a node) its distance is not the
-  // gap, and nearly parallel elements have a flat distance along their overlap, so it may stop anywhere on
-  // it (a rod sliding down an incline: the incline's pass lost 3/4 of its length between two iterations
-  // and Newton cycled at 44 N; a taut string on a support stalled). Candidates: its s; the slave's point
-  // nearest the master's piece where t was clamped; the middle of the overlap of the master's chord
-  // projected on the slave's. The lowest gap wins.
-  double xiMin = std::clamp(closest.s, 0.0, 1.0);
-  double gMin = gap(xiMin);
-  const auto consider = [&](double xi) {
-    xi = std::clamp(xi, 0.0, 1.0);
-    if (const double g = gap(xi); g < gMin) {
-      xiMin = xi;
-      gMin = g;
-    }
+  // Points of the slave with their gaps on the master's exact range (the Illinois brackets below need the
+  // true value there). The joint minimisation above runs over the extended search ranges: where it ends
+  // with t off [0, 1] (on the extrapolated piece past a node) its distance is not the gap, and nearly
+  // parallel elements have a flat distance along their overlap, so it may stop anywhere on it (a rod
+  // sliding down an incline: the incline's pass lost 3/4 of its length between two iterations and Newton
+  // cycled at 44 N; a taut string on a support stalled). First candidates: its s; the slave's point nearest
+  // the master's piece where t was clamped; the middle of the overlap of the master's chord projected on
+  // the slave's.
+  struct GapPoint {
+    double xi, g;
   };
+  std::vector<GapPoint> points;
+  const auto sample = [&](double xi) {
+    xi = std::clamp(xi, 0.0, 1.0);
+    points.push_back({xi, gap(xi)});
+    return points.back().g;
+  };
+  double gMin = sample(closest.s);
   if (!(closest.t >= 0.0 && closest.t <= 1.0)) {
     const double tEnd = std::clamp(closest.t, 0.0, 1.0);
-    consider(
-        centrelineDistance(*m_model, state.position, slave, master, closest.s, tEnd, false, true, true).s);
+    gMin = std::min(gMin, sample(centrelineDistance(*m_model, state.position, slave, master, closest.s, tEnd,
+                                                    false, true, true)
+                                     .s));
   }
   const double s0 = projectOnAxis(b0, a0, a1), s1 = projectOnAxis(b1, a0, a1);
   const double overlapLo = std::max(0.0, std::min(s0, s1)), overlapHi = std::min(1.0, std::max(s0, s1));
-  if (overlapHi > overlapLo) consider(0.5 * (overlapLo + overlapHi));
-  // None of them in contact, the chords within twice the radii: the chords' closest point and six points
-  // along the slave before giving up. (The minimisation from the chords' closest points can end in another
-  // local minimum of a kinked pair: two wires crossing 13.5 mm deep went unseen for several steps until a
-  // step's first iterate found them, at 1.5e10 N/m, and Newton cycled: RandomSweepTest.)
-  if (gMin >= 0.0 && chords.distance < 2.0 * radii) {
-    consider(chords.s);
-    for (int k = 0; k < 6; ++k) consider((k + 0.5) / 6.0);
+  if (overlapHi > overlapLo) gMin = std::min(gMin, sample(0.5 * (overlapLo + overlapHi)));
+  // Then, with one of them in contact or the chords within twice the radii, the chords' closest point, the
+  // ends and six points along the slave: a kinked or curved pair may touch in more than one place, and
+  // each dip is an interval of its own. (The minimisation from the chords' closest points can end in
+  // another local minimum: two wires crossing 13.5 mm deep went unseen for several steps until a step's
+  // first iterate found them, at 1.5e10 N/m, and Newton cycled; a second dip of a kinked pair, 0.74 mm deep
+  // beside the one found, appeared the same way: RandomSweepTest.)
+  if (gMin >= 0.0 && chords.distance >= 2.0 * radii) return false;
+  sample(chords.s);
+  sample(0.0);
+  sample(1.0);
+  for (int k = 0; k < 6; ++k) sample((k + 0.5) / 6.0);
+  std::sort(points.begin(), points.end(), [](const GapPoint& x, const GapPoint& y) { return x.xi < y.xi; });
+  // Each local minimum of the sampled gaps near contact, refined to the gap's minimum between its
+  // neighbours: a dip narrower than the samples' spacing is found wherever it lies between them, and the
+  // deepest point of each dip is found to the same place from one iterate to the next. (A 12 mm crossing of
+  // two wires, 0.12 mm deep, lay between two samples; one of them flickered 4 um in and out of contact
+  // between Newton iterates, and the crossing was found in every second one: Newton cycled.)
+  const std::size_t sampled = points.size();
+  for (std::size_t i = 0; i < sampled; ++i) {
+    const double g = points[i].g;
+    const bool notAbovePrevious = i == 0 || g <= points[i - 1].g;
+    const bool notAboveNext = i + 1 == sampled || g <= points[i + 1].g;
+    if (!notAbovePrevious || !notAboveNext || g >= radii) continue;
+    const double a = i == 0 ? points[i].xi : points[i - 1].xi;
+    const double b = i + 1 == sampled ? points[i].xi : points[i + 1].xi;
+    if (!(b > a)) continue;
+    const auto [xi, gMinimum] = brentMinimum(gap, a, b, points[i].xi, g, kMinimumTolerance, 40);
+    if (gMinimum < g) points.push_back({xi, gMinimum});
   }
-  if (gMin >= 0.0) return false;
+  std::sort(points.begin(), points.end(), [](const GapPoint& x, const GapPoint& y) { return x.xi < y.xi; });
   // The root of gap between x0 (gap >= 0) and x1 (gap < 0) by the Illinois method (regula falsi that halves
   // the retained end's value: superlinear, bracketed).
   // (Of gap + level = 0 in general: the regularisation depth and the barrier's start cut the interval.)
@@ -255,26 +343,47 @@ bool DistributedContact::contactInterval(const model::State& state, int slave, i
     }
     return std::abs(t0) <= std::abs(t1) ? x0 : x1;
   };
-  const double gLo = xiMin > 0.0 ? gap(0.0) : gMin;
-  lo = gLo < 0.0 ? 0.0 : root(0.0, gLo, xiMin, gMin);
-  const double gHi = xiMin < 1.0 ? gap(1.0) : gMin;
-  hi = gHi < 0.0 ? 1.0 : root(1.0, gHi, xiMin, gMin);
-  if (!(hi > lo)) return false;
-  // Where the integrand is not smooth: where the penetration passes the law's regularisation depth and the
-  // barrier's start (the law's second derivative jumps there). Gauss points on pieces between them
-  // integrate smooth functions: the quadrature is then accurate, and so is its derivative, which the
-  // tangent takes as that of the exact integral (the Gauss points move with the cuts). (A cut at the
-  // integrand's peak, where it is smooth, moved the Gauss points of a flat parallel contact a long way for
-  // a small change: the tangent of parallel contact was then 0.2 % off.)
-  cuts.clear();
   const BarrierPenalty lawAB = law(slave, master);
-  for (const double level : {lawAB.depth, lawAB.barrierStart}) {
-    if (gMin >= -level) continue;
-    const double gl = lo == 0.0 ? gLo : 0.0, gh = hi == 1.0 ? gHi : 0.0;
-    if (gl > -level && xiMin > lo) cuts.push_back(root(lo, gl + level, xiMin, gMin + level, level));
-    if (gh > -level && xiMin < hi) cuts.push_back(root(hi, gh + level, xiMin, gMin + level, level));
+  intervals.clear();
+  // Each run of sampled points in contact, between points out of contact (or the ends), is one dip.
+  for (std::size_t i = 0; i < points.size();) {
+    if (points[i].g >= 0.0) {
+      ++i;
+      continue;
+    }
+    std::size_t last = i, deepest = i;
+    while (last + 1 < points.size() && points[last + 1].g < 0.0) {
+      ++last;
+      if (points[last].g < points[deepest].g) deepest = last;
+    }
+    const GapPoint& first = points[i];
+    const GapPoint& final = points[last];
+    const GapPoint& dip = points[deepest];
+    Interval iv;
+    // The slave's ends are always sampled: a run that does not start at xi = 0 has a point out of contact
+    // before it.
+    iv.lo = i == 0 ? first.xi : root(points[i - 1].xi, points[i - 1].g, first.xi, first.g);
+    iv.hi = last + 1 == points.size() ? final.xi
+                                      : root(points[last + 1].xi, points[last + 1].g, final.xi, final.g);
+    const double gl = i == 0 ? first.g : 0.0, gh = last + 1 == points.size() ? final.g : 0.0;
+    i = last + 1;
+    if (!(iv.hi > iv.lo)) continue;
+    // Where the integrand is not smooth: where the penetration passes the law's regularisation depth and
+    // the barrier's start (the law's second derivative jumps there). Gauss points on pieces between them
+    // integrate smooth functions: the quadrature is then accurate, and so is its derivative, which the
+    // tangent takes as that of the exact integral (the Gauss points move with the cuts). (A cut at the
+    // integrand's peak, where it is smooth, moved the Gauss points of a flat parallel contact a long way
+    // for a small change: the tangent of parallel contact was then 0.2 % off.)
+    for (const double level : {lawAB.depth, lawAB.barrierStart}) {
+      if (dip.g >= -level) continue;
+      if (gl > -level && dip.xi > iv.lo)
+        iv.cuts.push_back(root(iv.lo, gl + level, dip.xi, dip.g + level, level));
+      if (gh > -level && dip.xi < iv.hi)
+        iv.cuts.push_back(root(iv.hi, gh + level, dip.xi, dip.g + level, level));
+    }
+    intervals.push_back(std::move(iv));
   }
-  return true;
+  return !intervals.empty();
 }
 
 void DistributedContact::addSample(const model::State& state, int slave, double xi, double weight,
@@ -355,15 +464,15 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
     std::vector<Interval> intervals;
   };
   std::map<std::pair<int, int>, Patch> patches;
+  std::vector<Interval> found;
   for (const CandidatePair& cp : search.candidates()) {
     const int e = search.proxies()[cp.first].element, f = search.proxies()[cp.second].element;
     for (int pass = 0; pass < 2; ++pass) {
       const int slave = pass == 0 ? e : f, master = pass == 0 ? f : e;
       Patch& patch = patches[{slave, elements[master].line}];
       patch.masters.push_back(master);
-      Interval iv;
-      if (contactInterval(state, slave, master, iv.lo, iv.hi, iv.cuts))
-        patch.intervals.push_back(std::move(iv));
+      if (contactIntervals(state, slave, master, found))
+        patch.intervals.insert(patch.intervals.end(), found.begin(), found.end());
     }
   }
   for (auto& [key, patch] : patches) {

@@ -184,10 +184,10 @@ class DistributedContact {
     double lo = 0.0, hi = 0.0;
     std::vector<double> cuts;
   };
-  /// The interval of slave element e whose centreline lies within the radii of master element f's; false
-  /// if none.
-  bool contactInterval(const model::State& state, int slave, int master, double& lo, double& hi,
-                       std::vector<double>& cuts) const;
+  /// The intervals of slave element e whose centreline lies within the radii of master element f's, one
+  /// per dip of the gap, in increasing xi; false if none.
+  bool contactIntervals(const model::State& state, int slave, int master,
+                        std::vector<Interval>& intervals) const;
   void addSample(const model::State& state, int slave, double xi, double weight,
                  const std::vector<int>& masters, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;

@@ -250,21 +250,16 @@ std::string caseName(const ::testing::TestParamInfo<SweepCase>& p) {
   return "seed" + std::to_string(p.param.seed);
 }
 
-// Seeds 2 to 6 pass every check (measured 2026-11-29: 22-65 s CPU, 14 000-28 000 steps, 54-151 impact
-// events each; peak kinetic energy at most 1.0009 of the launch's; deepest penetration 2.7 mm of the 10 mm
-// bound).
+// Seeds 1 to 6 pass every check (measured 2026-11-29: 23-89 s wall each on a loaded 2-core machine,
+// 14 000-27 000 steps, 50-207 impact events each; peak kinetic energy at most 1.0009 of the launch's;
+// deepest penetration 2.5 mm of the 10 mm bound). Seeds 7 to 12, run once outside CI, pass too. (Seed 1
+// stopped at t = 3.105 s until each dip of a pair's gap got an interval of its own: a second dip of a
+// kinked pair, and a 12 mm crossing between two of the sampled points, were found in every second Newton
+// iterate only: DistributedContact::contactIntervals.)
 INSTANTIATE_TEST_SUITE_P(Distributed, RandomSweep,
-                         ::testing::Values(SweepCase{2}, SweepCase{3}, SweepCase{4}, SweepCase{5},
-                                           SweepCase{6}),
+                         ::testing::Values(SweepCase{1}, SweepCase{2}, SweepCase{3}, SweepCase{4},
+                                           SweepCase{5}, SweepCase{6}),
                          caseName);
-
-// Known failure (issue 43: "contact still stops runs"), run by ctest as expected to fail
-// (validation.random_sweep_expected_fail, tests/CMakeLists.txt) so that it says when it starts to pass.
-// Measured 2026-11-29: seed 1 (e = 0) stops at t = 3.105 s, Newton not converging at the minimum step
-// (6073 N at a wire node), after 102 impact events; it had not passed through or created energy (peak
-// kinetic energy 1.0009 of the launch's). (Before the passes' shares were taken pointwise, seeds 2, 5 and 6
-// stopped too, at 1.1-2.3 s: DistributedContact::bentnessAt.)
-INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, RandomSweep, ::testing::Values(SweepCase{1}), caseName);
 
 }  // namespace
 }  // namespace tangle
