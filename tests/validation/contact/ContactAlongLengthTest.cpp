@@ -66,7 +66,7 @@ std::vector<StringSample> stringSamples(const contact::LineContact& contact) {
 
 /// The taut string on a rigid support with either formulation (the distributed one: Gauss points of both
 /// passes, the string's and the support's, each weighted by its share).
-void restingString(bool distributed) {
+void restingString(bool distributed, bool dynamic = false) {
   constexpr double kMass = 100.0, kEA = 1e8, kH = 2e4, kSpan = 20.0, kH0 = 0.5, kZ = 20.0;
   const double q = kMass * kStandardGravity;
   // Free span of a string with horizontal tension H dropping by `drop`: (S_f, s).
@@ -97,6 +97,15 @@ void restingString(bool distributed) {
                                  model::EndKind::Pinned, Vec3(11, 0, kZ))};
   spec.contact.enabled = true;
   if (distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  if (dynamic) {
+    spec.dynamics.enabled = true;
+    spec.dynamics.duration = 12.0;
+    spec.dynamics.timeStep = 0.01;
+    spec.dynamics.outputInterval = 0.5;
+    spec.dynamics.rampTime = 0.0;
+    spec.dynamics.rayleighAlpha = 2.0;
+    spec.dynamics.rayleighBeta = 2.0e-4;  // the bars' axial ringing (period ~1.3 ms): damping ratio ~0.5
+  }
   analysis::Simulation sim(std::move(spec));
   // Start 5 mm above the closed-form shape (the string's own analytic start would hang through B).
   const model::Line& a = sim.model().lines()[0];
@@ -106,8 +115,23 @@ void restingString(bool distributed) {
     x.z() = restZ + 0.005 + kH / q * (std::cosh(q * over / kH) - 1.0);
     x.y() = 0.0;
   }
-  const solver::StaticResult statics = sim.solveStatics();
-  ASSERT_TRUE(statics.converged) << statics.message;
+  if (dynamic) {
+    // Released from rest 5 mm above the closed-form shape; mass-proportional damping 2 1/s settles the
+    // drop's slow motion (amplitudes fall by e^-2 per second) and a stiffness-proportional one the bars'
+    // axial ringing: after 12 s the string rests, and damping, acting on velocities only, leaves the
+    // static state.
+    const time::DynamicResult run = sim.runDynamics([](const model::State&, const VecX&) {}, false);
+    ASSERT_TRUE(run.completed) << run.message;
+    double speed = 0.0;
+    for (int i = 0; i < sim.state().velocity.size(); ++i)
+      speed = std::max(speed, std::abs(sim.state().velocity[i]));
+    EXPECT_LT(speed, 1e-3);
+    ::testing::Test::RecordProperty("largest_speed_at_end_m_s", fmt::format("{:.2e}", speed));
+    ::testing::Test::RecordProperty("steps", std::to_string(run.steps));
+  } else {
+    const solver::StaticResult statics = sim.solveStatics();
+    ASSERT_TRUE(statics.converged) << statics.message;
+  }
 
   // The closed form on the support's surface as the penalty leaves it: lowered by the penetration in
   // the resting part (the penalty method's compliance, 1-2 mm here, changes H by about 120 N per mm).
@@ -161,6 +185,23 @@ TEST(ContactAlongLength, TautStringRestingOnARigidSupportMatchesTheClosedForm) {
 TEST(ContactAlongLength, DistributedTautStringRestingOnARigidSupportMatchesTheClosedForm) {
   restingString(true);
 }
+
+// The same in dynamics (issue 43: "a hose lowered onto a pipeline along its length: ... in statics and once
+// the dynamics has settled"): the string released from 5 mm above with no static solve, the same checks
+// at the end of a 12 s run. Known failure, run by ctest as expected to fail
+// (validation.settled_string_expected_fail, tests/CMakeLists.txt). Measured 2026-11-29: stops at
+// t = 0.0958 s, Newton not converging at the minimum step (504 N at string node 36). Without the
+// stiffness-proportional damping it does not stop but crawls: 5 min CPU for 0.04 s, steps of 1e-5 s held
+// by the cable snap limiter (CableSnapLimit.cpp) while the bars ring axially about their 2e-4 strain
+// (a 1.3 ms period that generalized-alpha does not damp at such steps); with the snap limiter off it
+// stops at 0.158 s with the free span near a pin whipping at 100-370 m/s (the snap instability).
+class SettledString : public ::testing::TestWithParam<bool> {};
+
+TEST_P(SettledString, DistributedTautStringSettledOnARigidSupportMatchesTheClosedForm) {
+  restingString(GetParam(), true);
+}
+
+INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, SettledString, ::testing::Values(true));
 
 // Two tensioned strings side by side pressed together by the same drag (current across them): along
 // the contact they deflect as one string of tension T1 + T2 under q1 + q2, so the contact load per
