@@ -85,7 +85,8 @@ void ClashReport::write(const fs::path& dir) const {
          "arc_2_start_m,"
          "arc_1_min_m,arc_1_max_m,arc_2_min_m,arc_2_max_m,peak_force_N,peak_force_per_length_N_per_m,"
          "max_contact_length_m,impulse_Ns,impact_velocity_m_per_s,impact_energy_J,energy_mass_kg,"
-         "energy_mass_basis,effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open,impact_phase_end_s,"
+         "energy_mass_basis,effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open,impact_phase_end_"
+         "s,"
          "impact_phase_end,impact_phase_impulse_Ns,eq5_mass_kg,absorbed_energy_J,work_mass_kg,"
          "event_eq5_mass_kg,mass_lower_bound_kg,mass_upper_bound_kg,energy_warning\n";
     for (std::size_t i = 0; i < events.size(); ++i) {
@@ -137,10 +138,19 @@ void ClashReport::write(const fs::path& dir) const {
   core::OutputFile summary(out / "summary.json");
   core::JsonWriter j(summary.stream());
   j.beginObject();
-  j.field("model",
-          m_contact->spec().model == model::ImpactModel::Penalty ? "penalty spring + dashpot" : "impulse");
+  j.field("model", m_contact->spec().model != model::ImpactModel::Penalty ? "impulse"
+                   : m_contact->distributed() ? "distributed penalty with barrier + hysteresis"
+                                              : "penalty spring + dashpot");
   j.field("restitution", m_contact->spec().restitution);
-  j.field("damping_ratio", m_contact->dampingRatio());
+  if (m_contact->distributed()) {
+    // Restitution by hysteresis (ContactLaw.hpp HystereticRestitution): loading along (1 + a) f, unloading
+    // along (1 - a) f.
+    const double a = HystereticRestitution::amplitudeFor(m_contact->spec().restitution);
+    j.field("loading_factor", 1.0 + a);
+    j.field("unloading_factor", 1.0 - a);
+  } else {
+    j.field("damping_ratio", m_contact->dampingRatio());
+  }
   j.field("clearance_margin_m", m_contact->spec().clearanceMargin);
   j.field("events", static_cast<int>(events.size()));
   j.key("pairs");
@@ -220,7 +230,8 @@ std::string ClashReport::terminalSummary() const {
     for (const ClearanceSample& c : m_samples)
       if (c.pair == p) minClear = std::min(minClear, c.clearance);
     s += fmt::format(
-        "  {} / {}: {} impact(s){}, {} sustained contact(s) without an impact, {} brief touch(es); max impact "
+        "  {} / {}: {} impact(s){}, {} sustained contact(s) without an impact, {} brief touch(es); max "
+        "impact "
         "velocity {:.3f} m/s, max impact energy {:.4g} J, max contact force {:.4g} kN, min clearance {}\n",
         lines[a].name, lines[b].name, count, stayed > 0 ? fmt::format(" ({} then sustained)", stayed) : "",
         sustained, brief, vmax, emax, fmax / 1000.0,

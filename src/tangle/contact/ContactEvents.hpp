@@ -51,6 +51,10 @@ struct ContactSpot {
   Vec3 normal = Vec3::UnitZ();      ///< from B to A
   double force = 0.0;               ///< normal force [N] (a Gauss point: force per length x length)
   double length = 0.0;              ///< contact length it stands for [m] (0 for a point contact)
+  /// Weight of the spot's relative normal velocity in its patch's [N]: the law's elastic force, without the
+  /// restitution's rate factor (distributed), which would lean the mean towards the approaching spots; < 0:
+  /// the force.
+  double velocityWeight = -1.0;
   double forcePerLength = 0.0;      ///< [N/m] (line-to-line Gauss points only)
   double approachSpeed = 0.0;       ///< relative normal speed before the step it touched in [m/s] (>= 0)
   double gap = 0.0;                 ///< [m]

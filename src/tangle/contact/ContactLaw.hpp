@@ -20,6 +20,7 @@
 /// in the limit); it is inverted here by bisection.
 
 #include <algorithm>
+#include <cmath>
 
 namespace tangle::contact {
 
@@ -45,6 +46,40 @@ inline double normalForce(double penetration, double penetrationRate, double sti
   const double f = stiffness * penetration + damping * penetrationRate;
   return f > 0.0 ? f : 0.0;
 }
+
+/// Restitution of the distributed formulation by hysteresis: the elastic law's force f(p) is scaled by a
+/// factor of the penetration rate v = dp/dt (> 0 approaching),
+///     psi(v) = 1 + a tanh(v / v_s),   a = (1 - e^2) / (1 + e^2),
+/// so a contact loads along (1 + a) f and unloads along (1 - a) f. An impact of a mass on any elastic law
+/// f (linear, regularised, barrier) stores (1 + a) W on the way in and gives back (1 - a) W on the way
+/// out, W = integral of f dp up to the deepest point: the rebound speed is e v0 exactly,
+/// sqrt((1 - a) / (1 + a)) = e, whatever the law's shape, the mass or the speed (the idea of the
+/// different loading and unloading branches of Walton & Braun 1986, J. Rheology 30:949-980, here with
+/// the unloading branch proportional to the loading one, so that no history is kept and the surfaces part
+/// where they met). Unlike a dashpot (ContactLaw's spring-dashpot, whose force at e -> 0 is c v0 at first
+/// touch and grows without bound: 5.7 MN for two risers closing at 1 m/s, 24 times the elastic peak),
+/// the force never exceeds (1 + a) f <= 2 f, and a linear law's peak force is sqrt(1 + a) of the elastic
+/// one (sqrt 2 at e = 0): bounded and decreasing in e. At rest (v = 0) the factor is 1: a contact settles
+/// at the static penetration, and small oscillations about it are damped by d psi / dv = a / v_s (a
+/// damping f a / v_s). The smoothing speed v_s makes the law C-infinity in v; the energy exchanged while
+/// |v| < v_s near the deepest point, a fraction of order (v_s / v0)^2 of the impact's, is not under the
+/// law's control (there the rebound is not exactly e v0; an impact much slower than v_s is nearly
+/// elastic, as the first-order expansion psi = 1 + a v / v_s is a Hunt-Crossley damping).
+struct HystereticRestitution {
+  double amplitude = 0.0;  ///< a [-] in [0, 1]
+  double speed = 1.0;      ///< v_s [m/s] (> 0)
+  static double amplitudeFor(double restitution) {
+    const double e2 = restitution * restitution;
+    return (1.0 - e2) / (1.0 + e2);
+  }
+  /// psi(v) [-], v = dp/dt [m/s].
+  double factor(double rate) const { return 1.0 + amplitude * std::tanh(rate / speed); }
+  /// d psi / dv [s/m].
+  double derivative(double rate) const {
+    const double c = std::cosh(rate / speed);
+    return amplitude / (speed * c * c);
+  }
+};
 
 /// Regularised penalty law of the line-to-line part (force per unit length [N/m] at penetration p [m]):
 /// quadratic below the regularisation depth p0, linear (slope k) beyond, C1 at p0 and zero with zero
@@ -110,18 +145,6 @@ struct BarrierPenalty {
     if (p < depth) return stiffness * p / depth;
     if (p <= barrierStart) return stiffness;
     return stiffness * (1.0 + barrierSlope(std::min(p, cap())));
-  }
-  /// Fraction of the full dashpot that acts at penetration p (ramps in over p0, as RegularisedPenalty).
-  double dampingFraction(double p) const { return p <= 0.0 ? 0.0 : std::min(1.0, p / depth); }
-  /// d slope / d p [N/m^3]: k / p0 in the regularised start, 0 on the linear range, the barrier's beyond
-  /// p1 (central difference of its slope, up to the cap; 0 beyond, where the law is linear).
-  double slopeDerivative(double p) const {
-    if (p <= 0.0) return 0.0;
-    if (p < depth) return stiffness / depth;
-    if (p <= barrierStart || p >= cap()) return 0.0;
-    const double h = 1e-6 * (limit - barrierStart);
-    return stiffness * (barrierSlope(std::min(p + h, cap())) - barrierSlope(std::max(p - h, barrierStart))) /
-           (std::min(p + h, cap()) - std::max(p - h, barrierStart));
   }
 
  private:

@@ -23,6 +23,10 @@ constexpr double kGaussW[kPoints] = {0.3478548451374538, 0.6521451548625461, 0.6
                                      0.3478548451374538};
 /// Steps per impact duration (as the point formulation's LineContact::limitStep).
 constexpr double kImpactSteps = 40.0;
+/// Restitution's smoothing speed v_s as a fraction of omega p0 (restitutionSpeed) [-].
+constexpr double kRestitutionSpeedFraction = 0.1;
+/// ... widened by this fraction of the sliding speed (finishSamples) [-].
+constexpr double kRestitutionSlidingFraction = 0.05;
 /// Tolerance on an interval end's parameter [-]. The integrand vanishes with its slope there, so an error
 /// delta of the end changes the integral only by O(delta^3), but the Gauss points move with the end: at
 /// 1e-7 their forces moved by ~1e-4 N from iterate to iterate at random (a wire folded over another), above
@@ -120,8 +124,11 @@ double reducedMass(double a, double b) {
 }  // namespace
 
 DistributedContact::DistributedContact(const model::Model& model, const model::ContactSpec& spec,
-                                       const std::vector<double>& radius, double zeta)
-    : m_model(&model), m_spec(spec), m_radius(radius), m_zeta(zeta) {
+                                       const std::vector<double>& radius)
+    : m_model(&model),
+      m_spec(spec),
+      m_radius(radius),
+      m_hysteresis(HystereticRestitution::amplitudeFor(spec.restitution)) {
   m_lineAxialStiffness.assign(model.lines().size(), kInf);
   for (const model::LineElement& el : model.elements())
     m_lineAxialStiffness[el.line] = std::min(m_lineAxialStiffness[el.line], el.type->axialStiffness);
@@ -191,6 +198,17 @@ double DistributedContact::massPerLength(int element) const {
 
 double DistributedContact::pairMassPerLength(int elementA, int elementB) const {
   return reducedMass(massPerLength(elementA), massPerLength(elementB));
+}
+
+double DistributedContact::restitutionSpeed(int elementA, int elementB) const {
+  const auto& elements = m_model->elements();
+  const double mass =
+      pairMassPerLength(elementA, elementB) * kReferenceLengthFactor *
+      (m_radius[static_cast<std::size_t>(elementA)] + m_radius[static_cast<std::size_t>(elementB)]);
+  if (!std::isfinite(mass) || !(mass > 0.0)) return 0.0;
+  const double stiffness = pointStiffness(elements[static_cast<std::size_t>(elementA)].line,
+                                          elements[static_cast<std::size_t>(elementB)].line);
+  return kRestitutionSpeedFraction * std::sqrt(stiffness / mass) * law(elementA, elementB).depth;
 }
 
 double DistributedContact::slipDistance(const ContactSample& smp) const {
@@ -437,6 +455,9 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   const Vec3 va = best.a.value(m_model->dofs(), state.velocity),
              vb = best.b.value(m_model->dofs(), state.velocity);
   smp.gapRate = smp.normal.dot(va - vb);
+  if (state.acceleration.size() == state.velocity.size())
+    smp.gapAcceleration = smp.normal.dot(best.a.value(m_model->dofs(), state.acceleration) -
+                                         best.b.value(m_model->dofs(), state.acceleration));
   const BarrierPenalty lawAB = law(slave, bestMaster);
   const double p = -gap;
   smp.slope = lawAB.slope(p);
@@ -518,38 +539,42 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
 }
 
 void DistributedContact::finishSamples(bool dashpot) {
-  // Dashpot per contact patch (one pair of lines, Gauss points of both passes within a few radii of each
-  // other along the lower-index line): c_i = 2 zeta sqrt(M / K) f'(p_i) per unit length, with the patch's
-  // stiffness K = sum f'(p_i) w_i and mass M (patchMass): the patch's damping ratio is zeta, whatever its
-  // shape, so the clipped-dashpot restitution
-  // e(zeta) (ContactLaw.hpp) holds for a crossing as for a length. (A dashpot per unit length of
-  // 2 zeta sqrt(k_line mu), calibrated for parallel contact, gave a crossing about 0.17 zeta: e ~ 0.9 for
-  // 0.5.) The damping follows the slope, so it ramps in with the regularised law at first touch.
+  // Restitution by hysteresis (HystereticRestitution, ContactLaw.hpp): the spring's force times
+  // psi(dp/dt) = 1 + a tanh(v / v_s), v_s per pair of elements (restitutionSpeed). (A clipped dashpot of
+  // damping ratio zeta(e) per patch, before: its force at first touch is c v0, and at e = 0 (zeta 100) two
+  // risers closing at 1 m/s peaked at 5.74 MN, 24 times the elastic 242 kN: RisersClosingTest.)
   const bool friction = m_spec.frictionCoefficient > 0.0;
-  const std::vector<std::vector<int>> groups =
-      dashpot && (m_zeta > 0.0 || friction) ? patches() : std::vector<std::vector<int>>{};
-  // The patches' masses, for the normal dashpot and the stick's (one patchMass each).
-  std::vector<double> masses(groups.size());
-  for (std::size_t g = 0; g < groups.size(); ++g) masses[g] = patchMass(groups[g]);
-  if (m_zeta > 0.0) {
-    for (std::size_t g = 0; g < groups.size(); ++g) {
-      const std::vector<int>& patch = groups[g];
-      double stiffness = 0.0;
-      for (const int i : patch)
-        stiffness +=
-            m_samples[static_cast<std::size_t>(i)].slope * m_samples[static_cast<std::size_t>(i)].length;
-      const double mass = masses[g];
-      const double factor =
-          stiffness > 0.0 && std::isfinite(mass) ? 2.0 * m_zeta * std::sqrt(mass / stiffness) : 0.0;
-      for (const int i : patch) {
-        ContactSample& x = m_samples[static_cast<std::size_t>(i)];
-        x.damping = factor * x.slope;
-        x.dampingSlope = factor * law(x.elementA, x.elementB).slopeDerivative(-x.gap);
-      }
+  if (dashpot && m_hysteresis > 0.0) {
+    for (ContactSample& x : m_samples) {
+      // Widened by a twentieth of the sliding speed v_t: the tangent leaves out the rate's change with the
+      // normal's turning as the lines slide (d v / d x ~ v_t / R, times f psi'(v), up to f a / v_s), which
+      // at v_t / v_s ~ 100 dwarfed the stiffness it keeps (f' psi ~ f / p); Newton stalled at 0.066 N with
+      // increments of 1e-11 m at the minimum step (RandomSweepTest, seed 2). Widened, the part left out is
+      // at most f a / (R / 20), 20 a p / R of the kept one: a fraction at the law's working depths.
+      const double base = restitutionSpeed(x.elementA, x.elementB);
+      if (!(base > 0.0)) continue;
+      const double sliding =
+          kRestitutionSlidingFraction * (x.slipRate - x.normal * x.normal.dot(x.slipRate)).norm();
+      // And by the change of the rate within a step, a |p''| kf / cf (the pair's largest committed relative
+      // normal acceleration where it presses; kf / cf about dt / 2): a switch much narrower than what the
+      // rate moves in a step made the Newton iteration of an impact step a tanh's, which overshoots from
+      // side to side (a two-cycle between 4.1 and 6.8 kN at the minimum step: RandomSweepTest, seed 19).
+      // (With the contact force over mass instead, F / M, a rod resting on an incline at dt 0.01 s had
+      // v_s 0.047 m/s, too little damping left at rest, and was still breathing at 1 s: InclinedFriction.)
+      const auto it = m_pairAcceleration.find({std::min(x.lineA, x.lineB), std::max(x.lineA, x.lineB)});
+      const double stepped = it == m_pairAcceleration.end() ? 0.0 : m_hysteresis * it->second * m_stepScale;
+      const HystereticRestitution restitution{m_hysteresis,
+                                              std::sqrt(base * base + sliding * sliding + stepped * stepped)};
+      x.rateFactor = restitution.factor(-x.gapRate);
+      x.rateSpeed = restitution.speed;
+      x.damping = x.spring * restitution.derivative(-x.gapRate);
     }
   }
-  for (ContactSample& smp : m_samples) smp.lineForce = std::max(0.0, smp.spring - smp.damping * smp.gapRate);
+  for (ContactSample& smp : m_samples) smp.lineForce = smp.spring * smp.rateFactor;
   if (!friction) return;
+  const std::vector<std::vector<int>> groups = dashpot ? patches() : std::vector<std::vector<int>>{};
+  std::vector<double> masses(groups.size());  // the patches' (patchMass), for the stick's dashpot
+  for (std::size_t g = 0; g < groups.size(); ++g) masses[g] = patchMass(groups[g]);
   for (ContactSample& smp : m_samples) smp.slipLimit = slipDistance(smp);
   // The stick spring's dashpot (dynamics): per patch, the delay tau = 2 zeta_t sqrt(M / K_t) with the
   // patch's stick stiffness K_t = sum k_line w_i and its mass M, critically damped (zeta_t = 1).
@@ -616,6 +641,13 @@ Vec3 DistributedContact::committedSlip(int lineA, int lineB, double arcA, double
 }
 
 void DistributedContact::commitSamples() {
+  // The pairs' largest relative normal acceleration where they press (finishSamples).
+  m_pairAcceleration.clear();
+  for (const ContactSample& smp : m_samples) {
+    if (smp.lineForce <= 0.0) continue;
+    double& a = m_pairAcceleration[{std::min(smp.lineA, smp.lineB), std::max(smp.lineA, smp.lineB)}];
+    a = std::max(a, std::abs(smp.gapAcceleration));
+  }
   // The points in contact, for crossedSinceCommit.
   m_committed.clear();
   for (const ContactSample& smp : m_samples)
@@ -646,13 +678,10 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
       if (kin.weight[i] != 0.0) force.segment<3>(dofs.firstDof(kin.node[i])) -= kin.weight[i] * f;
     if (!matrix) continue;
     // Normal: k' grad d grad d^T - f Hess d (the Gauss point held, its projection free: envelope theorem,
-    // SmoothCentreline.hpp), k' including the dashpot's change with the penetration, c'(p) (-d'), at the
-    // patch's factor (finishSamples: the dashpot follows the law's slope, so at first touch, where the
-    // slope grows from zero, it changes with p far faster than the spring: a wire touching another at
-    // 1.2 m/s, 1 um deep, has c' (-d') a million times f'(p), and without it Newton converged linearly, by
-    // 0.53 per iteration, and stopped the run: RandomSweepTest); the dashpot c n n^T on the velocities;
-    // friction on the displacements.
-    const double normalSlope = smp.slope - smp.dampingSlope * smp.gapRate;
+    // SmoothCentreline.hpp), k' = f'(p) psi (the restitution's factor; finishSamples); f psi'(v) n n^T on
+    // the velocities; friction on the displacements. (psi's change with the patch's v_s is not
+    // linearised, as the patch's mass and stiffness are held.)
+    const double normalSlope = smp.slope * smp.rateFactor;
     const Eigen::Matrix<double, 24, 24> block =
         request.kf * smp.length *
         (normalSlope * kin.gradient * kin.gradient.transpose() - smp.lineForce * kin.hessian);
@@ -777,6 +806,7 @@ double DistributedContact::impactStepLimit() const {
   // (RisersClosingTest).
   struct Patch {
     double stiffness = 0.0, mass = 0.0, speed = 0.0, scale = 0.0, deepest = kInf, patchMass = 0.0;
+    double rateSpeed = 0.0, slowest = kInf, acceleration = 0.0;
   };
   std::map<std::pair<int, int>, Patch> patches;
   const auto keyOf = [](const ContactSample& smp) {
@@ -787,6 +817,9 @@ double DistributedContact::impactStepLimit() const {
     Patch& patch = patches[keyOf(smp)];
     patch.stiffness += smp.slope * smp.length;
     patch.speed = std::max(patch.speed, std::abs(smp.gapRate));
+    patch.slowest = std::min(patch.slowest, std::abs(smp.gapRate));
+    patch.acceleration = std::max(patch.acceleration, std::abs(smp.gapAcceleration));
+    patch.rateSpeed = std::max(patch.rateSpeed, smp.rateSpeed);
     if (smp.gap < patch.deepest) {
       patch.deepest = smp.gap;
       patch.scale = law(smp.elementA, smp.elementB).depth;
@@ -807,10 +840,31 @@ double DistributedContact::impactStepLimit() const {
     const double stiffness = std::max(patch.stiffness, pointStiffness(key.first, key.second));
     const double significanceMass =
         std::isfinite(patch.patchMass) ? std::max(patch.mass, patch.patchMass) : patch.mass;
-    if (patch.speed * std::sqrt(significanceMass / stiffness) <= patch.scale) continue;
-    limit = std::min(limit, contactDuration(stiffness, patch.mass, m_zeta) / kImpactSteps);
+    const double step = impactDuration(stiffness, patch.mass) / kImpactSteps;
+    // The reversal of an impact (restitution by hysteresis, finishSamples): the force turns from
+    // (1 + a) f to (1 - a) f while the penetration rate passes through +-v_s, in a time 2 v_s / |p''|
+    // far shorter than an impact step (two risers closing side by side at 1 m/s: v_s 0.035 m/s, p''
+    // 320 m/s^2, 0.2 ms against 0.27 ms steps); taken in one step, the Eq. 5 mass of that impact was
+    // 1.2 % (e = 0.5) to 2.6 % (e = 0) high. When the patch's normal acceleration is an impact's (its
+    // dynamic penetration |p''| M / K above p0: a contact at rest has none, whatever its force) and its
+    // rate is within reach of the switch, steps of v_s / |p''|, but not below an eighth of an impact step.
+    const bool decelerating = patch.acceleration * significanceMass / stiffness > patch.scale;
+    if (patch.rateSpeed > 0.0 && decelerating &&
+        patch.slowest < 3.0 * patch.rateSpeed + patch.acceleration * step)
+      limit = std::min(limit, std::max(patch.rateSpeed / patch.acceleration, step / 8.0));
+    // Significant by its speed, or by its acceleration near the deepest point, where the speed is gone: the
+    // steps grew there, 25 % a step to 0.44 ms (1/24 of the impact), and the sampled peak of two risers
+    // closing side by side at e = 0.5 was 1.3 % low.
+    if (patch.speed * std::sqrt(significanceMass / stiffness) <= patch.scale && !decelerating) continue;
+    limit = std::min(limit, step);
   }
   return limit;
+}
+
+double DistributedContact::impactDuration(double stiffness, double mass) const {
+  // The loading half at the stiffness (1 + a) K, twice (the unloading half is longer, and at e = 0 there
+  // is none to resolve).
+  return contactDuration((1.0 + m_hysteresis) * stiffness, mass, 0.0);
 }
 
 std::vector<std::vector<int>> DistributedContact::patches() const {
@@ -917,6 +971,7 @@ std::vector<ContactSpot> DistributedContact::spots(const model::State& state, do
     spot.length = smp.length;
     spot.forcePerLength = smp.lineForce;
     spot.force = smp.lineForce * smp.length;
+    spot.velocityWeight = smp.spring * smp.length;
     // Approach speed before the step (trapezoidal change over the step, as the point formulation).
     const double accelerationRate =
         dynamic && state.acceleration.size() == state.velocity.size()

@@ -38,8 +38,11 @@
 /// length k_line, and a barrier that grows without bound at half the radii, so the penetration is bounded by
 /// construction; Newton increments, and each step's predictor, are filtered (limitIncrement) so no iterate
 /// jumps past the barrier.
-/// Dashpot per contact patch (finishSamples): damping ratio zeta against the patch's stiffness and mass,
-/// shared by the Gauss points in proportion to their stiffness.
+/// Restitution (dynamics; finishSamples): hysteresis, the law's force scaled by psi(dp/dt) = 1 + a tanh(v /
+/// v_s) (HystereticRestitution, ContactLaw.hpp), loading along (1 + a) f, unloading along (1 - a) f, so an
+/// impact rebounds at e v0 whatever the law's shape and the forces stay below 2 f at any restitution; v_s
+/// per pair of elements (restitutionSpeed), widened by the sliding speed and by the change of rate within
+/// a step (finishSamples, docs/theory.md 9.11).
 ///
 /// Friction: elastic stick then Coulomb slip at every Gauss point, in statics and dynamics alike, on the
 /// slip u_t: the slip committed at the last converged state (per pair of lines, by arc length along the
@@ -87,12 +90,14 @@ struct ContactSample {
   Vec3 normal = Vec3::UnitZ();          ///< unit normal from B to A
   double gap = 0.0;                     ///< surface gap [m] (< 0: penetration)
   double gapRate = 0.0;                 ///< d gap / dt [m/s] (< 0 approaching)
+  double gapAcceleration = 0.0;         ///< n . (a_A - a_B) [m/s^2] (the normal's turning left out)
   double length = 0.0;                  ///< integration weight: share x Gauss weight x rest length [m]
   double share = 0.5;                   ///< this pass's share of the contact [-] (in [0, 1]: file comment)
   double lineForce = 0.0;               ///< normal force per unit length [N/m] (spring + dashpot, >= 0)
   double slope = 0.0;                   ///< d spring / d penetration [N/m^2]
-  double damping = 0.0;                 ///< dashpot per unit length [N s/m^2] (its patch's: finishSamples)
-  double dampingSlope = 0.0;            ///< d damping / d penetration at the patch's factor [N s/m^3]
+  double damping = 0.0;                 ///< d lineForce / d (dp/dt) per unit length [N s/m^2] (finishSamples)
+  double rateFactor = 1.0;              ///< restitution's factor psi(dp/dt) on the spring [-] (finishSamples)
+  double rateSpeed = 0.0;               ///< restitution's smoothing speed v_s [m/s] (0: none; finishSamples)
   double spring = 0.0;                  ///< the law's force per unit length f(p) [N/m]
   double pairMass = 0.0;                ///< lumped pair mass at the two points [kg] (+inf if both are held)
   Vec3 relative = Vec3::Zero();         ///< slip of A against B that friction resists [m] (addSample)
@@ -109,9 +114,9 @@ struct ContactSample {
 /// events and the trial / commit protocol.
 class DistributedContact {
  public:
-  /// @param radius contact radius per element [m]; @param zeta damping ratio of the dashpot [-]
+  /// @param radius contact radius per element [m]
   DistributedContact(const model::Model& model, const model::ContactSpec& spec,
-                     const std::vector<double>& radius, double zeta);
+                     const std::vector<double>& radius);
 
   /// Stiffness per unit length between two lines [N/m^2] (file comment).
   double lineStiffness(int lineA, int lineB) const;
@@ -120,6 +125,13 @@ class DistributedContact {
   double pointStiffness(int lineA, int lineB) const;
   /// The law between two elements.
   BarrierPenalty law(int elementA, int elementB) const;
+  /// Smoothing speed v_s [m/s] of the restitution between two elements (0: none, both held):
+  /// 0.1 omega p0, with omega = sqrt(k / m) of the pair's point stiffness k (pointStiffness) against the
+  /// reduced mass m of the reference contact length 20 (rA + rB) (kReferenceLengthFactor), and p0 the law's
+  /// regularisation depth: omega p0 is about the speed of an impact that just reaches the linear law. Fixed
+  /// per pair of elements: from the patch's own K and M it changed as Gauss points joined a patch, psi with
+  /// it where |v| ~ v_s, and Newton cycled at the minimum step (RandomSweepTest, seeds 1-3).
+  double restitutionSpeed(int elementA, int elementB) const;
   /// Reduced mass per unit length of two elements' lines at a point [kg/m] (+inf if both are held).
   double pairMassPerLength(int elementA, int elementB) const;
 
@@ -130,6 +142,9 @@ class DistributedContact {
   /// converged state (statics friction). Dynamic: dashpot and velocity friction.
   void findSamples(const model::State& state, const ContactCandidates& search, bool dynamic, bool relaxation,
                    const std::vector<Vec3>& reference);
+  /// The time scale of the step being solved [s]: kf / cf of the assembly (about dt / 2 for the
+  /// generalized-alpha method; 0 in statics), for the restitution's smoothing (finishSamples).
+  void setStepScale(double seconds) { m_stepScale = seconds; }
   /// Adds the forces (and tangent) of the samples found by the last findSamples.
   void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
                  solver::SystemMatrix* matrix) const;
@@ -150,6 +165,9 @@ class DistributedContact {
   /// Largest step [s] that resolves every moving contact patch with kImpactSteps steps (its duration from
   /// the patch's stiffness, the barrier's slope included, and its mass, patchMass).
   double impactStepLimit() const;
+  /// Duration [s] of an impact of mass `mass` [kg] on a contact of stiffness `stiffness` [N/m]: twice the
+  /// loading half (restitution by hysteresis loads at (1 + a) K).
+  double impactDuration(double stiffness, double mass) const;
   /// Event spots of the samples at a committed state reached with step dt.
   std::vector<ContactSpot> spots(const model::State& state, double dt, bool dynamic) const;
   /// Total force on line A from line B [N] of the samples, both passes.
@@ -212,6 +230,10 @@ class DistributedContact {
     Vec3 slip = Vec3::Zero();  ///< tangential slip of A against B, |slip| <= u_s [m]
   };
   std::map<std::pair<int, int>, std::vector<SlipRecord>> m_slip;  ///< per (lineA, lineB), by arc
+  /// Per pair of lines (lower index first): the largest |relative normal acceleration| of its Gauss points in
+  /// contact at the last converged state [m/s^2] (commitSamples; the restitution's smoothing).
+  std::map<std::pair<int, int>, double> m_pairAcceleration;
+  double m_stepScale = 0.0;  ///< setStepScale [s]
   /// A Gauss point in contact at the last commit: its piece of each line and the normal from B to A.
   struct CommittedContact {
     int elementA = 0, elementB = 0;
@@ -223,7 +245,7 @@ class DistributedContact {
   const model::Model* m_model;
   model::ContactSpec m_spec;
   std::vector<double> m_radius;
-  double m_zeta;
+  double m_hysteresis;                       // a of HystereticRestitution, from contact.restitution [-]
   std::vector<double> m_lineAxialStiffness;  ///< smallest EA per line [N]
   std::vector<ContactSample> m_samples;
   /// Bentness per element, held through a step (beginStep clears it).

@@ -91,7 +91,7 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
       m_lineMassWithAdded[l] = kInf;
   }
   if (spec.formulation == model::ContactFormulation::Distributed)
-    m_distributed = std::make_unique<DistributedContact>(model, spec, m_radius, m_zeta);
+    m_distributed = std::make_unique<DistributedContact>(model, spec, m_radius);
 }
 
 double LineContact::stiffness(int a, int b) const {
@@ -623,7 +623,9 @@ double LineContact::limitStep(const model::State& state) {
       const double k =
           m_distributed ? m_distributed->pointStiffness(a.line, b.line) : stiffness(a.line, b.line);
       if (std::isfinite(m) && touchSpeed * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius)) {
-        const double impactStep = contactDuration(k, m, m_zeta) / kImpactSteps;
+        const double impactStep =
+            (m_distributed ? m_distributed->impactDuration(k, m) : contactDuration(k, m, m_zeta)) /
+            kImpactSteps;
         const double firstStep = impactStep / 16.0;
         limit = std::min(limit, toTouch > 2.0 * impactStep ? 0.5 * toTouch
                                 : toTouch > firstStep      ? toTouch - 0.5 * firstStep
@@ -984,6 +986,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
 void LineContact::addDistributedForces(const model::State& state, const solver::AssemblyRequest& request,
                                        VecX& force, solver::SystemMatrix* matrix) {
   if (m_reference.size() != state.position.size()) m_reference = state.position;
+  m_distributed->setStepScale(request.dynamic && request.cf > 0.0 ? request.kf / request.cf : 0.0);
   m_distributed->findSamples(state, m_search, request.dynamic, request.relaxation, m_reference);
   if (m_debug)
     for (const ContactSample& x : m_distributed->samples())

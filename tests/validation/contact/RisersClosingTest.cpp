@@ -11,19 +11,25 @@
 // f(p) (BarrierPenalty, docs/theory.md 9.11: k p^2 / (2 p0) to p0 = D / 100, then k (p - p0 / 2)). With
 // no dashpot (e = 1) the largest penetration p* has the law's work W(p*) = mu v^2 / 2 = 37.5 J/m
 // (W = k p0^2 / 6 + k ((p - p0/2)^2 - (p0/2)^2) / 2 beyond p0): p* = 7.56 mm, and the peak force is
-// L k_line (p* - p0 / 2) = 242.5 kN; with a dashpot (e < 1) within a factor 2 (the issue's). Tolerance 1 %:
-// the peak between two of the ~40 steps of the impact (a sampled cosine peak is low by at most (pi / 40)^2 /
-// 2 = 0.3 %) and the integrator's dissipation (rho_inf = 0.8, a fraction of a percent over an impact). The
-// rebound speed: e v at e = 1, the model's own below (RK4 in the test), 1 % (the same reasons); the event's
-// impact speed 1 m/s and its Eq. 5 mass, the reduced mass of the two whole lines L m / 2 = 1500 kg, 1 %
-// (one step of 40 at the phase's end).
+// L k_line (p* - p0 / 2) = 242.5 kN. Below e = 1 the restitution is hysteresis (ContactLaw.hpp
+// HystereticRestitution): the law loads along (1 + a) f, a = (1 - e^2) / (1 + e^2), so p* has
+// (1 + a) W(p*) = mu v^2 / 2 and the peak is (1 + a) L k_line (p* - p0 / 2) (e = 0.5: 304.8 kN; e = 0:
+// 339.4 kN, bounded and decreasing in e, where a dashpot of damping ratio 100 gave 5.74 MN); it unloads along
+// (1 - a) f, giving back e^2 of the impact's energy. Tolerance 1 %: the peak between two of the ~40 steps
+// of the impact (a sampled cosine peak is low by at most (pi / 40)^2 / 2 = 0.3 %), the integrator's
+// dissipation (rho_inf = 0.8, a fraction of a percent over an impact) and the law's smoothing near the
+// deepest point (v_s = 0.011 m/s: 0.1 % of the peak, by RK4 of the law alone). The rebound: its kinetic
+// energy (v_r / v)^2 within 0.01 of e^2 (1 % of the impact energy, as the peak; at e = 0 the smoothing lets
+// the lines part at 0.045 m/s, 0.2 % of the energy); the event's impact speed 1 m/s and its Eq. 5 mass, the
+// reduced mass of the two whole lines L m / 2 = 1500 kg, 1 % (one step of 40 at the phase's end).
 //
 // Crossing (at a right angle): the penetration along each line is p - u^2 / (2 R) (R = rA + rB), and the
 // law's linear part integrates to the Hertz-like F = (4/3) k_line sqrt(2 R) p^(3/2) with the work
 // W = (8/15) k_line sqrt(2 R) p^(5/2) (DistributedContact.hpp). The hand estimate of the peak force sets W
-// to the impact's energy (the event's 1/2 m_Eq5 v^2); the issue asks for a factor 2 (the law's quadratic
-// start, the mass taking part growing during the impact, the dashpot's force at e < 1). The energy itself
-// must lie between the reduced masses of one element of each line and of the two whole lines.
+// to the impact's energy (the event's 1/2 m_Eq5 v^2), with the loading branch (1 + a) F at e < 1 (a peak
+// (1 + a)^0.4 times the elastic one at the same energy); the issue asks for a factor 2 (the law's quadratic
+// start, the mass taking part growing during the impact). The energy itself must lie between the reduced
+// masses of one element of each line and of the two whole lines.
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -155,61 +161,36 @@ TEST_P(RisersClosing, CompleteWithThePeakForceOfTheImpactEnergy) {
   if (c.parallel) {
     const double pairMass = 0.5 * kMass * kLength;  // [kg]
     EXPECT_NEAR(first.energyMass, pairMass, 0.01 * pairMass);
-    // p* from W(p*) = mu v^2 / 2 by bisection on the law's work.
-    const double perLength = 0.25 * kMass * kSpeed * kSpeed;  // (m / 2) v^2 / 2 [J/m]
+    // p* from (1 + a) W(p*) = mu v^2 / 2 by bisection on the law's work.
+    const double e2 = c.restitution * c.restitution;
+    const double loading = 1.0 + (1.0 - e2) / (1.0 + e2);                    // 1 + a
+    const double perLength = 0.5 * 0.5 * kMass * kSpeed * kSpeed / loading;  // [J/m]
     double lo = 0.0, hi = 0.25 * kDiameter;
     for (int i = 0; i < 200; ++i) {
       const double mid = 0.5 * (lo + hi);
       (lawWork(kLine, p0, mid) < perLength ? lo : hi) = mid;
     }
     const double pStar = 0.5 * (lo + hi);
-    const double expected = kLength * kLine * (pStar - 0.5 * p0);
+    const double expected = loading * kLength * kLine * (pStar - 0.5 * p0);
     RecordProperty("expected_peak_force_N", fmt::format("{:.5g}", expected));
-    if (c.restitution == 1.0) {
-      EXPECT_NEAR(first.peakForce, expected, 0.01 * expected);
-    } else {
-      // The dashpot adds to the spring early in the impact and takes from it late: the issue's factor 2.
-      EXPECT_LT(first.peakForce, 2.0 * expected);
-    }
-    // Rebound: at e = 1, v (no dashpot). Below, the model's own: the patch's dashpot c = 2 zeta sqrt(M / K)
-    // f'(p) per length with M = mu L and K = f'(p) L is 2 zeta sqrt(mu f'(p)), clipped so that it never
-    // pulls, zeta from e by the linear spring's clipped-dashpot law (ContactLaw.hpp); integrated here by
-    // RK4 to separation. Its rebound differs from e v because the law is not linear (its quadratic start
-    // reaches to p0 = 0.48 p*): that is the design's error, recorded, not asserted. Tolerance 1 % as at e
-    // = 1.
-    double expectedRebound = kSpeed;
-    if (c.restitution < 1.0) {
-      const double zeta = contact::dampingRatioForRestitution(c.restitution);
-      const double mu = 0.5 * kMass;
-      const auto force = [&](double p) { return p < p0 ? 0.5 * kLine * p * p / p0 : kLine * (p - 0.5 * p0); };
-      const auto slope = [&](double p) { return p < p0 ? kLine * p / p0 : kLine; };
-      const auto accel = [&](double p, double v) {  // d(closing speed)/dt, v = dp/dt
-        const double f = std::max(0.0, force(p) + 2.0 * zeta * std::sqrt(mu * slope(p)) * v);
-        return -f / mu;
-      };
-      double p = 0.0, v = kSpeed;
-      const double h = 1e-7;
-      for (int i = 0; i < 10000000 && (p > 0.0 || v > 0.0); ++i) {
-        const double k1p = v, k1v = accel(p, v);
-        const double k2p = v + 0.5 * h * k1v, k2v = accel(p + 0.5 * h * k1p, v + 0.5 * h * k1v);
-        const double k3p = v + 0.5 * h * k2v, k3v = accel(p + 0.5 * h * k2p, v + 0.5 * h * k2v);
-        const double k4p = v + h * k3v, k4v = accel(p + h * k3p, v + h * k3v);
-        p += h / 6.0 * (k1p + 2.0 * k2p + 2.0 * k3p + k4p);
-        v += h / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-        if (p > 0.0 && v < 0.0 && force(p) + 2.0 * zeta * std::sqrt(mu * slope(p)) * v <= 0.0) break;
-      }
-      expectedRebound = -v;
-      RecordProperty("model_rebound_speed_m_s", fmt::format("{:.5g}", expectedRebound));
-    }
-    EXPECT_NEAR(run.reboundSpeed, expectedRebound, 0.01 * kSpeed);
+    EXPECT_NEAR(first.peakForce, expected, 0.01 * expected);
+    // Rebound energy e^2 of the impact's (file comment).
+    const double reboundFraction = run.reboundSpeed * run.reboundSpeed / (kSpeed * kSpeed);
+    RecordProperty("rebound_energy_fraction", fmt::format("{:.5g}", reboundFraction));
+    EXPECT_NEAR(reboundFraction, e2, 0.01);
+    EXPECT_GT(run.reboundSpeed, 0.0);
   } else {
     // The mass taking part: at least one element of each line's, at most the two whole lines' (reduced).
     const double elementPair = 0.5 * kMass * kLength / kElements, linePair = 0.5 * kMass * kLength;
     EXPECT_GE(first.energyMass, elementPair * (1.0 - 1e-9));
     EXPECT_LE(first.energyMass, linePair * (1.0 + 1e-9));
     const double radii = kDiameter;
-    const double pStar = std::pow(first.impactEnergy / ((8.0 / 15.0) * kLine * std::sqrt(2.0 * radii)), 0.4);
-    const double expected = (4.0 / 3.0) * kLine * std::sqrt(2.0 * radii) * std::pow(pStar, 1.5);
+    // The loading branch (1 + a) F (file comment): (1 + a) W(p*) = E.
+    const double e2 = c.restitution * c.restitution;
+    const double loading = 1.0 + (1.0 - e2) / (1.0 + e2);
+    const double pStar =
+        std::pow(first.impactEnergy / (loading * (8.0 / 15.0) * kLine * std::sqrt(2.0 * radii)), 0.4);
+    const double expected = loading * (4.0 / 3.0) * kLine * std::sqrt(2.0 * radii) * std::pow(pStar, 1.5);
     RecordProperty("expected_peak_force_N", fmt::format("{:.5g}", expected));
     EXPECT_GT(first.peakForce, 0.5 * expected);
     EXPECT_LT(first.peakForce, 2.0 * expected);
@@ -223,17 +204,9 @@ std::string caseName(const ::testing::TestParamInfo<ClosingCase>& p) {
 
 INSTANTIATE_TEST_SUITE_P(Distributed, RisersClosing,
                          ::testing::Values(ClosingCase{true, 1.0}, ClosingCase{true, 0.5},
-                                           ClosingCase{false, 1.0}, ClosingCase{false, 0.5}),
+                                           ClosingCase{true, 0.0}, ClosingCase{false, 1.0},
+                                           ClosingCase{false, 0.5}, ClosingCase{false, 0.0}),
                          caseName);
-
-// Known failure (issue 43: "restitution from 0 to 1 with forces and energies that are bounded and monotonic
-// in it"), run by ctest as expected to fail (validation.risers_closing_expected_fail, tests/CMakeLists.txt).
-// Measured 2026-11-29: at e = 0 the dashpot's damping ratio is 100 (ContactLaw.cpp, kMaxZeta), and the
-// impact's energy is taken up over a fraction of the elastic penetration: side by side 5.74 MN (24 times the
-// elastic 242 kN, penetration 0.22 mm against 7.6 mm); crossing 131.7 kN against the estimate's 15.2 kN
-// (8.7 times). Everything else holds (the rebound, 0.0027 m/s, is the model's within 1 %).
-INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, RisersClosing,
-                         ::testing::Values(ClosingCase{true, 0.0}, ClosingCase{false, 0.0}), caseName);
 
 }  // namespace
 }  // namespace tangle
