@@ -116,6 +116,11 @@ std::pair<double, double> brentMinimum(const Function& f, double a, double b, do
   return {x, fx};
 }
 
+/// The pair of lines of a sample, the lower index first (the key of per-pair data).
+std::pair<int, int> linePair(const ContactSample& smp) {
+  return {std::min(smp.lineA, smp.lineB), std::max(smp.lineA, smp.lineB)};
+}
+
 double reducedMass(double a, double b) {
   if (std::isinf(a)) return b;
   if (std::isinf(b)) return a;
@@ -561,7 +566,7 @@ void DistributedContact::finishSamples(bool dashpot) {
       // side to side (a two-cycle between 4.1 and 6.8 kN at the minimum step: RandomSweepTest, seed 19).
       // (With the contact force over mass instead, F / M, a rod resting on an incline at dt 0.01 s had
       // v_s 0.047 m/s, too little damping left at rest, and was still breathing at 1 s: InclinedFriction.)
-      const auto it = m_pairAcceleration.find({std::min(x.lineA, x.lineB), std::max(x.lineA, x.lineB)});
+      const auto it = m_pairAcceleration.find(linePair(x));
       const double stepped = it == m_pairAcceleration.end() ? 0.0 : m_hysteresis * it->second * m_stepScale;
       const HystereticRestitution restitution{m_hysteresis,
                                               std::sqrt(base * base + sliding * sliding + stepped * stepped)};
@@ -645,7 +650,7 @@ void DistributedContact::commitSamples() {
   m_pairAcceleration.clear();
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
-    double& a = m_pairAcceleration[{std::min(smp.lineA, smp.lineB), std::max(smp.lineA, smp.lineB)}];
+    double& a = m_pairAcceleration[linePair(smp)];
     a = std::max(a, std::abs(smp.gapAcceleration));
   }
   // The points in contact, for crossedSinceCommit.
@@ -809,12 +814,9 @@ double DistributedContact::impactStepLimit() const {
     double rateSpeed = 0.0, slowest = kInf, acceleration = 0.0;
   };
   std::map<std::pair<int, int>, Patch> patches;
-  const auto keyOf = [](const ContactSample& smp) {
-    return std::make_pair(std::min(smp.lineA, smp.lineB), std::max(smp.lineA, smp.lineB));
-  };
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
-    Patch& patch = patches[keyOf(smp)];
+    Patch& patch = patches[linePair(smp)];
     patch.stiffness += smp.slope * smp.length;
     patch.speed = std::max(patch.speed, std::abs(smp.gapRate));
     patch.slowest = std::min(patch.slowest, std::abs(smp.gapRate));
@@ -827,7 +829,7 @@ double DistributedContact::impactStepLimit() const {
     }
   }
   for (const std::vector<int>& group : this->patches()) {
-    const auto it = patches.find(keyOf(m_samples[static_cast<std::size_t>(group.front())]));
+    const auto it = patches.find(linePair(m_samples[static_cast<std::size_t>(group.front())]));
     if (it != patches.end()) it->second.patchMass = std::max(it->second.patchMass, patchMass(group));
   }
   double limit = kInf;
@@ -874,10 +876,7 @@ std::vector<std::vector<int>> DistributedContact::patches() const {
   const auto lowArc = [&](int i) {
     return sample(i).lineA <= sample(i).lineB ? sample(i).arcA : sample(i).arcB;
   };
-  const auto pairKey = [&](int i) {
-    return std::make_pair(std::min(sample(i).lineA, sample(i).lineB),
-                          std::max(sample(i).lineA, sample(i).lineB));
-  };
+  const auto pairKey = [&](int i) { return linePair(sample(i)); };
   std::sort(order.begin(), order.end(), [&](int a, int b) {
     return std::make_pair(pairKey(a), lowArc(a)) < std::make_pair(pairKey(b), lowArc(b));
   });
@@ -905,7 +904,8 @@ double DistributedContact::patchMass(const std::vector<int>& patch) const {
   //   across a thick body its own mass, not the body's mass per length times the long interval the body's
   //   pass finds under it (the seed paper's free fall, section 6.2: that overdamped e = 0.9 to 0.57).
   const ContactSample& first = m_samples[static_cast<std::size_t>(patch.front())];
-  const int lines[2] = {std::min(first.lineA, first.lineB), std::max(first.lineA, first.lineB)};
+  const auto [lowLine, highLine] = linePair(first);
+  const int lines[2] = {lowLine, highLine};
   double passLength[2] = {0.0, 0.0}, lo[2] = {kInf, kInf}, hi[2] = {-kInf, -kInf},
          perLength[2] = {kInf, kInf};
   double deepest = kInf, deepestMass = kInf, weight = 0.0, mobility = 0.0;

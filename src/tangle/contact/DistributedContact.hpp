@@ -176,6 +176,8 @@ class DistributedContact {
   /// there on (the elastic stick, at most the slip distance: file comment), and where they touch for
   /// crossedSinceCommit.
   void commitSamples();
+  /// True when a sample pressed at the last commitSamples.
+  bool pressing() const { return !m_pairAcceleration.empty(); }
   /// Forgets what was committed (a new analysis).
   void clearCommitted() {
     m_slip.clear();

@@ -550,6 +550,7 @@ double LineContact::limitStep(const model::State& state) {
   m_margin = broadPhaseMargin(state, true);
   refreshCandidates(state);
   m_candidateTime = std::numeric_limits<double>::quiet_NaN();  // force a refresh at the next assembly
+  m_engaged = m_distributed && m_distributed->pressing();
   for (const CandidatePair& cp : m_search.candidates()) {
     const SegmentProxy& a = m_search.proxies()[cp.first];
     const SegmentProxy& b = m_search.proxies()[cp.second];
@@ -581,6 +582,7 @@ double LineContact::limitStep(const model::State& state) {
         relativeAcceleration =
             pointValue(state.acceleration, a.element, d.s) - pointValue(state.acceleration, b.element, d.t);
     }
+    if (gap < std::min(a.radius, b.radius)) m_engaged = true;
     if (n.norm() < 1e-12) continue;
     n.normalize();
     // Closing speed and acceleration along the normal: a line at the top of a bounce, or released at rest,

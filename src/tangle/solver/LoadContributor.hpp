@@ -135,7 +135,7 @@ class LoadContributor {
   /// resolved in enough steps); +inf for no limit.
   virtual double limitStep(const model::State& /*state*/) { return std::numeric_limits<double>::infinity(); }
   /// Dynamics: the largest ratio [-] of a time step to the one before it that this contributor allows (the
-  /// step controller's default is 2; DynamicAnalysis).
+  /// step controller's default is 2; DynamicAnalysis), asked after limitStep at the same state.
   virtual double maxStepGrowth() const { return 2.0; }
   /// Dynamics and dynamic relaxation: empty if the converged step from `before` to `after` is acceptable,
   /// otherwise why not (e.g. two lines passed through each other): the step is undone and cut.

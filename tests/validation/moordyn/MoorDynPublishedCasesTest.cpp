@@ -126,8 +126,8 @@ TEST(MoorDynPublishedCases, LoweLangleyJumperCase3HeaveMotion) {
 /// deep-water dispersion k = omega^2 / 9.81 in 100 m, travelling at 0, 45 and 90 degrees with phases 230,
 /// 165 and 0 degrees), the linear-wave kinematics given by the host at every node (MoorDyn's WaveKin 1,
 /// here hydro::HydroLoads::setNodeKinematics, which the C API's MoorDyn_ExternalWaveKinSet calls) at mid
-/// step, host steps of 0.005 s, the full wave from t = 0 (no ramp) and the comparison from two periods on: the
-/// top tension against Lowe & Langley's published history over 30 s within 1 kN (MoorDyn's tolerance).
+/// step, host steps of 0.005 s, the full wave from t = 0 (no ramp) and the comparison from two periods on:
+/// the top tension against Lowe & Langley's published history over 30 s within 1 kN (MoorDyn's tolerance).
 void loweLangleyWaveCase(int caseNumber, double phaseDegrees, const char* reference) {
   auto run = coupledRun("lowe_langley_jumper.txt");
   const std::vector<double> x0 = run->modelPositions();
@@ -136,7 +136,8 @@ void loweLangleyWaveCase(int caseNumber, double phaseDegrees, const char* refere
   ASSERT_GT(ref.size(), 50u);
   const double amplitude = 5.0, period = 10.0, dt = 0.005, settle = 2.0 * period, depth = 100.0;
   const double omega = 2.0 * std::numbers::pi / period, k = omega * omega / 9.81;
-  const double heading = (caseNumber - 4) * 0.25 * std::numbers::pi, phase = phaseDegrees * std::numbers::pi / 180.0;
+  const double heading = (caseNumber - 4) * 0.25 * std::numbers::pi,
+               phase = phaseDegrees * std::numbers::pi / 180.0;
   analysis::Simulation& sim = run->simulation();
   const std::size_t nodes = static_cast<std::size_t>(sim.model().nodeCount());
   std::vector<Vec3> u(nodes), a(nodes);
@@ -152,7 +153,8 @@ void loweLangleyWaveCase(int caseNumber, double phaseDegrees, const char* refere
       const double ch = std::cosh(k * (r.z() + depth)) / std::cosh(k * depth);
       const double sh = std::sinh(k * (r.z() + depth)) / std::cosh(k * depth);
       u[n] = omega * amplitude * Vec3(c * ch * std::cos(heading), c * ch * std::sin(heading), sn * sh);
-      a[n] = omega * omega * amplitude * Vec3(sn * ch * std::cos(heading), sn * ch * std::sin(heading), -c * sh);
+      a[n] =
+          omega * omega * amplitude * Vec3(sn * ch * std::cos(heading), sn * ch * std::sin(heading), -c * sh);
     }
     sim.hydro().setNodeKinematics(u, a);
     run->step(x0, still, dt);
@@ -167,20 +169,26 @@ void loweLangleyWaveCase(int caseNumber, double phaseDegrees, const char* refere
     }
   }
   ::testing::Test::RecordProperty("largest_difference_kN", std::to_string(worst));
-  EXPECT_LT(worst, 1.0) << "largest difference " << worst << " kN at t = " << worstTime << " s after two periods";
+  EXPECT_LT(worst, 1.0) << "largest difference " << worst << " kN at t = " << worstTime
+                        << " s after two periods";
 }
 
-TEST(MoorDynPublishedCases, LoweLangleyJumperCase4WaveAlongX) { loweLangleyWaveCase(4, 230.0, "lowe_langley_case4.csv"); }
+TEST(MoorDynPublishedCases, LoweLangleyJumperCase4WaveAlongX) {
+  loweLangleyWaveCase(4, 230.0, "lowe_langley_case4.csv");
+}
 // Case 5 misses MoorDyn's 1 kN by 6 %: largest difference 1.056 kN, 1.3 s after the two settling periods
 // (RMS over the 30 s 0.32 kN); unchanged with spectral radius 1 and a Newton tolerance of 1e-8 (1.056 kN),
 // half the host step (1.048 kN) or twice the elements (1.038 kN): a difference of the model (tangle's
-// element-wise Morison loads and co-rotational beams against MoorDyn's node-wise loads and bending), largest in
-// the start transient of the wave switched on at t = 0 without a ramp. Kept here, disabled, with its numbers
-// (docs/moordyn.md), rather than run with a wider tolerance.
-TEST(MoorDynPublishedCases, DISABLED_LoweLangleyJumperCase5WaveAt45Degrees) {
+// element-wise Morison loads and co-rotational beams against MoorDyn's node-wise loads and bending), largest
+// in the start transient of the wave switched on at t = 0 without a ramp. Kept here with its numbers
+// (docs/moordyn.md), run by ctest as expected to fail (validation.moordyn_lowe_langley_case5_expected_fail)
+// rather than with a wider tolerance (measured 2026-11-30: 1.0556 kN).
+TEST(MoorDynPublishedCasesKnownFailures, LoweLangleyJumperCase5WaveAt45Degrees) {
   loweLangleyWaveCase(5, 165.0, "lowe_langley_case5.csv");
 }
-TEST(MoorDynPublishedCases, LoweLangleyJumperCase6WaveAlongY) { loweLangleyWaveCase(6, 0.0, "lowe_langley_case6.csv"); }
+TEST(MoorDynPublishedCases, LoweLangleyJumperCase6WaveAlongY) {
+  loweLangleyWaveCase(6, 0.0, "lowe_langley_case6.csv");
+}
 
 /// MoorDyn's "quasi_static_chain": a 410 m chain (d 0.252 m, 390 kg/m) in 50, 200 and 600 m of water, the
 /// static fairlead and anchor tensions against quasi-static codes, within 10 % (MoorDyn's limit), then the
