@@ -67,6 +67,8 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
   const auto& diameter = m_model->nodeContactDiameter();
+  // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
+  const bool smoothCables = m_model->spec().contact.formulation == model::ContactFormulation::Distributed;
   // Surface distance from x to segment j of line b (the clearance before x's own radius).
   const auto segmentDistance = [&](const Vec3& x, int j) {
     const int m1 = b.firstNode + j, m2 = m1 + 1;
@@ -186,11 +188,11 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
       }
     }
     hint[static_cast<std::size_t>(i)] = std::max(bestSegment, 0);
-    if (bestSegment >= 0 && hasSmoothCentreline(*m_model, b.firstElement + bestSegment)) {
-      // A beam's surface is around its smooth centreline, the one contact measures (SmoothCentreline.hpp),
-      // which lies off the chords by up to kappa L^2 / 8: 4 cm for a flexible of 10 m elements near its
-      // touchdown, read as an overlap where contact saw 1 mm. Near the surface, the distance to that curve
-      // on the nearest segment and its neighbours.
+    if (bestSegment >= 0 && hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables)) {
+      // A beam's surface (with the distributed formulation, a cable's too) is around its smooth centreline,
+      // the one contact measures (SmoothCentreline.hpp), which lies off the chords by up to kappa L^2 / 8:
+      // 4 cm for a flexible of 10 m elements near its touchdown, read as an overlap where contact saw 1 mm.
+      // Near the surface, the distance to that curve on the nearest segment and its neighbours.
       const double bulgeBound = 0.25 * m_model->elements()[b.firstElement + bestSegment].restLength;
       if (best < 0.5 * diameter[n] + bulgeBound) {
         const int element = i + 1 < a.nodeCount ? a.firstElement + i : a.firstElement + i - 1;
@@ -201,8 +203,8 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
           const double l2 = axis.squaredNorm();
           const double t0 =
               l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
-          const CentrelineDistance c =
-              centrelineDistance(*m_model, state.position, element, b.firstElement + j, s, t0, true);
+          const CentrelineDistance c = centrelineDistance(
+              *m_model, state.position, element, b.firstElement + j, s, t0, true, false, smoothCables);
           const double radius = 0.5 * (c.t < 0.5 ? diameter[b.firstNode + j] : diameter[b.firstNode + j + 1]);
           smooth = std::min(smooth, c.distance - radius);
         }

@@ -52,10 +52,11 @@ std::string roughness(const analysis::ExtremeEstimate& e) {
 
 /// The header of estimateFields; `minimum`: the columns of a minimum (min, most probable minimum "mp_min").
 std::string estimateHeader(const std::string& prefix, const std::string& unit, bool minimum = false) {
-  return fmt::format(",{0}mean_{1},{0}standard_deviation_{1},{0}upcrossing_period_s,{0}peaks,{0}{2}_{1},"
-                     "{0}rayleigh_sigma_{1},{0}rayleigh_{3}_{1},{0}weibull_scale_{1},{0}weibull_shape,{0}weibull_{3}_{1},"
-                     "{0}note",
-                     prefix, unit, minimum ? "min" : "max", minimum ? "mp_min" : "mpm");
+  return fmt::format(
+      ",{0}mean_{1},{0}standard_deviation_{1},{0}upcrossing_period_s,{0}peaks,{0}{2}_{1},"
+      "{0}rayleigh_sigma_{1},{0}rayleigh_{3}_{1},{0}weibull_scale_{1},{0}weibull_shape,{0}weibull_{3}_{1},"
+      "{0}note",
+      prefix, unit, minimum ? "min" : "max", minimum ? "mp_min" : "mpm");
 }
 
 }  // namespace
@@ -76,17 +77,18 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
         const analysis::ResponseStatistics::Line& t = statistics.lines()[l];
         const analysis::PeakTracker& tracker = end == 0 ? t.endA : t.endB;
         const analysis::ExtremeEstimate e = analysis::extremeEstimate(tracker, storm);
-        out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B', tracker.samples(),
-                              tracker.duration(), storm) +
+        out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B',
+                              tracker.samples(), tracker.duration(), storm) +
                   estimateFields(e, tracker.samples()) + "\n");
         if (end == 1 && e.credible())
-          text += fmt::format("  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
-                              "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
-                              lines[l].name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
-                              e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
+          text += fmt::format(
+              "  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
+              "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
+              lines[l].name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
+              e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
         else if (end == 1 && tracker.samples() > 0)
-          text += fmt::format("  line '{}' end B: largest in the run {:.1f} kN; no storm extreme: {}\n", lines[l].name,
-                              e.maximum / 1000.0, e.doubt);
+          text += fmt::format("  line '{}' end B: largest in the run {:.1f} kN; no storm extreme: {}\n",
+                              lines[l].name, e.maximum / 1000.0, e.doubt);
       }
     out.close();
   }
@@ -101,7 +103,8 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     double worstTension = 0.0, worstMoment = 0.0, tensionAt = 0.0, momentAt = 0.0;
     for (std::size_t i = 0; i < t.tension.size(); ++i) {
       const analysis::ExtremeEstimate te = analysis::extremeEstimate(t.tension[i], storm);
-      std::string row = fmt::format("{:.4f}", lines[l].arcLength[i]) + estimateFields(te, t.tension[i].samples());
+      std::string row =
+          fmt::format("{:.4f}", lines[l].arcLength[i]) + estimateFields(te, t.tension[i].samples());
       if (te.credible() && te.weibullMpm > worstTension) {
         worstTension = te.weibullMpm;
         tensionAt = lines[l].arcLength[i];
@@ -120,33 +123,36 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     }
     out.close();
     if (worstTension == 0.0 && worstMoment == 0.0)
-      text += fmt::format("  line '{}' along its length: no storm extreme at any node (dynamics/{}/statistics.csv says "
-                          "why, node by node)\n",
-                          lines[l].name, stems[l]);
+      text += fmt::format(
+          "  line '{}' along its length: no storm extreme at any node (dynamics/{}/statistics.csv says "
+          "why, node by node)\n",
+          lines[l].name, stems[l]);
     else
-      text += fmt::format("  line '{}' along its length: most probable maximum tension {} at {:.1f} m{} "
-                          "(Weibull, where the fit is credible; dynamics/{}/statistics.csv)\n",
-                          lines[l].name, worstTension > 0.0 ? fmt::format("{:.1f} kN", worstTension / 1000.0) : "-",
-                          tensionAt,
-                          worstMoment > 0.0 ? fmt::format(", bending moment {:.2f} kN m at {:.1f} m", worstMoment / 1000.0,
-                                                          momentAt)
-                                            : std::string(),
-                          stems[l]);
+      text += fmt::format(
+          "  line '{}' along its length: most probable maximum tension {} at {:.1f} m{} "
+          "(Weibull, where the fit is credible; dynamics/{}/statistics.csv)\n",
+          lines[l].name, worstTension > 0.0 ? fmt::format("{:.1f} kN", worstTension / 1000.0) : "-",
+          tensionAt,
+          worstMoment > 0.0
+              ? fmt::format(", bending moment {:.2f} kN m at {:.1f} m", worstMoment / 1000.0, momentAt)
+              : std::string(),
+          stems[l]);
   }
   if (!offsets.empty()) {
     core::OutputFile out(dir / "dynamics" / "vessel_statistics.csv");
     out.write("vessel,samples,duration_s,storm_duration_s" + estimateHeader("offset_", "m") + "\n");
     for (std::size_t v = 0; v < offsets.size(); ++v) {
       const analysis::ExtremeEstimate e = analysis::extremeEstimate(offsets[v], storm);
-      out.write(fmt::format("{},{},{:.6f},{:.1f}", core::csvField(model.vessels()[v].name), offsets[v].samples(),
-                            offsets[v].duration(), storm) +
+      out.write(fmt::format("{},{},{:.6f},{:.1f}", core::csvField(model.vessels()[v].name),
+                            offsets[v].samples(), offsets[v].duration(), storm) +
                 estimateFields(e, offsets[v].samples()) + "\n");
       if (e.credible())
-        text += fmt::format("  vessel '{}': most probable maximum offset {:.2f} m (Weibull), largest in the run {:.2f} m\n",
-                            model.vessels()[v].name, e.weibullMpm, e.maximum);
+        text += fmt::format(
+            "  vessel '{}': most probable maximum offset {:.2f} m (Weibull), largest in the run {:.2f} m\n",
+            model.vessels()[v].name, e.weibullMpm, e.maximum);
       else if (offsets[v].samples() > 0)
-        text += fmt::format("  vessel '{}': largest offset in the run {:.2f} m{}\n", model.vessels()[v].name, e.maximum,
-                            roughness(e));
+        text += fmt::format("  vessel '{}': largest offset in the run {:.2f} m{}\n", model.vessels()[v].name,
+                            e.maximum, roughness(e));
     }
     out.close();
   }
@@ -154,28 +160,36 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     // The minimum clearance: the peaks of minus the clearance, reported with their sign turned back.
     fs::create_directories(dir / "contact");
     core::OutputFile out(dir / "contact" / "clearance_statistics.csv");
-    out.write("line_1,line_2,samples,duration_s,storm_duration_s" + estimateHeader("clearance_", "m", true) + "\n");
+    out.write("line_1,line_2,samples,duration_s,storm_duration_s" + estimateHeader("clearance_", "m", true) +
+              "\n");
     for (std::size_t p = 0; p < pairs.size(); ++p) {
       const analysis::ExtremeEstimate e = analysis::extremeEstimate(clearance[p], storm);
       const std::string& a = model.lines()[static_cast<std::size_t>(pairs[p][0])].name;
       const std::string& b = model.lines()[static_cast<std::size_t>(pairs[p][1])].name;
-      out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(a), core::csvField(b), clearance[p].samples(),
-                            clearance[p].duration(), storm) +
+      out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(a), core::csvField(b),
+                            clearance[p].samples(), clearance[p].duration(), storm) +
                 estimateFields(e, clearance[p].samples(), -1.0) + "\n");
-      if (e.credible())
-        text += fmt::format("  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull), smallest in the "
-                            "run {:.3f} m\n",
-                            a, b, -e.weibullMpm, -e.maximum);
+      const double margin = model.spec().contact.clearanceMargin;
+      if (clearance[p].samples() > 0 && -e.maximum >= margin * (1.0 - 1e-12))
+        // Beyond the margin the clearance is recorded as the margin (RunOutputs): not a clearance to report.
+        text +=
+            fmt::format("  lines '{}' / '{}': never within the clearance margin ({:g} m)\n", a, b, margin);
+      else if (e.credible())
+        text += fmt::format(
+            "  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull), smallest in the "
+            "run {:.3f} m\n",
+            a, b, -e.weibullMpm, -e.maximum);
       else if (clearance[p].samples() > 0)
-        text += fmt::format("  lines '{}' / '{}': smallest clearance in the run {:.3f} m{}\n", a, b, -e.maximum,
-                            roughness(e));
+        text += fmt::format("  lines '{}' / '{}': smallest clearance in the run {:.3f} m{}\n", a, b,
+                            -e.maximum, roughness(e));
     }
     out.close();
   }
   return text.empty() ? std::string() : "extreme statistics (dynamics/statistics.csv):\n" + text;
 }
 
-std::string writeFatigue(const fs::path& dir, const model::Model& model, const analysis::FatigueDamage& fatigue,
+std::string writeFatigue(const fs::path& dir, const model::Model& model,
+                         const analysis::FatigueDamage& fatigue,
                          const std::vector<analysis::FatigueDamage::Line>& damage) {
   if (damage.empty()) return {};
   const model::FatigueSpec& spec = model.spec().fatigue;
@@ -183,7 +197,9 @@ std::string writeFatigue(const fs::path& dir, const model::Model& model, const a
   std::vector<std::string> names;
   for (const model::Line& l : model.lines()) names.push_back(l.name);
   const std::vector<std::string> stems = io::uniqueFileStems(names);
-  const auto number = [](double v) { return std::isfinite(v) ? fmt::format("{:.6e}", v) : std::string("inf"); };
+  const auto number = [](double v) {
+    return std::isfinite(v) ? fmt::format("{:.6e}", v) : std::string("inf");
+  };
   std::string text = fmt::format(
       "fatigue (fatigue/): {:.1f} s counted from t = {:.1f} s, scaled to a year by occurrence {:g}, design "
       "factor {:g}\n",
@@ -200,26 +216,27 @@ std::string writeFatigue(const fs::path& dir, const model::Model& model, const a
         "largest_tension_range_kN,worst_point_deg\n");
     const analysis::FatigueDamage::Node* worst = nullptr;
     for (const analysis::FatigueDamage::Node& n : line.nodes) {
-      out.write(fmt::format("{:.4f},{},{},{:.6e},{},{},{:.1f},{},{},{:.1f}\n", n.arcLength, core::csvField(n.lineType),
-                            n.tension ? "T-N" : "S-N", n.damage, number(n.damage * factor),
-                            number(fatigue.life(n.damage)), n.cycles,
+      out.write(fmt::format("{:.4f},{},{},{:.6e},{},{},{:.1f},{},{},{:.1f}\n", n.arcLength,
+                            core::csvField(n.lineType), n.tension ? "T-N" : "S-N", n.damage,
+                            number(n.damage * factor), number(fatigue.life(n.damage)), n.cycles,
                             n.tension ? "" : fmt::format("{:.6g}", n.largestRange / 1e6),
                             n.tension ? fmt::format("{:.6g}", n.largestRange / 1e3) : "", n.worstAngle));
       if (!worst || n.damage > worst->damage) worst = &n;
     }
     out.close();
     summary.write(fmt::format("{},{:.4f},{},{},{:.6e},{},{},{:.6f},{:g},{:g}\n", core::csvField(line.name),
-                              worst->arcLength, core::csvField(worst->lineType), worst->tension ? "T-N" : "S-N", worst->damage,
-                              number(worst->damage * factor), number(fatigue.life(worst->damage)),
-                              fatigue.countedDuration(), spec.occurrence, spec.designFactor));
-    text += fmt::format("  line '{}': shortest life {} years at {:.1f} m from end A (line type '{}', {}{}), "
-                        "damage {:.3e} per year\n",
-                        line.name, fmt::format("{:.4g}", fatigue.life(worst->damage)), worst->arcLength,
-                        worst->lineType,
-                        worst->tension ? fmt::format("largest tension range {:.1f} kN", worst->largestRange / 1e3)
-                                       : fmt::format("largest stress range {:.1f} MPa", worst->largestRange / 1e6),
-                        worst->tension ? "" : fmt::format(" at the point at {:.0f} deg", worst->worstAngle),
-                        worst->damage * factor);
+                              worst->arcLength, core::csvField(worst->lineType),
+                              worst->tension ? "T-N" : "S-N", worst->damage, number(worst->damage * factor),
+                              number(fatigue.life(worst->damage)), fatigue.countedDuration(), spec.occurrence,
+                              spec.designFactor));
+    text += fmt::format(
+        "  line '{}': shortest life {} years at {:.1f} m from end A (line type '{}', {}{}), "
+        "damage {:.3e} per year\n",
+        line.name, fmt::format("{:.4g}", fatigue.life(worst->damage)), worst->arcLength, worst->lineType,
+        worst->tension ? fmt::format("largest tension range {:.1f} kN", worst->largestRange / 1e3)
+                       : fmt::format("largest stress range {:.1f} MPa", worst->largestRange / 1e6),
+        worst->tension ? "" : fmt::format(" at the point at {:.0f} deg", worst->worstAngle),
+        worst->damage * factor);
   }
   summary.close();
   return text;
@@ -238,15 +255,16 @@ std::string writeClashDamage(const fs::path& dir, const model::Model& model,
     const analysis::ClashDamageBin* worst = nullptr;
     int above = 0;
     for (const analysis::ClashDamageBin& b : d.bins) {
-      out.write(fmt::format("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n", core::csvField(name), b.from, b.to, b.impacts,
-                            b.impactsAbove, b.energy, b.largestEnergy, b.largestVelocity));
+      out.write(fmt::format("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n", core::csvField(name), b.from,
+                            b.to, b.impacts, b.impactsAbove, b.energy, b.largestEnergy, b.largestVelocity));
       if (b.impacts > 0 && (!worst || b.energy > worst->energy)) worst = &b;
       above += b.impactsAbove;
     }
     if (worst)
       text += fmt::format(
-          "  line '{}': {} impacts ({} above {:g} J); most energy {:.4g} J in {} impacts at {:.1f}-{:.1f} m\n", name,
-          d.impacts(), above, energyThreshold, worst->energy, worst->impacts, worst->from, worst->to);
+          "  line '{}': {} impacts ({} above {:g} J); most energy {:.4g} J in {} impacts at {:.1f}-{:.1f} "
+          "m\n",
+          name, d.impacts(), above, energyThreshold, worst->energy, worst->impacts, worst->from, worst->to);
   }
   out.close();
   return text.empty() ? std::string() : "clash damage (contact/clash_damage.csv):\n" + text;
