@@ -62,7 +62,8 @@ TEST(Cli, CheckAndRunRefuseAModelTheMachineCannotHold) {
   EXPECT_NE(fits.output.find("contact candidate pairs"), std::string::npos) << fits.output;
   const Outcome check = runCli("check " + model + " --memory-available-mb 1");
   EXPECT_EQ(check.code, 1) << check.output;
-  EXPECT_NE(check.output.find(model + ": a run of this model needs about"), std::string::npos) << check.output;
+  EXPECT_NE(check.output.find(model + ": a run of this model needs about"), std::string::npos)
+      << check.output;
   EXPECT_NE(check.output.find("Remedies"), std::string::npos) << check.output;
   const fs::path out = fs::temp_directory_path() / "tangle_cli_memory_refused";
   fs::remove_all(out);
@@ -89,6 +90,29 @@ TEST(Cli, StaticRunWritesResults) {
   int rows = 0;
   for (std::string row; std::getline(csv, row);) ++rows;
   EXPECT_EQ(rows, 201);  // 200 elements
+}
+
+// Issue 45: a transient run (examples/drilling-riser-drift: the DP unit drifts 85 m, the mooring line's
+// tension mean moves between the halves of its record) says once that it has no storm extremes, and why,
+// and lists the largest values seen, instead of a reason per line end, vessel and pair; the storm's files
+// keep the reasons, row by row.
+TEST(Cli, TransientRunSaysSoOnceInsteadOfStormExtremes) {
+  const fs::path out = fs::temp_directory_path() / "tangle_cli_transient";
+  fs::remove_all(out);
+  const Outcome o = runCli("run " + std::string(tangle::test::kExamplesDir) +
+                           "/drilling-riser-drift/model.yaml -o " + out.string() + " --no-plots --no-report");
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("extreme statistics (dynamics/statistics.csv): none: the run is a transient"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("  vessel 'drilling_unit': offset 85."), std::string::npos) << o.output;
+  EXPECT_NE(o.output.find("  lines 'mooring' / 'riser': smallest clearance -0.00"), std::string::npos)
+      << o.output;
+  EXPECT_EQ(o.output.find("no storm extreme"), std::string::npos) << o.output;
+  std::ifstream csv(out / "dynamics" / "statistics.csv");
+  std::stringstream rows;
+  rows << csv.rdbuf();
+  EXPECT_NE(rows.str().find("not stationary"), std::string::npos) << rows.str();
 }
 
 // Where statics put each vessel: statics/vessels.csv, and the free vessel's position in the log. The fixed

@@ -68,6 +68,11 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
                                    const std::vector<std::array<int, 2>>& pairs,
                                    const std::vector<analysis::PeakTracker>& clearance, double storm) {
   std::string text;
+  // Without a single credible fit the log says so once, and whether the run is a transient (a drift, a
+  // release, an accident: a line end's tension not stationary), and lists the largest values seen, not
+  // every item's reason (the files keep them, item by item).
+  bool anyCredible = false, transient = false;
+  std::string largest;
   // Line ends (the fairlead and anchor tensions of DNV-OS-E301 and API RP 2SK).
   {
     core::OutputFile out(dir / "dynamics" / "statistics.csv");
@@ -80,6 +85,10 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
         out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B',
                               tracker.samples(), tracker.duration(), storm) +
                   estimateFields(e, tracker.samples()) + "\n");
+        if (end == 1 && e.credible()) anyCredible = true;
+        if (end == 1 && e.doubt.rfind("not stationary", 0) == 0) transient = true;
+        if (end == 1 && tracker.samples() > 0)
+          largest += fmt::format("  line '{}' end B: {:.1f} kN\n", lines[l].name, e.maximum / 1000.0);
         if (end == 1 && e.credible())
           text += fmt::format(
               "  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
@@ -122,6 +131,7 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       out.write(row + "\n");
     }
     out.close();
+    if (worstTension > 0.0 || worstMoment > 0.0) anyCredible = true;
     if (worstTension == 0.0 && worstMoment == 0.0)
       text += fmt::format(
           "  line '{}' along its length: no storm extreme at any node (dynamics/{}/statistics.csv says "
@@ -146,6 +156,9 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       out.write(fmt::format("{},{},{:.6f},{:.1f}", core::csvField(model.vessels()[v].name),
                             offsets[v].samples(), offsets[v].duration(), storm) +
                 estimateFields(e, offsets[v].samples()) + "\n");
+      if (e.credible()) anyCredible = true;
+      if (offsets[v].samples() > 0)
+        largest += fmt::format("  vessel '{}': offset {:.2f} m\n", model.vessels()[v].name, e.maximum);
       if (e.credible())
         text += fmt::format(
             "  vessel '{}': most probable maximum offset {:.2f} m (Weibull), largest in the run {:.2f} m\n",
@@ -170,6 +183,9 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
                             clearance[p].samples(), clearance[p].duration(), storm) +
                 estimateFields(e, clearance[p].samples(), -1.0) + "\n");
       const double margin = model.spec().contact.clearanceMargin;
+      if (e.credible()) anyCredible = true;
+      if (clearance[p].samples() > 0 && -e.maximum < margin * (1.0 - 1e-12))
+        largest += fmt::format("  lines '{}' / '{}': smallest clearance {:.3f} m\n", a, b, -e.maximum);
       if (clearance[p].samples() > 0 && -e.maximum >= margin * (1.0 - 1e-12))
         // Beyond the margin the clearance is recorded as the margin (RunOutputs): not a clearance to report.
         text +=
@@ -185,7 +201,19 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
     }
     out.close();
   }
-  return text.empty() ? std::string() : "extreme statistics (dynamics/statistics.csv):\n" + text;
+  if (text.empty()) return {};
+  if (!anyCredible)
+    return fmt::format(
+               "extreme statistics (dynamics/statistics.csv): none: {}; each file says why, item by item. "
+               "The "
+               "largest values in the run:\n",
+               transient
+                   ? "the run is a transient, not a stationary storm (a drift, a release, an accident: the "
+                     "mean of a line end's tension moves between the record's halves)"
+                   : "no record of the run gives a credible fit (too few peaks, a Weibull shape out of "
+                     "range, or a steady response)") +
+           largest;
+  return "extreme statistics (dynamics/statistics.csv):\n" + text;
 }
 
 std::string writeFatigue(const fs::path& dir, const model::Model& model,
