@@ -12,7 +12,8 @@ ResponseStatistics::ResponseStatistics(const std::vector<solver::LineSnapshot>& 
   for (std::size_t l = 0; l < initial.size(); ++l) {
     const solver::LineSnapshot& s = initial[l];
     m_lines[l].tension.resize(s.tension.size());
-    const bool bending = std::any_of(s.bendingMoment.begin(), s.bendingMoment.end(), [](double m) { return m != 0.0; });
+    const bool bending =
+        std::any_of(s.bendingMoment.begin(), s.bendingMoment.end(), [](double m) { return m != 0.0; });
     if (bending) m_lines[l].moment.resize(s.bendingMoment.size());
   }
 }
@@ -36,9 +37,10 @@ ExtremeEstimate extremeEstimate(const PeakTracker& tracker, double stormDuration
   e.meanShift = tracker.meanShift();
   const std::size_t count = e.peaks.peaks.size();
   if (count < 2 || !(e.peaks.upcrossingPeriod > 0.0)) {
-    e.doubt = fmt::format("{} peak(s): the record crosses its mean upwards fewer than twice (a steady or monotonic "
-                          "response, or a record too short)",
-                          count);
+    e.doubt = fmt::format(
+        "{} peak(s): the record crosses its mean upwards fewer than twice (a steady or monotonic "
+        "response, or a record too short)",
+        count);
     return e;
   }
   e.valid = true;
@@ -47,15 +49,16 @@ ExtremeEstimate extremeEstimate(const PeakTracker& tracker, double stormDuration
   e.weibull = fitWeibull(e.peaks);
   e.rayleighMpm = e.rayleigh.mostProbableMaximum(e.peaks.mean, n);
   e.weibullMpm = e.weibull.mostProbableMaximum(e.peaks.mean, n);
-  if (std::abs(e.meanShift) > ExtremeEstimate::kMaximumMeanShift)
-    e.doubt = fmt::format("not stationary: the mean of the record's second half differs from the first's by {:.2f} "
-                          "standard deviations (a transient, not a storm)",
-                          e.meanShift);
+  if (e.transient())
+    e.doubt = fmt::format(
+        "not stationary: the mean of the record's second half differs from the first's by {:.2f} "
+        "standard deviations (a transient, not a storm)",
+        e.meanShift);
   else if (count < static_cast<std::size_t>(ExtremeEstimate::kMinimumPeaks))
     e.doubt = fmt::format("{} peaks, fewer than {}", count, ExtremeEstimate::kMinimumPeaks);
   else if (!(e.weibull.shape >= ExtremeEstimate::kShapeLow && e.weibull.shape <= ExtremeEstimate::kShapeHigh))
-    e.doubt = fmt::format("Weibull shape {:.2f} outside [{}, {}]", e.weibull.shape, ExtremeEstimate::kShapeLow,
-                          ExtremeEstimate::kShapeHigh);
+    e.doubt = fmt::format("Weibull shape {:.2f} outside [{}, {}]", e.weibull.shape,
+                          ExtremeEstimate::kShapeLow, ExtremeEstimate::kShapeHigh);
   else if (tracker.duration() < stormDuration && std::min(e.rayleighMpm, e.weibullMpm) < e.maximum)
     e.doubt = "most probable maximum of the storm below the largest value of a shorter record";
   return e;

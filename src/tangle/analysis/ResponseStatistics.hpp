@@ -6,6 +6,7 @@
 /// series: bounded memory, however long the run).
 /// Units: those of the series (N, N m, m); times [s].
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -19,9 +20,9 @@ class ResponseStatistics {
  public:
   /// The trackers of one line.
   struct Line {
-    PeakTracker endA, endB;                  ///< end tensions [N]
-    std::vector<PeakTracker> tension;        ///< effective tension per node [N]
-    std::vector<PeakTracker> moment;         ///< bending moment per node [N m] (empty for a cable line)
+    PeakTracker endA, endB;            ///< end tensions [N]
+    std::vector<PeakTracker> tension;  ///< effective tension per node [N]
+    std::vector<PeakTracker> moment;   ///< bending moment per node [N m] (empty for a cable line)
   };
 
   /// @param initial the lines at the start (node counts; lines without bending get no moment trackers)
@@ -52,6 +53,8 @@ struct ExtremeEstimate {
   /// a storm); or a most probable maximum below the largest value of a record shorter than the storm.
   std::string doubt;
   bool credible() const { return valid && doubt.empty(); }
+  /// The record's mean moves between its halves by more than kMaximumMeanShift standard deviations.
+  bool transient() const { return valid && std::abs(meanShift) > kMaximumMeanShift; }
   double meanShift = 0.0;  ///< PeakTracker::meanShift of the record [standard deviations]
   static constexpr int kMinimumPeaks = 20;
   static constexpr double kShapeLow = 1.5, kShapeHigh = 3.0;

@@ -85,17 +85,18 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
         out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B',
                               tracker.samples(), tracker.duration(), storm) +
                   estimateFields(e, tracker.samples()) + "\n");
-        if (end == 1 && e.credible()) anyCredible = true;
-        if (end == 1 && e.doubt.rfind("not stationary", 0) == 0) transient = true;
-        if (end == 1 && tracker.samples() > 0)
+        if (end == 1 && tracker.samples() > 0) {
           largest += fmt::format("  line '{}' end B: {:.1f} kN\n", lines[l].name, e.maximum / 1000.0);
-        if (end == 1 && e.credible())
+          transient = transient || e.transient();
+        }
+        if (end == 1 && e.credible()) {
+          anyCredible = true;
           text += fmt::format(
               "  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
               "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
               lines[l].name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
               e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
-        else if (end == 1 && tracker.samples() > 0)
+        } else if (end == 1 && tracker.samples() > 0)
           text += fmt::format("  line '{}' end B: largest in the run {:.1f} kN; no storm extreme: {}\n",
                               lines[l].name, e.maximum / 1000.0, e.doubt);
       }
@@ -156,9 +157,9 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       out.write(fmt::format("{},{},{:.6f},{:.1f}", core::csvField(model.vessels()[v].name),
                             offsets[v].samples(), offsets[v].duration(), storm) +
                 estimateFields(e, offsets[v].samples()) + "\n");
-      if (e.credible()) anyCredible = true;
       if (offsets[v].samples() > 0)
         largest += fmt::format("  vessel '{}': offset {:.2f} m\n", model.vessels()[v].name, e.maximum);
+      anyCredible = anyCredible || e.credible();
       if (e.credible())
         text += fmt::format(
             "  vessel '{}': most probable maximum offset {:.2f} m (Weibull), largest in the run {:.2f} m\n",
@@ -183,11 +184,12 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
                             clearance[p].samples(), clearance[p].duration(), storm) +
                 estimateFields(e, clearance[p].samples(), -1.0) + "\n");
       const double margin = model.spec().contact.clearanceMargin;
-      if (e.credible()) anyCredible = true;
-      if (clearance[p].samples() > 0 && -e.maximum < margin * (1.0 - 1e-12))
+      // Beyond the margin the clearance is recorded as the margin (RunOutputs): not a clearance to report.
+      const bool beyondMargin = -e.maximum >= margin * (1.0 - 1e-12);
+      anyCredible = anyCredible || e.credible();
+      if (clearance[p].samples() > 0 && !beyondMargin)
         largest += fmt::format("  lines '{}' / '{}': smallest clearance {:.3f} m\n", a, b, -e.maximum);
-      if (clearance[p].samples() > 0 && -e.maximum >= margin * (1.0 - 1e-12))
-        // Beyond the margin the clearance is recorded as the margin (RunOutputs): not a clearance to report.
+      if (clearance[p].samples() > 0 && beyondMargin)
         text +=
             fmt::format("  lines '{}' / '{}': never within the clearance margin ({:g} m)\n", a, b, margin);
       else if (e.credible())
