@@ -68,7 +68,7 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
   const auto& diameter = m_model->nodeContactDiameter();
   // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
-  const bool smoothCables = m_model->spec().contact.formulation == model::ContactFormulation::Distributed;
+  const bool smoothCables = m_model->spec().contact.smoothCables();
   // Surface distance from x to segment j of line b (the clearance before x's own radius).
   const auto segmentDistance = [&](const Vec3& x, int j) {
     const int m1 = b.firstNode + j, m2 = m1 + 1;

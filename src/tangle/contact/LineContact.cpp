@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <stdexcept>
 #include <tuple>
 
 #include "tangle/contact/ContactKinematics.hpp"
@@ -90,8 +91,13 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
     if (ls.endA.kind != model::EndKind::Free || ls.endB.kind != model::EndKind::Free)
       m_lineMassWithAdded[l] = kInf;
   }
-  if (spec.formulation == model::ContactFormulation::Distributed)
+  if (spec.formulation == model::ContactFormulation::Distributed) {
+    if (spec.model == model::ImpactModel::Impulse)
+      throw std::invalid_argument(
+          "contact: the velocity-jump (impulse) model belongs to the point formulation: set the "
+          "formulation to point, or use the penalty model");
     m_distributed = std::make_unique<DistributedContact>(model, spec, m_radius);
+  }
 }
 
 double LineContact::stiffness(int a, int b) const {

@@ -323,6 +323,11 @@ struct ContactSpec {
   double damageBinLength = 1.0;
   /// Impacts with an energy above this are counted per bin (DNV-RP-F203's tolerable impact energy) [J].
   double damageEnergyThreshold = 0.0;
+
+  /// True when contact measures cables, as beams, on their C1 centrelines (the distributed formulation
+  /// of an enabled contact, contact/SmoothCentreline.hpp); otherwise a cable is its chords. The clash
+  /// report and the clearance envelope measure on the same curve as the contact.
+  bool smoothCables() const { return enabled && formulation == ContactFormulation::Distributed; }
 };
 
 /// Wake interference of one upstream line on one downstream line (docs/theory.md sec. 12): the steady

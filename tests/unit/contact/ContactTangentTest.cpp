@@ -55,15 +55,16 @@ TEST(ContactKinematics, DistanceHessianMatchesFiniteDifferences) {
       fdGrad[j] = (kp.distance - km.distance) / (2 * h);
     }
     EXPECT_LT((fdGrad - k.gradient).cwiseAbs().maxCoeff(), 1e-8) << "mode " << mode;
-    EXPECT_LT((fd - k.hessian).cwiseAbs().maxCoeff(), 1e-5 * k.hessian.cwiseAbs().maxCoeff()) << "mode " << mode;
+    EXPECT_LT((fd - k.hessian).cwiseAbs().maxCoeff(), 1e-5 * k.hessian.cwiseAbs().maxCoeff())
+        << "mode " << mode;
   }
 }
 
 // Two pinned cables; line B (the master) straight along x, line A bent over it at `angleDeg`.
 struct TangentCase {
   double angleDeg;
-  double depth;        // largest penetration [m]
-  bool beams = false;  // steel beams (smooth centreline, SmoothCentreline.hpp) instead of cables
+  double depth;              // largest penetration [m]
+  bool beams = false;        // steel beams (smooth centreline, SmoothCentreline.hpp) instead of cables
   bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
 };
 
@@ -74,16 +75,18 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
   model::ModelSpec spec;
   spec.sourceFile = "tangent (test)";
   spec.environment.waterDepth = 100.0;
-  spec.lineTypes["c"] = tc.beams ? test::solidRodType("c", 0.1, 2.1e11, 7850.0) : test::cableType("c", 0.1, 20.0, 1e8);
+  spec.lineTypes["c"] =
+      tc.beams ? test::solidRodType("c", 0.1, 2.1e11, 7850.0) : test::cableType("c", 0.1, 20.0, 1e8);
   const double ang = degToRad(tc.angleDeg);
   const Vec3 dir(std::cos(ang), std::sin(ang), 0.0);
   spec.lines = {test::simpleLine("a", "c", 6.0, 12, model::EndKind::Pinned, Vec3(0, 0, 0.1) - 3.0 * dir,
                                  model::EndKind::Pinned, Vec3(0, 0, 0.1) + 3.0 * dir),
-                test::simpleLine("b", "c", 6.0, 12, model::EndKind::Pinned, Vec3(-3, 0, 0), model::EndKind::Pinned,
-                                 Vec3(3, 0, 0))};
+                test::simpleLine("b", "c", 6.0, 12, model::EndKind::Pinned, Vec3(-3, 0, 0),
+                                 model::EndKind::Pinned, Vec3(3, 0, 0))};
   spec.contact.enabled = true;
   spec.contact.excludeConnections = false;  // the pinned ends are close to each other on purpose
-  if (tc.distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      tc.distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   const model::Model m(spec);
   contact::LineContact contact(m, m.spec().contact, 0.01);
   model::State state = m.initialState();
@@ -91,7 +94,9 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
   const model::Line& a = m.lines()[0];
   for (int i = 0; i < a.nodeCount; ++i) {
     const double s = -3.0 + 6.0 * i / (a.nodeCount - 1);
-    state.position[a.firstNode + i] = s * dir + Vec3(0.13, 0, 0) + Vec3(0, 0.02 * std::sin(s), 0.1 - tc.depth * (1 - s * s / 9.0) + 1e-4 * i);
+    state.position[a.firstNode + i] =
+        s * dir + Vec3(0.13, 0, 0) +
+        Vec3(0, 0.02 * std::sin(s), 0.1 - tc.depth * (1 - s * s / 9.0) + 1e-4 * i);
   }
   const model::DofMap& dofs = m.dofs();
   auto forceAt = [&](const model::State& st, solver::SystemMatrix* matrix) {
@@ -134,7 +139,8 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
           }
           if (e > worst) {
             worst = e;
-            where = fmt::format("row dof {} col dof {}: fd {} analytic {}", r, dof, col[r], dense(dofs.equation(r), dofs.equation(dof)));
+            where = fmt::format("row dof {} col dof {}: fd {} analytic {}", r, dof, col[r],
+                                dense(dofs.equation(r), dofs.equation(dof)));
           }
         }
     }
@@ -151,21 +157,24 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Angles, ContactTangent,
-                         ::testing::Values(TangentCase{0.0, 0.01}, TangentCase{4.0, 0.01}, TangentCase{8.0, 0.005}, TangentCase{25.0, 0.005},
+                         ::testing::Values(TangentCase{0.0, 0.01}, TangentCase{4.0, 0.01},
+                                           TangentCase{8.0, 0.005}, TangentCase{25.0, 0.005},
                                            TangentCase{90.0, 0.005}, TangentCase{25.0, 0.005, true},
                                            TangentCase{90.0, 0.005, true}),
                          [](const ::testing::TestParamInfo<TangentCase>& p) {
-                           return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
+                           return (p.param.beams ? "beams_deg" : "deg") +
+                                  std::to_string(static_cast<int>(p.param.angleDeg));
                          });
 
 // The distributed formulation (Gauss points along both lines against the other's C1 centreline).
-INSTANTIATE_TEST_SUITE_P(Distributed, ContactTangent,
-                         ::testing::Values(TangentCase{0.0, 0.01, false, true}, TangentCase{8.0, 0.005, false, true},
-                                           TangentCase{25.0, 0.005, false, true}, TangentCase{90.0, 0.005, false, true},
-                                           TangentCase{90.0, 0.005, true, true}),
-                         [](const ::testing::TestParamInfo<TangentCase>& p) {
-                           return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Distributed, ContactTangent,
+    ::testing::Values(TangentCase{0.0, 0.01, false, true}, TangentCase{8.0, 0.005, false, true},
+                      TangentCase{25.0, 0.005, false, true}, TangentCase{90.0, 0.005, false, true},
+                      TangentCase{90.0, 0.005, true, true}),
+    [](const ::testing::TestParamInfo<TangentCase>& p) {
+      return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
+    });
 
 }  // namespace
 }  // namespace tangle

@@ -99,7 +99,8 @@ void runCapstan(bool distributed) {
   spec.contact.restitution = 0.5;
   spec.contact.frictionCoefficient = kMu;
   spec.contact.pairs = {{"bollard", "rope"}};
-  if (distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.dynamics.enabled = true;
   spec.dynamics.duration = 8.0;
   spec.dynamics.timeStep = 0.005;

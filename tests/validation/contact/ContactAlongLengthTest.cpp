@@ -96,7 +96,8 @@ void restingString(bool distributed, bool dynamic = false) {
                 test::simpleLine("support", "rigid", 22.0, 22, model::EndKind::Pinned, Vec3(-11, 0, kZ),
                                  model::EndKind::Pinned, Vec3(11, 0, kZ))};
   spec.contact.enabled = true;
-  if (distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   if (dynamic) {
     spec.dynamics.enabled = true;
     spec.dynamics.duration = 12.0;
@@ -480,7 +481,8 @@ TEST_P(InclinedFriction, HoldsBelowMuNAndSlidesAtMuNAbove) {
   spec.contact.frictionCoefficient = kMu;
   spec.contact.stiffness = 1e6;  // N/m per point (1.6e6 N/m2 along the length): resting penetration ~0.8 mm
   spec.contact.restitution = 0.1;
-  if (GetParam().distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      GetParam().distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.dynamics.enabled = true;
   spec.dynamics.duration = 1.0;
   spec.dynamics.timeStep = 0.01;

@@ -112,7 +112,8 @@ TEST_P(DrapeDynamics, ShortWireDroppedAcrossTautWireComesToRestDraped) {
   spec.contact.enabled = true;
   spec.contact.restitution = e;
   spec.contact.frictionCoefficient = GetParam().friction;
-  if (GetParam().distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      GetParam().distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.dynamics.enabled = true;
   spec.dynamics.duration = 12.0;
   spec.dynamics.timeStep = 0.01;

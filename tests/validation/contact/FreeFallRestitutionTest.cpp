@@ -95,7 +95,8 @@ TEST_P(FreeFall, ReboundHeightIsRestitutionSquaredTimesDropHeight) {
   spec.contact.restitution = c.restitution;
   spec.contact.model = c.model;
   spec.contact.stiffness = c.stiffness;
-  if (c.distributed) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      c.distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.dynamics.enabled = true;
   const double fallTime = std::sqrt(2.0 * kDrop / kStandardGravity);
   spec.dynamics.duration = fallTime * (1.0 + c.restitution) + 0.05;  // just past the rebound apex

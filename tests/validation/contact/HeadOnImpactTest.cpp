@@ -50,7 +50,8 @@ struct Case {
   double restitution;
   model::ImpactModel model;
   int elements;
-  double stiffness;  // [N/m], 0 = automatic
+  double stiffness;          // [N/m], 0 = automatic
+  bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
 };
 
 class HeadOn : public ::testing::TestWithParam<Case> {};
@@ -70,6 +71,8 @@ TEST_P(HeadOn, ConservesMomentumAndRestoresESquaredOfTheKineticEnergy) {
   spec.contact.enabled = true;
   spec.contact.restitution = c.restitution;
   spec.contact.model = c.model;
+  spec.contact.formulation =
+      c.distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.contact.stiffness = c.stiffness;
   spec.dynamics.enabled = true;
   spec.dynamics.duration = 0.05;  // touch at 2.5 ms, impact < 3 ms, then 45 ms of free flight
@@ -165,6 +168,24 @@ INSTANTIATE_TEST_SUITE_P(FlexibleBars, HeadOn,
                          ::testing::Values(Case{0.5, model::ImpactModel::Penalty, 3, 1e6},
                                            Case{0.8, model::ImpactModel::Penalty, 3, 1e6},
                                            Case{1.0, model::ImpactModel::Penalty, 3, 1e6}),
+                         caseName);
+
+// The distributed formulation (issue 43; restitution by hysteresis, docs/theory.md 9.11), e = 1: KE ratio
+// +0.35 % (one element, automatic stiffness) and +1e-4 (three elements, 1e6 N/m). (Before the impact
+// limit judged a just-touching patch by its own stiffness, the one-element bars' steps grew through the
+// impact and they left with 9.8 % more energy than they came with: DistributedContact::impactStepLimit.)
+INSTANTIATE_TEST_SUITE_P(Distributed, HeadOn,
+                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 1, 0.0, true},
+                                           Case{1.0, model::ImpactModel::Penalty, 3, 1e6, true}),
+                         caseName);
+
+// Known failures (run by ctest as expected to fail, validation.distributed_head_on_expected_fail), e = 0.5:
+// one-element bars rebound with KE ratio 0.2666 for 0.25 (+6.6 %: an effective e of 0.516; Eq. 5 mass
+// +1.5 %, 62.59 kg for 61.65); the three-element bars' KE ratio is right (+9e-6) but their event is still
+// open at the end of the 50 ms run.
+INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, HeadOn,
+                         ::testing::Values(Case{0.5, model::ImpactModel::Penalty, 1, 0.0, true},
+                                           Case{0.5, model::ImpactModel::Penalty, 3, 1e6, true}),
                          caseName);
 
 // End-on impact: a bar falling end first onto the side of a heavy line (a free line end hitting another

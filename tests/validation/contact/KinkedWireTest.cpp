@@ -99,7 +99,8 @@ TEST_P(KinkedWire, TensionAndRiserLoadFollowTheFrictionlessWrapWhileTheKinkSlide
   spec.contact.stiffness =
       1e9;  // [N/m] a crossing's: the wire rests ~1 mm into the riser (0.3 % of T, below)
   spec.contact.pairs = {{"riser", "wire"}};
-  if (GetParam()) spec.contact.formulation = model::ContactFormulation::Distributed;
+  spec.contact.formulation =
+      GetParam() ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.dynamics.enabled = true;
   spec.dynamics.duration = 20.0;
   spec.dynamics.timeStep = 0.01;
