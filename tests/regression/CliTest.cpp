@@ -147,6 +147,98 @@ TEST(Cli, StaticsReportsWhereTheVesselsAre) {
   EXPECT_EQ(freeRow.find("nan"), std::string::npos) << freeRow;
 }
 
+/// Reads a CSV file into its header and rows of numbers.
+std::pair<std::vector<std::string>, std::vector<std::vector<double>>> readNumericCsv(const fs::path& file) {
+  std::ifstream in(file);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> header;
+  {
+    std::stringstream fields(line);
+    for (std::string cell; std::getline(fields, cell, ',');) header.push_back(cell);
+  }
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream fields(line);
+    std::vector<double> row;
+    for (std::string cell; std::getline(fields, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return {header, rows};
+}
+
+// Issue 45: dynamics/vessels.csv gives, beside each vessel's low-frequency pose, the wave-frequency (RAO)
+// motion its line ends get. A fixed vessel with heave 0.5 m/m (lag 0) and pitch 2 deg/m (lag 90) in a
+// regular wave of 2 m (amplitude a = 1 m) along its axis: the _wf_z_ column's amplitude is 0.5 m and
+// _wf_ry_ 2 deg (first order, RaoMotion.hpp; sampled every 0.1 s, a tenth of a percent below the peak at
+// most), the low-frequency pose stays 0; and the fairlead, 10 m forward and 5 m down, moves as the vessel
+// point: z = z0 + wf_z - 10 m x wf_ry (small rotation about +y; rad), to the columns' printed digits.
+TEST(Cli, VesselsCsvGivesTheWaveFrequencyMotionTheFairleadsGet) {
+  const fs::path dir = fs::temp_directory_path() / "tangle_cli_vessel_wf";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  {
+    std::ofstream model(dir / "model.yaml");
+    model << R"(title: fixed vessel with RAOs
+environment:
+  water_depth: 100
+  waves: {type: airy, height: 2.0, period: 10.0, azimuth: 0}
+line_types:
+  - {name: wire, outer_diameter: 0.08, mass_per_length: 30, axial_stiffness: 5.0e8}
+vessels:
+  - name: ship
+    mode: fixed
+    position: [0, 0, 0]
+    heading: 0
+    raos:
+      periods: [5, 15]
+      headings: [0, 180]
+      rows:
+        - [5, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
+        - [5, 180, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
+        - [15, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
+        - [15, 180, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
+lines:
+  - name: tether
+    end_a: {type: anchored, position: [10, 0, -100]}
+    end_b: {type: vessel, vessel: ship, position: [10, 0, -5]}
+    sections: [{type: wire, length: 94.9, elements: 10}]
+dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
+)";
+  }
+  const fs::path out = dir / "out";
+  const Outcome o =
+      runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report -q");
+  ASSERT_EQ(o.code, 0) << o.output;
+  const auto [header, rows] = readNumericCsv(out / "dynamics" / "vessels.csv");
+  const std::vector<std::string> expected{"time_s",        "ship_x_m",    "ship_y_m",       "ship_z_m",
+                                          "ship_rx_deg",   "ship_ry_deg", "ship_rz_deg",    "ship_wf_x_m",
+                                          "ship_wf_y_m",   "ship_wf_z_m", "ship_wf_rx_deg", "ship_wf_ry_deg",
+                                          "ship_wf_rz_deg"};
+  ASSERT_EQ(header, expected);
+  const auto [lineHeader, fairleadZ] = readNumericCsv(out / "dynamics" / "tether" / "z_m.csv");
+  ASSERT_EQ(fairleadZ.size(), rows.size());
+  double heave = 0.0, pitch = 0.0, worstFairlead = 0.0;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::vector<double>& r = rows[i];
+    ASSERT_EQ(r.size(), expected.size());
+    for (int k = 1; k <= 6; ++k) EXPECT_NEAR(r[k], 0.0, 1e-4) << "low-frequency pose at t = " << r[0];
+    EXPECT_NEAR(r[7], 0.0, 1e-4);  // no surge, sway, roll or yaw RAO
+    EXPECT_NEAR(r[8], 0.0, 1e-4);
+    EXPECT_NEAR(r[10], 0.0, 1e-5);
+    EXPECT_NEAR(r[12], 0.0, 1e-5);
+    if (r[0] >= 20.0) {
+      heave = std::max(heave, std::abs(r[9]));
+      pitch = std::max(pitch, std::abs(r[11]));
+    }
+    const double predicted = -5.0 + r[9] - 10.0 * r[11] * 3.141592653589793 / 180.0;
+    worstFairlead = std::max(worstFairlead, std::abs(fairleadZ[i].back() - predicted));
+  }
+  EXPECT_NEAR(heave, 0.5, 0.001 * 0.5);
+  EXPECT_NEAR(pitch, 2.0, 0.001 * 2.0);
+  EXPECT_LT(worstFairlead, 2e-4) << "the fairlead does not follow the vessel point";
+}
+
 // Issue 9: the riser-interference example end to end: the wake closes the gap between the risers, the
 // clearance check writes its envelope (static and dynamic, every node of both risers) and a verdict.
 TEST(Cli, RiserInterferenceExampleWritesTheClearanceCheck) {

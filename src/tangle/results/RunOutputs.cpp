@@ -51,14 +51,15 @@ std::string readTextFile(const fs::path& p) {
 
 /// Horizontal distance [m] of vessel `v`'s reference point at `state` from its position in the model.
 double horizontalOffset(const model::Model& m, const model::State& state, std::size_t v) {
-  const Vec3 d =
-      state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] - m.spec().vessels[v].position;
+  const Vec3 d = state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] -
+                 m.spec().vessels[v].position;
   return std::hypot(d.x(), d.y());
 }
 
 /// The largest horizontal offset [m] of each vessel so far, updated with `state`.
 void updateMaxOffsets(const model::Model& m, const model::State& state, std::vector<double>& maxOffset) {
-  for (std::size_t v = 0; v < maxOffset.size(); ++v) maxOffset[v] = std::max(maxOffset[v], horizontalOffset(m, state, v));
+  for (std::size_t v = 0; v < maxOffset.size(); ++v)
+    maxOffset[v] = std::max(maxOffset[v], horizontalOffset(m, state, v));
 }
 
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
@@ -164,7 +165,8 @@ ResultFiles resultFiles(const model::Model& m, bool staticsOnly) {
   if (!d.enabled || staticsOnly) return {true, true};
   // 10 quantities per node, ~13 characters per value ("-1.234567e+05,").
   const double records = std::floor(d.duration / d.outputInterval) + 1.0;
-  const double bytes = m.spec().output.timeHistories.valuesPerNode() * 13.0 * static_cast<double>(m.nodeCount()) * records;
+  const double bytes =
+      m.spec().output.timeHistories.valuesPerNode() * 13.0 * static_cast<double>(m.nodeCount()) * records;
   return {bytes <= model::OutputSpec::kAutoCsvLimit, true};
 }
 
@@ -375,6 +377,7 @@ bool RunOutputs::runDynamics() {
   // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
   // vector relative to the initial heading) against time.
   std::unique_ptr<core::OutputFile> vesselFile;
+  std::vector<int> waveFrequencyVessels;  // vessels with wave-frequency columns in vessels.csv
   const std::vector<std::string> vesselStems = [&] {
     std::vector<std::string> names;
     for (const auto& v : m.vessels()) names.push_back(v.name);
@@ -382,9 +385,18 @@ bool RunOutputs::runDynamics() {
   }();
   if (!m.vessels().empty()) {
     vesselFile = std::make_unique<core::OutputFile>(outDir / "dynamics" / "vessels.csv");
+    // Per vessel its low-frequency pose (the vessel node), then, where its line ends get one (RAOs and
+    // waves), the wave-frequency motion of its reference point (_wf_ columns, first order: the total is
+    // their sum).
     std::string header = "time_s";
-    for (const std::string& v : vesselStems)
-      header += fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", v);
+    for (int v = 0; v < static_cast<int>(vesselStems.size()); ++v) {
+      header += fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", vesselStems[v]);
+      if (vessels && vessels->waveFrequencyMotion(v, 0.0)) {
+        waveFrequencyVessels.push_back(v);
+        header += fmt::format(",{0}_wf_x_m,{0}_wf_y_m,{0}_wf_z_m,{0}_wf_rx_deg,{0}_wf_ry_deg,{0}_wf_rz_deg",
+                              vesselStems[v]);
+      }
+    }
     vesselFile->write(header + "\n");
   }
   // Tensioners: stroke and stop force against time (every step; read on this thread, written by the
@@ -529,14 +541,25 @@ bool RunOutputs::runDynamics() {
         if (clash) clash->recordClearance(s);
         for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v)
           std::ranges::copy(m.vesselMotion(s, v), vesselMotion.begin() + 6 * v);
-        writer.submit([&, shared, time = s.time, motion = vesselMotion] {
+        std::vector<std::array<double, 6>> waveMotion;
+        for (const int v : waveFrequencyVessels)
+          waveMotion.push_back(*vessels->waveFrequencyMotion(v, s.time));
+        writer.submit([&, shared, time = s.time, motion = vesselMotion, waveMotion = std::move(waveMotion)] {
           recorder.record(time, *shared);
           if (h5) h5->record(time, *shared, motion);
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", time);
-            for (std::size_t k = 0; k < motion.size(); k += 6)
+            std::size_t wave = 0;
+            for (std::size_t k = 0; k < motion.size(); k += 6) {
               row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", motion[k], motion[k + 1],
                                  motion[k + 2], motion[k + 3], motion[k + 4], motion[k + 5]);
+              if (wave < waveFrequencyVessels.size() &&
+                  waveFrequencyVessels[wave] == static_cast<int>(k / 6)) {
+                const std::array<double, 6>& w = waveMotion[wave++];
+                row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", w[0], w[1], w[2], w[3], w[4],
+                                   w[5]);
+              }
+            }
             vesselFile->write(row + "\n");
             vesselFile->flush();
           }
@@ -550,7 +573,8 @@ bool RunOutputs::runDynamics() {
         b.positions.insert(b.positions.end(), s.position.begin(), s.position.end());
         updateMaxOffsets(m, s, maxOffset);
         if (s.time >= m.spec().dynamics.rampTime - 1e-9)
-          for (std::size_t v = 0; v < offsetPeaks.size(); ++v) offsetPeaks[v].add(s.time, horizontalOffset(m, s, v));
+          for (std::size_t v = 0; v < offsetPeaks.size(); ++v)
+            offsetPeaks[v].add(s.time, horizontalOffset(m, s, v));
         if (energy) energy->step(s, dt);
         if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
         if (tensionerFile) {
@@ -592,7 +616,8 @@ bool RunOutputs::runDynamics() {
   }
   if (clash) {
     std::vector<int> contactLines;
-    for (const auto& pair : sim.contact()->allowedPairs()) contactLines.insert(contactLines.end(), pair.begin(), pair.end());
+    for (const auto& pair : sim.contact()->allowedPairs())
+      contactLines.insert(contactLines.end(), pair.begin(), pair.end());
     std::sort(contactLines.begin(), contactLines.end());
     const model::ContactSpec& cs = m.spec().contact;
     const std::vector<analysis::LineClashDamage> damage = analysis::clashDamage(
@@ -604,7 +629,8 @@ bool RunOutputs::runDynamics() {
   writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
   {
     std::vector<BreakingLoadUse> use;
-    for (std::size_t l = 0; l < lines.size(); ++l) use.push_back(breakingLoadUse(m, l, recorder.ranges()[l].tensionMax));
+    for (std::size_t l = 0; l < lines.size(); ++l)
+      use.push_back(breakingLoadUse(m, l, recorder.ranges()[l].tensionMax));
     log.warning(breakingLoadWarnings(m, use, "during the dynamics"));
   }
   {

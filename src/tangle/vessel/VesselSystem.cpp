@@ -136,7 +136,7 @@ model::MotionValue VesselSystem::prescribedPose(int v, double t) const {
 }
 
 model::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, const Vec3& offset,
-                                               double t) const {
+                                                double t) const {
   model::MotionValue m;
   const VesselData& d = m_vessels[v];
   if (!d.rao) return m;
@@ -147,6 +147,19 @@ model::MotionValue VesselSystem::raoPointMotion(int v, const Mat3& rotation, con
   m.velocity = r.velocity.head<3>() + r.velocity.tail<3>().cross(arm);
   m.acceleration = r.acceleration.head<3>() + r.acceleration.tail<3>().cross(arm);
   return m;
+}
+
+std::optional<std::array<double, 6>> VesselSystem::waveFrequencyMotion(int v, double t) const {
+  const VesselData& d = m_vessels[static_cast<std::size_t>(v)];
+  if (!d.rao) return std::nullopt;
+  const RaoMotion::Motion r = d.rao->at(t, d.position0, core::ramp(t, m_rampTime).value);
+  constexpr double toDegrees = 180.0 / kPi;
+  return std::array<double, 6>{r.displacement(0),
+                               r.displacement(1),
+                               r.displacement(2),
+                               r.displacement(3) * toDegrees,
+                               r.displacement(4) * toDegrees,
+                               r.displacement(5) * toDegrees};
 }
 
 std::vector<model::PrescribedNode> VesselSystem::prescribedNodes() const {
@@ -264,14 +277,15 @@ BodyLoad VesselSystem::bodyLoad(const model::State& state, const VesselData& d,
   const Vec3 current =
       m_hydro->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0), request.time, false)
           .velocity;
-  return d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0, current,
-                        m_waveAmplitude, m_waveAzimuth, 1.0);
+  return d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0,
+                        current, m_waveAmplitude, m_waveAzimuth, 1.0);
 }
 
 Vec6 VesselSystem::holdLoad(const model::State& state, const VesselData& d) const {
   Vec6 hold;
   hold.head<3>() = -kHoldStiffness * (state.position[d.node] - d.position0);
-  hold.tail<3>() = -kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
+  hold.tail<3>() =
+      -kHoldRotationalStiffness * geometry::logMap(state.triad[d.node] * d.rotation0.transpose());
   return hold;
 }
 

@@ -8,14 +8,16 @@
 /// stiff link (penalty), or hangs from a tensioner (constant tension over a stroke, end stops), with an
 /// optional flex joint (rotational spring) for beam lines.
 
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
-#include "tangle/solver/Assembler.hpp"
 #include "tangle/model/PrescribedMotion.hpp"
+#include "tangle/solver/Assembler.hpp"
 #include "tangle/vessel/RaoMotion.hpp"
 #include "tangle/vessel/VesselLoads.hpp"
 
@@ -43,6 +45,12 @@ class VesselSystem final : public solver::LoadContributor {
   /// Global position [m] of a vessel point given in vessel axes at a state (without RAO motion).
   Vec3 vesselPoint(const model::State& state, int vessel, const Vec3& offset) const;
 
+  /// The wave-frequency (first-order RAO) motion of a vessel's reference point at time t [s], as its line
+  /// ends get it (prescribedNodes for held vessels, addLink for free ones): translations [m] and small
+  /// rotations [deg] about the global axes, added to the low-frequency pose of the vessel node. Empty where
+  /// there is none: no RAOs or no waves.
+  std::optional<std::array<double, 6>> waveFrequencyMotion(int vessel, double t) const;
+
   /// The vessels' contribution to the out-of-balance force at the line-end nodes (links and tensioners),
   /// full DOF vector; subtracting it from F leaves at those nodes the force of the line on the vessel.
   VecX endConnectionForces(const model::State& state, double time) const;
@@ -63,8 +71,8 @@ class VesselSystem final : public solver::LoadContributor {
   /// What acts on one vessel, for the equilibrium audit (analysis/EquilibriumAudit).
   struct VesselLoadReading {
     std::string name;
-    int node = 0;        ///< the vessel's node
-    bool free = false;   ///< solved for (VesselMode::Free); otherwise held, and its balance is a reaction
+    int node = 0;       ///< the vessel's node
+    bool free = false;  ///< solved for (VesselMode::Free); otherwise held, and its balance is a reaction
     /// Body loads (current, wind, wave drift, hydrostatics, damping), force [N] and moment about the
     /// reference point [N m], global axes (VesselLoads::loads).
     Vec6 body = Vec6::Zero();
@@ -73,7 +81,8 @@ class VesselSystem final : public solver::LoadContributor {
     std::vector<int> endNodes;  ///< line end nodes tied to it
   };
   /// The loads on every vessel at `state` (request.dynamic: with velocities).
-  std::vector<VesselLoadReading> loadReadings(const model::State& state, const solver::AssemblyRequest& request) const;
+  std::vector<VesselLoadReading> loadReadings(const model::State& state,
+                                              const solver::AssemblyRequest& request) const;
 
   /// True when the model has any vessel.
   bool empty() const { return m_vessels.empty(); }
@@ -101,7 +110,8 @@ class VesselSystem final : public solver::LoadContributor {
   };
 
   /// Body loads on a free vessel at `state` (VesselLoads::loads with its current; velocities in dynamics).
-  BodyLoad bodyLoad(const model::State& state, const VesselData& d, const solver::AssemblyRequest& request) const;
+  BodyLoad bodyLoad(const model::State& state, const VesselData& d,
+                    const solver::AssemblyRequest& request) const;
   /// Force and moment of the station-keeping springs of a vessel held in statics, on the vessel [N, N m].
   Vec6 holdLoad(const model::State& state, const VesselData& d) const;
   /// Pose (position, rotation) and 6-velocity/acceleration of a non-free vessel at time t.
