@@ -76,13 +76,13 @@ __all__ = [
 KN = 1.0e-3  # N -> kN
 DPI = 120
 
+# A cable line's tables have no bending moment columns (it has none): its figures leave that panel out.
 STATICS_COLUMNS = (
     "arc_length_m",
     "x_m",
     "y_m",
     "z_m",
     "effective_tension_N",
-    "bending_moment_Nm",
     "curvature_1_per_m",
 )
 RANGE_COLUMNS = (
@@ -90,9 +90,6 @@ RANGE_COLUMNS = (
     "tension_min_N",
     "tension_max_N",
     "tension_mean_N",
-    "bending_moment_min_Nm",
-    "bending_moment_max_Nm",
-    "bending_moment_mean_Nm",
     "curvature_min_1_per_m",
     "curvature_max_1_per_m",
     "curvature_mean_1_per_m",
@@ -226,16 +223,18 @@ def _no_data(fig: Figure, message: str) -> Figure:
 
 def statics_figure(table: Table, name: str = "", depth: float | None = None) -> Figure:
     """Static configuration of one line from a ``statics/<line>.csv`` table: profile (with the
-    seabed at ``z = -depth`` when ``depth`` [m] is given), effective tension and bending moment vs
-    arc length."""
+    seabed at ``z = -depth`` when ``depth`` [m] is given), effective tension and (a line with
+    bending stiffness) bending moment vs arc length."""
     _require(table, STATICS_COLUMNS, name or "statics table")
     s = _numeric(table, "arc_length_m", name)
     z = _numeric(table, "z_m", name)
     h = horizontal_distance(_numeric(table, "x_m", name), _numeric(table, "y_m", name))
 
-    fig = Figure(figsize=(8.0, 10.0), layout="constrained")
+    bending = "bending_moment_Nm" in table
+    fig = Figure(figsize=(8.0, 10.0 if bending else 7.0), layout="constrained")
     fig.suptitle(f"Statics: {name}" if name else "Statics")
-    ax_profile, ax_tension, ax_moment = fig.subplots(3, 1)
+    axes = fig.subplots(3 if bending else 2, 1)
+    ax_profile, ax_tension = axes[0], axes[1]
 
     ax_profile.plot(h, z, color="C0", marker=".", markersize=3, label=name or "line")
     if len(h):
@@ -250,25 +249,26 @@ def statics_figure(table: Table, name: str = "", depth: float | None = None) -> 
     _finish(ax_tension, "arc length from end A [m]", "effective tension [kN]")
     ax_tension.set_title("Effective tension")
 
-    ax_moment.plot(s, _numeric(table, "bending_moment_Nm", name) * KN, color="C2")
-    _finish(ax_moment, "arc length from end A [m]", "bending moment [kN m]")
-    ax_moment.set_title("Bending moment")
+    if bending:
+        axes[2].plot(s, _numeric(table, "bending_moment_Nm", name) * KN, color="C2")
+        _finish(axes[2], "arc length from end A [m]", "bending moment [kN m]")
+        axes[2].set_title("Bending moment")
     return fig
 
 
 def range_figure(table: Table, name: str = "") -> Figure:
     """Range graphs of one line from a ``dynamics/<line>/range.csv`` table: min / max envelope
-    (shaded) and mean of tension, bending moment and curvature vs arc length."""
+    (shaded) and mean of tension, bending moment (a line with bending stiffness) and curvature vs arc
+    length."""
     _require(table, RANGE_COLUMNS, name or "range table")
     s = _numeric(table, "arc_length_m", name)
-    fig = Figure(figsize=(8.0, 10.0), layout="constrained")
+    quantities = [("tension", "N", KN, "effective tension [kN]", "C1")]
+    if "bending_moment_min_Nm" in table:
+        quantities.append(("bending_moment", "Nm", KN, "bending moment [kN m]", "C2"))
+    quantities.append(("curvature", "1_per_m", 1.0, "curvature [1/m]", "C3"))
+    fig = Figure(figsize=(8.0, 10.0 if len(quantities) == 3 else 7.0), layout="constrained")
     fig.suptitle(f"Dynamic range: {name}" if name else "Dynamic range")
-    axes = fig.subplots(3, 1, sharex=True)
-    quantities = (
-        ("tension", "N", KN, "effective tension [kN]", "C1"),
-        ("bending_moment", "Nm", KN, "bending moment [kN m]", "C2"),
-        ("curvature", "1_per_m", 1.0, "curvature [1/m]", "C3"),
-    )
+    axes = fig.subplots(len(quantities), 1, sharex=True)
     for ax, (quantity, unit, scale, label, color) in zip(axes, quantities):
         lo = _numeric(table, f"{quantity}_min_{unit}", name) * scale
         hi = _numeric(table, f"{quantity}_max_{unit}", name) * scale

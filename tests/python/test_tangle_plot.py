@@ -303,6 +303,25 @@ def test_figures_have_the_expected_subplots(tmp: Path) -> None:
     assert len([ln for ln in fig.axes[0].get_lines() if not ln.get_label().startswith("_")]) == 2
 
 
+def test_cable_line_figures_leave_out_the_bending_moment(tmp: Path) -> None:
+    # Issue 45: a cable line's tables have no bending moment columns (tangle writes none for a line
+    # without bending stiffness): its figures show the others, no empty or zero panel.
+    s, x, y, z, _ = catenary(21, 0.0)
+    tension = 1.0e5 + 2.0e3 * (z + WATER_DEPTH)
+    curvature = np.full_like(s, 1.0e-4)
+    write_csv(tmp / "statics" / "chain.csv",
+              ["arc_length_m", "x_m", "y_m", "z_m", "effective_tension_N", "curvature_1_per_m"],
+              zip(s, x, y, z, tension, curvature))
+    write_csv(tmp / "dynamics" / "chain" / "range.csv",
+              ["arc_length_m", "tension_min_N", "tension_max_N", "tension_mean_N", "curvature_min_1_per_m",
+               "curvature_max_1_per_m", "curvature_mean_1_per_m"],
+              zip(s, 0.9 * tension, 1.1 * tension, tension, 0.5 * curvature, 2.0 * curvature, curvature))
+    fig = tangle_plot.statics_figure(tangle_plot.read_csv(tmp / "statics" / "chain.csv"), "chain", WATER_DEPTH)
+    assert [ax.get_ylabel() for ax in fig.axes] == ["z [m]", "effective tension [kN]"]
+    fig = tangle_plot.range_figure(tangle_plot.read_csv(tmp / "dynamics" / "chain" / "range.csv"), "chain")
+    assert [ax.get_ylabel() for ax in fig.axes] == ["effective tension [kN]", "curvature [1/m]"]
+
+
 # ---------------------------------------------------------------------------------------------
 
 

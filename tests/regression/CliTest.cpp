@@ -83,10 +83,9 @@ TEST(Cli, StaticRunWritesResults) {
   std::ifstream csv(out / "statics" / "mooring1.csv");
   std::string header;
   std::getline(csv, header);
-  EXPECT_EQ(
-      header,
-      "arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,bending_moment_x_Nm,"
-      "bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,rotation_y_deg,rotation_z_deg");
+  // A chain (a cable line: no bending stiffness) has no bending moment, torque or rotation columns
+  // (issue 45: no columns of zeros for what a line does not have).
+  EXPECT_EQ(header, "arc_length_m,x_m,y_m,z_m,effective_tension_N,curvature_1_per_m");
   int rows = 0;
   for (std::string row; std::getline(csv, row);) ++rows;
   EXPECT_EQ(rows, 201);  // 200 elements
@@ -113,6 +112,25 @@ TEST(Cli, TransientRunSaysSoOnceInsteadOfStormExtremes) {
   std::stringstream rows;
   rows << csv.rdbuf();
   EXPECT_NE(rows.str().find("not stationary"), std::string::npos) << rows.str();
+  // The same run's tables: the cable mooring line has no bending moment or torque files and no bending
+  // moment columns in its range graphs and statics; the riser (a beam) has them all.
+  for (const char* file : {"bending_moment_Nm.csv", "bending_moment_x_Nm.csv", "torque_Nm.csv"}) {
+    EXPECT_FALSE(fs::exists(out / "dynamics" / "mooring" / file)) << file;
+    EXPECT_TRUE(fs::exists(out / "dynamics" / "riser" / file)) << file;
+  }
+  const auto firstLine = [](const fs::path& file) {
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    return line;
+  };
+  EXPECT_EQ(firstLine(out / "dynamics" / "mooring" / "range.csv"),
+            "arc_length_m,tension_min_N,tension_max_N,tension_mean_N,curvature_min_1_per_m,curvature_max_1_per_m,"
+            "curvature_mean_1_per_m");
+  EXPECT_NE(firstLine(out / "dynamics" / "riser" / "range.csv").find("bending_moment_max_Nm"), std::string::npos);
+  EXPECT_EQ(firstLine(out / "statics" / "mooring.csv"),
+            "arc_length_m,x_m,y_m,z_m,effective_tension_N,curvature_1_per_m");
+  EXPECT_NE(firstLine(out / "statics" / "riser.csv").find("torque_Nm"), std::string::npos);
 }
 
 // Where statics put each vessel: statics/vessels.csv, and the free vessel's position in the log. The fixed

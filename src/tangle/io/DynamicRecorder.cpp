@@ -22,6 +22,9 @@ const char* const kQuantities[] = {"x_m", "y_m", "z_m", "effective_tension_N", "
                                    "bending_moment_z_Nm", "torque_Nm"};
 constexpr int kQuantityCount = 10;
 
+/// The bending moment, its components and the torque: results of beam elements only.
+bool isBendingQuantity(int q) { return q == 4 || (q >= 6 && q <= 9); }
+
 double quantity(const solver::LineSnapshot& s, int q, std::size_t i) {
   switch (q) {
     case 0: return s.position[i].x();
@@ -72,10 +75,16 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
   for (std::size_t l = 0; l < initial.size(); ++l) {
     const solver::LineSnapshot& s = initial[l];
     m_arc.push_back(s.arcLength);
+    m_hasBending.push_back(s.hasBending);
     const fs::path ld = dyn / m_stems[l];
     fs::create_directories(ld);
     std::vector<std::unique_ptr<core::OutputFile>> streams;
-    for (const int q : m_quantities) {
+    // A cable line has no bending moment (nor its components) or torque: no file for them.
+    std::vector<int> quantities;
+    for (const int q : m_quantities)
+      if (s.hasBending || !isBendingQuantity(q)) quantities.push_back(q);
+    m_lineQuantities.push_back(quantities);
+    for (const int q : quantities) {
       auto f = std::make_unique<core::OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));
       std::string row = "time_s";
       for (double a : s.arcLength) row += fmt::format(",s={:.3f}m", a);
@@ -102,7 +111,7 @@ void DynamicRecorder::record(double time, const std::vector<solver::LineSnapshot
       fmt::memory_buffer row;
       fmt::format_to(std::back_inserter(row), FMT_COMPILE("{:.6f}"), time);
       for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
-        const double value = quantity(s, m_quantities[q], i);
+        const double value = quantity(s, m_lineQuantities[l][q], i);
         // Exact zeros (the moments and torque of cable lines: 5 of the 11 quantities) as the text fmt would
         // give, without formatting them.
         if (value == 0.0 && !std::signbit(value)) {
@@ -137,9 +146,19 @@ void DynamicRecorder::writeRanges() const {
   auto mean = [&](double sum, double only) { return m_ranges.mean(sum, only); };
   for (std::size_t l = 0; l < m_stems.size(); ++l) {
     core::OutputFile f(m_dir / "dynamics" / m_stems[l] / "range.csv");
+    const analysis::RangeGraphs::Range& r = m_ranges.ranges()[l];
+    if (!m_hasBending[l]) {  // a cable line: no bending moment columns
+      f.write("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,curvature_min_1_per_m,"
+              "curvature_max_1_per_m,curvature_mean_1_per_m\n");
+      for (std::size_t i = 0; i < m_arc[l].size(); ++i)
+        f.write(fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i], r.tensionMin[i],
+                            r.tensionMax[i], mean(r.tensionSum[i], r.tensionMin[i]), r.curvatureMin[i],
+                            r.curvatureMax[i], mean(r.curvatureSum[i], r.curvatureMin[i])));
+      f.close();
+      continue;
+    }
     f.write("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,bending_moment_min_Nm,bending_moment_max_Nm,"
             "bending_moment_mean_Nm,curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
-    const analysis::RangeGraphs::Range& r = m_ranges.ranges()[l];
     for (std::size_t i = 0; i < m_arc[l].size(); ++i) {
       f.write(fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i],
                           r.tensionMin[i], r.tensionMax[i], mean(r.tensionSum[i], r.tensionMin[i]),

@@ -3,7 +3,8 @@
 /// Records a dynamic run as it goes, so that a run stopped midway keeps everything up to then:
 /// - `dynamics/<line>/<quantity>.csv`: time histories, one row per output time, one column per node
 ///   (x_m, y_m, z_m, effective_tension_N, bending_moment_Nm, curvature_1_per_m, bending moment
-///   components bending_moment_{x,y,z}_Nm in global axes, torque_Nm);
+///   components bending_moment_{x,y,z}_Nm in global axes, torque_Nm; a cable line has no moments or
+///   torque and no files for them);
 /// - `dynamics/<line>/range.csv`: range graphs (min, max, time-weighted mean) along each line over every
 ///   accepted time step (accumulate()), not only the output times: a short impact between two output
 ///   times is in the range graph and the extremes;
@@ -65,6 +66,8 @@ class DynamicRecorder {
   std::vector<std::string> m_stems;
   std::vector<std::vector<double>> m_arc;
   std::vector<int> m_quantities;  // the quantities written (indices of the CSV quantities)
+  std::vector<std::vector<int>> m_lineQuantities;  // per line: those it has (a cable line no moments)
+  std::vector<char> m_hasBending;                  // per line: LineSnapshot::hasBending
   std::vector<std::vector<std::unique_ptr<core::OutputFile>>> m_streams;  // per line, per written quantity
   std::unique_ptr<core::OutputFile> m_endForces;
   std::unique_ptr<PvdSeries> m_vtk;

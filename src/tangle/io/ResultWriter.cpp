@@ -63,6 +63,16 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
     core::OutputFile out(sub / (stems[l] + ".csv"));
+    // A cable line has no bending moment, torque or node rotation: its table leaves them out.
+    if (!s.hasBending) {
+      out.write("arc_length_m,x_m,y_m,z_m,effective_tension_N,curvature_1_per_m\n");
+      for (std::size_t i = 0; i < s.arcLength.size(); ++i)
+        out.write(fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},{:.6e}\n", s.arcLength[i], s.position[i].x(),
+                              s.position[i].y(), s.position[i].z(), s.tension[i], s.curvature[i]));
+      out.close();
+      written.push_back(out.path());
+      continue;
+    }
     out.write("arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,"
               "bending_moment_x_Nm,bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,"
               "rotation_y_deg,rotation_z_deg\n");

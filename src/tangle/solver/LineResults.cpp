@@ -131,6 +131,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const double angle = cosine > 0.0 ? std::atan(sine / cosine) : std::atan2(sine, cosine);
       return angle / (0.5 * (segmentLength[i - 1] + segmentLength[i]));
     };
+    s.hasBending = anyBeam;
     if (!anyBeam) {
       // A cable line (bars only) has no bending moment, torque or rotation (all stay zero) and its
       // curvature is the polyline's: the same values as the general loop below, without its work per node

@@ -51,6 +51,9 @@ struct LineSnapshot {
   /// to the element).
   double touchdownArcLength = -1.0;
   int seabedNodes = 0;               ///< nodes in contact with the seabed
+  /// The line has beam elements: bending moment, torque and node rotations are results of it. A cable
+  /// line (bars only) has none (the fields above stay zero): the result tables leave them out.
+  bool hasBending = false;
 };
 
 /// Section force of element `el` [N]: the force its node-2 side exerts on its node-1 side across a cut,
