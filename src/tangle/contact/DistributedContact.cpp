@@ -133,7 +133,8 @@ DistributedContact::DistributedContact(const model::Model& model, const model::C
     : m_model(&model),
       m_spec(spec),
       m_radius(radius),
-      m_hysteresis(HystereticRestitution::amplitudeFor(spec.restitution)) {
+      m_hysteresis(HystereticRestitution::amplitudeFor(spec.restitution)),
+      m_curves(elementCurves(model, true)) {
   m_lineAxialStiffness.assign(model.lines().size(), kInf);
   for (const model::LineElement& el : model.elements())
     m_lineAxialStiffness[el.line] = std::min(m_lineAxialStiffness[el.line], el.type->axialStiffness);
@@ -147,7 +148,9 @@ double DistributedContact::bentness(const model::State& state, int element, doub
   double largest = 0.0;
   for (int i = 0; i <= 4; ++i)
     largest = std::max(
-        largest, curvature(centrelineStencil(*m_model, element, 0.25 * i, true), state.position) * radii);
+        largest,
+        curvature(centrelineStencil(m_curves[static_cast<std::size_t>(element)], 0.25 * i), state.position) *
+            radii);
   const double x = std::clamp((largest - 0.25) / 0.25, 0.0, 1.0);
   return x * x * (3.0 - 2.0 * x);
 }
@@ -240,11 +243,11 @@ CentrelineDistance DistributedContact::project(const model::State& state, int sl
   CentrelineDistance r;
   r.s = xi;
   r.sFree = false;
-  r.a = centrelineStencil(*m_model, slave, xi, true);
+  r.a = centrelineStencil(m_curves[static_cast<std::size_t>(slave)], xi);
   r.pointA = r.a.point(state.position);
   double t = std::clamp(t0, 0.0, 1.0);
   for (int iteration = 0; iteration < 30; ++iteration) {
-    const CentrelineStencil b = centrelineStencil(*m_model, master, t, true);
+    const CentrelineStencil b = centrelineStencil(m_curves[static_cast<std::size_t>(master)], t);
     const Vec3 u = r.pointA - b.point(state.position);
     const Vec3 c1 = b.tangent(state.position), c2 = b.secondDerivative(state.position);
     const double g = -u.dot(c1), h = c1.squaredNorm() - u.dot(c2);
@@ -257,7 +260,7 @@ CentrelineDistance DistributedContact::project(const model::State& state, int sl
   }
   r.t = t;
   r.tFree = t > 0.0 && t < 1.0;
-  r.b = centrelineStencil(*m_model, master, t, true);
+  r.b = centrelineStencil(m_curves[static_cast<std::size_t>(master)], t);
   r.pointB = r.b.point(state.position);
   r.distance = (r.pointA - r.pointB).norm();
   return r;
@@ -275,8 +278,8 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   // The C1 centreline lies off the chord by at most about (kink angle) L / 8: a quarter of the element
   // lengths bounds it.
   if (chords.distance >= radii + 0.25 * (ea.restLength + eb.restLength)) return false;
-  const CentrelineDistance closest =
-      centrelineDistance(*m_model, state.position, slave, master, chords.s, chords.t, false, false, true);
+  const CentrelineDistance closest = centrelineDistance(*m_model, state.position, slave, master, chords.s,
+                                                        chords.t, false, false, true, &m_curves);
   // The slave's share of its line is xi in [0, 1] (its neighbours integrate the rest), and the master's is
   // t in [0, 1]: the gap is measured to the master's piece on its exact range (project).
   double tGuess = closest.t;
@@ -305,7 +308,7 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   if (!(closest.t >= 0.0 && closest.t <= 1.0)) {
     const double tEnd = std::clamp(closest.t, 0.0, 1.0);
     gMin = std::min(gMin, sample(centrelineDistance(*m_model, state.position, slave, master, closest.s, tEnd,
-                                                    false, true, true)
+                                                    false, true, true, &m_curves)
                                      .s));
   }
   const double s0 = projectOnAxis(b0, a0, a1), s1 = projectOnAxis(b1, a0, a1);
@@ -418,7 +421,7 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   CentrelineDistance best;
   best.distance = kInf;
   int bestMaster = -1;
-  const Vec3 x = centrelineStencil(*m_model, slave, xi, true).point(state.position);
+  const Vec3 x = centrelineStencil(m_curves[static_cast<std::size_t>(slave)], xi).point(state.position);
   for (const int f : masters) {
     const model::LineElement& eb = elements[f];
     const double t0 =

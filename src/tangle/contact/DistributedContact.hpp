@@ -259,6 +259,7 @@ class DistributedContact {
   std::vector<ContactSample> m_samples;
   /// Bentness per element, held through a step (beginStep clears it).
   std::map<int, double> m_bent;
+  std::vector<ElementCurve> m_curves;  ///< every element's C1 centreline data (SmoothCentreline.hpp)
   /// What the last findSamples was asked (its samples are kept while nothing else changed): a step's
   /// converged state is sampled by its last assembly, by LineContact::rejectStep and by commitDistributed
   /// alike; searched once, not three times (risers side by side: 2.08 s against 0.30 s wall for point

@@ -34,51 +34,70 @@ bool hasSmoothCentreline(const model::Model& model, int element, bool smoothCabl
   return smoothCables || model.elements()[element].type->isBeam();
 }
 
-CentrelineStencil centrelineStencil(const model::Model& model, int element, double s, bool smoothCables) {
+ElementCurve elementCurve(const model::Model& model, int element, bool smoothCables) {
   const auto& elements = model.elements();
   const model::LineElement& el = elements[element];
-  if (!hasSmoothCentreline(model, element, smoothCables)) {
+  ElementCurve c;
+  c.smooth = hasSmoothCentreline(model, element, smoothCables);
+  if (!c.smooth) {
     // A cable's centreline is its polyline (see the header).
-    CentrelineStencil st;
-    st.node = {el.node1, el.node1, el.node2, el.node2};
-    st.N = {0.0, 1.0 - s, s, 0.0};
-    st.dN = {0.0, -1.0, 1.0, 0.0};
-    return st;
+    c.node = {el.node1, el.node1, el.node2, el.node2};
+    return c;
   }
   const model::Line& line = model.lines()[el.line];
   const int index = element - line.firstElement;
   const bool hasPrevious = index > 0, hasNext = index < line.elementCount - 1;
   const double l1 = el.restLength;
-  // Nodal tangents in units of this element's parameter: m1 = a0 x0 + a1 x1 + a2 x2, m2 = b1 x1 + b2 x2 + b3 x3
-  // (three-point difference on the rest arc lengths; the chord at a line end). See the header.
-  double a0 = 0.0, a1 = -1.0, a2 = 1.0;
+  // Nodal tangents in units of this element's parameter: m1 = a0 x0 + a1 x1 + a2 x2, m2 = b1 x1 + b2 x2 + b3
+  // x3 (three-point difference on the rest arc lengths; the chord at a line end). See the header.
   if (hasPrevious) {
     const double l0 = elements[element - 1].restLength;
     const double alpha = l1 / (l0 + l1), beta = l0 / (l0 + l1);
-    a0 = -alpha * l1 / l0;
-    a1 = alpha * l1 / l0 - beta;
-    a2 = beta;
+    c.a0 = -alpha * l1 / l0;
+    c.a1 = alpha * l1 / l0 - beta;
+    c.a2 = beta;
   }
-  double b1 = -1.0, b2 = 1.0, b3 = 0.0;
   if (hasNext) {
     const double l2 = elements[element + 1].restLength;
     const double gamma = l2 / (l1 + l2), delta = l1 / (l1 + l2);
-    b1 = -gamma;
-    b2 = gamma - delta * l1 / l2;
-    b3 = delta * l1 / l2;
+    c.b1 = -gamma;
+    c.b2 = gamma - delta * l1 / l2;
+    c.b3 = delta * l1 / l2;
+  }
+  c.node = {hasPrevious ? elements[element - 1].node1 : el.node1, el.node1, el.node2,
+            hasNext ? elements[element + 1].node2 : el.node2};
+  return c;
+}
+
+std::vector<ElementCurve> elementCurves(const model::Model& model, bool smoothCables) {
+  std::vector<ElementCurve> out;
+  out.reserve(model.elements().size());
+  for (int e = 0; e < static_cast<int>(model.elements().size()); ++e)
+    out.push_back(elementCurve(model, e, smoothCables));
+  return out;
+}
+
+CentrelineStencil centrelineStencil(const ElementCurve& c, double s) {
+  CentrelineStencil st;
+  st.node = c.node;
+  if (!c.smooth) {
+    st.N = {0.0, 1.0 - s, s, 0.0};
+    st.dN = {0.0, -1.0, 1.0, 0.0};
+    return st;
   }
   // Cubic Hermite basis and its derivatives.
   const double s2 = s * s, s3 = s2 * s;
   const double h00 = 2 * s3 - 3 * s2 + 1, h01 = -2 * s3 + 3 * s2, h10 = s3 - 2 * s2 + s, h11 = s3 - s2;
   const double d00 = 6 * s2 - 6 * s, d01 = -6 * s2 + 6 * s, d10 = 3 * s2 - 4 * s + 1, d11 = 3 * s2 - 2 * s;
   const double e00 = 12 * s - 6, e01 = -12 * s + 6, e10 = 6 * s - 4, e11 = 6 * s - 2;
-  CentrelineStencil st;
-  st.node = {hasPrevious ? elements[element - 1].node1 : el.node1, el.node1, el.node2,
-             hasNext ? elements[element + 1].node2 : el.node2};
-  st.N = {h10 * a0, h00 + h10 * a1 + h11 * b1, h01 + h10 * a2 + h11 * b2, h11 * b3};
-  st.dN = {d10 * a0, d00 + d10 * a1 + d11 * b1, d01 + d10 * a2 + d11 * b2, d11 * b3};
-  st.ddN = {e10 * a0, e00 + e10 * a1 + e11 * b1, e01 + e10 * a2 + e11 * b2, e11 * b3};
+  st.N = {h10 * c.a0, h00 + h10 * c.a1 + h11 * c.b1, h01 + h10 * c.a2 + h11 * c.b2, h11 * c.b3};
+  st.dN = {d10 * c.a0, d00 + d10 * c.a1 + d11 * c.b1, d01 + d10 * c.a2 + d11 * c.b2, d11 * c.b3};
+  st.ddN = {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
   return st;
+}
+
+CentrelineStencil centrelineStencil(const model::Model& model, int element, double s, bool smoothCables) {
+  return centrelineStencil(elementCurve(model, element, smoothCables), s);
 }
 
 namespace {
@@ -87,25 +106,31 @@ std::pair<double, double> parameterRange(const model::Model& model, int element,
   if (!hasSmoothCentreline(model, element, smoothCables)) return {0.0, 1.0};
   const model::Line& line = model.lines()[model.elements()[element].line];
   const int index = element - line.firstElement;
-  return {index > 0 ? -kParameterOverlap : 0.0, index < line.elementCount - 1 ? 1.0 + kParameterOverlap : 1.0};
+  return {index > 0 ? -kParameterOverlap : 0.0,
+          index < line.elementCount - 1 ? 1.0 + kParameterOverlap : 1.0};
 }
 }  // namespace
 
-CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position, int elementA,
-                                      int elementB, double s0, double t0, bool holdS, bool holdT,
-                                      bool smoothCables) {
+CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position,
+                                      int elementA, int elementB, double s0, double t0, bool holdS,
+                                      bool holdT, bool smoothCables,
+                                      const std::vector<ElementCurve>* curves) {
+  const ElementCurve curveA =
+      curves ? (*curves)[static_cast<std::size_t>(elementA)] : elementCurve(model, elementA, smoothCables);
+  const ElementCurve curveB =
+      curves ? (*curves)[static_cast<std::size_t>(elementB)] : elementCurve(model, elementB, smoothCables);
   const auto [sLo, sHi] = parameterRange(model, elementA, smoothCables);
   const auto [tLo, tHi] = parameterRange(model, elementB, smoothCables);
   const double lo[2] = {sLo, tLo}, hi[2] = {sHi, tHi};
   double p[2] = {holdS ? s0 : std::clamp(s0, sLo, sHi), holdT ? t0 : std::clamp(t0, tLo, tHi)};
   auto value = [&](const double q[2]) {
-    return 0.5 * (centrelineStencil(model, elementA, q[0], smoothCables).point(position) -
-                  centrelineStencil(model, elementB, q[1], smoothCables).point(position))
-                     .squaredNorm();
+    return 0.5 *
+           (centrelineStencil(curveA, q[0]).point(position) - centrelineStencil(curveB, q[1]).point(position))
+               .squaredNorm();
   };
   auto gradientNorm = [&](const double q[2]) {
-    const CentrelineStencil a = centrelineStencil(model, elementA, q[0], smoothCables);
-    const CentrelineStencil b = centrelineStencil(model, elementB, q[1], smoothCables);
+    const CentrelineStencil a = centrelineStencil(curveA, q[0]);
+    const CentrelineStencil b = centrelineStencil(curveB, q[1]);
     const Vec3 u = a.point(position) - b.point(position);
     double gs = u.dot(a.tangent(position)), gt = -u.dot(b.tangent(position));
     if (holdS || (q[0] <= lo[0] && gs > 0.0) || (q[0] >= hi[0] && gs < 0.0)) gs = 0.0;
@@ -117,8 +142,8 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
   // (a scaled gradient step where the reduced Hessian is not positive definite), projected on the range,
   // halved until V decreases.
   for (int iteration = 0; iteration < 40; ++iteration) {
-    const CentrelineStencil a = centrelineStencil(model, elementA, p[0], smoothCables);
-    const CentrelineStencil b = centrelineStencil(model, elementB, p[1], smoothCables);
+    const CentrelineStencil a = centrelineStencil(curveA, p[0]);
+    const CentrelineStencil b = centrelineStencil(curveB, p[1]);
     const Vec3 u = a.point(position) - b.point(position);
     const Vec3 ca = a.tangent(position), cb = b.tangent(position);
     const Vec3 caa = a.secondDerivative(position), cbb = b.secondDerivative(position);
@@ -172,16 +197,16 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
   r.t = p[1];
   r.sFree = !holdS && p[0] > sLo && p[0] < sHi;
   r.tFree = !holdT && p[1] > tLo && p[1] < tHi;
-  r.a = centrelineStencil(model, elementA, r.s, smoothCables);
-  r.b = centrelineStencil(model, elementB, r.t, smoothCables);
+  r.a = centrelineStencil(curveA, r.s);
+  r.b = centrelineStencil(curveB, r.t);
   r.pointA = r.a.point(position);
   r.pointB = r.b.point(position);
   r.distance = (r.pointA - r.pointB).norm();
   return r;
 }
 
-CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, const CentrelineDistance& d, double sign,
-                                          bool wantHessian) {
+CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, const CentrelineDistance& d,
+                                          double sign, bool wantHessian) {
   CentrelineKinematics k;
   for (int i = 0; i < 4; ++i) {
     k.node[i] = d.a.node[i];
@@ -231,7 +256,8 @@ CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, con
     if (vpp > 0.0) hv -= bxp.col(0) * bxp.col(0).transpose() / vpp;
   } else if (nFree == 2) {
     Eigen::Matrix2d vpp;
-    vpp << m[0].dot(m[0]) + curvatureTerm[0], m[0].dot(m[1]), m[1].dot(m[0]), m[1].dot(m[1]) + curvatureTerm[1];
+    vpp << m[0].dot(m[0]) + curvatureTerm[0], m[0].dot(m[1]), m[1].dot(m[0]),
+        m[1].dot(m[1]) + curvatureTerm[1];
     const double det = vpp.determinant();
     if (det > 1e-12 * std::abs(vpp(0, 0) * vpp(1, 1))) hv -= bxp * vpp.inverse() * bxp.transpose();
   }
