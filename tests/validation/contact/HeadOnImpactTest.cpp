@@ -170,21 +170,22 @@ INSTANTIATE_TEST_SUITE_P(FlexibleBars, HeadOn,
                                            Case{1.0, model::ImpactModel::Penalty, 3, 1e6}),
                          caseName);
 
-// The distributed formulation (issue 43; restitution by hysteresis, docs/theory.md 9.11), e = 1: KE ratio
-// +0.35 % (one element, automatic stiffness) and +1e-4 (three elements, 1e6 N/m). (Before the impact
-// limit judged a just-touching patch by its own stiffness, the one-element bars' steps grew through the
-// impact and they left with 9.8 % more energy than they came with: DistributedContact::impactStepLimit.)
+// The distributed formulation (issue 43; restitution by hysteresis, docs/theory.md 9.11): three-element
+// bars at 1e6 N/m, e = 1: KE ratio +1.2e-4.
 INSTANTIATE_TEST_SUITE_P(Distributed, HeadOn,
-                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 1, 0.0, true},
-                                           Case{1.0, model::ImpactModel::Penalty, 3, 1e6, true}),
-                         caseName);
+                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 3, 1e6, true}), caseName);
 
-// Known failures (run by ctest as expected to fail, validation.distributed_head_on_expected_fail), e = 0.5:
-// one-element bars rebound with KE ratio 0.2666 for 0.25 (+6.6 %: an effective e of 0.516; Eq. 5 mass
-// +1.5 %, 62.59 kg for 61.65); the three-element bars' KE ratio is right (+9e-6) but their event is still
-// open at the end of the 50 ms run.
+// Known failures (run by ctest as expected to fail, validation.distributed_head_on_expected_fail):
+// - one-element (rigid) bars at the automatic stiffness: the impact step limit judges the patch at first
+//   touch with the point stiffness, 1.2 mm of rigid-impact depth against p0 = 2 mm, so it is not limited;
+//   the steps grow 1.25-fold through the impact: KE ratio +9.8 % at e = 1, 0.2972 for 0.25 at e = 0.5
+//   (+18.9 %). Judged with the patch's own stiffness: +0.35 % and +6.6 %, but a random sweep blew up
+//   (DistributedContact::impactStepLimit);
+// - three-element bars at e = 0.5: KE ratio right (+1e-5) but the event is still open at the end of the
+//   50 ms run.
 INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, HeadOn,
-                         ::testing::Values(Case{0.5, model::ImpactModel::Penalty, 1, 0.0, true},
+                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 1, 0.0, true},
+                                           Case{0.5, model::ImpactModel::Penalty, 1, 0.0, true},
                                            Case{0.5, model::ImpactModel::Penalty, 3, 1e6, true}),
                          caseName);
 
