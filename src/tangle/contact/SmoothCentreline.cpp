@@ -101,13 +101,12 @@ CentrelineStencil centrelineStencil(const model::Model& model, int element, doub
 }
 
 namespace {
-/// Search range of an element's parameter (widened at interior nodes, see kParameterOverlap).
-std::pair<double, double> parameterRange(const model::Model& model, int element, bool smoothCables) {
-  if (!hasSmoothCentreline(model, element, smoothCables)) return {0.0, 1.0};
-  const model::Line& line = model.lines()[model.elements()[element].line];
-  const int index = element - line.firstElement;
-  return {index > 0 ? -kParameterOverlap : 0.0,
-          index < line.elementCount - 1 ? 1.0 + kParameterOverlap : 1.0};
+/// Search range of an element's parameter (widened at interior nodes, see kParameterOverlap): a smooth
+/// piece with a neighbour (its outer stencil node is not its own end node) on that side.
+std::pair<double, double> parameterRange(const ElementCurve& c) {
+  if (!c.smooth) return {0.0, 1.0};
+  return {c.node[0] != c.node[1] ? -kParameterOverlap : 0.0,
+          c.node[3] != c.node[2] ? 1.0 + kParameterOverlap : 1.0};
 }
 }  // namespace
 
@@ -119,8 +118,8 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
       curves ? (*curves)[static_cast<std::size_t>(elementA)] : elementCurve(model, elementA, smoothCables);
   const ElementCurve curveB =
       curves ? (*curves)[static_cast<std::size_t>(elementB)] : elementCurve(model, elementB, smoothCables);
-  const auto [sLo, sHi] = parameterRange(model, elementA, smoothCables);
-  const auto [tLo, tHi] = parameterRange(model, elementB, smoothCables);
+  const auto [sLo, sHi] = parameterRange(curveA);
+  const auto [tLo, tHi] = parameterRange(curveB);
   const double lo[2] = {sLo, tLo}, hi[2] = {sHi, tHi};
   double p[2] = {holdS ? s0 : std::clamp(s0, sLo, sHi), holdT ? t0 : std::clamp(t0, tLo, tHi)};
   auto value = [&](const double q[2]) {

@@ -147,23 +147,18 @@ void DynamicRecorder::writeRanges() const {
   for (std::size_t l = 0; l < m_stems.size(); ++l) {
     core::OutputFile f(m_dir / "dynamics" / m_stems[l] / "range.csv");
     const analysis::RangeGraphs::Range& r = m_ranges.ranges()[l];
-    if (!m_hasBending[l]) {  // a cable line: no bending moment columns
-      f.write("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,curvature_min_1_per_m,"
-              "curvature_max_1_per_m,curvature_mean_1_per_m\n");
-      for (std::size_t i = 0; i < m_arc[l].size(); ++i)
-        f.write(fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i], r.tensionMin[i],
-                            r.tensionMax[i], mean(r.tensionSum[i], r.tensionMin[i]), r.curvatureMin[i],
-                            r.curvatureMax[i], mean(r.curvatureSum[i], r.curvatureMin[i])));
-      f.close();
-      continue;
-    }
-    f.write("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,bending_moment_min_Nm,bending_moment_max_Nm,"
-            "bending_moment_mean_Nm,curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
+    const bool bending = m_hasBending[l];  // a cable line: no bending moment columns
+    f.write(std::string("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,") +
+            (bending ? "bending_moment_min_Nm,bending_moment_max_Nm,bending_moment_mean_Nm," : "") +
+            "curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
     for (std::size_t i = 0; i < m_arc[l].size(); ++i) {
-      f.write(fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e}\n", m_arc[l][i],
-                          r.tensionMin[i], r.tensionMax[i], mean(r.tensionSum[i], r.tensionMin[i]),
-                          r.momentMin[i], r.momentMax[i], mean(r.momentSum[i], r.momentMin[i]), r.curvatureMin[i],
-                          r.curvatureMax[i], mean(r.curvatureSum[i], r.curvatureMin[i])));
+      std::string row = fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},", m_arc[l][i], r.tensionMin[i], r.tensionMax[i],
+                                    mean(r.tensionSum[i], r.tensionMin[i]));
+      if (bending)
+        row += fmt::format("{:.6e},{:.6e},{:.6e},", r.momentMin[i], r.momentMax[i],
+                           mean(r.momentSum[i], r.momentMin[i]));
+      f.write(row + fmt::format("{:.6e},{:.6e},{:.6e}\n", r.curvatureMin[i], r.curvatureMax[i],
+                                mean(r.curvatureSum[i], r.curvatureMin[i])));
     }
     f.close();
   }

@@ -64,26 +64,25 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
     const solver::LineSnapshot& s = lines[l];
     core::OutputFile out(sub / (stems[l] + ".csv"));
     // A cable line has no bending moment, torque or node rotation: its table leaves them out.
-    if (!s.hasBending) {
-      out.write("arc_length_m,x_m,y_m,z_m,effective_tension_N,curvature_1_per_m\n");
-      for (std::size_t i = 0; i < s.arcLength.size(); ++i)
-        out.write(fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},{:.6e}\n", s.arcLength[i], s.position[i].x(),
-                              s.position[i].y(), s.position[i].z(), s.tension[i], s.curvature[i]));
-      out.close();
-      written.push_back(out.path());
-      continue;
-    }
-    out.write("arc_length_m,x_m,y_m,z_m,effective_tension_N,bending_moment_Nm,curvature_1_per_m,"
-              "bending_moment_x_Nm,bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,"
-              "rotation_y_deg,rotation_z_deg\n");
+    const bool bending = s.hasBending;
+    out.write(std::string("arc_length_m,x_m,y_m,z_m,effective_tension_N,") + (bending ? "bending_moment_Nm," : "") +
+              "curvature_1_per_m" +
+              (bending ? ",bending_moment_x_Nm,bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,"
+                         "rotation_y_deg,rotation_z_deg"
+                       : "") +
+              "\n");
     for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
-      const Vec3& m = s.bendingMomentVector[i];
-      const Vec3& r = s.rotation[i];
-      out.write(fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},{:.6f},"
-                            "{:.6f},{:.6f}\n",
-                            s.arcLength[i], s.position[i].x(), s.position[i].y(), s.position[i].z(), s.tension[i],
-                            s.bendingMoment[i], s.curvature[i], m.x(), m.y(), m.z(), s.torque[i], r.x(), r.y(),
-                            r.z()));
+      std::string row = fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},", s.arcLength[i], s.position[i].x(),
+                                    s.position[i].y(), s.position[i].z(), s.tension[i]);
+      if (bending) row += fmt::format("{:.6e},", s.bendingMoment[i]);
+      row += fmt::format("{:.6e}", s.curvature[i]);
+      if (bending) {
+        const Vec3& m = s.bendingMomentVector[i];
+        const Vec3& r = s.rotation[i];
+        row += fmt::format(",{:.6e},{:.6e},{:.6e},{:.6e},{:.6f},{:.6f},{:.6f}", m.x(), m.y(), m.z(), s.torque[i],
+                           r.x(), r.y(), r.z());
+      }
+      out.write(row + "\n");
     }
     out.close();
     written.push_back(out.path());

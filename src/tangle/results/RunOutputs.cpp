@@ -12,6 +12,7 @@
 #include <iostream>
 #include <iterator>
 #include <mutex>
+#include <optional>
 #include <sstream>
 
 #include "tangle/analysis/EnergyAccount.hpp"
@@ -377,7 +378,6 @@ bool RunOutputs::runDynamics() {
   // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
   // vector relative to the initial heading) against time.
   std::unique_ptr<core::OutputFile> vesselFile;
-  std::vector<int> waveFrequencyVessels;  // vessels with wave-frequency columns in vessels.csv
   const std::vector<std::string> vesselStems = [&] {
     std::vector<std::string> names;
     for (const auto& v : m.vessels()) names.push_back(v.name);
@@ -392,7 +392,6 @@ bool RunOutputs::runDynamics() {
     for (int v = 0; v < static_cast<int>(vesselStems.size()); ++v) {
       header += fmt::format(",{0}_x_m,{0}_y_m,{0}_z_m,{0}_rx_deg,{0}_ry_deg,{0}_rz_deg", vesselStems[v]);
       if (vessels && vessels->waveFrequencyMotion(v, 0.0)) {
-        waveFrequencyVessels.push_back(v);
         header += fmt::format(",{0}_wf_x_m,{0}_wf_y_m,{0}_wf_z_m,{0}_wf_rx_deg,{0}_wf_ry_deg,{0}_wf_rz_deg",
                               vesselStems[v]);
       }
@@ -541,24 +540,21 @@ bool RunOutputs::runDynamics() {
         if (clash) clash->recordClearance(s);
         for (int v = 0; v < static_cast<int>(m.vessels().size()); ++v)
           std::ranges::copy(m.vesselMotion(s, v), vesselMotion.begin() + 6 * v);
-        std::vector<std::array<double, 6>> waveMotion;
-        for (const int v : waveFrequencyVessels)
-          waveMotion.push_back(*vessels->waveFrequencyMotion(v, s.time));
+        // Per vessel, its wave-frequency motion where it has one (the header's _wf_ columns).
+        std::vector<std::optional<std::array<double, 6>>> waveMotion(m.vessels().size());
+        for (int v = 0; vessels && v < static_cast<int>(waveMotion.size()); ++v)
+          waveMotion[static_cast<std::size_t>(v)] = vessels->waveFrequencyMotion(v, s.time);
         writer.submit([&, shared, time = s.time, motion = vesselMotion, waveMotion = std::move(waveMotion)] {
           recorder.record(time, *shared);
           if (h5) h5->record(time, *shared, motion);
           if (vesselFile) {
             std::string row = fmt::format("{:.4f}", time);
-            std::size_t wave = 0;
             for (std::size_t k = 0; k < motion.size(); k += 6) {
               row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", motion[k], motion[k + 1],
                                  motion[k + 2], motion[k + 3], motion[k + 4], motion[k + 5]);
-              if (wave < waveFrequencyVessels.size() &&
-                  waveFrequencyVessels[wave] == static_cast<int>(k / 6)) {
-                const std::array<double, 6>& w = waveMotion[wave++];
-                row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", w[0], w[1], w[2], w[3], w[4],
-                                   w[5]);
-              }
+              if (const auto& w = waveMotion[k / 6])
+                row += fmt::format(",{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f}", (*w)[0], (*w)[1], (*w)[2],
+                                   (*w)[3], (*w)[4], (*w)[5]);
             }
             vesselFile->write(row + "\n");
             vesselFile->flush();
