@@ -101,7 +101,8 @@ def stress_histories(run):
     area = math.pi / 4 * (D * D - di * di)
     inertia = math.pi / 64 * (D**4 - di**4)
     external = math.pi / 4 * D * D  # the buoyancy diameter is the outer diameter here
-    wall = tension[counted].astype(float) + RHO_G * np.maximum(0.0, -z[counted]) * external
+    # T_w = T_e + p_i A_i - p_e A_e (Sparks 1984; the example has no contents: p_i = 0)
+    wall = tension[counted].astype(float) - RHO_G * np.maximum(0.0, -z[counted]) * external
     bending = my * (D / 2) / inertia
     return SCF * np.stack([wall / area + bending, wall / area - bending], axis=2), my
 

@@ -113,6 +113,7 @@ void setStaticEndForces(Simulation& simulation, std::vector<solver::LineSnapshot
     s.endTensionB = axial(s.endTensionForceB, line.lastNode(), lastElement, -1.0);
     s.tension.front() = s.endTensionA;
     s.tension.back() = s.endTensionB;
+    solver::setWallTension(model, static_cast<int>(l), s);
   }
 }
 

@@ -3,7 +3,7 @@
 /// Fatigue damage along every line of a dynamic run (docs/theory.md 13.4): at every node of a line type
 /// with fatigue properties (model::FatigueSpec), the stress at `points` points round the circumference,
 ///   sigma_k = SCF (T_w / A_s + (r / I) (M2 sin theta_k - M3 cos theta_k)),  theta_k = 2 pi k / points,
-/// (T_w the wall tension T_e + p_e A_e, or the effective tension T_e; A_s = pi/4 (D^2 - (D - 2t)^2) and
+/// (T_w the wall tension T_e + p_i A_i - p_e A_e, or the effective tension T_e; A_s = pi/4 (D^2 - (D - 2t)^2) and
 /// I = pi/64 (D^4 - (D - 2t)^4) of the steel pipe; r = D/2 (outer surface) or D/2 - t (inner); M2, M3 the
 /// bending moment in the node's material axes 2 and 3, so the points turn with the section), or the
 /// tension of a chain or rope against a T-N curve, is rainflow counted as the run goes (RainflowCounter,
@@ -84,7 +84,8 @@ class FatigueDamage {
     TnCurve tn;
     double axial = 0.0;    ///< SCF / A_s [1/m^2]
     double bending = 0.0;  ///< SCF r / I [1/m^3]
-    double externalArea = 0.0;  ///< A_e of the wall tension's pressure term [m^2] (0: effective tension)
+    double externalArea = 0.0;  ///< A_e of the wall tension's external pressure term [m^2] (0: effective tension)
+    double internalArea = 0.0;  ///< A_i of its internal pressure term [m^2] (0: effective tension or no bore)
     int points = 1;
     std::vector<double> sinTheta, cosTheta;  ///< of the points' angles theta_k
   };

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <tuple>
 
 namespace tangle::analysis {
 
@@ -9,11 +10,21 @@ RangeGraphs::RangeGraphs(const std::vector<solver::LineSnapshot>& initial) {
   const double inf = std::numeric_limits<double>::infinity();
   for (const solver::LineSnapshot& s : initial) {
     const std::size_t n = s.arcLength.size();
-    Range r{std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
-            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0),
-            std::vector<double>(n, inf), std::vector<double>(n, -inf), std::vector<double>(n, 0.0)};
+    Range r;
+    for (auto [min, max, sum] : {std::tie(r.tensionMin, r.tensionMax, r.tensionSum),
+                                 std::tie(r.momentMin, r.momentMax, r.momentSum),
+                                 std::tie(r.curvatureMin, r.curvatureMax, r.curvatureSum)}) {
+      min.assign(n, inf);
+      max.assign(n, -inf);
+      sum.assign(n, 0.0);
+    }
     r.endTensionMaxA = r.endTensionMaxB = -inf;
     r.endTensionMinA = r.endTensionMinB = inf;
+    if (!s.wallTension.empty()) {
+      r.wallTensionMin.assign(n, inf);
+      r.wallTensionMax.assign(n, -inf);
+      r.wallTensionSum.assign(n, 0.0);
+    }
     if (!s.tension.empty())
       r.retension = std::max(1.0, 0.01 * *std::max_element(s.tension.begin(), s.tension.end()));
     m_ranges.push_back(std::move(r));
@@ -46,6 +57,12 @@ void RangeGraphs::accumulate(const std::vector<solver::LineSnapshot>& lines, dou
       r.momentSum[i] += dt * s.bendingMoment[i];
       r.curvatureSum[i] += dt * s.curvature[i];
     }
+    if (!r.wallTensionSum.empty() && s.wallTension.size() == r.wallTensionSum.size())
+      for (std::size_t i = 0; i < s.wallTension.size(); ++i) {
+        r.wallTensionMin[i] = std::min(r.wallTensionMin[i], s.wallTension[i]);
+        r.wallTensionMax[i] = std::max(r.wallTensionMax[i], s.wallTension[i]);
+        r.wallTensionSum[i] += dt * s.wallTension[i];
+      }
     r.endTensionMaxA = std::max(r.endTensionMaxA, s.endTensionA);
     r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
     r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);

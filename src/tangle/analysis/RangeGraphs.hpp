@@ -32,6 +32,8 @@ class RangeGraphs {
     double slackTime = 0.0;  ///< time with the lowest tension below zero [s]
     bool slack = false;      ///< in an event now
     double retension = 1.0;  ///< [N]
+    /// Wall tension [N], sum [N s] (LineSnapshot::wallTension): pipe lines only, empty otherwise.
+    std::vector<double> wallTensionMin, wallTensionMax, wallTensionSum;
   };
 
   /// @param initial the lines at t = 0 (node counts; their largest tension sets each line's re-tension level)

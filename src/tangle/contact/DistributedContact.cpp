@@ -201,7 +201,7 @@ double DistributedContact::nodeMass(int node) const {
 double DistributedContact::massPerLength(int element) const {
   const model::LineElement& x = m_model->elements()[element];
   if (std::isinf(nodeMass(x.node1)) && std::isinf(nodeMass(x.node2))) return kInf;
-  return x.type->massPerLength;
+  return x.type->totalMassPerLength();
 }
 
 double DistributedContact::pairMassPerLength(int elementA, int elementB) const {

@@ -113,7 +113,7 @@ double LineContact::nodeTransverseMass(int node) const {
 double LineContact::elementMass(int element) const {
   const model::LineElement& el = m_model->elements()[element];
   const bool held = std::isinf(nodeTransverseMass(el.node1)) && std::isinf(nodeTransverseMass(el.node2));
-  return held ? kInf : el.type->massPerLength * el.restLength;
+  return held ? kInf : el.type->totalMassPerLength() * el.restLength;
 }
 
 double LineContact::lumpedMass(int element, double w) const {

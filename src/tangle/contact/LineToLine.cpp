@@ -46,7 +46,7 @@ double LineContact::lineDamping(int eA, int eB) const {
     const double m1 = nodeTransverseMass(x.node1), m2 = nodeTransverseMass(x.node2);
     if (std::isinf(m1) && std::isinf(m2)) return kInfinity;
     (void)line;
-    return x.type->massPerLength;
+    return x.type->totalMassPerLength();
   };
   const double ma = massPerLength(eA, la), mb = massPerLength(eB, lb);
   const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);

@@ -148,12 +148,17 @@ void DynamicRecorder::writeRanges() const {
     core::OutputFile f(m_dir / "dynamics" / m_stems[l] / "range.csv");
     const analysis::RangeGraphs::Range& r = m_ranges.ranges()[l];
     const bool bending = m_hasBending[l];  // a cable line: no bending moment columns
+    const bool wall = !r.wallTensionSum.empty();  // a pipe line: its wall tension too
     f.write(std::string("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,") +
+            (wall ? "wall_tension_min_N,wall_tension_max_N,wall_tension_mean_N," : "") +
             (bending ? "bending_moment_min_Nm,bending_moment_max_Nm,bending_moment_mean_Nm," : "") +
             "curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
     for (std::size_t i = 0; i < m_arc[l].size(); ++i) {
       std::string row = fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},", m_arc[l][i], r.tensionMin[i], r.tensionMax[i],
                                     mean(r.tensionSum[i], r.tensionMin[i]));
+      if (wall)
+        row += fmt::format("{:.6e},{:.6e},{:.6e},", r.wallTensionMin[i], r.wallTensionMax[i],
+                           mean(r.wallTensionSum[i], r.wallTensionMin[i]));
       if (bending)
         row += fmt::format("{:.6e},{:.6e},{:.6e},", r.momentMin[i], r.momentMax[i],
                            mean(r.momentSum[i], r.momentMin[i]));

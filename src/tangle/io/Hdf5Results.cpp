@@ -87,6 +87,10 @@ void Hdf5Results::writeStatics(const std::vector<solver::LineSnapshot>& lines) {
     m_file->writeArray(g + "/arc_length", s.arcLength, {n}, "m", "unstretched arc length from end A");
     m_file->writeArray(g + "/position", flatten(s.position), {n, 3}, "m", "node position, global axes");
     m_file->writeArray(g + "/effective_tension", s.tension, {n}, "N", "effective tension");
+    if (!s.wallTension.empty()) {  // pipe lines only
+      m_file->writeArray(g + "/wall_tension", s.wallTension, {n}, "N", "wall tension T_e + p_i A_i - p_e A_e");
+      m_file->writeArray(g + "/internal_pressure", s.internalPressure, {n}, "Pa", "internal pressure (gauge)");
+    }
     m_file->writeArray(g + "/bending_moment", s.bendingMoment, {n}, "N m", "bending moment magnitude");
     m_file->writeArray(g + "/bending_moment_vector", flatten(s.bendingMomentVector), {n, 3}, "N m",
                        "bending moment, global axes");
@@ -242,6 +246,12 @@ void Hdf5Results::writeRanges(const DynamicRecorder& recorder) {
     m_file->writeArray(g + "/effective_tension_max", r.tensionMax, {n}, "N", "maximum effective tension");
     m_file->writeArray(g + "/effective_tension_mean", mean(r.tensionSum, r.tensionMin), {n}, "N",
                        "mean effective tension");
+    if (!r.wallTensionSum.empty()) {  // pipe lines only
+      m_file->writeArray(g + "/wall_tension_min", r.wallTensionMin, {n}, "N", "minimum wall tension");
+      m_file->writeArray(g + "/wall_tension_max", r.wallTensionMax, {n}, "N", "maximum wall tension");
+      m_file->writeArray(g + "/wall_tension_mean", mean(r.wallTensionSum, r.wallTensionMin), {n}, "N",
+                         "mean wall tension");
+    }
     m_file->writeArray(g + "/bending_moment_min", r.momentMin, {n}, "N m", "minimum bending moment");
     m_file->writeArray(g + "/bending_moment_max", r.momentMax, {n}, "N m", "maximum bending moment");
     m_file->writeArray(g + "/bending_moment_mean", mean(r.momentSum, r.momentMin), {n}, "N m",

@@ -64,6 +64,9 @@ constexpr double kMaxWavePeriod = 100.0;        ///< T and Tp [s]
 constexpr int kMaxWaveComponents = 10000;       ///< JONSWAP components [-]
 constexpr double kMaxDuration = 1.0e6;          ///< dynamic duration [s]
 constexpr double kMaxMass = 1.0e10;             ///< vessel and attachment masses [kg]
+constexpr double kMaxContentsDensity = 25000.0; ///< densest contents (drilling mud ~2500, mercury 13 500) [kg/m^3]
+constexpr double kMaxPressure = 2.0e9;          ///< internal pressure (2000 MPa, beyond any bore) [Pa]
+constexpr double kVacuum = -101325.0;           ///< gauge pressure of a vacuum [Pa]
 /// Most elements accepted in one model, and the memory each needs for the message: measured 3.4 kB per
 /// bar element (peak resident memory of `tangle run --statics-only` on a 20000-element cable model minus
 /// that of a 2-element one); 6 kB allows for beams (6 DOFs per node) and the dynamic state.
@@ -595,7 +598,7 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     const Map m(item, {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
                        "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal",
                        "drag_axial", "added_mass_normal", "added_mass_axial", "axial_damping",
-                       "minimum_breaking_load"});
+                       "minimum_breaking_load", "internal_diameter", "maximum_strain"});
     const section::LineType d;
     section::LineType t;
     t.name = names.add(m);
@@ -612,6 +615,18 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     t.addedMassNormal = m.number("added_mass_normal", d.addedMassNormal, nonNegativeUpTo(kMaxCoefficient));
     t.addedMassAxial = m.number("added_mass_axial", d.addedMassAxial, nonNegativeUpTo(kMaxCoefficient));
     t.axialDamping = m.number("axial_damping", d.axialDamping, nonNegativeUpTo(kMaxStiffness));
+    if (m.find("maximum_strain"))
+      t.maximumStrain = m.number("maximum_strain", positiveUpTo(1.0).withHint("a fraction: 0.005 for 0.5 %"));
+    if (const std::optional<Value> bore = m.find("internal_diameter")) {
+      t.internalDiameter = bore->number(nonNegativeUpTo(kMaxDiameter).withHint("the bore of the pipe in m"));
+      if (t.internalDiameter >= t.outerDiameter)
+        bore->fail(fmt::format("the bore ({} m) must be smaller than the outer_diameter ({} m)",
+                               numberText(t.internalDiameter), numberText(t.outerDiameter)));
+      if (t.internalDiameter >= t.buoyancyDiameter)
+        bore->fail(fmt::format("the bore ({} m) must be smaller than the buoyancy_diameter ({} m): the pipe's "
+                               "displaced area must hold it",
+                               numberText(t.internalDiameter), numberText(t.buoyancyDiameter)));
+    }
     if (m.find("minimum_breaking_load"))
       t.minimumBreakingLoad =
           m.number("minimum_breaking_load", positiveUpTo(kMaxStiffness).withHint("in N (e.g. 6.5e6 for a 76 mm R4 chain)"));
@@ -762,7 +777,7 @@ model::EndSpec readEnd(const Value& v, const ModelSpec& spec) {
 }
 
 model::SectionSpec readSection(const Value& v, const ModelSpec& spec) {
-  const Map m(v, {"type", "length", "elements"});
+  const Map m(v, {"type", "length", "elements", "contents_density"});
   model::SectionSpec section;
   const Value type = m.get("type", "the name of a line type");
   section.lineType = type.text("the name of a line type");
@@ -780,11 +795,33 @@ model::SectionSpec readSection(const Value& v, const ModelSpec& spec) {
                               "accepted in a model",
                               count, static_cast<double>(count) * kBytesPerElement / 1e9, kMaxElements));
   section.elements = static_cast<int>(count);
+  if (const std::optional<Value> density = m.find("contents_density")) {
+    section.contentsDensity =
+        density->number(nonNegativeUpTo(kMaxContentsDensity).withHint("in kg/m^3; 0 for an empty section"));
+    if (spec.lineTypes.at(section.lineType).internalDiameter <= 0.0)
+      density->fail(fmt::format("line type '{}' has no bore to hold contents: give it an internal_diameter",
+                                section.lineType));
+  }
   return section;
 }
 
-model::AttachmentSpec readAttachment(const Value& v, double lineLength) {
-  const Map m(v, {"arc_length", "mass", "volume", "drag_area", "added_mass"});
+/// `lines[].contents`: what fills the bore of the line's pipe sections.
+model::ContentsSpec readContents(const Value& v) {
+  const Map m(v, {"density", "pressure", "reference_z"});
+  model::ContentsSpec c;
+  c.density = m.number("density", 0.0, nonNegativeUpTo(kMaxContentsDensity).withHint("in kg/m^3, e.g. 800 for oil"));
+  c.pressure = m.number("pressure", 0.0,
+                        atLeastUpTo(kVacuum, kMaxPressure).withHint("gauge pressure in Pa at reference_z, e.g. 1.0e7 "
+                                                                    "for 10 MPa"));
+  if (const std::optional<Value> z = m.find("reference_z"))
+    c.referenceZ = z->number(closed(-kMaxCoordinate, kMaxCoordinate).withHint("in m"));
+  return c;
+}
+
+/// One entry of `lines[].attachments`: an attachment, or a row of `count` modules every `pitch` m from
+/// `arc_length` (buoyancy modules, strakes' clamps), each shared between the nodes of its element.
+std::vector<model::AttachmentSpec> readAttachment(const Value& v, double lineLength) {
+  const Map m(v, {"arc_length", "mass", "volume", "drag_area", "added_mass", "pitch", "count"});
   model::AttachmentSpec a;
   a.arcLength =
       m.number("arc_length", closed(0.0, lineLength).withHint("from end A, within the line's length"));
@@ -792,7 +829,26 @@ model::AttachmentSpec readAttachment(const Value& v, double lineLength) {
   a.volume = m.number("volume", 0.0, nonNegativeUpTo(kMaxMass / 1000.0));
   a.dragArea = m.number("drag_area", 0.0, nonNegativeUpTo(1.0e4));
   a.addedMass = m.number("added_mass", 0.0, nonNegativeUpTo(kMaxMass));
-  return a;
+  const std::optional<Value> pitch = m.find("pitch"), count = m.find("count");
+  if (!pitch && !count) return {a};
+  if (!pitch || !count)
+    (pitch ? *pitch : *count)
+        .fail("a row of modules needs both 'pitch' (the distance between them, m) and 'count' (how many)");
+  const double spacing = pitch->number(positiveUpTo(kMaxLineLength).withHint("distance between modules in m"));
+  const long long modules = count->integer64(atLeastUpTo(1.0, 100000.0));
+  const double last = a.arcLength + static_cast<double>(modules - 1) * spacing;
+  if (last > lineLength + 1e-9)
+    count->fail(fmt::format("{} modules every {} m from {} m reach {} m, beyond the line's length {} m", modules,
+                            numberText(spacing), numberText(a.arcLength), roundedText(last),
+                            roundedText(lineLength)));
+  std::vector<model::AttachmentSpec> row;
+  for (long long k = 0; k < modules; ++k) {
+    model::AttachmentSpec module = a;
+    module.arcLength = std::min(lineLength, a.arcLength + static_cast<double>(k) * spacing);
+    module.shared = true;
+    row.push_back(module);
+  }
+  return row;
 }
 
 /// `lines[].start_shape`: intermediate points [x, y, z], or maps {position, arc_length} (all with an arc
@@ -830,7 +886,8 @@ std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength,
 }
 
 model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& names) {
-  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments", "start_shape", "span_check"});
+  const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments", "start_shape", "span_check",
+                  "contents"});
   model::LineSpec line;
   line.name = names.add(m);
   line.contact = m.boolean("contact", line.contact);
@@ -844,8 +901,18 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
        m.get("sections", "a list of sections {type, length, elements} from end A to end B").items(1))
     length += line.sections.emplace_back(readSection(item, spec)).length;
 
+  if (const std::optional<Value> contents = m.find("contents")) {
+    line.contents = readContents(*contents);
+    if (std::none_of(line.sections.begin(), line.sections.end(), [&](const model::SectionSpec& section) {
+          return spec.lineTypes.at(section.lineType).internalDiameter > 0.0;
+        }))
+      contents->fail(fmt::format("line '{}' has contents but none of its line types has a bore to hold them: give "
+                                 "the pipe's line type an internal_diameter",
+                                 line.name));
+  }
   if (const std::optional<Value> attachments = m.find("attachments"))
-    for (const Value& item : attachments->items(0)) line.attachments.push_back(readAttachment(item, length));
+    for (const Value& item : attachments->items(0))
+      for (const model::AttachmentSpec& a : readAttachment(item, length)) line.attachments.push_back(a);
   if (const std::optional<Value> shape = m.find("start_shape"))
     line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
 

@@ -65,7 +65,9 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
     core::OutputFile out(sub / (stems[l] + ".csv"));
     // A cable line has no bending moment, torque or node rotation: its table leaves them out.
     const bool bending = s.hasBending;
-    out.write(std::string("arc_length_m,x_m,y_m,z_m,effective_tension_N,") + (bending ? "bending_moment_Nm," : "") +
+    const bool pipe = !s.wallTension.empty();  // a pipe: its internal pressure and wall tension too
+    out.write(std::string("arc_length_m,x_m,y_m,z_m,effective_tension_N,") +
+              (pipe ? "wall_tension_N,internal_pressure_Pa," : "") + (bending ? "bending_moment_Nm," : "") +
               "curvature_1_per_m" +
               (bending ? ",bending_moment_x_Nm,bending_moment_y_Nm,bending_moment_z_Nm,torque_Nm,rotation_x_deg,"
                          "rotation_y_deg,rotation_z_deg"
@@ -74,6 +76,7 @@ std::vector<fs::path> writeStaticLineTables(const fs::path& dir, const std::vect
     for (std::size_t i = 0; i < s.arcLength.size(); ++i) {
       std::string row = fmt::format("{:.6f},{:.6f},{:.6f},{:.6f},{:.6e},", s.arcLength[i], s.position[i].x(),
                                     s.position[i].y(), s.position[i].z(), s.tension[i]);
+      if (pipe) row += fmt::format("{:.6e},{:.6e},", s.wallTension[i], s.internalPressure[i]);
       if (bending) row += fmt::format("{:.6e},", s.bendingMoment[i]);
       row += fmt::format("{:.6e}", s.curvature[i]);
       if (bending) {

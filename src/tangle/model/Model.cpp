@@ -22,6 +22,7 @@ double torsionalStiffnessOf(const section::LineType& t) {
 }  // namespace
 
 Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec))) {
+  resolveSectionTypes();
   seatAnchorsOnSeabed();
   for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
   for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v) buildVessel(v);
@@ -35,22 +36,74 @@ void Model::seatAnchorsOnSeabed() {
   // radius to the laid nodes, an uplift and a bending peak that are artefacts of the geometry (issue 30).
   // It sits at the laid line's resting penetration, level with the laid nodes next to it.
   const double seabedZ = -m_spec->environment.waterDepth;
-  for (LineSpec& line : m_spec->lines) {
+  for (std::size_t l = 0; l < m_spec->lines.size(); ++l) {
+    LineSpec& line = m_spec->lines[l];
     if (line.sections.empty()) continue;
     for (int end = 0; end < 2; ++end) {
       EndSpec& e = end == 0 ? line.endA : line.endB;
       if (e.kind != EndKind::Anchored) continue;
-      const SectionSpec& sec = end == 0 ? line.sections.front() : line.sections.back();
-      const auto type = m_spec->lineTypes.find(sec.lineType);
-      if (type == m_spec->lineTypes.end()) continue;
-      const double radius = 0.5 * type->second.contactDiameter;
-      const double weight =
-          type->second.submergedWeight(m_spec->environment.waterDensity, m_spec->environment.gravity);
+      const section::LineType& type =
+          sectionType(static_cast<int>(l), end == 0 ? 0 : static_cast<int>(line.sections.size()) - 1);
+      const double radius = 0.5 * type.contactDiameter;
+      const double weight = type.submergedWeight(m_spec->environment.waterDensity, m_spec->environment.gravity);
       if (e.position.z() < seabedZ + radius)
         e.position.z() = seabedZ + radius -
                          seabed::FlatSeabed::restingPenetration(weight, m_spec->environment.seabed.normalStiffness);
     }
   }
+}
+
+void Model::resolveSectionTypes() {
+  m_sectionTypes.resize(m_spec->lines.size());
+  for (std::size_t l = 0; l < m_spec->lines.size(); ++l) {
+    const LineSpec& ls = m_spec->lines[l];
+    for (const SectionSpec& sec : ls.sections) {
+      const auto it = m_spec->lineTypes.find(sec.lineType);
+      if (it == m_spec->lineTypes.end())
+        throw InputError(m_spec->sourceFile, 0, "lines." + ls.name + ".sections",
+                         "unknown line type '" + sec.lineType + "'");
+      const double density = std::isnan(sec.contentsDensity) ? ls.contents.density : sec.contentsDensity;
+      if (it->second.internalDiameter > 0.0 && density > 0.0) {
+        m_contentTypes.push_back(std::make_unique<section::LineType>(it->second));
+        m_contentTypes.back()->contentsDensity = density;
+        m_sectionTypes[l].push_back(m_contentTypes.back().get());
+      } else {
+        m_sectionTypes[l].push_back(&it->second);
+      }
+    }
+  }
+}
+
+void Model::internalPressure(int l, const std::vector<Vec3>& x, std::vector<double>& p) const {
+  const Line& line = m_lines[static_cast<std::size_t>(l)];
+  const ContentsSpec& contents = line.spec->contents;
+  const auto n = static_cast<std::size_t>(line.nodeCount);
+  p.assign(n, 0.0);
+  if (!line.pipe) return;
+  const double g = m_spec->environment.gravity;
+  const double zRef = line.contentsReferenceZ;
+  const auto density = [&](std::size_t e) {
+    return m_elements[static_cast<std::size_t>(line.firstElement) + e].type->contentsDensity;
+  };
+  // Head below end A, H_k = sum of g rho_e (z_1 - z_2) over the elements before node k (it grows downwards):
+  // the hydrostatics of the contents column along the bore.
+  for (std::size_t e = 0; e + 1 < n; ++e) p[e + 1] = p[e] + g * density(e) * (x[e].z() - x[e + 1].z());
+  // Head at the reference level: on the first element (from end A) that reaches z_ref, interpolated; a line
+  // wholly above or below it extends the nearer end's element to z_ref.
+  double reference = 0.0;
+  bool found = false;
+  for (std::size_t e = 0; e + 1 < n && !found; ++e) {
+    const double z1 = x[e].z(), z2 = x[e + 1].z();
+    if ((z1 - zRef) * (z2 - zRef) > 0.0) continue;
+    reference = z1 == z2 ? p[e] : p[e] + (z1 - zRef) / (z1 - z2) * (p[e + 1] - p[e]);
+    found = true;
+  }
+  if (!found && n >= 2) {
+    const bool nearA = std::abs(x.front().z() - zRef) <= std::abs(x.back().z() - zRef);
+    reference = nearA ? p.front() + g * density(0) * (x.front().z() - zRef)
+                      : p.back() + g * density(n - 2) * (x.back().z() - zRef);
+  }
+  for (double& value : p) value = contents.pressure + value - reference;
 }
 
 void Model::buildVessel(int v) {
@@ -121,12 +174,10 @@ void Model::buildLine(int lineIndex) {
   // Element list first, to know which nodes need rotations.
   std::vector<LineElement> elements;
   std::vector<double> arc{0.0};
-  for (const SectionSpec& sec : ls.sections) {
-    const auto it = m_spec->lineTypes.find(sec.lineType);
-    if (it == m_spec->lineTypes.end())
-      throw InputError(m_spec->sourceFile, 0, "lines." + ls.name + ".sections",
-                       "unknown line type '" + sec.lineType + "'");
-    const section::LineType& type = it->second;
+  for (std::size_t k = 0; k < ls.sections.size(); ++k) {
+    const SectionSpec& sec = ls.sections[k];
+    const section::LineType& type = sectionType(lineIndex, static_cast<int>(k));
+    line.pipe = line.pipe || type.internalDiameter > 0.0;
     const double le = sec.length / sec.elements;
     for (int e = 0; e < sec.elements; ++e) {
       LineElement el;
@@ -164,22 +215,45 @@ void Model::buildLine(int lineIndex) {
     const double d = el.type->contactDiameter;
     // Rotational inertia of a solid circular section about a transverse axis per length is
     // m * D^2 / 16; an isotropic approximation is enough for slender lines (it barely matters).
-    const double rot = el.type->massPerLength * half * el.type->outerDiameter * el.type->outerDiameter / 16.0;
+    const double rot = el.type->totalMassPerLength() * half * el.type->outerDiameter * el.type->outerDiameter / 16.0;
     for (int node : {el.node1, el.node2}) {
       m_tributaryLength[node] += half;
       m_momentScale[node] += half;
       m_nodeContactDiameter[node] = std::max(m_nodeContactDiameter[node], d);
-      m_nodeMass[node] += el.type->massPerLength * half;
+      m_nodeMass[node] += el.type->totalMassPerLength() * half;
       m_nodeRotationalInertia[node] += rot;
     }
   }
   line.nodeCount = nodeCount;
   line.elementCount = static_cast<int>(elements.size());
+  line.contentsReferenceZ = std::isnan(ls.contents.referenceZ)
+                                ? std::max(endPosition(ls.endA).z(), endPosition(ls.endB).z())
+                                : ls.contents.referenceZ;
   line.arcLength = arc;
   line.length = arc.back();
   for (auto& el : elements) m_elements.push_back(std::move(el));
 
   for (const AttachmentSpec& a : ls.attachments) {
+    if (a.shared) {
+      // Lever rule on the element that holds the module: weights (1 - w, w) of its two nodes, w the
+      // module's fraction of the element from its first node. Mass, volume, drag area and added mass all
+      // scale (drag is linear in Cd A).
+      const auto next = std::upper_bound(arc.begin() + 1, arc.end() - 1, a.arcLength);
+      const auto e = static_cast<std::size_t>(next - arc.begin()) - 1;
+      const double w = std::clamp((a.arcLength - arc[e]) / (arc[e + 1] - arc[e]), 0.0, 1.0);
+      for (const auto& [local, share] : {std::pair{e, 1.0 - w}, std::pair{e + 1, w}}) {
+        if (share <= 0.0) continue;
+        AttachmentSpec part = a;
+        part.mass *= share;
+        part.volume *= share;
+        part.dragArea *= share;
+        part.addedMass *= share;
+        const int node = line.firstNode + static_cast<int>(local);
+        m_attachments.push_back({node, part});
+        m_nodeMass[node] += part.mass;
+      }
+      continue;
+    }
     const auto nearest = std::min_element(arc.begin(), arc.end(), [&](double x, double y) {
       return std::abs(x - a.arcLength) < std::abs(y - a.arcLength);
     });
@@ -281,8 +355,10 @@ State Model::initialState() const {
   const EnvironmentSpec& env = m_spec->environment;
   for (const Line& line : m_lines) {
     std::vector<catenary::CatenarySection> sections;
-    for (const SectionSpec& sec : line.spec->sections) {
-      const section::LineType& t = m_spec->lineTypes.at(sec.lineType);
+    const int l = static_cast<int>(&line - m_lines.data());
+    for (std::size_t k = 0; k < line.spec->sections.size(); ++k) {
+      const SectionSpec& sec = line.spec->sections[k];
+      const section::LineType& t = sectionType(l, static_cast<int>(k));
       sections.push_back({sec.length, t.submergedWeight(env.waterDensity, env.gravity), t.axialStiffness});
     }
     // An end resting on the seabed sits one contact radius above it; the analytic shape then uses the

@@ -22,7 +22,9 @@ struct LineElement {
   int line = 0;                                   ///< index of the line
   int node1 = 0;                                  ///< global node index at the end-A side
   int node2 = 0;                                  ///< global node index at the end-B side
-  const section::LineType* type = nullptr;        ///< section properties (owned by the ModelSpec)
+  /// Section properties (owned by the ModelSpec, or by the Model for a section with contents: its line type
+  /// with ContentsSpec::density or SectionSpec::contentsDensity).
+  const section::LineType* type = nullptr;
   double restLength = 0.0;                        ///< unstretched length [m]
   std::optional<element::Bar> bar;                ///< set for cable elements
   std::optional<element::CorotationalBeam> beam;  ///< set for beam elements
@@ -45,6 +47,12 @@ struct Line {
   int elementCount = 0;
   std::vector<double> arcLength;  ///< unstretched arc length of each node from end A [m]
   double length = 0.0;            ///< total unstretched length [m]
+  /// A section of it is a pipe (its line type has an internal_diameter): its results give the internal
+  /// pressure and the wall tension.
+  bool pipe = false;
+  /// Level of the contents' reference pressure z_ref [m] (ContentsSpec::referenceZ resolved: the higher end
+  /// at t = 0 unless given).
+  double contentsReferenceZ = 0.0;
   int lastNode() const { return firstNode + nodeCount - 1; }  ///< global index of the node at end B
 };
 
@@ -99,10 +107,24 @@ class Model {
   /// Total structural mass [kg] and submerged weight [N] (if fully submerged) of a line.
   double lineMass(int line) const;
 
+  /// The line type of section `section` of line `line` as the model uses it: the input's line type, or its
+  /// copy with the section's contents density (LineType::contentsDensity).
+  const section::LineType& sectionType(int line, int section) const {
+    return *m_sectionTypes[static_cast<std::size_t>(line)][static_cast<std::size_t>(section)];
+  }
+  /// Internal pressure p_i [Pa] at each node of line `line` with its nodes at `position` (the line's own
+  /// nodes, end A first), into `pressure`: the contents' reference pressure plus their head,
+  /// p_i = p_ref + rho_c g (z_ref - z) for one contents density; with sections of different densities the
+  /// head is summed element by element along the line from the first point (from end A) at z_ref
+  /// (docs/theory.md 5.3). Zero everywhere for a line without contents or pressure.
+  void internalPressure(int line, const std::vector<Vec3>& position, std::vector<double>& pressure) const;
+
  private:
   /// Anchored ends given on the seabed (below one contact radius above it) are placed on its contact
   /// surface, where the laid line rests: centreline at -depth + contact diameter / 2 [m].
   void seatAnchorsOnSeabed();
+  /// Fills m_sectionTypes: each section's line type, copied with its contents where it has any.
+  void resolveSectionTypes();
   void buildLine(int lineIndex);
   /// Node positions of a line with a start shape (LineSpec::startShape) between its end positions [m].
   std::vector<Vec3> startShapePositions(const Line& line, const Vec3& endA, const Vec3& endB) const;
@@ -113,6 +135,8 @@ class Model {
   std::vector<Line> m_lines;
   std::vector<LineElement> m_elements;
   std::vector<NodeAttachment> m_attachments;
+  std::vector<std::unique_ptr<section::LineType>> m_contentTypes;  // line types with contents (per section)
+  std::vector<std::vector<const section::LineType*>> m_sectionTypes;  // per line, per section
   std::vector<int> m_nodeLine;
   std::vector<double> m_tributaryLength;
   std::vector<double> m_nodeContactDiameter;

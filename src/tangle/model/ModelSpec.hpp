@@ -177,15 +177,35 @@ struct SectionSpec {
   std::string lineType;  ///< name of a line type
   double length = 0.0;   ///< unstretched length [m]
   int elements = 1;      ///< number of elements [-]
+  /// Density of this section's contents [kg/m^3] (sections[].contents_density), instead of the line's
+  /// (LineSpec::contents); NaN: the line's. A flooded or empty stretch of a line with contents.
+  double contentsDensity = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// What fills the bore of a line's pipe sections (lines[].contents; docs/theory.md 5.3).
+struct ContentsSpec {
+  double density = 0.0;   ///< contents density rho_c [kg/m^3]
+  /// Internal pressure p_ref at the reference level [Pa] (gauge above the atmosphere, as the external
+  /// hydrostatic pressure rho g (-z) is).
+  double pressure = 0.0;
+  /// Reference level z_ref of the pressure [m]; NaN: the higher of the line's two ends at t = 0. The pressure
+  /// at a point of the line is p_ref plus the contents' head between z_ref and the point.
+  double referenceZ = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A lumped mass or buoy attached at an arc length along a line.
 struct AttachmentSpec {
-  double arcLength = 0.0;  ///< unstretched arc length from end A [m]; snapped to the nearest node
+  /// Unstretched arc length from end A [m]; snapped to the nearest node, or shared between the two nodes of
+  /// its element when `shared`.
+  double arcLength = 0.0;
   double mass = 0.0;       ///< [kg]
   double volume = 0.0;     ///< displaced volume [m^3]
   double dragArea = 0.0;   ///< Cd * A for drag [m^2]
   double addedMass = 0.0;  ///< added mass [kg]
+  /// One of a row of modules (attachments[].pitch, count): shared between the two nodes of its element by
+  /// the lever rule (the same resultant and moment about either node), so that a row of buoyancy modules on
+  /// any mesh loads the line evenly instead of lumping two modules on some nodes and one on others.
+  bool shared = false;
 };
 
 /// An intermediate point of a line's starting shape (`lines[].start_shape`).
@@ -203,6 +223,7 @@ struct LineSpec {
   EndSpec endB;
   std::vector<SectionSpec> sections;
   std::vector<AttachmentSpec> attachments;
+  ContentsSpec contents;  ///< contents and internal pressure of its pipe sections (none by default)
   bool contact = true;  ///< takes part in line-to-line contact
   /// Starting shape of the static solve through these points (end A, the points, end B, straight between
   /// them) instead of the analytic catenary between the ends: a line draped over another, over a guide

@@ -344,7 +344,7 @@ bool RunOutputs::writeStatics() {
     }
     vesselFile.close();
   }
-  log.warning(strainWarnings(m, lines, kStrainWarning));
+  log.warning(strainWarnings(m, lines));
   {
     std::vector<BreakingLoadUse> use;
     for (std::size_t l = 0; l < lines.size(); ++l) use.push_back(breakingLoadUse(m, l, lines[l].tension));

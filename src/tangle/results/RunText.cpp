@@ -90,16 +90,21 @@ std::string modelSummary(const model::Model& m) {
                   m.nodeCount(), m.dofs().fullDofCount(), m.dofs().equationCount());
   for (int i = 0; i < static_cast<int>(m.lines().size()); ++i) {
     const model::Line& line = m.lines()[i];
-    double weight = 0.0;
+    double weight = 0.0, contents = 0.0;
     for (int e = 0; e < line.elementCount; ++e) {
       const auto& el = m.elements()[line.firstElement + e];
       weight += el.type->submergedWeight(env.waterDensity, env.gravity) * el.restLength;
+      contents += el.type->contentsMassPerLength() * el.restLength;
     }
+    const std::string withContents = contents > 0.0 ? fmt::format(" (contents {:.1f} t)", contents / 1000.0) : "";
     out += fmt::format(
-        "  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t, submerged weight "
+        "  line '{}': length {:.2f} m, {} sections, {} elements, mass {:.1f} t{}, submerged weight "
         "{:.1f} kN, end A {}, end B {}\n",
         line.name, line.length, line.spec->sections.size(), line.elementCount, m.lineMass(i) / 1000.0,
-        weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
+        withContents, weight / 1000.0, endKindName(line.spec->endA.kind), endKindName(line.spec->endB.kind));
+    if (line.pipe && (line.spec->contents.pressure != 0.0 || contents > 0.0))
+      out += fmt::format("    contents: internal pressure {:.2f} MPa at z = {:.2f} m (gauge)\n",
+                         line.spec->contents.pressure / 1e6, line.contentsReferenceZ);
   }
   if (!spec.contact.enabled) {
     out += "contact: off\n";
@@ -179,26 +184,33 @@ std::string breakingLoadWarnings(const model::Model& m, const std::vector<Breaki
   return out;
 }
 
-std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines,
-                           double limit) {
+std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines) {
   std::string out;
   for (std::size_t l = 0; l < lines.size(); ++l) {
     const model::Line& line = m.lines()[l];
-    double worst = 0.0, where = 0.0;
+    // The element furthest beyond its line type's limit (strain over limit), if any.
+    double worst = 1.0, strainThere = 0.0, where = 0.0;
+    const section::LineType* type = nullptr;
     for (int e = 0; e < line.elementCount; ++e) {
       const auto& el = m.elements()[line.firstElement + e];
       const double t = 0.5 * (lines[l].tension[e] + lines[l].tension[e + 1]);
       const double strain = t / el.type->axialStiffness;
-      if (strain > worst) {
-        worst = strain;
+      const double over = strain / el.type->strainWarningLimit();
+      if (over > worst) {
+        worst = over;
+        strainThere = strain;
+        type = el.type;
         where = 0.5 * (line.arcLength[e] + line.arcLength[e + 1]);
       }
     }
-    if (worst > limit)
+    if (type)
       out += fmt::format(
-          "warning: line '{}': axial strain {:.2f} % at {:.1f} m from end A (above {:.0f} %): check "
-          "the line length against the distance between its ends, and axial_stiffness\n",
-          line.name, 100.0 * worst, where, 100.0 * limit);
+          "warning: line '{}': axial strain {:.2f} % at {:.1f} m from end A, above {:.2g} % ({} of line type "
+          "'{}'): check the line length against the distance between its ends, and axial_stiffness\n",
+          line.name, 100.0 * strainThere, where, 100.0 * type->strainWarningLimit(),
+          type->maximumStrain > 0.0 ? "the maximum_strain"
+                                    : (type->isBeam() ? "the default for a beam" : "the default for a cable"),
+          type->name);
   }
   return out;
 }

@@ -12,18 +12,14 @@
 
 namespace tangle::results {
 
-/// Strain above which a warning is given [-]: steel and chain yield near 0.2-0.5 %, polyester and nylon
-/// ropes break at 10-20 %: 5 % flags input mistakes without flagging fibre ropes in normal use.
-inline constexpr double kStrainWarning = 0.05;
-
 /// The model summary of `check` and `run`: environment, waves, current, vessels, lines, contact.
 std::string modelSummary(const model::Model& m);
 /// Plausibility warnings of the reader, one per line.
 std::string warningText(const model::ModelSpec& spec);
-/// Largest axial strain T / EA along each line [-] above `limit`: a line much shorter than its span
-/// converges to a strain no real line survives, silently.
-std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines,
-                           double limit);
+/// Largest axial strain T / EA along each line [-] beyond its line type's limit
+/// (LineType::strainWarningLimit): a line much shorter than its span converges to a strain no real line
+/// survives, silently.
+std::string strainWarnings(const model::Model& m, const std::vector<solver::LineSnapshot>& lines);
 /// The largest effective tension over its line type's minimum breaking load along one line.
 struct BreakingLoadUse {
   double ratio = 0.0;    ///< largest tension / MBL [-]; 0 when no line type of the line gives an MBL

@@ -14,7 +14,13 @@ struct LineType {
   double outerDiameter = 0.0;       ///< hydrodynamic diameter for drag and added mass [m]
   double buoyancyDiameter = 0.0;    ///< diameter of the displaced volume per length [m] (default: outerDiameter)
   double contactDiameter = 0.0;     ///< diameter used for line-to-line and seabed contact [m] (default: outerDiameter)
-  double massPerLength = 0.0;       ///< structural mass per unit length, in air [kg/m]
+  double massPerLength = 0.0;       ///< structural mass per unit length, in air, without contents [kg/m]
+  /// Bore of a pipe (riser, flowline, hose) [m]: the area A_i = pi/4 D_i^2 that holds the contents and on
+  /// which the internal pressure acts (line_types[].internal_diameter); 0 for a line without a bore.
+  double internalDiameter = 0.0;
+  /// Density of the contents filling the bore [kg/m^3] (lines[].contents, sections[].contents_density). Not
+  /// an input of the line type: the model gives each section of a line with contents its own copy.
+  double contentsDensity = 0.0;
   double axialStiffness = 0.0;      ///< EA [N]
   double bendingStiffness = 0.0;    ///< EI about both transverse axes [N m^2]; 0 for chain/wire
   double torsionalStiffness = 0.0;  ///< GJ [N m^2]; defaults to EI / 1.3 for beams when not given
@@ -26,18 +32,33 @@ struct LineType {
   /// Minimum breaking load, MBL [N] (line_types[].minimum_breaking_load); 0: not given. The run warns where
   /// the effective tension exceeds it and reports the largest tension over MBL of each line.
   double minimumBreakingLoad = 0.0;
+  /// Axial strain above which the run warns [-] (line_types[].maximum_strain); 0: the default of its kind,
+  /// strainWarningLimit().
+  double maximumStrain = 0.0;
   /// Cables only: fraction of EA kept while an element is shorter than its unstretched length [-]. Chain
   /// and wire rope carry no compression (they buckle at once); the small default keeps the tangent regular.
   /// 1 makes the bar a linear spring in compression too (e.g. a stiff link of a verification model).
   double compressionFactor = 1e-6;
 
+  /// The strain the run warns above [-]: maximumStrain, or 1 % for a beam (no steel or flexible pipe is
+  /// stretched that far in service: a line length mistake) and 5 % for a cable (chain and wire break at a
+  /// few percent; fibre ropes stretch more: give theirs).
+  double strainWarningLimit() const { return maximumStrain > 0.0 ? maximumStrain : isBeam() ? 0.01 : 0.05; }
   /// True when the type carries bending (and torsion): meshed with beams.
   bool isBeam() const { return bendingStiffness > 0.0; }
   /// Displaced volume per unit length [m^2] = pi/4 D_b^2.
   double displacedAreaPerLength() const { return 0.7853981633974483 * buoyancyDiameter * buoyancyDiameter; }
-  /// Effective (submerged) weight per unit length [N/m] in a fluid of density rho [kg/m^3], gravity g [m/s^2].
+  /// Area of the bore A_i = pi/4 D_i^2 [m^2].
+  double internalArea() const { return 0.7853981633974483 * internalDiameter * internalDiameter; }
+  /// Mass of the contents per unit length rho_c A_i [kg/m].
+  double contentsMassPerLength() const { return contentsDensity * internalArea(); }
+  /// Mass per unit length that weighs and moves: the structure's and its contents' [kg/m] (the contents move
+  /// with the pipe, axially and transversely: no flow is modelled).
+  double totalMassPerLength() const { return massPerLength + contentsMassPerLength(); }
+  /// Effective (submerged) weight per unit length [N/m] in a fluid of density rho [kg/m^3], gravity g [m/s^2]:
+  /// (m_s + rho_c A_i - rho A_e) g, the weight whose equilibrium is that of the effective tension (Sparks 1984).
   double submergedWeight(double rho, double g) const {
-    return (massPerLength - rho * displacedAreaPerLength()) * g;
+    return (totalMassPerLength() - rho * displacedAreaPerLength()) * g;
   }
 };
 

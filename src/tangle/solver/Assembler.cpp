@@ -24,7 +24,7 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
   std::vector<double> submerged(model.lines().size(), 0.0), air(model.lines().size(), 0.0);
   for (const auto& el : model.elements()) {
     const double w = std::abs(el.type->submergedWeight(env.waterDensity, env.gravity)) * el.restLength;
-    const double wAir = el.type->massPerLength * env.gravity * el.restLength;
+    const double wAir = el.type->totalMassPerLength() * env.gravity * el.restLength;
     m_roundoffForce = std::max(m_roundoffForce, 1e-14 * el.type->axialStiffness);
     submerged[el.line] += w;
     air[el.line] += wAir;
@@ -437,7 +437,7 @@ void Assembler::addOwnMass(double mf, SystemMatrix* matrix, const VecX* accelera
     // point masses; rotational inertia stays lumped.
     forEachIndex(elements, m_model->elements().size(), [&](std::size_t e) {
       const model::LineElement& el = m_model->elements()[e];
-      const double m = el.type->massPerLength * el.restLength;
+      const double m = el.type->totalMassPerLength() * el.restLength;
       const int d1 = dofs.firstDof(el.node1), d2 = dofs.firstDof(el.node2);
       for (int k = 0; k < 3; ++k) {
         if (matrix) {

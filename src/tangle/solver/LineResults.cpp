@@ -63,6 +63,30 @@ std::vector<LineSnapshot> computeLineResults(const model::Model& model, const As
   return out;
 }
 
+void setWallTension(const model::Model& model, int l, LineSnapshot& s) {
+  const model::Line& line = model.lines()[static_cast<std::size_t>(l)];
+  if (!line.pipe) {
+    s.internalPressure.clear();
+    s.wallTension.clear();
+    return;
+  }
+  model.internalPressure(l, s.position, s.internalPressure);
+  const auto n = static_cast<std::size_t>(line.nodeCount);
+  s.wallTension.assign(n, 0.0);
+  const double rhoG = model.environment().waterDensity * model.environment().gravity;
+  // T_w = T_e + p_i A_i - p_e A_e (Sparks 1984), the pressure term of each element at the node averaged
+  // over the node's elements (they differ only where two line types meet).
+  for (std::size_t e = 0; e + 1 < n; ++e) {
+    const section::LineType& type = *model.elements()[static_cast<std::size_t>(line.firstElement) + e].type;
+    const double ai = type.internalArea(), ae = type.displacedAreaPerLength();
+    for (const std::size_t k : {e, e + 1}) {
+      const double weight = (k == 0 || k + 1 == n) ? 1.0 : 0.5;
+      s.wallTension[k] += weight * (s.internalPressure[k] * ai - rhoG * std::max(0.0, -s.position[k].z()) * ae);
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k) s.wallTension[k] += s.tension[k];
+}
+
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
                         const VecX* fullForce, std::vector<LineSnapshot>& out, LineResultDetail detail) {
   const bool all = detail == LineResultDetail::All;
@@ -216,6 +240,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       s.tension.front() = s.endTensionA;
       s.tension.back() = s.endTensionB;
     }
+    setWallTension(model, static_cast<int>(l), s);
     if (!all) continue;
     // Touchdown: last node (from end A) of the first grounded stretch that is followed by suspended line.
     grounded.assign(n, 0);

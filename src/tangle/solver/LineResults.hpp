@@ -51,6 +51,12 @@ struct LineSnapshot {
   /// to the element).
   double touchdownArcLength = -1.0;
   int seabedNodes = 0;               ///< nodes in contact with the seabed
+  /// Pipe lines only (model::Line::pipe; empty otherwise): the internal pressure p_i [Pa] at each node
+  /// (Model::internalPressure) and the wall tension T_w = T_e + p_i A_i - p_e A_e [N] (Sparks 1984), with
+  /// p_e = rho g max(0, -z) the still-water hydrostatic pressure at the node, A_i the bore and A_e the
+  /// area the buoyancy displaces (the mean over the node's elements where two line types meet).
+  std::vector<double> internalPressure;
+  std::vector<double> wallTension;
   /// The line has beam elements: bending moment, torque and node rotations are results of it. A cable
   /// line (bars only) has none (the fields above stay zero): the result tables leave them out.
   bool hasBending = false;
@@ -61,6 +67,11 @@ struct LineSnapshot {
 /// e x (M2 - M1) / L (LineResults.cpp).
 Vec3 elementSectionForce(const model::State& state, const model::LineElement& el, double tension,
                          const element::BeamSectionForces* beam);
+
+/// Sets `s.internalPressure` and `s.wallTension` of line `line` from `s.position` and `s.tension` (cleared
+/// for a line that is not a pipe). computeLineResults calls it; a caller that changes `s.tension` afterwards
+/// (the static end tensions) calls it again.
+void setWallTension(const model::Model& model, int line, LineSnapshot& s);
 
 /// What computeLineResults fills in.
 enum class LineResultDetail {

@@ -87,7 +87,7 @@ bool hangFreeLines(const model::Model& model, model::State& state) {
     for (int e = 0; e < line.elementCount; ++e) {
       const model::LineElement& el = model.elements()[static_cast<std::size_t>(line.firstElement + e)];
       weight += (wet ? el.type->submergedWeight(env.waterDensity, env.gravity)
-                     : el.type->massPerLength * env.gravity) *
+                     : el.type->totalMassPerLength() * env.gravity) *
                 el.restLength;
       bending = std::max(bending, el.type->bendingStiffness);
     }

@@ -183,11 +183,43 @@ TEST(FatigueDamage, WallTensionAddsTheExternalPressureOfAHeavingNode) {
     for (Vec3& x : state.position) x = Vec3(0, 0, -50.0 + heave * v);
   });
   const std::vector<FatigueDamage::Line> damage = fatigue.finish();
-  // T_w = T_e + rho g d A_e (A_e of the buoyancy diameter, the pipe's): range 2 rho g heave A_e.
+  // T_w = T_e - rho g d A_e (A_e of the buoyancy diameter, the pipe's): range 2 rho g heave A_e.
   const double di = kD - 2.0 * kT;
   const double steel = kPi / 4.0 * (kD * kD - di * di);
   const double amplitudeMPa = kScf * 1025.0 * 9.80665 * heave * (kPi / 4.0 * kD * kD) / steel / 1e6;
   // 2A = 1.5 MPa is beyond the knee (74 MPa at 1e6): the second slope, m = 5.
+  const double expected = sineDamage(amplitudeMPa, 5.0, std::pow(10.0, 15.350));
+  for (const FatigueDamage::Node& n : damage[0].nodes) EXPECT_NEAR(n.damage / expected, 1.0, 1e-9);
+}
+
+TEST(FatigueDamage, WallTensionHasBothPressuresWithTheirSigns) {
+  // A heaving node with contents and internal pressure, its effective tension rising as it rises:
+  // T_w = T_e + p_i A_i - p_e A_e with p_i = p_ref + rho_c g (z_ref - z) and p_e = rho g (-z) (Sparks 1984),
+  // so dT_w/dz = dT_e/dz - rho_c g A_i + rho g A_e: the amplitude a + h g (rho A_e - rho_c A_i) for an
+  // effective tension amplitude a and a heave h in phase. A wrong sign of either pressure changes it.
+  model::FatigueSectionSpec s = pipeSection();
+  s.wallTension = true;
+  model::ModelSpec spec = pipeModel({"pipe"}, {s}, -50.0);
+  const double bore = kD - 2.0 * kT;
+  spec.lineTypes["pipe"].internalDiameter = bore;
+  spec.lines[0].contents.density = 2000.0;  // a heavy mud: the internal term outweighs the external one
+  spec.lines[0].contents.pressure = 3.0e7;
+  spec.lines[0].contents.referenceZ = 0.0;
+  const model::Model m(std::move(spec));
+  FatigueDamage fatigue(m);
+  const double heave = 2.0, amplitude = 2.0e4;  // m; N
+  feed(m, fatigue, [&](solver::LineSnapshot& snap, model::State& state, double v) {
+    for (Vec3& x : state.position) x = Vec3(0, 0, -50.0 + heave * v);
+    for (double& t : snap.tension) t = 1.0e5 + amplitude * v;
+    m.internalPressure(0, state.position, snap.internalPressure);
+  });
+  const std::vector<FatigueDamage::Line> damage = fatigue.finish();
+  const double g = 9.80665;
+  const double ai = kPi / 4.0 * bore * bore, ae = kPi / 4.0 * kD * kD;
+  const double wallAmplitude = amplitude + heave * g * (1025.0 * ae - 2000.0 * ai);
+  const double steel = kPi / 4.0 * (kD * kD - bore * bore);
+  const double amplitudeMPa = kScf * std::abs(wallAmplitude) / steel / 1e6;
+  // 2A = 3.6 MPa is below the knee (74 MPa at 1e6 cycles): the second slope, m = 5.
   const double expected = sineDamage(amplitudeMPa, 5.0, std::pow(10.0, 15.350));
   for (const FatigueDamage::Node& n : damage[0].nodes) EXPECT_NEAR(n.damage / expected, 1.0, 1e-9);
 }

@@ -461,13 +461,87 @@ lines:
   EXPECT_NO_THROW(readModelString(yaml, kSource));
 }
 
+TEST(ModelReader, ReadsContentsAndTheBore) {
+  std::string yaml = edited(kBaseModel, "    bending_stiffness: 1.0e7\n",
+                            "    bending_stiffness: 1.0e7\n    internal_diameter: 0.2\n");
+  yaml = edited(yaml, "    attachments:\n", "    contents: {density: 850, pressure: 2.0e7, reference_z: -5}\n    attachments:\n");
+  yaml = edited(yaml, "        elements: 30\n", "        elements: 30\n        contents_density: 1025\n");
+  const ModelSpec spec = readModelString(yaml, kSource);
+  EXPECT_DOUBLE_EQ(spec.lineTypes.at("pipe").internalDiameter, 0.2);
+  EXPECT_DOUBLE_EQ(spec.lineTypes.at("chain").internalDiameter, 0.0);
+  const model::LineSpec& line = spec.lines[0];
+  EXPECT_DOUBLE_EQ(line.contents.density, 850.0);
+  EXPECT_DOUBLE_EQ(line.contents.pressure, 2.0e7);
+  EXPECT_DOUBLE_EQ(line.contents.referenceZ, -5.0);
+  EXPECT_TRUE(std::isnan(line.sections[0].contentsDensity));
+  EXPECT_DOUBLE_EQ(line.sections[1].contentsDensity, 1025.0);
+}
+
+TEST(ModelReader, ContentsDefaultToNoneWithTheReferenceAtTheHigherEnd) {
+  const ModelSpec spec = readModelString(kBaseModel, kSource);
+  EXPECT_EQ(spec.lines[0].contents.density, 0.0);
+  EXPECT_EQ(spec.lines[0].contents.pressure, 0.0);
+  EXPECT_TRUE(std::isnan(spec.lines[0].contents.referenceZ));
+}
+
+TEST(ModelReader, ReadsARowOfModulesByPitch) {
+  const std::string yaml = edited(kBaseModel, "        volume: 2\n", "        volume: 2\n        pitch: 12.5\n        count: 4\n");
+  const ModelSpec spec = readModelString(yaml, kSource);
+  const std::vector<model::AttachmentSpec>& a = spec.lines[0].attachments;
+  ASSERT_EQ(a.size(), 4u);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_DOUBLE_EQ(a[k].arcLength, 250.0 + 12.5 * static_cast<double>(k));
+    EXPECT_DOUBLE_EQ(a[k].mass, 1000.0);
+    EXPECT_DOUBLE_EQ(a[k].volume, 2.0);
+    EXPECT_TRUE(a[k].shared);
+  }
+  EXPECT_FALSE(readModelString(kBaseModel, kSource).lines[0].attachments[0].shared);
+}
+
+TEST(ModelReaderErrors, RowOfModulesBeyondTheLineEnd) {
+  expectEditError("        volume: 2\n", "        volume: 2\n        pitch: 100\n        count: 4\n", "count: 4",
+                  "lines[moor].attachments[0].count",
+                  "4 modules every 100 m from 250 m reach 550 m, beyond the line's length 500 m");
+}
+
+TEST(ModelReaderErrors, RowOfModulesNeedsBothPitchAndCount) {
+  expectEditError("        volume: 2\n", "        volume: 2\n        pitch: 10\n", "pitch: 10",
+                  "lines[moor].attachments[0].pitch", "needs both 'pitch'");
+}
+
+TEST(ModelReaderErrors, ContentsNeedALineTypeWithABore) {
+  expectEditError("    attachments:\n", "    contents: {density: 850}\n    attachments:\n", "contents:",
+                  "lines[moor].contents", "none of its line types has a bore to hold them: give the pipe's line type "
+                  "an internal_diameter");
+}
+
+TEST(ModelReaderErrors, SectionContentsNeedABore) {
+  expectEditError("        elements: 20\n", "        elements: 20\n        contents_density: 1025\n",
+                  "contents_density", "lines[moor].sections[0].contents_density",
+                  "line type 'chain' has no bore to hold contents");
+}
+
+TEST(ModelReaderErrors, BoreMustBeSmallerThanTheOuterDiameter) {
+  expectEditError("    bending_stiffness: 1.0e7\n", "    bending_stiffness: 1.0e7\n    internal_diameter: 0.3\n",
+                  "internal_diameter", "line_types[pipe].internal_diameter",
+                  "the bore (0.3 m) must be smaller than the outer_diameter (0.3 m)");
+}
+
+TEST(ModelReaderErrors, ContentsPressureBelowAVacuum) {
+  std::string yaml = edited(kBaseModel, "    bending_stiffness: 1.0e7\n",
+                            "    bending_stiffness: 1.0e7\n    internal_diameter: 0.2\n");
+  yaml = edited(yaml, "    attachments:\n", "    contents: {pressure: -2.0e5}\n    attachments:\n");
+  expectInputError(yaml, "contents:", "lines[moor].contents.pressure", "expected a number >= -101325");
+}
+
 // ----------------------------------------------------------------------------------------------------
 // Unknown keys
 
 TEST(ModelReaderErrors, UnknownKeyInSectionIsCaughtWithSuggestion) {
   expectEditError("        length: 200", "        lenght: 200", "lenght: 200",
                   "lines[moor].sections[0].lenght",
-                  "unknown key 'lenght'; expected one of: type, length, elements; did you mean 'length'?");
+                  "unknown key 'lenght'; expected one of: type, length, elements, contents_density; did you mean "
+                  "'length'?");
 }
 
 TEST(ModelReaderErrors, UnknownTopLevelKey) {

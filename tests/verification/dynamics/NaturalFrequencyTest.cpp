@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "support/ModalAnalysis.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
@@ -39,37 +40,8 @@ constexpr double kPiValue = 3.141592653589793;
 constexpr double kHeight = 10.0;        // both structures hang in air at z = 10 m [m]
 constexpr double kTinyGravity = 1e-6;   // [m/s^2], see the file comment
 
-/// Eigenfrequencies [Hz] (ascending) and mass-normalised modes (free DOFs) of K phi = omega^2 M phi,
-/// with K the assembled tangent (kf = 1) and M the assembled mass (mf = 1) at `state`.
-struct ModalResult {
-  VecX frequency;  // [Hz]
-  MatX modes;      // columns over equations
-};
-
-ModalResult modalAnalysis(solver::Assembler& assembler, const model::State& state) {
-  const model::DofMap& dofs = assembler.model().dofs();
-  solver::SystemMatrix k(dofs), m(dofs);
-  solver::AssemblyRequest request;
-  request.kf = 1.0;
-  request.cf = 0.0;
-  request.dynamic = false;
-  request.wantMatrix = true;
-  VecX force;
-  assembler.assemble(state, request, force, &k);
-  assembler.addMass(state, 1.0, &m, nullptr, nullptr);
-  SparseMatrix ks, ms;
-  k.build(ks);
-  m.build(ms);
-  MatX kd = MatX(ks);
-  kd = 0.5 * (kd + kd.transpose()).eval();  // symmetric by construction; remove round-off asymmetry
-  const MatX md = MatX(ms);
-  Eigen::GeneralizedSelfAdjointEigenSolver<MatX> solver(kd, md);
-  EXPECT_EQ(solver.info(), Eigen::Success);
-  ModalResult r;
-  r.frequency = solver.eigenvalues().unaryExpr([](double l) { return std::sqrt(std::max(l, 0.0)) / (2.0 * kPiValue); });
-  r.modes = solver.eigenvectors();
-  return r;
-}
+using test::ModalResult;
+using test::modalAnalysis;
 
 // ---------------------------------------------------------------------------------------------------
 // Taut string.

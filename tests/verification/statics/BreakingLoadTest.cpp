@@ -3,6 +3,10 @@
 // the largest tension over MBL is 2 (to round-off: the same equilibrium) at the fairlead, and the warning says
 // so there; with an MBL of 10 T the ratio is 0.1 and nothing is said; without an MBL nothing is measured. The
 // reader refuses a negative MBL by key.
+// The strain warning against each line type's own limit (line_types[].maximum_strain): the chain's top
+// strain eps = T / EA is warned of with a limit of eps / 2 and not with 2 eps; a flexible pipe (a beam)
+// stretched 1.5 % between pinned ends is warned of at the beams' default of 1 %, which the old 5 % limit for
+// every line missed (issue 45: a flexible at 1.7 % strain ran without a word).
 
 #include <gtest/gtest.h>
 
@@ -16,12 +20,13 @@
 namespace tangle {
 namespace {
 
-std::string chainModel(const std::string& mbl) {
+std::string chainModel(const std::string& mbl, const std::string& maximumStrain = "") {
   return R"(
 environment: {water_depth: 100}
 line_types:
   - {name: chain, outer_diameter: 0.137, mass_per_length: 115, axial_stiffness: 4.9e8)" +
-         (mbl.empty() ? std::string() : ", minimum_breaking_load: " + mbl) + R"(}
+         (mbl.empty() ? std::string() : ", minimum_breaking_load: " + mbl) +
+         (maximumStrain.empty() ? std::string() : ", maximum_strain: " + maximumStrain) + R"(}
 lines:
   - name: leg
     end_a: {type: anchored, position: [400, 0, -100]}
@@ -61,6 +66,36 @@ TEST(BreakingLoad, TensionAboveTheMinimumBreakingLoadIsWarnedOfWhereItIs) {
   analysis::Simulation sim(io::readModelString(chainModel(""), "chain (test)"));
   ASSERT_TRUE(sim.solveStatics().converged);
   EXPECT_EQ(results::breakingLoadUse(sim.model(), 0, sim.snapshot()[0].tension).ratio, 0.0);
+}
+
+/// The strain warnings after the statics of `yaml`.
+std::string strainWarningsOf(const std::string& yaml) {
+  analysis::Simulation sim(io::readModelString(yaml, "strain (test)"));
+  EXPECT_TRUE(sim.solveStatics().converged);
+  return results::strainWarnings(sim.model(), sim.snapshot());
+}
+
+TEST(StrainWarning, EachLineTypeIsWarnedOfAgainstItsOwnLimit) {
+  const double strain = topTension() / 4.9e8;
+  const std::string over = strainWarningsOf(chainModel("", std::to_string(0.5 * strain)));
+  EXPECT_NE(over.find("warning: line 'leg': axial strain"), std::string::npos) << over;
+  EXPECT_NE(over.find("the maximum_strain of line type 'chain'"), std::string::npos) << over;
+  EXPECT_EQ(strainWarningsOf(chainModel("", std::to_string(2.0 * strain))), "");
+  EXPECT_EQ(strainWarningsOf(chainModel("")), "");  // 0.2 %: below the cables' default of 5 %
+
+  const std::string flexible = R"(
+environment: {water_depth: 300}
+line_types:
+  - {name: flexible, outer_diameter: 0.3, mass_per_length: 100, axial_stiffness: 5.0e8, bending_stiffness: 1.0e4}
+lines:
+  - name: jumper
+    end_a: {type: pinned, position: [0, 0, -100]}
+    end_b: {type: pinned, position: [101.5, 0, -100]}
+    sections: [{type: flexible, length: 100, elements: 20}]
+)";
+  const std::string beam = strainWarningsOf(flexible);
+  EXPECT_NE(beam.find("axial strain 1.5"), std::string::npos) << beam;
+  EXPECT_NE(beam.find("above 1 % (the default for a beam of line type 'flexible')"), std::string::npos) << beam;
 }
 
 TEST(BreakingLoad, ANegativeMinimumBreakingLoadIsRefusedByKey) {
