@@ -245,9 +245,16 @@ def statics_figure(table: Table, name: str = "", depth: float | None = None) -> 
     ax_profile.set_title("Profile")
     ax_profile.legend(loc="best", fontsize="small")
 
-    ax_tension.plot(s, _numeric(table, "effective_tension_N", name) * KN, color="C1")
-    _finish(ax_tension, "arc length from end A [m]", "effective tension [kN]")
-    ax_tension.set_title("Effective tension")
+    ax_tension.plot(s, _numeric(table, "effective_tension_N", name) * KN, color="C1", label="effective tension")
+    if "wall_tension_N" in table:  # a pipe (its line type has a bore): the wall tension beside it
+        ax_tension.plot(s, _numeric(table, "wall_tension_N", name) * KN, color="C4", linestyle="--",
+                        label="wall tension")
+        ax_tension.legend(loc="best", fontsize="small")
+        _finish(ax_tension, "arc length from end A [m]", "tension [kN]")
+        ax_tension.set_title("Effective and wall tension")
+    else:
+        _finish(ax_tension, "arc length from end A [m]", "effective tension [kN]")
+        ax_tension.set_title("Effective tension")
 
     if bending:
         axes[2].plot(s, _numeric(table, "bending_moment_Nm", name) * KN, color="C2")
@@ -263,10 +270,12 @@ def range_figure(table: Table, name: str = "") -> Figure:
     _require(table, RANGE_COLUMNS, name or "range table")
     s = _numeric(table, "arc_length_m", name)
     quantities = [("tension", "N", KN, "effective tension [kN]", "C1")]
+    if "wall_tension_min_N" in table:  # a pipe (its line type has a bore)
+        quantities.append(("wall_tension", "N", KN, "wall tension [kN]", "C4"))
     if "bending_moment_min_Nm" in table:
         quantities.append(("bending_moment", "Nm", KN, "bending moment [kN m]", "C2"))
     quantities.append(("curvature", "1_per_m", 1.0, "curvature [1/m]", "C3"))
-    fig = Figure(figsize=(8.0, 10.0 if len(quantities) == 3 else 7.0), layout="constrained")
+    fig = Figure(figsize=(8.0, 3.3 * len(quantities) + 0.4), layout="constrained")
     fig.suptitle(f"Dynamic range: {name}" if name else "Dynamic range")
     axes = fig.subplots(len(quantities), 1, sharex=True)
     for ax, (quantity, unit, scale, label, color) in zip(axes, quantities):

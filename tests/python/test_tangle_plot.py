@@ -208,6 +208,28 @@ def test_missing_parts_are_skipped_silently(tmp: Path) -> None:
     assert tangle_plot.plot_results(empty, errors=errors) == [] and not errors
 
 
+def test_a_pipe_line_shows_its_wall_tension(tmp: Path) -> None:
+    # Issue 45: a line with a bore has wall_tension_N in statics/<line>.csv and wall_tension_{min,max,mean}_N
+    # in range.csv: the statics figure draws it beside the effective tension, the range figure gives it a panel.
+    s = np.linspace(0.0, 100.0, 11)
+    te = 1.0e6 - 5.0e3 * s
+    tw = te + 3.0e5
+    write_csv(tmp / "statics.csv",
+              ["arc_length_m", "x_m", "y_m", "z_m", "effective_tension_N", "wall_tension_N", "internal_pressure_Pa",
+               "bending_moment_Nm", "curvature_1_per_m"],
+              [[f"{a}", "0", "0", f"{a - 100.0}", f"{t}", f"{w}", "1e7", "0", "0"] for a, t, w in zip(s, te, tw)])
+    fig = tangle_plot.statics_figure(tangle_plot.read_csv(tmp / "statics.csv"), "riser", None)
+    labels = [ln.get_label() for ln in fig.axes[1].get_lines()]
+    assert labels == ["effective tension", "wall tension"], labels
+    assert np.allclose(fig.axes[1].get_lines()[1].get_ydata(), tw / 1e3)
+    columns = ["arc_length_m"] + [f"{q}_{k}_{u}" for q, u in (("tension", "N"), ("wall_tension", "N"),
+                                                             ("curvature", "1_per_m")) for k in ("min", "max", "mean")]
+    write_csv(tmp / "range.csv", columns, [[f"{a}"] + ["1"] * 9 for a in s])
+    fig = tangle_plot.range_figure(tangle_plot.read_csv(tmp / "range.csv"), "riser")
+    assert len(fig.axes) == 3
+    assert fig.axes[1].get_ylabel() == "wall tension [kN]"
+
+
 def test_bad_file_is_reported_and_others_still_plotted(tmp: Path) -> None:
     results = tmp / "run"
     make_results(results)

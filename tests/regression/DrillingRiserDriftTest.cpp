@@ -45,7 +45,7 @@ TEST(DrillingRiserDrift, CoarseRunHasTheCollision) {
   analysis::Simulation sim(std::move(spec));
   const solver::StaticResult statics = sim.solveStatics();
   ASSERT_TRUE(statics.converged) << statics.message;
-  contact::ClashReport clash(sim.model(), *sim.contact());
+  contact::ClashReport clash(sim.model(), *sim.contact(), sim.contact()->assessedPairs(sim.state()));
   double peakMoment = 0.0, peakArc = 0.0;
   bool finite = true;
   const time::DynamicResult run = sim.runDynamics([&](const model::State& s, const VecX&) {

@@ -72,8 +72,15 @@ MemoryEstimate estimateMemory(Simulation& simulation) {
     e.items.emplace_back("results.h5 chunk buffers", 64.0 * nodes * 12.0 * 4.0 * 2.0);
   }
   if (const contact::LineContact* contact = simulation.contact()) {
+    // Up to LineContact::kAssessedPairLimit allowed pairs every one is counted (a Newton step that moves the
+    // lines far makes most element pairs candidates); beyond it, the pairs whose lines are within the
+    // clearance margin at the start (the ones the clearance envelope assesses, and the only ones a run that
+    // moves the lines less than the margin brings near each other).
+    const bool every = contact->allowedPairCount() <= contact::LineContact::kAssessedPairLimit;
+    const std::vector<std::array<int, 2>> pairs =
+        every ? contact->allowedPairs() : contact->assessedPairs(simulation.state());
     double elementPairs = 0.0, nodeSides = 0.0;
-    for (const auto& pair : contact->allowedPairs()) {
+    for (const auto& pair : pairs) {
       const model::Line& a = m.lines()[static_cast<std::size_t>(pair[0])];
       const model::Line& b = m.lines()[static_cast<std::size_t>(pair[1])];
       elementPairs += pair[0] == pair[1] ? 0.5 * a.elementCount * a.elementCount
@@ -81,12 +88,14 @@ MemoryEstimate estimateMemory(Simulation& simulation) {
       nodeSides += a.nodeCount + b.nodeCount;
     }
     e.items.emplace_back(
-        fmt::format("contact candidate pairs, at most ({:.3g} element pairs; a Newton step that moves the lines "
-                    "far makes most of them candidates)",
-                    elementPairs),
+        every ? fmt::format("contact candidate pairs, at most ({:.3g} element pairs; a Newton step that moves the "
+                            "lines far makes most of them candidates)",
+                            elementPairs)
+              : fmt::format("contact candidate pairs ({:.3g} element pairs of the {} line pairs within the "
+                            "clearance margin at the start, of {} allowed)",
+                            elementPairs, pairs.size(), contact->allowedPairCount()),
         16.0 * elementPairs);
-    e.items.emplace_back(fmt::format("clearance envelope ({} line pairs)", contact->allowedPairs().size()),
-                         64.0 * nodeSides);
+    e.items.emplace_back(fmt::format("clearance envelope ({} line pairs)", pairs.size()), 64.0 * nodeSides);
   }
   return e;
 }

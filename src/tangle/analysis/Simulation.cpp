@@ -47,8 +47,17 @@ void Simulation::checkStartShapes() const {
       r = std::min(r, 0.5 * m_model->spec().lineTypes.at(sec.lineType).contactDiameter);
     return r;
   };
-  for (const auto& [a, b] : m_contact->allowedPairs()) {
-    if (a == b || (lines[a].spec->startShape.empty() && lines[b].spec->startShape.empty())) continue;
+  // The pairs with a start shape on either side (a line with one against every line it may touch): not
+  // every allowed pair, which grows as the square of the lines.
+  std::vector<std::array<int, 2>> shapedPairs;
+  for (int s = 0; s < static_cast<int>(lines.size()); ++s) {
+    if (lines[static_cast<std::size_t>(s)].spec->startShape.empty()) continue;
+    for (int o = 0; o < static_cast<int>(lines.size()); ++o)
+      if (o != s && m_contact->pairAllowed(s, o)) shapedPairs.push_back({std::min(s, o), std::max(s, o)});
+  }
+  std::sort(shapedPairs.begin(), shapedPairs.end());
+  shapedPairs.erase(std::unique(shapedPairs.begin(), shapedPairs.end()), shapedPairs.end());
+  for (const auto& [a, b] : shapedPairs) {
     const std::array<double, 3> c = m_contact->clearance(m_state, a, b);
     const double allowed = 0.5 * (smallestRadius(lines[a]) + smallestRadius(lines[b]));
     if (!(c[0] < -allowed)) continue;

@@ -78,7 +78,7 @@ int runView(const ViewOptions& options) {
   }
   io::HtmlReport report(m, "view", results::modelSummary(m));
   std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
-      m, sim.contact() ? sim.contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+      m, sim.contact() ? sim.contact()->assessedPairs(sim.state()) : std::vector<std::array<int, 2>>{});
   if (envelope->empty()) envelope.reset();
   report.setStatics(sim.snapshot(), sim.state(), nullptr, envelope.get());
   report.setStatus("model before analysis (initial shapes)");

@@ -54,8 +54,9 @@ void writeStats(core::JsonWriter& j, const char* key, const std::vector<double>&
 }
 }  // namespace
 
-ClashReport::ClashReport(const model::Model& model, const LineContact& contact)
-    : m_model(&model), m_contact(&contact), m_pairs(contact.allowedPairs()) {}
+ClashReport::ClashReport(const model::Model& model, const LineContact& contact,
+                         std::vector<std::array<int, 2>> pairs)
+    : m_model(&model), m_contact(&contact), m_pairs(std::move(pairs)) {}
 
 void ClashReport::recordClearance(const model::State& state) {
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {

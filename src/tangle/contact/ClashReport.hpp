@@ -20,7 +20,8 @@ namespace tangle::contact {
 /// Collects clearances during a run and writes the report.
 class ClashReport {
  public:
-  ClashReport(const model::Model& model, const LineContact& contact);
+  /// `pairs`: the line pairs (a <= b) it assesses, LineContact::assessedPairs.
+  ClashReport(const model::Model& model, const LineContact& contact, std::vector<std::array<int, 2>> pairs);
 
   /// Records the minimum clearance and the contact force (total, peak per unit length, contact length)
   /// of every allowed line pair at this committed state (call at output times).

@@ -15,21 +15,14 @@ ContactCandidates::ContactCandidates(const model::Model& model, const model::Con
   m_lineEnabled.resize(nLines);
   for (int l = 0; l < nLines; ++l) m_lineEnabled[l] = model.lines()[l].spec->contact;
   for (const double r : m_radius) m_maxRadius = std::max(m_maxRadius, r);
-  m_allowed.assign(nLines, std::vector<bool>(nLines, false));
-  if (spec.pairs.empty()) {
-    for (int a = 0; a < nLines; ++a)
-      for (int b = 0; b < nLines; ++b)
-        m_allowed[a][b] = m_lineEnabled[a] && m_lineEnabled[b] && (a != b || spec.selfContact);
-  } else {
-    auto index = [&](const std::string& name) {
-      for (int l = 0; l < nLines; ++l)
-        if (model.lines()[l].name == name) return l;
-      return -1;
-    };
+  m_everyPair = spec.pairs.empty();
+  if (!m_everyPair) {
+    std::map<std::string, int> index;
+    for (int l = 0; l < nLines; ++l) index.emplace(model.lines()[l].name, l);
     for (const auto& [first, second] : spec.pairs) {
-      const int a = index(first), b = index(second);
-      if (a < 0 || b < 0) continue;  // the reader has already rejected unknown names
-      m_allowed[a][b] = m_allowed[b][a] = true;
+      const auto a = index.find(first), b = index.find(second);
+      if (a == index.end() || b == index.end()) continue;  // the reader has already rejected unknown names
+      m_listed.insert(std::minmax(a->second, b->second));
     }
   }
   buildExclusions();
@@ -42,11 +35,67 @@ ContactCandidates::ContactCandidates(const model::Model& model, const model::Con
 
 std::vector<std::array<int, 2>> ContactCandidates::allowedPairs() const {
   std::vector<std::array<int, 2>> pairs;
-  const int n = static_cast<int>(m_allowed.size());
-  for (int a = 0; a < n; ++a)
+  if (!m_everyPair) {
+    for (const auto& [a, b] : m_listed)
+      if (pairAllowed(a, b)) pairs.push_back({a, b});
+    return pairs;
+  }
+  const int n = static_cast<int>(m_lineEnabled.size());
+  for (int a = 0; a < n; ++a) {
+    if (!m_lineEnabled[static_cast<std::size_t>(a)]) continue;
     for (int b = a; b < n; ++b)
       if (pairAllowed(a, b)) pairs.push_back({a, b});
+  }
   return pairs;
+}
+
+std::vector<std::array<int, 2>> ContactCandidates::nearLinePairs(const model::State& state,
+                                                                 double margin) const {
+  struct Box {
+    Vec3 lo, hi;
+    int line;
+  };
+  std::vector<Box> boxes;
+  for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
+    const model::Line& line = m_model->lines()[static_cast<std::size_t>(l)];
+    if (!m_lineEnabled[static_cast<std::size_t>(l)] || line.elementCount == 0) continue;
+    Vec3 lo = state.position[static_cast<std::size_t>(line.firstNode)], hi = lo;
+    for (int n = line.firstNode; n <= line.lastNode(); ++n) {
+      lo = lo.cwiseMin(state.position[static_cast<std::size_t>(n)]);
+      hi = hi.cwiseMax(state.position[static_cast<std::size_t>(n)]);
+    }
+    double radius = 0.0;
+    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
+      radius = std::max(radius, m_radius[static_cast<std::size_t>(e)]);
+    const Vec3 grow = Vec3::Constant(radius + 0.5 * margin);
+    boxes.push_back({lo - grow, hi + grow, l});
+  }
+  std::sort(boxes.begin(), boxes.end(), [](const Box& a, const Box& b) { return a.lo.x() < b.lo.x(); });
+  std::vector<std::array<int, 2>> pairs;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Box& a = boxes[i];
+    if (pairAllowed(a.line, a.line)) pairs.push_back({a.line, a.line});
+    for (std::size_t j = i + 1; j < boxes.size() && boxes[j].lo.x() <= a.hi.x(); ++j) {
+      const Box& b = boxes[j];
+      if (b.lo.y() > a.hi.y() || a.lo.y() > b.hi.y() || b.lo.z() > a.hi.z() || a.lo.z() > b.hi.z()) continue;
+      if (pairAllowed(a.line, b.line)) pairs.push_back({std::min(a.line, b.line), std::max(a.line, b.line)});
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return pairs;
+}
+
+std::size_t ContactCandidates::allowedPairCount() const {
+  if (!m_everyPair) return allowedPairs().size();
+  std::size_t enabled = 0;
+  for (const bool e : m_lineEnabled) enabled += e ? 1 : 0;
+  std::size_t count = enabled * (enabled - (enabled > 0 ? 1 : 0)) / 2 + (m_spec.selfContact ? enabled : 0);
+  // Excluded pairs that the rule would otherwise allow.
+  for (const auto& [a, b] : m_excluded)
+    if (m_lineEnabled[static_cast<std::size_t>(a)] && m_lineEnabled[static_cast<std::size_t>(b)] &&
+        (a != b || m_spec.selfContact))
+      --count;
+  return count;
 }
 
 std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& state, double margin) {
@@ -55,7 +104,8 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
   // calls while no segment end has moved more than half the extra margin since. A box of margin m now lies
   // inside the box of margin m + 2 delta at the earlier positions when no end has moved more than delta,
   // so the earlier list holds every pair overlapping now; the box test below keeps exactly those, in the
-  // broad phase's order: the same pairs as a fresh search. (The search runs twice per step: docs/performance.md.)
+  // broad phase's order: the same pairs as a fresh search. (The search runs twice per step:
+  // docs/performance.md.)
   bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
   if (reuse) {
     double moved = 0.0;
@@ -121,14 +171,15 @@ void ContactCandidates::buildProxies(const model::State& state) {
 
 void ContactCandidates::buildExclusions() {
   const int nLines = static_cast<int>(m_model->lines().size());
+  std::map<std::string, int> names;
+  for (int l = 0; l < nLines; ++l) names.emplace(m_model->lines()[l].name, l);
   auto index = [&](const std::string& name) {
-    for (int l = 0; l < nLines; ++l)
-      if (m_model->lines()[l].name == name) return l;
-    return -1;
+    const auto it = names.find(name);
+    return it == names.end() ? -1 : it->second;
   };
   for (const auto& [first, second] : m_spec.exclude) {
     const int a = index(first), b = index(second);
-    if (a >= 0 && b >= 0) m_allowed[a][b] = m_allowed[b][a] = false;
+    if (a >= 0 && b >= 0) m_excluded.insert(std::minmax(a, b));
   }
   constexpr double inf = std::numeric_limits<double>::infinity();
   for (const model::ContactSpec::ExclusionZone& z : m_spec.exclusionZones) {
@@ -144,46 +195,65 @@ void ContactCandidates::buildExclusions() {
   // is excluded for that pair (the lines touch there by construction, not by a clash).
   const model::State initial = m_model->initialState();
   const auto& elements = m_model->elements();
-  for (int a = 0; a < nLines; ++a)
-    for (int b = a + 1; b < nLines; ++b) {
-      if (!m_allowed[a][b]) continue;
-      const model::Line& la = m_model->lines()[a];
-      const model::Line& lb = m_model->lines()[b];
-      const double radii = m_radius[la.firstElement] + m_radius[lb.firstElement];
-      for (int endA = 0; endA < 2; ++endA)
-        for (int endB = 0; endB < 2; ++endB) {
-          const model::EndSpec& sa = endA == 0 ? la.spec->endA : la.spec->endB;
-          const model::EndSpec& sb = endB == 0 ? lb.spec->endA : lb.spec->endB;
-          const int na = endA == 0 ? la.firstNode : la.lastNode();
-          const int nb = endB == 0 ? lb.firstNode : lb.lastNode();
-          const bool sameVessel = sa.kind == model::EndKind::Vessel && sb.kind == model::EndKind::Vessel && sa.vessel == sb.vessel;
-          const bool held = sa.kind != model::EndKind::Free && sb.kind != model::EndKind::Free;
-          if (!(sameVessel || held)) continue;
-          if ((initial.position[na] - initial.position[nb]).norm() > 4.0 * radii) continue;
-          // Length along each line within 2 radii of the other line.
-          auto reach = [&](const model::Line& l, int end, const model::Line& other) {
-            double arc = 0.0;
-            for (int k = 0; k < l.elementCount; ++k) {
-              const int e = end == 0 ? l.firstElement + k : l.firstElement + l.elementCount - 1 - k;
-              const model::LineElement& el = elements[e];
-              double best = inf;
-              for (int j = 0; j < other.elementCount; ++j) {
-                const model::LineElement& ob = elements[other.firstElement + j];
-                best = std::min(best, geometry::segmentDistance(initial.position[el.node1], initial.position[el.node2],
-                                                                initial.position[ob.node1], initial.position[ob.node2])
-                                          .distance);
-              }
-              arc += el.restLength;
-              if (best > 2.0 * radii) break;
+  // The line pairs with two held or same-vessel ends within 4 radii sums of each other: the ends sorted by x
+  // and swept (a window of 4 x twice the largest radius), not every pair of lines.
+  struct End {
+    double x;
+    int line;
+  };
+  std::vector<End> ends;
+  for (int l = 0; l < nLines; ++l) {
+    const model::Line& line = m_model->lines()[static_cast<std::size_t>(l)];
+    if (line.elementCount == 0) continue;
+    for (const int node : {line.firstNode, line.lastNode()}) ends.push_back({initial.position[node].x(), l});
+  }
+  std::sort(ends.begin(), ends.end(), [](const End& p, const End& q) { return p.x < q.x; });
+  const double window = 8.0 * m_maxRadius;
+  std::set<std::pair<int, int>> near;
+  for (std::size_t i = 0; i < ends.size(); ++i)
+    for (std::size_t j = i + 1; j < ends.size() && ends[j].x - ends[i].x <= window; ++j)
+      if (ends[i].line != ends[j].line) near.insert(std::minmax(ends[i].line, ends[j].line));
+  for (const auto& [a, b] : near) {
+    if (!pairAllowed(a, b)) continue;
+    const model::Line& la = m_model->lines()[a];
+    const model::Line& lb = m_model->lines()[b];
+    const double radii = m_radius[la.firstElement] + m_radius[lb.firstElement];
+    for (int endA = 0; endA < 2; ++endA)
+      for (int endB = 0; endB < 2; ++endB) {
+        const model::EndSpec& sa = endA == 0 ? la.spec->endA : la.spec->endB;
+        const model::EndSpec& sb = endB == 0 ? lb.spec->endA : lb.spec->endB;
+        const int na = endA == 0 ? la.firstNode : la.lastNode();
+        const int nb = endB == 0 ? lb.firstNode : lb.lastNode();
+        const bool sameVessel =
+            sa.kind == model::EndKind::Vessel && sb.kind == model::EndKind::Vessel && sa.vessel == sb.vessel;
+        const bool held = sa.kind != model::EndKind::Free && sb.kind != model::EndKind::Free;
+        if (!(sameVessel || held)) continue;
+        if ((initial.position[na] - initial.position[nb]).norm() > 4.0 * radii) continue;
+        // Length along each line within 2 radii of the other line.
+        auto reach = [&](const model::Line& l, int end, const model::Line& other) {
+          double arc = 0.0;
+          for (int k = 0; k < l.elementCount; ++k) {
+            const int e = end == 0 ? l.firstElement + k : l.firstElement + l.elementCount - 1 - k;
+            const model::LineElement& el = elements[e];
+            double best = inf;
+            for (int j = 0; j < other.elementCount; ++j) {
+              const model::LineElement& ob = elements[other.firstElement + j];
+              best = std::min(
+                  best, geometry::segmentDistance(initial.position[el.node1], initial.position[el.node2],
+                                                  initial.position[ob.node1], initial.position[ob.node2])
+                            .distance);
             }
-            return std::min(arc, l.length);  // includes one element beyond the last close one
-          };
-          const double ra = reach(la, endA, lb), rb = reach(lb, endB, la);
-          const std::array<double, 4> zone{endA == 0 ? 0.0 : la.length - ra, endA == 0 ? ra : la.length,
-                                           endB == 0 ? 0.0 : lb.length - rb, endB == 0 ? rb : lb.length};
-          m_zones[{a, b}].push_back(zone);
-        }
-    }
+            arc += el.restLength;
+            if (best > 2.0 * radii) break;
+          }
+          return std::min(arc, l.length);  // includes one element beyond the last close one
+        };
+        const double ra = reach(la, endA, lb), rb = reach(lb, endB, la);
+        const std::array<double, 4> zone{endA == 0 ? 0.0 : la.length - ra, endA == 0 ? ra : la.length,
+                                         endB == 0 ? 0.0 : lb.length - rb, endB == 0 ? rb : lb.length};
+        m_zones[{a, b}].push_back(zone);
+      }
+  }
 }
 
 bool ContactCandidates::elementPairAllowed(int eA, int eB) const {

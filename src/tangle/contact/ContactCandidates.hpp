@@ -4,8 +4,10 @@
 /// exclusions, exclusion zones, shared connection points) and the broad phase with its Verlet list. The
 /// contact model (LineContact) asks it for candidate pairs and runs the narrow phase on them.
 
+#include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -22,10 +24,24 @@ class ContactCandidates {
   ContactCandidates(const ContactCandidates&) = delete;  // the broad phase's filter points at this object
   ContactCandidates& operator=(const ContactCandidates&) = delete;
 
-  /// Whether two lines may touch.
-  bool pairAllowed(int lineA, int lineB) const { return m_allowed[lineA][lineB]; }
-  /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order.
+  /// Whether two lines may touch: by the rule (every pair of lines that take part) or the listed pairs,
+  /// less the excluded ones. No table of line pairs is kept: a model of 20 000 lines would need 2e8 entries.
+  bool pairAllowed(int lineA, int lineB) const {
+    const std::pair<int, int> key = std::minmax(lineA, lineB);
+    if (!m_excluded.empty() && m_excluded.contains(key)) return false;
+    if (!m_everyPair) return m_listed.contains(key);
+    return m_lineEnabled[static_cast<std::size_t>(lineA)] && m_lineEnabled[static_cast<std::size_t>(lineB)] &&
+           (lineA != lineB || m_spec.selfContact);
+  }
+  /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order
+  /// (as many as allowedPairCount(): quadratic in the lines with every pair allowed).
   std::vector<std::array<int, 2>> allowedPairs() const;
+  /// How many pairs allowedPairs() would give, without forming them.
+  std::size_t allowedPairCount() const;
+  /// The allowed pairs of contact-enabled lines (a <= b, index order) whose bounding boxes at `state`
+  /// (their nodes, grown by their largest contact radius) come within `margin` [m] of each other: a sweep
+  /// over the boxes sorted by x, not a test of every pair. No pair left out has a clearance below `margin`.
+  std::vector<std::array<int, 2>> nearLinePairs(const model::State& state, double margin) const;
   /// Whether element eA (of its line) and eB may touch (not excluded by a pair, a zone or a shared
   /// connection point).
   bool elementPairAllowed(int eA, int eB) const;
@@ -52,9 +68,11 @@ class ContactCandidates {
   const model::Model* m_model;
   model::ContactSpec m_spec;
   std::vector<bool> m_lineEnabled;
-  std::vector<std::vector<bool>> m_allowed;
-  std::vector<double> m_radius;  // contact radius per element [m]
-  double m_maxRadius = 0.0;      // largest of m_radius [m]
+  bool m_everyPair = true;                   // contact.pairs empty: every pair of enabled lines
+  std::set<std::pair<int, int>> m_listed;    // contact.pairs (a <= b)
+  std::set<std::pair<int, int>> m_excluded;  // contact.exclude (a <= b)
+  std::vector<double> m_radius;              // contact radius per element [m]
+  double m_maxRadius = 0.0;                  // largest of m_radius [m]
   std::map<std::pair<int, int>, std::vector<std::array<double, 4>>>
       m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
   BroadPhase m_broadPhase;

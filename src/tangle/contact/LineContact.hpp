@@ -217,6 +217,18 @@ class LineContact final : public solver::LoadContributor {
   bool pairAllowed(int lineA, int lineB) const { return m_search.pairAllowed(lineA, lineB); }
   /// Every pair of lines that may touch, as (a, b) with a <= b (a == b: self-contact), in index order.
   std::vector<std::array<int, 2>> allowedPairs() const { return m_search.allowedPairs(); }
+  /// How many pairs allowedPairs() would give (ContactCandidates::allowedPairCount).
+  std::size_t allowedPairCount() const { return m_search.allowedPairCount(); }
+  /// Most line pairs the clearance envelope and the clash report assess one by one: with more allowed
+  /// pairs (a model of hundreds of lines with every pair allowed) they assess the pairs that come near.
+  static constexpr std::size_t kAssessedPairLimit = 2000;
+  /// The line pairs the clearance envelope and the clash report assess at `state` (the static
+  /// equilibrium): every allowed pair up to kAssessedPairLimit of them, otherwise the allowed pairs within
+  /// the contact's clearance margin of each other (ContactCandidates::nearLinePairs).
+  std::vector<std::array<int, 2>> assessedPairs(const model::State& state) const {
+    return allowedPairCount() <= kAssessedPairLimit ? allowedPairs()
+                                                    : m_search.nearLinePairs(state, m_spec.clearanceMargin);
+  }
   /// Minimum clearance between two lines at a state: (clearance [m], arcA [m], arcB [m]). The clearance is
   /// the gap between the surfaces (negative in contact; beams near contact on their smooth centrelines, as
   /// contact measures them); +inf when farther than the clearance margin.

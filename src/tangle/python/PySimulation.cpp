@@ -188,7 +188,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   ranges.setSeabedLevels(analysis::RangeGraphs::seabedLevels(m));
   std::vector<double> times, vesselMotion;
   std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
-      m, m_sim->contact() ? m_sim->contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+      m, m_sim->contact() ? m_sim->contact()->assessedPairs(m_sim->state()) : std::vector<std::array<int, 2>>{});
   if (envelope->empty()) {
     envelope.reset();
   } else {

@@ -295,8 +295,17 @@ bool RunOutputs::writeStatics() {
       audit->warnings().empty() ? "in balance" : "NOT in balance (see the warnings)",
       audit->worstRelativeResidual()));
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
-  envelope = std::make_unique<contact::ClearanceEnvelope>(
-      m, sim.contact() ? sim.contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+  // The line pairs the clearance envelope and the clash report assess (LineContact::assessedPairs).
+  m_assessedPairs =
+      sim.contact() ? sim.contact()->assessedPairs(sim.state()) : std::vector<std::array<int, 2>>{};
+  if (sim.contact() && m_assessedPairs.size() < sim.contact()->allowedPairCount())
+    log.info(
+        fmt::format("clearance and clash report: the {} of the {} allowed line pairs that are within the "
+                    "clearance margin ({:g} m) of each other at the static equilibrium (more than {} pairs "
+                    "are assessed only where they come near; clearance.pairs lists others)\n",
+                    m_assessedPairs.size(), sim.contact()->allowedPairCount(),
+                    m.spec().contact.clearanceMargin, contact::LineContact::kAssessedPairLimit));
+  envelope = std::make_unique<contact::ClearanceEnvelope>(m, m_assessedPairs);
   if (envelope->empty()) {
     envelope.reset();
   } else {
@@ -374,7 +383,7 @@ bool RunOutputs::runDynamics() {
   std::vector<double> maxOffset(m.vessels().size(), 0.0);
   updateMaxOffsets(m, sim.state(), maxOffset);
   std::unique_ptr<contact::ClashReport> clash;
-  if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact());
+  if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact(), m_assessedPairs);
   // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
   // vector relative to the initial heading) against time.
   std::unique_ptr<core::OutputFile> vesselFile;
@@ -418,9 +427,7 @@ bool RunOutputs::runDynamics() {
   // envelope object (ClearanceEnvelope keeps a search cache).
   std::vector<solver::LineSnapshot> stepSnapshot;
   std::unique_ptr<contact::ClearanceEnvelope> frameEnvelope;
-  if (envelope)
-    frameEnvelope = std::make_unique<contact::ClearanceEnvelope>(
-        m, sim.contact() ? sim.contact()->allowedPairs() : std::vector<std::array<int, 2>>{});
+  if (envelope) frameEnvelope = std::make_unique<contact::ClearanceEnvelope>(m, m_assessedPairs);
   // Steps are handed over in batches (one job per kStepsPerJob steps: a job per step cost more in
   // hand-over than it moved off this thread on the mooring example), always before an output time's job.
   // A batch holds its steps' positions (and triads) in one array each, filled in place: a state copied
@@ -612,8 +619,12 @@ bool RunOutputs::runDynamics() {
   }
   if (clash) {
     std::vector<int> contactLines;
-    for (const auto& pair : sim.contact()->allowedPairs())
+    for (const auto& pair : m_assessedPairs)
       contactLines.insert(contactLines.end(), pair.begin(), pair.end());
+    for (const contact::ContactEvent& e : sim.contact()->events()) {
+      contactLines.push_back(e.lineA);
+      contactLines.push_back(e.lineB);
+    }
     std::sort(contactLines.begin(), contactLines.end());
     const model::ContactSpec& cs = m.spec().contact;
     const std::vector<analysis::LineClashDamage> damage = analysis::clashDamage(

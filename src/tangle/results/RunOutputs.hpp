@@ -16,6 +16,7 @@
 ///     second thread while the report is written, plots, the folder's status.
 /// A run that fails midway keeps every result already written.
 
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -89,6 +90,7 @@ class RunOutputs {
   bool m_csv = true, m_hdf5 = true;            ///< output.format resolved (ResultFiles)
   std::unique_ptr<io::Hdf5Results> m_h5;
   std::unique_ptr<contact::ClearanceEnvelope> m_envelope;
+  std::vector<std::array<int, 2>> m_assessedPairs;  // LineContact::assessedPairs at the static equilibrium
   std::unique_ptr<io::HtmlReport> m_report;
   std::chrono::steady_clock::duration m_reportTime{};
 };
