@@ -371,6 +371,12 @@ def clearance_figure(table: Table) -> Figure:
     ax = fig.subplots()
     unique, labels = _pairs(table["pair"])
     labels = np.array(labels, dtype=object)
+    title = "Line-to-line clearance"
+    if len(unique) > MAX_PAIR_CURVES:
+        # A model of many lines: the pairs that come nearest (a legend of thousands is no plot).
+        nearest = {p: np.nanmin(np.where(labels == p, d, np.inf)) for p in unique}
+        unique = sorted(unique, key=lambda p: nearest[p])[:MAX_PAIR_CURVES]
+        title += f" (the {MAX_PAIR_CURVES} nearest of {len(nearest)} pairs)"
     for k, pair in enumerate(unique):
         sel = labels == pair
         tp, dp = t[sel], d[sel]
@@ -385,9 +391,14 @@ def clearance_figure(table: Table) -> Figure:
         ax.plot(tp[i], dp[i], marker="v", color=color, markersize=6)
     ax.axhline(0.0, color="black", linewidth=0.8, linestyle="--")
     _finish(ax, "time [s]", "minimum clearance [m]")
-    ax.set_title("Line-to-line clearance")
+    ax.set_title(title)
     ax.legend(loc="best", fontsize="small")
     return fig
+
+
+MAX_PAIR_CURVES = 10       # clearance.png: the pairs that come nearest, beyond this many pairs
+MAX_ENVELOPE_PANELS = 12   # clearance_envelope.png: the sides with the smallest clearance, beyond this many
+MAX_LINE_FIGURES = 100     # statics_<line>.png and range_<line>.png: the first lines, beyond this many
 
 
 def clearance_envelope_figure(table: Table, required: float | None = None) -> Figure:
@@ -403,6 +414,13 @@ def clearance_envelope_figure(table: Table, required: float | None = None) -> Fi
         return _no_data(fig, "no clearance envelope data")
     sides = np.array([f"{a} to {b}" for a, b in zip(table["line"], table["other_line"])], dtype=object)
     unique = list(dict.fromkeys(sides))
+    if len(unique) > MAX_ENVELOPE_PANELS:
+        # A model of many lines: the sides with the smallest clearance (static or dynamic), one panel each.
+        smallest = {side: np.nanmin(np.fmin(static[sides == side], dynamic[sides == side])) for side in unique}
+        unique = sorted(unique, key=lambda side: smallest[side])[:MAX_ENVELOPE_PANELS]
+        fig.suptitle(f"Clearance envelope: the {MAX_ENVELOPE_PANELS} sides with the smallest clearance of "
+                     f"{len(smallest)} (clearance/summary.json has every pair)")
+        fig.set_size_inches(10.0, 2.2 * MAX_ENVELOPE_PANELS)
     axes = np.atleast_1d(fig.subplots(len(unique), 1, sharex=False, squeeze=False)[:, 0])
     for ax, side in zip(axes, unique):
         sel = sides == side
@@ -610,16 +628,20 @@ def plot_results(results_dir: str | Path, out_dir: str | Path | None = None, err
     if statics_dir.is_dir():
         # The line tables are the files the summary names; statics/contact_*.csv are contact results.
         stems = {line.get("file_stem") for line in summary.get("lines", []) if isinstance(line, dict)}
-        for csv_path in sorted(statics_dir.glob("*.csv")):
-            if stems - {None} and csv_path.stem not in stems:
-                continue
-            if not stems - {None} and csv_path.stem in ("contact_points", "contact_pairs"):
-                continue
+        tables = [p for p in sorted(statics_dir.glob("*.csv"))
+                  if not (stems - {None} and p.stem not in stems)
+                  and not (not stems - {None} and p.stem in ("contact_points", "contact_pairs"))]
+        # A model of many lines: a figure per line for the first MAX_LINE_FIGURES (in name order), and a note;
+        # thousands of figures took longer than the run (2000 lines: more than 10 minutes).
+        if len(tables) > MAX_LINE_FIGURES:
+            print(f"tangle_plot: {len(tables)} lines: statics and range figures of the first {MAX_LINE_FIGURES} "
+                  f"only (plot_statics / plot_range make any other)", file=sys.stderr)
+        for csv_path in tables[:MAX_LINE_FIGURES]:
             attempt(csv_path, lambda p=csv_path: plot_statics(p, out / f"statics_{p.stem}.png", depth))
 
     dynamics_dir = results / "dynamics"
     if dynamics_dir.is_dir():
-        for line_dir in sorted(p for p in dynamics_dir.iterdir() if p.is_dir()):
+        for line_dir in sorted(p for p in dynamics_dir.iterdir() if p.is_dir())[:MAX_LINE_FIGURES]:
             csv_path = line_dir / "range.csv"
             if csv_path.is_file():
                 attempt(csv_path, lambda p=csv_path: plot_range(p, out / f"range_{p.parent.name}.png"))

@@ -230,6 +230,30 @@ def test_a_pipe_line_shows_its_wall_tension(tmp: Path) -> None:
     assert fig.axes[1].get_ylabel() == "wall tension [kN]"
 
 
+def test_many_pairs_plot_the_nearest_only(tmp: Path) -> None:
+    # A model of hundreds of lines (issue 45): clearance.png shows the 10 pairs that come nearest and
+    # clearance_envelope.png the 12 sides with the smallest clearance, not a curve or panel for each of
+    # thousands (a 300-line run's plots took longer than its analysis).
+    rows = []
+    for p in range(30):
+        for t in range(3):
+            rows.append([f"{t}.0", f"a{p}/b{p}", f"{float(p) + 0.1 * t}", "0", "0"])
+    write_csv(tmp / "clearance.csv", ["time_s", "pair", "min_clearance_m", "arc_1_m", "arc_2_m"], rows)
+    fig = tangle_plot.clearance_figure(tangle_plot.read_csv(tmp / "clearance.csv", text=("pair",)))
+    curves = [ln.get_label() for ln in fig.axes[0].get_lines() if not ln.get_label().startswith("_")]
+    assert len(curves) == tangle_plot.MAX_PAIR_CURVES
+    assert all(label.startswith(f"a{p}/b{p} ") for p, label in enumerate(curves)), curves
+    rows = []
+    for p in range(30):
+        for i in range(4):
+            rows.append([f"a{p}", f"b{p}", f"{10.0 * i}", f"{100.0 - p}", f"{100.0 - p - i}", "1.0"])
+    write_csv(tmp / "envelope.csv", ["line", "other_line", "arc_length_m", "static_clearance_m", "min_clearance_m",
+                                     "time_of_min_s"], rows)
+    fig = tangle_plot.clearance_envelope_figure(tangle_plot.read_csv(tmp / "envelope.csv", text=("line", "other_line")))
+    assert len(fig.axes) == tangle_plot.MAX_ENVELOPE_PANELS
+    assert fig.axes[0].get_title() == "Clearance from 'a29' to 'b29'"
+
+
 def test_bad_file_is_reported_and_others_still_plotted(tmp: Path) -> None:
     results = tmp / "run"
     make_results(results)
