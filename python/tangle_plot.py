@@ -446,6 +446,7 @@ _H5_QUANTITIES = {
     "x_m": ("position", 0), "y_m": ("position", 1), "z_m": ("position", 2),
     "effective_tension_N": ("effective_tension", None), "bending_moment_Nm": ("bending_moment", None),
     "curvature_1_per_m": ("curvature", None), "torque_Nm": ("torque", None),
+    "wall_tension_N": ("wall_tension", None),
     "bending_moment_x_Nm": ("bending_moment_vector", 0), "bending_moment_y_Nm": ("bending_moment_vector", 1),
     "bending_moment_z_Nm": ("bending_moment_vector", 2),
 }

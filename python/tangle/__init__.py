@@ -178,7 +178,8 @@ class DynamicResults:
         r = self.lines[line]["range"]
         keys = [k for k in r if k.startswith(quantity + "_min_")]
         if not keys:
-            raise KeyError(f"no range graph of {quantity!r}; one of: effective_tension, bending_moment, curvature")
+            raise KeyError(f"no range graph of {quantity!r}; one of: effective_tension, wall_tension (a line with a "
+                           "bore), bending_moment, curvature")
         unit = keys[0][len(quantity) + 5:]
         return {"arc_length_m": self.lines[line]["arc_length_m"], "min": r[f"{quantity}_min_{unit}"],
                 "max": r[f"{quantity}_max_{unit}"], "mean": r[f"{quantity}_mean_{unit}"]}

@@ -19,8 +19,9 @@ namespace fs = std::filesystem;
 namespace {
 const char* const kQuantities[] = {"x_m", "y_m", "z_m", "effective_tension_N", "bending_moment_Nm",
                                    "curvature_1_per_m", "bending_moment_x_Nm", "bending_moment_y_Nm",
-                                   "bending_moment_z_Nm", "torque_Nm"};
-constexpr int kQuantityCount = 10;
+                                   "bending_moment_z_Nm", "torque_Nm", "wall_tension_N"};
+constexpr int kQuantityCount = 11;
+constexpr int kWallTension = 10;  // pipe lines only
 
 /// The bending moment, its components and the torque: results of beam elements only.
 bool isBendingQuantity(int q) { return q == 4 || (q >= 6 && q <= 9); }
@@ -36,7 +37,8 @@ double quantity(const solver::LineSnapshot& s, int q, std::size_t i) {
     case 6: return s.bendingMomentVector[i].x();
     case 7: return s.bendingMomentVector[i].y();
     case 8: return s.bendingMomentVector[i].z();
-    default: return s.torque[i];
+    case 9: return s.torque[i];
+    default: return s.wallTension[i];
   }
 }
 }  // namespace
@@ -65,7 +67,7 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
   const bool selected[kQuantityCount] = {t.position,      t.position,  t.position,
                                          t.effectiveTension, t.bendingMoment, t.curvature,
                                          t.bendingMomentVector, t.bendingMomentVector, t.bendingMomentVector,
-                                         t.torque};
+                                         t.torque,   t.wallTension};
   for (int q = 0; q < kQuantityCount; ++q)
     if (selected[q]) m_quantities.push_back(q);
   const fs::path dyn = dir / "dynamics";
@@ -81,8 +83,10 @@ DynamicRecorder::DynamicRecorder(const fs::path& dir, const std::vector<solver::
     std::vector<std::unique_ptr<core::OutputFile>> streams;
     // A cable line has no bending moment (nor its components) or torque: no file for them.
     std::vector<int> quantities;
+    // Nor has a line without a bore a wall tension.
     for (const int q : m_quantities)
-      if (s.hasBending || !isBendingQuantity(q)) quantities.push_back(q);
+      if ((s.hasBending || !isBendingQuantity(q)) && (q != kWallTension || !s.wallTension.empty()))
+        quantities.push_back(q);
     m_lineQuantities.push_back(quantities);
     for (const int q : quantities) {
       auto f = std::make_unique<core::OutputFile>(ld / (std::string(kQuantities[q]) + ".csv"));

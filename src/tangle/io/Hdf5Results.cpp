@@ -25,6 +25,7 @@ enum LineSeries {
   kMomentVector,
   kCurvature,
   kTorque,
+  kWallTension,
   kEndTension,
   kEndForce,
   kCount
@@ -166,6 +167,9 @@ void Hdf5Results::beginDynamics(const std::vector<solver::LineSnapshot>& initial
                                                    "bending moment, global axes [time, node, xyz]");
     if (t.curvature) series[kCurvature] = m_file->createSeries(g + "/curvature", {n}, "1/m", "curvature [time, node]");
     if (t.torque) series[kTorque] = m_file->createSeries(g + "/torque", {n}, "N m", "torque [time, node]");
+    if (t.wallTension && !initial[l].wallTension.empty())  // lines with a bore only
+      series[kWallTension] = m_file->createSeries(g + "/wall_tension", {n}, "N",
+                                                  "wall tension T_e + p_i A_i - p_e A_e [time, node]");
     series[kEndTension] = m_file->createSeries(g + "/end_tension", {2}, "N",
                                                "effective tension at end A and end B [time, end]");
     series[kEndForce] = m_file->createSeries(g + "/end_force", {2, 3}, "N",
@@ -195,6 +199,7 @@ void Hdf5Results::record(double time, const std::vector<solver::LineSnapshot>& l
     if (k[kMomentVector] >= 0) m_file->append(k[kMomentVector], flatten(s.bendingMomentVector).data());
     if (k[kCurvature] >= 0) m_file->append(k[kCurvature], s.curvature.data());
     if (k[kTorque] >= 0) m_file->append(k[kTorque], s.torque.data());
+    if (k[kWallTension] >= 0) m_file->append(k[kWallTension], s.wallTension.data());
     const double ends[2] = {s.endTensionA, s.endTensionB};
     m_file->append(k[kEndTension], ends);
     const Vec3 &a = s.endTensionForceA, &b = s.endTensionForceB;

@@ -1041,13 +1041,19 @@ void readOutput(const Value& v, ModelSpec& spec) {
   if (const std::optional<Value> histories = m.find("time_histories")) {
     // `all`, `none`, or a list of quantity names.
     model::TimeHistorySelection& t = spec.output.timeHistories;
-    const std::string names = "position, effective_tension, bending_moment, bending_moment_vector, curvature, torque";
+    const std::string names =
+        "position, effective_tension, wall_tension, bending_moment, bending_moment_vector, curvature, torque";
+    const auto every = [&t](bool value) {
+      t.position = t.effectiveTension = t.wallTension = t.bendingMoment = t.bendingMomentVector = t.curvature =
+          t.torque = value;
+    };
     if (histories->isSequence()) {
-      t = model::TimeHistorySelection{false, false, false, false, false, false};
+      every(false);
       for (const Value& item : histories->items(0)) {
         const std::string q = item.text("a quantity name");
         bool* flag = q == "position"                ? &t.position
                      : q == "effective_tension"     ? &t.effectiveTension
+                     : q == "wall_tension"          ? &t.wallTension
                      : q == "bending_moment"        ? &t.bendingMoment
                      : q == "bending_moment_vector" ? &t.bendingMomentVector
                      : q == "curvature"             ? &t.curvature
@@ -1058,7 +1064,7 @@ void readOutput(const Value& v, ModelSpec& spec) {
       }
     } else {
       const bool all = histories->choice<bool>({{"all", true}, {"none", false}});
-      t = model::TimeHistorySelection{all, all, all, all, all, all};
+      every(all);
     }
   }
 }

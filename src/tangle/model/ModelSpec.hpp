@@ -440,6 +440,9 @@ struct TimeHistorySelection {
   bool bendingMomentVector = true;  ///< bending_moment_{x,y,z}_Nm / bending_moment_vector
   bool curvature = true;            ///< curvature_1_per_m / curvature
   bool torque = true;               ///< torque_Nm / torque
+  /// wall_tension_N / wall_tension: lines with a bore only (LineSnapshot::wallTension), whose CSV and series
+  /// valuesPerNode leaves out (few lines are pipes; the estimate it serves is of the bulk).
+  bool wallTension = true;
   /// Values per node and output time (the CSV columns: 3 for a vector).
   int valuesPerNode() const {
     return 3 * position + effectiveTension + bendingMoment + 3 * bendingMomentVector + curvature + torque;

@@ -55,6 +55,10 @@ py::dict profile(const solver::LineSnapshot& s) {
   d["arc_length_m"] = array(s.arcLength, {n});
   d["position_m"] = positions(s.position);
   d["effective_tension_N"] = array(s.tension, {n});
+  if (!s.wallTension.empty()) {  // a line with a bore
+    d["wall_tension_N"] = array(s.wallTension, {n});
+    d["internal_pressure_Pa"] = array(s.internalPressure, {n});
+  }
   d["bending_moment_Nm"] = array(s.bendingMoment, {n});
   d["curvature_1_per_m"] = array(s.curvature, {n});
   d["torque_Nm"] = array(s.torque, {n});
@@ -72,6 +76,7 @@ py::dict profile(const solver::LineSnapshot& s) {
 /// Time histories of one line, filled at the output times.
 struct LineHistory {
   std::vector<double> position, tension, moment, curvature, torque, endTension, endForce;
+  std::vector<double> wallTension;  // lines with a bore only
 };
 
 }  // namespace
@@ -209,6 +214,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
         LineHistory& h = hist[l];
         for (const Vec3& p : x.position) h.position.insert(h.position.end(), {p.x(), p.y(), p.z()});
         h.tension.insert(h.tension.end(), x.tension.begin(), x.tension.end());
+        h.wallTension.insert(h.wallTension.end(), x.wallTension.begin(), x.wallTension.end());
         h.moment.insert(h.moment.end(), x.bendingMoment.begin(), x.bendingMoment.end());
         h.curvature.insert(h.curvature.end(), x.curvature.begin(), x.curvature.end());
         h.torque.insert(h.torque.end(), x.torque.begin(), x.torque.end());
@@ -274,6 +280,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     d["arc_length_m"] = array(line.arcLength, {n});
     d["position_m"] = array(h.position, {nt, n, 3});
     d["effective_tension_N"] = array(h.tension, {nt, n});
+    if (line.pipe) d["wall_tension_N"] = array(h.wallTension, {nt, n});
     d["bending_moment_Nm"] = array(h.moment, {nt, n});
     d["curvature_1_per_m"] = array(h.curvature, {nt, n});
     d["torque_Nm"] = array(h.torque, {nt, n});
@@ -290,6 +297,11 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     range["effective_tension_min_N"] = array(r.tensionMin, {n});
     range["effective_tension_max_N"] = array(r.tensionMax, {n});
     range["effective_tension_mean_N"] = mean(r.tensionSum, r.tensionMin);
+    if (!r.wallTensionSum.empty()) {
+      range["wall_tension_min_N"] = array(r.wallTensionMin, {n});
+      range["wall_tension_max_N"] = array(r.wallTensionMax, {n});
+      range["wall_tension_mean_N"] = mean(r.wallTensionSum, r.wallTensionMin);
+    }
     range["bending_moment_min_Nm"] = array(r.momentMin, {n});
     range["bending_moment_max_Nm"] = array(r.momentMax, {n});
     range["bending_moment_mean_Nm"] = mean(r.momentSum, r.momentMin);

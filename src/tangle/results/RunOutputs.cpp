@@ -375,7 +375,7 @@ bool RunOutputs::runDynamics() {
   const std::vector<solver::LineSnapshot>& lines = m_static;
   io::DynamicRecorder recorder(outDir, lines, m.spec().output.vtk ? m.spec().output.vtkInterval : 0.0,
                                m_csv ? m.spec().output.timeHistories
-                                     : model::TimeHistorySelection{false, false, false, false, false, false});
+                                     : model::TimeHistorySelection{false, false, false, false, false, false, false});
   if (h5) h5->beginDynamics(lines);
   recorder.setSeabedLevels(analysis::RangeGraphs::seabedLevels(m));
   std::vector<double> vesselMotion(6 * m.vessels().size());
