@@ -48,12 +48,10 @@ FatigueDamage::FatigueDamage(const model::Model& model) : m_model(&model) {
       const double radius = fs.innerSurface ? 0.5 * di : 0.5 * d;
       s.axial = fs.stressConcentration / steelArea;
       s.bending = fs.stressConcentration * radius / inertia;
-      // Wall tension T_w = T_e + p_i A_i - p_e A_e (Sparks 1984): A_e is the area whose displaced water the
-      // model's buoyancy uses, A_i the line type's bore.
+      // Wall tension T_w = T_e + p_i A_i - p_e A_e (Sparks 1984) on this line type's areas, or T_e.
       const section::LineType& type = spec.lineTypes.at(fs.lineType);
-      s.externalArea = fs.wallTension ? type.displacedAreaPerLength() : 0.0;
-      s.internalArea = fs.wallTension ? type.internalArea() : 0.0;
-      s.points = spec.lineTypes.at(fs.lineType).isBeam() ? fs.points : 1;  // no bending: one stress
+      s.wallType = fs.wallTension ? &type : nullptr;
+      s.points = type.isBeam() ? fs.points : 1;  // no bending: one stress
     }
     for (int k = 0; k < s.points; ++k) {
       const double theta = 2.0 * kPi * k / s.points;
@@ -125,8 +123,9 @@ void FatigueDamage::accumulate(const std::vector<solver::LineSnapshot>& lines, c
       continue;
     }
     const Vec3& x = state.position[static_cast<std::size_t>(st.globalNode)];
-    const double internal = snap.internalPressure.empty() ? 0.0 : snap.internalPressure[node] * s.internalArea;
-    const double wallTension = snap.tension[node] + internal - rhoG * std::max(0.0, -x.z()) * s.externalArea;
+    const double internal = snap.internalPressure.empty() ? 0.0 : snap.internalPressure[node];
+    const double wallTension =
+        snap.tension[node] + (s.wallType ? solver::wallTensionPressureTerm(*s.wallType, internal, x.z(), rhoG) : 0.0);
     const double axial = s.axial * wallTension;
     double m2 = 0.0, m3 = 0.0;
     if (st.points > 1) {

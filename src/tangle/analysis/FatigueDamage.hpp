@@ -84,8 +84,9 @@ class FatigueDamage {
     TnCurve tn;
     double axial = 0.0;    ///< SCF / A_s [1/m^2]
     double bending = 0.0;  ///< SCF r / I [1/m^3]
-    double externalArea = 0.0;  ///< A_e of the wall tension's external pressure term [m^2] (0: effective tension)
-    double internalArea = 0.0;  ///< A_i of its internal pressure term [m^2] (0: effective tension or no bore)
+    /// The line type whose areas the wall tension's pressure term takes (ModelSpec's); null: the effective
+    /// tension (fatigue `tension: effective`).
+    const section::LineType* wallType = nullptr;
     int points = 1;
     std::vector<double> sinTheta, cosTheta;  ///< of the points' angles theta_k
   };

@@ -77,8 +77,7 @@ MemoryEstimate estimateMemory(Simulation& simulation) {
     // clearance margin at the start (the ones the clearance envelope assesses, and the only ones a run that
     // moves the lines less than the margin brings near each other).
     const bool every = contact->allowedPairCount() <= contact::LineContact::kAssessedPairLimit;
-    const std::vector<std::array<int, 2>> pairs =
-        every ? contact->allowedPairs() : contact->assessedPairs(simulation.state());
+    const std::vector<std::array<int, 2>> pairs = contact->assessedPairs(simulation.state());
     double elementPairs = 0.0, nodeSides = 0.0;
     for (const auto& pair : pairs) {
       const model::Line& a = m.lines()[static_cast<std::size_t>(pair[0])];

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <tuple>
 
 namespace tangle::analysis {
 
@@ -11,20 +10,17 @@ RangeGraphs::RangeGraphs(const std::vector<solver::LineSnapshot>& initial) {
   for (const solver::LineSnapshot& s : initial) {
     const std::size_t n = s.arcLength.size();
     Range r;
-    for (auto [min, max, sum] : {std::tie(r.tensionMin, r.tensionMax, r.tensionSum),
-                                 std::tie(r.momentMin, r.momentMax, r.momentSum),
-                                 std::tie(r.curvatureMin, r.curvatureMax, r.curvatureSum)}) {
+    const auto reset = [&](std::vector<double>& min, std::vector<double>& max, std::vector<double>& sum) {
       min.assign(n, inf);
       max.assign(n, -inf);
       sum.assign(n, 0.0);
-    }
+    };
+    reset(r.tensionMin, r.tensionMax, r.tensionSum);
+    reset(r.momentMin, r.momentMax, r.momentSum);
+    reset(r.curvatureMin, r.curvatureMax, r.curvatureSum);
+    if (!s.wallTension.empty()) reset(r.wallTensionMin, r.wallTensionMax, r.wallTensionSum);  // pipe lines
     r.endTensionMaxA = r.endTensionMaxB = -inf;
     r.endTensionMinA = r.endTensionMinB = inf;
-    if (!s.wallTension.empty()) {
-      r.wallTensionMin.assign(n, inf);
-      r.wallTensionMax.assign(n, -inf);
-      r.wallTensionSum.assign(n, 0.0);
-    }
     if (!s.tension.empty())
       r.retension = std::max(1.0, 0.01 * *std::max_element(s.tension.begin(), s.tension.end()));
     m_ranges.push_back(std::move(r));

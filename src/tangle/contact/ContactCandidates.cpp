@@ -17,12 +17,10 @@ ContactCandidates::ContactCandidates(const model::Model& model, const model::Con
   for (const double r : m_radius) m_maxRadius = std::max(m_maxRadius, r);
   m_everyPair = spec.pairs.empty();
   if (!m_everyPair) {
-    std::map<std::string, int> index;
-    for (int l = 0; l < nLines; ++l) index.emplace(model.lines()[l].name, l);
     for (const auto& [first, second] : spec.pairs) {
-      const auto a = index.find(first), b = index.find(second);
-      if (a == index.end() || b == index.end()) continue;  // the reader has already rejected unknown names
-      m_listed.insert(std::minmax(a->second, b->second));
+      const int a = model.lineIndex(first), b = model.lineIndex(second);
+      if (a < 0 || b < 0) continue;  // the reader has already rejected unknown names
+      m_listed.insert(std::minmax(a, b));
     }
   }
   buildExclusions();
@@ -171,12 +169,7 @@ void ContactCandidates::buildProxies(const model::State& state) {
 
 void ContactCandidates::buildExclusions() {
   const int nLines = static_cast<int>(m_model->lines().size());
-  std::map<std::string, int> names;
-  for (int l = 0; l < nLines; ++l) names.emplace(m_model->lines()[l].name, l);
-  auto index = [&](const std::string& name) {
-    const auto it = names.find(name);
-    return it == names.end() ? -1 : it->second;
-  };
+  const auto index = [&](const std::string& name) { return m_model->lineIndex(name); };
   for (const auto& [first, second] : m_spec.exclude) {
     const int a = index(first), b = index(second);
     if (a >= 0 && b >= 0) m_excluded.insert(std::minmax(a, b));

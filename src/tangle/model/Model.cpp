@@ -139,9 +139,8 @@ std::array<double, 6> Model::vesselMotion(const State& state, int v) const {
 }
 
 int Model::lineIndex(const std::string& name) const {
-  for (int l = 0; l < static_cast<int>(m_lines.size()); ++l)
-    if (m_lines[l].name == name) return l;
-  return -1;
+  const auto it = m_lineIndex.find(name);
+  return it == m_lineIndex.end() ? -1 : it->second;
 }
 
 int Model::vesselIndex(const std::string& name) const {
@@ -282,6 +281,7 @@ void Model::buildLine(int lineIndex) {
       m_dofs.constrain(m_dofs.firstDof(lockNode) + 3 + axis);
     }
   }
+  m_lineIndex.emplace(line.name, static_cast<int>(m_lines.size()));  // the first of a name, as before
   m_lines.push_back(std::move(line));
 }
 

@@ -4,6 +4,7 @@
 /// initial state (analytic catenary or straight shapes) from which the static solve starts.
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -133,6 +134,7 @@ class Model {
 
   std::unique_ptr<ModelSpec> m_spec;
   std::vector<Line> m_lines;
+  std::map<std::string, int> m_lineIndex;  // line name -> index (lineIndex)
   std::vector<LineElement> m_elements;
   std::vector<NodeAttachment> m_attachments;
   std::vector<std::unique_ptr<section::LineType>> m_contentTypes;  // line types with contents (per section)

@@ -78,10 +78,9 @@ void setWallTension(const model::Model& model, int l, LineSnapshot& s) {
   // over the node's elements (they differ only where two line types meet).
   for (std::size_t e = 0; e + 1 < n; ++e) {
     const section::LineType& type = *model.elements()[static_cast<std::size_t>(line.firstElement) + e].type;
-    const double ai = type.internalArea(), ae = type.displacedAreaPerLength();
     for (const std::size_t k : {e, e + 1}) {
       const double weight = (k == 0 || k + 1 == n) ? 1.0 : 0.5;
-      s.wallTension[k] += weight * (s.internalPressure[k] * ai - rhoG * std::max(0.0, -s.position[k].z()) * ae);
+      s.wallTension[k] += weight * wallTensionPressureTerm(type, s.internalPressure[k], s.position[k].z(), rhoG);
     }
   }
   for (std::size_t k = 0; k < n; ++k) s.wallTension[k] += s.tension[k];

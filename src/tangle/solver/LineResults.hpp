@@ -2,6 +2,7 @@
 /// @file LineResults.hpp
 /// Per-node results along each line (what range graphs and result tables show), computed from a state.
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,15 @@ struct LineSnapshot {
 /// e x (M2 - M1) / L (LineResults.cpp).
 Vec3 elementSectionForce(const model::State& state, const model::LineElement& el, double tension,
                          const element::BeamSectionForces* beam);
+
+/// The pressure part of the wall tension of a section of line type `type` at height `z` [m] with internal
+/// pressure `internalPressure` [Pa]: p_i A_i - p_e A_e [N], p_e = rho g max(0, -z) the still-water pressure
+/// (`rhoG` = rho g [N/m^3]) on the buoyancy area; T_w = T_e + this (Sparks 1984). One formula for the result
+/// tables and fatigue.
+inline double wallTensionPressureTerm(const section::LineType& type, double internalPressure, double z,
+                                      double rhoG) {
+  return internalPressure * type.internalArea() - rhoG * std::max(0.0, -z) * type.displacedAreaPerLength();
+}
 
 /// Sets `s.internalPressure` and `s.wallTension` of line `line` from `s.position` and `s.tension` (cleared
 /// for a line that is not a pipe). computeLineResults calls it; a caller that changes `s.tension` afterwards
