@@ -33,6 +33,7 @@ bool overlaps(double lo, double hi, double from, double to) { return hi >= from 
 /// Folds event `from` into `into` (two open events of a pair that one patch now joins: one contact).
 void mergeEvent(ContactEvent& into, const ContactEvent& from) {
   into.startTime = std::min(into.startTime, from.startTime);
+  into.duration = std::max(into.duration, from.duration);
   into.impactVelocity = std::max(into.impactVelocity, from.impactVelocity);
   into.impact = into.impact || from.impact;
   into.impulse += from.impulse;
@@ -175,6 +176,12 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.pointStart = s.length <= 0.0;
       e.pairMass = e.pointStart ? s.pairMass : p.lineMass;
       e.stiffness = e.pointStart ? s.stiffness : p.lineStiffness;
+      const auto period = [](double mass, double stiffness) {
+        return std::isfinite(mass) && mass > 0.0 && stiffness > 0.0 ? kPi * std::sqrt(mass / stiffness) : 0.0;
+      };
+      e.duration = e.pointStart ? period(s.pairMass, s.stiffness)
+                                : std::max(period(p.lineMass, p.lineStiffness),
+                                           period(s.lumpedPairMass, s.pointStiffness));
       e.radii = s.radii;
       e.minRadius = s.minRadius;
       e.reach = p.reach;
@@ -288,9 +295,7 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     e.endTime = time;
     e.lastContactTime = time;
     if (!dynamic) e.sustained = true;
-    if (std::isfinite(e.pairMass) && e.pairMass > 0.0 && e.stiffness > 0.0 &&
-        time - e.startTime > kSustainedDurations * kPi * std::sqrt(e.pairMass / e.stiffness))
-      e.sustained = true;
+    if (e.duration > 0.0 && time - e.startTime > kSustainedDurations * e.duration) e.sustained = true;
     if (e.phaseOpen && u >= 0.0) {
       endPhase(e, time - (1.0 - theta) * dt, theta < 1.0 ? 0.0 : u, "reversed");
     } else if (e.phaseOpen && e.sustained) {

@@ -60,6 +60,10 @@ struct ContactSpot {
   double gap = 0.0;                 ///< [m]
   double pairMass = 0.0;            ///< [kg]: effective mass of a point contact, reduced mass per length x length for a Gauss point
   double stiffness = 0.0;           ///< [N/m] (a Gauss point: per length x length)
+  /// A Gauss point's lumped FE pair mass at its two points [kg] and its pair's point stiffness k [N/m]
+  /// (docs/theory.md 9.11): the scale of a crossing's contact duration, which the reduced mass and the
+  /// stiffness per length (above) do not give (a bar across a light wire carrying a lump: 0.01 kg/m).
+  double lumpedPairMass = 0.0, pointStiffness = 0.0;
   double jumpImpulse = 0.0;         ///< velocity-jump impulse of the impulse model applied at this state [N s]
   Vec3 velocityA = Vec3::Zero(), velocityB = Vec3::Zero();  ///< of the contact points [m/s]
   Vec3 velocityBeforeA = Vec3::Zero(), velocityBeforeB = Vec3::Zero();  ///< before an impulse-model jump [m/s]
@@ -113,6 +117,11 @@ struct ContactEvent {
   // Tracking data (not reported).
   double pairMass = 0.0;           ///< pair mass at the start [kg]
   double stiffness = 0.0;          ///< [N/m]
+  /// Contact duration scale pi sqrt(M / K) at the start [s]: after kSustainedDurations of it an event is
+  /// sustained. A point contact's pair mass against its stiffness; a distributed patch's the longer of its
+  /// reduced line mass against its stiffness per length (parallel contact) and its strongest Gauss
+  /// point's lumped pair mass against the point stiffness (a crossing); 0: none.
+  double duration = 0.0;
   double radii = 0.0, minRadius = 0.0, reach = 0.0;  ///< [m]
   double lastAMin = 0.0, lastAMax = 0.0, lastBMin = 0.0, lastBMax = 0.0;  ///< extent at the last contact [m]
   double lastForce = 0.0;          ///< [N]

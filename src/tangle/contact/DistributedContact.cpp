@@ -1010,6 +1010,8 @@ std::vector<ContactSpot> DistributedContact::spots(const model::State& state, do
     spot.gap = smp.gap;
     spot.pairMass = pairMassPerLength(smp.elementA, smp.elementB) * smp.length;
     spot.stiffness = lineStiffness(smp.lineA, smp.lineB) * smp.length;
+    spot.lumpedPairMass = smp.pairMass;
+    spot.pointStiffness = pointStiffness(smp.lineA, smp.lineB);
     const Vec3 va = smp.curve.a.value(m_model->dofs(), state.velocity),
                vb = smp.curve.b.value(m_model->dofs(), state.velocity);
     spot.velocityBeforeA = spot.velocityA = swapped ? vb : va;

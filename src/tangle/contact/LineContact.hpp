@@ -160,7 +160,8 @@ class LineContact final : public solver::LoadContributor {
   /// Whether element eA (of its line) and eB may touch (not excluded by a pair, a zone or a shared
   /// connection point).
   bool elementPairAllowed(int eA, int eB) const { return m_search.elementPairAllowed(eA, eB); }
-  /// Total contact force on line A from line B [N] at the last assembly, summed over all parts.
+  /// Total contact force on line A from line B [N] at the last assembly, summed over all parts (either
+  /// order of the lines: pairForce(b, a) = -pairForce(a, b)).
   Vec3 pairForce(int lineA, int lineB) const;
 
   /// Contact points of the active set at the last addForces() call (the trial state). During Newton

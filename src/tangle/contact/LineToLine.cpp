@@ -163,13 +163,16 @@ void LineContact::addLineToLineForces(const model::State& state, const solver::A
 
 Vec3 LineContact::pairForce(int lineA, int lineB) const {
   if (m_distributed) return m_distributed->pairForce(lineA, lineB);
+  // Each part stores the force on its line A; the force on its line B is the opposite.
   Vec3 total = Vec3::Zero();
+  const auto add = [&](int a, int b, const Vec3& onA) {
+    if (a == lineA && b == lineB) total += onA;
+    if (a == lineB && b == lineA && a != b) total -= onA;
+  };
   for (const ContactPoint& c : m_trial)
-    if (c.lineA == lineA && c.lineB == lineB) total += std::max(0.0, c.normalForce) * c.normal + c.frictionForce;
-  for (const LineSample& s : m_samples)
-    if (s.lineA == lineA && s.lineB == lineB) total += s.lineForce * s.length * s.normal;
-  for (const FrictionPatch& p : m_patches)
-    if (p.lineA == lineA && p.lineB == lineB) total += p.force;
+    add(c.lineA, c.lineB, std::max(0.0, c.normalForce) * c.normal + c.frictionForce);
+  for (const LineSample& s : m_samples) add(s.lineA, s.lineB, s.lineForce * s.length * s.normal);
+  for (const FrictionPatch& p : m_patches) add(p.lineA, p.lineB, p.force);
   return total;
 }
 

@@ -1107,6 +1107,8 @@ void readContact(const Value& v, ModelSpec& spec) {
         {{"point", model::ContactFormulation::Point}, {"distributed", model::ContactFormulation::Distributed}});
     if (c.formulation == model::ContactFormulation::Distributed && c.model == model::ImpactModel::Impulse)
       formulation->fail("formulation: distributed has no velocity-jump (impulse) model: use model: penalty");
+  } else if (c.model == model::ImpactModel::Impulse) {
+    c.formulation = model::ContactFormulation::Point;  // the impulse model is the point formulation's
   }
   c.frictionCoefficient = m.number("friction_coefficient", d.frictionCoefficient, nonNegative());
   c.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positive());

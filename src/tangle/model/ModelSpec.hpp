@@ -319,7 +319,8 @@ enum class ContactFormulation {
 
 struct ContactSpec {
   bool enabled = false;          ///< contact block present
-  ContactFormulation formulation = ContactFormulation::Point;  ///< contact.formulation
+  /// contact.formulation: distributed by default; the reader picks point for `model: impulse` (a point model)
+  ContactFormulation formulation = ContactFormulation::Distributed;
   std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs that may touch (empty: all pairs)
   bool selfContact = false;      ///< a line may touch itself
   double stiffness = 0.0;        ///< penalty stiffness per contact point [N/m]; 0: automatic from line properties

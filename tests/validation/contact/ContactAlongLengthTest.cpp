@@ -214,7 +214,11 @@ INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, SettledString, ::testing::Val
 // Checks: p in the middle 80 % within 2 % (the drag acts on the deflected lines, slope <= 0.03, and on
 // 40 nodes per line), the contact covers at least 90 % of the length, the total is p L less at most one
 // element's share at each pinned end.
-TEST(ContactAlongLength, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
+// Both formulations (issue 43: the distributed one is the default; its two passes' samples, each weighted by
+// its share, integrate the same pressure).
+class PressedStrings : public ::testing::TestWithParam<model::ContactFormulation> {};
+
+TEST_P(PressedStrings, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
   constexpr double kEA = 1e6, kT1 = 1e4, kT2 = 3e4, kL = 20.0, kZ = -50.0;
   model::ModelSpec spec;
   spec.sourceFile = "pressed strings (test)";
@@ -229,6 +233,7 @@ TEST(ContactAlongLength, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
                                  Vec3(-10, 0.05, kZ), model::EndKind::Pinned, Vec3(10, 0.05, kZ))};
   spec.contact.enabled = true;
   spec.contact.excludeConnections = false;  // the pinned ends touch on purpose
+  spec.contact.formulation = GetParam();
   analysis::Simulation sim(std::move(spec));
   const solver::StaticResult statics = sim.solveStatics();
   ASSERT_TRUE(statics.converged) << statics.message;
@@ -242,11 +247,11 @@ TEST(ContactAlongLength, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
   }
   const double p = q * (t2 - t1) / (t1 + t2);
   double central = 0.0, centralLength = 0.0, total = 0.0, length = 0.0;
-  for (const contact::LineSample& smp : sim.contact()->lineSamples()) {
+  for (const StringSample& smp : stringSamples(*sim.contact())) {
     if (smp.lineForce <= 0.0) continue;
     total += smp.lineForce * smp.length;
     length += smp.length;
-    if (smp.arcA > 0.1 * kL && smp.arcA < 0.9 * kL) {
+    if (smp.arc > 0.1 * kL && smp.arc < 0.9 * kL) {
       central += smp.lineForce * smp.length;
       centralLength += smp.length;
     }
@@ -262,6 +267,13 @@ TEST(ContactAlongLength, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
   RecordProperty("contact_load_N_per_m",
                  fmt::format("{:.3f} (hand formula {:.3f})", central / centralLength, p));
 }
+
+INSTANTIATE_TEST_SUITE_P(Formulations, PressedStrings,
+                         ::testing::Values(model::ContactFormulation::Point,
+                                           model::ContactFormulation::Distributed),
+                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
+                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
+                         });
 
 // A line lowered onto a parallel taut line until they lie along each other (dynamics, default contact
 // settings but the restitution): the run completes, the penetration stays below 10 % of the radii
@@ -300,7 +312,7 @@ TEST_P(LoweredOntoLine, RunCompletesWithBoundedPenetrationAndOneRestingEvent) {
   ASSERT_TRUE(sim.solveStatics().converged);
   double deepest = 0.0, lastForce = 0.0;
   const time::DynamicResult run = sim.runDynamics([&](const model::State&, const VecX&) {
-    for (const contact::LineSample& smp : sim.contact()->lineSamples())
+    for (const StringSample& smp : stringSamples(*sim.contact()))  // either formulation's Gauss points
       if (smp.lineForce > 0.0) deepest = std::max(deepest, -smp.gap);
     for (const contact::ContactPoint& c : sim.contact()->contacts())
       if (c.normalForce > 0.0) deepest = std::max(deepest, -c.gap);
@@ -328,7 +340,8 @@ INSTANTIATE_TEST_SUITE_P(Restitution, LoweredOntoLine, ::testing::Values(0.5, 1.
 
 // No phantom force near a curved line: a short straight line A across a curved line B (a half circle of
 // radius 3 m, 24 elements, in the x-y plane; A along z) placed at a surface gap of +5 mm from B's
-// centreline as contact measures it (the polyline for a cable, the smooth centreline for a beam), at 97
+// centreline as contact measures it (the smooth centreline for a beam, and for a cable under the distributed
+// formulation; a cable's polyline under the point formulation), at 97
 // positions along B including every node: the contact force is exactly zero. At a gap of -5 mm it is
 // positive everywhere (the test can fail). The old smoothed-normal gap gave -0.30 m at a true +13 mm.
 class PhantomForce : public ::testing::TestWithParam<bool> {};
@@ -365,8 +378,9 @@ TEST_P(PhantomForce, NoForceWhileTheSurfacesAreApart) {
       const int element = curved.firstElement + static_cast<int>(u);
       const double w = u - std::floor(u);
       Vec3 point, tangent;
-      if (beam) {
-        const contact::CentrelineStencil st = contact::centrelineStencil(m, element, w);
+      if (beam || m.spec().contact.smoothCables()) {
+        const contact::CentrelineStencil st =
+            contact::centrelineStencil(m, element, w, m.spec().contact.smoothCables());
         point = st.point(state.position);
         tangent = st.tangent(state.position);
       } else {

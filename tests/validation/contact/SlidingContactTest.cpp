@@ -12,7 +12,9 @@
 //
 // Checks, every 0.05 s (5 mm of drag, 1/200 of an element) during the drag:
 // - exactly one contact point with a positive force (one physical contact, counted once, also while
-//   the point passes a node, where two element pairs report it);
+//   the point passes a node, where two element pairs report it); under the distributed formulation (the
+//   default, issue 43), one patch of Gauss points shorter than an element of A, its force their sum and
+//   its place their force-weighted mean arc;
 // - one contact event for the whole drag, whose path along A covers at least 3 elements, with steps
 //   between successive committed samples of at most 1/20 of an element (the drag moves 1/1000 of an
 //   element per 0.01 s step; a jump across half an element would show);
@@ -35,7 +37,9 @@
 namespace tangle {
 namespace {
 
-TEST(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
+class SlidingContact : public ::testing::TestWithParam<model::ContactFormulation> {};
+
+TEST_P(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
   constexpr double kSpan = 10.0, kEA = 1e8, kTension = 1e5, kHeight = 10.0;
   constexpr double kDa = 0.1, kDb = 0.1, kGap = 0.001, kPress = 0.05 + kGap;
   constexpr double kPressTime = 5.0, kDragTime = 50.0, kDrag = 5.0, kStartX = -2.7;
@@ -58,6 +62,7 @@ TEST(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
   }
   spec.lines = {a, b};
   spec.contact.enabled = true;
+  spec.contact.formulation = GetParam();
   spec.dynamics.enabled = true;
   spec.dynamics.duration = kPressTime + kDragTime;
   spec.dynamics.timeStep = 0.01;
@@ -76,17 +81,18 @@ TEST(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
   int badCount = 0;
   const time::DynamicResult run = sim.runDynamics([&](const model::State& s, const VecX&) {
     if (s.time < kPressTime + 0.5) return;  // pressing, then settling
-    int count = 0;
-    Sample sample{s.time, 0.0, 0.0};
-    for (const contact::ContactPoint& p : sim.contact()->contacts())
-      if (p.normalForce > 0.0) {
-        ++count;
-        sample.arcA = p.arcA;
-        sample.force = p.normalForce;
-      }
-    if (count != 1) {
+    const test::PressedContact pressed = test::pressedContact(*sim.contact(), 0, 1);
+    const Sample sample{s.time, pressed.arcMean, pressed.normalForce};
+    if (GetParam() == model::ContactFormulation::Point && pressed.points != 1) {
       ++badCount;
-      ADD_FAILURE() << count << " contact points at t = " << s.time << " s";
+      ADD_FAILURE() << pressed.points << " contact points at t = " << s.time << " s";
+      return;
+    }
+    // The distributed formulation's Gauss points: one patch, shorter than an element of A.
+    if (pressed.points == 0 || pressed.arcMax - pressed.arcMin > elementLength) {
+      ++badCount;
+      ADD_FAILURE() << pressed.points << " Gauss points over " << pressed.arcMax - pressed.arcMin
+                    << " m at t = " << s.time << " s";
       return;
     }
     samples.push_back(sample);
@@ -125,6 +131,13 @@ TEST(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
   RecordProperty("largest_path_step_in_elements", fmt::format("{:.3e}", worstStep / elementLength));
   RecordProperty("elements_covered", fmt::format("{:.2f}", (ev.arcAMax - ev.arcAMin) / elementLength));
 }
+
+INSTANTIATE_TEST_SUITE_P(Formulations, SlidingContact,
+                         ::testing::Values(model::ContactFormulation::Point,
+                                           model::ContactFormulation::Distributed),
+                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
+                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
+                         });
 
 }  // namespace
 }  // namespace tangle

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <string>
 
+#include "support/ContactChecks.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -30,7 +31,8 @@
 namespace tangle {
 namespace {
 
-std::string model(const std::string& startShape) {
+/// The model with `formulation` ("point", "distributed" or "" for the default) as contact.formulation.
+std::string model(const std::string& startShape, const std::string& formulation = "") {
   return R"(title: chain draped over a taut wire by its start shape
 environment:
   water_depth: 100
@@ -47,11 +49,16 @@ lines:
     end_b: {type: pinned, position: [0, 3, 18]}
     sections: [{type: chain, length: 7.4, elements: 40}]
 )" + startShape +
-         "contact: {}\n";
+         (formulation.empty() ? std::string("contact: {}\n")
+                              : "contact: {formulation: " + formulation + "}\n");
 }
 
-TEST(StartShape, ChainDrapedOverAWireSettlesOnItInStatics) {
-  analysis::Simulation sim(io::readModelString(model("    start_shape: [[0, 0, 20.12]]\n"), "drape.yaml"));
+/// Both contact formulations (issue 43: the distributed one is the default).
+class StartShapeStatics : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(StartShapeStatics, ChainDrapedOverAWireSettlesOnItInStatics) {
+  analysis::Simulation sim(
+      io::readModelString(model("    start_shape: [[0, 0, 20.12]]\n", GetParam()), "drape.yaml"));
   const model::Line& chain = sim.model().lines()[1];
   // The polyline: both legs 3.6069 m long, the apex at arc 3.7 m (node 20).
   const double leg = std::hypot(3.0, 2.12);
@@ -70,9 +77,7 @@ TEST(StartShape, ChainDrapedOverAWireSettlesOnItInStatics) {
   EXPECT_GT(top - wireZ, 0.5 * 0.1);
 
   const auto lines = sim.snapshot(false);
-  double contactZ = 0.0;
-  for (const contact::ContactPoint& p : sim.contact()->contacts())
-    if (p.normalForce > 0.0) contactZ += -(p.normalForce * p.normal + p.frictionForce).z();  // on the chain
+  const double contactZ = sim.contact()->pairForce(1, 0).z();  // on the chain
   const double weight = 100.0 * chain.length * sim.model().environment().gravity;
   EXPECT_GT(contactZ, 0.5 * weight);
   EXPECT_NEAR(contactZ, weight + lines[1].endForceA.z() + lines[1].endForceB.z(), 1e-5 * weight);
@@ -81,7 +86,7 @@ TEST(StartShape, ChainDrapedOverAWireSettlesOnItInStatics) {
 TEST(StartShape, WithoutItTheCatenaryHangsBelowTheWire) {
   analysis::Simulation sim(io::readModelString(model(""), "hanging.yaml"));
   ASSERT_TRUE(sim.solveStatics().converged);
-  for (const contact::ContactPoint& p : sim.contact()->contacts()) EXPECT_LE(p.normalForce, 0.0);
+  EXPECT_EQ(test::pressedContact(*sim.contact(), 1, 0).points, 0);
 }
 
 TEST(StartShape, AShapeThroughAnotherLineIsRefused) {
@@ -110,49 +115,52 @@ TEST(StartShape, AShapeThroughAnotherLineIsRefused) {
 // not zero; the chain's equilibrium along x as a free body: the contact forces (normal and friction)
 // against its support reactions, to 1e-5 of its weight (every nodal equilibrium holds to 1e-6 of the
 // reference force).
-std::string inclinedModel(double mu) {
-  std::string yaml = model("    start_shape: [[0, 0, 20.12]]\n");
+std::string inclinedModel(double mu, const std::string& formulation) {
+  std::string yaml = model("    start_shape: [[0, 0, 20.12]]\n", formulation);
   const std::string from = "position: [-5, 0, 20]}", to = "position: [5, 0, 20]}";
   yaml.replace(yaml.find(from), from.size(), "position: [-5, 0, 19.11838]}");
   yaml.replace(yaml.find(to), to.size(), "position: [5, 0, 20.88162]}");
   yaml.replace(yaml.find("length: 9.995"), 13, "length: 10.149");
-  yaml.replace(yaml.find("contact: {}"), 11, "contact: {friction_coefficient: " + std::to_string(mu) + "}");
+  yaml.replace(yaml.find("contact: {"), 10, "contact: {friction_coefficient: " + std::to_string(mu) + ", ");
   return yaml;
 }
 
-double contactX(analysis::Simulation& sim) {
-  double fx = 0.0, f = 0.0;
-  for (const contact::ContactPoint& p : sim.contact()->contacts())
-    if (p.normalForce > 0.0) {
-      fx += p.normalForce * p.pointA.x();
-      f += p.normalForce;
-    }
-  return fx / f;
-}
+/// Where along x the contact presses on the wire (normal-force-weighted) [m].
+double contactX(analysis::Simulation& sim) { return test::pressedContact(*sim.contact(), 0, 1).centre.x(); }
 
-TEST(StartShape, FrictionAtTheCrossingHoldsTheDrapeOnAnInclinedWire) {
-  analysis::Simulation frictionless(io::readModelString(inclinedModel(0.0), "inclined.yaml"));
+TEST_P(StartShapeStatics, FrictionAtTheCrossingHoldsTheDrapeOnAnInclinedWire) {
+  analysis::Simulation frictionless(io::readModelString(inclinedModel(0.0, GetParam()), "inclined.yaml"));
   ASSERT_TRUE(frictionless.solveStatics().converged);
   EXPECT_LT(contactX(frictionless), -0.3);
 
   constexpr double kMu = 0.5;
-  analysis::Simulation sim(io::readModelString(inclinedModel(kMu), "inclined-friction.yaml"));
+  analysis::Simulation sim(io::readModelString(inclinedModel(kMu, GetParam()), "inclined-friction.yaml"));
   const solver::StaticResult statics = sim.solveStatics();
   ASSERT_TRUE(statics.converged) << statics.message;
   EXPECT_NEAR(contactX(sim), 0.0, 0.05);
   const auto lines = sim.snapshot(false);
-  int held = 0;
-  for (const contact::FrictionPatch& p : sim.contact()->frictionPatches()) {
-    if (!p.point) continue;
-    ++held;
-    EXPECT_LE(p.force.norm(), kMu * p.normalLoad * (1.0 + 1e-9));
-    EXPECT_GT(p.force.norm(), 0.01 * p.normalLoad);
+  const test::PressedContact pressed = test::pressedContact(*sim.contact(), 1, 0);
+  ASSERT_GE(pressed.points, 1);
+  if (GetParam() == "point") {  // the point formulation's feet of the fold, each holding
+    int held = 0;
+    for (const contact::FrictionPatch& p : sim.contact()->frictionPatches()) {
+      if (!p.point) continue;
+      ++held;
+      EXPECT_LE(p.force.norm(), kMu * p.normalLoad * (1.0 + 1e-9));
+      EXPECT_GT(p.force.norm(), 0.01 * p.normalLoad);
+    }
+    EXPECT_GE(held, 1);
+  } else {  // every Gauss point within Coulomb's cone, and friction acting
+    EXPECT_LE(pressed.frictionRatioMax, kMu * (1.0 + 1e-9));
+    EXPECT_GT(pressed.frictionRatioMax, 0.01);
   }
-  EXPECT_GE(held, 1);
   const Vec3 onChain = -sim.contact()->pairForce(0, 1);
   const double weight = 100.0 * sim.model().lines()[1].length * sim.model().environment().gravity;
   EXPECT_NEAR(onChain.x(), lines[1].endForceA.x() + lines[1].endForceB.x(), 1e-5 * weight);
 }
+
+INSTANTIATE_TEST_SUITE_P(Formulations, StartShapeStatics, ::testing::Values("point", "distributed"),
+                         [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 }  // namespace
 }  // namespace tangle
