@@ -1354,6 +1354,19 @@ TEST(ModelReader, RefusesBadFatigueInput) {
                    "{line_type: pipe, tn_curve", "fatigue.sections[1].line_type", "has fatigue properties already");
 }
 
+// Issue 43: the distributed formulation is the default; the impulse model is the point formulation's, so
+// `model: impulse` alone selects it, and with `formulation: distributed` it is an error naming the key.
+TEST(ModelReader, ContactFormulationDefaultsToDistributedAndImpulseToPoint) {
+  EXPECT_EQ(readModelString(kBaseModel + "contact: {}\n", kSource).contact.formulation,
+            model::ContactFormulation::Distributed);
+  EXPECT_EQ(readModelString(kBaseModel + "contact: {model: impulse}\n", kSource).contact.formulation,
+            model::ContactFormulation::Point);
+  EXPECT_EQ(readModelString(kBaseModel + "contact: {formulation: point}\n", kSource).contact.formulation,
+            model::ContactFormulation::Point);
+  expectInputError(kBaseModel + "contact: {model: impulse, formulation: distributed}\n", "formulation: distributed",
+                   "contact.formulation", "no velocity-jump");
+}
+
 TEST(ModelReader, ReadsClashDamageSettings) {
   const ModelSpec spec = readModelString(
       kBaseModel + "contact:\n  clash_damage: {bin_length: 2.5, energy_threshold: 150}\n", kSource);
