@@ -399,6 +399,7 @@ def clearance_figure(table: Table) -> Figure:
 MAX_PAIR_CURVES = 10       # clearance.png: the pairs that come nearest, beyond this many pairs
 MAX_ENVELOPE_PANELS = 12   # clearance_envelope.png: the sides with the smallest clearance, beyond this many
 MAX_LINE_FIGURES = 100     # statics_<line>.png and range_<line>.png: the first lines, beyond this many
+MAX_PATH_EVENTS = 3        # drift_path.png: the paths of the lines' points hit in the first events
 
 
 def clearance_envelope_figure(table: Table, required: float | None = None) -> Figure:
@@ -482,7 +483,8 @@ def drift_path_figure(results: Path) -> Figure:
     vessels = read_csv(results / "dynamics" / "vessels.csv")
     fig = Figure(figsize=(8, 7))
     ax = fig.add_subplot(1, 1, 1)
-    names = [c[: -len("_x_m")] for c in vessels if c.endswith("_x_m")]
+    # Vessel names from their x columns; "<name>_wf_x_m" is a vessel's wave-frequency motion, not a vessel.
+    names = [c[: -len("_x_m")] for c in vessels if c.endswith("_x_m") and not c.endswith("_wf_x_m")]
     for name in names:
         x = _numeric(vessels, f"{name}_x_m", "vessels.csv")
         y = _numeric(vessels, f"{name}_y_m", "vessels.csv")
@@ -513,6 +515,26 @@ def drift_path_figure(results: Path) -> Figure:
             ys.append(_interp_along(arcs, yv[k], arc))
         if xs:
             ax.plot(xs, ys, ".", color="tab:red", ms=4, label="contact point")
+        # The paper's Fig. 11 plots the riser's point where it is hit, before and after: the path of the
+        # material point of each line where each of the first events started, over the whole run (its turn
+        # at the collision is the riser's, not the vessel's).
+        starts = read_csv(events, text=("line_1", "line_2"))
+        for k in range(min(MAX_PATH_EVENTS, len(starts.get("event", [])))):
+            for line_key, arc_key in (("line_1", "arc_1_start_m"), ("line_2", "arc_2_start_m")):
+                if arc_key not in starts:
+                    continue
+                line, arc = str(starts[line_key][k]), float(starts[arc_key][k])
+                try:
+                    if line not in cache:
+                        cache[line] = (_line_history(results, line, "x_m"), _line_history(results, line, "y_m"))
+                except OSError:
+                    continue
+                (_, arcs, xv), (_, _, yv) = cache[line]
+                px = [_interp_along(arcs, row, arc) for row in xv]
+                py = [_interp_along(arcs, row, arc) for row in yv]
+                ax.plot(px, py, "--", lw=1, label=f"{line} at {arc:.0f} m (event {k})")
+                xs.extend(px)
+                ys.extend(py)
     # The lines at the end of the run, in plan.
     for line_dir in sorted(p for p in (results / "dynamics").iterdir() if p.is_dir()):
         try:

@@ -394,6 +394,33 @@ def test_clearance_envelope_plot_with_required_clearance(tmp: Path) -> None:
     assert len(fig.axes[0].get_lines()) == 2
 
 
+def test_drift_path_draws_the_hit_points_paths_and_no_wave_frequency_vessel(tmp: Path) -> None:
+    # Issue 46: the seed paper's Fig. 11 turn is the riser's (its point where it is hit), so the figure draws
+    # that point's path over the whole run; a vessel's "<name>_wf_x_m" columns (wave-frequency motion) are
+    # not a vessel of their own.
+    t = np.linspace(0.0, 20.0, 41)
+    write_csv(tmp / "dynamics" / "vessels.csv",
+              ["time_s", "unit_x_m", "unit_y_m", "unit_z_m", "unit_wf_x_m", "unit_wf_y_m", "unit_wf_z_m"],
+              zip(t, -0.5 * t, -0.5 * t, 0 * t, 0.1 * np.sin(t), 0 * t, 0 * t))
+    arcs = np.linspace(0.0, 100.0, 11)
+    for line, shift in (("riser", 0.0), ("leg", 5.0)):
+        for axis, sign in (("x", 1.0), ("y", -1.0)):
+            rows = [[ti] + list(-0.5 * ti + shift * sign + 0.01 * arcs) for ti in t]
+            write_csv(tmp / "dynamics" / line / f"{axis}_m.csv", ["time_s"] + [f"s={a:.3f}m" for a in arcs], rows)
+    write_csv(tmp / "contact" / "events.csv", ["event", "line_1", "line_2", "arc_1_start_m", "arc_2_start_m"],
+              [("0", "leg", "riser", 40.0, 60.0)])
+    write_csv(tmp / "contact" / "event_paths.csv", ["event", "time_s", "arc_1_m", "arc_2_m"],
+              [("0", f"{ti:.6f}", 40.0, 60.0) for ti in t[20:]])
+    fig = tangle_plot.drift_path_figure(tmp)
+    lines = {ln.get_label(): ln for ln in fig.axes[0].get_lines() if not ln.get_label().startswith("_")}
+    assert "unit_wf path" not in lines and "unit path" in lines, sorted(lines)
+    riser = lines["riser at 60 m (event 0)"]
+    assert len(riser.get_xdata()) == len(t)  # the whole run, before the contact too
+    assert np.allclose(riser.get_xdata(), -0.5 * t + 0.6)
+    assert len(lines["leg at 40 m (event 0)"].get_xdata()) == len(t)
+    assert len(lines["contact point"].get_xdata()) == len(t) - 20
+
+
 def main() -> int:
     tests = [(name, fn) for name, fn in globals().items() if name.startswith("test_") and callable(fn)]
     failed = 0
