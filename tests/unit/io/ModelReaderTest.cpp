@@ -1363,8 +1363,8 @@ TEST(ModelReader, ContactFormulationDefaultsToDistributedAndImpulseToPoint) {
             model::ContactFormulation::Point);
   EXPECT_EQ(readModelString(kBaseModel + "contact: {formulation: point}\n", kSource).contact.formulation,
             model::ContactFormulation::Point);
-  expectInputError(kBaseModel + "contact: {model: impulse, formulation: distributed}\n", "formulation: distributed",
-                   "contact.formulation", "no velocity-jump");
+  expectInputError(kBaseModel + "contact: {model: impulse, formulation: distributed}\n",
+                   "formulation: distributed", "contact.formulation", "no velocity-jump");
 }
 
 TEST(ModelReader, ReadsClashDamageSettings) {

@@ -69,7 +69,8 @@ lines:
 contact: {{restitution: {}, friction_coefficient: {}}}
 dynamics: {{duration: 20, time_step: 0.01, output_interval: 0.5, ramp_time: 0}}
 )",
-                     static_cast<int>(std::lround(kWireLength / element)), motion, motion, restitution, friction);
+                     static_cast<int>(std::lround(kWireLength / element)), motion, motion, restitution,
+                     friction);
 }
 
 /// The first contact event of a run of the model.
@@ -81,7 +82,8 @@ struct SweepResult {
 };
 
 SweepResult sweep(double element, double restitution, double friction) {
-  analysis::Simulation sim(io::readModelString(sweptRiser(element, restitution, friction), "swept-riser.yaml"));
+  analysis::Simulation sim(
+      io::readModelString(sweptRiser(element, restitution, friction), "swept-riser.yaml"));
   SweepResult r;
   if (!sim.solveStatics().converged) return r;
   const time::DynamicResult run = sim.runDynamics(nullptr);
@@ -123,13 +125,14 @@ TEST_P(RiserSweptIntoWire, RunsThroughWithOneBoundedImpactThatSlidesAlongTheWire
 
 std::string sweepName(const ::testing::TestParamInfo<SweepCase>& p) {
   const auto [element, restitution, friction] = p.param;
-  return fmt::format("wire{}m_e{}_mu{}", static_cast<int>(element), static_cast<int>(std::lround(100 * restitution)),
+  return fmt::format("wire{}m_e{}_mu{}", static_cast<int>(element),
+                     static_cast<int>(std::lround(100 * restitution)),
                      static_cast<int>(std::lround(100 * friction)));
 }
 
 INSTANTIATE_TEST_SUITE_P(Issue43, RiserSweptIntoWire,
-                         ::testing::Combine(::testing::Values(10.0, 5.0, 1.0), ::testing::Values(0.0, 0.5, 1.0),
-                                            ::testing::Values(0.0, 0.5)),
+                         ::testing::Combine(::testing::Values(10.0, 5.0, 1.0),
+                                            ::testing::Values(0.0, 0.5, 1.0), ::testing::Values(0.0, 0.5)),
                          sweepName);
 
 // Known failure, run by ctest as expected to fail (validation.swept_riser_mesh_energy_expected_fail,
@@ -149,7 +152,8 @@ TEST(RiserSweptIntoWireKnownFailures, ImpactEnergyConvergesWithTheWireMesh) {
     const SweepResult r = sweep(element, 0.5, 0.0);
     ASSERT_TRUE(r.completed) << r.message;
     energy[element] = r.first.impactEnergy;
-    RecordProperty(fmt::format("impact_energy_{}m_J", static_cast<int>(element)), fmt::format("{:.4g}", energy[element]));
+    RecordProperty(fmt::format("impact_energy_{}m_J", static_cast<int>(element)),
+                   fmt::format("{:.4g}", energy[element]));
   }
   EXPECT_NEAR(energy[5.0], energy[1.0], 0.1 * energy[1.0]);
   EXPECT_NEAR(energy[10.0], energy[1.0], 0.1 * energy[1.0]);
