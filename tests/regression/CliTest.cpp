@@ -38,6 +38,15 @@ Outcome runCli(const std::string& arguments) {
   return {WEXITSTATUS(status), text.str()};
 }
 
+/// A fresh folder temp/<name> holding `yaml` as model.yaml, for a test that runs a model of its own.
+fs::path modelFolder(const std::string& name, const std::string& yaml) {
+  const fs::path dir = fs::temp_directory_path() / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "model.yaml") << yaml;
+  return dir;
+}
+
 TEST(Cli, EveryExampleValidates) {
   int count = 0;
   for (const auto& entry : fs::recursive_directory_iterator(tangle::test::kExamplesDir)) {
@@ -144,12 +153,8 @@ TEST(Cli, StaticRunOfManyLinesAssessesThePairsThatAreNear) {
 // some 5 %) and its Rayleigh MPM's excess over the mean within 10 % of sigma sqrt(2 ln N) (measured: -3.6 %
 // and -3.4 %); the fit is credible (Weibull shape in [1.5, 3]) and the log quotes it.
 TEST(Cli, StormExtremesOfALinearResponseAgainstTheGaussianClosedForm) {
-  const fs::path dir = fs::temp_directory_path() / "tangle_cli_storm_extremes";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  {
-    std::ofstream model(dir / "model.yaml");
-    model << R"(title: taut tether under a heaving buoy in a JONSWAP sea
+  const fs::path dir =
+      modelFolder("tangle_cli_storm_extremes", R"(title: taut tether under a heaving buoy in a JONSWAP sea
 environment:
   water_depth: 100
   waves: {type: jonswap, significant_height: 2.0, peak_period: 10.0, azimuth: 0}
@@ -175,8 +180,7 @@ lines:
     sections: [{type: wire, length: 90, elements: 10}]
 dynamics: {duration: 1230, time_step: 0.1, ramp_time: 30, output_interval: 1.0}
 output: {vtk: false}
-)";
-  }
+)");
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report");
@@ -331,12 +335,7 @@ std::pair<std::vector<std::string>, std::vector<std::vector<double>>> readNumeri
 // most), the low-frequency pose stays 0; and the fairlead, 10 m forward and 5 m down, moves as the vessel
 // point: z = z0 + wf_z - 10 m x wf_ry (small rotation about +y; rad), to the columns' printed digits.
 TEST(Cli, VesselsCsvGivesTheWaveFrequencyMotionTheFairleadsGet) {
-  const fs::path dir = fs::temp_directory_path() / "tangle_cli_vessel_wf";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  {
-    std::ofstream model(dir / "model.yaml");
-    model << R"(title: fixed vessel with RAOs
+  const fs::path dir = modelFolder("tangle_cli_vessel_wf", R"(title: fixed vessel with RAOs
 environment:
   water_depth: 100
   waves: {type: airy, height: 2.0, period: 10.0, azimuth: 0}
@@ -361,8 +360,7 @@ lines:
     end_b: {type: vessel, vessel: ship, position: [10, 0, -5]}
     sections: [{type: wire, length: 94.9, elements: 10}]
 dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
-)";
-  }
+)");
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report -q");
@@ -497,12 +495,7 @@ TEST(Cli, MissingFileAndVersion) {
 // of the printed values (7 digits of 3 MN: 20 N over the three numbers). A vertical TTR on a tensioner, the
 // vessel heaving 0.5 m.
 TEST(Cli, PipeLineWritesItsWallTensionEverywhere) {
-  const fs::path dir = fs::temp_directory_path() / "tangle_cli_wall_tension";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  {
-    std::ofstream model(dir / "model.yaml");
-    model << R"(title: TTR with oil at 20 MPa
+  const fs::path dir = modelFolder("tangle_cli_wall_tension", R"(title: TTR with oil at 20 MPa
 environment: {water_depth: 300}
 line_types:
   - {name: riser, outer_diameter: 0.32, internal_diameter: 0.25, mass_per_length: 150,
@@ -517,8 +510,7 @@ lines:
     sections: [{type: riser, length: 279.9, elements: 28}]
 dynamics: {duration: 20, time_step: 0.05, ramp_time: 5, output_interval: 0.5}
 output: {vtk: false, format: both}
-)";
-  }
+)");
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report");

@@ -7,11 +7,13 @@
 
 #include <algorithm>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "tangle/contact/ContactEvents.hpp"
 #include "tangle/contact/DistributedContact.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/model/ModelSpec.hpp"
 
 namespace tangle::test {
 
@@ -88,6 +90,21 @@ inline PressedContact pressedContact(const contact::LineContact& contact, int li
   if (weights > 0.0) r.centre = weighted / weights;
   if (r.points > 0) r.arcMean = arcWeighted / r.normalForce;
   return r;
+}
+
+/// Both contact formulations, for tests that run under either (issue 43).
+inline auto bothFormulations() {
+  return ::testing::Values(model::ContactFormulation::Point, model::ContactFormulation::Distributed);
+}
+
+/// Test-name suffix of a contact formulation: "point" or "distributed".
+inline std::string formulationName(model::ContactFormulation f) {
+  return f == model::ContactFormulation::Point ? "point" : "distributed";
+}
+
+/// Name generator of a suite instantiated over bothFormulations().
+inline std::string formulationTestName(const ::testing::TestParamInfo<model::ContactFormulation>& p) {
+  return formulationName(p.param);
 }
 
 }  // namespace tangle::test

@@ -268,12 +268,7 @@ TEST_P(PressedStrings, StringsPressedTogetherByDragCarryTheHandFormulaLoad) {
                  fmt::format("{:.3f} (hand formula {:.3f})", central / centralLength, p));
 }
 
-INSTANTIATE_TEST_SUITE_P(Formulations, PressedStrings,
-                         ::testing::Values(model::ContactFormulation::Point,
-                                           model::ContactFormulation::Distributed),
-                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
-                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
-                         });
+INSTANTIATE_TEST_SUITE_P(Formulations, PressedStrings, test::bothFormulations(), test::formulationTestName);
 
 // A line lowered onto a parallel taut line until they lie along each other (dynamics, default contact
 // settings but the restitution): the run completes, the penetration stays below 10 % of the radii

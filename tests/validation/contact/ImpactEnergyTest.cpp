@@ -289,13 +289,9 @@ TEST_P(SpringSupportedMass, ImpactEnergyMatchesTheTwoMassSolution) {
 // support spring takes part (16.2 kg); k_c = K / 20: the lump moves little on its spring before the
 // long, soft contact stops the bar (31.3 kg: the lump, thrown back by the wire, pushes the bar back
 // before the approach stops).
-std::string formulationName(model::ContactFormulation f) {
-  return f == model::ContactFormulation::Point ? "point" : "distributed";
-}
-const auto kFormulations =
-    ::testing::Values(model::ContactFormulation::Point, model::ContactFormulation::Distributed);
+const auto kFormulations = test::bothFormulations();
 std::string caseName(const ::testing::TestParamInfo<std::tuple<double, model::ContactFormulation>>& p) {
-  return formulationName(std::get<1>(p.param));
+  return test::formulationName(std::get<1>(p.param));
 }
 
 INSTANTIATE_TEST_SUITE_P(SoftContact, SpringSupportedMass,
@@ -409,10 +405,7 @@ TEST_P(SimplySupportedBeam, StruckAtMidSpanMatchesTheModalSolution) {
   RecordProperty("absorbed_relative_error", fmt::format("{:.3e}", impact.phaseWork / ref.absorbedWork - 1.0));
 }
 
-INSTANTIATE_TEST_SUITE_P(Formulations, SimplySupportedBeam, kFormulations,
-                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
-                           return formulationName(p.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(Formulations, SimplySupportedBeam, kFormulations, test::formulationTestName);
 
 }  // namespace
 }  // namespace tangle

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <map>
 
+#include "support/ContactChecks.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/DistributedContact.hpp"
@@ -132,12 +133,8 @@ TEST_P(LineToLineStatics, PressedCrossingConvergesAtEveryAngleWithContinuousForc
   RecordProperty("overlap_90deg", fmt::format("{:.3e}", overlap));
 }
 
-INSTANTIATE_TEST_SUITE_P(Formulations, LineToLineStatics,
-                         ::testing::Values(model::ContactFormulation::Point,
-                                           model::ContactFormulation::Distributed),
-                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
-                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
-                         });
+INSTANTIATE_TEST_SUITE_P(Formulations, LineToLineStatics, test::bothFormulations(),
+                         test::formulationTestName);
 
 }  // namespace
 }  // namespace tangle

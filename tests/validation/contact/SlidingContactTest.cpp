@@ -132,12 +132,7 @@ TEST_P(SlidingContact, PointSlidesAcrossNodesWithOneContactAndContinuousForce) {
   RecordProperty("elements_covered", fmt::format("{:.2f}", (ev.arcAMax - ev.arcAMin) / elementLength));
 }
 
-INSTANTIATE_TEST_SUITE_P(Formulations, SlidingContact,
-                         ::testing::Values(model::ContactFormulation::Point,
-                                           model::ContactFormulation::Distributed),
-                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
-                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
-                         });
+INSTANTIATE_TEST_SUITE_P(Formulations, SlidingContact, test::bothFormulations(), test::formulationTestName);
 
 }  // namespace
 }  // namespace tangle

@@ -143,12 +143,7 @@ TEST_P(StaticContact, ContactForceCarriesTheWeightTheSupportsDoNot) {
   RecordProperty("relative_error_A", fmt::format("{:.3e}", fromA / contactZ - 1.0));
 }
 
-INSTANTIATE_TEST_SUITE_P(Formulations, StaticContact,
-                         ::testing::Values(model::ContactFormulation::Point,
-                                           model::ContactFormulation::Distributed),
-                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
-                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
-                         });
+INSTANTIATE_TEST_SUITE_P(Formulations, StaticContact, test::bothFormulations(), test::formulationTestName);
 
 }  // namespace
 }  // namespace tangle

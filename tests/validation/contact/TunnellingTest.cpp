@@ -188,12 +188,7 @@ TEST_P(TunnellingRun, FastLineDoesNotPassThroughAndTheStepGrowsBack) {
   RecordProperty("cutbacks", run.cutbacks);
 }
 
-INSTANTIATE_TEST_SUITE_P(Formulations, TunnellingRun,
-                         ::testing::Values(model::ContactFormulation::Point,
-                                           model::ContactFormulation::Distributed),
-                         [](const ::testing::TestParamInfo<model::ContactFormulation>& p) {
-                           return p.param == model::ContactFormulation::Point ? "point" : "distributed";
-                         });
+INSTANTIATE_TEST_SUITE_P(Formulations, TunnellingRun, test::bothFormulations(), test::formulationTestName);
 
 }  // namespace
 }  // namespace tangle
