@@ -138,7 +138,9 @@ class DynamicResults:
     vessels: per vessel name, ``motion`` [time, (x_m, y_m, z_m, rx_deg, ry_deg, rz_deg)] (reference point and
     rotation vector from the initial attitude). contact_events: one dict per contact event (the clash
     report's rows). clearance: one dict per line and other line: ``arc_length_m``, ``static_clearance_m``,
-    ``min_clearance_m`` (over every accepted step), ``time_of_min_s`` [node].
+    ``min_clearance_m`` (over every accepted step), ``time_of_min_s`` [node]. line_failures: one dict per line
+    that parted (``lines[].failure``): ``line``, ``time_s`` (None: before the statics), ``trigger``, ``value``,
+    ``threshold``, ``parted_from_m``, ``parted_to_m``, ``message`` (as dynamics/summary.json).
     """
 
     completed: bool
@@ -159,6 +161,7 @@ class DynamicResults:
     block_refreshes: int = 0
     fallback_steps: int = 0
     converged_blocks_left_out: int = 0
+    line_failures: list[dict[str, Any]] = field(default_factory=list)
 
     def time_history(self, line: str, quantity: str, arc_length_m: float) -> np.ndarray:
         """Time history [time] of a per-node result (``effective_tension_N``, ``bending_moment_Nm``,

@@ -235,3 +235,44 @@ def test_seeds_give_statistics_over_the_seeds(tmp_path: Path) -> None:
     p.write_text(f"model: {BASE}\nseeds: [1]\n")
     r = run([CLI, "batch", str(p), "-o", str(tmp_path / "bad")])
     assert r.returncode == 1 and "at least two seeds" in r.stderr, r.stderr
+
+
+BREAK_BATCH = f"""
+model: {BASE}
+set:
+  dynamics.duration: 4
+  output.vtk: false
+break_each:
+  lines: [mooring1]
+  failure: {{time: 2, at: end_b}}
+"""
+
+
+def test_break_each_runs_the_intact_case_and_each_line_broken(tmp_path: Path) -> None:
+    """The accidental limit state (docs/batch.md `break_each`): the intact case and one case per broken line,
+    the break in the case's own dynamics summary and log; an unknown line is an error of the batch file."""
+    p = tmp_path / "break.yaml"
+    p.write_text(BREAK_BATCH)
+    out = tmp_path / "out"
+    r = run([CLI, "batch", str(p), "-o", str(out), "-j", "2"])
+    assert r.returncode == 0, r.stdout + r.stderr
+    table = rows(out)
+    assert set(table) == {"intact", "broken=mooring1"}
+    assert all(row["status"] == "completed" for row in table.values()), table
+    intact = json.loads((out / "cases" / "intact" / "dynamics" / "summary.json").read_text())
+    broken = json.loads((out / "cases" / "broken=mooring1" / "dynamics" / "summary.json").read_text())
+    assert intact["line_failures"] == []
+    [b] = broken["line_failures"]
+    assert b["line"] == "mooring1" and b["trigger"] == "time" and b["time_s"] == pytest.approx(2.0, abs=1e-9)
+    # Parted in its last element (end B, the fairlead): from there on the fairlead holds nothing.
+    assert 0.0 < b["parted_from_m"] < b["parted_to_m"]
+    log = (out / "cases" / "broken=mooring1" / "run.log").read_text()
+    assert "line 'mooring1' parted at t = 2 s" in log, log
+    with (out / "cases" / "broken=mooring1" / "dynamics" / "end_forces.csv").open() as f:
+        after = [r for r in csv.DictReader(f) if float(r["time_s"]) > 2.0 + 1e-9]
+    assert after and all(float(r["mooring1_end_b_tension_N"]) == 0.0 for r in after)
+
+    p.write_text(BREAK_BATCH.replace("[mooring1]", "[mooring1, nosuchline]"))
+    r = run([CLI, "batch", str(p), "-o", str(tmp_path / "bad")])
+    assert r.returncode == 1
+    assert "break_each" in r.stderr and "nosuchline" in r.stderr, r.stderr

@@ -387,3 +387,23 @@ def test_extreme_statistics_of_a_run_equal_the_library_on_its_own_history(tmp_pa
                                   ("weibull_shape", e.weibull_shape, 1e-2)):
         assert float(b[key]) == pytest.approx(value, rel=tolerance), key
     assert float(b["rayleigh_mpm_N"]) > float(b["max_N"])  # a 2 h storm has more peaks than the run
+
+
+def test_line_failures_equal_the_cli(mooring: tangle.Model, tmp_path: Path) -> None:
+    """A line that parts (lines[].failure): the break in DynamicResults.line_failures is the CLI's
+    dynamics/summary.json entry, and the fairlead holds nothing after it."""
+    m = tangle.Model(json.loads(json.dumps(mooring.data)))
+    m.set("dynamics.duration", 4)
+    m.set("lines[mooring1].failure", {"time": 3, "at": "end_b"})
+    res = m.run_dynamics()
+    assert res.completed
+    [b] = res.line_failures
+    assert b["line"] == "mooring1" and b["trigger"] == "time" and b["time_s"] == pytest.approx(3.0, abs=1e-9)
+    out = cli_run(m, tmp_path / "broken")
+    [c] = json.loads((out / "dynamics" / "summary.json").read_text())["line_failures"]
+    for key in ("line", "trigger", "message"):
+        assert b[key] == c[key]
+    for key in ("time_s", "value", "threshold", "parted_from_m", "parted_to_m"):
+        assert b[key] == pytest.approx(c[key], rel=1e-9)
+    after = res.time_s > 3.0 + 1e-9
+    assert after.any() and np.all(res.lines["mooring1"]["end_tension_N"][after, 1] == 0.0)

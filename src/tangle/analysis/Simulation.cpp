@@ -32,8 +32,13 @@ Simulation::Simulation(model::ModelSpec spec)
     m_contact = std::make_unique<contact::LineContact>(*m_model, m_model->spec().contact,
                                                        m_model->spec().dynamics.timeStep);
     m_assembler->addContributor(m_contact.get());
-    checkStartShapes();
   }
+  // After the contact, so that a clash's event is up to date when the failures read it (commitStep order).
+  if (LineFailure::wanted(*m_model)) {
+    m_failure = std::make_unique<LineFailure>(*m_model, *m_assembler, m_contact.get());
+    m_assembler->addContributor(m_failure.get());
+  }
+  if (m_contact) checkStartShapes();
 }
 
 void Simulation::checkStartShapes() const {

@@ -6,10 +6,11 @@
 #include <memory>
 #include <vector>
 
+#include "tangle/analysis/LineFailure.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/core/ConsoleProgress.hpp"
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
-#include "tangle/core/ConsoleProgress.hpp"
 #include "tangle/solver/Assembler.hpp"
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
@@ -32,6 +33,8 @@ class Simulation {
   contact::LineContact* contact() { return m_contact.get(); }
   /// The vessels, or nullptr when the model has none.
   vessel::VesselSystem* vessels() { return m_vessels.get(); }
+  /// The lines' failures (lines[].failure), or nullptr when no line has one.
+  const LineFailure* lineFailure() const { return m_failure.get(); }
   /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
   model::State& state() { return m_state; }
 
@@ -75,6 +78,7 @@ class Simulation {
   std::unique_ptr<hydro::HydroLoads> m_hydro;
   std::unique_ptr<contact::LineContact> m_contact;
   std::unique_ptr<vessel::VesselSystem> m_vessels;
+  std::unique_ptr<LineFailure> m_failure;
   model::State m_state;
   core::ConsoleProgress* m_staticsProgress = nullptr;  // progress lines of the statics under way (solveStatics)
   bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)

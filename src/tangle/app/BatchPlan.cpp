@@ -81,7 +81,8 @@ class BatchReader {
       throw InputError(m_file, e.mark.is_null() ? 0 : e.mark.line + 1, "", "invalid YAML: " + e.msg);
     }
     if (!root.IsMap()) fail(root, "", "a batch: a map {model, set, parameters, cases}");
-    checkKeys(root, "", {"model", "set", "parameters", "seeds", "statistics", "cases", "title"});
+    checkKeys(root, "",
+              {"model", "set", "parameters", "seeds", "statistics", "cases", "break_each", "title"});
     BatchPlan plan;
     plan.batchFile = m_file;
     const YAML::Node model = root["model"];
@@ -194,6 +195,7 @@ class BatchReader {
       std::string name;
       YAML::Node set;
       YAML::Node at;
+      YAML::Node broken;  ///< break_each's set for this case (undefined: none)
     };
     std::vector<Named> named;
     if (const YAML::Node cs = root["cases"]) {
@@ -205,10 +207,48 @@ class BatchReader {
         checkKeys(c, path, {"name", "set"});
         if (!c["name"] || !c["name"].IsScalar() || c["name"].Scalar().empty())
           fail(c, path + ".name", "a case name");
-        named.push_back({c["name"].Scalar(), c["set"], c});
+        named.push_back({c["name"].Scalar(), c["set"], c, YAML::Node(YAML::NodeType::Undefined)});
       }
     } else {
-      named.push_back({"", YAML::Node(YAML::NodeType::Undefined), root});
+      named.push_back(
+          {"", YAML::Node(YAML::NodeType::Undefined), root, YAML::Node(YAML::NodeType::Undefined)});
+    }
+    // The accidental limit state: each of a list of lines broken in turn (lines[].failure), beside the intact
+    // case, for every named case.
+    if (const YAML::Node be = root["break_each"]) {
+      if (!be.IsMap()) fail(be, "break_each", "a map {lines, failure, intact}");
+      checkKeys(be, "break_each", {"lines", "failure", "intact"});
+      const YAML::Node lines = be["lines"];
+      if (!lines || !lines.IsSequence() || lines.size() == 0)
+        fail(lines ? lines : be, "break_each.lines",
+             "a list of the names of the lines to break, one per case");
+      const YAML::Node failure = be["failure"];
+      if (!failure || !failure.IsMap())
+        fail(failure ? failure : be, "break_each.failure",
+             "a line failure {time, tension, clash_energy, at} (docs/model-format.md), e.g. {time: 60, at: "
+             "end_b}");
+      bool intact = true;
+      if (const YAML::Node i = be["intact"]) {
+        if (!i.IsScalar() || (i.Scalar() != "true" && i.Scalar() != "false"))
+          fail(i, "break_each.intact", "true (the intact case is run too, the default) or false");
+        intact = i.Scalar() == "true";
+      }
+      const auto joined = [](const std::string& a, const std::string& b) {
+        return a.empty() ? b : a + "_" + b;
+      };
+      std::vector<Named> expanded;
+      for (const Named& n : named) {
+        if (intact)
+          expanded.push_back({joined(n.name, "intact"), n.set, n.at, YAML::Node(YAML::NodeType::Undefined)});
+        for (std::size_t k = 0; k < lines.size(); ++k) {
+          if (!lines[k].IsScalar() || lines[k].Scalar().empty())
+            fail(lines[k], fmt::format("break_each.lines[{}]", k), "a line name");
+          YAML::Node set(YAML::NodeType::Map);
+          set["lines[" + lines[k].Scalar() + "].failure"] = failure;
+          expanded.push_back({joined(n.name, "broken=" + lines[k].Scalar()), n.set, be, set});
+        }
+      }
+      named = std::move(expanded);
     }
 
     std::size_t total = named.size();
@@ -221,6 +261,7 @@ class BatchReader {
     for (const Named& n : named) {
       io::ModelDocument caseModel = common;
       if (n.set) applySet(n.set, "cases[" + n.name + "].set", caseModel);
+      if (n.broken) applySet(n.broken, "break_each", caseModel);
       std::vector<std::size_t> index(parameters.size(), 0);
       while (true) {
         BatchCase c{n.name, {}, caseModel};

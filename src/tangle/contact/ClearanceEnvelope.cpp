@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "tangle/contact/SmoothCentreline.hpp"
@@ -70,7 +71,11 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
   const bool smoothCables = m_model->spec().contact.smoothCables();
   // Surface distance from x to segment j of line b (the clearance before x's own radius).
+  const model::PartedElements& parted = m_model->parted();
   const auto segmentDistance = [&](const Vec3& x, int j) {
+    // A parted element (lines[].failure) is no segment: nothing is near it.
+    if (parted.parted(static_cast<std::size_t>(b.firstElement + j), state.time))
+      return std::numeric_limits<double>::infinity();
     const int m1 = b.firstNode + j, m2 = m1 + 1;
     const Vec3& p = state.position[m1];
     const Vec3 axis = state.position[m2] - p;

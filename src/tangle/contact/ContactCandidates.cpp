@@ -161,6 +161,8 @@ void ContactCandidates::buildProxies(const model::State& state) {
     if (!m_lineEnabled[l]) continue;
     const model::Line& line = m_model->lines()[l];
     for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e) {
+      // A parted element (lines[].failure) is no segment: its nodes are the ends of two pieces.
+      if (m_model->parted().parted(static_cast<std::size_t>(e), state.time)) continue;
       const model::LineElement& el = m_model->elements()[e];
       m_proxies.push_back({l, e, state.position[el.node1], state.position[el.node2], m_radius[e]});
     }

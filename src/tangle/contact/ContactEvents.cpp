@@ -328,30 +328,10 @@ void ContactEventTracker::endPhase(ContactEvent& e, double time, double u, const
   e.phaseEndTime = time;
   e.phaseEnd = why;
   e.phaseVelocityChange = u + e.impactVelocity;  // from -v0 at first contact to u
+  measureImpact(e);  // known from here on, while the event goes on (a line that parts by clash energy)
 }
 
-void ContactEventTracker::close(std::size_t openIndex, double time, double closingImpulse,
-                                const char* phaseEnd) {
-  ContactEvent e = std::move(m_open[openIndex]);
-  m_open.erase(m_open.begin() + static_cast<std::ptrdiff_t>(openIndex));
-  e.endTime = time;
-  e.impulse += closingImpulse + e.jumpImpulse;
-  e.jumpImpulse = 0.0;
-  // An impact phase still open ends at the last state with contact (its impulse and velocity belong
-  // together; the closing half step's impulse has no velocity to go with it).
-  if (e.phaseOpen) endPhase(e, e.lastContactTime, e.lastRelativeVelocity, phaseEnd);
-  // Paper Eq. 5 per line: the impulse over the change of the normal velocity of the line's contact point.
-  const double dva = std::abs(e.normalStart.dot(e.lastVelocityA - e.startVelocityA));
-  const double dvb = std::abs(e.normalStart.dot(e.lastVelocityB - e.startVelocityB));
-  // Only an impact has a velocity change to measure (in a sustained contact the impulse grows while
-  // the velocity does not change): NaN otherwise.
-  e.effectiveMassA = !e.impact ? std::nan("") : dva > 1e-12 ? e.impulse / dva : kInf;
-  e.effectiveMassB = !e.impact ? std::nan("") : dvb > 1e-12 ? e.impulse / dvb : kInf;
-  // The paper's Eq. 5 pair mass over the whole event, as the paper defines it (kept for reference: over
-  // a sustained contact the impulse grows without the velocity changing, and so does this quotient).
-  const double dvRelative = std::abs(
-      e.normalStart.dot((e.lastVelocityA - e.lastVelocityB) - (e.startVelocityA - e.startVelocityB)));
-  e.eventEq5Mass = e.impact && dvRelative > 0.05 * e.impactVelocity ? e.impulse / dvRelative : std::nan("");
+void ContactEventTracker::measureImpact(ContactEvent& e) {
   // Impact phase: Eq. 5 where the phase changed the relative normal velocity measurably, the work
   // estimate where it did not (a graze), the lumped FE pair mass where neither has anything to measure.
   const double v0 = e.impactVelocity;
@@ -388,6 +368,31 @@ void ContactEventTracker::close(std::size_t openIndex, double time, double closi
           "element of each line ({:.4g} kg)",
           e.energyMass, e.massLowerBound);
   }
+}
+
+void ContactEventTracker::close(std::size_t openIndex, double time, double closingImpulse,
+                                const char* phaseEnd) {
+  ContactEvent e = std::move(m_open[openIndex]);
+  m_open.erase(m_open.begin() + static_cast<std::ptrdiff_t>(openIndex));
+  e.endTime = time;
+  e.impulse += closingImpulse + e.jumpImpulse;
+  e.jumpImpulse = 0.0;
+  // An impact phase still open ends at the last state with contact (its impulse and velocity belong
+  // together; the closing half step's impulse has no velocity to go with it).
+  if (e.phaseOpen) endPhase(e, e.lastContactTime, e.lastRelativeVelocity, phaseEnd);
+  // Paper Eq. 5 per line: the impulse over the change of the normal velocity of the line's contact point.
+  const double dva = std::abs(e.normalStart.dot(e.lastVelocityA - e.startVelocityA));
+  const double dvb = std::abs(e.normalStart.dot(e.lastVelocityB - e.startVelocityB));
+  // Only an impact has a velocity change to measure (in a sustained contact the impulse grows while
+  // the velocity does not change): NaN otherwise.
+  e.effectiveMassA = !e.impact ? std::nan("") : dva > 1e-12 ? e.impulse / dva : kInf;
+  e.effectiveMassB = !e.impact ? std::nan("") : dvb > 1e-12 ? e.impulse / dvb : kInf;
+  // The paper's Eq. 5 pair mass over the whole event, as the paper defines it (kept for reference: over
+  // a sustained contact the impulse grows without the velocity changing, and so does this quotient).
+  const double dvRelative = std::abs(
+      e.normalStart.dot((e.lastVelocityA - e.lastVelocityB) - (e.startVelocityA - e.startVelocityB)));
+  e.eventEq5Mass = e.impact && dvRelative > 0.05 * e.impactVelocity ? e.impulse / dvRelative : std::nan("");
+  measureImpact(e);
   m_closed.push_back(std::move(e));
 }
 

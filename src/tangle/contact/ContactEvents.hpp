@@ -170,8 +170,12 @@ class ContactEventTracker {
 
  private:
   void close(std::size_t openIndex, double time, double closingImpulse, const char* phaseEnd);
-  /// Ends the impact phase of an event at `time` with the relative normal velocity u [m/s] reached.
+  /// Ends the impact phase of an event at `time` with the relative normal velocity u [m/s] reached, and
+  /// measures the impact (measureImpact).
   static void endPhase(ContactEvent& e, double time, double u, const char* why);
+  /// The impact phase's masses, its energy and the warning about them, from the phase's impulse, velocity
+  /// change and work (see the file comment).
+  static void measureImpact(ContactEvent& e);
 
   double m_impactVelocity, m_separationTime;
   std::vector<ContactEvent> m_open, m_closed;

@@ -135,6 +135,12 @@ class DistributedContact {
   /// Reduced mass per unit length of two elements' lines at a point [kg/m] (+inf if both are held).
   double pairMassPerLength(int elementA, int elementB) const;
 
+  /// The smooth centrelines again (elements parted: SmoothCentreline's elementCurve ends a line there); the
+  /// next findSamples searches afresh.
+  void refreshCurves() {
+    m_curves = elementCurves(*m_model, true);
+    m_found.valid = false;
+  }
   /// A step, load increment or retry starts: the passes' shares are decided again at the next findSamples.
   void beginStep() {
     m_bent.clear();

@@ -209,6 +209,11 @@ class LineContact final : public solver::LoadContributor {
   void commitStep(model::State& state, double dt) override;
   /// Closes the open events at the end of the run (time [s]).
   void finish(double time) override;
+  /// Elements have parted (model::PartedElements, lines[].failure): the smooth centrelines next to them end
+  /// there from now on, and nothing found before is reused.
+  void elementsParted() {
+    if (m_distributed) m_distributed->refreshCurves();
+  }
 
   /// Contact stiffness between two lines [N/m] (user value or automatic).
   double stiffness(int lineA, int lineB) const;

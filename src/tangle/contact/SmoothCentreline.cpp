@@ -46,7 +46,11 @@ ElementCurve elementCurve(const model::Model& model, int element, bool smoothCab
   }
   const model::Line& line = model.lines()[el.line];
   const int index = element - line.firstElement;
-  const bool hasPrevious = index > 0, hasNext = index < line.elementCount - 1;
+  // A parted neighbour (lines[].failure, at any time) is no neighbour: this element's node there is an end.
+  const model::PartedElements& parted = model.parted();
+  const auto intact = [&](int e) { return !(parted.partingTime(static_cast<std::size_t>(e)) < 1e300); };
+  const bool hasPrevious = index > 0 && intact(element - 1),
+             hasNext = index < line.elementCount - 1 && intact(element + 1);
   const double l1 = el.restLength;
   // Nodal tangents in units of this element's parameter: m1 = a0 x0 + a1 x1 + a2 x2, m2 = b1 x1 + b2 x2 + b3
   // x3 (three-point difference on the rest arc lengths; the chord at a line end). See the header.

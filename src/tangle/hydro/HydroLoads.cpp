@@ -179,7 +179,9 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     const Vec3& x1 = state.position[el.node1];
     const Vec3& x2 = state.position[el.node2];
     const double wet = submergedFraction(x1.z(), x2.z(), waves ? m_surface[e] : 0.0);
-    if (wet <= 0.0) {
+    // A parted element (lines[].failure) is no longer a cylinder between its nodes: its two halves hang at
+    // the new ends as point masses, without drag or added mass (docs/theory.md 8.7).
+    if (wet <= 0.0 || m_model->parted().parted(e, state.time)) {
       m_addedMass[e] = AddedMass{};
       return;
     }

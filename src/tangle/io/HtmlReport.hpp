@@ -71,6 +71,7 @@ class HtmlReport {
                   const analysis::PeakFit& weibull);
   /// Status of the run ("completed", ...) and its end time [s].
   void setStatus(const std::string& status) { m_status = status; }
+  const std::string& status() const { return m_status; }
 
   /// The data as JSON text.
   std::string json() const;

@@ -885,9 +885,60 @@ std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength,
   return points;
 }
 
+/// `lines[].failure`: when and where the line parts (FailureSpec).
+model::FailureSpec readFailure(const Value& v, const model::LineSpec& line, const ModelSpec& spec,
+                               double length) {
+  const Map m(v, {"time", "tension", "clash_energy", "at"});
+  model::FailureSpec f;
+  f.enabled = true;
+  if (const std::optional<Value> time = m.find("time"))
+    f.time = time->number(
+        nonNegativeUpTo(kMaxDuration).withHint("in s of the dynamics; 0 parts it before the statics"));
+  if (const std::optional<Value> tension = m.find("tension")) {
+    if (tension->isPlain() && tension->node().Scalar() == "mbl") {
+      f.tensionIsBreakingLoad = true;
+      for (const model::SectionSpec& section : line.sections)
+        if (spec.lineTypes.at(section.lineType).minimumBreakingLoad <= 0.0)
+          tension->fail(
+              fmt::format("'mbl' is each line type's minimum_breaking_load, and line type '{}' of line "
+                          "'{}' has none: give it one, or give the tension in N",
+                          section.lineType, line.name));
+    } else {
+      f.tension = tension->number(
+          positiveUpTo(kMaxStiffness).withHint("in N, or 'mbl' for each line type's minimum_breaking_load"));
+    }
+  }
+  if (const std::optional<Value> energy = m.find("clash_energy"))
+    f.clashEnergy =
+        energy->number(positiveUpTo(1.0e12).withHint("impact energy of a clash on the line in J"));
+  if (std::isnan(f.time) && f.tension <= 0.0 && !f.tensionIsBreakingLoad && f.clashEnergy <= 0.0)
+    v.fail("a failure needs a trigger: 'time' (s), 'tension' (N or 'mbl') or 'clash_energy' (J)");
+  if (const std::optional<Value> at = m.find("at")) {
+    if (at->isPlain() && at->node().Scalar() == "end_a") {
+      f.where = model::FailureSpec::Where::EndA;
+    } else if (at->isPlain() && at->node().Scalar() == "end_b") {
+      f.where = model::FailureSpec::Where::EndB;
+    } else {
+      f.where = model::FailureSpec::Where::Arc;
+      f.arcLength = at->number(
+          closed(0.0, length)
+              .withHint(
+                  "end_a, end_b, or the arc length from end A in m where the line parts, within its length"));
+    }
+    const model::EndSpec& end = f.where == model::FailureSpec::Where::EndB ? line.endB : line.endA;
+    if (f.where != model::FailureSpec::Where::Arc && end.kind == model::EndKind::Free)
+      at->fail(fmt::format("end {} of line '{}' is free already: nothing holds it to part from",
+                           f.where == model::FailureSpec::Where::EndA ? "A" : "B", line.name));
+  } else if (!std::isnan(f.time) && f.tension <= 0.0 && !f.tensionIsBreakingLoad && f.clashEnergy <= 0.0) {
+    v.fail(
+        "a failure by time needs 'at': end_a, end_b, or the arc length from end A in m where the line parts");
+  }
+  return f;
+}
+
 model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& names) {
   const Map m(v, {"name", "contact", "end_a", "end_b", "sections", "attachments", "start_shape", "span_check",
-                  "contents"});
+                  "contents", "failure"});
   model::LineSpec line;
   line.name = names.add(m);
   line.contact = m.boolean("contact", line.contact);
@@ -915,6 +966,8 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
       for (const model::AttachmentSpec& a : readAttachment(item, length)) line.attachments.push_back(a);
   if (const std::optional<Value> shape = m.find("start_shape"))
     line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
+  if (const std::optional<Value> failure = m.find("failure"))
+    line.failure = readFailure(*failure, line, spec, length);
 
   // Ends clearly too far apart for the line's length: a mistake in the positions or lengths (a line
   // stretched by half its length ran to its end with 1.25 GN of tension and only a warning). Vessel ends
@@ -1528,6 +1581,15 @@ ModelSpec readDocument(const YAML::Node& root, const std::string& source) {
     else if (block.required)
       m.missing(block.key, block.expectation);
   }
+  // A clash can part only a line that takes part in contact.
+  for (const model::LineSpec& line : spec.lines)
+    if (line.failure.clashEnergy > 0.0 && (!spec.contact.enabled || !line.contact))
+      throw InputError(
+          source, 0, "lines[" + line.name + "].failure.clash_energy",
+          !spec.contact.enabled
+              ? "a clash energy trigger needs line-to-line contact: add a 'contact' block, or give "
+                "the failure a 'time' or 'tension'"
+              : "a clash energy trigger on a line with 'contact: false': no clash can reach it");
   return spec;
 }
 

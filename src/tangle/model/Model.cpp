@@ -27,6 +27,7 @@ Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec
   for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
   for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v) buildVessel(v);
   m_dofs.finalize();
+  m_parted = std::make_unique<PartedElements>(m_elements.size());
 }
 
 void Model::seatAnchorsOnSeabed() {

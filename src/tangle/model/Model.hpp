@@ -14,6 +14,7 @@
 #include "tangle/element/CorotationalBeam.hpp"
 #include "tangle/model/DofMap.hpp"
 #include "tangle/model/ModelSpec.hpp"
+#include "tangle/model/PartedElements.hpp"
 #include "tangle/model/State.hpp"
 
 namespace tangle::model {
@@ -69,6 +70,9 @@ class Model {
   const EnvironmentSpec& environment() const { return m_spec->environment; }
   const std::vector<Line>& lines() const { return m_lines; }  ///< lines in input order
   const std::vector<LineElement>& elements() const { return m_elements; }
+  /// The elements parted so far (lines[].failure): the run's state of the mesh, not its input, held here so
+  /// that every part that reads the elements sees it; only analysis::LineFailure parts them.
+  PartedElements& parted() const { return *m_parted; }
   const std::vector<NodeAttachment>& attachments() const { return m_attachments; }
   const DofMap& dofs() const { return m_dofs; }  ///< DOF numbering
   int nodeCount() const { return m_dofs.nodeCount(); }
@@ -136,6 +140,7 @@ class Model {
   std::vector<Line> m_lines;
   std::map<std::string, int> m_lineIndex;  // line name -> index (lineIndex)
   std::vector<LineElement> m_elements;
+  std::unique_ptr<PartedElements> m_parted;
   std::vector<NodeAttachment> m_attachments;
   std::vector<std::unique_ptr<section::LineType>> m_contentTypes;  // line types with contents (per section)
   std::vector<std::vector<const section::LineType*>> m_sectionTypes;  // per line, per section

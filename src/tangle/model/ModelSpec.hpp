@@ -193,6 +193,33 @@ struct ContentsSpec {
   double referenceZ = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// `lines[].failure`: the line parts during the run (docs/model-format.md "Line failure", docs/theory.md
+/// 8.7). It parts in one element: that element stops carrying any force (axial, bending, torsion, axial
+/// damping) and leaves the contact; its mass, weight and buoyancy stay lumped at its two nodes, which become
+/// the free ends of the two pieces. The first trigger reached parts it; it parts once.
+struct FailureSpec {
+  /// Where the line parts.
+  enum class Where {
+    Trigger,  ///< where the trigger is reached: the element of the highest tension over its threshold, or
+              ///< the element a clash's impact started on
+    Arc,      ///< in the element holding arcLength
+    EndA,     ///< in the first element (a connection at end A parting, an anchor dragged out)
+    EndB      ///< in the last element
+  };
+  bool enabled = false;
+  /// Time of the dynamics at which it parts [s]; NaN: no time trigger. 0: parted before the statics (the
+  /// damaged static equilibrium of an accidental limit state).
+  double time = std::numeric_limits<double>::quiet_NaN();
+  /// Effective tension at which an element parts [N]; 0: no tension trigger (see tensionIsBreakingLoad).
+  double tension = 0.0;
+  /// `tension: mbl`: each element's threshold is its line type's minimum breaking load.
+  bool tensionIsBreakingLoad = false;
+  /// Impact energy of a clash on the line at which it parts [J] (contact events, Eq. 5); 0: none.
+  double clashEnergy = 0.0;
+  Where where = Where::Trigger;
+  double arcLength = 0.0;  ///< unstretched arc length from end A of the parting point [m] (Where::Arc)
+};
+
 /// A lumped mass or buoy attached at an arc length along a line.
 struct AttachmentSpec {
   /// Unstretched arc length from end A [m]; snapped to the nearest node, or shared between the two nodes of
@@ -224,6 +251,7 @@ struct LineSpec {
   std::vector<SectionSpec> sections;
   std::vector<AttachmentSpec> attachments;
   ContentsSpec contents;  ///< contents and internal pressure of its pipe sections (none by default)
+  FailureSpec failure;    ///< how it parts during the run (none by default)
   bool contact = true;  ///< takes part in line-to-line contact
   /// Starting shape of the static solve through these points (end A, the points, end B, straight between
   /// them) instead of the analytic catenary between the ends: a line draped over another, over a guide

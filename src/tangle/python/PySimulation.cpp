@@ -268,6 +268,24 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   out["converged_blocks_left_out"] = result.blocksLeft;
   out["wall_time_s"] = result.wallSeconds;
   out["message"] = result.message;
+  // The lines that parted (lines[].failure), as dynamics/summary.json's line_failures (time None: before the
+  // statics).
+  py::list failures;
+  if (const analysis::LineFailure* failure = m_sim->lineFailure()) {
+    for (const analysis::LineBreak& b : failure->breaks()) {
+      py::dict f;
+      f["line"] = m.lines()[static_cast<std::size_t>(b.line)].name;
+      f["time_s"] = std::isfinite(b.time) ? py::object(py::float_(b.time)) : py::object(py::none());
+      f["trigger"] = b.trigger;
+      f["value"] = b.value;
+      f["threshold"] = b.threshold;
+      f["parted_from_m"] = b.arcFrom;
+      f["parted_to_m"] = b.arcTo;
+      f["message"] = b.description;
+      failures.append(f);
+    }
+  }
+  out["line_failures"] = failures;
   const auto nt = static_cast<py::ssize_t>(times.size());
   out["time_s"] = array(times, {nt});
   py::list lines;

@@ -65,7 +65,8 @@ void updateMaxOffsets(const model::Model& m, const model::State& state, std::vec
 
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
                          const std::vector<solver::LineSnapshot>& lines, double maxStopForce,
-                         const model::Model& m, const std::vector<double>& maxOffset) {
+                         const model::Model& m, const std::vector<double>& maxOffset,
+                         const analysis::LineFailure* failure) {
   core::OutputFile out(dir / "dynamics" / "summary.json");
   core::JsonWriter j(out.stream());
   j.beginObject();
@@ -115,6 +116,24 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
       j.field("max_tension_over_mbl_at_m", use.arc);
     }
     j.endObject();
+  }
+  j.endArray();
+  // The lines that parted (lines[].failure), in the order they did; time null: parted before the statics.
+  j.key("line_failures");
+  j.beginArray();
+  if (failure) {
+    for (const analysis::LineBreak& b : failure->breaks()) {
+      j.beginObject();
+      j.field("line", m.lines()[static_cast<std::size_t>(b.line)].name);
+      j.field("time_s", b.time);  // null (not finite): before the statics
+      j.field("trigger", b.trigger);
+      j.field("value", b.value);
+      j.field("threshold", b.threshold);
+      j.field("parted_from_m", b.arcFrom);
+      j.field("parted_to_m", b.arcTo);
+      j.field("message", b.description);
+      j.endObject();
+    }
   }
   j.endArray();
   j.key("vessels");
@@ -247,6 +266,8 @@ bool RunOutputs::writeStatics() {
   std::unique_ptr<io::HtmlReport>& report = m_report;
   log.info(modelSummary(m));
   log.warning(warningText(m.spec()));
+  if (const analysis::LineFailure* failure = sim.lineFailure())
+    for (const analysis::LineBreak& b : failure->breaks()) log.info(b.description + "\n");
 
   const solver::StaticResult result = sim.solveStatics(m_options.progress);
   for (const std::string& w : result.warnings) log.warning("warning: " + w + "\n");
@@ -633,7 +654,10 @@ bool RunOutputs::runDynamics() {
     if (h5) h5->writeClashDamage(damage, cs.damageEnergyThreshold);
     if (report) timed([&] { report->setClashDamage(damage); });
   }
-  writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset);
+  writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset, sim.lineFailure());
+  if (const analysis::LineFailure* failure = sim.lineFailure())
+    for (const analysis::LineBreak& b : failure->breaks())
+      if (std::isfinite(b.time)) log.info(b.description + "\n");
   {
     std::vector<BreakingLoadUse> use;
     for (std::size_t l = 0; l < lines.size(); ++l)
@@ -718,6 +742,10 @@ void RunOutputs::finish(bool ok) {
     if (ok)
       report->setStatus(m_options.staticsOnly || !m.spec().dynamics.enabled ? "completed (statics)"
                                                                             : "completed");
+    // The lines that parted (lines[].failure), beside the status at the top of the page.
+    if (const analysis::LineFailure* failure = sim.lineFailure())
+      for (const analysis::LineBreak& b : failure->breaks())
+        report->setStatus(report->status() + "; " + b.description);
     writeReport(*report, outDir, log, m_reportTime);
   }
   if (h5Closed.valid()) h5Closed.get();  // rethrows a write error of results.h5

@@ -261,7 +261,9 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
                             SystemMatrix* matrix, const std::vector<int>* elements) {
   const model::DofMap& dofs = m_model->dofs();
   const double beta = request.dynamic ? m_model->spec().dynamics.rayleighBeta : 0.0;
+  const model::PartedElements& parted = m_model->parted();
   forEachIndex(elements, m_model->elements().size(), [&](std::size_t e) {
+    if (parted.parted(e, state.time)) return;  // a parted element carries nothing (lines[].failure)
     const model::LineElement& el = m_model->elements()[e];
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
@@ -295,7 +297,8 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       const int map[12] = {d1, d1 + 1, d1 + 2, d1 + 3, d1 + 4, d1 + 5, d2, d2 + 1, d2 + 2, d2 + 3, d2 + 4, d2 + 5};
       scatterElement(map, f, k, state, beta, request, force, matrix);
     }
-    if (request.dynamic && el.type->axialDamping > 0.0) addAxialDamping(state, el, d1, d2, request, force, matrix);
+    if (request.dynamic && el.type->axialDamping > 0.0)
+      addAxialDamping(state, el, d1, d2, request, force, matrix);
   });
 }
 
@@ -633,8 +636,14 @@ void Assembler::elementTension(const model::State& state, std::vector<double>& t
   const auto& elements = m_model->elements();
   t.resize(elements.size());
   if (beamForces) beamForces->resize(elements.size());
+  const model::PartedElements& parted = m_model->parted();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const model::LineElement& el = elements[e];
+    if (parted.parted(e, state.time)) {  // lines[].failure: no force of any kind
+      t[e] = 0.0;
+      if (beamForces) (*beamForces)[e] = element::BeamSectionForces{0.0, 0.0, Vec3::Zero(), Vec3::Zero()};
+      continue;
+    }
     if (el.bar) {
       std::optional<element::Bar> barCopy;
       t[e] = barOf(e, barCopy)

@@ -191,30 +191,37 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const auto& els = model.elements();
       const int first = line.firstElement;
       const int last = line.firstElement + line.elementCount - 1;
-      const bool two = line.elementCount >= 2;
-      // End A: the force on what is at end A points from it into the line (node 1 -> node 2).
+      // The element next to an end extrapolates the end's force only while it is attached to it: a parted
+      // one (lines[].failure) carries nothing.
+      const model::PartedElements& parted = model.parted();
+      const bool twoA =
+          line.elementCount >= 2 && !parted.parted(static_cast<std::size_t>(first + 1), state.time);
+      const bool twoB =
+          line.elementCount >= 2 && !parted.parted(static_cast<std::size_t>(last - 1), state.time);
       const auto beamOf = [&](int e) { return els[e].beam ? &beamForces[e] : nullptr; };
       s.endTensionForceA = endPointForce(model, state, els[first], tension[first], beamOf(first),
-                                         two ? &els[first + 1] : nullptr, two ? tension[first + 1] : 0.0,
-                                         two ? beamOf(first + 1) : nullptr, line.firstNode + 1);
+                                         twoA ? &els[first + 1] : nullptr, twoA ? tension[first + 1] : 0.0,
+                                         twoA ? beamOf(first + 1) : nullptr, line.firstNode + 1);
       // End B: the element force points from node 1 to node 2, out of the line; the line pulls end B back.
       s.endTensionForceB = -endPointForce(model, state, els[last], tension[last], beamOf(last),
-                                          two ? &els[last - 1] : nullptr, two ? tension[last - 1] : 0.0,
-                                          two ? beamOf(last - 1) : nullptr, line.lastNode() - 1);
+                                          twoB ? &els[last - 1] : nullptr, twoB ? tension[last - 1] : 0.0,
+                                          twoB ? beamOf(last - 1) : nullptr, line.lastNode() - 1);
       // A compressed end element (a line pushed on) gives a negative end tension.
       const double signA = s.tension.front() < 0.0 ? -1.0 : 1.0;
       const double signB = s.tension.back() < 0.0 ? -1.0 : 1.0;
       // The end tension is the axial quantity (effective tension): the same extrapolation without the
       // beams' shear. For a bar line the two are one vector.
       const bool beams = els[first].beam || els[last].beam;
-      const Vec3 axialA = !beams ? s.endTensionForceA
-                                 : endPointForce(model, state, els[first], tension[first], nullptr,
-                                                 two ? &els[first + 1] : nullptr, two ? tension[first + 1] : 0.0,
-                                                 nullptr, line.firstNode + 1);
-      const Vec3 axialB = !beams ? s.endTensionForceB
-                                 : endPointForce(model, state, els[last], tension[last], nullptr,
-                                                 two ? &els[last - 1] : nullptr, two ? tension[last - 1] : 0.0,
-                                                 nullptr, line.lastNode() - 1);
+      const Vec3 axialA = !beams
+                              ? s.endTensionForceA
+                              : endPointForce(model, state, els[first], tension[first], nullptr,
+                                              twoA ? &els[first + 1] : nullptr,
+                                              twoA ? tension[first + 1] : 0.0, nullptr, line.firstNode + 1);
+      const Vec3 axialB = !beams
+                              ? s.endTensionForceB
+                              : endPointForce(model, state, els[last], tension[last], nullptr,
+                                              twoB ? &els[last - 1] : nullptr, twoB ? tension[last - 1] : 0.0,
+                                              nullptr, line.lastNode() - 1);
       s.endTensionA = signA * axialA.norm();
       s.endTensionB = signB * axialB.norm();
       // A free end with nothing attached carries no force: the extrapolation from the elements would give
@@ -229,6 +236,15 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
         s.endTensionForceA = Vec3::Zero();
       }
       if (line.spec->endB.kind == model::EndKind::Free && bare(line.lastNode())) {
+        s.endTensionB = 0.0;
+        s.endTensionForceB = Vec3::Zero();
+      }
+      // An end element that parted holds nothing to its end.
+      if (parted.parted(static_cast<std::size_t>(first), state.time)) {
+        s.endTensionA = 0.0;
+        s.endTensionForceA = Vec3::Zero();
+      }
+      if (parted.parted(static_cast<std::size_t>(last), state.time)) {
         s.endTensionB = 0.0;
         s.endTensionForceB = Vec3::Zero();
       }

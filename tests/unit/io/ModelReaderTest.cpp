@@ -498,6 +498,69 @@ TEST(ModelReader, ReadsARowOfModulesByPitch) {
   EXPECT_FALSE(readModelString(kBaseModel, kSource).lines[0].attachments[0].shared);
 }
 
+TEST(ModelReader, ReadsALineFailure) {
+  const std::string yaml =
+      edited(kBaseModel, "    attachments:\n",
+             "    failure: {time: 30, at: 120.5, clash_energy: 5.0e4}\n    attachments:\n") +
+      "contact: {}\n";
+  const model::FailureSpec& f = readModelString(yaml, kSource).lines[0].failure;
+  EXPECT_TRUE(f.enabled);
+  EXPECT_DOUBLE_EQ(f.time, 30.0);
+  EXPECT_EQ(f.where, model::FailureSpec::Where::Arc);
+  EXPECT_DOUBLE_EQ(f.arcLength, 120.5);
+  EXPECT_DOUBLE_EQ(f.clashEnergy, 5.0e4);
+  EXPECT_EQ(f.tension, 0.0);
+  const std::string atEnd = edited(kBaseModel, "    attachments:\n",
+                                   "    failure: {tension: 6.5e6, at: end_a}\n    attachments:\n");
+  const model::FailureSpec& g = readModelString(atEnd, kSource).lines[0].failure;
+  EXPECT_EQ(g.where, model::FailureSpec::Where::EndA);
+  EXPECT_DOUBLE_EQ(g.tension, 6.5e6);
+  EXPECT_TRUE(std::isnan(g.time));
+  EXPECT_FALSE(readModelString(kBaseModel, kSource).lines[0].failure.enabled);
+}
+
+TEST(ModelReaderErrors, LineFailureNeedsATrigger) {
+  expectEditError("    attachments:\n", "    failure: {at: end_a}\n    attachments:\n",
+                  "failure:", "lines[moor].failure",
+                  "a failure needs a trigger: 'time' (s), 'tension' (N or 'mbl') or 'clash_energy' (J)");
+}
+
+TEST(ModelReaderErrors, LineFailureByTimeNeedsWhere) {
+  expectEditError("    attachments:\n", "    failure: {time: 10}\n    attachments:\n",
+                  "failure:", "lines[moor].failure", "a failure by time needs 'at'");
+}
+
+TEST(ModelReaderErrors, LineFailureAtMblNeedsTheLineTypesBreakingLoad) {
+  expectEditError(
+      "    attachments:\n", "    failure: {tension: mbl}\n    attachments:\n",
+      "failure:", "lines[moor].failure.tension",
+      "'mbl' is each line type's minimum_breaking_load, and line type 'chain' of line 'moor' has none");
+}
+
+TEST(ModelReaderErrors, LineFailureBeyondTheLine) {
+  expectEditError("    attachments:\n", "    failure: {time: 10, at: 600}\n    attachments:\n",
+                  "failure:", "lines[moor].failure.at", "within its length");
+}
+
+TEST(ModelReaderErrors, LineFailureByClashNeedsContact) {
+  const std::string yaml =
+      edited(kBaseModel, "    attachments:\n", "    failure: {clash_energy: 1000}\n    attachments:\n");
+  try {
+    readModelString(yaml, kSource);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lines[moor].failure.clash_energy"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("a clash energy trigger needs line-to-line contact"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(ModelReaderErrors, LineFailureWithUnknownKey) {
+  expectEditError("    attachments:\n", "    failure: {time: 10, at: end_b, when: 5}\n    attachments:\n",
+                  "failure:", "lines[moor].failure.when", "unknown key 'when'");
+}
+
 TEST(ModelReaderErrors, RowOfModulesBeyondTheLineEnd) {
   expectEditError("        volume: 2\n", "        volume: 2\n        pitch: 100\n        count: 4\n", "count: 4",
                   "lines[moor].attachments[0].count",
