@@ -95,7 +95,11 @@ void LineFailure::commitStep(model::State& state, double dt) {
       }
       int worst = -1;
       double worstRatio = 0.0;
-      for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e) {
+      // Where it parts, when given, is where the tension is measured (a connection at an end parts on the
+      // end's tension); otherwise anywhere along the line.
+      const int from = at >= 0 ? at : line.firstElement;
+      const int to = at >= 0 ? at + 1 : line.firstElement + line.elementCount;
+      for (int e = from; e < to; ++e) {
         const double threshold = tensionThreshold(f, static_cast<std::size_t>(e));
         const double ratio = m_tension[static_cast<std::size_t>(e)] / threshold;
         if (ratio >= 1.0 && ratio > worstRatio) {

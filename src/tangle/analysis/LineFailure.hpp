@@ -11,7 +11,8 @@
 ///    time 0 parts the line before the statics (the damaged static equilibrium);
 ///  - tension: the first accepted state where an element's effective tension reaches its threshold (a
 ///    number, or its line type's minimum breaking load); it parts in the element of the highest tension
-///    over threshold, or at `at`;
+///    over threshold; with `at`, the tension is that of the element at `at` (a connection parts on its own
+///    end's tension, MoorDyn's FAILURE rows);
 ///  - clash energy: the first impact on the line (a contact event whose impact phase has ended) whose energy
 ///    reaches the threshold; it parts in the element where the impact started, or at `at`.
 /// Where `at` names an end, the end element parts: the line keeps all but that element (its mass stays

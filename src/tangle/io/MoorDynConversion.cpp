@@ -299,6 +299,72 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     chains.push_back(std::move(chain));
   }
 
+  // FAILURE rows (docs/moordyn.md): the listed lines part from the point. At a chain's end point that is the
+  // tangle line's failure at that end; at a free point joining two deck lines in series, its failure at the
+  // junction's arc length. tangle parts a line once and in one place.
+  std::map<std::size_t, std::string> failureOfChain;
+  {
+    std::vector<std::size_t> chainOf(deck.lines.size());
+    std::vector<double> arcBefore(deck.lines.size(), 0.0);  // arc length of the line's start in its chain
+    for (std::size_t c = 0; c < chains.size(); ++c) {
+      double arc = 0.0;
+      for (const ChainEntry& e : chains[c]) {
+        chainOf[static_cast<std::size_t>(e.line)] = c;
+        arcBefore[static_cast<std::size_t>(e.line)] = arc;
+        arc += deck.lines[static_cast<std::size_t>(e.line)].length;
+      }
+    }
+    for (const MoorDynFailure& f : deck.failures) {
+      if (f.time <= 0.0 && f.tension <= 0.0) {
+        notes.push_back(
+            fmt::format("{}:{}: failure {} has neither FailTime nor FailTen: it never happens and is "
+                        "left out",
+                        deck.file, f.sourceLine, f.id));
+        continue;
+      }
+      const bool junction = isJunction(f.point);
+      if (junction && f.lines.size() > 1) {
+        notes.push_back(
+            fmt::format("{}:{}: failure {} parts both lines at free point {} from it: they stay "
+                        "joined to each other (MoorDyn's rule), so nothing parts; left out",
+                        deck.file, f.sourceLine, f.id, f.point));
+        continue;
+      }
+      for (const int id : f.lines) {
+        const std::size_t l = static_cast<std::size_t>(id - 1);
+        const MoorDynLine& dl = deck.lines[l];
+        const std::size_t c = chainOf[l];
+        std::string at;
+        if (junction) {
+          // The junction is at the end of this deck line that sits at the point, inside the chain.
+          const bool reversed = std::find_if(chains[c].begin(), chains[c].end(), [&](const ChainEntry& e) {
+                                  return e.line == static_cast<int>(l);
+                                })->reversed;
+          const bool atEndB = (dl.pointB == f.point) != reversed;
+          at = num(arcBefore[l] + (atEndB ? dl.length : 0.0));
+        } else {
+          const ChainEntry& head = chains[c].front();
+          at = pointAt(head.line, head.reversed ? 1 : 0) == f.point && head.line == static_cast<int>(l)
+                   ? "end_a"
+                   : "end_b";
+        }
+        std::string triggers;
+        if (f.time > 0.0) triggers += "time: " + num(f.time) + ", ";
+        if (f.tension > 0.0) triggers += "tension: " + num(f.tension) + ", ";
+        if (failureOfChain.count(c))
+          throw InputError(
+              deck.file, f.sourceLine, fmt::format("failure {}", f.id),
+              fmt::format("line {} would part a second time (tangle parts a line once): one FAILURE "
+                          "row per line, or lines joined in series at free points, in one row",
+                          id));
+        failureOfChain[c] = fmt::format(
+            "    failure: {{{}at: {}}}   # FAILURE {} (deck line {}): line {} parts from "
+            "point {}",
+            triggers, at, f.id, f.sourceLine, id, f.point);
+      }
+    }
+  }
+
   // Line types: one per deck type, or per deck line where a damping ratio (negative BA) gives each line's
   // segments a different coefficient. MoorDyn (Line.cpp, setup): BA = -BA_in * (L/N) * sqrt(EA * w) [N s].
   struct TypeUse {
@@ -536,7 +602,8 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
   };
 
   line("lines:");
-  for (const std::vector<ChainEntry>& chain : chains) {
+  for (std::size_t chainIndex = 0; chainIndex < chains.size(); ++chainIndex) {
+    const std::vector<ChainEntry>& chain = chains[chainIndex];
     std::string name;
     for (const ChainEntry& c : chain)
       name +=
@@ -553,6 +620,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
                      sources, chain.size() > 1 ? " (joined in series at free points)" : ""));
     endBlock("end_a", startPoint, name, 0);
     endBlock("end_b", endPoint, name, 1);
+    if (const auto f = failureOfChain.find(chainIndex); f != failureOfChain.end()) line(f->second);
     line("    sections:");
     int node = 0;
     double arc = 0.0;

@@ -20,11 +20,13 @@ std::string upper(std::string s) {
   return s;
 }
 
+/// The words of a row up to a comment: as MoorDyn (Misc.cpp, str::split), the first word holding a '#' and
+/// everything after it are left out (decks put notes after a row's values: "... 1.0  # data sheet").
 std::vector<std::string> words(const std::string& line) {
   std::vector<std::string> out;
   std::istringstream in(line);
   std::string w;
-  while (in >> w) out.push_back(w);
+  while (in >> w && w.find('#') == std::string::npos) out.push_back(w);
   return out;
 }
 
@@ -33,7 +35,7 @@ bool isBlank(const std::string& line) {
 }
 
 /// The sections of a MoorDyn v2 deck (MoorDyn2.cpp, ReadInFile): the names a "---" line may hold.
-enum class Section { None, LineTypes, Points, Lines, Options, Outputs, Unsupported };
+enum class Section { None, LineTypes, Points, Lines, Failures, Options, Outputs, Unsupported };
 
 struct SectionName {
   const char* name;
@@ -67,7 +69,7 @@ const SectionName kSections[] = {
     {"CONNECTION PROPERTIES", Section::Points, ""},
     {"NODE PROPERTIES", Section::Points, ""},
     {"POINTS", Section::Points, ""},
-    {"FAILURE", Section::Unsupported, "line failures (ends released at a tension or time) are not supported"},
+    {"FAILURE", Section::Failures, ""},
     {"SYROPE IC", Section::Unsupported, "the Syrope rope model is not supported"},
     {"EXTERNAL LOADS", Section::Unsupported, "external loads on points and bodies are not supported"},
     {"OPTIONS", Section::Options, ""},
@@ -121,6 +123,11 @@ class DeckParser {
             deck.lines.push_back(line(n, w, deck));
           });
           break;
+        case Section::Failures:
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            deck.failures.push_back(failure(n, w));
+          });
+          break;
         case Section::Options:
           i = readTable(i + 1, [&](int n, const std::vector<std::string>& w) {
             if (w.size() < 2) fail(n, "OPTIONS", "expected `value name [description]`");
@@ -155,10 +162,53 @@ class DeckParser {
         fail(l.sourceLine, fmt::format("line {} LineType", l.id),
              fmt::format("no line type named '{}'", l.lineType));
     }
+    for (const MoorDynFailure& f : deck.failures) {
+      if (f.point < 1 || f.point > static_cast<int>(deck.points.size()))
+        fail(f.sourceLine, fmt::format("failure {} Point", f.id),
+             fmt::format("point {} does not exist (the deck has {} points)", f.point, deck.points.size()));
+      for (const int l : f.lines) {
+        if (l < 1 || l > static_cast<int>(deck.lines.size()))
+          fail(f.sourceLine, fmt::format("failure {} Line(s)", f.id),
+               fmt::format("line {} does not exist (the deck has {} lines)", l, deck.lines.size()));
+        const MoorDynLine& line = deck.lines[static_cast<std::size_t>(l - 1)];
+        if (line.pointA != f.point && line.pointB != f.point)
+          fail(f.sourceLine, fmt::format("failure {} Line(s)", f.id),
+               fmt::format("line {} is not attached to point {} (its ends are at points {} and {})", l,
+                           f.point, line.pointA, line.pointB));
+      }
+    }
     return deck;
   }
 
  private:
+  /// One FAILURE row: FailureID Point Line(s) FailTime FailTen (MoorDyn2.cpp; docs/inputs.rst "Failure").
+  MoorDynFailure failure(int n, const std::vector<std::string>& w) const {
+    if (w.size() < 4)
+      fail(n, "FAILURE", "expected `FailureID Point Line(s) FailTime [FailTen]` (e.g. `1 3 1,2 0 1.2e6`)");
+    MoorDynFailure f;
+    f.id = integer(n, "FAILURE FailureID", w[0]);
+    f.sourceLine = n;
+    const auto key = [&](const char* column) { return fmt::format("failure {} {}", f.id, column); };
+    std::string letters, digits;
+    for (const char c : upper(w[1]))
+      (std::isalpha(static_cast<unsigned char>(c)) && digits.empty() ? letters : digits) += c;
+    if (letters == "R" || letters == "ROD")
+      fail(n, key("Point"),
+           fmt::format("'{}': a failure at a rod end (rods are not supported by tangle)", w[1]));
+    if (!(letters.empty() || letters == "C" || letters == "CON" || letters == "P" || letters == "POINT"))
+      fail(n, key("Point"), fmt::format("unknown point '{}' (expected a point number, e.g. 3 or P3)", w[1]));
+    f.point = integer(n, key("Point"), digits);
+    std::string list = w[2];
+    std::replace(list.begin(), list.end(), ',', ' ');
+    for (const std::string& l : words(list)) f.lines.push_back(integer(n, key("Line(s)"), l));
+    if (f.lines.empty()) fail(n, key("Line(s)"), "expected the lines that part from the point, e.g. 1,2");
+    f.time = number(n, key("FailTime"), w[3]);
+    f.tension = w.size() > 4 ? number(n, key("FailTen"), w[4]) : 0.0;
+    if (f.time < 0.0 || f.tension < 0.0)
+      fail(n, key(f.time < 0.0 ? "FailTime" : "FailTen"), "expected a value >= 0 (0: no such trigger)");
+    return f;
+  }
+
   [[noreturn]] void fail(int line, const std::string& key, const std::string& expected) const {
     throw InputError(m_file, line, key, expected);
   }

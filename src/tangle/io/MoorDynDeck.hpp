@@ -69,6 +69,17 @@ struct MoorDynLine {
   int sourceLine = 0;
 };
 
+/// One FAILURE row (MoorDyn: the listed lines' ends at the point part from it, when the time or the
+/// attachment tension is reached).
+struct MoorDynFailure {
+  int id = 0;
+  int point = 0;           ///< id of the point
+  std::vector<int> lines;  ///< ids of the lines that part from it
+  double time = 0.0;       ///< FailTime [s] (0: none)
+  double tension = 0.0;    ///< FailTen [N] (0: none)
+  int sourceLine = 0;
+};
+
 /// One OPTIONS entry.
 struct MoorDynOption {
   std::string name;   ///< as written
@@ -83,6 +94,7 @@ struct MoorDynDeck {
   std::vector<MoorDynLineType> lineTypes;
   std::vector<MoorDynPoint> points;  ///< ids 1..n in order
   std::vector<MoorDynLine> lines;    ///< ids 1..n in order
+  std::vector<MoorDynFailure> failures;
   std::vector<MoorDynOption> options;
   std::vector<std::string> outputs;  ///< OUTPUTS channel names
 };

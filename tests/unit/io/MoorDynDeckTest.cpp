@@ -22,7 +22,7 @@ namespace {
 
 /// A deck with every supported kind of point; `points` and `lines` replace the tables, `options` the options.
 std::string deck(const std::string& points, const std::string& lines, const std::string& options = "",
-                 const std::string& types = "") {
+                 const std::string& types = "", const std::string& sections = "") {
   return "--------------------- MoorDyn Input File ------------------------------------\n"       // 1
          "Test deck\n"                                                                           // 2
          "----------------------- LINE TYPES ------------------------------------------\n"       // 3
@@ -38,7 +38,7 @@ std::string deck(const std::string& points, const std::string& lines, const std:
          "---------------------- LINES ----------------------------------------\n"
          "ID   LineType   AttachA  AttachB  UnstrLen  NumSegs  LineOutputs\n"
          "(#)  (name)     (#)      (#)      (m)       (-)      (-)\n" +
-         lines +
+         lines + sections +
          "---------------------- OPTIONS -----------------------------------------\n"
          "0.001         dtM           time step (s)\n"
          "100           WtrDpth       water depth (m)\n" +
@@ -164,13 +164,15 @@ TEST(MoorDynDeck, JoinsLinesInSeriesAtFreePointsWhateverTheirDirection) {
 }
 
 TEST(MoorDynDeck, TypeNamesYamlWouldMisreadAreQuoted) {
-  // MoorDyn takes any word as a type name: "#1" would be a YAML comment, "a:b" a map, "*p" an alias.
-  const std::string types = "#1 0.2 200 1e9 -1 0 1 1 0 0\na:b 0.2 200 1e9 -1 0 1 1 0 0\n*p\"q 0.2 200 1e9 -1 0 1 1 0 0\n";
+  // MoorDyn takes any word without a '#' (its comment mark) as a type name: "&1" would be a YAML anchor,
+  // "a:b" a map, "*p" an alias.
+  const std::string types =
+      "&1 0.2 200 1e9 -1 0 1 1 0 0\na:b 0.2 200 1e9 -1 0 1 1 0 0\n*p\"q 0.2 200 1e9 -1 0 1 1 0 0\n";
   const std::string points = kTwoPoints + "3 Fixed 300 0 -100 0 0 0 0\n4 Fixed 0 300 -100 0 0 0 0\n";
   const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
-      deck(points, "1 #1 1 2 320 40 -\n2 a:b 3 2 320 40 -\n3 *p\"q 4 2 320 40 -\n", "", types), "deck.txt"));
+      deck(points, "1 &1 1 2 320 40 -\n2 a:b 3 2 320 40 -\n3 *p\"q 4 2 320 40 -\n", "", types), "deck.txt"));
   const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
-  EXPECT_EQ(spec.lines[0].sections[0].lineType, "#1");
+  EXPECT_EQ(spec.lines[0].sections[0].lineType, "&1");
   EXPECT_EQ(spec.lines[1].sections[0].lineType, "a:b");
   EXPECT_EQ(spec.lines[2].sections[0].lineType, "*p\"q");
   EXPECT_EQ(spec.lineTypes.count("*p\"q"), 1u);
@@ -280,6 +282,63 @@ TEST(MoorDynDeck, RefusesAFreePointJoiningThreeLines) {
   const std::string points = kTwoPoints + "3 Free -150 0 -60 0 0 0 0\n4 Fixed 300 0 -100 0 0 0 0\n";
   expectRefused(deck(points, "1 chain 1 3 200 20 -\n2 chain 3 2 160 16 -\n3 chain 4 3 200 20 -\n"), 13,
                 "bridle");
+}
+
+/// A FAILURE section with these rows.
+std::string failures(const std::string& rows) {
+  return "---------------------- FAILURE ----------------------\n"
+         "FailureID  Point    Line(s)   FailTime   FailTen\n"
+         "()           ()       (,)      (s or 0)   (N or 0)\n" +
+         rows;
+}
+
+// Anchor 1 - line 1 - buoy 3 - line 2 (drawn from the vessel) - vessel 2; anchor 4 - line 3 - vessel 5.
+const std::string kFailurePoints = kTwoPoints +
+                                   "3     Free      -150   0     -60    100    2.0     1.5    0.8\n"
+                                   "4     Fixed     0  -300   -100   0      0       0      0\n"
+                                   "5     Vessel    0  -10    -10    0      0       0      0\n";
+const std::string kFailureLines = "1 chain 1 3 200 20 -\n2 rope 2 3 160 16 -\n3 chain 4 5 320 32 -\n";
+
+TEST(MoorDynDeck, FailureRowsBecomeLineFailures) {
+  // MoorDyn (docs/inputs.rst, "Failure"): the listed lines part from the point at FailTime or FailTen.
+  const MoorDynConversion c = convertMoorDynDeck(
+      parseMoorDynDeck(deck(kFailurePoints, kFailureLines, "", "",
+                            failures("1 5 3 0 1.2e6\n2 P3 1 30 0   # the buoy's shackle\n")),
+                       "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  ASSERT_EQ(spec.lines.size(), 2u);
+  // Line 1 parts from the buoy inside the joined line1-line2, at arc 200 m, at 30 s.
+  const model::FailureSpec& joined = spec.lines[0].failure;
+  EXPECT_EQ(spec.lines[0].name, "line1-line2");
+  EXPECT_TRUE(joined.enabled);
+  EXPECT_DOUBLE_EQ(joined.time, 30.0);
+  EXPECT_EQ(joined.tension, 0.0);
+  EXPECT_EQ(joined.where, model::FailureSpec::Where::Arc);
+  EXPECT_DOUBLE_EQ(joined.arcLength, 200.0);
+  // Line 3 parts from its vessel point (end B) on its own end tension.
+  const model::FailureSpec& single = spec.lines[1].failure;
+  EXPECT_TRUE(std::isnan(single.time));
+  EXPECT_DOUBLE_EQ(single.tension, 1.2e6);
+  EXPECT_EQ(single.where, model::FailureSpec::Where::EndB);
+}
+
+TEST(MoorDynDeck, CommentsAfterARowsValuesAreSkipped) {
+  const MoorDynDeck d = parseMoorDynDeck(deck(kTwoPoints + "", "1 chain 1 2 320 40 -   # the main leg\n", "",
+                                              "poly 0.2 20 1e8 -1 0 1 1 0 0 #note\n"),
+                                         "deck.txt");
+  ASSERT_EQ(d.lines.size(), 1u);
+  EXPECT_EQ(d.lines[0].segments, 40);
+  EXPECT_DOUBLE_EQ(d.lineTypes.back().addedMassAxial, 0.0);
+}
+
+TEST(MoorDynDeck, RefusesFailuresTangleCannotHonour) {
+  // Failure rows start at deck line 25 (after the types, points and lines, and the section's 3 lines).
+  expectRefused(deck(kFailurePoints, kFailureLines, "", "", failures("1 R1a 1 10 0\n")), 25, "rod end");
+  expectRefused(deck(kFailurePoints, kFailureLines, "", "", failures("1 5 1 10 0\n")), 25,
+                "line 1 is not attached to point 5");
+  expectRefused(deck(kFailurePoints, kFailureLines, "", "", failures("1 5 3 10 0\n2 4 3 20 0\n")), 26,
+                "would part a second time");
+  expectRefused(deck(kFailurePoints, kFailureLines, "", "", failures("1 5 3 -1 0\n")), 25, "FailTime");
 }
 
 TEST(MoorDynDeck, RefusesALoopOfLines) {
