@@ -41,8 +41,13 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tan
 void Bar::throwCoincidentNodes() { throw Error("Bar: the two nodes coincide (zero current length)"); }
 
 double Bar::axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor) const {
-  const double l = (x2 - x1).norm();
-  return (l < m_l0 ? compressionFactor : 1.0) * m_ea * (l - m_l0) / m_l0;
+  // As axial()'s force, without its direction (no throw for coincident nodes: a result, not a solve).
+  const double strain = ((x2 - x1).norm() - m_l0) / m_l0;
+  if (m_curve) {
+    if (strain >= 0.0) return m_curve->at(strain).value;
+    return compressionFactor * m_curve->at(0.0).slope * strain;
+  }
+  return (strain < 0.0 ? compressionFactor : 1.0) * m_ea * strain;
 }
 
 }  // namespace tangle::element

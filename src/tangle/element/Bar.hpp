@@ -2,8 +2,9 @@
 /// @file Bar.hpp
 /// Two-node bar (truss) element for lines without bending stiffness (chain, wire rope).
 /// 3 translational DOF per node; exact large-displacement kinematics, linear axial law on
-/// engineering strain (Crisfield 1991, vol. 1, sec. 3.3).
+/// engineering strain (Crisfield 1991, vol. 1, sec. 3.3), or a tension-strain curve (a fibre rope).
 
+#include "tangle/core/PiecewiseLinear.hpp"
 #include "tangle/core/Types.hpp"
 
 namespace tangle::element {
@@ -15,6 +16,13 @@ class Bar {
   /// @param restLength unstretched length L0 [m], > 0
   /// @throws tangle::Error when EA <= 0 or L0 <= 0
   Bar(double axialStiffness, double restLength);
+  /// A bar whose tension follows `curve` (tension [N] against engineering strain [-], from (0, 0); the
+  /// caller keeps it alive) in tension; in compression EA is the curve's first slope (times the compression
+  /// factor). `axialStiffness` stays the reference EA of the element (step limits, round-off).
+  Bar(double axialStiffness, double restLength, const core::PiecewiseLinear* curve)
+      : Bar(axialStiffness, restLength) {
+    m_curve = curve;
+  }
 
   /// Internal (elastic) nodal forces and their tangent. The axial law is linear in tension *and*
   /// compression (no slack cut-off here: a compressed bar pushes with N = EA (l - L0) / L0 < 0).
@@ -37,7 +45,7 @@ class Bar {
     const Axial a = axial(x1, x2, compressionFactor);
     return a.force * a.direction;
   }
-  /// Axial force N = EA (l - L0) / L0 [N], positive in tension, negative in compression.
+  /// Axial force N = EA (l - L0) / L0 [N] (or the curve's), positive in tension, negative in compression.
   /// @param compressionFactor as in compute()
   double axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor = 1.0) const;
 
@@ -57,13 +65,21 @@ class Bar {
     const Vec3 d = x2 - x1;
     const double l = d.norm();
     if (!(l > 0.0)) throwCoincidentNodes();
+    const double strain = (l - m_l0) / m_l0;
+    if (m_curve) {
+      // The curve's tension and slope; compressed, its first slope (times the compression factor).
+      const core::PiecewiseLinear::Sample s = m_curve->at(std::max(strain, 0.0));
+      if (strain >= 0.0) return {d / l, l, s.slope, s.value};
+      return {d / l, l, compressionFactor * s.slope, compressionFactor * s.slope * strain};
+    }
     // A slack bar (l < L0) may be given a reduced compression stiffness (compressionFactor < 1).
     const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
-    return {d / l, l, ea, ea * (l - m_l0) / m_l0};
+    return {d / l, l, ea, ea * strain};
   }
   [[noreturn]] static void throwCoincidentNodes();
   double m_ea;
   double m_l0;
+  const core::PiecewiseLinear* m_curve = nullptr;  ///< tension-strain curve, or none (linear EA)
 };
 
 }  // namespace tangle::element

@@ -598,7 +598,7 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     const Map m(item, {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
                        "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal",
                        "drag_axial", "added_mass_normal", "added_mass_axial", "axial_damping",
-                       "minimum_breaking_load", "internal_diameter", "maximum_strain"});
+                       "minimum_breaking_load", "internal_diameter", "maximum_strain", "tension_strain"});
     const section::LineType d;
     section::LineType t;
     t.name = names.add(m);
@@ -607,8 +607,37 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     t.buoyancyDiameter = m.number("buoyancy_diameter", t.outerDiameter, diameter);
     t.contactDiameter = m.number("contact_diameter", t.outerDiameter, diameter);
     t.massPerLength = m.number("mass_per_length", positiveUpTo(kMaxMassPerLength));
-    t.axialStiffness = m.number("axial_stiffness", positiveUpTo(kMaxStiffness));
+    const std::optional<Value> curve = m.find("tension_strain");
+    if (!curve || m.find("axial_stiffness"))
+      t.axialStiffness = m.number("axial_stiffness", positiveUpTo(kMaxStiffness));
     t.bendingStiffness = m.number("bending_stiffness", d.bendingStiffness, nonNegativeUpTo(kMaxStiffness));
+    if (curve) {
+      if (m.find("axial_stiffness"))
+        curve->fail("give either axial_stiffness (a linear EA) or tension_strain (a curve), not both");
+      if (t.bendingStiffness > 0.0)
+        curve->fail("a tension-strain curve is for cables (no bending_stiffness): a beam's EA is linear");
+      // [[strain, tension], ...] from [0, 0], both increasing: a rope stiffening or softening as it
+      // stretches.
+      std::vector<double> strain{0.0}, tension{0.0};
+      const std::vector<Value> rows = curve->items(1);
+      for (const Value& row : rows) {
+        const std::vector<double> p = row.numbers(2, "[strain (a fraction), tension in N]");
+        if (!(p[0] > strain.back()) || p[0] > 1.0)
+          row.fail(
+              fmt::format("strains must increase from 0 (the first point is [0, 0], implied) and stay <= 1 "
+                          "(a fraction: 0.05 for 5 %); got {} after {}",
+                          numberText(p[0]), numberText(strain.back())));
+        if (!(p[1] > tension.back()) || p[1] > kMaxStiffness)
+          row.fail(
+              fmt::format("tensions must increase with the strain (a rope that softens to nothing has no "
+                          "equilibrium); got {} N after {} N",
+                          numberText(p[1]), numberText(tension.back())));
+        strain.push_back(p[0]);
+        tension.push_back(p[1]);
+      }
+      t.tensionStrain = std::make_shared<const core::PiecewiseLinear>(strain, tension);
+      t.axialStiffness = t.tensionStrain->largestSlope();
+    }
     t.torsionalStiffness = m.number("torsional_stiffness", d.torsionalStiffness, nonNegativeUpTo(kMaxStiffness));
     t.dragNormal = m.number("drag_normal", d.dragNormal, nonNegativeUpTo(kMaxCoefficient));
     t.dragAxial = m.number("drag_axial", d.dragAxial, nonNegativeUpTo(kMaxCoefficient));

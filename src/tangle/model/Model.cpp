@@ -189,7 +189,7 @@ void Model::buildLine(int lineIndex) {
             element::BeamProperties{type.axialStiffness, type.bendingStiffness, torsionalStiffnessOf(type)},
             le);
       } else {
-        el.bar.emplace(type.axialStiffness, le);
+        el.bar.emplace(type.axialStiffness, le, type.tensionStrain.get());
       }
       elements.push_back(std::move(el));
       arc.push_back(arc.back() + le);

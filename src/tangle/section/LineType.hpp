@@ -2,7 +2,10 @@
 /// @file LineType.hpp
 /// Properties of one kind of line cross-section (OrcaFlex "line type"): chain, wire, riser joint...
 
+#include <memory>
 #include <string>
+
+#include "tangle/core/PiecewiseLinear.hpp"
 
 namespace tangle::section {
 
@@ -21,7 +24,12 @@ struct LineType {
   /// Density of the contents filling the bore [kg/m^3] (lines[].contents, sections[].contents_density). Not
   /// an input of the line type: the model gives each section of a line with contents its own copy.
   double contentsDensity = 0.0;
-  double axialStiffness = 0.0;      ///< EA [N]
+  /// EA [N]; with a tension-strain curve, the curve's largest slope (the reference of step limits and
+  /// round-off: the stiffest the line gets).
+  double axialStiffness = 0.0;
+  /// Cables only: tension [N] against engineering strain [-] from (0, 0) (line_types[].tension_strain: a
+  /// fibre rope's nonlinear stiffness); null: linear, EA.
+  std::shared_ptr<const core::PiecewiseLinear> tensionStrain;
   double bendingStiffness = 0.0;    ///< EI about both transverse axes [N m^2]; 0 for chain/wire
   double torsionalStiffness = 0.0;  ///< GJ [N m^2]; defaults to EI / 1.3 for beams when not given
   double dragNormal = 1.2;          ///< normal drag coefficient Cdn [-] (on outerDiameter)

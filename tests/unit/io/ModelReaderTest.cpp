@@ -519,6 +519,26 @@ TEST(ModelReader, ReadsALineFailure) {
   EXPECT_FALSE(readModelString(kBaseModel, kSource).lines[0].failure.enabled);
 }
 
+TEST(ModelReader, ReadsATensionStrainCurve) {
+  const std::string yaml = edited(kBaseModel, "    axial_stiffness: 5.8e8\n",
+                                  "    tension_strain: [[0.01, 2.0e6], [0.03, 1.0e7]]\n");
+  const section::LineType& t = readModelString(yaml, kSource).lineTypes.at("chain");
+  ASSERT_NE(t.tensionStrain, nullptr);
+  EXPECT_EQ(t.tensionStrain->x().size(), 3u);  // [0, 0] implied
+  EXPECT_DOUBLE_EQ(t.tensionStrain->at(0.02).value, 6.0e6);
+  EXPECT_DOUBLE_EQ(t.axialStiffness, 4.0e8);  // the largest slope
+}
+
+TEST(ModelReaderErrors, TensionStrainCurveMustIncrease) {
+  expectEditError("    axial_stiffness: 5.8e8\n", "    tension_strain: [[0.02, 2.0e6], [0.01, 3.0e6]]\n",
+                  "tension_strain", "line_types[chain].tension_strain[1]", "strains must increase from 0");
+  expectEditError("    axial_stiffness: 5.8e8\n", "    tension_strain: [[0.02, 2.0e6], [0.03, 1.0e6]]\n",
+                  "tension_strain", "line_types[chain].tension_strain[1]", "tensions must increase");
+  expectEditError("    axial_stiffness: 2.0e9\n",
+                  "    axial_stiffness: 2.0e9\n    tension_strain: [[0.01, 1.0e6]]\n", "tension_strain",
+                  "line_types[pipe].tension_strain", "either axial_stiffness");
+}
+
 TEST(ModelReaderErrors, LineFailureNeedsATrigger) {
   expectEditError("    attachments:\n", "    failure: {at: end_a}\n    attachments:\n",
                   "failure:", "lines[moor].failure",
