@@ -522,7 +522,28 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     line(fmt::format("    outer_diameter: {}      # Diam: drag, added mass and buoyancy (pi/4 d^2)",
                      num(t.diameter)));
     line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
-    line(fmt::format("    axial_stiffness: {}     # EA", num(t.axialStiffness)));
+    if (t.tensionStrain.empty()) {
+      line(fmt::format("    axial_stiffness: {}     # EA", num(t.axialStiffness)));
+    } else {
+      // MoorDyn (Line.cpp, getNonlinearEA; Util/Interp.hpp): the tension is interpolated in the curve's
+      // points, held at the first point's below it and at the last one's beyond it. tangle's curve starts at
+      // (0, 0) and continues the last slope.
+      std::string points;
+      for (const auto& [strain, tension] : t.tensionStrain)
+        if (strain > 0.0)
+          points += fmt::format("{}[{}, {}]", points.empty() ? "" : ", ", num(strain), num(tension));
+      line(fmt::format("    tension_strain: [{}]   # EA: the curve file {}", points, t.tensionStrainFile));
+      if (t.tensionStrain.front().first > 0.0)
+        notes.push_back(
+            fmt::format("line type {}: its EA curve starts at strain {}: MoorDyn holds the first "
+                        "point's tension {} N from zero strain up to it, tangle rises linearly from "
+                        "(0, 0)",
+                        t.name, num(t.tensionStrain.front().first), num(t.tensionStrain.front().second)));
+      notes.push_back(
+          fmt::format("line type {}: beyond its EA curve's last strain {} MoorDyn holds the tension at "
+                      "{} N, tangle continues the last segment's slope",
+                      t.name, num(t.tensionStrain.back().first), num(t.tensionStrain.back().second)));
+    }
     if (t.bendingStiffness > 0.0)
       line(fmt::format("    bending_stiffness: {}   # EI", num(t.bendingStiffness)));
     if (u.damping > 0.0) {

@@ -3,9 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cctype>
 #include <charconv>
+#include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -264,6 +265,52 @@ class DeckParser {
     return *v;
   }
 
+  /// MoorDyn's EA curve file (MoorDyn2.hpp, read_curve; relative to the deck's folder): three header lines,
+  /// then `strain tension` rows, strains and tensions increasing.
+  void readTensionStrain(int n, MoorDynLineType& t, const std::string& word) const {
+    const std::string key = fmt::format("line type {} EA", t.name);
+    const std::filesystem::path path = std::filesystem::path(m_file).parent_path() / word;
+    std::ifstream in(path);
+    if (!in)
+      fail(n, key,
+           fmt::format("'{}' is neither a number nor a curve file that can be opened ({})", word,
+                       path.string()));
+    t.tensionStrainFile = path.string();
+    std::string text;
+    for (int row = 1; std::getline(in, text); ++row) {
+      if (row <= 3) continue;  // headers
+      if (!text.empty() && text.back() == '\r') text.pop_back();
+      const std::vector<std::string> v = words(text);
+      if (v.empty()) continue;
+      const auto value = [&](std::size_t k, const char* what) {
+        const std::optional<double> x = v.size() > k ? deckNumber(v[k]) : std::nullopt;
+        if (!x)
+          throw InputError(path.string(), row, what,
+                           fmt::format("expected `strain tension` (two numbers), got '{}'", text));
+        return *x;
+      };
+      const double strain = value(0, "strain"), tension = value(1, "tension");
+      const double lastStrain = t.tensionStrain.empty() ? -1.0 : t.tensionStrain.back().first;
+      const double lastTension = t.tensionStrain.empty() ? -1.0 : t.tensionStrain.back().second;
+      if (!(strain > lastStrain) || strain < 0.0 || !(tension > lastTension) || tension < 0.0)
+        throw InputError(
+            path.string(), row, "strain tension",
+            "strains and tensions increasing from >= 0 (tangle's curve is monotonic: a rope that "
+            "softens to nothing has no equilibrium)");
+      t.tensionStrain.push_back({strain, tension});
+    }
+    if (t.tensionStrain.size() < 2)
+      fail(n, key, fmt::format("the curve file {} has fewer than two points", path.string()));
+    double largest = 0.0;
+    double s0 = 0.0, f0 = 0.0;
+    for (const auto& [strain, tension] : t.tensionStrain) {
+      if (strain > s0) largest = std::max(largest, (tension - f0) / (strain - s0));
+      s0 = strain;
+      f0 = tension;
+    }
+    t.axialStiffness = largest;
+  }
+
   MoorDynLineType lineType(int n, const std::vector<std::string>& w) const {
     if (w.size() < 10)
       fail(n, "LINE TYPES",
@@ -275,8 +322,11 @@ class DeckParser {
     const auto key = [&](const char* column) { return fmt::format("line type {} {}", t.name, column); };
     t.diameter = number(n, key("Diam"), w[1]);
     t.massPerLength = number(n, key("Mass/m"), w[2]);
-    t.axialStiffness =
-        scalarProperty(n, t.name, "EA", w[3], "nonlinear or viscoelastic axial stiffness laws");
+    if (w[3].find('|') == std::string::npos && upper(w[3]).rfind("SYROPE:", 0) != 0 && !deckNumber(w[3])) {
+      readTensionStrain(n, t, w[3]);  // a nonlinear EA from a curve file
+    } else {
+      t.axialStiffness = scalarProperty(n, t.name, "EA", w[3], "viscoelastic axial stiffness laws");
+    }
     t.axialDamping =
         scalarProperty(n, t.name, "BA/-zeta", w[4], "tension-dependent or viscoelastic axial damping laws");
     t.bendingStiffness = scalarProperty(n, t.name, "EI", w[5], "nonlinear bending stiffness laws");

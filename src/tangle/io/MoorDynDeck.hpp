@@ -15,6 +15,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
@@ -26,7 +27,11 @@ struct MoorDynLineType {
   std::string name;
   double diameter = 0.0;          ///< d [m]: drag, added mass, buoyancy (pi/4 d^2) and seabed contact width
   double massPerLength = 0.0;     ///< [kg/m]
-  double axialStiffness = 0.0;    ///< EA [N]
+  double axialStiffness = 0.0;    ///< EA [N] (with a curve: its largest slope)
+  /// EA given as a curve file (MoorDyn's read_curve: three header lines, then `strain tension` rows): the
+  /// points (strain [-], tension [N]); empty for a constant EA.
+  std::vector<std::pair<double, double>> tensionStrain;
+  std::string tensionStrainFile;  ///< the curve file's path as read
   double axialDamping = 0.0;      ///< BA [N s] (>= 0), or minus a damping ratio of the segments' axial mode
   double bendingStiffness = 0.0;  ///< EI [N m^2]
   double dragNormal = 0.0;        ///< Cd [-] on d

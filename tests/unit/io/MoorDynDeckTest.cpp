@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -218,9 +219,32 @@ TEST(MoorDynDeck, RefusesLinesOnRods) {
   expectRefused(deck(kTwoPoints, "1 chain R1A 2 320 40 -\n"), 16, "rods");
 }
 
-TEST(MoorDynDeck, RefusesNonlinearAndViscoelasticStiffness) {
+TEST(MoorDynDeck, AnEACurveFileBecomesATensionStrainCurve) {
+  // MoorDyn (MoorDyn2.hpp, read_curve): EA may name a file beside the deck, three header lines then
+  // `strain tension` rows.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tangle-moordyn-ea-curve";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "poly_ea.dat")
+      << "polyester\nStrain Tension\n(-) (N)\n0.0 0.0\n0.01 1.0e5\n0.02 3.0e5  # knee\n";
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
+      deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 poly_ea.dat -1 0 1 1 0 0\n"),
+      (dir / "deck.txt").string()));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  const section::LineType& t = spec.lineTypes.at("poly");
+  ASSERT_NE(t.tensionStrain, nullptr);
+  EXPECT_EQ(t.tensionStrain->x(), (std::vector<double>{0.0, 0.01, 0.02}));
+  EXPECT_EQ(t.tensionStrain->y(), (std::vector<double>{0.0, 1.0e5, 3.0e5}));
+  EXPECT_DOUBLE_EQ(t.axialStiffness, 2.0e7);
+  // MoorDyn holds the last tension beyond the curve; tangle continues its slope: said in the notes.
+  EXPECT_TRUE(std::any_of(c.notes.begin(), c.notes.end(), [](const std::string& n) {
+    return n.find("MoorDyn holds the tension at") != std::string::npos;
+  }));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(MoorDynDeck, RefusesViscoelasticStiffnessAndMissingCurveFiles) {
   expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 poly_ea.dat -1 0 1 1 0 0\n"), 8,
-                "table file");
+                "neither a number nor a curve file that can be opened");
   expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 1e8|2e8 -1 0 1 1 0 0\n"), 8,
                 "viscoelastic");
 }
