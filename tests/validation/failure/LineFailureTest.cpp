@@ -294,5 +294,64 @@ TEST(LineFailure, SpreadWithALegPartedInStaticsSitsWhereTheSpreadWithoutThatLegD
   }
 }
 
+// ---------------------------------------------------------------------------------------------------------
+// Snap-back: a straight, neutrally buoyant line (no sag; no axial drag or added mass) held at 100 kN between
+// two pins parts at end B. Reference: the elastic bar suddenly released (one-dimensional wave theory, e.g.
+// Graff, "Wave motion in elastic solids", 1975, sec. 2.1): an unloading front runs from the break at
+// c = sqrt(EA / m') (3524 m/s here) and the line behind it moves towards end A at v = T0 / sqrt(EA m')
+// (3.52 m/s) while ahead of it nothing has changed; so, until the front reaches end A, the line's momentum is
+// the impulse of the pin's unchanged 100 kN, T0 t. Tolerances: momentum 1 % (the integrator's start at the
+// break); the mean speed of the nodes behind the front 3 % (the lumped-mass mesh rings behind a sharp front,
+// Gibbs-like, about the mean).
+// ---------------------------------------------------------------------------------------------------------
+TEST(LineFailure, ATautLineSnapsBackAtTheSpeedOfItsUnloadingWave) {
+  constexpr double kEA = 1.0e8, kTension = 1.0e5, kLength = 1000.0, kBreak = 0.01, kAfter = 0.15;
+  const double massPerLength = kRho * std::numbers::pi * 0.1 * 0.1 / 4.0;
+  const double span = kLength * (1.0 + kTension / kEA);
+  const std::string yaml = fmt::format(R"(title: a taut line that parts
+environment: {{water_depth: 300}}
+line_types:
+  - {{name: rope, outer_diameter: 0.1, mass_per_length: {:.10g}, axial_stiffness: {}, drag_axial: 0, added_mass_axial: 0}}
+lines:
+  - name: rope
+    end_a: {{type: pinned, position: [0, 0, -100]}}
+    end_b: {{type: pinned, position: [{:.10g}, 0, -100]}}
+    sections: [{{type: rope, length: {}, elements: 200}}]
+    failure: {{time: {}, at: end_b}}
+dynamics: {{duration: {}, time_step: 0.001, output_interval: 0.005, ramp_time: 0}}
+)",
+                                       massPerLength, kEA, span, kLength, kBreak, kBreak + kAfter);
+  analysis::Simulation sim(io::readModelString(yaml, "snap.yaml"));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  const time::DynamicResult run = sim.runDynamics(nullptr);
+  ASSERT_TRUE(run.completed) << run.message;
+  const model::Model& m = sim.model();
+  const model::Line& line = m.lines().front();
+  const model::State& s = sim.state();
+  double momentum = 0.0;
+  for (int n = line.firstNode; n <= line.lastNode(); ++n)
+    momentum += m.nodeMass()[static_cast<std::size_t>(n)] * s.velocity[m.dofs().firstDof(n)];
+  const double t = s.time - kBreak;
+  EXPECT_NEAR(momentum, -kTension * t, 0.01 * kTension * t);
+  // The nodes behind the front, less a tenth of the line's length on either side of it and at the break.
+  const double c = std::sqrt(kEA / massPerLength), v = kTension / std::sqrt(kEA * massPerLength);
+  const double front = kLength - c * t;  // arc length from end A
+  double sum = 0.0;
+  int count = 0;
+  for (int n = line.firstNode; n <= line.lastNode(); ++n) {
+    const double arc = line.arcLength[static_cast<std::size_t>(n - line.firstNode)];
+    if (arc > front + 0.1 * kLength && arc < 0.9 * kLength) {
+      sum += s.velocity[m.dofs().firstDof(n)];
+      ++count;
+    }
+  }
+  ASSERT_GT(count, 20);
+  EXPECT_NEAR(-sum / count, v, 0.03 * v);
+  // Ahead of the front, at rest.
+  EXPECT_NEAR(s.velocity[m.dofs().firstDof(line.firstNode + 20)], 0.0, 0.01 * v);
+  RecordProperty("snap_speed_m_per_s", fmt::format("{:.4g}", -sum / count));
+  RecordProperty("wave_theory_m_per_s", fmt::format("{:.4g}", v));
+}
+
 }  // namespace
 }  // namespace tangle
