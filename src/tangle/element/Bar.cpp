@@ -42,12 +42,13 @@ void Bar::throwCoincidentNodes() { throw Error("Bar: the two nodes coincide (zer
 
 double Bar::axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor) const {
   // As axial()'s force, without its direction (no throw for coincident nodes: a result, not a solve).
-  const double strain = ((x2 - x1).norm() - m_l0) / m_l0;
+  const double l = (x2 - x1).norm();
   if (m_curve) {
+    const double strain = (l - m_l0) / m_l0;
     if (strain >= 0.0) return m_curve->at(strain).value;
     return compressionFactor * m_curve->at(0.0).slope * strain;
   }
-  return (strain < 0.0 ? compressionFactor : 1.0) * m_ea * strain;
+  return (l < m_l0 ? compressionFactor : 1.0) * m_ea * (l - m_l0) / m_l0;
 }
 
 }  // namespace tangle::element
