@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace tangle::contact {
 
@@ -48,7 +49,9 @@ ElementCurve elementCurve(const model::Model& model, int element, bool smoothCab
   const int index = element - line.firstElement;
   // A parted neighbour (lines[].failure, at any time) is no neighbour: this element's node there is an end.
   const model::PartedElements& parted = model.parted();
-  const auto intact = [&](int e) { return !(parted.partingTime(static_cast<std::size_t>(e)) < 1e300); };
+  const auto intact = [&](int e) {
+    return !parted.parted(static_cast<std::size_t>(e), std::numeric_limits<double>::infinity());
+  };
   const bool hasPrevious = index > 0 && intact(element - 1),
              hasNext = index < line.elementCount - 1 && intact(element + 1);
   const double l1 = el.restLength;

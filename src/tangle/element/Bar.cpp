@@ -41,14 +41,8 @@ void Bar::compute(const Vec3& x1, const Vec3& x2, Vec6& internalForce, Mat6* tan
 void Bar::throwCoincidentNodes() { throw Error("Bar: the two nodes coincide (zero current length)"); }
 
 double Bar::axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor) const {
-  // As axial()'s force, without its direction (no throw for coincident nodes: a result, not a solve).
-  const double l = (x2 - x1).norm();
-  if (m_curve) {
-    const double strain = (l - m_l0) / m_l0;
-    if (strain >= 0.0) return m_curve->at(strain).value;
-    return compressionFactor * m_curve->at(0.0).slope * strain;
-  }
-  return (l < m_l0 ? compressionFactor : 1.0) * m_ea * (l - m_l0) / m_l0;
+  // axial()'s force without its direction: no throw for coincident nodes (a result, not a solve).
+  return law((x2 - x1).norm(), compressionFactor).force;
 }
 
 }  // namespace tangle::element

@@ -65,17 +65,26 @@ class Bar {
     const Vec3 d = x2 - x1;
     const double l = d.norm();
     if (!(l > 0.0)) throwCoincidentNodes();
+    const Law a = law(l, compressionFactor);
+    return {d / l, l, a.stiffness, a.force};
+  }
+  /// The axial law at the current length l [m]: dN/d(strain) [N] and N [N] (axial() and axialForce share it).
+  struct Law {
+    double stiffness;
+    double force;
+  };
+  Law law(double l, double compressionFactor) const {
     if (m_curve) {
       // The curve's tension and slope; compressed, its first slope (times the compression factor).
       const double strain = (l - m_l0) / m_l0;
       const core::PiecewiseLinear::Sample s = m_curve->at(std::max(strain, 0.0));
-      if (strain >= 0.0) return {d / l, l, s.slope, s.value};
-      return {d / l, l, compressionFactor * s.slope, compressionFactor * s.slope * strain};
+      if (strain >= 0.0) return {s.slope, s.value};
+      return {compressionFactor * s.slope, compressionFactor * s.slope * strain};
     }
     // A slack bar (l < L0) may be given a reduced compression stiffness (compressionFactor < 1). (The
     // product before the division, as it always was: results bit for bit.)
     const double ea = l < m_l0 ? compressionFactor * m_ea : m_ea;
-    return {d / l, l, ea, ea * (l - m_l0) / m_l0};
+    return {ea, ea * (l - m_l0) / m_l0};
   }
   [[noreturn]] static void throwCoincidentNodes();
   double m_ea;

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "tangle/core/Error.hpp"
+#include "tangle/core/PiecewiseLinear.hpp"
 
 namespace tangle::io {
 namespace {
@@ -301,14 +302,14 @@ class DeckParser {
     }
     if (t.tensionStrain.size() < 2)
       fail(n, key, fmt::format("the curve file {} has fewer than two points", path.string()));
-    double largest = 0.0;
-    double s0 = 0.0, f0 = 0.0;
-    for (const auto& [strain, tension] : t.tensionStrain) {
-      if (strain > s0) largest = std::max(largest, (tension - f0) / (strain - s0));
-      s0 = strain;
-      f0 = tension;
-    }
-    t.axialStiffness = largest;
+    // EA: the largest slope of the curve tangle builds from it (from (0, 0): MoorDynConversion).
+    std::vector<double> strains{0.0}, tensions{0.0};
+    for (const auto& [strain, tension] : t.tensionStrain)
+      if (strain > 0.0) {
+        strains.push_back(strain);
+        tensions.push_back(tension);
+      }
+    t.axialStiffness = core::PiecewiseLinear(strains, tensions).largestSlope();
   }
 
   MoorDynLineType lineType(int n, const std::vector<std::string>& w) const {
