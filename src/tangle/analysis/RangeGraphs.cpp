@@ -27,15 +27,15 @@ RangeGraphs::RangeGraphs(const std::vector<solver::LineSnapshot>& initial) {
   }
 }
 
-std::vector<std::vector<double>> RangeGraphs::seabedLevels(const model::Model& model) {
-  std::vector<std::vector<double>> levels;
+RangeGraphs::SeabedNodes RangeGraphs::seabedNodes(const model::Model& model) {
+  SeabedNodes nodes;
+  nodes.surface = model.sharedSeabedSurface();
   for (const model::Line& line : model.lines()) {
-    std::vector<double>& level = levels.emplace_back();
+    std::vector<double>& radius = nodes.radius.emplace_back();
     for (int i = 0; i < line.nodeCount; ++i)
-      // Resting height plus half a diameter: a laid chain pushed about by a current hops by less.
-      level.push_back(-model.environment().waterDepth + model.nodeContactDiameter()[line.firstNode + i]);
+      radius.push_back(0.5 * model.nodeContactDiameter()[line.firstNode + i]);
   }
-  return levels;
+  return nodes;
 }
 
 void RangeGraphs::accumulate(const std::vector<solver::LineSnapshot>& lines, double dt) {
@@ -65,7 +65,10 @@ void RangeGraphs::accumulate(const std::vector<solver::LineSnapshot>& lines, dou
     r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < s.tension.size(); ++i)
-      if (m_seabedLevel.empty() || s.position[i].z() > m_seabedLevel[l][i])
+      // Clear of the seabed by more than half a diameter: a laid chain pushed about by a current hops by
+      // less.
+      if (!m_seabed.surface ||
+          m_seabed.surface->gap(s.position[i], m_seabed.radius[l][i]) > m_seabed.radius[l][i])
         lowest = std::min(lowest, s.tension[i]);
     if (lowest < 0.0) {
       if (!r.slack) ++r.slackEvents;

@@ -7,6 +7,7 @@
 /// io::DynamicRecorder, results.h5, the report, the Python module), so every output gives the same number
 /// for one quantity.
 
+#include <memory>
 #include <vector>
 
 #include "tangle/model/Model.hpp"
@@ -39,13 +40,17 @@ class RangeGraphs {
   /// @param initial the lines at t = 0 (node counts; their largest tension sets each line's re-tension level)
   explicit RangeGraphs(const std::vector<solver::LineSnapshot>& initial);
 
-  /// Height [m] below which each node of each line is on the seabed (one vector per line, as the
-  /// snapshots' nodes; the run gives -depth + its contact diameter: resting height plus half a diameter).
-  /// Slack events count suspended nodes only: a laid chain at rest may carry no tension. Without it every
-  /// node counts.
-  void setSeabedLevels(std::vector<std::vector<double>> levels) { m_seabedLevel = std::move(levels); }
-  /// The seabed levels of `model`'s nodes as setSeabedLevels takes them.
-  static std::vector<std::vector<double>> seabedLevels(const model::Model& model);
+  /// The seabed and each line's node contact radii [m] (one vector per line, as the snapshots' nodes).
+  struct SeabedNodes {
+    std::shared_ptr<const seabed::SeabedSurface> surface;
+    std::vector<std::vector<double>> radius;
+  };
+  /// A node is on the seabed when its contact surface is within one contact radius of the seabed (resting
+  /// height plus half a diameter). Slack events count suspended nodes only: a laid chain at rest may carry
+  /// no tension. Without it every node counts.
+  void setSeabed(SeabedNodes seabed) { m_seabed = std::move(seabed); }
+  /// `model`'s seabed and nodes as setSeabed takes them.
+  static SeabedNodes seabedNodes(const model::Model& model);
 
   /// Adds one accepted step (of length dt [s]; dt = 0 for the initial state). Means are time-weighted (each
   /// state stands for the step of length dt that led to it): steps are not equal when the step controller
@@ -62,7 +67,7 @@ class RangeGraphs {
 
  private:
   std::vector<Range> m_ranges;
-  std::vector<std::vector<double>> m_seabedLevel;  // per line and node [m] (empty: no seabed test)
+  SeabedNodes m_seabed;  // (no surface: no seabed test)
   double m_weight = 0.0;
   long m_steps = 0;
 };

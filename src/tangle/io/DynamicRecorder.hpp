@@ -42,8 +42,8 @@ class DynamicRecorder {
   /// Appends one output time to the time histories (flushed to disk at once). May run on another thread
   /// than accumulate() (the run command's background writer): the two share no member.
   void record(double time, const std::vector<solver::LineSnapshot>& lines);
-  /// See analysis::RangeGraphs::setSeabedLevels (slack events count suspended nodes only).
-  void setSeabedLevels(std::vector<std::vector<double>> levels) { m_ranges.setSeabedLevels(std::move(levels)); }
+  /// See analysis::RangeGraphs::setSeabed (slack events count suspended nodes only).
+  void setSeabed(analysis::RangeGraphs::SeabedNodes seabed) { m_ranges.setSeabed(std::move(seabed)); }
   /// Adds one accepted step (of length dt [s]; dt = 0 for the initial state) to the ranges and extremes
   /// (analysis::RangeGraphs::accumulate).
   void accumulate(const std::vector<solver::LineSnapshot>& lines, double dt) { m_ranges.accumulate(lines, dt); }

@@ -355,7 +355,37 @@ std::string HtmlReport::json() const {
                       quote(TANGLE_VERSION), quote(m_kind), quote(spec.sourceFile), quote(spec.title),
                       quote(m_status)));
   f.write("\"summary\":" + quote(m_summary) + ",");
-  f.write(fmt::format("\"depth\":{},", fixed(env.waterDepth, 3)));
+  const seabed::SeabedSurface& bed = m.seabedSurface();
+  if (bed.isFlat()) {
+    f.write(fmt::format("\"depth\":{},", fixed(env.waterDepth, 3)));
+  } else {
+    // A seabed that is not flat: its heights on a square grid about the lines (41 x 41 points, twice their
+    // extent), which the viewer interpolates bilinearly under its seabed plane.
+    const model::State start = m.initialState();
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Vec3& p : start.position) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+    }
+    if (start.position.empty()) lo = hi = Vec3::Zero();
+    const double half = std::max({hi.x() - lo.x(), hi.y() - lo.y(), 50.0});
+    const double cx = 0.5 * (lo.x() + hi.x()), cy = 0.5 * (lo.y() + hi.y());
+    constexpr int kSamples = 41;
+    std::vector<double> heights;
+    double deepest = 0.0;
+    for (int j = 0; j < kSamples; ++j)
+      for (int i = 0; i < kSamples; ++i) {
+        const double h = bed.height(cx - half + 2.0 * half * i / (kSamples - 1),
+                                    cy - half + 2.0 * half * j / (kSamples - 1));
+        heights.push_back(h);
+        deepest = std::max(deepest, -h);
+      }
+    f.write(fmt::format("\"depth\":{},", fixed(deepest, 3)));
+    f.write(fmt::format("\"seabed\":{{\"x0\":{},\"y0\":{},\"step\":{},\"n\":{},\"describe\":{},\"z\":{}}},",
+                        fixed(cx - half, 3), fixed(cy - half, 3), fixed(2.0 * half / (kSamples - 1), 6),
+                        kSamples, quote(bed.describe()),
+                        array(heights.size(), [&](std::size_t k) { return fixed(heights[k], 3); })));
+  }
   // Lines: names, arc lengths, contact diameters, sections.
   f.write("\"lines\":" +
           array(m.lines().size(),

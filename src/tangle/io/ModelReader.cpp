@@ -481,9 +481,76 @@ class NameRegistry {
 
 void readTitle(const Value& v, ModelSpec& spec) { spec.title = v.text("a title (text)"); }
 
-void readSeabed(const Value& v, seabed::SeabedSpec& bed) {
-  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity", "shear_stiffness",
-                  "friction_model"});
+/// The seabed's shape: `slope` with `upslope_azimuth`, or `bathymetry` (a grid {x, y, depth}, or {file} in
+/// MoorDyn's SeafloorFile format); null for a flat seabed.
+std::shared_ptr<const seabed::SeabedSurface> readSeabedShape(const Map& m, double waterDepth) {
+  const std::optional<Value> slope = m.find("slope");
+  const std::optional<Value> azimuth = m.find("upslope_azimuth");
+  const std::optional<Value> bathymetry = m.find("bathymetry");
+  if (slope && bathymetry) bathymetry->fail("give either slope (a plane) or bathymetry (a grid), not both");
+  if (azimuth && !slope) azimuth->fail("upslope_azimuth applies to a sloping seabed: add slope (degrees)");
+  if (slope) {
+    const double angle = slope->number(closed(0.0, 60.0).withHint("degrees, from 0 (flat) to 60"));
+    if (angle == 0.0) return nullptr;
+    if (!azimuth)
+      slope->fail(
+          "a sloping seabed needs upslope_azimuth: the direction in which it rises [deg], "
+          "anticlockwise from +x");
+    return std::make_shared<const seabed::SeabedSurface>(
+        seabed::SeabedSurface::plane(waterDepth, degToRad(angle), degToRad(azimuth->number(anyNumber()))));
+  }
+  if (!bathymetry) return nullptr;
+  const Map b(*bathymetry, {"x", "y", "depth", "file"});
+  if (const std::optional<Value> file = b.find("file")) {
+    for (const char* key : {"x", "y", "depth"})
+      if (const std::optional<Value> other = b.find(key))
+        other->fail("give either a file or the grid {x, y, depth}, not both");
+    namespace fs = std::filesystem;
+    fs::path path(file->text("a file name (MoorDyn's SeafloorFile format), relative to the model file"));
+    if (path.is_relative()) path = fs::path(bathymetry->source()).parent_path() / path;
+    try {
+      return std::make_shared<const seabed::SeabedSurface>(seabed::readSeafloorFile(path.string()));
+    } catch (const InputError& e) {
+      file->fail(fmt::format("cannot read the bathymetry: {}", e.what()));
+    }
+  }
+  auto ticks = [&](const char* key) {
+    const Value t = b.get(key, "a list of increasing coordinates [m]");
+    if (!t.isSequence() || t.node().size() == 0) t.expected("a non-empty list of increasing coordinates [m]");
+    const std::vector<double> out = t.numbers(t.node().size(), "[m]");
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      if (std::abs(out[i]) > kMaxCoordinate)
+        t.fail(fmt::format("item {} is {}; expected coordinates within +-{} m", i, numberText(out[i]),
+                           numberText(kMaxCoordinate)));
+      if (i > 0 && !(out[i] > out[i - 1]))
+        t.fail(fmt::format("the coordinates must increase: item {} ({}) follows {}", i, numberText(out[i]),
+                           numberText(out[i - 1])));
+    }
+    return out;
+  };
+  std::vector<double> x = ticks("x"), y = ticks("y");
+  const Value depth = b.get("depth", "a list of rows, one per y, each with one depth [m] per x");
+  if (!depth.isSequence() || depth.node().size() != y.size())
+    depth.expected(fmt::format("a list of {} rows (one per y), each with {} depths [m] (one per x)", y.size(),
+                               x.size()));
+  std::vector<double> height;
+  for (const Value& row : depth.items(1)) {
+    const std::vector<double> values = row.numbers(x.size(), "(one depth [m] per x)");
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (!(values[i] > 0.0 && values[i] <= kMaxWaterDepth))
+        row.fail(fmt::format("item {} is {}; expected a depth > 0 and <= {} m (the seabed below still water)",
+                             i, numberText(values[i]), numberText(kMaxWaterDepth)));
+      height.push_back(-values[i]);
+    }
+  }
+  return std::make_shared<const seabed::SeabedSurface>(
+      seabed::SeabedSurface::grid(std::move(x), std::move(y), std::move(height)));
+}
+
+void readSeabed(const Value& v, model::EnvironmentSpec& env) {
+  const Map m(v, {"normal_stiffness", "damping", "friction_coefficient", "friction_velocity",
+                  "shear_stiffness", "friction_model", "slope", "upslope_azimuth", "bathymetry"});
+  seabed::SeabedSpec& bed = env.seabed;
   const seabed::SeabedSpec d;
   bed.normalStiffness = m.number("normal_stiffness", d.normalStiffness, positiveUpTo(1.0e12));
   bed.damping = m.number("damping", d.damping, nonNegativeUpTo(1.0e12));
@@ -492,6 +559,17 @@ void readSeabed(const Value& v, seabed::SeabedSpec& bed) {
   bed.shearStiffness = m.number("shear_stiffness", bed.normalStiffness, positiveUpTo(1.0e12));
   if (const std::optional<Value> model = m.find("friction_model"))
     bed.elasticFriction = model->choice<bool>({{"elastic", true}, {"viscous", false}});
+  env.seabedSurface = readSeabedShape(m, env.waterDepth);
+}
+
+/// z of the seabed under (x, y) [m].
+double seabedHeight(const model::EnvironmentSpec& env, double x, double y) {
+  return env.seabedSurface ? env.seabedSurface->height(x, y) : -env.waterDepth;
+}
+
+/// How the seabed's height is given, for messages.
+std::string seabedLevelText(const model::EnvironmentSpec& env) {
+  return env.seabedSurface ? std::string("the seabed's height there") : std::string("-water_depth");
 }
 
 /// A list of levels {z, speed, azimuth}, or one map {speed, azimuth} for a uniform current (stored as a
@@ -581,7 +659,7 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
   env.waterDepth = m.number("water_depth", positiveUpTo(kMaxWaterDepth).withHint("seabed at z = -water_depth"));
   env.waterDensity = m.number("water_density", d.waterDensity, closed(500.0, 2000.0));
   env.gravity = m.number("gravity", d.gravity, closed(1.0, 30.0));
-  if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env.seabed);
+  if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env);
   if (const std::optional<Value> current = m.find("current")) env.current = readCurrent(*current);
   if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves, env.waterDepth);
   if (const std::optional<Value> wind = m.find("wind")) {
@@ -748,21 +826,28 @@ model::EndSpec readEnd(const Value& v, const ModelSpec& spec) {
     // The end in global axes at t = 0 (vessel axes rotated by the heading about z keep z): below the
     // seabed it would pull the line into the ground.
     const double z = found->position.z() + end.position.z();
-    if (z < -env.waterDepth - kSeabedTolerance)
-      position.fail(fmt::format("the end is below the seabed: vessel '{}' at z = {} m plus the offset z = {} m "
-                                "gives z = {} m, the seabed is at z = {} m (-water_depth)",
-                                end.vessel, numberText(found->position.z()), numberText(end.position.z()),
-                                numberText(z), numberText(-env.waterDepth)));
+    const double heading = found->heading;
+    const double x =
+        found->position.x() + std::cos(heading) * end.position.x() - std::sin(heading) * end.position.y();
+    const double y =
+        found->position.y() + std::sin(heading) * end.position.x() + std::cos(heading) * end.position.y();
+    const double bottom = seabedHeight(env, x, y);
+    if (z < bottom - kSeabedTolerance)
+      position.fail(
+          fmt::format("the end is below the seabed: vessel '{}' at z = {} m plus the offset z = {} m "
+                      "gives z = {} m, the seabed is at z = {} m ({})",
+                      end.vessel, numberText(found->position.z()), numberText(end.position.z()),
+                      numberText(z), numberText(bottom), seabedLevelText(env)));
   } else {
     if (const std::optional<Value> vessel = m.find("vessel"))
       vessel->fail(
           fmt::format("'vessel' applies only to ends of type vessel; this end is of type {}", typeName));
-    const double seabedZ = -env.waterDepth;
+    const double seabedZ = seabedHeight(env, end.position.x(), end.position.y());
     if (end.position.z() < seabedZ - kSeabedTolerance)
-      position.fail(
-          fmt::format("the end is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth); "
-                      "expected z >= {}",
-                      numberText(end.position.z()), numberText(seabedZ), numberText(seabedZ)));
+      position.fail(fmt::format(
+          "the end is below the seabed: z = {} m, the seabed is at z = {} m ({}); "
+          "expected z >= {}",
+          numberText(end.position.z()), numberText(seabedZ), seabedLevelText(env), numberText(seabedZ)));
     // An anchor sits on the seabed or in the water, never above the surface.
     if (end.kind == EndKind::Anchored && end.position.z() > 0.0)
       position.fail(fmt::format("an anchored end is above the water surface: z = {} m; anchors are at "
@@ -882,7 +967,8 @@ std::vector<model::AttachmentSpec> readAttachment(const Value& v, double lineLen
 
 /// `lines[].start_shape`: intermediate points [x, y, z], or maps {position, arc_length} (all with an arc
 /// length or none), from end A to end B.
-std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength, double waterDepth) {
+std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength,
+                                              const model::EnvironmentSpec& env) {
   std::vector<model::StartPoint> points;
   int withArc = 0;
   for (const Value& item : v.items(1)) {
@@ -902,9 +988,10 @@ std::vector<model::StartPoint> readStartShape(const Value& v, double lineLength,
         ++withArc;
       }
     }
-    if (p.position.z() < -waterDepth - kSeabedTolerance)
-      item.fail(fmt::format("the point is below the seabed: z = {} m, the seabed is at z = {} m (-water_depth)",
-                            numberText(p.position.z()), numberText(-waterDepth)));
+    const double bottom = seabedHeight(env, p.position.x(), p.position.y());
+    if (p.position.z() < bottom - kSeabedTolerance)
+      item.fail(fmt::format("the point is below the seabed: z = {} m, the seabed is at z = {} m ({})",
+                            numberText(p.position.z()), numberText(bottom), seabedLevelText(env)));
     points.push_back(p);
   }
   if (withArc != 0 && withArc != static_cast<int>(points.size()))
@@ -994,7 +1081,7 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
     for (const Value& item : attachments->items(0))
       for (const model::AttachmentSpec& a : readAttachment(item, length)) line.attachments.push_back(a);
   if (const std::optional<Value> shape = m.find("start_shape"))
-    line.startShape = readStartShape(*shape, length, spec.environment.waterDepth);
+    line.startShape = readStartShape(*shape, length, spec.environment);
   if (const std::optional<Value> failure = m.find("failure"))
     line.failure = readFailure(*failure, line, spec, length);
 

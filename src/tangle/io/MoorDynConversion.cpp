@@ -57,6 +57,7 @@ struct Options {
   double frictionDamping = 200.0;     ///< FricDamp [N s/m]
   double staticDynamicScale = 1.0;    ///< StatDynFricScale [-]
   int currentMode = 0;                ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt
+  std::string seafloorFile;           ///< SeafloorFile, resolved to a readable path; empty: flat
   std::map<std::string, int> lineOf;  ///< option (lower case) -> deck line, for comments
 };
 
@@ -121,8 +122,28 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
                         "(set 0 and give waves and current in the converted model's `environment`)",
                         o.name, o.value));
     } else if (name == "seafloorfile") {
-      throw InputError(deck.file, o.sourceLine, o.name,
-                       "a 3D seafloor from a file is not supported (tangle's seabed is flat)");
+      // MoorDyn opens the path as given (relative to the working directory: its tests run from tests/ with
+      // "Mooring/3D_seafloor/..."); tangle tries that, then the deck's folder and the folders above it.
+      namespace fs = std::filesystem;
+      const fs::path given(o.value);
+      std::vector<fs::path> tried{given};
+      if (given.is_relative())
+        for (fs::path dir = fs::path(deck.file).parent_path(); tried.size() < 5; dir = dir.parent_path()) {
+          tried.push_back(dir / given);
+          if (dir.empty() || dir == dir.parent_path()) break;
+        }
+      std::error_code ec;
+      for (const fs::path& p : tried)
+        if (fs::is_regular_file(p, ec)) {
+          opt.seafloorFile = fs::absolute(p, ec).lexically_normal().string();
+          break;
+        }
+      if (opt.seafloorFile.empty()) {
+        std::string where;
+        for (const fs::path& p : tried) where += (where.empty() ? "" : ", ") + p.string();
+        throw InputError(deck.file, o.sourceLine, o.name,
+                         fmt::format("the seafloor file '{}' was not found (looked for {})", o.value, where));
+      }
     } else if (name == "tscheme" || name == "cfl") {
       noted(
           "MoorDyn's explicit scheme and its step; tangle integrates with implicit generalized-alpha at "
@@ -463,6 +484,9 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
                    optionComment("cbot", "3e5")));
   line(fmt::format("    friction_coefficient: {}  # FrictionCoefficient ({})", num(opt.friction),
                    optionComment("frictioncoefficient", "0")));
+  if (!opt.seafloorFile.empty())
+    line(fmt::format("    bathymetry: {{file: {}}}  # SeafloorFile ({})", yamlQuoted(opt.seafloorFile),
+                     optionComment("seafloorfile", "")));
   if (opt.friction > 0.0) {
     // MoorDyn (Line.cpp): friction = min(mu FricDamp |v|, mu N) with N the node's seabed force: a viscous
     // law saturating at |v| = N / FricDamp. tangle's viscous law mu N v / max(|v|, v_f) has the same slope

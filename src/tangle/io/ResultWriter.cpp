@@ -103,6 +103,7 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
   j.field("model", model.spec().sourceFile);
   j.field("title", model.spec().title);
   j.field("water_depth_m", model.environment().waterDepth);
+  j.field("seabed", model.seabedSurface().describe());
   j.field("units", "SI: N, m, kg, s; angles in degrees");
   j.field("end_tension_definition",
           "effective tension at the end point: element force vectors extrapolated linearly in arc length to "

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tangle/catenary/ElasticCatenary.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
-#include "tangle/seabed/FlatSeabed.hpp"
-#include "tangle/catenary/ElasticCatenary.hpp"
+#include "tangle/seabed/Seabed.hpp"
 
 namespace tangle::model {
 
@@ -22,6 +22,10 @@ double torsionalStiffnessOf(const section::LineType& t) {
 }  // namespace
 
 Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec))) {
+  m_seabedSurface = m_spec->environment.seabedSurface
+                        ? m_spec->environment.seabedSurface
+                        : std::make_shared<const seabed::SeabedSurface>(
+                              seabed::SeabedSurface::flat(m_spec->environment.waterDepth));
   resolveSectionTypes();
   seatAnchorsOnSeabed();
   for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
@@ -32,11 +36,12 @@ Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec
 
 void Model::seatAnchorsOnSeabed() {
   // The seabed supports a line on its contact surface: a laid node's centreline rests one contact radius
-  // above z = -depth (FlatSeabed). An anchor given on the seabed (within that radius of it) is placed on the
-  // same surface, so the line leaves it level: with the anchor at -depth the first element would climb one
-  // radius to the laid nodes, an uplift and a bending peak that are artefacts of the geometry (issue 30).
-  // It sits at the laid line's resting penetration, level with the laid nodes next to it.
-  const double seabedZ = -m_spec->environment.waterDepth;
+  // above the seabed along its normal (Seabed). An anchor given on the seabed (within that radius of it) is
+  // placed on the same surface, so the line leaves it level: with the anchor on the seabed itself the first
+  // element would climb one radius to the laid nodes, an uplift and a bending peak that are artefacts of the
+  // geometry (issue 30). It sits at the laid line's resting penetration, level with the laid nodes next to
+  // it.
+  const seabed::SeabedSurface& bed = *m_seabedSurface;
   for (std::size_t l = 0; l < m_spec->lines.size(); ++l) {
     LineSpec& line = m_spec->lines[l];
     if (line.sections.empty()) continue;
@@ -47,9 +52,10 @@ void Model::seatAnchorsOnSeabed() {
           sectionType(static_cast<int>(l), end == 0 ? 0 : static_cast<int>(line.sections.size()) - 1);
       const double radius = 0.5 * type.contactDiameter;
       const double weight = type.submergedWeight(m_spec->environment.waterDensity, m_spec->environment.gravity);
-      if (e.position.z() < seabedZ + radius)
-        e.position.z() = seabedZ + radius -
-                         seabed::FlatSeabed::restingPenetration(weight, m_spec->environment.seabed.normalStiffness);
+      if (bed.gap(e.position, radius) < 0.0)
+        e.position.z() = bed.restingZ(
+            e.position.x(), e.position.y(), radius,
+            seabed::Seabed::restingPenetration(weight, m_spec->environment.seabed.normalStiffness));
     }
   }
 }
@@ -367,11 +373,19 @@ State Model::initialState() const {
     double radius = 0.0;
     for (const SectionSpec& sec : line.spec->sections)
       radius = std::max(radius, 0.5 * m_spec->lineTypes.at(sec.lineType).contactDiameter);
-    double shapeDepth = env.waterDepth;
+    // On a seabed that is not flat the analytic shape's flat seabed is at the deeper of the seabed under the
+    // two ends (or the level of an end resting on it), never above an end; the nodes it lays are then placed
+    // on the seabed's own surface below.
+    const seabed::SeabedSurface& bed = *m_seabedSurface;
+    const bool flat = bed.isFlat();
     const Vec3 endA = endPosition(line.spec->endA);
     const Vec3 endB = endPosition(line.spec->endB);
+    double shapeDepth =
+        flat ? env.waterDepth : std::max(-bed.height(endA.x(), endA.y()), -bed.height(endB.x(), endB.y()));
     for (const Vec3& end : {endA, endB})
-      if (end.z() <= -env.waterDepth + radius + 1e-6) shapeDepth = std::min(shapeDepth, -end.z());
+      if (flat ? end.z() <= -env.waterDepth + radius + 1e-6 : bed.gap(end, radius) <= 1e-6)
+        shapeDepth = std::min(shapeDepth, -end.z());
+    if (!flat) shapeDepth = std::max({shapeDepth, -endA.z(), -endB.z()});
     double totalWeight = 0.0;
     for (const auto& sec : sections) totalWeight += sec.weight * sec.length;
     std::vector<Vec3> pts;
@@ -397,19 +411,30 @@ State Model::initialState() const {
     // is lifted there.
     if (!line.spec->startShape.empty()) {
       shapeDepth = env.waterDepth - radius;
-      for (int i = 1; i + 1 < line.nodeCount; ++i)
-        s.position[line.firstNode + i].z() = std::max(s.position[line.firstNode + i].z(), -shapeDepth);
+      for (int i = 1; i + 1 < line.nodeCount; ++i) {
+        Vec3& x = s.position[line.firstNode + i];
+        if (flat)
+          x.z() = std::max(x.z(), -shapeDepth);
+        else if (bed.gap(x, radius) < 0.0)
+          x.z() = bed.restingZ(x.x(), x.y(), radius, 0.0);
+      }
     }
     // Grounded nodes start on the seabed's contact surface at their static penetration into it, where they
     // rest (and where a seated anchor is), so the seabed springs are active in the first Newton tangent
     // (otherwise a grounded stretch has no vertical stiffness).
     for (int i = 1; i + 1 < line.nodeCount; ++i) {
       Vec3& x = s.position[line.firstNode + i];
-      if (x.z() > -shapeDepth + 1e-6) continue;
+      const double nodeRadius = 0.5 * m_nodeContactDiameter[line.firstNode + i];
+      // Flat: the nodes the analytic shape laid at its seabed. Otherwise also any node below the seabed's
+      // contact surface (a shape laid flat where the seabed rises, a start shape through it).
+      const bool laid = flat ? x.z() <= -shapeDepth + 1e-6
+                             : (line.spec->startShape.empty() && x.z() <= -shapeDepth + 1e-6) ||
+                                   bed.gap(x, nodeRadius) <= 1e-6;
+      if (!laid) continue;
       const model::LineElement& el = m_elements[line.firstElement + i];
       const double w = el.type->submergedWeight(env.waterDensity, env.gravity);
-      x.z() = -env.waterDepth + 0.5 * m_nodeContactDiameter[line.firstNode + i] -
-              seabed::FlatSeabed::restingPenetration(w, env.seabed.normalStiffness);
+      x.z() = bed.restingZ(x.x(), x.y(), nodeRadius,
+                           seabed::Seabed::restingPenetration(w, env.seabed.normalStiffness));
     }
 
     // Triads: first one from the initial tangent, then parallel transport along the line so that

@@ -68,6 +68,9 @@ class Model {
 
   const ModelSpec& spec() const { return *m_spec; }  ///< the input
   const EnvironmentSpec& environment() const { return m_spec->environment; }
+  /// The seabed's shape (environment.seabedSurface, or flat at -waterDepth).
+  const seabed::SeabedSurface& seabedSurface() const { return *m_seabedSurface; }
+  const std::shared_ptr<const seabed::SeabedSurface>& sharedSeabedSurface() const { return m_seabedSurface; }
   const std::vector<Line>& lines() const { return m_lines; }  ///< lines in input order
   const std::vector<LineElement>& elements() const { return m_elements; }
   /// The elements parted so far (lines[].failure): the run's state of the mesh, not its input, held here so
@@ -141,6 +144,7 @@ class Model {
   std::map<std::string, int> m_lineIndex;  // line name -> index (lineIndex)
   std::vector<LineElement> m_elements;
   std::unique_ptr<PartedElements> m_parted;
+  std::shared_ptr<const seabed::SeabedSurface> m_seabedSurface;
   std::vector<NodeAttachment> m_attachments;
   std::vector<std::unique_ptr<section::LineType>> m_contentTypes;  // line types with contents (per section)
   std::vector<std::vector<const section::LineType*>> m_sectionTypes;  // per line, per section

@@ -5,8 +5,9 @@
 /// Every field carries its unit; angles are stored in radians (input files give degrees).
 
 #include <array>
-#include <map>
 #include <limits>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -14,6 +15,7 @@
 
 #include "tangle/core/Types.hpp"
 #include "tangle/seabed/SeabedSpec.hpp"
+#include "tangle/seabed/SeabedSurface.hpp"
 #include "tangle/section/LineType.hpp"
 
 namespace tangle::model {
@@ -53,10 +55,14 @@ struct WaveSpec {
 
 /// Environment: water, gravity, seabed, current and waves.
 struct EnvironmentSpec {
-  double waterDepth = 100.0;      ///< depth of the flat seabed below still water level [m]
+  /// Depth of the seabed below still water level [m]: everywhere for a flat seabed, under the origin for a
+  /// plane; the waves' depth (dispersion, attenuation) in every case.
+  double waterDepth = 100.0;
   double waterDensity = 1025.0;   ///< sea water density [kg/m^3]
   double gravity = 9.80665;       ///< gravitational acceleration [m/s^2]
   ::tangle::seabed::SeabedSpec seabed;  // (qualified: the member shares the namespace's name)
+  /// The seabed's shape (a slope, a bathymetry grid); null: flat at z = -waterDepth.
+  std::shared_ptr<const ::tangle::seabed::SeabedSurface> seabedSurface;
   std::vector<CurrentLevel> current;  ///< empty: no current
   WaveSpec waves;
   double windSpeed = 0.0;         ///< wind speed at 10 m [m/s]

@@ -190,7 +190,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   std::vector<LineHistory> hist(lineCount);
   // Range graphs over every accepted step: the run's own accumulator (analysis::RangeGraphs), as the files.
   analysis::RangeGraphs ranges(m_sim->snapshot());
-  ranges.setSeabedLevels(analysis::RangeGraphs::seabedLevels(m));
+  ranges.setSeabed(analysis::RangeGraphs::seabedNodes(m));
   std::vector<double> times, vesselMotion;
   std::unique_ptr<contact::ClearanceEnvelope> envelope = std::make_unique<contact::ClearanceEnvelope>(
       m, m_sim->contact() ? m_sim->contact()->assessedPairs(m_sim->state()) : std::vector<std::array<int, 2>>{});

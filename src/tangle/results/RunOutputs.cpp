@@ -398,7 +398,7 @@ bool RunOutputs::runDynamics() {
                                m_csv ? m.spec().output.timeHistories
                                      : model::TimeHistorySelection{false, false, false, false, false, false, false});
   if (h5) h5->beginDynamics(lines);
-  recorder.setSeabedLevels(analysis::RangeGraphs::seabedLevels(m));
+  recorder.setSeabed(analysis::RangeGraphs::seabedNodes(m));
   std::vector<double> vesselMotion(6 * m.vessels().size());
   // Largest horizontal offset of each vessel over every step, from the static position on [m].
   std::vector<double> maxOffset(m.vessels().size(), 0.0);

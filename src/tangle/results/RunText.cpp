@@ -49,6 +49,7 @@ std::string modelSummary(const model::Model& m) {
   if (!spec.title.empty()) out += fmt::format("title: {}\n", spec.title);
   out += fmt::format("environment: water depth {:.1f} m, water density {:.1f} kg/m3, gravity {:.5f} m/s2\n",
                      env.waterDepth, env.waterDensity, env.gravity);
+  if (!m.seabedSurface().isFlat()) out += fmt::format("seabed: {}\n", m.seabedSurface().describe());
   const model::WaveSpec& w = env.waves;
   switch (w.kind) {
     case model::WaveKind::None:

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "tangle/core/ForEachIndex.hpp"
-#include "tangle/seabed/FlatSeabed.hpp"
+#include "tangle/seabed/Seabed.hpp"
 
 namespace tangle::solver {
 
@@ -79,7 +79,9 @@ Assembler::Assembler(const model::Model& model) : m_model(&model) {
   }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
   m_trialAnchor = m_anchor;
-  m_committedXY.assign(n, Vec2::Zero());
+  // Unknown until the statics begin or a step is committed (NaN: a node touching down before either, as in a
+  // dynamics started from the initial shape, anchors where it is).
+  m_committedXY.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
 }
 
 const element::CorotationalBeam& Assembler::beamOf(std::size_t e, std::optional<element::CorotationalBeam>& copy) const {
@@ -127,12 +129,12 @@ void Assembler::nodeRoundoffFloor(const model::State& state, std::vector<double>
 }
 
 void Assembler::beginStatics(const model::State& state) {
-  const auto& env = m_model->environment();
+  const seabed::SeabedSurface& bed = m_model->seabedSurface();
   const auto& diameter = m_model->nodeContactDiameter();
   for (int n = 0; n < m_model->nodeCount(); ++n) {
     const Vec3& x = state.position[n];
-    m_committedXY[n] = Vec2(x.x(), x.y());
-    const bool touching = x.z() - 0.5 * diameter[n] < -env.waterDepth;
+    m_committedXY[n] = bed.footprint(x);
+    const bool touching = bed.gap(x, 0.5 * diameter[n]) < 0.0;
     m_anchor[n] = touching ? m_committedXY[n] : Vec2::Constant(std::numeric_limits<double>::quiet_NaN());
   }
   m_trialAnchor = m_anchor;
@@ -192,8 +194,8 @@ void Assembler::finish(double time) {
 }
 
 void Assembler::commitAnchors(const model::State& state) {
-  for (int n = 0; n < m_model->nodeCount(); ++n)
-    m_committedXY[n] = Vec2(state.position[n].x(), state.position[n].y());
+  const seabed::SeabedSurface& bed = m_model->seabedSurface();
+  for (int n = 0; n < m_model->nodeCount(); ++n) m_committedXY[n] = bed.footprint(state.position[n]);
   m_anchor = m_trialAnchor;
 }
 
@@ -349,11 +351,11 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
   const auto& env = m_model->environment();
   seabed::SeabedSpec seabedSpec = env.seabed;
   if (request.dynamic && request.relaxation) seabedSpec.elasticFriction = false;
-  const seabed::FlatSeabed bed(seabedSpec, env.waterDepth);
+  const seabed::Seabed bed(seabedSpec, m_model->sharedSeabedSurface());
   const auto& trib = m_model->tributaryLength();
   const auto& diameter = m_model->nodeContactDiameter();
   // The elastic friction (a spring to the node's anchor capped at mu N) in statics, and in dynamics too
-  // unless the seabed's friction is viscous (FlatSeabed).
+  // unless the seabed's friction is viscous (Seabed).
   const bool staticFriction =
       seabedSpec.frictionCoefficient > 0.0 && (!request.dynamic || seabedSpec.elasticFriction);
   forEachIndex(nodes, static_cast<std::size_t>(m_model->nodeCount()), [&](std::size_t node) {
@@ -389,14 +391,17 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
     if (staticFriction) {
       // The as-laid anchor, or for a node that touched down since the last commit its position then.
-      const Vec2 anchor = std::isnan(m_anchor[n].x()) ? m_committedXY[n] : m_anchor[n];
+      const Vec2 anchor = !std::isnan(m_anchor[n].x()) ? m_anchor[n]
+                          : !std::isnan(m_committedXY[n].x())
+                              ? m_committedXY[n]
+                              : m_model->seabedSurface().footprint(state.position[n]);
       // Dynamics: a dashpot beside the stick spring, critical for the node's own mass on it (theory 7.5):
       // undamped, the held laid chain rang on its stick springs (0.26 s period for a chain) and every
       // stick-slip switch fed it.
       const double dashpot =
           request.dynamic ? 2.0 * std::sqrt(bed.shearStiffness() * trib[n] * m_model->nodeMass()[n]) : 0.0;
-      const seabed::StaticFrictionResult f =
-          bed.staticFriction(state.position[n], anchor, r.force.z(), r.stiffness(2, 2), trib[n], v, dashpot);
+      const seabed::StaticFrictionResult f = bed.staticFriction(
+          state.position[n], anchor, r.normalForce, r.normalStiffness, trib[n], v, dashpot, r.normal);
       m_trialAnchor[n] = f.anchor;
       r.force += f.force;
       r.stiffness += f.stiffness;

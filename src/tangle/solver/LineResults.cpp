@@ -94,7 +94,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
   thread_local std::vector<double> tension;
   assembler.elementTension(state, tension, &beamForces);
   const model::DofMap& dofs = model.dofs();
-  const double depth = model.environment().waterDepth;
+  const seabed::SeabedSurface& bed = model.seabedSurface();
   out.resize(model.lines().size());
   thread_local std::vector<int> count;
   thread_local std::vector<double> ei, segmentLength;
@@ -261,7 +261,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
     grounded.assign(n, 0);
     for (int i = 0; i < n; ++i) {
       const double r = 0.5 * model.nodeContactDiameter()[line.firstNode + i];
-      grounded[i] = s.position[i].z() - r <= -depth + 1e-6;
+      grounded[i] = bed.gap(s.position[i], r) <= 1e-6;
       if (grounded[i]) ++s.seabedNodes;
     }
     // A held end on the seabed (an anchor) is not a grounded stretch by itself.
@@ -269,8 +269,9 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       grounded[0] = grounded[0] && grounded[1];
       grounded[n - 1] = grounded[n - 1] && grounded[n - 2];
     }
+    // Height of the contact surface above the seabed, along its normal.
     auto height = [&](int i) {
-      return std::max(0.0, s.position[i].z() - 0.5 * model.nodeContactDiameter()[line.firstNode + i] + depth);
+      return std::max(0.0, bed.gap(s.position[i], 0.5 * model.nodeContactDiameter()[line.firstNode + i]));
     };
     for (int i = 0; i + 1 < n; ++i) {
       if (grounded[i] == grounded[i + 1]) continue;

@@ -5,11 +5,11 @@
 #include <numbers>
 
 #include "tangle/geometry/Rotation.hpp"
+#include "tangle/seabed/SeabedSurface.hpp"
 
 namespace tangle::solver {
 
 std::vector<int> slackSuspendedBars(const model::Model& model, const model::State& state) {
-  const auto& env = model.environment();
   // Cable elements carry no compression (Assembler: a slack bar keeps 1e-6 EA), so a suspended bar that
   // is shorter than its unstretched length by more than 1e-4 is slack: its line is not held in tension
   // there (an unstable or indifferent branch). Laid elements may be slack: the seabed holds them.
@@ -20,10 +20,10 @@ std::vector<int> slackSuspendedBars(const model::Model& model, const model::Stat
     const double strain = (state.position[el.node2] - state.position[el.node1]).norm() / el.restLength - 1.0;
     if (strain >= -1e-4) continue;
     // Suspended: neither node on the seabed (a touchdown element may be slack, its chord cuts the corner).
+    const seabed::SeabedSurface& bed = model.seabedSurface();
     const bool touches =
-        state.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1] <=
-            -env.waterDepth + 1e-3 ||
-        state.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2] <= -env.waterDepth + 1e-3;
+        bed.gap(state.position[el.node1], 0.5 * model.nodeContactDiameter()[el.node1]) <= 1e-3 ||
+        bed.gap(state.position[el.node2], 0.5 * model.nodeContactDiameter()[el.node2]) <= 1e-3;
     if (!touches) out.push_back(static_cast<int>(e));
   }
   return out;
@@ -114,7 +114,8 @@ bool hangFreeLines(const model::Model& model, model::State& state) {
     axis.normalize();
     Vec3 horizontal(d0.x(), d0.y(), 0.0);
     horizontal = horizontal.norm() > 1e-9 ? Vec3(horizontal.normalized()) : Vec3(Vec3::UnitX());
-    const double bottom = -env.waterDepth + 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(held)];
+    const seabed::SeabedSurface& bed = model.seabedSurface();
+    const double heldRadius = 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(held)];
     double s = 0.0;
     Vec3 x = state.position[order[0]];
     std::vector<Vec3> tangent(order.size(), g);
@@ -123,9 +124,22 @@ bool hangFreeLines(const model::Model& model, model::State& state) {
                                      line.arcLength[static_cast<std::size_t>(order[k] - line.firstNode)]);
       const double mid = std::min(1.0, (s + 0.5 * length) / bendLength);
       Vec3 t = Eigen::AngleAxisd(mid * angle, axis) * d0;
-      if (x.z() <= bottom + 1e-9 && t.z() < 0.0) t = horizontal;  // laid along the seabed
-      x += length * t;
-      if (x.z() < bottom) x.z() = bottom;
+      if (bed.isFlat()) {
+        const double bottom = -env.waterDepth + heldRadius;
+        if (x.z() <= bottom + 1e-9 && t.z() < 0.0) t = horizontal;  // laid along the seabed
+        x += length * t;
+        if (x.z() < bottom) x.z() = bottom;
+      } else {
+        // Laid along the seabed's tangent plane, in the vertical plane of the line's first chord.
+        if (bed.gap(x, heldRadius) <= 1e-9 && t.z() < 0.0) {
+          const Vec3 n = bed.at(x.x(), x.y()).normal;
+          const Vec3 along =
+              horizontal - horizontal.dot(n) / n.z() * Vec3::UnitZ();  // on the plane, above it
+          t = along.normalized();
+        }
+        x += length * t;
+        if (bed.gap(x, heldRadius) < 0.0) x.z() = bed.restingZ(x.x(), x.y(), heldRadius, 0.0);
+      }
       s += length;
       state.position[order[k + 1]] = x;
       tangent[k] = t;

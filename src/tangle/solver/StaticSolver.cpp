@@ -264,7 +264,6 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   std::vector<double> startLength(elementCount, std::numeric_limits<double>::quiet_NaN());
   {
     const std::vector<double> tension = m_assembler->elementTension(start);
-    const auto& env = model.environment();
     for (std::size_t e = 0; e < elementCount; ++e) {
       const model::LineElement& el = model.elements()[e];
       const double chord = (start.position[el.node2] - start.position[el.node1]).norm();
@@ -275,10 +274,11 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
         // equivalent section, so some sections come out slightly short) has no stiffness across itself;
         // a current across the line then meets a singular tangent. In this second attempt it starts at a
         // strain of 1e-4, taut, and the length continuation takes that away again.
+        const seabed::SeabedSurface& bed = model.seabedSurface();
         const double lowest =
-            std::min(start.position[el.node1].z() - 0.5 * model.nodeContactDiameter()[el.node1],
-                     start.position[el.node2].z() - 0.5 * model.nodeContactDiameter()[el.node2]);
-        if (lowest > -env.waterDepth + 1e-3) startLength[e] = chord / (1.0 + 1e-4);
+            std::min(bed.gap(start.position[el.node1], 0.5 * model.nodeContactDiameter()[el.node1]),
+                     bed.gap(start.position[el.node2], 0.5 * model.nodeContactDiameter()[el.node2]));
+        if (lowest > 1e-3) startLength[e] = chord / (1.0 + 1e-4);
       }
     }
   }
@@ -777,7 +777,7 @@ std::string StaticSolver::diagnose(const model::State& state, const StaticResult
   std::string hint;
   if (node >= 0 && model.lineOfNode(node) >= 0) {
     const bool onSeabed =
-        state.position[node].z() - 0.5 * model.nodeContactDiameter()[node] <= -env.waterDepth + 1e-3;
+        model.seabedSurface().gap(state.position[node], 0.5 * model.nodeContactDiameter()[node]) <= 1e-3;
     if (onSeabed && !env.current.empty())
       hint =
           env.seabed.frictionCoefficient <= 0.0

@@ -2,6 +2,7 @@
 /// Tests of io::ModelReader: a complete model read back field by field, defaults, and one test per
 /// kind of bad input checking the exception type, the file, the 1-based line and the key path.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -11,8 +12,8 @@
 #include <filesystem>
 #include <future>
 #include <memory>
-#include <thread>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -1474,6 +1475,69 @@ TEST(ModelReader, ReadsTheTimeHistorySelection) {
   EXPECT_EQ(none.output.timeHistories.valuesPerNode(), 0);
   const std::string bad = edited(kBaseModel, "  plots: false\n", "  plots: false\n  time_histories: [tension]\n");
   expectInputError(bad, "time_histories:", "output.time_histories[0]", "unknown quantity 'tension'; expected one of position");
+}
+
+}  // namespace
+}  // namespace tangle::io
+
+// ----------------------------------------------------------------------------------------------------
+// A seabed that is not flat (issue 46)
+
+namespace tangle::io {
+namespace {
+
+TEST(ModelReaderSeabed, ReadsASlopeAndChecksEndsAgainstTheLocalSeabed) {
+  // Rising 5 degrees towards +x from 100 m under the origin: at x = 400 the seabed is at z = -65.0.
+  const std::string sloped = edited(kBaseModel, "    friction_coefficient: 0.5",
+                                    "    friction_coefficient: 0.5\n    slope: 5\n    upslope_azimuth: 0");
+  const double seabedAt400 = -100.0 + 400.0 * std::tan(degToRad(5.0));
+  // The anchor at z = -100 is now below the seabed there.
+  expectInputError(sloped, "position: [400, 0, -100]", "lines[moor].end_a.position",
+                   "the end is below the seabed: z = -100 m, the seabed is at z = -65.0");
+  const ModelSpec spec = readModelString(
+      edited(sloped, "position: [400, 0, -100]", fmt::format("position: [400, 0, {}]", seabedAt400)),
+      kSource);
+  ASSERT_TRUE(spec.environment.seabedSurface);
+  EXPECT_EQ(spec.environment.seabedSurface->kind(), seabed::SeabedSurface::Kind::Plane);
+  EXPECT_NEAR(spec.environment.seabedSurface->height(400.0, 50.0), seabedAt400, 1e-9);
+  // Slope 0 is the flat seabed.
+  EXPECT_FALSE(readModelString(edited(kBaseModel, "    friction_coefficient: 0.5",
+                                      "    friction_coefficient: 0.5\n    slope: 0"),
+                               kSource)
+                   .environment.seabedSurface);
+}
+
+TEST(ModelReaderSeabed, ReadsABathymetryGrid) {
+  const ModelSpec spec = readModelString(
+      edited(kBaseModel, "    friction_coefficient: 0.5",
+             "    friction_coefficient: 0.5\n    bathymetry:\n      x: [0, 500]\n      y: [-100, 100]\n"
+             "      depth: [[100, 110], [100, 120]]"),
+      kSource);
+  ASSERT_TRUE(spec.environment.seabedSurface);
+  EXPECT_NEAR(spec.environment.seabedSurface->height(250.0, 0.0), -0.25 * (100 + 110 + 100 + 120), 1e-9);
+  EXPECT_NEAR(spec.environment.seabedSurface->height(500.0, 100.0), -120.0, 1e-12);
+}
+
+TEST(ModelReaderSeabed, BadSeabedShapesNameTheKey) {
+  const std::string base = "    friction_coefficient: 0.5";
+  expectEditError(base, base + "\n    slope: 5", "    slope: 5", "environment.seabed.slope",
+                  "a sloping seabed needs upslope_azimuth");
+  expectEditError(base, base + "\n    upslope_azimuth: 90", "upslope_azimuth: 90",
+                  "environment.seabed.upslope_azimuth", "add slope");
+  expectEditError(base, base + "\n    slope: 75\n    upslope_azimuth: 0", "slope: 75",
+                  "environment.seabed.slope", "from 0 (flat) to 60");
+  expectEditError(base, base + "\n    slope: 5\n    upslope_azimuth: 0\n    bathymetry: {file: a.txt}",
+                  "bathymetry: {file", "environment.seabed.bathymetry", "not both");
+  expectEditError(base, base + "\n    bathymetry: {x: [0, 10], y: [0], depth: [[100, 90, 80]]}",
+                  "bathymetry: {x", "environment.seabed.bathymetry.depth[0]", "a list of 2 numbers");
+  expectEditError(base, base + "\n    bathymetry: {x: [0, 10], y: [0, 5], depth: [[100, 90]]}",
+                  "bathymetry: {x", "environment.seabed.bathymetry.depth", "a list of 2 rows");
+  expectEditError(base, base + "\n    bathymetry: {x: [10, 0], y: [0], depth: [[100, 90]]}", "bathymetry: {x",
+                  "environment.seabed.bathymetry.x", "must increase");
+  expectEditError(base, base + "\n    bathymetry: {x: [0, 10], y: [0], depth: [[100, -5]]}", "bathymetry: {x",
+                  "environment.seabed.bathymetry.depth[0]", "expected a depth > 0");
+  expectEditError(base, base + "\n    bathymetry: {file: no-such-seafloor.txt}", "bathymetry: {file",
+                  "environment.seabed.bathymetry.file", "cannot read the bathymetry");
 }
 
 }  // namespace

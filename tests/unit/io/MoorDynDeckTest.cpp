@@ -203,6 +203,20 @@ TEST(MoorDynDeck, PublishedDecksConvertAndRead) {
   EXPECT_FALSE(isMoorDynDeck(std::string(test::kExamplesDir) + "/mooring-dynamics/model.yaml"));
 }
 
+TEST(MoorDynDeck, ASeafloorFileBecomesTheBathymetry) {
+  // MoorDyn v2.7.1 tests/Mooring/seafloor.txt (its pendulum test, tests/seafloor.cpp) names
+  // "Mooring/3D_seafloor/seafloor_profile_3d.txt" (relative to MoorDyn's tests folder, where its tests run):
+  // found here under the deck's folder. The file's seabed is z = -30 + 0.2 x; the deck's free point (a 10 kg
+  // mass at the end of a 32 m line from (0, -1, 0)) starts on it at (10, -1, -28).
+  const std::string path = std::string(test::kTestDataDir) + "/moordyn/seafloor.txt";
+  const model::ModelSpec spec = readModelFile(path);
+  ASSERT_TRUE(spec.environment.seabedSurface);
+  EXPECT_EQ(spec.environment.seabedSurface->kind(), seabed::SeabedSurface::Kind::Grid);
+  EXPECT_NEAR(spec.environment.seabedSurface->height(10.0, -1.0), -28.0, 1e-9);
+  EXPECT_NEAR(spec.environment.seabedSurface->height(-33.3, 0.4), -30.0 - 6.66, 1e-9);
+  EXPECT_DOUBLE_EQ(spec.environment.waterDepth, 500.0);  // WtrDpth: the waves' depth
+}
+
 TEST(MoorDynDeck, RefusesRods) {
   const std::string text = deck(kTwoPoints, "1 chain 1 2 320 40 -\n") +
                            "---------------------- RODS ----------------------\nID RodType Attachment\n";
@@ -256,7 +270,8 @@ TEST(MoorDynDeck, RefusesVortexInducedVibration) {
 
 TEST(MoorDynDeck, RefusesUnknownAndUnsupportedOptions) {
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1 NotAnOption\n"), 20, "NotAnOption");
-  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "bathy.txt SeafloorFile\n"), 20, "3D seafloor");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "no-such-bathy.txt SeafloorFile\n"), 20,
+                "the seafloor file 'no-such-bathy.txt' was not found");
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "2 WaveKin\n"), 20, "WaveKin");
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "2 Currents\n"), 20, "Currents");  // dynamic grid
 }

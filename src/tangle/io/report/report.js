@@ -137,14 +137,41 @@
   // Seabed and sea surface, a margin around the lines.
   var margin = 0.15 * sceneSize;
   var planeW = Math.max(size.x, size.y) + 2 * margin, planeH = planeW;
-  var seabed = new THREE.Mesh(new THREE.PlaneBufferGeometry(planeW, planeH),
-      new THREE.MeshLambertMaterial({ color: 0xc8b58a, side: THREE.DoubleSide }));
-  seabed.position.set(centre.x, centre.y, -data.depth);
-  scene.add(seabed);
-  var grid = new THREE.GridHelper(planeW, 20, 0x9c8a60, 0xb0a070);
-  grid.rotation.x = Math.PI / 2;
-  grid.position.set(centre.x, centre.y, -data.depth + 0.01);
-  scene.add(grid);
+  if (data.seabed) {
+    // A sloping or gridded seabed: the sampled heights, interpolated bilinearly (held beyond the samples).
+    var sb = data.seabed;
+    var heightAt = function(x, y) {
+      var fx = Math.min(Math.max((x - sb.x0) / sb.step, 0), sb.n - 1),
+          fy = Math.min(Math.max((y - sb.y0) / sb.step, 0), sb.n - 1);
+      var i = Math.min(Math.floor(fx), sb.n - 2), j = Math.min(Math.floor(fy), sb.n - 2);
+      var u = fx - i, v = fy - j, z = sb.z;
+      return (1 - u) * (1 - v) * z[j * sb.n + i] + u * (1 - v) * z[j * sb.n + i + 1] +
+          (1 - u) * v * z[(j + 1) * sb.n + i] + u * v * z[(j + 1) * sb.n + i + 1];
+    };
+    var geometry = new THREE.PlaneBufferGeometry(planeW, planeH, 60, 60);
+    var pos = geometry.attributes.position;
+    for (var k = 0; k < pos.count; k++) pos.setZ(k, heightAt(centre.x + pos.getX(k), centre.y + pos.getY(k)));
+    geometry.computeVertexNormals();
+    var bed =
+        new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({color: 0xc8b58a, side: THREE.DoubleSide}));
+    bed.position.set(centre.x, centre.y, 0);
+    scene.add(bed);
+    var wire = new THREE.LineSegments(
+        new THREE.WireframeGeometry(geometry),
+        new THREE.LineBasicMaterial({color: 0x9c8a60, transparent: true, opacity: 0.35}));
+    wire.position.copy(bed.position);
+    scene.add(wire);
+  } else {
+    var seabed = new THREE.Mesh(
+        new THREE.PlaneBufferGeometry(planeW, planeH),
+        new THREE.MeshLambertMaterial({color: 0xc8b58a, side: THREE.DoubleSide}));
+    seabed.position.set(centre.x, centre.y, -data.depth);
+    scene.add(seabed);
+    var grid = new THREE.GridHelper(planeW, 20, 0x9c8a60, 0xb0a070);
+    grid.rotation.x = Math.PI / 2;
+    grid.position.set(centre.x, centre.y, -data.depth + 0.01);
+    scene.add(grid);
+  }
   var sea = new THREE.Mesh(new THREE.PlaneBufferGeometry(planeW, planeH),
       new THREE.MeshLambertMaterial({ color: 0x3a7ec8, transparent: true, opacity: 0.22, side: THREE.DoubleSide,
                                       depthWrite: false }));

@@ -1,10 +1,14 @@
 #pragma once
-/// @file FlatSeabed.hpp
-/// Flat elastic seabed at z = -depth acting on line nodes: penalty normal spring and dashpot per
-/// unit length of line, and regularised Coulomb friction (axial and lateral to the line).
+/// @file Seabed.hpp
+/// Elastic seabed acting on line nodes: penalty normal spring and dashpot per unit length of line along the
+/// local normal of its surface (flat, a sloping plane or a bathymetry grid: SeabedSurface), and regularised
+/// or elastic Coulomb friction in the local tangent plane.
+
+#include <memory>
 
 #include "tangle/core/Types.hpp"
 #include "tangle/seabed/SeabedSpec.hpp"
+#include "tangle/seabed/SeabedSurface.hpp"
 
 namespace tangle::seabed {
 
@@ -14,6 +18,9 @@ struct SeabedNodeReaction {
   Mat3 stiffness = Mat3::Zero();           ///< -d(force)/d(position) [N/m]
   Mat3 damping = Mat3::Zero();             ///< -d(force)/d(velocity) [N s/m]
   double penetration = 0.0;                ///< [m], > 0 in contact
+  double normalForce = 0.0;                ///< N, the normal reaction's magnitude [N]
+  double normalStiffness = 0.0;            ///< dN/d(penetration) [N/m]
+  Vec3 normal = Vec3::UnitZ();             ///< the seabed's unit normal under the node [-]
 };
 
 /// Statics friction of one node: an elastic spring to the node's anchor point on the seabed (its as-laid
@@ -23,18 +30,26 @@ struct StaticFrictionResult {
   Vec3 force = Vec3::Zero();      ///< friction force on the node, in the seabed plane [N]
   Mat3 stiffness = Mat3::Zero();  ///< -d(force)/d(position) [N/m]
   Mat3 damping = Mat3::Zero();    ///< -d(force)/d(velocity) [N s/m] (the stick dashpot, dynamics)
-  Vec2 anchor = Vec2::Zero();     ///< anchor (x, y) after the return map [m]
+  Vec2 anchor = Vec2::Zero();  ///< anchor (x, y) after the return map [m] (the point on the seabed under it)
   bool sliding = false;           ///< the force is at the cap mu N
 };
 
-/// Flat seabed: normal force k L delta + c L v_n (compression only) and friction
-/// mu * N * v_t / max(|v_t|, v_reg) (linear "viscous" branch below v_reg so Newton converges;
-/// the regularisation of e.g. OrcaFlex's and MoorDyn's seabed friction models).
-class FlatSeabed {
+/// Seabed: normal force (k L delta + c L v_n) n (compression only; delta the penetration and n the unit
+/// normal of the surface under the node, v_n = v . n) and friction in the tangent plane,
+/// mu * N * v_t / max(|v_t|, v_reg) with v_t = v - v_n n (linear "viscous" branch below v_reg so Newton
+/// converges; the regularisation of e.g. OrcaFlex's and MoorDyn's seabed friction models), or the elastic
+/// law of staticFriction(). On a flat seabed n = e_z and every number is the flat seabed's of before, bit for
+/// bit (the general formulas reduce to it exactly: products with 0 and 1).
+class Seabed {
  public:
-  /// @param spec stiffness [N/m/m], damping [N s/m/m], friction coefficient [-], regularisation velocity [m/s]
-  /// @param depth water depth [m] (seabed at z = -depth)
-  FlatSeabed(const SeabedSpec& spec, double depth) : m_spec(spec), m_depth(depth) {}
+  /// @param spec stiffness [N/m/m], damping [N s/m/m], friction coefficient [-], regularisation velocity
+  /// [m/s]
+  /// @param surface the seabed's shape (shared, not copied: a grid may be large)
+  Seabed(const SeabedSpec& spec, std::shared_ptr<const SeabedSurface> surface)
+      : m_spec(spec), m_surface(std::move(surface)) {}
+  /// Flat seabed at z = -depth [m].
+  Seabed(const SeabedSpec& spec, double depth)
+      : m_spec(spec), m_surface(std::make_shared<const SeabedSurface>(SeabedSurface::flat(depth))) {}
 
   /// Reaction on a node.
   /// @param position node position [m]; @param velocity node velocity [m/s]
@@ -59,17 +74,20 @@ class FlatSeabed {
   /// @param velocity node velocity [m/s] and @param dashpot [N s/m]: in dynamics a dashpot beside the stick
   ///        spring (Kelvin-Voigt), so that a node held by friction does not ring on the undamped spring
   ///        (theory 7.5); its force counts towards the cap. Zero in statics.
-  StaticFrictionResult staticFriction(const Vec3& position, const Vec2& anchor, double normal, double normalStiffness,
-                                      double tributaryLength, const Vec3& velocity = Vec3::Zero(),
-                                      double dashpot = 0.0) const;
+  /// @param surfaceNormal the seabed's unit normal under the node (SeabedNodeReaction::normal): the spring
+  ///        acts on the slip projected on the tangent plane, from the anchor's point on the seabed.
+  StaticFrictionResult staticFriction(const Vec3& position, const Vec2& anchor, double normal,
+                                      double normalStiffness, double tributaryLength,
+                                      const Vec3& velocity = Vec3::Zero(), double dashpot = 0.0,
+                                      const Vec3& surfaceNormal = Vec3::UnitZ()) const;
 
   /// Shear (friction spring) stiffness per unit length of line [N/m/m]: the user's value, or the normal stiffness.
   double shearStiffness() const { return m_spec.shearStiffness > 0.0 ? m_spec.shearStiffness : m_spec.normalStiffness; }
 
-  double depth() const { return m_depth; }  ///< [m]
-  /// Penetration [m] of a node of contact radius `radius` [m] at `position` (> 0: touching): the
-  /// quantity reaction() starts from, for callers that skip the nodes clear of the seabed cheaply.
-  double penetration(const Vec3& position, double radius) const { return -m_depth - (position.z() - radius); }
+  const SeabedSurface& surface() const { return *m_surface; }
+  /// Penetration [m] along the normal of a node of contact radius `radius` [m] at `position` (> 0: touching):
+  /// the quantity reaction() starts from, for callers that skip the nodes clear of the seabed cheaply.
+  double penetration(const Vec3& position, double radius) const { return -m_surface->gap(position, radius); }
 
   /// Penetration over which the normal reaction sets in smoothly (C1 quadratic onset) [m].
   static constexpr double kSmoothPenetration = 0.002;
@@ -81,7 +99,7 @@ class FlatSeabed {
 
  private:
   SeabedSpec m_spec;
-  double m_depth;
+  std::shared_ptr<const SeabedSurface> m_surface;
 };
 
 }  // namespace tangle::seabed

@@ -1,13 +1,13 @@
-// Unit tests of the flat seabed's node reaction (FlatSeabed): the force-only call against the full reaction,
+// Unit tests of the flat seabed's node reaction (Seabed): the force-only call against the full reaction,
 // and the reaction against its closed form (the C1 onset and the linear law, the dashpot that never pulls,
-// regularised Coulomb friction). References: the formulas of FlatSeabed.hpp / theory manual; exact
+// regularised Coulomb friction). References: the formulas of Seabed.hpp / theory manual; exact
 // equality where the same arithmetic is promised, round-off (1e-12 relative) against hand-written forms.
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "tangle/seabed/FlatSeabed.hpp"
+#include "tangle/seabed/Seabed.hpp"
 
 namespace tangle {
 namespace {
@@ -22,7 +22,7 @@ seabed::SeabedSpec spec(double damping, double friction) {
   return s;
 }
 
-TEST(FlatSeabed, ReactionForceIsTheReactionsForceBitForBit) {
+TEST(Seabed, ReactionForceIsTheReactionsForceBitForBit) {
   // Random nodes about the seabed (clear, in the smooth onset, fully in contact), moving up and down and
   // sliding slower and faster than the friction regularisation velocity; statics and dynamics.
   std::mt19937 rng(5);
@@ -30,7 +30,7 @@ TEST(FlatSeabed, ReactionForceIsTheReactionsForceBitForBit) {
   const double depth = 100.0, radius = 0.05, tributary = 4.0;
   for (const double damping : {0.0, 3.0e3}) {
     for (const double friction : {0.0, 0.6}) {
-      const seabed::FlatSeabed bed(spec(damping, friction), depth);
+      const seabed::Seabed bed(spec(damping, friction), depth);
       for (int k = 0; k < 400; ++k) {
         const Vec3 x(1.0, -2.0, -depth + radius - penetration(rng));
         const Vec3 v(speed(rng), speed(rng), speed(rng));
@@ -46,12 +46,12 @@ TEST(FlatSeabed, ReactionForceIsTheReactionsForceBitForBit) {
   }
 }
 
-TEST(FlatSeabed, NormalForceFollowsTheSmoothOnsetThenTheLinearLaw) {
+TEST(Seabed, NormalForceFollowsTheSmoothOnsetThenTheLinearLaw) {
   // N = k L d^2 / (2 d0) for d < d0, k L (d - d0 / 2) beyond (d0 = kSmoothPenetration): continuous with a
   // continuous slope at d0.
   const double depth = 50.0, radius = 0.1, tributary = 2.5, k = 2.0e5 * tributary;
-  const double d0 = seabed::FlatSeabed::kSmoothPenetration;
-  const seabed::FlatSeabed bed(spec(0.0, 0.0), depth);
+  const double d0 = seabed::Seabed::kSmoothPenetration;
+  const seabed::Seabed bed(spec(0.0, 0.0), depth);
   for (const double target : {-0.001, 0.0, 0.25 * d0, d0, 3.0 * d0}) {
     const Vec3 x(0.0, 0.0, -depth + radius - target);
     const double d = bed.penetration(x, radius);  // the target up to the round-off of z near -depth
@@ -61,9 +61,9 @@ TEST(FlatSeabed, NormalForceFollowsTheSmoothOnsetThenTheLinearLaw) {
   }
 }
 
-TEST(FlatSeabed, DashpotNeverPullsAndFrictionOpposesSliding) {
+TEST(Seabed, DashpotNeverPullsAndFrictionOpposesSliding) {
   const double depth = 50.0, radius = 0.1, tributary = 2.0;
-  const seabed::FlatSeabed bed(spec(1.0e4, 0.5), depth);
+  const seabed::Seabed bed(spec(1.0e4, 0.5), depth);
   const Vec3 x(0.0, 0.0, -depth + radius - 0.004);  // beyond the smooth onset: N0 = k L (d - d0/2)
   const double n0 = 2.0e5 * tributary * (0.004 - 0.001);
   // Lifting off fast: the dashpot would pull; the reaction is zero, and so is the friction.

@@ -1,0 +1,262 @@
+#include "tangle/seabed/SeabedSurface.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+#include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+
+namespace tangle::seabed {
+
+namespace {
+
+/// Cell of `ticks` holding `v` and the fraction across it; beyond the ends, the end cell with the fraction
+/// clamped to 0 or 1 (the height is held at the edge value) and `inside` false (no slope along this axis).
+struct CellPosition {
+  std::size_t cell = 0;
+  double fraction = 0.0;
+  double width = 1.0;
+  bool inside = false;
+};
+
+CellPosition locate(const std::vector<double>& ticks, double v) {
+  CellPosition c;
+  if (ticks.size() < 2) return c;
+  if (v <= ticks.front()) return c;
+  if (v >= ticks.back()) {
+    c.cell = ticks.size() - 2;
+    c.fraction = 1.0;
+    c.width = ticks.back() - ticks[c.cell];
+    return c;
+  }
+  c.cell = static_cast<std::size_t>(std::upper_bound(ticks.begin(), ticks.end(), v) - ticks.begin()) - 1;
+  c.width = ticks[c.cell + 1] - ticks[c.cell];
+  c.fraction = (v - ticks[c.cell]) / c.width;
+  c.inside = true;
+  return c;
+}
+
+Vec3 normalFromGradient(double gx, double gy) { return Vec3(-gx, -gy, 1.0).normalized(); }
+
+}  // namespace
+
+SeabedSurface SeabedSurface::flat(double depth) {
+  SeabedSurface s;
+  s.m_kind = Kind::Flat;
+  s.m_depth = depth;
+  return s;
+}
+
+SeabedSurface SeabedSurface::plane(double depth, double slope, double azimuth) {
+  if (!(slope >= 0.0 && slope < 0.5 * kPi))
+    throw std::invalid_argument("seabed slope must be in [0, 90) degrees");
+  if (slope == 0.0) return flat(depth);
+  SeabedSurface s;
+  s.m_kind = Kind::Plane;
+  s.m_depth = depth;
+  s.m_slope = slope;
+  s.m_azimuth = azimuth;
+  const double t = std::tan(slope);
+  s.m_gradient = Vec2(t * std::cos(azimuth), t * std::sin(azimuth));
+  return s;
+}
+
+SeabedSurface SeabedSurface::grid(std::vector<double> x, std::vector<double> y, std::vector<double> height) {
+  if (x.empty() || y.empty())
+    throw std::invalid_argument("a bathymetry grid needs at least one x and one y tick");
+  for (const std::vector<double>* ticks : {&x, &y})
+    for (std::size_t i = 1; i < ticks->size(); ++i)
+      if (!((*ticks)[i] > (*ticks)[i - 1]))
+        throw std::invalid_argument("the ticks of a bathymetry grid must increase strictly");
+  if (height.size() != x.size() * y.size())
+    throw std::invalid_argument(fmt::format("a bathymetry grid of {} x {} ticks needs {} heights, got {}",
+                                            x.size(), y.size(), x.size() * y.size(), height.size()));
+  SeabedSurface s;
+  s.m_kind = Kind::Grid;
+  s.m_x = std::move(x);
+  s.m_y = std::move(y);
+  s.m_height = std::move(height);
+  s.m_depth = -*std::min_element(s.m_height.begin(), s.m_height.end());
+  return s;
+}
+
+double SeabedSurface::height(double x, double y) const {
+  switch (m_kind) {
+    case Kind::Flat:
+      return -m_depth;
+    case Kind::Plane:
+      return -m_depth + m_gradient.x() * x + m_gradient.y() * y;
+    case Kind::Grid:
+      break;
+  }
+  return at(x, y).height;
+}
+
+SeabedPoint SeabedSurface::at(double x, double y) const {
+  SeabedPoint p;
+  switch (m_kind) {
+    case Kind::Flat:
+      p.height = -m_depth;
+      return p;
+    case Kind::Plane:
+      p.height = -m_depth + m_gradient.x() * x + m_gradient.y() * y;
+      p.normal = normalFromGradient(m_gradient.x(), m_gradient.y());
+      return p;
+    case Kind::Grid:
+      break;
+  }
+  const std::size_t nx = m_x.size();
+  const CellPosition cx = locate(m_x, x);
+  const CellPosition cy = locate(m_y, y);
+  const std::size_t i1 = nx > 1 ? cx.cell + 1 : 0;
+  const std::size_t j1 = m_y.size() > 1 ? cy.cell + 1 : 0;
+  const double h00 = m_height[cy.cell * nx + cx.cell], h10 = m_height[cy.cell * nx + i1];
+  const double h01 = m_height[j1 * nx + cx.cell], h11 = m_height[j1 * nx + i1];
+  const double fx = cx.fraction, fy = cy.fraction;
+  // Bilinear interpolation (as MoorDyn's interp2) and its gradient within the cell.
+  p.height = (1.0 - fx) * (1.0 - fy) * h00 + fx * (1.0 - fy) * h10 + (1.0 - fx) * fy * h01 + fx * fy * h11;
+  const double gx = cx.inside ? ((1.0 - fy) * (h10 - h00) + fy * (h11 - h01)) / cx.width : 0.0;
+  const double gy = cy.inside ? ((1.0 - fx) * (h01 - h00) + fx * (h11 - h10)) / cy.width : 0.0;
+  p.normal = normalFromGradient(gx, gy);
+  return p;
+}
+
+double SeabedSurface::gap(const Vec3& position, double radius) const {
+  // Flat: the arithmetic of the flat seabed before slopes, so that flat models keep their results bit for
+  // bit.
+  if (m_kind == Kind::Flat) return (position.z() - radius) + m_depth;
+  const SeabedPoint s = at(position.x(), position.y());
+  return (position.z() - s.height) * s.normal.z() - radius;
+}
+
+double SeabedSurface::restingZ(double x, double y, double radius, double penetration) const {
+  if (m_kind == Kind::Flat) return -m_depth + radius - penetration;
+  const SeabedPoint s = at(x, y);
+  return s.height + (radius - penetration) / s.normal.z();
+}
+
+Vec2 SeabedSurface::footprint(const Vec3& position) const {
+  if (m_kind == Kind::Flat) return Vec2(position.x(), position.y());
+  const SeabedPoint s = at(position.x(), position.y());
+  const double distance = (position.z() - s.height) * s.normal.z();
+  return Vec2(position.x() - distance * s.normal.x(), position.y() - distance * s.normal.y());
+}
+
+double SeabedSurface::shallowestDepth(double extent) const {
+  switch (m_kind) {
+    case Kind::Flat:
+      return m_depth;
+    case Kind::Plane:
+      return m_depth - std::tan(m_slope) * extent;
+    case Kind::Grid:
+      break;
+  }
+  return -*std::max_element(m_height.begin(), m_height.end());
+}
+
+double SeabedSurface::deepestDepth(double extent) const {
+  switch (m_kind) {
+    case Kind::Flat:
+      return m_depth;
+    case Kind::Plane:
+      return m_depth + std::tan(m_slope) * extent;
+    case Kind::Grid:
+      break;
+  }
+  return m_depth;
+}
+
+std::string SeabedSurface::describe() const {
+  switch (m_kind) {
+    case Kind::Flat:
+      return fmt::format("flat, {:g} m deep", m_depth);
+    case Kind::Plane:
+      return fmt::format("plane, {:g} m deep at the origin, rising {:g} deg towards azimuth {:g} deg",
+                         m_depth, m_slope * 180.0 / kPi, m_azimuth * 180.0 / kPi);
+    case Kind::Grid:
+      break;
+  }
+  return fmt::format("bathymetry grid {} x {} over x [{:g}, {:g}] m, y [{:g}, {:g}] m, {:g} to {:g} m deep",
+                     m_x.size(), m_y.size(), m_x.front(), m_x.back(), m_y.front(), m_y.back(),
+                     shallowestDepth(0.0), m_depth);
+}
+
+SeabedSurface readSeafloorFile(const std::string& path) {
+  std::ifstream in(path);
+  if (!in)
+    throw InputError(path, 0, "SeafloorFile", "a readable file (the bathymetry grid); it cannot be opened");
+  std::vector<std::vector<std::string>> rows;
+  std::vector<int> lineOf;
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    std::istringstream words(text);
+    std::vector<std::string> row;
+    for (std::string w; words >> w;) row.push_back(w);
+    if (row.empty()) continue;
+    rows.push_back(std::move(row));
+    lineOf.push_back(line);
+  }
+  if (rows.size() < 4)
+    throw InputError(path, 0, "SeafloorFile",
+                     "at least 4 lines: 'nx ny', the x ticks, the y ticks and one 'x y z' row per grid node");
+  auto number = [&](std::size_t r, std::size_t c, const char* what) {
+    const std::string& w = rows[r][c];
+    char* end = nullptr;
+    const double v = std::strtod(w.c_str(), &end);
+    if (end == w.c_str() || *end != '\0' || !std::isfinite(v))
+      throw InputError(path, lineOf[r], what, "a finite number, got '" + w + "'");
+    return v;
+  };
+  auto count = [&](std::size_t c, const char* what) {
+    if (rows[0].size() < 2) throw InputError(path, lineOf[0], "nx ny", "two counts on the first line");
+    const double v = number(0, c, what);
+    // Range-checked before it becomes an integer (no undefined conversion of 1e84).
+    if (!(v >= 1.0 && v <= 100000.0) || v != std::floor(v))
+      throw InputError(path, lineOf[0], what, "a whole number from 1 to 100000, got '" + rows[0][c] + "'");
+    return static_cast<std::size_t>(v);
+  };
+  const std::size_t nx = count(0, "nx"), ny = count(1, "ny");
+  if (nx * ny > 4000000) throw InputError(path, lineOf[0], "nx ny", "at most 4 000 000 grid nodes");
+  auto ticks = [&](std::size_t r, std::size_t n, const char* what) {
+    if (rows[r].size() != n)
+      throw InputError(path, lineOf[r], what,
+                       fmt::format("{} ticks (as the first line says), got {}", n, rows[r].size()));
+    std::vector<double> t;
+    for (std::size_t c = 0; c < n; ++c) t.push_back(number(r, c, what));
+    for (std::size_t c = 1; c < n; ++c)
+      if (!(t[c] > t[c - 1]))
+        throw InputError(path, lineOf[r], what,
+                         fmt::format("increasing ticks; {} follows {}", t[c], t[c - 1]));
+    return t;
+  };
+  std::vector<double> x = ticks(1, nx, "x ticks"), y = ticks(2, ny, "y ticks");
+  // MoorDyn's calcInsertIndex: the first tick above the value, less one (the tick at or below it).
+  auto snap = [](const std::vector<double>& t, double v) {
+    const auto above = std::upper_bound(t.begin(), t.end(), v);
+    return above == t.begin() ? std::size_t{0} : static_cast<std::size_t>(above - t.begin()) - 1;
+  };
+  std::vector<double> height(nx * ny, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t r = 3; r < rows.size(); ++r) {
+    if (rows[r].size() != 3)
+      throw InputError(path, lineOf[r], "x y z", fmt::format("3 numbers (x, y, z), got {}", rows[r].size()));
+    const double z = number(r, 2, "z");
+    if (z > 0.0)
+      throw InputError(path, lineOf[r], "z",
+                       fmt::format("the seabed's z <= 0 (below still water), got {}", z));
+    height[snap(y, number(r, 1, "y")) * nx + snap(x, number(r, 0, "x"))] = z;
+  }
+  for (std::size_t j = 0; j < ny; ++j)
+    for (std::size_t i = 0; i < nx; ++i)
+      if (std::isnan(height[j * nx + i]))
+        throw InputError(path, 0, "x y z",
+                         fmt::format("a row for every grid node; none for x = {}, y = {}", x[i], y[j]));
+  return SeabedSurface::grid(std::move(x), std::move(y), std::move(height));
+}
+
+}  // namespace tangle::seabed
