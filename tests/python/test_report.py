@@ -245,9 +245,45 @@ dynamics: {duration: 10, time_step: 0.05}
             assert status["ready"] and status["errors"] == [] and status["frames"] == 1, status
             assert "did not converge" in (out / "report.html").read_text(encoding="utf-8")
 
+        def sloping_seabed() -> None:
+            # A seabed that is not flat (issue 46): the page gets its sampled heights and draws it; a pipe piece
+            # dropped onto the slope (statics.method: none) writes its seabed impact.
+            model = tmp / "slope.yaml"
+            model.write_text("""environment:
+  water_depth: 100
+  seabed: {slope: 10, upslope_azimuth: 0, normal_stiffness: 1.0e8}
+line_types:
+  - {name: pipe, outer_diameter: 0.5, mass_per_length: 300, axial_stiffness: 1.0e10, bending_stiffness: 1.0e9,
+     drag_normal: 0, drag_axial: 0}
+lines:
+  - name: piece
+    end_a: {type: free, position: [20, -5, -95.71]}
+    end_b: {type: free, position: [20, 5, -95.71]}
+    sections: [{type: pipe, length: 10, elements: 10}]
+    start_shape: [[20, -5, -95.71], [20, 5, -95.71]]
+statics: {method: none}
+dynamics: {duration: 1.2, time_step: 0.0005, output_interval: 0.05}
+""", encoding="utf-8")
+            out = tmp / "slope"
+            r2 = subprocess.run([tangle, "run", str(model), "-o", str(out), "-q", "--no-plots"], capture_output=True,
+                                text=True, timeout=60)
+            assert r2.returncode == 0, (r2.returncode, r2.stderr)
+            d = embedded_data(out / "report.html")
+            sb = d["seabed"]
+            assert sb["n"] == 41 and len(sb["z"]) == 41 * 41 and "plane" in sb["describe"], sb.get("describe")
+            # The samples are the plane's heights: z = -100 + tan(10 deg) x.
+            for k in (0, 20 * 41 + 20, 41 * 41 - 1):
+                x = sb["x0"] + sb["step"] * (k % 41)
+                assert close(sb["z"][k], -100.0 + math.tan(math.radians(10.0)) * x, 0.0, 2e-3), (k, sb["z"][k])
+            with (out / "dynamics" / "seabed_impacts.csv").open(encoding="utf-8") as f:
+                rows = list(csv.DictReader(f))
+            assert rows and rows[0]["kind"] == "impact", rows
+            status = page_status(out / "report.html", profile)
+            assert status["ready"] and status["errors"] == [], status
+
         tests = [("data", lambda: check_data(run, data)), ("page", lambda: check_page(run, data, profile)),
                  ("screenshot", lambda: check_screenshot(run, profile, tmp)), ("rebuild", rebuild),
-                 ("view", view), ("failed statics", failed_statics)]
+                 ("view", view), ("failed statics", failed_statics), ("sloping seabed", sloping_seabed)]
         for name, test in tests:
             try:
                 test()

@@ -95,6 +95,18 @@ solver::StaticResult Simulation::solveStatics(bool progress) {
       if (own) sim->m_staticsProgress = nullptr;
     }
   } release{this, ownProgress.has_value()};
+  if (m_model->spec().statics.skip) {
+    // statics.method: none. The seabed's friction anchors and the contributors start from this shape as they
+    // would from an equilibrium.
+    m_assembler->beginStatics(m_state);
+    m_assembler->commitIncrement(m_state);
+    solver::StaticResult skipped;
+    skipped.converged = true;
+    skipped.loadFraction = 1.0;
+    skipped.message =
+        "no static solve (statics.method: none): the dynamics starts from the start shape, at rest";
+    return skipped;
+  }
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
   solver.setProgress(m_staticsProgress);
   const model::State start = m_state;

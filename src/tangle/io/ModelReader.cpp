@@ -1137,9 +1137,11 @@ void readLines(const Value& v, ModelSpec& spec) {
 }
 
 void readStatics(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"max_iterations", "tolerance", "displacement_tolerance"});
+  const Map m(v, {"max_iterations", "tolerance", "displacement_tolerance", "method"});
   const model::StaticSpec d;
   model::StaticSpec& s = spec.statics;
+  if (const std::optional<Value> method = m.find("method"))
+    s.skip = method->choice<bool>({{"newton", false}, {"none", true}});
   s.maxIterations = m.integer("max_iterations", d.maxIterations, atLeast(1.0));
   s.tolerance = m.number("tolerance", d.tolerance, positive());
   s.displacementTolerance = m.number("displacement_tolerance", d.displacementTolerance, positive());

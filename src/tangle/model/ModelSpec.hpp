@@ -270,6 +270,9 @@ struct StaticSpec {
   int maxIterations = 400;       ///< Newton iterations in all [-]
   double tolerance = 1.0e-6;     ///< convergence: max out-of-balance force / reference force [-]
   double displacementTolerance = 1.0e-7;  ///< convergence: max displacement increment / line length [-]
+  /// `method: none`: no static solve; the dynamics starts from the start shape at rest (a dropped object, a
+  /// body let go from where it is: OrcaFlex's statics method "None").
+  bool skip = false;
 };
 
 /// Time integration scheme.

@@ -20,6 +20,7 @@
 #include "tangle/analysis/FatigueDamage.hpp"
 #include "tangle/analysis/RangeGraphs.hpp"
 #include "tangle/analysis/ResponseStatistics.hpp"
+#include "tangle/analysis/SeabedImpacts.hpp"
 #include "tangle/contact/ClashReport.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/StaticContactReport.hpp"
@@ -276,7 +277,7 @@ bool RunOutputs::writeStatics() {
   // The equilibrium audit (theory 7.8) of a converged solution: every force on every line and free vessel
   // by source; a body out of balance is a result that is not the physics.
   std::optional<solver::EquilibriumAudit> audit;
-  if (result.converged) {
+  if (result.converged && !m.spec().statics.skip) {
     audit = analysis::auditStatics(sim, lines);
     for (const std::string& w : audit->warnings()) log.warning("warning: " + w + "\n");
   }
@@ -306,15 +307,16 @@ bool RunOutputs::writeStatics() {
                                 std::istreambuf_iterator<char>());
     h5 = std::make_unique<io::Hdf5Results>(outDir, m, modelText);
     h5->writeStatics(lines);
-    h5->writeAudit(*audit);
+    if (audit) h5->writeAudit(*audit);
   }
   log.info(result.message + "\n");
-  log.info(fmt::format(
-      "equilibrium audit: {} lines and {} free vessels {}; largest out-of-balance force {:.2g} of "
-      "the body's weight or load\n",
-      audit->lines.size(), audit->vessels.size(),
-      audit->warnings().empty() ? "in balance" : "NOT in balance (see the warnings)",
-      audit->worstRelativeResidual()));
+  if (audit)
+    log.info(fmt::format(
+        "equilibrium audit: {} lines and {} free vessels {}; largest out-of-balance force {:.2g} of "
+        "the body's weight or load\n",
+        audit->lines.size(), audit->vessels.size(),
+        audit->warnings().empty() ? "in balance" : "NOT in balance (see the warnings)",
+        audit->worstRelativeResidual()));
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
   // The line pairs the clearance envelope and the clash report assess (LineContact::assessedPairs).
   m_assessedPairs =
@@ -558,6 +560,9 @@ bool RunOutputs::runDynamics() {
     energyFile->write(row + fmt::format(",{:.9e},{:.9e}\n", t.residual, t.throughput));
   };
   if (energy) energyRow();
+  // Impacts of the lines on the seabed (theory 5.4): at every accepted step, on this thread.
+  analysis::SeabedImpacts seabedImpacts(m, m.spec().contact.impactVelocityThreshold);
+  seabedImpacts.start(sim.state());
   const time::DynamicResult dyn = sim.runDynamics(
       [&](const model::State& s, const VecX&) {
         if (energy && s.time > energy->totals().time - 1e-12 && s.time > 0.0) energyRow();
@@ -600,6 +605,7 @@ bool RunOutputs::runDynamics() {
           for (std::size_t v = 0; v < offsetPeaks.size(); ++v)
             offsetPeaks[v].add(s.time, horizontalOffset(m, s, v));
         if (energy) energy->step(s, dt);
+        seabedImpacts.commit(s, dt);
         if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
         if (tensionerFile) {
           // Every step: a tensioner touching its stop between two output times must show.
@@ -632,6 +638,9 @@ bool RunOutputs::runDynamics() {
     clash->write(outDir);
     log.info(clash->terminalSummary());
   }
+  seabedImpacts.finish();
+  seabedImpacts.write(outDir / "dynamics");
+  if (seabedImpacts.impactCount() > 0) log.info(seabedImpacts.terminalSummary());
   if (!fatigue.empty()) {
     const std::vector<analysis::FatigueDamage::Line> damage = fatigue.finish();
     log.info(writeFatigue(outDir, m, fatigue, damage));

@@ -1518,6 +1518,16 @@ TEST(ModelReaderSeabed, ReadsABathymetryGrid) {
   EXPECT_NEAR(spec.environment.seabedSurface->height(500.0, 100.0), -120.0, 1e-12);
 }
 
+TEST(ModelReaderSeabed, StaticsMethodNoneSkipsTheStaticSolve) {
+  EXPECT_FALSE(readModelString(kBaseModel, kSource).statics.skip);
+  EXPECT_TRUE(
+      readModelString(edited(kBaseModel, "  max_iterations: 100", "  max_iterations: 100\n  method: none"),
+                      kSource)
+          .statics.skip);
+  expectEditError("  max_iterations: 100", "  max_iterations: 100\n  method: relax", "method: relax",
+                  "statics.method", "newton");
+}
+
 TEST(ModelReaderSeabed, BadSeabedShapesNameTheKey) {
   const std::string base = "    friction_coefficient: 0.5";
   expectEditError(base, base + "\n    slope: 5", "    slope: 5", "environment.seabed.slope",

@@ -187,6 +187,7 @@
     scene.add(new THREE.ArrowHelper(dir, origin, arrowLength, colour, 0.25 * arrowLength, 0.1 * arrowLength));
     envNotes.push("<span style='color:#" + new THREE.Color(colour).getHexString() + "'>\u2192</span> " + text);
   }
+  if (data.seabed) envNotes.push('seabed: ' + data.seabed.describe);
   if (data.current.length) {
     // The current profile: one arrow per level given, at its depth, length by speed.
     var top = data.current.reduce(function (a, b) { return a.z > b.z ? a : b; });
