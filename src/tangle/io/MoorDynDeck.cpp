@@ -485,11 +485,22 @@ bool isMoorDynDeck(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return false;
   std::string line;
+  // A line of dashes naming one of the sections MoorDyn2.cpp looks for (findStartOfSection): a deck of rods
+  // or bodies only has no line types (MoorDyn's RodPinnedFloating.txt). Only lines that start with the
+  // dashes: a YAML comment ("# --- lines ---") starts with '#'.
+  static const char* const kSections[] = {"LINE TYPES",      "LINE DICTIONARY", "ROD TYPES",
+                                          "ROD DICTIONARY",  "BODIES",          "BODY LIST",
+                                          "BODY PROPERTIES", "ROD LIST",        "ROD PROPERTIES",
+                                          "POINT LIST",      "NODE PROPERTIES", "CONNECTION PROPERTIES"};
   for (int i = 0; i < 200 && std::getline(in, line); ++i) {
-    if (line.find("---") == std::string::npos) continue;
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.compare(start, 3, "---") != 0) continue;
     const std::string head = upper(line);
-    if (head.find("LINE TYPES") != std::string::npos || head.find("LINE DICTIONARY") != std::string::npos)
-      return true;
+    for (const char* section : kSections)
+      if (head.find(section) != std::string::npos) return true;
+    // "RODS" alone (not inside another word) also names the rods' section.
+    const std::size_t rods = head.find(" RODS ");
+    if (rods != std::string::npos) return true;
   }
   return false;
 }

@@ -778,7 +778,21 @@ std::string StaticSolver::diagnose(const model::State& state, const StaticResult
   if (node >= 0 && model.lineOfNode(node) >= 0) {
     const bool onSeabed =
         model.seabedSurface().gap(state.position[node], 0.5 * model.nodeContactDiameter()[node]) <= 1e-3;
-    if (onSeabed && !env.current.empty())
+    // On a slope steeper than the friction angle a laid line free to slide has no equilibrium.
+    const Vec3& x = state.position[node];
+    const double slope = std::acos(std::clamp(model.seabedSurface().at(x.x(), x.y()).normal.z(), -1.0, 1.0));
+    if (onSeabed && slope > std::atan(env.seabed.frictionCoefficient) + 1e-9)
+      hint = fmt::format(
+          "the node lies on the seabed where it slopes {:.1f} deg, steeper than the friction angle atan(mu) "
+          "= "
+          "{:.1f} deg (environment.seabed.friction_coefficient {}): a laid line that nothing holds up the "
+          "slope "
+          "slides down it and has no static equilibrium; anchor or hold the line, or check the slope and the "
+          "friction",
+          slope * 180.0 / std::numbers::pi,
+          std::atan(env.seabed.frictionCoefficient) * 180.0 / std::numbers::pi,
+          env.seabed.frictionCoefficient);
+    else if (onSeabed && !env.current.empty())
       hint =
           env.seabed.frictionCoefficient <= 0.0
               ? "the node lies on a frictionless seabed in a current, which may have no static equilibrium: "

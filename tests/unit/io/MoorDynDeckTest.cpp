@@ -223,6 +223,30 @@ TEST(MoorDynDeck, RefusesRods) {
   expectRefused(text, 25, "rods");
 }
 
+TEST(MoorDynDeck, ADeckOfRodsOnlyIsADeckAndItsRodsAreRefused) {
+  // MoorDyn's tests/Mooring/RodPinnedFloating.txt has rod types and rods and no line types: it used to be
+  // read as YAML ("invalid YAML"). A YAML comment with dashes is not a deck.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tangle-moordyn-rods-only";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "rods.txt")
+      << "--------------------- MoorDyn Input File ---------------------\nRods only\n"
+         "---------------------- ROD TYPES -----------------------------\n"
+         "TypeName Diam Mass/m Cd Ca CdEnd CaEnd\n(name) (m) (kg/m) (-) (-) (-) (-)\n"
+         "Can 10 1000 0.6 1.0 0.6 1.0\n"
+         "---------------------- RODS ----------------------------------\n";
+  std::ofstream(dir / "model.yaml") << "# ---------------------- RODS and LINE TYPES ----------\ntitle: x\n";
+  EXPECT_TRUE(isMoorDynDeck((dir / "rods.txt").string()));
+  EXPECT_FALSE(isMoorDynDeck((dir / "model.yaml").string()));
+  try {
+    readModelFile((dir / "rods.txt").string());
+    ADD_FAILURE() << "a deck of rods was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("rod"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("YAML"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(MoorDynDeck, RefusesBodiesAndPointsOnThem) {
   expectRefused("---- LINE TYPES ----\na\nb\nchain 0.2 200 1e9 -1 0 1 1 0 0\n---- BODIES ----\nID\n", 5,
                 "bodies are not supported");

@@ -167,3 +167,62 @@ INSTANTIATE_TEST_SUITE_P(
 
 }  // namespace
 }  // namespace tangle
+
+namespace tangle {
+namespace {
+
+/// A 20 m chain laid free along the fall line of a 20 degree slope (both ends free), friction `mu`.
+model::ModelSpec freeChainOnSlope(double mu) {
+  model::ModelSpec spec;
+  spec.sourceFile = "free chain on a slope (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.environment.seabed.normalStiffness = 1.0e6;
+  spec.environment.seabed.frictionCoefficient = mu;
+  const double slope = degToRad(20.0);
+  spec.environment.seabedSurface =
+      std::make_shared<const seabed::SeabedSurface>(seabed::SeabedSurface::plane(100.0, slope, 0.0));
+  spec.lineTypes["chain"] = test::cableType("chain", 0.1, 100.0, 1.0e9);
+  const Vec3 a(10.0, 0.0, -100.0 + 10.0 * std::tan(slope) + 0.05 / std::cos(slope));
+  const Vec3 b = a + 20.0 * Vec3(std::cos(slope), 0.0, std::sin(slope));
+  model::LineSpec line =
+      test::simpleLine("chain", "chain", 20.0, 20, model::EndKind::Free, a, model::EndKind::Free, b);
+  line.startShape = {model::StartPoint{a}, model::StartPoint{b}};
+  spec.lines.push_back(line);
+  return spec;
+}
+
+// Friction on a slope in statics (issue 46). Closed form: a laid line that nothing holds is in equilibrium on
+// an incline only if mu >= tan(alpha) (Coulomb); tan(20 deg) = 0.364. Held (mu = 0.5): every node stays where
+// it was laid within the friction springs' stretch along the slope, w sin(alpha) / k_t = 3e-4 m (1 mm
+// allowed). Sliding (mu = 0.2): there is no equilibrium, and the solver must say so, naming the slope and the
+// friction angle, never report a converged state.
+TEST(FrictionOnASlope, HoldsAboveTheFrictionAngleAndHasNoEquilibriumBelowIt) {
+  {
+    model::Model m(freeChainOnSlope(0.5));
+    solver::Assembler assembler(m);
+    model::State s = m.initialState();
+    const model::State start = s;
+    const solver::StaticResult r = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+    ASSERT_TRUE(r.converged) << r.message;
+    // Along the slope: the friction springs' stretch. Along the normal the nodes settle into the seabed by
+    // their resting penetration (1.8 mm: the smooth onset at N = w cos(alpha), k = 1e6 N/m/m), laid without
+    // it.
+    const Vec3 fallLine = -Vec3(std::cos(degToRad(20.0)), 0.0, std::sin(degToRad(20.0)));
+    for (std::size_t i = 0; i < s.position.size(); ++i) {
+      const Vec3 d = s.position[i] - start.position[i];
+      EXPECT_LT(std::abs(d.dot(fallLine)), 1e-3) << i;
+      EXPECT_LT((d - d.dot(fallLine) * fallLine).norm(), 2.5e-3) << i;
+    }
+  }
+  {
+    model::Model m(freeChainOnSlope(0.2));
+    solver::Assembler assembler(m);
+    model::State s = m.initialState();
+    const solver::StaticResult r = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+    EXPECT_FALSE(r.converged) << "a chain on a 20 deg slope with mu = 0.2 has no static equilibrium";
+    EXPECT_NE(r.message.find("steeper than the friction angle"), std::string::npos) << r.message;
+  }
+}
+
+}  // namespace
+}  // namespace tangle
