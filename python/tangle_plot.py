@@ -266,7 +266,7 @@ def statics_figure(table: Table, name: str = "", depth: float | None = None) -> 
 def range_figure(table: Table, name: str = "") -> Figure:
     """Range graphs of one line from a ``dynamics/<line>/range.csv`` table: min / max envelope
     (shaded) and mean of tension, bending moment (a line with bending stiffness) and curvature vs arc
-    length."""
+    length, and the smallest seabed clearance over the run where the table has it."""
     _require(table, RANGE_COLUMNS, name or "range table")
     s = _numeric(table, "arc_length_m", name)
     quantities = [("tension", "N", KN, "effective tension [kN]", "C1")]
@@ -275,10 +275,18 @@ def range_figure(table: Table, name: str = "") -> Figure:
     if "bending_moment_min_Nm" in table:
         quantities.append(("bending_moment", "Nm", KN, "bending moment [kN m]", "C2"))
     quantities.append(("curvature", "1_per_m", 1.0, "curvature [1/m]", "C3"))
+    if "seabed_clearance_min_m" in table:  # the smallest clearance to the seabed over the run
+        quantities.append(("seabed_clearance", "m", 1.0, "min. seabed clearance [m]", "C5"))
     fig = Figure(figsize=(8.0, 3.3 * len(quantities) + 0.4), layout="constrained")
     fig.suptitle(f"Dynamic range: {name}" if name else "Dynamic range")
     axes = fig.subplots(len(quantities), 1, sharex=True)
     for ax, (quantity, unit, scale, label, color) in zip(axes, quantities):
+        if quantity == "seabed_clearance":
+            ax.plot(s, _numeric(table, "seabed_clearance_min_m", name), color=color, linewidth=1.8,
+                    label="minimum over the run (0: on the seabed)")
+            _finish(ax, "arc length from end A [m]" if ax is axes[-1] else "", label)
+            ax.legend(loc="best", fontsize="small")
+            continue
         lo = _numeric(table, f"{quantity}_min_{unit}", name) * scale
         hi = _numeric(table, f"{quantity}_max_{unit}", name) * scale
         mean = _numeric(table, f"{quantity}_mean_{unit}", name) * scale

@@ -132,7 +132,8 @@ class DynamicResults:
     ``position_m`` [time, node, xyz]; ``effective_tension_N``, ``bending_moment_Nm``,
     ``curvature_1_per_m``, ``torque_Nm`` [time, node]; ``end_tension_N`` [time, end A/B];
     ``end_force_N`` [time, end A/B, xyz]; ``range``: range graphs over every accepted step (not only the
-    output times) as ``<quantity>_min/_max/_mean_<unit>`` [node], means time-weighted.
+    output times) as ``<quantity>_min/_max/_mean_<unit>`` [node], means time-weighted, and
+    ``seabed_clearance_min_m`` [node] (the smallest clearance to the seabed over the run, 0 on it).
     newton_iterations_on_parts, matrix_refreshes, block_refreshes, fallback_steps, converged_blocks_left_out: solver counters,
     as the dynamics summary.json (theory manual 8.2).
     vessels: per vessel name, ``motion`` [time, (x_m, y_m, z_m, rx_deg, ry_deg, rz_deg)] (reference point and
@@ -141,6 +142,11 @@ class DynamicResults:
     ``min_clearance_m`` (over every accepted step), ``time_of_min_s`` [node]. line_failures: one dict per line
     that parted (``lines[].failure``): ``line``, ``time_s`` (None: before the statics), ``trigger``, ``value``,
     ``threshold``, ``parted_from_m``, ``parted_to_m``, ``message`` (as dynamics/summary.json).
+    seabed_impacts: one dict per contact of a line with the seabed during the dynamics (the rows of
+    dynamics/seabed_impacts.csv): ``line``, ``kind`` (``impact`` or ``contact``), ``start_time_s``,
+    ``end_time_s``, ``arc_length_m``, ``position_m`` (x, y, z), ``impact_velocity_m_s``, ``impact_energy_J``
+    and ``eq5_mass_kg`` (None when not measured), ``impact_phase_end_s``, ``impact_phase_work_J``,
+    ``peak_force_N``, ``impulse_Ns``, ``open_at_end``.
     """
 
     completed: bool
@@ -162,6 +168,7 @@ class DynamicResults:
     fallback_steps: int = 0
     converged_blocks_left_out: int = 0
     line_failures: list[dict[str, Any]] = field(default_factory=list)
+    seabed_impacts: list[dict[str, Any]] = field(default_factory=list)
 
     def time_history(self, line: str, quantity: str, arc_length_m: float) -> np.ndarray:
         """Time history [time] of a per-node result (``effective_tension_N``, ``bending_moment_Nm``,

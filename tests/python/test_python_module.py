@@ -407,3 +407,35 @@ def test_line_failures_equal_the_cli(mooring: tangle.Model, tmp_path: Path) -> N
         assert b[key] == pytest.approx(c[key], rel=1e-9)
     after = res.time_s > 3.0 + 1e-9
     assert after.any() and np.all(res.lines["mooring1"]["end_tension_N"][after, 1] == 0.0)
+
+
+def test_seabed_impacts_equal_the_cli(tmp_path: Path) -> None:
+    """A pipe piece dropped onto a sloping seabed (statics.method none, issue 46): its impact in
+    DynamicResults.seabed_impacts is the CLI's dynamics/seabed_impacts.csv row."""
+    m = tangle.Model({
+        "environment": {"water_depth": 100,
+                        "seabed": {"slope": 10, "upslope_azimuth": 0, "normal_stiffness": 1.0e8}},
+        "line_types": [{"name": "pipe", "outer_diameter": 0.5, "mass_per_length": 300, "axial_stiffness": 1.0e10,
+                        "bending_stiffness": 1.0e9, "drag_normal": 0, "drag_axial": 0}],
+        "lines": [{"name": "piece", "end_a": {"type": "free", "position": [20, -5, -95.71]},
+                   "end_b": {"type": "free", "position": [20, 5, -95.71]},
+                   "sections": [{"type": "pipe", "length": 10, "elements": 10}],
+                   "start_shape": [[20, -5, -95.71], [20, 5, -95.71]]}],
+        "statics": {"method": "none"},
+        "dynamics": {"duration": 1.2, "time_step": 0.0005, "output_interval": 0.05},
+    }, "drop")
+    res = m.run_dynamics()
+    assert res.completed
+    [e] = [e for e in res.seabed_impacts if e["kind"] == "impact"]
+    assert e["line"] == "piece" and e["impact_velocity_m_s"] > 1.0 and e["impact_energy_J"] > 0.0
+    out = cli_run(m, tmp_path / "drop")
+    with (out / "dynamics" / "seabed_impacts.csv").open(encoding="utf-8") as f:
+        [c] = [r for r in csv.DictReader(f) if r["kind"] == "impact"]
+    for key in ("start_time_s", "impact_velocity_m_s", "impact_energy_J", "eq5_mass_kg", "peak_force_N"):
+        assert e[key] == pytest.approx(float(c[key]), rel=1e-4), key
+    # The smallest seabed clearance over the run: 0 where the piece landed (every node), as range.csv's column.
+    clearance = np.asarray(res.lines["piece"]["range"]["seabed_clearance_min_m"])
+    assert clearance.shape == (11,) and np.all(clearance < 1e-3), clearance
+    with (out / "dynamics" / "piece" / "range.csv").open(encoding="utf-8") as f:
+        column = [float(r["seabed_clearance_min_m"]) for r in csv.DictReader(f)]
+    np.testing.assert_allclose(clearance, column, atol=2e-6)

@@ -63,6 +63,14 @@ void RangeGraphs::accumulate(const std::vector<solver::LineSnapshot>& lines, dou
     r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
     r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);
     r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
+    if (m_seabed.surface) {
+      if (r.seabedClearanceMin.empty())
+        r.seabedClearanceMin.assign(s.position.size(), std::numeric_limits<double>::infinity());
+      for (std::size_t i = 0; i < s.position.size() && i < m_seabed.radius[l].size(); ++i)
+        r.seabedClearanceMin[i] =
+            std::min(r.seabedClearanceMin[i],
+                     std::max(0.0, m_seabed.surface->gap(s.position[i], m_seabed.radius[l][i])));
+    }
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < s.tension.size(); ++i)
       // Clear of the seabed by more than half a diameter: a laid chain pushed about by a current hops by

@@ -33,6 +33,9 @@ class RangeGraphs {
     double slackTime = 0.0;  ///< time with the lowest tension below zero [s]
     bool slack = false;      ///< in an event now
     double retension = 1.0;  ///< [N]
+    /// Smallest clearance of the line's surface to the seabed along its normal over the run [m] (0: on the
+    /// seabed), per node: empty without a seabed (setSeabed).
+    std::vector<double> seabedClearanceMin;
     /// Wall tension [N], sum [N s] (LineSnapshot::wallTension): pipe lines only, empty otherwise.
     std::vector<double> wallTensionMin, wallTensionMax, wallTensionSum;
   };

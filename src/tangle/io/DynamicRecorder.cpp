@@ -156,7 +156,8 @@ void DynamicRecorder::writeRanges() const {
     f.write(std::string("arc_length_m,tension_min_N,tension_max_N,tension_mean_N,") +
             (wall ? "wall_tension_min_N,wall_tension_max_N,wall_tension_mean_N," : "") +
             (bending ? "bending_moment_min_Nm,bending_moment_max_Nm,bending_moment_mean_Nm," : "") +
-            "curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m\n");
+            "curvature_min_1_per_m,curvature_max_1_per_m,curvature_mean_1_per_m" +
+            (r.seabedClearanceMin.empty() ? "" : ",seabed_clearance_min_m") + "\n");
     for (std::size_t i = 0; i < m_arc[l].size(); ++i) {
       std::string row = fmt::format("{:.6f},{:.6e},{:.6e},{:.6e},", m_arc[l][i], r.tensionMin[i], r.tensionMax[i],
                                     mean(r.tensionSum[i], r.tensionMin[i]));
@@ -166,8 +167,10 @@ void DynamicRecorder::writeRanges() const {
       if (bending)
         row += fmt::format("{:.6e},{:.6e},{:.6e},", r.momentMin[i], r.momentMax[i],
                            mean(r.momentSum[i], r.momentMin[i]));
-      f.write(row + fmt::format("{:.6e},{:.6e},{:.6e}\n", r.curvatureMin[i], r.curvatureMax[i],
-                                mean(r.curvatureSum[i], r.curvatureMin[i])));
+      row += fmt::format("{:.6e},{:.6e},{:.6e}", r.curvatureMin[i], r.curvatureMax[i],
+                         mean(r.curvatureSum[i], r.curvatureMin[i]));
+      if (!r.seabedClearanceMin.empty()) row += fmt::format(",{:.6f}", r.seabedClearanceMin[i]);
+      f.write(row + "\n");
     }
     f.close();
   }

@@ -16,6 +16,7 @@
 
 #include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/analysis/RangeGraphs.hpp"
+#include "tangle/analysis/SeabedImpacts.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
@@ -199,6 +200,9 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   } else {
     envelope->recordStatic(m_sim->state());
   }
+  // Impacts on the seabed (analysis::SeabedImpacts), as dynamics/seabed_impacts.csv.
+  analysis::SeabedImpacts seabedImpacts(m, m.spec().contact.impactVelocityThreshold);
+  seabedImpacts.start(m_sim->state());
   const double duration = m.spec().dynamics.duration;
   std::atomic<bool> stop{false};
   py::object error = py::none();
@@ -239,6 +243,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     const auto stepObserver = [&](const model::State& s, double dt) {
       ranges.accumulate(m_sim->sectionSnapshot(), dt);
       if (envelope) envelope->record(s);
+      seabedImpacts.commit(s, dt);
     };
     // Ctrl-C: Python's handler only sets a flag; it is seen here, with the GIL, before every step.
     const auto stopRequest = [&]() {
@@ -286,6 +291,27 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     }
   }
   out["line_failures"] = failures;
+  seabedImpacts.finish();
+  py::list impacts;
+  for (const analysis::SeabedImpact& e : seabedImpacts.events()) {
+    py::dict d;
+    d["line"] = m.lines()[static_cast<std::size_t>(e.line)].name;
+    d["kind"] = e.impact ? "impact" : "contact";
+    d["start_time_s"] = e.startTime;
+    d["end_time_s"] = e.endTime;
+    d["arc_length_m"] = e.arcLength;
+    d["position_m"] = py::make_tuple(e.position.x(), e.position.y(), e.position.z());
+    d["impact_velocity_m_s"] = e.impactVelocity;
+    d["impact_energy_J"] = e.impact ? py::object(py::float_(e.impactEnergy)) : py::object(py::none());
+    d["eq5_mass_kg"] = std::isnan(e.eq5Mass) ? py::object(py::none()) : py::object(py::float_(e.eq5Mass));
+    d["impact_phase_end_s"] = e.phaseEndTime;
+    d["impact_phase_work_J"] = e.phaseWork;
+    d["peak_force_N"] = e.peakForce;
+    d["impulse_Ns"] = e.impulse;
+    d["open_at_end"] = e.open;
+    impacts.append(d);
+  }
+  out["seabed_impacts"] = impacts;
   const auto nt = static_cast<py::ssize_t>(times.size());
   out["time_s"] = array(times, {nt});
   py::list lines;
@@ -326,6 +352,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     range["curvature_min_1_per_m"] = array(r.curvatureMin, {n});
     range["curvature_max_1_per_m"] = array(r.curvatureMax, {n});
     range["curvature_mean_1_per_m"] = mean(r.curvatureSum, r.curvatureMin);
+    if (!r.seabedClearanceMin.empty()) range["seabed_clearance_min_m"] = array(r.seabedClearanceMin, {n});
     // Extremes over every accepted step and slack events, as dynamics/summary.json.
     d["end_a_max_tension_N"] = r.endTensionMaxA;
     d["end_a_min_tension_N"] = r.endTensionMinA;
