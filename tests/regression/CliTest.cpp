@@ -268,7 +268,7 @@ TEST(Cli, TransientRunSaysSoOnceInsteadOfStormExtremes) {
   EXPECT_EQ(
       firstLine(out / "dynamics" / "mooring" / "range.csv"),
       "arc_length_m,tension_min_N,tension_max_N,tension_mean_N,curvature_min_1_per_m,curvature_max_1_per_m,"
-      "curvature_mean_1_per_m");
+      "curvature_mean_1_per_m,seabed_clearance_min_m");
   EXPECT_NE(firstLine(out / "dynamics" / "riser" / "range.csv").find("bending_moment_max_Nm"),
             std::string::npos);
   EXPECT_EQ(firstLine(out / "statics" / "mooring.csv"),
