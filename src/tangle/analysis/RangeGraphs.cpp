@@ -63,21 +63,22 @@ void RangeGraphs::accumulate(const std::vector<solver::LineSnapshot>& lines, dou
     r.endTensionMaxB = std::max(r.endTensionMaxB, s.endTensionB);
     r.endTensionMinA = std::min(r.endTensionMinA, s.endTensionA);
     r.endTensionMinB = std::min(r.endTensionMinB, s.endTensionB);
-    if (m_seabed.surface) {
-      if (r.seabedClearanceMin.empty())
-        r.seabedClearanceMin.assign(s.position.size(), std::numeric_limits<double>::infinity());
-      for (std::size_t i = 0; i < s.position.size() && i < m_seabed.radius[l].size(); ++i)
-        r.seabedClearanceMin[i] =
-            std::min(r.seabedClearanceMin[i],
-                     std::max(0.0, m_seabed.surface->gap(s.position[i], m_seabed.radius[l][i])));
-    }
+    // One clearance per node and step serves the seabed clearance range and the slack test.
+    if (m_seabed.surface && r.seabedClearanceMin.empty())
+      r.seabedClearanceMin.assign(s.position.size(), std::numeric_limits<double>::infinity());
     double lowest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < s.tension.size(); ++i)
-      // Clear of the seabed by more than half a diameter: a laid chain pushed about by a current hops by
-      // less.
-      if (!m_seabed.surface ||
-          m_seabed.surface->gap(s.position[i], m_seabed.radius[l][i]) > m_seabed.radius[l][i])
-        lowest = std::min(lowest, s.tension[i]);
+    for (std::size_t i = 0; i < s.tension.size(); ++i) {
+      bool suspended = true;
+      if (m_seabed.surface) {
+        const double radius = m_seabed.radius[l][i];
+        const double gap = m_seabed.surface->gap(s.position[i], radius);
+        r.seabedClearanceMin[i] = std::min(r.seabedClearanceMin[i], std::max(0.0, gap));
+        // Clear of the seabed by more than half a diameter: a laid chain pushed about by a current hops by
+        // less.
+        suspended = gap > radius;
+      }
+      if (suspended) lowest = std::min(lowest, s.tension[i]);
+    }
     if (lowest < 0.0) {
       if (!r.slack) ++r.slackEvents;
       r.slack = true;

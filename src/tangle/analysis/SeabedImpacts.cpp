@@ -36,30 +36,44 @@ std::vector<SeabedImpacts::NodeContact> SeabedImpacts::contactsOf(const model::S
   return out;
 }
 
+std::size_t SeabedImpacts::patchEnd(const std::vector<NodeContact>& contacts, std::size_t begin) {
+  std::size_t k = begin + 1;
+  while (k < contacts.size() && contacts[k].node - contacts[k - 1].node <= kReachNodes) ++k;
+  return k;
+}
+
+void SeabedImpacts::endPhase(SeabedImpact& e, double time, double normalVelocity) {
+  e.phaseOpen = false;
+  e.phaseEndTime = time;
+  e.phaseVelocityChange = normalVelocity - e.startNormalVelocity;
+  // Eq. 5 over the phase, when the approach was measurably stopped.
+  if (e.phaseVelocityChange > 0.0) {
+    e.eq5Mass = e.phaseImpulse / e.phaseVelocityChange;
+    if (e.impact) e.impactEnergy = 0.5 * e.eq5Mass * e.impactVelocity * e.impactVelocity;
+  }
+}
+
 void SeabedImpacts::start(const model::State& state) {
   m_events.clear();
   m_open.clear();
   m_lastVelocity = state.velocity;
   for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
+    const model::Line& line = m_model->lines()[static_cast<std::size_t>(l)];
     const std::vector<NodeContact> contacts = contactsOf(state, l);
-    for (std::size_t k = 0; k < contacts.size();) {
-      // A resting contact (statics): never an impact.
+    for (std::size_t begin = 0, k = 0; begin < contacts.size(); begin = k) {
+      k = patchEnd(contacts, begin);
+      // A resting contact (statics): never an impact. Where it is: its first node.
       SeabedImpact e;
       e.line = l;
       e.startTime = e.endTime = e.phaseEndTime = state.time;
-      e.firstNode = e.lastNode = contacts[k].node;
-      const std::size_t i = static_cast<std::size_t>(contacts[k].node);
-      e.arcLength = m_model->lines()[static_cast<std::size_t>(l)]
-                        .arcLength[i - static_cast<std::size_t>(
-                                           m_model->lines()[static_cast<std::size_t>(l)].firstNode)];
-      e.position = state.position[i];
+      e.firstNode = contacts[begin].node;
+      e.lastNode = contacts[k - 1].node;
+      e.arcLength = line.arcLength[static_cast<std::size_t>(e.firstNode - line.firstNode)];
+      e.position = state.position[static_cast<std::size_t>(e.firstNode)];
       e.phaseOpen = false;
       e.eq5Mass = std::numeric_limits<double>::quiet_NaN();
       double force = 0.0;
-      for (; k < contacts.size() && contacts[k].node - e.lastNode <= kReachNodes; ++k) {
-        e.lastNode = contacts[k].node;
-        force += contacts[k].force;
-      }
+      for (std::size_t j = begin; j < k; ++j) force += contacts[j].force;
       e.peakForce = force;
       e.lastForce = force;
       m_open.push_back(static_cast<int>(m_events.size()));
@@ -75,11 +89,8 @@ void SeabedImpacts::commit(const model::State& state, double dt) {
   for (int l = 0; l < static_cast<int>(m.lines().size()); ++l) {
     const model::Line& line = m.lines()[static_cast<std::size_t>(l)];
     const std::vector<NodeContact> contacts = contactsOf(state, l);
-    for (std::size_t k = 0; k < contacts.size();) {
-      // One patch: touching nodes at most kReachNodes apart.
-      const std::size_t begin = k;
-      for (++k; k < contacts.size() && contacts[k].node - contacts[k - 1].node <= kReachNodes; ++k) {
-      }
+    for (std::size_t begin = 0, k = 0; begin < contacts.size(); begin = k) {
+      k = patchEnd(contacts, begin);  // one patch: touching nodes at most kReachNodes apart
       const int first = contacts[begin].node, last = contacts[k - 1].node;
       double force = 0.0, weighted = 0.0, work = 0.0, before = 0.0;
       for (std::size_t j = begin; j < k; ++j) {
@@ -139,12 +150,8 @@ void SeabedImpacts::commit(const model::State& state, double dt) {
         e.phaseImpulse += impulse;
         e.phaseWork += work;
         e.lastNormalVelocity = meanVelocity;
-        if (meanVelocity >= 0.0) {
-          // The nodes stopped approaching: the impact phase ends (Eq. 5 over it).
-          e.phaseOpen = false;
-          e.phaseEndTime = state.time;
-          e.phaseVelocityChange = meanVelocity - e.startNormalVelocity;
-        }
+        // The nodes stopped approaching: the impact phase ends.
+        if (meanVelocity >= 0.0) endPhase(e, state.time, meanVelocity);
       }
     }
   }
@@ -152,20 +159,9 @@ void SeabedImpacts::commit(const model::State& state, double dt) {
   for (const int o : m_open)
     if (std::find(stillOpen.begin(), stillOpen.end(), o) == stillOpen.end()) {
       SeabedImpact& e = m_events[static_cast<std::size_t>(o)];
-      if (e.phaseOpen) {
-        e.phaseOpen = false;
-        e.phaseEndTime = e.endTime;
-        e.phaseVelocityChange = e.lastNormalVelocity - e.startNormalVelocity;
-      }
+      if (e.phaseOpen) endPhase(e, e.endTime, e.lastNormalVelocity);
     }
   m_open = std::move(stillOpen);
-  for (SeabedImpact& e : m_events) {
-    if (e.phaseOpen || !(e.impactVelocity > 0.0) || !std::isnan(e.eq5Mass)) continue;
-    if (e.phaseVelocityChange > 0.0) {
-      e.eq5Mass = e.phaseImpulse / e.phaseVelocityChange;
-      if (e.impact) e.impactEnergy = 0.5 * e.eq5Mass * e.impactVelocity * e.impactVelocity;
-    }
-  }
   m_lastVelocity = state.velocity;
 }
 
@@ -173,15 +169,7 @@ void SeabedImpacts::finish() {
   for (const int o : m_open) {
     SeabedImpact& e = m_events[static_cast<std::size_t>(o)];
     e.open = true;
-    if (e.phaseOpen) {
-      e.phaseOpen = false;
-      e.phaseEndTime = e.endTime;
-      e.phaseVelocityChange = e.lastNormalVelocity - e.startNormalVelocity;
-      if (e.phaseVelocityChange > 0.0) {
-        e.eq5Mass = e.phaseImpulse / e.phaseVelocityChange;
-        if (e.impact) e.impactEnergy = 0.5 * e.eq5Mass * e.impactVelocity * e.impactVelocity;
-      }
-    }
+    if (e.phaseOpen) endPhase(e, e.endTime, e.lastNormalVelocity);
   }
 }
 

@@ -30,8 +30,10 @@ namespace tangle::analysis {
 struct SeabedImpact {
   int line = 0;
   double startTime = 0.0, endTime = 0.0;  ///< [s]
-  double arcLength = 0.0;                 ///< where it began along the line (the first node to touch) [m]
-  Vec3 position = Vec3::Zero();           ///< that node's position at first contact [m]
+  /// Where it began along the line [m]: the node of the largest reaction at first contact (a resting
+  /// contact at the start: its first node).
+  double arcLength = 0.0;
+  Vec3 position = Vec3::Zero();           ///< that node's position then [m]
   int firstNode = 0, lastNode = 0;        ///< node range (global indices) over the event
   double impactVelocity = 0.0;            ///< v0 [m/s]
   double peakForce = 0.0;                 ///< largest total normal reaction of the event's nodes [N]
@@ -83,6 +85,10 @@ class SeabedImpacts {
     Vec3 normal = Vec3::UnitZ();  ///< the seabed's normal under it
   };
   std::vector<NodeContact> contactsOf(const model::State& state, int line) const;
+  /// End (exclusive) of the patch of `contacts` (sorted by node) that starts at `begin`.
+  static std::size_t patchEnd(const std::vector<NodeContact>& contacts, std::size_t begin);
+  /// Ends `e`'s impact phase at `time` [s] with the mean normal velocity then [m/s]: Eq. 5 mass and energy.
+  static void endPhase(SeabedImpact& e, double time, double normalVelocity);
 
   const model::Model* m_model;
   seabed::Seabed m_seabed;
