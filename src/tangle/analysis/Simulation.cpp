@@ -28,6 +28,10 @@ Simulation::Simulation(model::ModelSpec spec)
     m_vessels = std::make_unique<vessel::VesselSystem>(*m_model, *m_hydro);
     m_assembler->addContributor(m_vessels.get());
   }
+  if (vessel::HullContact::wanted(*m_model)) {
+    m_hullContact = std::make_unique<vessel::HullContact>(*m_model, m_state);
+    m_assembler->addContributor(m_hullContact.get());
+  }
   if (m_model->spec().contact.enabled) {
     m_contact = std::make_unique<contact::LineContact>(*m_model, m_model->spec().contact,
                                                        m_model->spec().dynamics.timeStep);

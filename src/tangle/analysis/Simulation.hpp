@@ -15,6 +15,7 @@
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
 #include "tangle/time/DynamicAnalysis.hpp"
+#include "tangle/vessel/HullContact.hpp"
 #include "tangle/vessel/VesselSystem.hpp"
 
 namespace tangle::analysis {
@@ -33,6 +34,8 @@ class Simulation {
   contact::LineContact* contact() { return m_contact.get(); }
   /// The vessels, or nullptr when the model has none.
   vessel::VesselSystem* vessels() { return m_vessels.get(); }
+  /// The contact with vessels' hulls, or nullptr when no vessel has a hull.
+  const vessel::HullContact* hullContact() const { return m_hullContact.get(); }
   /// The lines' failures (lines[].failure), or nullptr when no line has one.
   const LineFailure* lineFailure() const { return m_failure.get(); }
   /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
@@ -78,6 +81,7 @@ class Simulation {
   std::unique_ptr<hydro::HydroLoads> m_hydro;
   std::unique_ptr<contact::LineContact> m_contact;
   std::unique_ptr<vessel::VesselSystem> m_vessels;
+  std::unique_ptr<vessel::HullContact> m_hullContact;
   std::unique_ptr<LineFailure> m_failure;
   model::State m_state;
   core::ConsoleProgress* m_staticsProgress = nullptr;  // progress lines of the statics under way (solveStatics)

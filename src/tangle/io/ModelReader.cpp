@@ -1324,6 +1324,47 @@ void readContact(const Value& v, ModelSpec& spec) {
   }
 }
 
+/// hull_contact: {stiffness, line_stiffness, restitution, friction, friction_velocity, point_spacing,
+/// own_lines, exclude} (model::HullContactSpec; docs/model-format.md).
+void readHullContact(const Value& v, ModelSpec& spec) {
+  const Map m(v, {"stiffness", "line_stiffness", "restitution", "friction", "friction_velocity",
+                  "point_spacing", "own_lines", "exclude"});
+  const model::HullContactSpec d;
+  model::HullContactSpec& h = spec.hullContact;
+  h.sourceLine = v.line();
+  h.stiffness =
+      m.number("stiffness", d.stiffness,
+               positiveUpTo(kMaxStiffness).withHint("of each hull point inside another hull [N/m]"));
+  h.lineStiffness = m.number("line_stiffness", d.lineStiffness,
+                             positiveUpTo(kMaxStiffness).withHint("per metre of line inside a hull [N/m/m]"));
+  h.restitution = m.number("restitution", d.restitution, closed(0.0, 1.0));
+  h.friction = m.number("friction", d.friction, nonNegativeUpTo(10.0));
+  h.frictionVelocity = m.number("friction_velocity", d.frictionVelocity, positiveUpTo(kMaxSpeed));
+  h.pointSpacing = m.number("point_spacing", d.pointSpacing, positiveUpTo(kMaxCoordinate));
+  h.ownLines = m.boolean("own_lines", d.ownLines);
+  if (const std::optional<Value> exclude = m.find("exclude")) {
+    for (const Value& item : exclude->items(1)) {
+      const std::vector<Value> names = item.items(2);
+      if (names.size() != 2) item.expected("a pair [line or vessel, vessel] (hull_contact.exclude)");
+      const std::string first = names[0].text("a line or vessel name");
+      const std::string second = names[1].text("a vessel name");
+      const auto isVessel = [&](const std::string& n) {
+        return std::any_of(spec.vessels.begin(), spec.vessels.end(),
+                           [&](const model::VesselSpec& vs) { return vs.name == n; });
+      };
+      const bool isLine = std::any_of(spec.lines.begin(), spec.lines.end(),
+                                      [&](const model::LineSpec& l) { return l.name == first; });
+      if (!isLine && !isVessel(first))
+        names[0].fail("unknown line or vessel '" + first + "' in hull_contact.exclude");
+      if (!isVessel(second)) names[1].fail("unknown vessel '" + second + "' in hull_contact.exclude");
+      h.exclude.emplace_back(first, second);
+    }
+  }
+  if (std::none_of(spec.vessels.begin(), spec.vessels.end(),
+                   [](const model::VesselSpec& vs) { return !vs.hull.empty(); }))
+    v.fail("hull_contact applies to vessels with a hull: give a vessel a 'hull' (a list of shapes)");
+}
+
 /// fatigue: {start_time, occurrence, design_factor, sn_curves, tn_curves, sections} (docs/model-format.md).
 void readFatigue(const Value& v, ModelSpec& spec) {
   const Map m(v, {"start_time", "occurrence", "design_factor", "sn_curves", "tn_curves", "sections"});
@@ -1603,12 +1644,51 @@ model::RaoTable readRaos(const Value& v) {
   return t;
 }
 
+/// vessels[].hull: a list of shapes in vessel axes, {shape: box, centre, size}, {shape: cylinder | capsule,
+/// end_a, end_b, diameter} (geometry::HullShape).
+std::vector<geometry::HullShape> readHull(const Value& v) {
+  std::vector<geometry::HullShape> out;
+  for (const Value& item : v.items(1)) {
+    const Map m(item, {"shape", "centre", "size", "end_a", "end_b", "diameter"});
+    const std::string kind =
+        m.get("shape", "box, cylinder or capsule")
+            .choice<std::string>({{"box", "box"}, {"cylinder", "cylinder"}, {"capsule", "capsule"}});
+    if (kind == "box") {
+      for (const char* key : {"end_a", "end_b", "diameter"})
+        if (m.find(key)) m.get(key, "").fail(fmt::format("a box has no {}: give centre and size", key));
+      const Vec3 centre = m.get("centre", "the box's centre [x, y, z] in vessel axes [m]").position();
+      const Value sizeValue = m.get("size", "the box's lengths [along x, along y, along z] [m]");
+      const Vec3 size = sizeValue.vec3();
+      if (!(size.array() > 0.0).all() || (size.array() > kMaxCoordinate).any())
+        sizeValue.fail(fmt::format("expected three lengths in (0, {}] m", numberText(kMaxCoordinate)));
+      out.push_back(geometry::HullShape::box(centre, size));
+      continue;
+    }
+    for (const char* key : {"centre", "size"})
+      if (m.find(key))
+        m.get(key, "").fail(fmt::format("a {} has no {}: give end_a, end_b and diameter", kind, key));
+    const Vec3 a = m.get("end_a", "the centre of one end [x, y, z] in vessel axes [m]").position();
+    const Value bValue = m.get("end_b", "the centre of the other end [x, y, z] in vessel axes [m]");
+    const Vec3 b = bValue.position();
+    const double diameter = m.number("diameter", positiveUpTo(kMaxCoordinate));
+    if (kind == "cylinder") {
+      if ((b - a).norm() <= 0.0)
+        bValue.fail("a cylinder's end_b must differ from its end_a (a sphere is a capsule)");
+      out.push_back(geometry::HullShape::cylinder(a, b, diameter));
+    } else {
+      out.push_back(geometry::HullShape::capsule(a, b, diameter));
+    }
+  }
+  return out;
+}
+
 void readVessels(const Value& v, ModelSpec& spec) {
   NameRegistry names("vessel");
   for (const Value& item : v.items(1, ItemLabel::Name)) {
-    const Map m(item, {"name", "mode", "position", "heading", "mass", "inertia", "added_mass", "linear_damping",
-                       "quadratic_damping", "hydrostatic_stiffness", "current_coefficients", "current_areas",
-                       "wind_coefficients", "wind_areas", "wave_drift", "raos", "motion", "held_in_statics"});
+    const Map m(
+        item, {"name", "mode", "position", "heading", "mass", "inertia", "added_mass", "linear_damping",
+               "quadratic_damping", "hydrostatic_stiffness", "current_coefficients", "current_areas",
+               "wind_coefficients", "wind_areas", "wave_drift", "raos", "motion", "held_in_statics", "hull"});
     model::VesselSpec vs;
     vs.sourceLine = item.line();
     vs.name = names.add(m);
@@ -1657,6 +1737,7 @@ void readVessels(const Value& v, ModelSpec& spec) {
       }
       vs.motionPeriod = mm.number("period", positiveUpTo(kMaxDuration));
     }
+    if (const std::optional<Value> hull = m.find("hull")) vs.hull = readHull(*hull);
     spec.vessels.push_back(std::move(vs));
   }
 }
@@ -1680,8 +1761,12 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
     TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},
     TopLevelBlock{"contact", false, "a map of line-to-line contact settings", readContact},
+    TopLevelBlock{"hull_contact", false,
+                  "a map of hull contact settings {stiffness, line_stiffness, restitution, ...}",
+                  readHullContact},
     TopLevelBlock{"clearance", false, "a map {required, pairs} (DNV-RP-F203 clearance check)", readClearance},
-    TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}", readWakes},
+    TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}",
+                  readWakes},
     TopLevelBlock{"output", false, "a map of output settings", readOutput},
     TopLevelBlock{"fatigue", false, "a map {sections, sn_curves, tn_curves, ...} (fatigue of the dynamics)",
                   readFatigue},

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tangle/core/Types.hpp"
+#include "tangle/geometry/HullShape.hpp"
 #include "tangle/seabed/SeabedSpec.hpp"
 #include "tangle/seabed/SeabedSurface.hpp"
 #include "tangle/section/LineType.hpp"
@@ -128,6 +129,8 @@ struct VesselSpec {
   std::array<double, 6> motionPhase{};      ///< [rad]
   double motionPeriod = 10.0;               ///< [s]
   bool heldInStatics = false;  ///< a free vessel held at its position in statics (a DP unit on station), released at t = 0
+  /// Solids of its hull that lines and other hulls touch (vessels[].hull), vessel axes; empty: none.
+  std::vector<geometry::HullShape> hull;
   int sourceLine = 0;
 };
 
@@ -408,6 +411,27 @@ struct ClearanceSpec {
   std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs checked (empty: see ClearanceEnvelope)
 };
 
+/// Contact of lines and hulls with hulls (hull_contact; vessel::HullContact): one law for all of it, the
+/// elastic penalty with hysteretic restitution of the distributed line contact
+/// (contact::HystereticRestitution).
+struct HullContactSpec {
+  /// Hull to hull: stiffness of each surface point of one hull inside the other [N/m].
+  double stiffness = 1.0e7;
+  /// Line on hull: stiffness per metre of line inside a hull [N/m per m].
+  double lineStiffness = 1.0e6;
+  double restitution = 0.5;        ///< coefficient of restitution e in [0, 1] [-]
+  double friction = 0.0;           ///< Coulomb friction coefficient [-] (dynamics)
+  double frictionVelocity = 0.01;  ///< friction regularisation velocity [m/s]
+  /// Spacing of a hull's surface points (hull to hull) and of the points along a line's elements [m].
+  double pointSpacing = 1.0;
+  /// A line tied to a vessel touches that vessel's hull too (its points inside the hull at the start are
+  /// left out); false: it passes through it (a riser through a moonpool).
+  bool ownLines = false;
+  /// Pairs [line or vessel, vessel] that never touch.
+  std::vector<std::pair<std::string, std::string>> exclude;
+  int sourceLine = 0;
+};
+
 /// An S-N curve of the fatigue analysis as numbers (analysis::SnCurve; DNV-RP-C203 (2021) section 2.4):
 /// log10 N = log10 a - m log10(S (t / t_ref)^k), S in MPa, the second slope beyond the knee.
 struct SnCurveSpec {
@@ -514,6 +538,7 @@ struct ModelSpec {
   StaticSpec statics;
   DynamicSpec dynamics;
   ContactSpec contact;
+  HullContactSpec hullContact;  ///< used when a vessel has a hull
   std::vector<WakeSpec> wakes;  ///< wake interference pairs (empty: none)
   ClearanceSpec clearance;
   OutputSpec output;

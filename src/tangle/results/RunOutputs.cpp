@@ -67,7 +67,7 @@ void updateMaxOffsets(const model::Model& m, const model::State& state, std::vec
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
                          const std::vector<solver::LineSnapshot>& lines, double maxStopForce,
                          const model::Model& m, const std::vector<double>& maxOffset,
-                         const analysis::LineFailure* failure) {
+                         const analysis::LineFailure* failure, const vessel::HullContact* hulls) {
   core::OutputFile out(dir / "dynamics" / "summary.json");
   core::JsonWriter j(out.stream());
   j.beginObject();
@@ -137,6 +137,28 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
     }
   }
   j.endArray();
+  // The contacts with hulls (vessels[].hull; vessel::HullImpacts), when a vessel has one.
+  if (hulls) {
+    j.key("hull_impacts");
+    j.beginArray();
+    for (const vessel::HullImpact& e : hulls->impacts().events()) {
+      if (!e.impact) continue;
+      j.beginObject();
+      j.field("body_a", e.bodyA);
+      j.field("body_b", e.bodyB);
+      j.field("kind", e.lineOnHull ? "line on hull" : "hull on hull");
+      j.field("start_time_s", e.startTime);
+      j.field("impact_velocity_m_s", e.impactVelocity);
+      j.field("rebound_velocity_m_s", e.reboundVelocity);
+      j.field("peak_force_N", e.peakForce);
+      j.field("impulse_Ns", e.impulse);
+      j.field("bodies_effective_mass_kg", e.bodiesMass);
+      j.field("eq5_mass_kg", e.eq5Mass);
+      j.field("impact_energy_J", e.impactEnergy);
+      j.endObject();
+    }
+    j.endArray();
+  }
   j.key("vessels");
   j.beginArray();
   for (std::size_t v = 0; v < maxOffset.size(); ++v) {
@@ -266,6 +288,7 @@ bool RunOutputs::writeStatics() {
   std::unique_ptr<contact::ClearanceEnvelope>& envelope = m_envelope;
   std::unique_ptr<io::HtmlReport>& report = m_report;
   log.info(modelSummary(m));
+  if (const vessel::HullContact* hulls = sim.hullContact()) log.info(hulls->describe());
   log.warning(warningText(m.spec()));
   if (const analysis::LineFailure* failure = sim.lineFailure())
     for (const analysis::LineBreak& b : failure->breaks()) log.info(b.description + "\n");
@@ -663,7 +686,12 @@ bool RunOutputs::runDynamics() {
     if (h5) h5->writeClashDamage(damage, cs.damageEnergyThreshold);
     if (report) timed([&] { report->setClashDamage(damage); });
   }
-  writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset, sim.lineFailure());
+  if (const vessel::HullContact* hulls = sim.hullContact()) {
+    hulls->impacts().write(outDir / "dynamics");
+    log.info(hulls->impacts().terminalSummary());
+  }
+  writeDynamicSummary(outDir, dyn, recorder, lines, maxStopForce, m, maxOffset, sim.lineFailure(),
+                      sim.hullContact());
   if (const analysis::LineFailure* failure = sim.lineFailure())
     for (const analysis::LineBreak& b : failure->breaks())
       if (std::isfinite(b.time)) log.info(b.description + "\n");
