@@ -72,6 +72,8 @@ HullContact::HullContact(const model::Model& model, const model::State& start)
     h.shapes = spec.hull;
     for (const geometry::HullShape& s : h.shapes) {
       h.reach = std::max(h.reach, s.reach(Vec3::Zero()));
+      h.shapeCentre.push_back(s.centre());
+      h.shapeReach.push_back(s.reach(s.centre()));
       for (const Vec3& p : s.surfacePoints(m_spec.pointSpacing)) {
         // A point inside another shape of the same hull (a column's ring inside a pontoon) is never on the
         // hull's surface: left out.
@@ -176,14 +178,17 @@ HullContact::HullContact(const model::Model& model, const model::State& start)
   }
 }
 
-geometry::ShapeDistance HullContact::hullDistance(const model::State& state, const Hull& h,
-                                                  const Vec3& p) const {
+geometry::ShapeDistance HullContact::hullDistance(const model::State& state, const Hull& h, const Vec3& p,
+                                                  double cutoff) const {
   const Mat3& rotation = state.triad[static_cast<std::size_t>(h.node)];
   const Vec3 local = rotation.transpose() * (p - state.position[static_cast<std::size_t>(h.node)]);
   geometry::ShapeDistance best;
   best.distance = kInf;
-  for (const geometry::HullShape& s : h.shapes) {
-    const geometry::ShapeDistance d = s.distance(local);
+  for (std::size_t k = 0; k < h.shapes.size(); ++k) {
+    // A lower bound first: no point of the shape is nearer than |p - c| - reach (its bounding sphere).
+    const double bound = (local - h.shapeCentre[k]).norm() - h.shapeReach[k];
+    if (bound >= best.distance || bound >= cutoff) continue;
+    const geometry::ShapeDistance d = h.shapes[k].distance(local);
     if (d.distance < best.distance) best = d;
   }
   best.normal = rotation * best.normal;
@@ -221,7 +226,7 @@ void HullContact::forEachPoint(const model::State& state, double reach, bool vel
         for (int j = 0; j <= n; ++j) {
           const double t = static_cast<double>(j) / n;
           point.position = (1.0 - t) * x1 + t * x2;
-          const geometry::ShapeDistance d = hullDistance(state, b, point.position);
+          const geometry::ShapeDistance d = hullDistance(state, b, point.position, reach + radius);
           point.gap = d.distance - radius;
           if (!(point.gap < reach)) continue;
           point.normal = d.normal;
@@ -243,7 +248,7 @@ void HullContact::forEachPoint(const model::State& state, double reach, bool vel
     for (const Vec3& local : a.points) {
       point.position = centreA + rotationA * local;
       if ((point.position - centreB).norm() > b.reach + reach) continue;
-      const geometry::ShapeDistance d = hullDistance(state, b, point.position);
+      const geometry::ShapeDistance d = hullDistance(state, b, point.position, reach);
       point.gap = d.distance;
       if (!(point.gap < reach)) continue;
       point.normal = d.normal;
@@ -342,28 +347,39 @@ double HullContact::limitStep(const model::State& state) {
   std::vector<char> near(m_pairs.size(), 0);
   std::vector<double> mass(m_pairs.size(), kInf);
   const double lastDt = m_lastDt > 0.0 ? m_lastDt : m_model->spec().dynamics.timeStep;
+  const double threshold = m_model->spec().contact.impactVelocityThreshold;
   forEachPoint(state, kNearReach, true, [&](const Point& p, int, double) {
     const std::size_t k = static_cast<std::size_t>(p.pair);
     const double approach = -p.normal.dot(p.relativeVelocity);
-    if (p.gap < 0.0) {
-      ++touching[k];
-    } else if (approach > 0.0 && p.gap < 3.0 * approach * lastDt) {
+    if (p.gap < 0.0) ++touching[k];
+    // Only an impact needs the short steps: a resting or slowly closing contact (a leg lying on a pontoon)
+    // is as well resolved by the integrator's own step as the seabed's contact is.
+    // In contact, closing or opening (an impact's unloading needs the short steps as its loading does).
+    if ((p.gap < 0.0 ? std::abs(approach) : approach) <= threshold) return;
+    if (p.gap < 0.0 || p.gap < 3.0 * approach * lastDt)
       near[k] = 1;
-    } else {
+    else
       return;
-    }
     if (m_pairs[k].line < 0 && !std::isfinite(mass[k]))
       mass[k] = bodiesMass(state, m_pairs[k], p.position, p.normal);
   });
+  // An impact keeps its short steps for two half periods after its pair last moved fast (through the deepest
+  // point, where the rate passes zero, and the unloading), then lets them grow.
+  m_impactUntil.resize(m_pairs.size(), -kInf);
+  m_impactLimit.resize(m_pairs.size(), kInf);
   double limit = kInf;
   for (std::size_t k = 0; k < m_pairs.size(); ++k) {
-    if (!touching[k] && !near[k]) continue;
-    const Pair& pair = m_pairs[k];
-    const double halfPeriod =
-        pair.line >= 0
-            ? m_lineHalfPeriod[static_cast<std::size_t>(pair.line)]
-            : std::numbers::pi * std::sqrt(mass[k] / (m_spec.stiffness * std::max(1, touching[k])));
-    if (std::isfinite(halfPeriod)) limit = std::min(limit, halfPeriod / kStepsPerContact);
+    if (near[k]) {
+      const Pair& pair = m_pairs[k];
+      const double halfPeriod =
+          pair.line >= 0
+              ? m_lineHalfPeriod[static_cast<std::size_t>(pair.line)]
+              : std::numbers::pi * std::sqrt(mass[k] / (m_spec.stiffness * std::max(1, touching[k])));
+      if (!std::isfinite(halfPeriod)) continue;
+      m_impactLimit[k] = halfPeriod / kStepsPerContact;
+      m_impactUntil[k] = state.time + 2.0 * halfPeriod;
+    }
+    if (near[k] || state.time < m_impactUntil[k]) limit = std::min(limit, m_impactLimit[k]);
   }
   return limit;
 }

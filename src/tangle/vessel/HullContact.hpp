@@ -14,7 +14,7 @@
 /// At each point inside a shape: penetration p = -(signed distance - radius) > 0, outward normal n of that
 /// shape (the deepest shape when a point is inside several).
 ///
-/// Law (docs/theory.md 13): the elastic penalty k p (k = hull_contact.stiffness per hull point, or
+/// Law (docs/theory.md 10.9): the elastic penalty k p (k = hull_contact.stiffness per hull point, or
 /// line_stiffness * w per line point) times the hysteretic restitution factor of the distributed line
 /// contact (contact::HystereticRestitution: loads along (1 + a) k p, unloads along (1 - a) k p, so the
 /// rebound speed is e v0 whatever the masses, the number of points or the stiffness), and regularised
@@ -28,7 +28,9 @@
 /// lever arms is left out (a second-order term, f times the curvature: it costs Newton iterations, not
 /// accuracy).
 ///
-/// The time step is limited near and during contact to a 20th of the contact's half period
+/// The time step is limited, while a pair in contact closes or opens faster than
+/// contact.impact_velocity_threshold or closes that fast within three steps of contact (and for two half
+/// periods after: through the deepest point and the unloading), to a 20th of the contact's half period
 /// pi sqrt(m / k) (a hull pair: the bodies' effective mass and the points in contact; a line: its mass per
 /// metre over the stiffness per metre).
 
@@ -79,6 +81,8 @@ class HullContact final : public solver::LoadContributor {
     std::vector<geometry::HullShape> shapes;
     std::vector<Vec3> points;  ///< surface points, vessel axes [m]
     double reach = 0.0;        ///< bounding radius about the reference point [m]
+    std::vector<Vec3> shapeCentre;   ///< each shape's centre, vessel axes [m]
+    std::vector<double> shapeReach;  ///< each shape's bounding radius about it [m]
     Mat6 mass = Mat6::Zero();  ///< mass with added mass, vessel axes [kg, kg m^2]
   };
   struct Pair {
@@ -92,8 +96,10 @@ class HullContact final : public solver::LoadContributor {
   /// Calls `visit` with every point of every pair whose gap is below `reach` [m] (0: in contact only).
   template <class Visit>
   void forEachPoint(const model::State& state, double reach, bool velocities, Visit&& visit) const;
-  /// The signed distance of a global point to hull h at a state (deepest shape) with its normal.
-  geometry::ShapeDistance hullDistance(const model::State& state, const Hull& h, const Vec3& p) const;
+  /// The signed distance of a global point to hull h at a state (deepest shape) with its normal; shapes whose
+  /// bounding sphere is `cutoff` [m] or more away are skipped (the distance is +inf when all are).
+  geometry::ShapeDistance hullDistance(const model::State& state, const Hull& h, const Vec3& p,
+                                       double cutoff) const;
   /// The bodies' effective mass along n at point p of a pair [kg] (NaN for a line; inf for two held hulls).
   double bodiesMass(const model::State& state, const Pair& pair, const Vec3& p, const Vec3& n) const;
   /// The 6x6 mass of hull h in global axes at a state.
@@ -107,6 +113,8 @@ class HullContact final : public solver::LoadContributor {
   std::unique_ptr<HullImpacts> m_impacts;
   std::vector<double> m_lineHalfPeriod;  ///< per line: pi sqrt(m' / k_line) [s]
   double m_lastDt = 0.0;
+  std::vector<double> m_impactUntil;  ///< per pair: the step limit holds until this time [s] (limitStep)
+  std::vector<double> m_impactLimit;  ///< per pair: that limit [s]
 };
 
 }  // namespace tangle::vessel

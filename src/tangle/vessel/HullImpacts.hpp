@@ -11,9 +11,9 @@
 ///   contact; the ratio to v0 is the measured restitution.
 /// - Bodies' effective mass at the contact point along its normal (both hulls' 6x6 mass with added mass,
 ///   1/m = sum over the free bodies of [n, r x n]^T M^-1 [n, r x n]; a fixed or prescribed hull counts as
-///   infinite; e.g. Zhang 1999, "Simplified analysis of ship collisions", or DNV-RP-C204's energy of a
-///   collision between a ship and a fixed platform), and the impact energy 1/2 m v0^2 with it. For a line on
-///   a hull the line's share is not a body mass: its effective mass is then the Eq. 5 one.
+///   infinite; Pedersen & Zhang 1998, "On impact mechanics in ship collisions", Marine Structures 11, or the
+///   energy of a ship-platform collision in DNV-RP-C204), and the impact energy 1/2 m v0^2 with it. For a
+///   line on a hull the line's share is not a body mass: its effective mass is then the Eq. 5 one.
 /// - Eq. 5 mass (the seed paper): the event's impulse / (v0 + rebound speed), the mass that changed
 ///   momentum; for two free hulls it should equal the bodies' effective mass (restitution test).
 
