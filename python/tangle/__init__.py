@@ -147,6 +147,11 @@ class DynamicResults:
     ``end_time_s``, ``arc_length_m``, ``position_m`` (x, y, z), ``impact_velocity_m_s``, ``impact_energy_J``
     and ``eq5_mass_kg`` (None when not measured), ``impact_phase_end_s``, ``impact_phase_work_J``,
     ``peak_force_N``, ``impulse_Ns``, ``open_at_end``.
+    hull_impacts: one dict per contact event with a vessel's hull (the rows of dynamics/hull_impacts.csv;
+    empty without hulls): ``body_a`` (line or vessel), ``body_b`` (vessel), ``kind`` (``line_impact``,
+    ``hull_impact``, ``line_contact``, ``hull_contact``), ``start_time_s``, ``end_time_s``, ``position_m``,
+    ``impact_velocity_m_s``, ``rebound_velocity_m_s``, ``peak_force_N``, ``impulse_Ns``, ``max_penetration_m``,
+    ``bodies_effective_mass_kg``, ``eq5_mass_kg``, ``impact_energy_J`` (None where not measured), ``open_at_end``.
     """
 
     completed: bool
@@ -169,6 +174,7 @@ class DynamicResults:
     converged_blocks_left_out: int = 0
     line_failures: list[dict[str, Any]] = field(default_factory=list)
     seabed_impacts: list[dict[str, Any]] = field(default_factory=list)
+    hull_impacts: list[dict[str, Any]] = field(default_factory=list)
 
     def time_history(self, line: str, quantity: str, arc_length_m: float) -> np.ndarray:
         """Time history [time] of a per-node result (``effective_tension_N``, ``bending_moment_Nm``,

@@ -439,3 +439,35 @@ def test_seabed_impacts_equal_the_cli(tmp_path: Path) -> None:
     with (out / "dynamics" / "piece" / "range.csv").open(encoding="utf-8") as f:
         column = [float(r["seabed_clearance_min_m"]) for r in csv.DictReader(f)]
     np.testing.assert_allclose(clearance, column, atol=2e-6)
+
+
+def test_hull_impacts_equal_the_cli(tmp_path: Path) -> None:
+    """A pipe piece dropped onto a fixed pontoon's box hull (issue 46, hulls that can be hit): its impact in
+    DynamicResults.hull_impacts is the CLI's dynamics/hull_impacts.csv row, and its summary.json entry."""
+    m = tangle.Model({
+        "environment": {"water_depth": 100},
+        "line_types": [{"name": "pipe", "outer_diameter": 0.5, "mass_per_length": 300, "axial_stiffness": 1.0e10,
+                        "bending_stiffness": 1.0e9, "drag_normal": 0, "drag_axial": 0}],
+        "vessels": [{"name": "pontoon", "mode": "fixed", "position": [0, 0, 0],
+                     "hull": [{"shape": "box", "centre": [0, 0, -20], "size": [20, 20, 10]}]}],
+        "hull_contact": {"line_stiffness": 1.0e8, "restitution": 0.5, "point_spacing": 0.5},
+        "lines": [{"name": "piece", "end_a": {"type": "free", "position": [0, -5, -14.25]},
+                   "end_b": {"type": "free", "position": [0, 5, -14.25]},
+                   "sections": [{"type": "pipe", "length": 10, "elements": 10}],
+                   "start_shape": [[0, -5, -14.25], [0, 5, -14.25]]}],
+        "statics": {"method": "none"},
+        "dynamics": {"duration": 0.9, "time_step": 0.0005, "output_interval": 0.05},
+    }, "pontoon")
+    res = m.run_dynamics()
+    assert res.completed
+    [e] = [e for e in res.hull_impacts if e["kind"] == "line_impact"][:1]
+    assert e["body_a"] == "piece" and e["body_b"] == "pontoon"
+    assert e["impact_velocity_m_s"] > 0.5 and e["impact_energy_J"] > 0.0 and e["bodies_effective_mass_kg"] is None
+    out = cli_run(m, tmp_path / "pontoon")
+    with (out / "dynamics" / "hull_impacts.csv").open(encoding="utf-8") as f:
+        [c] = [r for r in csv.DictReader(f) if r["kind"] == "line_impact"][:1]
+    for key in ("start_time_s", "impact_velocity_m_s", "rebound_velocity_m_s", "impact_energy_J", "eq5_mass_kg",
+                "peak_force_N", "impulse_Ns"):
+        assert e[key] == pytest.approx(float(c[key]), rel=1e-4), key
+    summary = json.loads((out / "dynamics" / "summary.json").read_text())
+    assert summary["hull_impacts"][0]["impact_energy_J"] == pytest.approx(e["impact_energy_J"], rel=1e-9)

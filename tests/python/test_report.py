@@ -278,12 +278,56 @@ dynamics: {duration: 1.2, time_step: 0.0005, output_interval: 0.05}
             with (out / "dynamics" / "seabed_impacts.csv").open(encoding="utf-8") as f:
                 rows = list(csv.DictReader(f))
             assert rows and rows[0]["kind"] == "impact", rows
+            # The impact is a row of the page's impacts table.
+            assert [i["kind"] for i in d["impacts"]] == ["line on seabed"] * len(d["impacts"]) and d["impacts"]
             status = page_status(out / "report.html", profile)
             assert status["ready"] and status["errors"] == [], status
+            assert status["impactRows"] == len(d["impacts"]), status
+
+        def hulls() -> None:
+            # Hulls that can be hit (issue 46): the page draws a vessel as its hull's shapes and lists the
+            # impacts on them. A pipe piece dropped onto a fixed pontoon (a box) beside a column (a cylinder).
+            model = tmp / "hull.yaml"
+            model.write_text("""environment: {water_depth: 100}
+line_types:
+  - {name: pipe, outer_diameter: 0.5, mass_per_length: 300, axial_stiffness: 1.0e10, bending_stiffness: 1.0e9,
+     drag_normal: 0, drag_axial: 0}
+vessels:
+  - name: pontoon
+    mode: fixed
+    position: [0, 0, 0]
+    hull:
+      - {shape: box, centre: [0, 0, -20], size: [20, 20, 10]}
+      - {shape: cylinder, end_a: [8, 8, -15], end_b: [8, 8, 10], diameter: 4}
+      - {shape: capsule, end_a: [-8, -8, -15], end_b: [-8, -8, 5], diameter: 2}
+hull_contact: {line_stiffness: 1.0e8, restitution: 0.5, point_spacing: 0.5}
+lines:
+  - name: piece
+    end_a: {type: free, position: [0, -5, -14.25]}
+    end_b: {type: free, position: [0, 5, -14.25]}
+    sections: [{type: pipe, length: 10, elements: 10}]
+    start_shape: [[0, -5, -14.25], [0, 5, -14.25]]
+statics: {method: none}
+dynamics: {duration: 0.9, time_step: 0.0005, output_interval: 0.05}
+""", encoding="utf-8")
+            out = tmp / "hull"
+            r2 = subprocess.run([tangle, "run", str(model), "-o", str(out), "-q", "--no-plots"], capture_output=True,
+                                text=True, timeout=60)
+            assert r2.returncode == 0, (r2.returncode, r2.stderr)
+            d = embedded_data(out / "report.html")
+            assert [h["kind"] for h in d["vessels"][0]["hull"]] == ["box", "cylinder", "capsule"], d["vessels"]
+            assert d["vessels"][0]["hull"][0]["s"] == [20, 20, 10]
+            kinds = [i["kind"] for i in d["impacts"]]
+            assert kinds and set(kinds) == {"line on hull"}, kinds
+            assert d["impacts"][0]["bodies"] == "piece / pontoon" and d["impacts"][0]["energy"] > 0.0
+            status = page_status(out / "report.html", profile)
+            assert status["ready"] and status["errors"] == [], status
+            assert status["impactRows"] == len(kinds) and status["vessels"] == 1, status
 
         tests = [("data", lambda: check_data(run, data)), ("page", lambda: check_page(run, data, profile)),
                  ("screenshot", lambda: check_screenshot(run, profile, tmp)), ("rebuild", rebuild),
-                 ("view", view), ("failed statics", failed_statics), ("sloping seabed", sloping_seabed)]
+                 ("view", view), ("failed statics", failed_statics), ("sloping seabed", sloping_seabed),
+                 ("hulls", hulls)]
         for name, test in tests:
             try:
                 test()

@@ -167,7 +167,11 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
         pulls += node == model.lines()[static_cast<std::size_t>(l)].firstNode ? s.endTensionForceA
                                                                                 : s.endTensionForceB;
       }
+      // Hull contact (vessel::HullContact, the only contact that loads a vessel node), with the sign of an
+      // external load; a term only in models with a hull.
       b.terms = {{"body loads", r.body.head<3>()}, {"station keeping", r.hold.head<3>()}, {"lines", pulls}};
+      if (simulation.hullContact())
+        b.terms.push_back({"hull contact", -t.contact.segment<3>(dofs.firstDof(r.node))});
       b.scale = 1.0;
       for (const auto& term : b.terms) {
         b.residual += term.second;

@@ -290,6 +290,33 @@ void HtmlReport::setClashDamage(const std::vector<analysis::LineClashDamage>& da
   });
 }
 
+void HtmlReport::addHullImpacts(const std::vector<vessel::HullImpact>& events) {
+  for (const vessel::HullImpact& e : events) {
+    if (!e.impact) continue;
+    const double mass = e.lineOnHull || !std::isfinite(e.bodiesMass) ? e.eq5Mass : e.bodiesMass;
+    m_impacts.push_back(fmt::format(
+        "{{\"bodies\":{},\"kind\":{},\"start\":{},\"end\":{},\"peak\":{},\"impulse\":{},\"speed\":{},"
+        "\"rebound\":{},\"energy\":{},\"mass\":{},\"pos\":[{},{},{}]}}",
+        quote(e.bodyA + " / " + e.bodyB), quote(e.lineOnHull ? "line on hull" : "hull on hull"),
+        fixed(e.startTime, 4), fixed(e.endTime, 4), sig(e.peakForce, 4), sig(e.impulse, 4),
+        sig(e.impactVelocity, 4), sig(e.reboundVelocity, 4), sig(e.impactEnergy, 4), sig(mass, 4),
+        fixed(e.position.x(), 3), fixed(e.position.y(), 3), fixed(e.position.z(), 3)));
+  }
+}
+
+void HtmlReport::addSeabedImpacts(const std::vector<analysis::SeabedImpact>& events) {
+  for (const analysis::SeabedImpact& e : events) {
+    if (!e.impact) continue;
+    m_impacts.push_back(fmt::format(
+        "{{\"bodies\":{},\"kind\":\"line on seabed\",\"start\":{},\"end\":{},\"peak\":{},\"impulse\":{},"
+        "\"speed\":{},\"rebound\":null,\"energy\":{},\"mass\":{},\"pos\":[{},{},{}]}}",
+        quote(m_model->lines()[static_cast<std::size_t>(e.line)].name + " / seabed"), fixed(e.startTime, 4),
+        fixed(e.endTime, 4), sig(e.peakForce, 4), sig(e.impulse, 4), sig(e.impactVelocity, 4),
+        sig(e.impactEnergy, 4), sig(e.eq5Mass, 4), fixed(e.position.x(), 3), fixed(e.position.y(), 3),
+        fixed(e.position.z(), 3)));
+  }
+}
+
 void HtmlReport::setClash(const contact::LineContact& contact, const contact::ClashReport& clash) {
   const auto& lines = m_model->lines();
   std::string out = "{\"events\":";
@@ -417,10 +444,26 @@ std::string HtmlReport::json() const {
                       a.y() > 0.0 ? std::clamp(a.y() / length, 1.0, 0.5 * length) : 0.1 * length;
                   const double breadth = a.x() > 0.0 ? std::clamp(a.x() / draft, 1.0, length) : 0.2 * length;
                   const bool sized = a.x() > 0.0 && a.y() > 0.0 && a.z() > 0.0;
+                  // Its hull's shapes (vessels[].hull), vessel axes, drawn instead of the box.
+                  std::string hull;
+                  if (!s.hull.empty()) {
+                    const auto vec = [](const Vec3& x) {
+                      return fmt::format("[{},{},{}]", fixed(x.x(), 3), fixed(x.y(), 3), fixed(x.z(), 3));
+                    };
+                    hull = ",\"hull\":" + array(s.hull.size(), [&](std::size_t k) {
+                             const geometry::HullShape& h = s.hull[k];
+                             if (h.kind() == geometry::HullShape::Kind::Box)
+                               return fmt::format("{{\"kind\":\"box\",\"c\":{},\"s\":{}}}", vec(h.centre()),
+                                                  vec(h.size()));
+                             return fmt::format("{{\"kind\":{},\"a\":{},\"b\":{},\"d\":{}}}",
+                                                quote(h.kindName()), vec(h.endA()), vec(h.endB()),
+                                                fixed(h.diameter(), 3));
+                           });
+                  }
                   return fmt::format(
-                      "{{\"name\":{},\"mode\":{},\"length\":{},\"breadth\":{},\"draft\":{},\"sized\":{}}}",
+                      "{{\"name\":{},\"mode\":{},\"length\":{},\"breadth\":{},\"draft\":{},\"sized\":{}{}}}",
                       quote(s.name), quote(model::vesselModeName(s.mode)), fixed(length, 2),
-                      fixed(breadth, 2), fixed(draft, 2), sized ? "true" : "false");
+                      fixed(breadth, 2), fixed(draft, 2), sized ? "true" : "false", hull);
                 }) +
           ",");
   f.write("\"current\":" +
@@ -470,6 +513,7 @@ std::string HtmlReport::json() const {
       ",");
   f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + ",\"fatigue\":" + m_fatigue +
           ",\"clashDamage\":" + m_clashDamage +
+          ",\"impacts\":" + array(m_impacts.size(), [&](std::size_t i) { return m_impacts[i]; }) +
           ",\"peakFits\":" + array(m_peakFits.size(), [&](std::size_t i) { return m_peakFits[i]; }) + "}\n");
   return std::move(f.s);
 }

@@ -20,9 +20,11 @@
 #include "tangle/analysis/ClashDamage.hpp"
 #include "tangle/analysis/ExtremeStatistics.hpp"
 #include "tangle/analysis/FatigueDamage.hpp"
+#include "tangle/analysis/SeabedImpacts.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
 #include "tangle/solver/LineResults.hpp"
+#include "tangle/vessel/HullImpacts.hpp"
 
 namespace tangle::contact {
 class LineContact;
@@ -64,6 +66,10 @@ class HtmlReport {
   void setEnvelope(const contact::ClearanceEnvelope& envelope);
   /// Fatigue damage per year along the lines with fatigue properties (plotted as log10).
   void setFatigue(const analysis::FatigueDamage& fatigue, const std::vector<analysis::FatigueDamage::Line>& damage);
+  /// The impacts on vessels' hulls (vessel::HullImpacts), rows of the report's impacts table.
+  void addHullImpacts(const std::vector<vessel::HullImpact>& events);
+  /// The lines' impacts on the seabed (analysis::SeabedImpacts), rows of the same table.
+  void addSeabedImpacts(const std::vector<analysis::SeabedImpact>& events);
   /// Impact energy accumulated per bin along the lines (clash damage).
   void setClashDamage(const std::vector<analysis::LineClashDamage>& damage);
   /// The peaks of line `line`'s end B tension [N] and their fits (extreme statistics), for a Weibull plot.
@@ -104,6 +110,7 @@ class HtmlReport {
   std::vector<std::string> m_rangeParts;          ///< JSON range graphs per line
   std::string m_clash = "null", m_envelope = "[]", m_fatigue = "[]", m_clashDamage = "[]";
   std::vector<std::string> m_peakFits;
+  std::vector<std::string> m_impacts;  ///< JSON rows of the hull and seabed impacts table
 };
 
 }  // namespace tangle::io

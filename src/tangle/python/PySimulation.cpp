@@ -312,6 +312,34 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     impacts.append(d);
   }
   out["seabed_impacts"] = impacts;
+  // Contacts with vessels' hulls (vessel::HullImpacts), as dynamics/hull_impacts.csv.
+  py::list hullImpacts;
+  if (const vessel::HullContact* hulls = m_sim->hullContact()) {
+    const auto optional = [](double v) {
+      return std::isfinite(v) ? py::object(py::float_(v)) : py::object(py::none());
+    };
+    for (const vessel::HullImpact& e : hulls->impacts().events()) {
+      py::dict d;
+      d["body_a"] = e.bodyA;
+      d["body_b"] = e.bodyB;
+      d["kind"] = e.impact ? (e.lineOnHull ? "line_impact" : "hull_impact")
+                           : (e.lineOnHull ? "line_contact" : "hull_contact");
+      d["start_time_s"] = e.startTime;
+      d["end_time_s"] = e.endTime;
+      d["position_m"] = py::make_tuple(e.position.x(), e.position.y(), e.position.z());
+      d["impact_velocity_m_s"] = e.impactVelocity;
+      d["rebound_velocity_m_s"] = optional(e.reboundVelocity);
+      d["peak_force_N"] = e.peakForce;
+      d["impulse_Ns"] = e.impulse;
+      d["max_penetration_m"] = e.maxPenetration;
+      d["bodies_effective_mass_kg"] = optional(e.bodiesMass);
+      d["eq5_mass_kg"] = optional(e.eq5Mass);
+      d["impact_energy_J"] = e.impact ? optional(e.impactEnergy) : py::object(py::none());
+      d["open_at_end"] = e.open;
+      hullImpacts.append(d);
+    }
+  }
+  out["hull_impacts"] = hullImpacts;
   const auto nt = static_cast<py::ssize_t>(times.size());
   out["time_s"] = array(times, {nt});
   py::list lines;

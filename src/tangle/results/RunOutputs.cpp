@@ -663,6 +663,13 @@ bool RunOutputs::runDynamics() {
   }
   seabedImpacts.finish();
   seabedImpacts.write(outDir / "dynamics");
+  if (report) {
+    timed([&] {
+      report->addSeabedImpacts(seabedImpacts.events());
+      if (const vessel::HullContact* hulls = sim.hullContact())
+        report->addHullImpacts(hulls->impacts().events());
+    });
+  }
   if (seabedImpacts.impactCount() > 0) log.info(seabedImpacts.terminalSummary());
   if (!fatigue.empty()) {
     const std::vector<analysis::FatigueDamage::Line> damage = fatigue.finish();

@@ -264,9 +264,20 @@ void HullContact::addForces(const model::State& state, const solver::AssemblyReq
   const model::DofMap& dofs = m_model->dofs();
   const bool dynamic = request.dynamic;
   const bool friction = dynamic && m_spec.friction > 0.0;
-  forEachPoint(state, 0.0, dynamic, [&](const Point& p, int element, double t) {
-    if (!(p.gap < 0.0)) return;
+  // The nodes near a hull at this assembly (markLoadedNodes): every point within kNearReach is visited.
+  std::fill(m_nearNodes.begin(), m_nearNodes.end(), 0);
+  m_nearNodes.resize(static_cast<std::size_t>(m_model->nodeCount()), 0);
+  forEachPoint(state, kNearReach, dynamic, [&](const Point& p, int element, double t) {
     const Pair& pair = m_pairs[static_cast<std::size_t>(p.pair)];
+    if (pair.line >= 0) {
+      const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
+      m_nearNodes[static_cast<std::size_t>(el.node1)] = 1;
+      m_nearNodes[static_cast<std::size_t>(el.node2)] = 1;
+    }
+    m_nearNodes[static_cast<std::size_t>(m_hulls[static_cast<std::size_t>(pair.hullB)].node)] = 1;
+    if (pair.hullA >= 0)
+      m_nearNodes[static_cast<std::size_t>(m_hulls[static_cast<std::size_t>(pair.hullA)].node)] = 1;
+    if (!(p.gap < 0.0)) return;
     const double penetration = -p.gap;
     const Vec3& n = p.normal;
     const double rate = -n.dot(p.relativeVelocity);  // penetration rate, > 0 approaching
@@ -428,6 +439,15 @@ void HullContact::commitStep(model::State& state, double dt) {
 }
 
 void HullContact::finish(double time) { m_impacts->finish(time); }
+
+bool HullContact::markLoadedNodes(std::vector<char>& mark) const {
+  // The nodes of the elements within reach of a hull at the last whole assembly, and the hulls' vessel
+  // nodes: a part of the model away from them gets no hull force (and moves none of them).
+  for (std::size_t n = 0; n < m_nearNodes.size() && n < mark.size(); ++n)
+    if (m_nearNodes[n]) mark[n] = 1;
+  for (const Hull& h : m_hulls) mark[static_cast<std::size_t>(h.node)] = 1;
+  return true;
+}
 
 std::string HullContact::describe() const {
   std::string out;

@@ -55,6 +55,10 @@ class HullContact final : public solver::LoadContributor {
   void addForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
                  solver::SystemMatrix* matrix) override;
   solver::LoadSource source() const override { return solver::LoadSource::Contact; }
+  /// Its forces act near the hulls only: a part of the model away from them leaves it out (markLoadedNodes:
+  /// the nodes of elements within 2 m of a hull at the last whole assembly, and the hulls' vessel nodes).
+  bool supportsParts() const override { return true; }
+  bool markLoadedNodes(std::vector<char>& mark) const override;
   double limitStep(const model::State& state) override;
   void commitStep(model::State& state, double dt) override;
   void finish(double time) override;
@@ -113,6 +117,7 @@ class HullContact final : public solver::LoadContributor {
   std::unique_ptr<HullImpacts> m_impacts;
   std::vector<double> m_lineHalfPeriod;  ///< per line: pi sqrt(m' / k_line) [s]
   double m_lastDt = 0.0;
+  std::vector<char> m_nearNodes;      ///< per node: within reach of a hull at the last addForces
   std::vector<double> m_impactUntil;  ///< per pair: the step limit holds until this time [s] (limitStep)
   std::vector<double> m_impactLimit;  ///< per pair: that limit [s]
 };

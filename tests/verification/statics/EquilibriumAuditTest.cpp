@@ -10,6 +10,8 @@
 // 3. An anchor resting on the seabed under a laid chain: the seabed carries the anchor node's weight, so the
 //    anchor's vertical force is the line's pull alone, which the slope of the first element sets (theory
 //    7.8): below 1 % of the horizontal pull.
+// 4. A chain draped over a free barge's hull (vessels[].hull, issue 46): the hull contact is a term of the
+//    barge's balance, equal and opposite to the contact on the chain, and both close.
 
 #include <gtest/gtest.h>
 
@@ -124,6 +126,49 @@ TEST(EquilibriumAudit, AnchorOnTheSeabedCarriesOnlyTheLinesPull) {
   EXPECT_LT(std::abs(anchor.z()), 1e-5 * std::hypot(anchor.x(), anchor.y()));
   // The support reaction agrees with the end force (nothing else acts on the anchor node).
   EXPECT_NEAR((chain.endForceA - anchor).norm(), 0.0, 1e-6 * anchor.norm());
+}
+
+TEST(EquilibriumAudit, AChainOnABargesHullBalancesBothBodies) {
+  // A 70 m chain pinned 8 m above water at x = +-34 m lies across the top (z = +2 m) of a barge's box hull
+  // (its start shape over the hull: the catenary would start through it, which the model refuses).
+  analysis::Simulation sim(io::readModelString(R"(environment: {water_depth: 100}
+line_types:
+  - {name: chain, outer_diameter: 0.1, mass_per_length: 100, axial_stiffness: 5.0e8}
+vessels:
+  - name: barge
+    mode: free
+    held_in_statics: true
+    position: [0, 0, 0]
+    mass: 2.0e6
+    inertia: [1.0e9, 1.0e9, 1.0e9]
+    hydrostatic_stiffness: [0, 0, 4.0e6, 1.0e9, 1.0e9, 0]
+    hull: [{shape: box, centre: [0, 0, -4], size: [40, 20, 12]}]
+lines:
+  - name: chain
+    end_a: {type: pinned, position: [-34, 0, 8]}
+    end_b: {type: pinned, position: [34, 0, 8]}
+    sections: [{type: chain, length: 70, elements: 70}]
+    start_shape: [[-34, 0, 8], [-20, 0, 2.1], [20, 0, 2.1], [34, 0, 8]]
+)",
+                                               "barge.yaml"));
+  const solver::StaticResult statics = sim.solveStatics();
+  ASSERT_TRUE(statics.converged) << statics.message;
+  const auto lines = sim.snapshot();
+  const solver::EquilibriumAudit audit = analysis::auditStatics(sim, lines);
+  ASSERT_EQ(audit.vessels.size(), 1u);
+  const solver::ForceBalance& barge = audit.vessels.front();
+  const solver::ForceBalance& chain = audit.lines.front();
+  EXPECT_TRUE(barge.balanced()) << barge.relativeResidual() << " > " << barge.tolerance;
+  EXPECT_TRUE(chain.balanced()) << chain.relativeResidual() << " > " << chain.tolerance;
+  Vec3 onBarge = Vec3::Zero(), onChain = Vec3::Zero();
+  for (const auto& [name, force] : barge.terms)
+    if (name == "hull contact") onBarge = force;
+  for (const auto& [name, force] : chain.terms)
+    if (name == "contact") onChain = force;
+  // The chain rests on the barge: an upward push on the chain of part of its weight (686 N/m in air).
+  EXPECT_GT(onChain.z(), 0.3 * 70.0 * 100.0 * 9.80665) << onChain.transpose();
+  EXPECT_LT((onBarge + onChain).norm(), 1e-9 * onChain.norm())
+      << onBarge.transpose() << " / " << onChain.transpose();
 }
 
 }  // namespace

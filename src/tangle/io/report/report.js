@@ -53,7 +53,8 @@
     t.appendChild(tb);
     body.appendChild(t);
     if (data.vessels.length) {
-      var p = el("p", null, "Vessels are drawn as boxes: " + data.vessels.map(function (v) {
+      var p = el("p", null, "Vessels are drawn as boxes, or as their hulls' contact shapes: " + data.vessels.map(function (v) {
+        if (v.hull && v.hull.length) return v.name + ": its hull, " + v.hull.length + " shape(s)";
         return v.name + " " + fmt(v.length, 3) + " x " + fmt(v.breadth, 3) + " m, draft " + fmt(v.draft, 3) +
             " m (" + (v.sized ? "from its current-force areas" : "no current-force areas given: nominal size") + ")";
       }).join("; ") + ".");
@@ -306,6 +307,47 @@
   // Vessels: boxes from -draft to +draft/2 about the reference point, in vessel axes (x forward).
   var vessels = data.vessels.map(function (v) {
     var group = new THREE.Group();
+    if (v.hull && v.hull.length) {
+      // Its hull's contact shapes (vessels[].hull), vessel axes: boxes, cylinders, capsules.
+      var material = new THREE.MeshLambertMaterial({ color: 0xb0b4bb, transparent: true, opacity: 0.75 });
+      var edgeMaterial = new THREE.LineBasicMaterial({ color: 0x303030 });
+      v.hull.forEach(function (h) {
+        var parts = [];
+        if (h.kind === "box") {
+          var box = new THREE.Mesh(new THREE.BoxBufferGeometry(h.s[0], h.s[1], h.s[2]), material);
+          box.position.set(h.c[0], h.c[1], h.c[2]);
+          parts.push({ mesh: box, edges: true });
+        } else {
+          var a = new THREE.Vector3(h.a[0], h.a[1], h.a[2]), b = new THREE.Vector3(h.b[0], h.b[1], h.b[2]);
+          var axis = new THREE.Vector3().subVectors(b, a), length = axis.length(), r = 0.5 * h.d;
+          if (length > 0) {
+            // three.js cylinders stand along +y: turn +y onto the shape's axis.
+            var cyl = new THREE.Mesh(new THREE.CylinderBufferGeometry(r, r, length, 24), material);
+            cyl.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), axis.clone().normalize());
+            cyl.position.copy(a).addScaledVector(axis, 0.5);
+            parts.push({ mesh: cyl, edges: true });
+          }
+          if (h.kind === "capsule")
+            [a, b].forEach(function (end) {
+              var ball = new THREE.Mesh(new THREE.SphereBufferGeometry(r, 16, 12), material);
+              ball.position.copy(end);
+              parts.push({ mesh: ball, edges: false });
+            });
+        }
+        parts.forEach(function (part) {
+          var m = part.mesh;
+          group.add(m);
+          if (part.edges) {
+            var edges = new THREE.LineSegments(new THREE.EdgesGeometry(m.geometry, 30), edgeMaterial);
+            edges.position.copy(m.position);
+            edges.quaternion.copy(m.quaternion);
+            group.add(edges);
+          }
+        });
+      });
+      scene.add(group);
+      return group;
+    }
     var g = new THREE.BoxBufferGeometry(v.length, v.breadth, 1.5 * v.draft);
     var m = new THREE.Mesh(g, new THREE.MeshLambertMaterial({ color: 0xb0b4bb, transparent: true, opacity: 0.75 }));
     m.position.z = -0.25 * v.draft;
@@ -854,6 +896,48 @@
     clashRows = rows.length;
   })();
 
+  // ---------------------------------------------------------------- impacts on hulls and the seabed
+  var impactRows = 0;
+  (function impactTable() {
+    var impacts = data.impacts || [];
+    if (!impacts.length) return;
+    var body = document.getElementById("clash-body");
+    body.appendChild(el("h3", null, "Impacts on vessels' hulls and on the seabed"));
+    body.appendChild(el("p", null, "Energy 1/2 m v0^2: m the two hulls' effective mass with added mass (hull on " +
+        "hull), the Eq. 5 mass (line on hull, line on seabed). Click a row to replay the impact."));
+    var cols = [
+      ["bodies", function (e) { return e.bodies; }, true], ["kind", function (e) { return e.kind; }, true],
+      ["start (s)", function (e) { return e.start; }], ["end (s)", function (e) { return e.end; }],
+      ["peak force (kN)", function (e) { return e.peak / 1000; }], ["impulse (N s)", function (e) { return e.impulse; }],
+      ["impact speed (m/s)", function (e) { return e.speed; }],
+      ["rebound speed (m/s)", function (e) { return e.rebound === null ? "" : e.rebound; }],
+      ["impact energy (J)", function (e) { return e.energy; }],
+      ["mass (kg)", function (e) { return e.mass === null ? "" : e.mass; }],
+      ["x (m)", function (e) { return e.pos[0]; }], ["y (m)", function (e) { return e.pos[1]; }],
+      ["z (m)", function (e) { return e.pos[2]; }]];
+    var table = el("table", { "id": "impact-table" }), thead = el("thead"), hr = el("tr"), tbody = el("tbody");
+    cols.forEach(function (c) { hr.appendChild(el("th", c[2] ? { "class": "text" } : null, c[0])); });
+    thead.appendChild(hr);
+    impacts.slice().sort(function (a, b) { return a.start - b.start; }).forEach(function (e) {
+      var tr = el("tr", { "data-start": e.start });
+      cols.forEach(function (c) {
+        var v = c[1](e);
+        tr.appendChild(el("td", c[2] ? { "class": "text" } : null, typeof v === "number" ? fmt(v, 5) : v));
+      });
+      tr.addEventListener("click", function () {
+        setPlaying(false);
+        simTime = e.start;
+        showFrame(frameAt(e.start));
+        document.getElementById("view").scrollIntoView({ behavior: "smooth" });
+      });
+      tbody.appendChild(tr);
+    });
+    table.appendChild(thead);
+    table.appendChild(tbody);
+    body.appendChild(table);
+    impactRows = impacts.length;
+  })();
+
   // ---------------------------------------------------------------- start, and the test hooks
   drawLegend();
   showFrame(0);
@@ -877,6 +961,7 @@
   status.meshes = tubes.length;
   status.vessels = vessels.length;
   status.clashRows = clashRows;
+  status.impactRows = impactRows;
   status.plots = plots.length;
   status.quantities = quantities.map(function (q) { return q.key; });
   status.checksumFirst = checksum();
