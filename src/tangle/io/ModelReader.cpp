@@ -500,7 +500,14 @@ std::shared_ptr<const seabed::SeabedSurface> readSeabedShape(const Map& m, doubl
         seabed::SeabedSurface::plane(waterDepth, degToRad(angle), degToRad(azimuth->number(anyNumber()))));
   }
   if (!bathymetry) return nullptr;
-  const Map b(*bathymetry, {"x", "y", "depth", "file"});
+  const Map b(*bathymetry, {"x", "y", "depth", "file", "interpolation"});
+  // Between the nodes: bicubic by default (a C1 surface: no crease at the cells' edges for a line laid along
+  // one); bilinear as MoorDyn (a converted deck says so).
+  seabed::SeabedSurface::Interpolation interpolation = seabed::SeabedSurface::Interpolation::Cubic;
+  if (const std::optional<Value> i = b.find("interpolation"))
+    interpolation = i->choice<seabed::SeabedSurface::Interpolation>(
+        {{"cubic", seabed::SeabedSurface::Interpolation::Cubic},
+         {"bilinear", seabed::SeabedSurface::Interpolation::Bilinear}});
   if (const std::optional<Value> file = b.find("file")) {
     for (const char* key : {"x", "y", "depth"})
       if (const std::optional<Value> other = b.find(key))
@@ -509,7 +516,8 @@ std::shared_ptr<const seabed::SeabedSurface> readSeabedShape(const Map& m, doubl
     fs::path path(file->text("a file name (MoorDyn's SeafloorFile format), relative to the model file"));
     if (path.is_relative()) path = fs::path(bathymetry->source()).parent_path() / path;
     try {
-      return std::make_shared<const seabed::SeabedSurface>(seabed::readSeafloorFile(path.string()));
+      return std::make_shared<const seabed::SeabedSurface>(
+          seabed::readSeafloorFile(path.string()).interpolated(interpolation));
     } catch (const InputError& e) {
       file->fail(fmt::format("cannot read the bathymetry: {}", e.what()));
     }
@@ -544,7 +552,7 @@ std::shared_ptr<const seabed::SeabedSurface> readSeabedShape(const Map& m, doubl
     }
   }
   return std::make_shared<const seabed::SeabedSurface>(
-      seabed::SeabedSurface::grid(std::move(x), std::move(y), std::move(height)));
+      seabed::SeabedSurface::grid(std::move(x), std::move(y), std::move(height), interpolation));
 }
 
 void readSeabed(const Value& v, model::EnvironmentSpec& env) {

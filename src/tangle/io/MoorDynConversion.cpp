@@ -485,8 +485,10 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
   line(fmt::format("    friction_coefficient: {}  # FrictionCoefficient ({})", num(opt.friction),
                    optionComment("frictioncoefficient", "0")));
   if (!opt.seafloorFile.empty())
-    line(fmt::format("    bathymetry: {{file: {}}}  # SeafloorFile ({})", yamlQuoted(opt.seafloorFile),
-                     optionComment("seafloorfile", "")));
+    line(
+        fmt::format("    bathymetry: {{file: {}, interpolation: bilinear}}  # SeafloorFile ({}; bilinear as "
+                    "MoorDyn's interp2)",
+                    yamlQuoted(opt.seafloorFile), optionComment("seafloorfile", "")));
   if (opt.friction > 0.0) {
     // MoorDyn (Line.cpp): friction = min(mu FricDamp |v|, mu N) with N the node's seabed force: a viscous
     // law saturating at |v| = N / FricDamp. tangle's viscous law mu N v / max(|v|, v_f) has the same slope

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -67,7 +68,8 @@ SeabedSurface SeabedSurface::plane(double depth, double slope, double azimuth) {
   return s;
 }
 
-SeabedSurface SeabedSurface::grid(std::vector<double> x, std::vector<double> y, std::vector<double> height) {
+SeabedSurface SeabedSurface::grid(std::vector<double> x, std::vector<double> y, std::vector<double> height,
+                                  Interpolation interpolation) {
   if (x.empty() || y.empty())
     throw std::invalid_argument("a bathymetry grid needs at least one x and one y tick");
   for (const std::vector<double>* ticks : {&x, &y})
@@ -83,7 +85,105 @@ SeabedSurface SeabedSurface::grid(std::vector<double> x, std::vector<double> y, 
   s.m_y = std::move(y);
   s.m_height = std::move(height);
   s.m_depth = -*std::min_element(s.m_height.begin(), s.m_height.end());
+  return s.interpolated(interpolation);
+}
+
+SeabedSurface SeabedSurface::interpolated(Interpolation interpolation) const {
+  SeabedSurface s = *this;
+  if (m_kind != Kind::Grid) return s;
+  s.m_interpolation = interpolation;
+  s.m_hx.clear();
+  s.m_hy.clear();
+  s.m_hxy.clear();
+  if (interpolation == Interpolation::Cubic) s.computeNodeSlopes();
   return s;
+}
+
+namespace {
+
+/// The derivative at each tick of the values v (stride `stride` from `first`, `count` of them) along
+/// `ticks`: the parabola's through the tick and its two neighbours (uneven spacing), one-sided at the ends,
+/// 0 for a single tick.
+void tickDerivatives(const std::vector<double>& ticks, const std::vector<double>& v, std::size_t first,
+                     std::size_t stride, std::vector<double>& out) {
+  const std::size_t n = ticks.size();
+  const auto at = [&](std::size_t i) { return v[first + i * stride]; };
+  for (std::size_t i = 0; i < n; ++i) {
+    double d = 0.0;
+    if (n >= 2) {
+      if (i == 0) {
+        d = (at(1) - at(0)) / (ticks[1] - ticks[0]);
+      } else if (i + 1 == n) {
+        d = (at(n - 1) - at(n - 2)) / (ticks[n - 1] - ticks[n - 2]);
+      } else {
+        const double hl = ticks[i] - ticks[i - 1], hr = ticks[i + 1] - ticks[i];
+        const double sl = (at(i) - at(i - 1)) / hl, sr = (at(i + 1) - at(i)) / hr;
+        d = (sl * hr + sr * hl) / (hl + hr);
+      }
+    }
+    out[first + i * stride] = d;
+  }
+}
+
+/// Cubic Hermite basis on [0, 1]: values at u of the four functions (value at 0, value at 1, slope at 0,
+/// slope at 1, the slopes per unit u) and their derivatives in u.
+struct Hermite {
+  double h00, h01, h10, h11, d00, d01, d10, d11;
+  explicit Hermite(double u) {
+    const double u2 = u * u, u3 = u2 * u;
+    h00 = 2.0 * u3 - 3.0 * u2 + 1.0;
+    h01 = -2.0 * u3 + 3.0 * u2;
+    h10 = u3 - 2.0 * u2 + u;
+    h11 = u3 - u2;
+    d00 = 6.0 * u2 - 6.0 * u;
+    d01 = -6.0 * u2 + 6.0 * u;
+    d10 = 3.0 * u2 - 4.0 * u + 1.0;
+    d11 = 3.0 * u2 - 2.0 * u;
+  }
+};
+
+}  // namespace
+
+void SeabedSurface::computeNodeSlopes() {
+  const std::size_t nx = m_x.size(), ny = m_y.size();
+  m_hx.assign(m_height.size(), 0.0);
+  m_hy.assign(m_height.size(), 0.0);
+  m_hxy.assign(m_height.size(), 0.0);
+  for (std::size_t j = 0; j < ny; ++j) tickDerivatives(m_x, m_height, j * nx, 1, m_hx);
+  for (std::size_t i = 0; i < nx; ++i) tickDerivatives(m_y, m_height, i, nx, m_hy);
+  for (std::size_t i = 0; i < nx; ++i) tickDerivatives(m_y, m_hx, i, nx, m_hxy);
+}
+
+SeabedPoint SeabedSurface::cubicAt(double x, double y) const {
+  const std::size_t nx = m_x.size();
+  const CellPosition cx = locate(m_x, x);
+  const CellPosition cy = locate(m_y, y);
+  const std::size_t i0 = cx.cell, i1 = nx > 1 ? cx.cell + 1 : 0;
+  const std::size_t j0 = cy.cell, j1 = m_y.size() > 1 ? cy.cell + 1 : 0;
+  // A single tick along an axis: no extent, the slopes along it are 0 and the width does not matter.
+  const double wx = nx > 1 ? cx.width : 1.0, wy = m_y.size() > 1 ? cy.width : 1.0;
+  const Hermite bx(cx.fraction), by(cy.fraction);
+  const std::array<std::size_t, 4> node{j0 * nx + i0, j0 * nx + i1, j1 * nx + i0, j1 * nx + i1};
+  // Corner k = (p, q): p along x (0: i0, 1: i1), q along y.
+  const std::array<double, 2> ax{bx.h00, bx.h01}, sx{bx.h10 * wx, bx.h11 * wx};
+  const std::array<double, 2> ay{by.h00, by.h01}, sy{by.h10 * wy, by.h11 * wy};
+  const std::array<double, 2> dax{bx.d00 / wx, bx.d01 / wx}, dsx{bx.d10, bx.d11};
+  const std::array<double, 2> day{by.d00 / wy, by.d01 / wy}, dsy{by.d10, by.d11};
+  SeabedPoint out;
+  double gx = 0.0, gy = 0.0;
+  for (int q = 0; q < 2; ++q)
+    for (int p = 0; p < 2; ++p) {
+      const std::size_t k = node[static_cast<std::size_t>(2 * q + p)];
+      const double h = m_height[k], hx = m_hx[k], hy = m_hy[k], hxy = m_hxy[k];
+      out.height += ax[p] * ay[q] * h + sx[p] * ay[q] * hx + ax[p] * sy[q] * hy + sx[p] * sy[q] * hxy;
+      gx += dax[p] * ay[q] * h + dsx[p] * ay[q] * hx + dax[p] * sy[q] * hy + dsx[p] * sy[q] * hxy;
+      gy += ax[p] * day[q] * h + sx[p] * day[q] * hx + ax[p] * dsy[q] * hy + sx[p] * dsy[q] * hxy;
+    }
+  // Beyond the grid the height is held: no slope along that axis (as the bilinear surface).
+  if (!cx.inside) gx = 0.0;
+  if (!cy.inside) gy = 0.0;
+  out.normal = normalFromGradient(gx, gy);
+  return out;
 }
 
 double SeabedSurface::height(double x, double y) const {
@@ -111,6 +211,7 @@ SeabedPoint SeabedSurface::at(double x, double y) const {
     case Kind::Grid:
       break;
   }
+  if (m_interpolation == Interpolation::Cubic) return cubicAt(x, y);
   const std::size_t nx = m_x.size();
   const CellPosition cx = locate(m_x, x);
   const CellPosition cy = locate(m_y, y);
@@ -182,9 +283,11 @@ std::string SeabedSurface::describe() const {
     case Kind::Grid:
       break;
   }
-  return fmt::format("bathymetry grid {} x {} over x [{:g}, {:g}] m, y [{:g}, {:g}] m, {:g} to {:g} m deep",
-                     m_x.size(), m_y.size(), m_x.front(), m_x.back(), m_y.front(), m_y.back(),
-                     shallowestDepth(0.0), m_depth);
+  return fmt::format(
+      "bathymetry grid {} x {} over x [{:g}, {:g}] m, y [{:g}, {:g}] m, {:g} to {:g} m deep at its "
+      "nodes, {} between them",
+      m_x.size(), m_y.size(), m_x.front(), m_x.back(), m_y.front(), m_y.back(), shallowestDepth(0.0), m_depth,
+      m_interpolation == Interpolation::Cubic ? "bicubic" : "bilinear");
 }
 
 SeabedSurface readSeafloorFile(const std::string& path) {

@@ -23,16 +23,24 @@ struct SeabedPoint {
 /// - Flat: h = -depth.
 /// - Plane: h = -depth + tan(slope) (x cos(azimuth) + y sin(azimuth)): `depth` under the origin, rising by
 ///   `slope` towards `azimuth` (the up-slope direction, anticlockwise from +x; OrcaFlex's "slope direction").
-/// - Grid: heights at the nodes of a rectilinear grid (x and y ticks increasing), bilinear between them and
-///   held at the edge value beyond the grid (MoorDyn's SeafloorFile, Seafloor.cpp getDepthAt). The normal
-///   is the bilinear surface's within a cell, so it turns at the cell edges (by the change of slope between
-///   cells: a fine grid turns it little).
+/// - Grid: heights at the nodes of a rectilinear grid (x and y ticks increasing), held at the edge value
+///   beyond the grid (as MoorDyn's SeafloorFile, Seafloor.cpp getDepthAt), and between the nodes either
+///   - bilinear (MoorDyn's interp2): the normal is the bilinear surface's within a cell, so it turns at the
+///     cell edges (a crease: a line laid along one meets a knife edge), or
+///   - cubic: the bicubic Hermite patch of each cell (tensor product of cubic Hermite polynomials; e.g.
+///     de Boor, "A practical guide to splines", or Fritsch & Carlson 1980 for the 1D form) with node slopes
+///     h_x, h_y and twist h_xy from the three-point (parabolic) differences on the uneven ticks, one-sided at
+///     the grid's edges: the surface and its normal are continuous across the cell edges (C1), and it goes
+///     through every node. A cubic can overshoot the nodes' heights between them where the slope changes
+///     abruptly (by a fraction of the change of height over a cell).
 ///
 /// The clearance of a sphere of radius r centred at p is measured along the local normal,
 /// gap = (p_z - h(p_x, p_y)) n_z - r: exact for a plane, first order in the surface's curvature for a grid.
 class SeabedSurface {
  public:
   enum class Kind { Flat, Plane, Grid };
+  /// Between a grid's nodes (see the class comment).
+  enum class Interpolation { Bilinear, Cubic };
 
   /// Flat seabed at z = -depth [m].
   static SeabedSurface flat(double depth);
@@ -42,7 +50,11 @@ class SeabedSurface {
   /// Grid: @param x ticks [m] (increasing, at least one); @param y ticks [m] (increasing, at least one);
   /// @param height z of the seabed [m] at (x[i], y[j]), stored at height[j * x.size() + i].
   /// Throws std::invalid_argument on ticks that do not increase or a size that does not match.
-  static SeabedSurface grid(std::vector<double> x, std::vector<double> y, std::vector<double> height);
+  static SeabedSurface grid(std::vector<double> x, std::vector<double> y, std::vector<double> height,
+                            Interpolation interpolation = Interpolation::Bilinear);
+  /// The same grid with another interpolation (a flat or plane surface is returned unchanged).
+  SeabedSurface interpolated(Interpolation interpolation) const;
+  Interpolation interpolation() const { return m_interpolation; }
 
   Kind kind() const { return m_kind; }
   bool isFlat() const { return m_kind == Kind::Flat; }
@@ -85,6 +97,12 @@ class SeabedSurface {
   double m_azimuth = 0.0;
   Vec2 m_gradient = Vec2::Zero();  // plane: (dh/dx, dh/dy)
   std::vector<double> m_x, m_y, m_height;
+  Interpolation m_interpolation = Interpolation::Bilinear;
+  /// Cubic: the node slopes dh/dx, dh/dy [-] and twists d2h/dxdy [1/m], stored as m_height.
+  std::vector<double> m_hx, m_hy, m_hxy;
+  /// Fills m_hx, m_hy, m_hxy (cubic).
+  void computeNodeSlopes();
+  SeabedPoint cubicAt(double x, double y) const;
 };
 
 /// Reads a bathymetry grid in MoorDyn's SeafloorFile format (MoorDyn v2 Seafloor.cpp): line 1 "nx ny",

@@ -1516,6 +1516,19 @@ TEST(ModelReaderSeabed, ReadsABathymetryGrid) {
   ASSERT_TRUE(spec.environment.seabedSurface);
   EXPECT_NEAR(spec.environment.seabedSurface->height(250.0, 0.0), -0.25 * (100 + 110 + 100 + 120), 1e-9);
   EXPECT_NEAR(spec.environment.seabedSurface->height(500.0, 100.0), -120.0, 1e-12);
+  // Bicubic unless told otherwise (a C1 surface); bilinear as MoorDyn when asked.
+  EXPECT_EQ(spec.environment.seabedSurface->interpolation(), seabed::SeabedSurface::Interpolation::Cubic);
+  const ModelSpec bilinear = readModelString(
+      edited(kBaseModel, "    friction_coefficient: 0.5",
+             "    friction_coefficient: 0.5\n    bathymetry:\n      x: [0, 500]\n      y: [-100, 100]\n"
+             "      depth: [[100, 110], [100, 120]]\n      interpolation: bilinear"),
+      kSource);
+  EXPECT_EQ(bilinear.environment.seabedSurface->interpolation(),
+            seabed::SeabedSurface::Interpolation::Bilinear);
+  expectEditError("    friction_coefficient: 0.5",
+                  "    friction_coefficient: 0.5\n    bathymetry: {x: [0, 10], y: [0], depth: [[100, 90]], "
+                  "interpolation: spline}",
+                  "bathymetry: {x", "environment.seabed.bathymetry.interpolation", "cubic");
 }
 
 TEST(ModelReaderSeabed, StaticsMethodNoneSkipsTheStaticSolve) {

@@ -214,6 +214,8 @@ TEST(MoorDynDeck, ASeafloorFileBecomesTheBathymetry) {
   EXPECT_EQ(spec.environment.seabedSurface->kind(), seabed::SeabedSurface::Kind::Grid);
   EXPECT_NEAR(spec.environment.seabedSurface->height(10.0, -1.0), -28.0, 1e-9);
   EXPECT_NEAR(spec.environment.seabedSurface->height(-33.3, 0.4), -30.0 - 6.66, 1e-9);
+  // Bilinear between the nodes, as MoorDyn (tangle's own grids are bicubic by default).
+  EXPECT_EQ(spec.environment.seabedSurface->interpolation(), seabed::SeabedSurface::Interpolation::Bilinear);
   EXPECT_DOUBLE_EQ(spec.environment.waterDepth, 500.0);  // WtrDpth: the waves' depth
 }
 

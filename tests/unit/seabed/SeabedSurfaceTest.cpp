@@ -91,6 +91,52 @@ TEST(SeabedSurface, GridInterpolatesBilinearlyAndHoldsTheEdgeValueBeyond) {
   EXPECT_THROW(SeabedSurface::grid({0.0, 1.0}, {0.0}, {-1.0}), std::invalid_argument);
 }
 
+TEST(SeabedSurface, CubicGridGoesThroughItsNodesAndReproducesAPlane) {
+  // Uneven ticks; a plane z = -100 + 0.1 x - 0.05 y is reproduced exactly (the three-point and one-sided
+  // differences are exact for it, and the bicubic Hermite patch reproduces bilinear functions).
+  const std::vector<double> x{0.0, 10.0, 30.0, 35.0}, y{-20.0, 0.0, 25.0};
+  std::vector<double> h;
+  for (const double yj : y)
+    for (const double xi : x) h.push_back(-100.0 + 0.1 * xi - 0.05 * yj);
+  const SeabedSurface s = SeabedSurface::grid(x, y, h, SeabedSurface::Interpolation::Cubic);
+  EXPECT_EQ(s.interpolation(), SeabedSurface::Interpolation::Cubic);
+  for (const double px : {0.0, 3.0, 10.0, 21.0, 33.0})
+    for (const double py : {-20.0, -7.0, 0.0, 12.5, 25.0}) {
+      EXPECT_NEAR(s.height(px, py), -100.0 + 0.1 * px - 0.05 * py, 1e-12) << px << ", " << py;
+      const Vec3 n = s.at(px + 0.3, 0.9 * py).normal;  // inside the grid (px + 0.3 <= 33.3 < 35)
+      EXPECT_NEAR(n.x() / n.z(), -0.1, 1e-12);
+      EXPECT_NEAR(n.y() / n.z(), 0.05, 1e-12);
+    }
+}
+
+TEST(SeabedSurface, CubicGridsNormalIsContinuousAcrossCellEdgesWhereTheBilinearTurns) {
+  // A trough along x = 0: the bilinear surface has a crease there (its slope jumps from -0.2 to +0.2), the
+  // bicubic one turns smoothly through it.
+  const std::vector<double> x{-40.0, -20.0, 0.0, 20.0, 40.0}, y{-10.0, 10.0};
+  std::vector<double> h;
+  for (int j = 0; j < 2; ++j)
+    for (const double xi : x) h.push_back(-100.0 + 0.01 * xi * xi);
+  const SeabedSurface cubic = SeabedSurface::grid(x, y, h, SeabedSurface::Interpolation::Cubic);
+  const SeabedSurface bilinear = cubic.interpolated(SeabedSurface::Interpolation::Bilinear);
+  const double e = 1e-9;
+  for (const double edge : {-20.0, 0.0, 20.0}) {
+    const Vec3 left = cubic.at(edge - e, 0.0).normal, right = cubic.at(edge + e, 0.0).normal;
+    EXPECT_LT((left - right).norm(), 1e-8) << "cubic at x = " << edge;
+    EXPECT_NEAR(cubic.height(edge, 0.0), -100.0 + 0.01 * edge * edge, 1e-12);
+  }
+  EXPECT_GT((bilinear.at(-e, 0.0).normal - bilinear.at(e, 0.0).normal).norm(), 0.3) << "the bilinear crease";
+  // The normal is the height's gradient (central differences) inside the cells.
+  for (const double px : {-33.0, -5.0, 7.0, 29.0}) {
+    const double d = 1e-5;
+    const double gx = (cubic.height(px + d, 3.0) - cubic.height(px - d, 3.0)) / (2.0 * d);
+    const Vec3 n = cubic.at(px, 3.0).normal;
+    EXPECT_NEAR(-n.x() / n.z(), gx, 1e-7) << px;
+  }
+  // Interior nodes' slopes are the parabola's: exact for this quadratic (0.02 x).
+  const Vec3 n = cubic.at(-20.0 + 1e-12, 0.0).normal;
+  EXPECT_NEAR(-n.x() / n.z(), -0.4, 1e-9);
+}
+
 TEST(SeabedSurface, ReadsMoorDynsSeafloorFile) {
   // MoorDyn v2.7.1 tests/Mooring/3D_seafloor/seafloor_profile_3d.txt: 100 x 5 nodes of z = -30 + 0.2 x (the
   // file's rows, from -40 m at x = -50 m to -20 m at x = 50 m; its make_3d_seafloor.py writes 0.1 x, the file

@@ -16,6 +16,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -40,13 +41,16 @@ struct InclineCatenary {
   double anchorTension = 0.0;      ///< [N]
 };
 
+/// `mu`: friction fully mobilised against the laid part's slide towards the fairlead, so that its tension
+/// falls towards the anchor by w (sin(beta) + mu cos(beta)) per metre (0: frictionless).
 InclineCatenary solveInclineCatenary(double span, double height, double beta, double length, double w,
-                                     double ea) {
+                                     double ea, double mu = 0.0) {
+  const double gradient = w * (std::sin(beta) + mu * std::cos(beta));  // dT/ds along the laid part [N/m]
   // Residual of the fairlead's position (along the line's azimuth, up) for a trial H and L_g.
   auto residual = [&](double h, double lg) {
     const double tdp = h / std::cos(beta);
-    const double anchor = tdp - w * std::sin(beta) * lg;
-    const double stretchedGround = lg + (anchor * lg + 0.5 * w * std::sin(beta) * lg * lg) / ea;
+    const double anchor = tdp - gradient * lg;
+    const double stretchedGround = lg + (anchor * lg + 0.5 * gradient * lg * lg) / ea;
     const double ls = length - lg;
     const double v0 = h * std::tan(beta), v1 = v0 + w * ls;
     const double dx = h / w * (std::asinh(v1 / h) - std::asinh(v0 / h)) + h * ls / ea;
@@ -76,7 +80,7 @@ InclineCatenary solveInclineCatenary(double span, double height, double beta, do
   c.groundedLength = lg;
   const double v1 = h * std::tan(beta) + w * (length - lg);
   c.fairleadTension = std::hypot(h, v1);
-  c.anchorTension = h / std::cos(beta) - w * std::sin(beta) * lg;
+  c.anchorTension = h / std::cos(beta) - gradient * lg;
   return c;
 }
 
@@ -222,6 +226,131 @@ TEST(FrictionOnASlope, HoldsAboveTheFrictionAngleAndHasNoEquilibriumBelowIt) {
     EXPECT_FALSE(r.converged) << "a chain on a 20 deg slope with mu = 0.2 has no static equilibrium";
     EXPECT_NE(r.message.find("steeper than the friction angle"), std::string::npos) << r.message;
   }
+}
+
+// The catenary on an incline with friction (issue 46: "frictionless, then with friction", 0.5 %). Friction in
+// statics depends on the path: here the line starts from a start shape 3 % shorter than the line (the laid
+// part along the incline, then straight to the fairlead), so that reaching equilibrium stretches it: every
+// laid node slides towards the fairlead, by metres against the friction spring's elastic range of
+// mu w cos(beta) / k_s = 3e-5 m, and its friction is fully mobilised against that slide. The reference is
+// then the incline catenary with the laid part's tension falling towards the anchor by
+// w (sin(beta) + mu cos(beta)) per metre (solveInclineCatenary with mu).
+TEST(CatenaryOnAnInclineWithFriction, MatchesTheInclineCatenaryWithMobilisedFriction) {
+  constexpr double kMu = 0.3, kSlopeDeg = 5.0, kSpan = 280.0;
+  const double slope = degToRad(kSlopeDeg);
+  model::ModelSpec spec;
+  spec.sourceFile = "catenary on an incline with friction (test)";
+  spec.environment.waterDepth = kDepth;
+  spec.environment.seabed.normalStiffness = 1.0e7;
+  spec.environment.seabed.frictionCoefficient = kMu;
+  spec.environment.seabedSurface =
+      std::make_shared<const seabed::SeabedSurface>(seabed::SeabedSurface::plane(kDepth, slope, 0.0));
+  const section::LineType chain = test::cableType("chain", kDiameter, 100.0, kEa);
+  spec.lineTypes[chain.name] = chain;
+  const Vec3 fairlead(kSpan, 0.0, -10.0);
+  model::LineSpec line = test::simpleLine("chain", "chain", kLength, 150, model::EndKind::Anchored,
+                                          Vec3(0.0, 0.0, -kDepth), model::EndKind::Fixed, fairlead);
+  // The start shape: along the incline (its contact surface) to x1, then straight to the fairlead, 97 % of
+  // the line's length (x1 by bisection).
+  const auto onIncline = [&](double x) {
+    return Vec3(x, 0.0, -kDepth + x * std::tan(slope) + 0.5 * kDiameter / std::cos(slope));
+  };
+  const auto polyline = [&](double x) { return x / std::cos(slope) + (fairlead - onIncline(x)).norm(); };
+  double lo = 0.0, hi = kSpan - 1.0;
+  for (int it = 0; it < 100; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (polyline(mid) < 0.97 * kLength ? lo : hi) = mid;
+  }
+  line.startShape = {model::StartPoint{onIncline(0.0)}, model::StartPoint{onIncline(lo)},
+                     model::StartPoint{fairlead}};
+  spec.lines.push_back(line);
+  const double w = chain.submergedWeight(spec.environment.waterDensity, spec.environment.gravity);
+
+  model::Model m(std::move(spec));
+  const Vec3 anchor = m.spec().lines[0].endA.position;
+  solver::Assembler assembler(m);
+  model::State s = m.initialState();
+  const solver::StaticResult r = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+  ASSERT_TRUE(r.converged) << r.message;
+  VecX force;
+  solver::AssemblyRequest request;
+  request.wantMatrix = false;
+  assembler.assemble(s, request, force, nullptr);
+  const std::vector<solver::LineSnapshot> lines = solver::computeLineResults(m, assembler, s, force);
+  const Vec3 chord = fairlead - anchor;
+  const InclineCatenary exact =
+      solveInclineCatenary(Vec2(chord.x(), chord.y()).norm(), chord.z(), slope, kLength, w, kEa, kMu);
+  const InclineCatenary frictionless =
+      solveInclineCatenary(Vec2(chord.x(), chord.y()).norm(), chord.z(), slope, kLength, w, kEa);
+  ASSERT_GT(exact.groundedLength, 20.0) << "the case must have a laid part";
+  ASSERT_GT(exact.anchorTension, 0.0) << "the case must keep the laid part in tension";
+  // The friction matters: the anchor tension differs from the frictionless one by far more than 0.5 %.
+  ASSERT_GT(std::abs(exact.anchorTension - frictionless.anchorTension), 0.05 * exact.anchorTension);
+  EXPECT_NEAR(lines[0].endTensionB, exact.fairleadTension, 0.005 * exact.fairleadTension);
+  EXPECT_NEAR(lines[0].endTensionA, exact.anchorTension, 0.005 * exact.anchorTension);
+  EXPECT_NEAR(lines[0].touchdownArcLength, exact.groundedLength, 0.005 * kLength);
+}
+
+/// A chain laid along the bottom of a V-shaped trough of a bathymetry grid (the trough's bottom is the grid
+/// line x = 0, 8 m deeper than x = +-400 m), its fairlead held above the trough; `mu` seabed friction,
+/// current `current` [m/s] across the trough (+x).
+model::ModelSpec chainAlongATrough(seabed::SeabedSurface::Interpolation interpolation, double current) {
+  model::ModelSpec spec;
+  spec.sourceFile = "chain along a trough (test)";
+  spec.environment.waterDepth = 183.0;
+  spec.environment.seabed.normalStiffness = 1.0e6;
+  spec.environment.seabed.frictionCoefficient = 0.5;
+  if (current > 0.0) spec.environment.current = {{0.0, current, 0.0}, {-183.0, current, 0.0}};
+  const std::vector<double> x{-400.0, 0.0, 400.0}, y{-1000.0, 0.0, 1000.0};
+  std::vector<double> h;
+  for (std::size_t j = 0; j < y.size(); ++j)
+    for (const double xi : x) h.push_back(xi == 0.0 ? -183.0 : -175.0);
+  spec.environment.seabedSurface =
+      std::make_shared<const seabed::SeabedSurface>(seabed::SeabedSurface::grid(x, y, h, interpolation));
+  spec.lineTypes["chain"] = test::cableType("chain", 0.1368, 114.9, 4.93e8);
+  spec.lines.push_back(test::simpleLine("leg", "chain", 830.0, 166, model::EndKind::Anchored,
+                                        Vec3(0.0, -780.0, -183.0), model::EndKind::Fixed,
+                                        Vec3(0.0, 0.0, -15.0)));
+  return spec;
+}
+
+// A line laid along a grid line of a bathymetry grid (issue 46's knife edge): on the bilinear surface the
+// trough's bottom is a crease whose normal flips by 2.3 deg across it; on the bicubic one (the default of
+// `bathymetry`) the surface is C1 and the grid line is the trough's smooth bottom, with slope 0 across it.
+// There the line lies at the bottom, so its statics are those of the same line on a flat seabed at the
+// trough's depth (183 m) in still water: fairlead and anchor tensions within 0.1 % (the trough's curvature
+// across the line lifts nothing at its bottom; the seabed's penetration differs by the normal's tilt, 0).
+// In a current across the trough (0.5 m/s) the line settles on the trough's flank: it must converge.
+// Measured through the CLI on the same model: bicubic 4 Newton iterations in still water and 52 in the
+// current; the bilinear grid does not converge in still water (1107 iterations, every fallback, load
+// fraction 0.022: the knife edge) and takes 562 iterations and four load steps in the current.
+TEST(BathymetryTrough, ALineAlongTheCubicTroughsBottomIsTheFlatSeabedsCatenary) {
+  const auto tensions = [](model::ModelSpec spec, bool& converged) {
+    model::Model m(std::move(spec));
+    solver::Assembler assembler(m);
+    model::State s = m.initialState();
+    const solver::StaticResult r = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+    converged = r.converged;
+    EXPECT_TRUE(r.converged) << r.message;
+    VecX force;
+    solver::AssemblyRequest request;
+    request.wantMatrix = false;
+    assembler.assemble(s, request, force, nullptr);
+    const std::vector<solver::LineSnapshot> lines = solver::computeLineResults(m, assembler, s, force);
+    return std::array<double, 2>{lines[0].endTensionA, lines[0].endTensionB};
+  };
+  bool converged = false;
+  model::ModelSpec flat = chainAlongATrough(seabed::SeabedSurface::Interpolation::Cubic, 0.0);
+  flat.environment.seabedSurface.reset();
+  const std::array<double, 2> reference = tensions(flat, converged);
+  ASSERT_TRUE(converged);
+  const std::array<double, 2> trough =
+      tensions(chainAlongATrough(seabed::SeabedSurface::Interpolation::Cubic, 0.0), converged);
+  ASSERT_TRUE(converged);
+  EXPECT_NEAR(trough[0], reference[0], 1e-3 * reference[0]);
+  EXPECT_NEAR(trough[1], reference[1], 1e-3 * reference[1]);
+  tensions(chainAlongATrough(seabed::SeabedSurface::Interpolation::Cubic, 0.5), converged);
+  EXPECT_TRUE(converged) << "a current across the trough";
 }
 
 }  // namespace
