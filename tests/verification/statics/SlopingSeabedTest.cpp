@@ -84,6 +84,19 @@ InclineCatenary solveInclineCatenary(double span, double height, double beta, do
   return c;
 }
 
+/// Solves the statics of `m` from its initial state; `result` gets the solver's result, and the line results
+/// (end tensions, touchdown) at the state reached are returned.
+std::vector<solver::LineSnapshot> solveStatics(const model::Model& m, solver::StaticResult& result) {
+  solver::Assembler assembler(m);
+  model::State s = m.initialState();
+  result = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+  VecX force;
+  solver::AssemblyRequest request;
+  request.wantMatrix = false;
+  assembler.assemble(s, request, force, nullptr);
+  return solver::computeLineResults(m, assembler, s, force);
+}
+
 constexpr double kDepth = 100.0, kLength = 300.0, kDiameter = 0.1, kEa = 5.0e8;
 
 struct SlopeCase {
@@ -118,16 +131,9 @@ TEST_P(CatenaryOnAnIncline, MatchesTheInclineCatenary) {
   // Seated: on the contact surface, one radius from the seabed along its normal, less the resting penetration
   // (0.6 mm: the smooth onset over the first 2 mm).
   EXPECT_NEAR(m.seabedSurface().gap(anchor, 0.5 * kDiameter), 0.0, 1e-3);
-  solver::Assembler assembler(m);
-  model::State s = m.initialState();
-  solver::StaticSolver solver(assembler, m.spec().statics);
-  const solver::StaticResult r = solver.solve(s);
+  solver::StaticResult r;
+  const std::vector<solver::LineSnapshot> lines = solveStatics(m, r);
   ASSERT_TRUE(r.converged) << r.message;
-  VecX force;
-  solver::AssemblyRequest request;
-  request.wantMatrix = false;
-  assembler.assemble(s, request, force, nullptr);
-  const std::vector<solver::LineSnapshot> lines = solver::computeLineResults(m, assembler, s, force);
 
   // The slope along the line: the seabed's rise per metre in the line's direction.
   const double beta =
@@ -268,15 +274,9 @@ TEST(CatenaryOnAnInclineWithFriction, MatchesTheInclineCatenaryWithMobilisedFric
 
   model::Model m(std::move(spec));
   const Vec3 anchor = m.spec().lines[0].endA.position;
-  solver::Assembler assembler(m);
-  model::State s = m.initialState();
-  const solver::StaticResult r = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+  solver::StaticResult r;
+  const std::vector<solver::LineSnapshot> lines = solveStatics(m, r);
   ASSERT_TRUE(r.converged) << r.message;
-  VecX force;
-  solver::AssemblyRequest request;
-  request.wantMatrix = false;
-  assembler.assemble(s, request, force, nullptr);
-  const std::vector<solver::LineSnapshot> lines = solver::computeLineResults(m, assembler, s, force);
   const Vec3 chord = fairlead - anchor;
   const InclineCatenary exact =
       solveInclineCatenary(Vec2(chord.x(), chord.y()).norm(), chord.z(), slope, kLength, w, kEa, kMu);
@@ -326,17 +326,11 @@ model::ModelSpec chainAlongATrough(seabed::SeabedSurface::Interpolation interpol
 // fraction 0.022: the knife edge) and takes 562 iterations and four load steps in the current.
 TEST(BathymetryTrough, ALineAlongTheCubicTroughsBottomIsTheFlatSeabedsCatenary) {
   const auto tensions = [](model::ModelSpec spec, bool& converged) {
-    model::Model m(std::move(spec));
-    solver::Assembler assembler(m);
-    model::State s = m.initialState();
-    const solver::StaticResult r = solver::StaticSolver(assembler, m.spec().statics).solve(s);
+    const model::Model m(std::move(spec));
+    solver::StaticResult r;
+    const std::vector<solver::LineSnapshot> lines = solveStatics(m, r);
     converged = r.converged;
     EXPECT_TRUE(r.converged) << r.message;
-    VecX force;
-    solver::AssemblyRequest request;
-    request.wantMatrix = false;
-    assembler.assemble(s, request, force, nullptr);
-    const std::vector<solver::LineSnapshot> lines = solver::computeLineResults(m, assembler, s, force);
     return std::array<double, 2>{lines[0].endTensionA, lines[0].endTensionB};
   };
   bool converged = false;
