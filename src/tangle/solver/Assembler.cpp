@@ -220,7 +220,8 @@ void Assembler::addAll(const model::State& state, const AssemblyRequest& request
   // One sequence for the whole model and for a part: each entry of a part's nodes then sums the same
   // terms in the same order as in a whole assembly (assemblePart's contract: bit for bit).
   addElements(state, request, force, matrix, part ? &part->elements : nullptr);
-  addWeight(state, request, force, part ? &part->elements : nullptr, part ? &part->attachments : nullptr);
+  addWeight(state, request, force, part ? &part->elements : nullptr, part ? &part->attachments : nullptr,
+            matrix);
   addSeabed(state, request, force, matrix, part ? &part->nodes : nullptr);
   for (LoadContributor* c : m_contributors) {
     if (part)
@@ -324,7 +325,8 @@ void Assembler::addAxialDamping(const model::State& state, const model::LineElem
 }
 
 void Assembler::addWeight(const model::State& state, const AssemblyRequest& request, VecX& force,
-                          const std::vector<int>* elements, const std::vector<int>* attachments) {
+                          const std::vector<int>* elements, const std::vector<int>* attachments,
+                          SystemMatrix* matrix) {
   const model::DofMap& dofs = m_model->dofs();
   const auto& env = m_model->environment();
   const double g = env.gravity;
@@ -334,8 +336,23 @@ void Assembler::addWeight(const model::State& state, const AssemblyRequest& requ
     const double frac = submergedFraction(state.position[el.node1].z(), state.position[el.node2].z());
     // Out-of-balance force: F = f_int - f_ext, and the external load is -weight/2 * z at each node.
     const double half = (m_halfWeight[e] - m_halfBuoyancy[e] * frac) * request.loadFactor;
-    force[dofs.firstDof(el.node1) + 2] += half;
-    force[dofs.firstDof(el.node2) + 2] += half;
+    const int z1 = dofs.firstDof(el.node1) + 2, z2 = dofs.firstDof(el.node2) + 2;
+    force[z1] += half;
+    force[z2] += half;
+    if (matrix && frac > 0.0 && frac < 1.0) {
+      // An element through the surface: its buoyancy changes with the heights of its nodes, the waterplane
+      // stiffness of a float (without it in H the vertical position of a surface-piercing buoy is held by
+      // nothing but its lines in the Newton iteration). frac = |z_below| / |z2 - z1|, whichever node is
+      // below: d frac / d z1 = -|z2| / (z2 - z1)^2 and d frac / d z2 = -|z1| / (z2 - z1)^2.
+      const double za = state.position[el.node1].z(), zb = state.position[el.node2].z();
+      const double span2 = (zb - za) * (zb - za);
+      const double k = m_halfBuoyancy[e] * request.loadFactor * request.kf;
+      const double d1 = -std::abs(zb) / span2, d2 = -std::abs(za) / span2;  // d frac / d z1, d frac / d z2
+      matrix->add(z1, z1, -k * d1);
+      matrix->add(z1, z2, -k * d2);
+      matrix->add(z2, z1, -k * d1);
+      matrix->add(z2, z2, -k * d2);
+    }
   });
   forEachIndex(attachments, m_model->attachments().size(), [&](std::size_t i) {
     const model::NodeAttachment& a = m_model->attachments()[i];

@@ -188,8 +188,10 @@ class Assembler {
   // The loops of addAll and addAllMass; with lists, over those elements, nodes and attachments only.
   void addElements(const model::State& state, const AssemblyRequest& request, VecX& force,
                    SystemMatrix* matrix, const std::vector<int>* elements = nullptr);
+  /// With `matrix`: the waterplane stiffness of elements through the surface.
   void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force,
-                 const std::vector<int>* elements = nullptr, const std::vector<int>* attachments = nullptr);
+                 const std::vector<int>* elements = nullptr, const std::vector<int>* attachments = nullptr,
+                 SystemMatrix* matrix = nullptr);
   void addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
                        const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const;
   void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix,

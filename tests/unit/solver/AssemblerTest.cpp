@@ -1,6 +1,7 @@
 // Unit tests of the assembler's inertia and damping terms: consistent and lumped mass carry the same
 // total mass (rigid translation), axial damping opposes the stretching rate with its exact derivative,
-// and attachment drag opposes the relative velocity.
+// attachment drag opposes the relative velocity, and the waterplane stiffness of an element through the
+// surface is the derivative of its buoyancy.
 
 #include <gtest/gtest.h>
 
@@ -35,7 +36,8 @@ TEST(Assembler, ConsistentAndLumpedMassCarryTheSameTotalMass) {
     for (int node = 0; node < sim.model().nodeCount(); ++node) a[sim.model().dofs().firstDof(node)] = 2.0;
     sim.assembler().addMass(sim.state(), 0.0, nullptr, &a, &out);
     double total = 0.0;
-    for (int node = 0; node < sim.model().nodeCount(); ++node) total += out[sim.model().dofs().firstDof(node)];
+    for (int node = 0; node < sim.model().nodeCount(); ++node)
+      total += out[sim.model().dofs().firstDof(node)];
     EXPECT_NEAR(total, 50.0 * 20.0 * 2.0, 1e-9) << (lumped ? "lumped" : "consistent");
   }
 }
@@ -95,6 +97,61 @@ TEST(Assembler, AttachmentDragOpposesRelativeVelocity) {
   reference.assembler().assemble(reference.state(), request, without, nullptr);
   EXPECT_NEAR(-(with[d + 1] - without[d + 1]), 0.5 * 1025.0 * 2.0, 1e-6);
   EXPECT_NEAR(with[d] - without[d], 0.0, 1e-9);
+}
+
+TEST(Assembler, WaterplaneStiffnessIsTheDerivativeOfTheBuoyancy) {
+  // A free float line through the surface (its middle element from z = -1.3 to +0.7, tilted), nothing but its
+  // bars, weight and buoyancy: the vertical entries of H at the middle element's nodes equal the central
+  // difference of the out-of-balance force. Without the waterplane term (docs/theory.md 5.1) they would miss
+  // rho g A_b L / 2 x |z_j| / (z2 - z1)^2, 0.6-1.0 kN/m here. Tolerance: the central difference's truncation
+  // and round-off on bars of EA / L = 5e6 N/m, 1e-3 N/m.
+  model::ModelSpec spec;
+  spec.sourceFile = "assembler (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["float"] = test::cableType("float", 0.5, 50.0, 1.0e7);
+  spec.lines.push_back(test::simpleLine("l", "float", 6.0, 3, model::EndKind::Free, Vec3(0, 0, -3.3),
+                                        model::EndKind::Free, Vec3(0.5, 0, 2.7)));
+  analysis::Simulation sim(std::move(spec));
+  model::State state = sim.state();
+  state.position[1] = Vec3(0.2, 0.1, -1.3);
+  state.position[2] = Vec3(0.3, -0.1, 0.7);
+  const model::DofMap& dofs = sim.model().dofs();
+  solver::AssemblyRequest request;
+  solver::SystemMatrix matrix(dofs);
+  VecX f0;
+  sim.assembler().assemble(state, request, f0, &matrix);
+  SparseMatrix k;
+  matrix.build(k);
+  const Eigen::MatrixXd dense(k);
+  const double h = 1e-6;
+  const double waterplane = 1025.0 * 9.80665 * 0.25 * kPi * 0.25 * 2.0 / 2.0;  // rho g A_b L / 2 [N/m]
+  for (const int node : {1, 2}) {
+    model::State sp = state, sm = state;
+    sp.position[static_cast<std::size_t>(node)].z() += h;
+    sm.position[static_cast<std::size_t>(node)].z() -= h;
+    solver::AssemblyRequest forcesOnly = request;
+    forcesOnly.wantMatrix = false;
+    VecX fp, fm;
+    sim.assembler().assemble(sp, forcesOnly, fp, nullptr);
+    sim.assembler().assemble(sm, forcesOnly, fm, nullptr);
+    const VecX column = (fp - fm) / (2 * h);
+    const int col = dofs.equation(dofs.firstDof(node) + 2);
+    for (const int other : {1, 2}) {
+      const int row = dofs.firstDof(other) + 2;
+      EXPECT_NEAR(dense(dofs.equation(row), col), column[row], 1e-3)
+          << "node " << node << ", row node " << other;
+    }
+  }
+  // The term itself at the upper node's column: rho g A_b L / 2 |z1| / (z2 - z1)^2 in both rows.
+  const double zLow = -1.3, zHigh = 0.7;
+  const double expected = waterplane * std::abs(zLow) / ((zHigh - zLow) * (zHigh - zLow));
+  model::State sp = state;
+  sp.position[2].z() += h;
+  solver::AssemblyRequest weightOnly = request;
+  VecX wp = VecX::Zero(dofs.fullDofCount()), w0 = VecX::Zero(dofs.fullDofCount());
+  sim.assembler().addTerm(solver::Assembler::Term::Weight, sp, weightOnly, wp);
+  sim.assembler().addTerm(solver::Assembler::Term::Weight, state, weightOnly, w0);
+  EXPECT_NEAR((wp[dofs.firstDof(2) + 2] - w0[dofs.firstDof(2) + 2]) / h, expected, 1e-3 * expected);
 }
 
 }  // namespace
