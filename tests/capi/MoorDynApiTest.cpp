@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -260,6 +261,42 @@ TEST(MoorDynApi, FreePointJoiningTwoLinesIsBalanced) {
   ASSERT_EQ(MoorDyn_GetLineFairTen(MoorDyn_GetLine(system, 1), &chain), MOORDYN_SUCCESS);
   ASSERT_EQ(MoorDyn_GetLineFairTen(MoorDyn_GetLine(system, 2), &rope), MOORDYN_SUCCESS);
   EXPECT_GT(chain, 20.0 * rope);
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
+TEST(MoorDynApi, TripodRunsAsInMoorDynsOwnTest) {
+  // MoorDyn's tests/tripod.cpp: Init without coupled points, then 3 s in steps of 0.1 s. Free point 3 joins
+  // four deck lines (a float's tether and three bridles); every one of their ends stays at it and the lines'
+  // pulls on it balance (it has no body of its own).
+  const std::string deck = std::string(tangle::test::kTestDataDir) + "/moordyn/tripod.txt";
+  MoorDyn system = MoorDyn_Create(deck.c_str());
+  ASSERT_NE(system, nullptr);
+  ASSERT_EQ(MoorDyn_Init(system, nullptr, nullptr), MOORDYN_SUCCESS);
+  double t = 0.0;
+  for (int i = 0; i < 30; ++i) {
+    double dt = 0.1;
+    ASSERT_EQ(MoorDyn_Step(system, nullptr, nullptr, nullptr, &t, &dt), MOORDYN_SUCCESS) << "step " << i;
+  }
+  EXPECT_NEAR(t, 3.0, 1e-9);
+  double point[3], end[3], force[3];
+  ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(system, 3), point), MOORDYN_SUCCESS);
+  double largest = 0.0;
+  for (const int id : {2, 3, 6, 9}) {  // each starts (node 0) at point 3
+    MoorDynLine line = MoorDyn_GetLine(system, static_cast<unsigned int>(id));
+    ASSERT_EQ(MoorDyn_GetLineNodePos(line, 0, end), MOORDYN_SUCCESS);
+    const double gap[3] = {end[0] - point[0], end[1] - point[1], end[2] - point[2]};
+    EXPECT_LT(norm(gap), 1e-4) << "line " << id;  // the ties stretch by micrometres under ~100 N
+    double tension = 0.0;
+    ASSERT_EQ(MoorDyn_GetLineNodeTen(line, 0, end), MOORDYN_SUCCESS);
+    tension = norm(end);
+    largest = std::max(largest, tension);
+  }
+  EXPECT_GT(largest, 10.0);
+  ASSERT_EQ(MoorDyn_GetPointForce(MoorDyn_GetPoint(system, 3), force), MOORDYN_SUCCESS);
+  EXPECT_LT(norm(force), 0.02 * largest);
+  // The float (free point 2 at the top of line 1) floats: it reaches above the still water level.
+  ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(system, 2), point), MOORDYN_SUCCESS);
+  EXPECT_GT(point[2], 0.0);
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 

@@ -44,7 +44,8 @@ LoadTerms staticLoads(Simulation& simulation) {
   terms.other = VecX::Zero(size);
   terms.endAttachmentDrag = VecX::Zero(size);
   for (solver::LoadContributor* c : assembler.contributors()) {
-    if (c->source() == solver::LoadSource::Vessels) continue;  // the supports of the line ends
+    // The supports of the line ends: vessels' links and the ties at free points.
+    if (c->source() == solver::LoadSource::Vessels || c->source() == solver::LoadSource::Junctions) continue;
     if (c->source() == solver::LoadSource::Hydrodynamic) {
       c->addForces(state, request, terms.drag, nullptr);
       solver::AssemblyPart part;
@@ -150,6 +151,31 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
     for (const auto& term : b.terms) b.residual += term.second;
     b.tolerance = (last - first + 1) * nodeBound / b.scale;
     audit.lines.push_back(std::move(b));
+  }
+
+  // Each free point: its body's weight and buoyancy and its drag (the attachment at its carrier node) against
+  // the pulls of the line ends there (each line's end force, which the line exerts on its support).
+  for (const model::JunctionPoint& p : model.points()) {
+    solver::ForceBalance b;
+    b.name = p.name;
+    // What is attached at the carrier node is at the point (external loads positive).
+    const int d = dofs.firstDof(p.node);
+    const Vec3 body = -t.attachments.segment<3>(d), drag = -t.endAttachmentDrag.segment<3>(d);
+    Vec3 pulls = Vec3::Zero();
+    for (const int node : p.endNodes) {
+      const int l = model.lineOfNode(node);
+      const solver::LineSnapshot& s = snapshot[static_cast<std::size_t>(l)];
+      pulls += node == model.lines()[static_cast<std::size_t>(l)].firstNode ? s.endTensionForceA
+                                                                            : s.endTensionForceB;
+    }
+    b.terms = {{"weight and buoyancy", body}, {"drag", drag}, {"lines", pulls}};
+    b.scale = 1.0;
+    for (const auto& term : b.terms) {
+      b.residual += term.second;
+      b.scale = std::max(b.scale, term.second.norm());
+    }
+    b.tolerance = static_cast<double>(1 + p.endNodes.size()) * nodeBound / b.scale;
+    audit.points.push_back(std::move(b));
   }
 
   if (const vessel::VesselSystem* vessels = simulation.vessels()) {

@@ -24,6 +24,10 @@ Simulation::Simulation(model::ModelSpec spec)
       m_hydro(std::make_unique<hydro::HydroLoads>(*m_model)),
       m_state(m_model->initialState()) {
   m_assembler->addContributor(m_hydro.get());
+  if (!m_model->ties().empty()) {
+    m_junctions = std::make_unique<solver::JunctionTies>(*m_model);
+    m_assembler->addContributor(m_junctions.get());
+  }
   if (!m_model->vessels().empty()) {
     m_vessels = std::make_unique<vessel::VesselSystem>(*m_model, *m_hydro);
     m_assembler->addContributor(m_vessels.get());
@@ -354,6 +358,8 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   }
   // Ends tied to vessels: take the link forces out, so what remains at the end node is the line's pull.
   if (m_vessels) force -= m_vessels->endConnectionForces(m_state, m_state.time);
+  // Ends at free points: likewise the ties' forces.
+  if (m_junctions) force -= m_junctions->tieForces(m_state);
   std::vector<solver::LineSnapshot> lines = solver::computeLineResults(*m_model, *m_assembler, m_state, force);
   // Statics: the exact end forces of the discrete model (the dynamics keep the extrapolated ones, which
   // the range graphs compute at every step from the elements alone).

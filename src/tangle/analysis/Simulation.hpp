@@ -12,6 +12,7 @@
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/Assembler.hpp"
+#include "tangle/solver/JunctionTies.hpp"
 #include "tangle/solver/LineResults.hpp"
 #include "tangle/solver/StaticSolver.hpp"
 #include "tangle/time/DynamicAnalysis.hpp"
@@ -80,6 +81,7 @@ class Simulation {
   std::unique_ptr<solver::Assembler> m_assembler;
   std::unique_ptr<hydro::HydroLoads> m_hydro;
   std::unique_ptr<contact::LineContact> m_contact;
+  std::unique_ptr<solver::JunctionTies> m_junctions;
   std::unique_ptr<vessel::VesselSystem> m_vessels;
   std::unique_ptr<vessel::HullContact> m_hullContact;
   std::unique_ptr<LineFailure> m_failure;

@@ -184,10 +184,11 @@ void ContactCandidates::buildExclusions() {
     m_zones[{l, o}].push_back({z.from, z.to, -inf, inf});
   }
   if (!m_spec.excludeConnections) return;
-  // Shared connection points: two line ends on the same vessel, or two held ends, closer than a few
-  // radii sums (fairlead groups, a hose and a pipe at one manifold). Along each line, the length from
-  // that end over which the lines are within twice their radii in the initial shape, plus one element,
-  // is excluded for that pair (the lines touch there by construction, not by a clash).
+  // Shared connection points: two line ends on the same vessel or at the same point, or two held ends, closer
+  // than a few radii sums (fairlead groups, a hose and a pipe at one manifold, a bridle's legs at their
+  // apex). Along each line, the length from that end over which the lines are within twice their radii in the
+  // initial shape, plus one element, is excluded for that pair (the lines touch there by construction, not by
+  // a clash).
   const model::State initial = m_model->initialState();
   const auto& elements = m_model->elements();
   // The line pairs with two held or same-vessel ends within 4 radii sums of each other: the ends sorted by x
@@ -221,8 +222,13 @@ void ContactCandidates::buildExclusions() {
         const int nb = endB == 0 ? lb.firstNode : lb.lastNode();
         const bool sameVessel =
             sa.kind == model::EndKind::Vessel && sb.kind == model::EndKind::Vessel && sa.vessel == sb.vessel;
-        const bool held = sa.kind != model::EndKind::Free && sb.kind != model::EndKind::Free;
-        if (!(sameVessel || held)) continue;
+        const bool samePoint =
+            sa.kind == model::EndKind::Point && sb.kind == model::EndKind::Point && sa.point == sb.point;
+        const auto isHeld = [](model::EndKind k) {
+          return k != model::EndKind::Free && k != model::EndKind::Point;
+        };
+        const bool held = isHeld(sa.kind) && isHeld(sb.kind);
+        if (!(sameVessel || samePoint || held)) continue;
         if ((initial.position[na] - initial.position[nb]).norm() > 4.0 * radii) continue;
         // Length along each line within 2 radii of the other line.
         auto reach = [&](const model::Line& l, int end, const model::Line& other) {

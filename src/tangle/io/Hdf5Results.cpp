@@ -139,6 +139,7 @@ void Hdf5Results::writeAudit(const solver::EquilibriumAudit& audit) {
   };
   write("lines", audit.lines);
   write("vessels", audit.vessels);
+  if (!audit.points.empty()) write("points", audit.points);
   m_file->flush();
 }
 

@@ -806,16 +806,45 @@ model::EndMotionSpec readMotion(const Value& v) {
 model::EndSpec readEnd(const Value& v, const ModelSpec& spec) {
   const model::EnvironmentSpec& env = spec.environment;
   using model::EndKind;
-  const Map m(v, {"type", "position", "vessel", "motion", "release", "tensioner", "flex_joint"});
+  const Map m(v, {"type", "position", "vessel", "point", "motion", "release", "tensioner", "flex_joint"});
   model::EndSpec end;
   end.sourceLine = v.line();
-  const Value type = m.get("type", "one of: anchored, fixed, pinned, free, vessel");
+  const Value type = m.get("type", "one of: anchored, fixed, pinned, free, vessel, point");
   end.kind = type.choice<EndKind>({{"anchored", EndKind::Anchored},
                                    {"fixed", EndKind::Fixed},
                                    {"pinned", EndKind::Pinned},
                                    {"free", EndKind::Free},
-                                   {"vessel", EndKind::Vessel}});
+                                   {"vessel", EndKind::Vessel},
+                                   {"point", EndKind::Point}});
   const std::string typeName = toLower(type.node().Scalar());
+  if (const std::optional<Value> point = m.find("point"); point && end.kind != EndKind::Point)
+    point->fail(fmt::format("'point' applies only to ends of type point; this end is of type {}", typeName));
+  if (end.kind == EndKind::Point) {
+    // The end starts where its point is: a position of its own would contradict it.
+    if (const std::optional<Value> position = m.find("position"))
+      position->fail(
+          "an end of type point starts at its point's position (points[].position): remove 'position'");
+    const Value point =
+        m.get("point", "the name of a point under 'points' (required for ends of type point)");
+    end.point = point.text("a point name");
+    const auto found = std::find_if(spec.points.begin(), spec.points.end(),
+                                    [&](const model::PointSpec& p) { return p.name == end.point; });
+    if (found == spec.points.end()) {
+      std::vector<std::string> names;
+      for (const model::PointSpec& p : spec.points) names.push_back("'" + p.name + "'");
+      point.fail(fmt::format("unknown point '{}'; {}", end.point,
+                             names.empty() ? "the model defines no points (add a 'points' block)"
+                                           : "points defined under points: " + join(names)));
+    }
+    end.position = found->position;
+    for (const char* key : {"motion", "release", "tensioner", "flex_joint"})
+      if (const std::optional<Value> other = m.find(key))
+        other->fail(
+            fmt::format("'{}' does not apply to an end of type point (the point is free; its lines "
+                        "hold it)",
+                        key));
+    return end;
+  }
   const Value position = m.get("position", "a list of 3 numbers [x, y, z] in m");
   end.position = position.position();
 
@@ -1092,6 +1121,13 @@ model::LineSpec readLine(const Value& v, const ModelSpec& spec, NameRegistry& na
     line.startShape = readStartShape(*shape, length, spec.environment);
   if (const std::optional<Value> failure = m.find("failure"))
     line.failure = readFailure(*failure, line, spec, length);
+  if (line.endA.kind == model::EndKind::Point && line.endB.kind == model::EndKind::Point &&
+      line.endA.point == line.endB.point)
+    m.get("end_b", endExpectation)
+        .fail(
+            fmt::format("both ends of line '{}' are at point '{}': a line from a point back to it is a loop "
+                        "that holds nothing",
+                        line.name, line.endA.point));
 
   // Ends clearly too far apart for the line's length: a mistake in the positions or lengths (a line
   // stretched by half its length ran to its end with 1.25 GN of tension and only a warning). Vessel ends
@@ -1141,6 +1177,45 @@ void readLines(const Value& v, ModelSpec& spec) {
       item.fail(fmt::format("the model has {} elements up to this line; they would need about {:.3g} GB of memory; "
                             "at most {} elements are accepted in a model",
                             elements, static_cast<double>(elements) * kBytesPerElement / 1e9, kMaxElements));
+  }
+}
+
+/// `points`: free points where line ends meet (`lines[].end_a/end_b: {type: point, point: NAME}`).
+void readPoints(const Value& v, ModelSpec& spec) {
+  NameRegistry names("point");
+  for (const Value& item : v.items(1, ItemLabel::Name)) {
+    const Map m(item, {"name", "position", "mass", "volume", "drag_area", "added_mass"});
+    model::PointSpec p;
+    p.sourceLine = item.line();
+    p.name = names.add(m);
+    const Value position = m.get("position", "the initial position [x, y, z] in m");
+    p.position = position.position();
+    const double seabedZ = seabedHeight(spec.environment, p.position.x(), p.position.y());
+    if (p.position.z() < seabedZ - kSeabedTolerance)
+      position.fail(
+          fmt::format("the point is below the seabed: z = {} m, the seabed is at z = {} m ({}); "
+                      "expected z >= {}",
+                      numberText(p.position.z()), numberText(seabedZ), seabedLevelText(spec.environment),
+                      numberText(seabedZ)));
+    p.body.mass = m.number("mass", 0.0, nonNegativeUpTo(kMaxMass));
+    p.body.volume = m.number("volume", 0.0, nonNegativeUpTo(kMaxMass / 1000.0));
+    p.body.dragArea = m.number("drag_area", 0.0, nonNegativeUpTo(1.0e4));
+    p.body.addedMass = m.number("added_mass", 0.0, nonNegativeUpTo(kMaxMass));
+    spec.points.push_back(p);
+  }
+}
+
+/// Every point holds at least one line end (runs after `lines`).
+void checkPointsUsed(const ModelSpec& spec) {
+  for (const model::PointSpec& p : spec.points) {
+    const bool used = std::any_of(spec.lines.begin(), spec.lines.end(), [&](const model::LineSpec& l) {
+      return (l.endA.kind == model::EndKind::Point && l.endA.point == p.name) ||
+             (l.endB.kind == model::EndKind::Point && l.endB.point == p.name);
+    });
+    if (!used)
+      throw InputError(spec.sourceFile, p.sourceLine, "points[" + p.name + "]",
+                       "no line end is at this point: give a line an end {type: point, point: " + p.name +
+                           "}, or remove the point");
   }
 }
 
@@ -1765,6 +1840,8 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"environment", true, "a map {water_depth, ...}", readEnvironment},
     TopLevelBlock{"line_types", true, "a list of line types {name, outer_diameter, ...}", readLineTypes},
     TopLevelBlock{"vessels", false, "a list of vessels {name, mode, position, ...}", readVessels},
+    TopLevelBlock{"points", false,
+                  "a list of free points {name, position, mass, volume, ...} joining line ends", readPoints},
     TopLevelBlock{"lines", true, "a list of lines {name, end_a, end_b, sections, ...}", readLines},
     TopLevelBlock{"statics", false, "a map of static solver settings", readStatics},
     TopLevelBlock{"dynamics", false, "a map of dynamic analysis settings", readDynamics},
@@ -1792,6 +1869,7 @@ ModelSpec readDocument(const YAML::Node& root, const std::string& source) {
     else if (block.required)
       m.missing(block.key, block.expectation);
   }
+  checkPointsUsed(spec);
   // A clash can part only a line that takes part in contact.
   for (const model::LineSpec& line : spec.lines)
     if (line.failure.clashEnergy > 0.0 && (!spec.contact.enabled || !line.contact))

@@ -127,8 +127,11 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
       namespace fs = std::filesystem;
       const fs::path given(o.value);
       std::vector<fs::path> tried{given};
+      std::error_code absoluteError;
+      const fs::path deckPath = fs::absolute(fs::path(deck.file), absoluteError);
       if (given.is_relative())
-        for (fs::path dir = fs::path(deck.file).parent_path(); tried.size() < 5; dir = dir.parent_path()) {
+        for (fs::path dir = (absoluteError ? fs::path(deck.file) : deckPath).parent_path(); tried.size() < 5;
+             dir = dir.parent_path()) {
           tried.push_back(dir / given);
           if (dir.empty() || dir == dir.parent_path()) break;
         }
@@ -265,13 +268,13 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
       throw InputError(
           deck.file, p.sourceLine, fmt::format("point {}", p.id),
           "no line is attached to this point (tangle models lines; a lone point has nothing to hold)");
-    if (p.kind == MoorDynPointKind::Free && n > 2)
-      throw InputError(
-          deck.file, p.sourceLine, fmt::format("point {}", p.id),
-          fmt::format("a free point joining {} lines (a bridle or a triplate) is not supported: tangle "
-                      "joins lines in series only (two lines at a free point)",
-                      n));
   }
+  // A free point joining three or more deck lines (a bridle's apex, a triplate) is a tangle point, where the
+  // lines end with `type: point`; a free point joining two is a node inside one tangle line (a chain).
+  const auto isHub = [&](int pointId) {
+    return deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
+           atPoint[static_cast<std::size_t>(pointId - 1)].size() > 2;
+  };
   const auto isJunction = [&](int pointId) {
     return deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
            atPoint[static_cast<std::size_t>(pointId - 1)].size() == 2;
@@ -628,6 +631,18 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
         line(fmt::format("      position: {}", vec(p.position)));
         break;
       case MoorDynPointKind::Free:
+        if (isHub(pointId)) {
+          line(fmt::format(
+              "    {}: {{type: point, point: point{}}}   # point {} free (deck line {}), joining {} "
+              "lines",
+              key, p.id, p.id, p.sourceLine, atPoint[static_cast<std::size_t>(pointId - 1)].size()));
+          // The first line end at the point carries it (the Model's rule): its end node is the point.
+          if (m.junctionLine.empty()) {
+            m.junctionLine = lineName;
+            m.junctionNode = end == 0 ? 0 : -2;  // -2: the last node, set when the line's segments are known
+          }
+          break;
+        }
         line(fmt::format("    {}:", key));
         line(fmt::format(
             "      type: free              # point {} {} (deck line {}): the position is the starting "
@@ -647,6 +662,23 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     line(fmt::format("        added_mass: {}       # Ca {} x rho x Volume",
                      num(p.addedMass * opt.density * p.volume), num(p.addedMass)));
   };
+
+  bool anyHub = false;
+  for (const MoorDynPoint& p : deck.points) {
+    if (!isHub(p.id)) continue;
+    if (!anyHub) line("points:                          # free points joining three or more lines");
+    anyHub = true;
+    line(fmt::format("  - name: point{}                # point {} (deck line {})", p.id, p.id, p.sourceLine));
+    line(fmt::format("    position: {}", vec(p.position)));
+    if (p.mass != 0.0) line(fmt::format("    mass: {}", num(p.mass)));
+    if (p.volume != 0.0) {
+      line(fmt::format("    volume: {}", num(p.volume)));
+      line(fmt::format("    added_mass: {}       # Ca {} x rho x Volume",
+                       num(p.addedMass * opt.density * p.volume), num(p.addedMass)));
+    }
+    if (p.dragArea != 0.0) line(fmt::format("    drag_area: {}        # CdA", num(p.dragArea)));
+  }
+  if (anyHub) line("");
 
   line("lines:");
   for (std::size_t chainIndex = 0; chainIndex < chains.size(); ++chainIndex) {
@@ -695,10 +727,13 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     }
     const MoorDynPoint& first = deck.points[static_cast<std::size_t>(startPoint - 1)];
     const MoorDynPoint& last = deck.points[static_cast<std::size_t>(endPoint - 1)];
-    const bool startMass = first.kind == MoorDynPointKind::Free &&
+    // A hub's body is its point's (the `points` block), not an attachment.
+    const bool startMass = first.kind == MoorDynPointKind::Free && !isHub(startPoint) &&
                            (first.mass != 0.0 || first.volume != 0.0 || first.dragArea != 0.0);
-    const bool endMass = last.kind == MoorDynPointKind::Free &&
+    const bool endMass = last.kind == MoorDynPointKind::Free && !isHub(endPoint) &&
                          (last.mass != 0.0 || last.volume != 0.0 || last.dragArea != 0.0);
+    MoorDynPointMap& endMap = out.points[static_cast<std::size_t>(endPoint - 1)];
+    if (endMap.junctionLine == name && endMap.junctionNode == -2) endMap.junctionNode = node;
     bool junctionMass = false;
     for (const auto& [p, s] : junctions) {
       const MoorDynPoint& jp = deck.points[static_cast<std::size_t>(p - 1)];

@@ -29,10 +29,13 @@ struct MoorDynPointMap {
   MoorDynPointKind kind = MoorDynPointKind::Fixed;
   Vec3 position = Vec3::Zero();  ///< the deck's position [m]
   /// The tangle line ends held at this point (line name, 0 = end A / 1 = end B): every end of a Fixed or
-  /// Coupled point; for a Free point the one end it is (a free end), or none when it joins two deck lines.
+  /// Coupled point, or of a Free point joining three or more deck lines (a tangle point: its carrier first);
+  /// for a Free point the one end it is (a free end), or none when it joins two deck lines.
   std::vector<std::pair<std::string, int>> ends;
-  std::string junctionLine;  ///< Free point joining two deck lines: the tangle line holding it
-  int junctionNode = -1;     ///< and the node index along that line
+  /// Free point joining two deck lines: the tangle line holding it; joining three or more: the line whose end
+  /// node carries the tangle point (model::JunctionPoint).
+  std::string junctionLine;
+  int junctionNode = -1;                           ///< and the node index along that line
   std::vector<std::pair<int, int>> attachedLines;  ///< (deck line id, 0 = end A / 1 = end B) attached here
 };
 
@@ -44,8 +47,8 @@ struct MoorDynConversion {
   std::vector<std::string> notes;       ///< what differs from MoorDyn (also in the YAML's comments)
 };
 
-/// Converts a deck. @throws InputError for what tangle cannot represent (a free point joining three or more
-/// lines, a line whose two ends are the same point, ...), naming the deck's file and line.
+/// Converts a deck. @throws InputError for what tangle cannot represent (a line whose two ends are the same
+/// point, lines joined at free points in a loop, ...), naming the deck's file and line.
 MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck);
 
 }  // namespace tangle::io

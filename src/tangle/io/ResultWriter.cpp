@@ -152,6 +152,29 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
     j.endObject();
   }
   j.endArray();
+  if (!model.points().empty()) {
+    // Free points (ModelSpec::points): where each came to rest and the line ends it joins.
+    j.key("points");
+    j.beginArray();
+    for (const model::JunctionPoint& p : model.points()) {
+      j.beginObject();
+      j.field("name", p.name);
+      const int l = model.lineOfNode(p.node);
+      const model::Line& line = model.lines()[static_cast<std::size_t>(l)];
+      const Vec3& x =
+          lines[static_cast<std::size_t>(l)].position[static_cast<std::size_t>(p.node - line.firstNode)];
+      j.field("position_m", std::vector<double>{x.x(), x.y(), x.z()});
+      j.key("line_ends");
+      j.beginArray();
+      for (const int node : p.endNodes) {
+        const model::Line& at = model.lines()[static_cast<std::size_t>(model.lineOfNode(node))];
+        j.value(at.name + (node == at.firstNode ? " end_a" : " end_b"));
+      }
+      j.endArray();
+      j.endObject();
+    }
+    j.endArray();
+  }
   if (audit) {
     j.key("equilibrium_audit");
     j.beginObject();
@@ -179,6 +202,7 @@ void writeStaticSummary(const fs::path& dir, const model::Model& model, const so
     };
     bodies("lines", audit->lines);
     bodies("vessels", audit->vessels);
+    if (!audit->points.empty()) bodies("points", audit->points);
     j.endObject();
   }
   j.endObject();

@@ -28,7 +28,9 @@ Model::Model(ModelSpec spec) : m_spec(std::make_unique<ModelSpec>(std::move(spec
                               seabed::SeabedSurface::flat(m_spec->environment.waterDepth));
   resolveSectionTypes();
   seatAnchorsOnSeabed();
+  placePointBodies();
   for (int i = 0; i < static_cast<int>(m_spec->lines.size()); ++i) buildLine(i);
+  buildPoints();
   for (int v = 0; v < static_cast<int>(m_spec->vessels.size()); ++v) buildVessel(v);
   m_dofs.finalize();
   m_parted = std::make_unique<PartedElements>(m_elements.size());
@@ -126,6 +128,68 @@ void Model::buildVessel(int v) {
   m_momentScale.push_back(10.0);  // moments on a hull compared with forces over a 10 m lever
   if (vs.mode != VesselMode::Free)
     for (int k = 0; k < 6; ++k) m_dofs.constrain(first + k);
+}
+
+namespace {
+/// The line ends at point `name`, input order: (line, 0 for end A / 1 for end B).
+std::vector<std::pair<int, int>> endsAtPoint(const ModelSpec& spec, const std::string& name) {
+  std::vector<std::pair<int, int>> ends;
+  for (std::size_t l = 0; l < spec.lines.size(); ++l)
+    for (int end = 0; end < 2; ++end) {
+      const EndSpec& e = end == 0 ? spec.lines[l].endA : spec.lines[l].endB;
+      if (e.kind == EndKind::Point && e.point == name) ends.emplace_back(static_cast<int>(l), end);
+    }
+  return ends;
+}
+}  // namespace
+
+void Model::placePointBodies() {
+  for (const PointSpec& p : m_spec->points) {
+    const std::vector<std::pair<int, int>> ends = endsAtPoint(*m_spec, p.name);
+    if (ends.empty())
+      throw InputError(m_spec->sourceFile, p.sourceLine, "points[" + p.name + "]",
+                       "no line end is at this point");
+    const AttachmentSpec& b = p.body;
+    if (b.mass == 0.0 && b.volume == 0.0 && b.dragArea == 0.0 && b.addedMass == 0.0) continue;
+    LineSpec& carrier = m_spec->lines[static_cast<std::size_t>(ends.front().first)];
+    AttachmentSpec body = b;
+    body.shared = false;
+    body.arcLength = 0.0;
+    if (ends.front().second == 1)
+      for (const SectionSpec& section : carrier.sections) body.arcLength += section.length;
+    carrier.attachments.push_back(body);
+  }
+}
+
+void Model::buildPoints() {
+  for (const PointSpec& p : m_spec->points) {
+    const std::vector<std::pair<int, int>> ends = endsAtPoint(*m_spec, p.name);
+    JunctionPoint j;
+    j.name = p.name;
+    for (const auto& [l, end] : ends) {
+      const Line& line = m_lines[static_cast<std::size_t>(l)];
+      j.endNodes.push_back(end == 0 ? line.firstNode : line.lastNode());
+    }
+    j.node = j.endNodes.front();
+    const bool body =
+        p.body.mass != 0.0 || p.body.volume != 0.0 || p.body.dragArea != 0.0 || p.body.addedMass != 0.0;
+    if (body)  // placePointBodies put it last among its carrier line's attachments
+      for (std::size_t a = m_attachments.size(); a-- > 0;)
+        if (m_attachments[a].node == j.node) {
+          j.attachments.push_back(static_cast<int>(a));
+          break;
+        }
+    for (std::size_t k = 1; k < ends.size(); ++k) {
+      const auto [l, end] = ends[k];
+      const Line& line = m_lines[static_cast<std::size_t>(l)];
+      const LineElement& el = m_elements[static_cast<std::size_t>(
+          end == 0 ? line.firstElement : line.firstElement + line.elementCount - 1)];
+      // As stiff as a vessel's link (VesselSystem): the tie stretches by 1 % of the end element's extension.
+      m_ties.push_back({j.endNodes[k], j.node, 100.0 * el.type->axialStiffness / el.restLength,
+                        static_cast<int>(m_points.size())});
+    }
+    m_points.push_back(std::move(j));
+  }
 }
 
 Vec3 Model::endPosition(const EndSpec& end) const {
@@ -273,7 +337,10 @@ void Model::buildLine(int lineIndex) {
   // A beam line whose ends both leave rotations free (pinned, anchored or free ends) can twist as a
   // rigid body about its own axis: a zero-stiffness mechanism. Restrain the rotation component along
   // the global axis closest to the chord at a held end A (the "torsion lock" of 3D frame supports).
-  const auto heldInTranslation = [](EndKind k) { return k == EndKind::Anchored || k == EndKind::Pinned; };
+  // A point end is pinned to its point: it twists as freely as an anchored end.
+  const auto heldInTranslation = [](EndKind k) {
+    return k == EndKind::Anchored || k == EndKind::Pinned || k == EndKind::Point;
+  };
   const int nodeA = line.firstNode;
   if (m_dofs.hasRotations(nodeA) && ls.endA.kind != EndKind::Fixed && ls.endB.kind != EndKind::Fixed &&
       ls.endA.kind != EndKind::Vessel && ls.endB.kind != EndKind::Vessel) {
@@ -305,6 +372,7 @@ void Model::constrainEnd(int node, const EndSpec& end) {
         if (!end.release[k]) m_dofs.constrain(first + k);
       break;
     case EndKind::Free:
+    case EndKind::Point:  // free, held by the other lines at the point (NodeTie)
       break;
     case EndKind::Vessel: {
       const int v = vesselIndex(end.vessel);
@@ -466,6 +534,10 @@ double Model::lineMass(int lineIndex) const {
   const Line& line = m_lines.at(lineIndex);
   double m = 0.0;
   for (int n = line.firstNode; n <= line.lastNode(); ++n) m += m_nodeMass[n];
+  // A point's body is the point's, not its carrier line's.
+  for (const JunctionPoint& p : m_points)
+    if (m_nodeLine[static_cast<std::size_t>(p.node)] == lineIndex)
+      for (const int a : p.attachments) m -= m_attachments[static_cast<std::size_t>(a)].spec.mass;
   return m;
 }
 

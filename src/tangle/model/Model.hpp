@@ -39,6 +39,25 @@ struct NodeAttachment {
   AttachmentSpec spec;  ///< mass, volume, drag, added mass
 };
 
+/// A free point (ModelSpec::points) as the mesh holds it: the end node of the first line end at it (input
+/// order) carries the point's body (an attachment) and is the point; every other line end at it is tied to
+/// that node (NodeTie).
+struct JunctionPoint {
+  std::string name;
+  int node = 0;                  ///< the carrier node: the point's position is this node's [global index]
+  std::vector<int> endNodes;     ///< every line end node at the point, the carrier's first
+  std::vector<int> attachments;  ///< indices into Model::attachments() of the point's body (at most one)
+};
+
+/// A line end node tied to a point's carrier node by a stiff isotropic spring (a pin: translations only):
+/// f = k (x_node - x_carrier) pulls the two together (docs/theory.md 2.5).
+struct NodeTie {
+  int node = 0;          ///< the tied line end node
+  int carrier = 0;       ///< the point's carrier node
+  double stiffness = 0;  ///< k [N/m]: 100 x EA / L of the tied line's end element, as a vessel's link
+  int point = 0;         ///< index into Model::points()
+};
+
 /// A line's mesh: a contiguous range of nodes and elements.
 struct Line {
   std::string name;
@@ -77,6 +96,10 @@ class Model {
   /// that every part that reads the elements sees it; only analysis::LineFailure parts them.
   PartedElements& parted() const { return *m_parted; }
   const std::vector<NodeAttachment>& attachments() const { return m_attachments; }
+  /// Free points joining line ends (ModelSpec::points), input order.
+  const std::vector<JunctionPoint>& points() const { return m_points; }
+  /// The ties of line ends to their points' carrier nodes (empty without points of two or more ends).
+  const std::vector<NodeTie>& ties() const { return m_ties; }
   const DofMap& dofs() const { return m_dofs; }  ///< DOF numbering
   int nodeCount() const { return m_dofs.nodeCount(); }
   /// Line index owning a node (-1 for a vessel node).
@@ -137,6 +160,10 @@ class Model {
   /// Node positions of a line with a start shape (LineSpec::startShape) between its end positions [m].
   std::vector<Vec3> startShapePositions(const Line& line, const Vec3& endA, const Vec3& endB) const;
   void buildVessel(int vesselIndex);
+  /// Each point's body becomes an attachment at the end of its carrier line (before the lines are built).
+  void placePointBodies();
+  /// m_points and m_ties (after the lines are built).
+  void buildPoints();
   void constrainEnd(int node, const EndSpec& end);
 
   std::unique_ptr<ModelSpec> m_spec;
@@ -146,6 +173,8 @@ class Model {
   std::unique_ptr<PartedElements> m_parted;
   std::shared_ptr<const seabed::SeabedSurface> m_seabedSurface;
   std::vector<NodeAttachment> m_attachments;
+  std::vector<JunctionPoint> m_points;
+  std::vector<NodeTie> m_ties;
   std::vector<std::unique_ptr<section::LineType>> m_contentTypes;  // line types with contents (per section)
   std::vector<std::vector<const section::LineType*>> m_sectionTypes;  // per line, per section
   std::vector<int> m_nodeLine;

@@ -155,7 +155,8 @@ enum class EndKind {
   Fixed,     ///< position and rotation fixed
   Pinned,    ///< position fixed, rotations free (same as Anchored, not necessarily on the seabed)
   Free,      ///< nothing fixed
-  Vessel     ///< attached to a vessel (see vessel)
+  Vessel,    ///< attached to a vessel (see vessel)
+  Point      ///< joined at a free point with the other line ends there (see point; `points`)
 };
 
 /// Prescribed harmonic motion of a line end about its initial position (dynamics):
@@ -174,6 +175,7 @@ struct EndSpec {
   EndKind kind = EndKind::Anchored;
   Vec3 position = Vec3::Zero();  ///< global position [m] (vessel axes [m] for kind Vessel)
   std::string vessel;            ///< vessel name, for kind Vessel
+  std::string point;             ///< point name, for kind Point (the end starts at the point's position)
   EndMotionSpec motion;          ///< prescribed motion (dynamics), for Fixed/Pinned/Anchored ends
   TensionerSpec tensioner;       ///< for vessel ends: vertical tensioner instead of a rigid connection
   FlexJointSpec flexJoint;       ///< for vessel ends of beam lines: rotational spring (else pinned)
@@ -242,6 +244,17 @@ struct AttachmentSpec {
   /// the lever rule (the same resultant and moment about either node), so that a row of buoyancy modules on
   /// any mesh loads the line evenly instead of lumping two modules on some nodes and one on others.
   bool shared = false;
+};
+
+/// A free point where line ends meet (`points`): a bridle's apex, a triplate, a 3D buoy or a clump joining
+/// any number of lines (OrcaFlex 3D buoy, MoorDyn free point, RIFLEX free supernode). Translations only: the
+/// line ends are pinned to it (docs/theory.md 2.5).
+struct PointSpec {
+  std::string name;
+  Vec3 position = Vec3::Zero();  ///< initial position, the starting guess of statics [m]
+  /// Its mass [kg], displaced volume [m^3], drag area Cd A [m^2] and added mass [kg] (arcLength unused).
+  AttachmentSpec body;
+  int sourceLine = 0;
 };
 
 /// An intermediate point of a line's starting shape (`lines[].start_shape`).
@@ -534,6 +547,7 @@ struct ModelSpec {
   EnvironmentSpec environment;
   std::map<std::string, section::LineType> lineTypes;
   std::vector<VesselSpec> vessels;
+  std::vector<PointSpec> points;  ///< free points joining line ends (`points`), input order
   std::vector<LineSpec> lines;
   StaticSpec statics;
   DynamicSpec dynamics;

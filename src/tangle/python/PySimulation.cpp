@@ -168,6 +168,7 @@ py::dict PySimulation::statics() {
     };
     for (const solver::ForceBalance& b : a.lines) add(b, "line");
     for (const solver::ForceBalance& b : a.vessels) add(b, "vessel");
+    for (const solver::ForceBalance& b : a.points) add(b, "point");
   }
   d["equilibrium_audit"] = audit;
   d["warnings"] = r.warnings;

@@ -335,10 +335,11 @@ bool RunOutputs::writeStatics() {
   log.info(result.message + "\n");
   if (audit)
     log.info(fmt::format(
-        "equilibrium audit: {} lines and {} free vessels {}; largest out-of-balance force {:.2g} of "
+        "equilibrium audit: {} lines{} and {} free vessels {}; largest out-of-balance force {:.2g} of "
         "the body's weight or load\n",
-        audit->lines.size(), audit->vessels.size(),
-        audit->warnings().empty() ? "in balance" : "NOT in balance (see the warnings)",
+        audit->lines.size(),
+        audit->points.empty() ? std::string() : fmt::format(", {} points", audit->points.size()),
+        audit->vessels.size(), audit->warnings().empty() ? "in balance" : "NOT in balance (see the warnings)",
         audit->worstRelativeResidual()));
   if (sim.contact()) log.info(contact::writeStaticContact(outDir, m, *sim.contact(), sim.state()));
   // The line pairs the clearance envelope and the clash report assess (LineContact::assessedPairs).

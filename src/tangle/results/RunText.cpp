@@ -23,6 +23,8 @@ const char* endKindName(model::EndKind k) {
       return "free";
     case model::EndKind::Vessel:
       return "vessel";
+    case model::EndKind::Point:
+      return "point";
   }
   return "?";
 }

@@ -23,6 +23,7 @@ double EquilibriumAudit::worstRelativeResidual() const {
   double worst = 0.0;
   for (const ForceBalance& b : lines) worst = std::max(worst, b.relativeResidual());
   for (const ForceBalance& b : vessels) worst = std::max(worst, b.relativeResidual());
+  for (const ForceBalance& b : points) worst = std::max(worst, b.relativeResidual());
   return worst;
 }
 
@@ -32,6 +33,8 @@ std::vector<std::string> EquilibriumAudit::warnings() const {
     if (!b.balanced()) out.push_back(format(b, "line"));
   for (const ForceBalance& b : vessels)
     if (!b.balanced()) out.push_back(format(b, "vessel"));
+  for (const ForceBalance& b : points)
+    if (!b.balanced()) out.push_back(format(b, "point"));
   return out;
 }
 

@@ -30,7 +30,8 @@ struct ForceBalance {
 struct EquilibriumAudit {
   std::vector<ForceBalance> lines;
   std::vector<ForceBalance> vessels;  ///< free vessels only (a held vessel's balance is its reaction)
-  /// Largest relative residual over lines and vessels [-].
+  std::vector<ForceBalance> points;   ///< free points joining line ends (ModelSpec::points)
+  /// Largest relative residual over lines, vessels and points [-].
   double worstRelativeResidual() const;
   /// One message per body out of balance (ForceBalance::balanced; empty when the audit closes).
   std::vector<std::string> warnings() const;

@@ -59,6 +59,7 @@ enum class LoadSource {
   Hydrodynamic,  ///< Morison drag and inertia, wakes (hydro::HydroLoads)
   Contact,       ///< line-to-line contact and its friction (contact::LineContact)
   Vessels,       ///< vessels, their loads and the links to line ends (vessel::VesselSystem)
+  Junctions,     ///< the ties of line ends at free points (solver::JunctionTies): supports, as vessels' links
   Other,         ///< anything else
 };
 

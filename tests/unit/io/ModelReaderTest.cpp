@@ -718,7 +718,7 @@ TEST(ModelReaderErrors, EmptySectionList) {
 TEST(ModelReaderErrors, ScalarWhereMapExpected) {
   expectEditError("    end_a:\n      type: anchored\n      position: [400, 0, -100]\n",
                   "    end_a: anchored\n", "end_a: anchored", "lines[moor].end_a",
-                  "expected a map with keys: type, position, vessel, motion");
+                  "expected a map with keys: type, position, vessel, point, motion");
 }
 
 TEST(ModelReaderErrors, NotANumberIsRejected) {
@@ -737,7 +737,7 @@ TEST(ModelReaderErrors, BooleanGivenAsQuotedString) {
 
 TEST(ModelReaderErrors, UnknownEndType) {
   expectEditError("type: anchored", "type: welded", "type: welded", "lines[moor].end_a.type",
-                  "expected one of: anchored, fixed, pinned, free, vessel, got welded");
+                  "expected one of: anchored, fixed, pinned, free, vessel, point, got welded");
 }
 
 TEST(ModelReaderErrors, UnknownNewtonPath) {
@@ -1145,6 +1145,81 @@ TEST(ModelReaderBounds, UnknownVesselListsTheValidNamesAndTheKey) {
   expectInputError(edited(kVesselModel, "      type: fixed\n      position: [20, 0, -10]\n      motion:\n        amplitude: [5, 0, 0]\n        period: 10\n",
                           "      type: vessel\n      vessel: fspo\n      position: [20, 0, -10]\n"),
                    "vessel: fspo", "lines[moor].end_b.vessel", "vessels defined under vessels: 'fpso', 'tug'");
+}
+
+// ---- Free points (`points`, ends of type point)
+// ------------------------------------------------------------
+
+/// The base model with a point `apex` and a second line `leg` from an anchor to it; the base line's end B
+/// joins it too (its motion and position removed).
+const std::string kPointModel =
+    edited(edited(kBaseModel, "lines:\n",
+                  "points:\n  - {name: apex, position: [20, 0, -10], mass: 800, volume: 0.3}\nlines:\n"),
+           "      type: fixed\n      position: [20, 0, -10]\n      motion:\n        amplitude: [5, 0, 0]\n   "
+           "     period: 10\n",
+           "      type: point\n      point: apex\n");
+
+std::string withLeg(const std::string& model, const std::string& legEndB) {
+  return edited(model, "statics:\n",
+                "  - name: leg\n    end_a: {type: anchored, position: [-300, 0, -100]}\n    end_b: " +
+                    legEndB + "\n    sections: [{type: chain, length: 330, elements: 33}]\nstatics:\n");
+}
+
+TEST(ModelReaderPoints, ReadsPointsAndTheEndsThatJoinThem) {
+  const ModelSpec spec = readModelString(withLeg(kPointModel, "{type: point, point: apex}"), kSource);
+  ASSERT_EQ(spec.points.size(), 1u);
+  EXPECT_EQ(spec.points[0].name, "apex");
+  EXPECT_EQ(spec.points[0].position, Vec3(20.0, 0.0, -10.0));
+  EXPECT_DOUBLE_EQ(spec.points[0].body.mass, 800.0);
+  EXPECT_DOUBLE_EQ(spec.points[0].body.volume, 0.3);
+  EXPECT_DOUBLE_EQ(spec.points[0].body.dragArea, 0.0);
+  ASSERT_EQ(spec.lines.size(), 2u);
+  for (const model::LineSpec& l : spec.lines) {
+    EXPECT_EQ(l.endB.kind, EndKind::Point) << l.name;
+    EXPECT_EQ(l.endB.point, "apex");
+    EXPECT_EQ(l.endB.position, Vec3(20.0, 0.0, -10.0));  // the point's
+  }
+}
+
+TEST(ModelReaderPoints, UnknownPointListsTheDefinedOnes) {
+  const std::string yaml = withLeg(kPointModel, "{type: point, point: apx}");
+  expectInputError(yaml, "point: apx", "lines[leg].end_b.point",
+                   "unknown point 'apx'; points defined under points: 'apex'");
+}
+
+TEST(ModelReaderPoints, APointEndHasNoPositionOfItsOwn) {
+  expectInputError(withLeg(kPointModel, "{type: point, point: apex, position: [20, 0, -10]}"),
+                   "point: apex, position", "lines[leg].end_b.position", "starts at its point's position");
+}
+
+TEST(ModelReaderPoints, PointKeyOnlyOnPointEnds) {
+  expectInputError(withLeg(kPointModel, "{type: free, point: apex, position: [20, 0, -10]}"),
+                   "type: free, point", "lines[leg].end_b.point",
+                   "'point' applies only to ends of type point");
+}
+
+TEST(ModelReaderPoints, MotionDoesNotApplyToAPointEnd) {
+  expectInputError(
+      withLeg(kPointModel, "{type: point, point: apex, motion: {amplitude: [1, 0, 0], period: 10}}"),
+      "point: apex, motion", "lines[leg].end_b.motion", "'motion' does not apply to an end of type point");
+}
+
+TEST(ModelReaderPoints, APointNoLineUsesIsRefused) {
+  const std::string yaml =
+      edited(kPointModel, "  - {name: apex,", "  - {name: spare, position: [0, 0, -50]}\n  - {name: apex,");
+  expectInputError(yaml, "name: spare", "points[spare]", "no line end is at this point");
+}
+
+TEST(ModelReaderPoints, ALineWithBothEndsAtOnePointIsRefused) {
+  const std::string yaml = edited(kPointModel, "      type: anchored\n      position: [400, 0, -100]\n",
+                                  "      type: point\n      point: apex\n");
+  expectInputError(yaml, "end_b:", "lines[moor].end_b", "both ends of line 'moor' are at point 'apex'");
+}
+
+TEST(ModelReaderPoints, APointBelowTheSeabedIsRefused) {
+  expectInputError(
+      edited(kPointModel, "position: [20, 0, -10], mass: 800", "position: [20, 0, -130], mass: 800"),
+      "name: apex", "points[apex].position", "the point is below the seabed");
 }
 
 TEST(ModelReaderBounds, VesselEndBelowTheSeabedIsRefused) {

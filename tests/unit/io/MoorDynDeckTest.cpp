@@ -343,10 +343,34 @@ TEST(MoorDynDeck, RefusesAVerticalCurrentNamingTheProfileLine) {
   }
 }
 
-TEST(MoorDynDeck, RefusesAFreePointJoiningThreeLines) {
-  const std::string points = kTwoPoints + "3 Free -150 0 -60 0 0 0 0\n4 Fixed 300 0 -100 0 0 0 0\n";
-  expectRefused(deck(points, "1 chain 1 3 200 20 -\n2 chain 3 2 160 16 -\n3 chain 4 3 200 20 -\n"), 13,
-                "bridle");
+TEST(MoorDynDeck, AFreePointJoiningThreeLinesBecomesAPoint) {
+  // Anchors 1 and 4 and vessel 2, each with a line to the free point 3 (a triplate with its own body); the
+  // line from anchor 4 is drawn from the point.
+  const std::string points = kTwoPoints + "3 Free -150 0 -60 500 0.4 0.6 0.5\n4 Fixed 300 0 -100 0 0 0 0\n";
+  const MoorDynConversion c =
+      convertMoorDynDeck(parseMoorDynDeck(deck(points,
+                                               "1 chain 1 3 200 20 -\n2 rope 2 3 160 16 -\n"
+                                               "3 chain 3 4 460 46 -\n"),
+                                          "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  ASSERT_EQ(spec.points.size(), 1u);
+  const model::PointSpec& p = spec.points[0];
+  EXPECT_EQ(p.name, "point3");
+  EXPECT_EQ(p.position, Vec3(-150.0, 0.0, -60.0));
+  EXPECT_DOUBLE_EQ(p.body.mass, 500.0);
+  EXPECT_DOUBLE_EQ(p.body.volume, 0.4);
+  EXPECT_DOUBLE_EQ(p.body.dragArea, 0.6);
+  EXPECT_DOUBLE_EQ(p.body.addedMass, 0.5 * 1025.0 * 0.4);  // Ca rho V
+  ASSERT_EQ(spec.lines.size(), 3u);                        // no chain passes through a point of three lines
+  EXPECT_EQ(spec.lines[0].endB.kind, model::EndKind::Point);
+  EXPECT_EQ(spec.lines[1].endB.kind, model::EndKind::Point);
+  EXPECT_EQ(spec.lines[2].endA.kind, model::EndKind::Point);
+  for (const model::LineSpec& l : spec.lines)
+    EXPECT_TRUE(l.attachments.empty()) << l.name;  // the body is the point's
+  // The first line end at the point carries it: line 1's end B, node 20.
+  EXPECT_EQ(c.points[2].junctionLine, "line1");
+  EXPECT_EQ(c.points[2].junctionNode, 20);
+  EXPECT_EQ(c.points[2].ends.size(), 3u);
 }
 
 /// A FAILURE section with these rows.
