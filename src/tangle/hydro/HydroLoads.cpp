@@ -1,13 +1,14 @@
 #include "tangle/hydro/HydroLoads.hpp"
 
-#include <algorithm>
-
 #include <fmt/format.h>
+
+#include <algorithm>
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/ForEachIndex.hpp"
 #include "tangle/core/Ramp.hpp"
 #include "tangle/hydro/AiryWave.hpp"
+#include "tangle/hydro/ComponentSea.hpp"
 #include "tangle/hydro/JonswapSea.hpp"
 #include "tangle/hydro/Morison.hpp"
 
@@ -44,6 +45,13 @@ std::unique_ptr<WaveField> makeWaveField(const model::EnvironmentSpec& env) {
       p.seed = w.seed;
       p.stretching = stretchingOf(w.stretching);
       return std::make_unique<JonswapSea>(p);
+    }
+    case model::WaveKind::Components: {
+      std::vector<ComponentSea::Component> components;
+      for (const auto& [period, amplitude, phase, azimuth] : w.componentTable)
+        components.push_back({2.0 * kPi / period, amplitude, phase, azimuth});
+      return std::make_unique<ComponentSea>(std::move(components), env.waterDepth, env.gravity,
+                                            stretchingOf(w.stretching));
     }
   }
   return nullptr;

@@ -476,9 +476,10 @@ std::string HtmlReport::json() const {
           ",");
   const model::WaveSpec& w = env.waves;
   f.write(fmt::format("\"waves\":{{\"kind\":{},\"height\":{},\"period\":{},\"azimuth\":{}}},",
-                      quote(w.kind == model::WaveKind::None   ? "none"
-                            : w.kind == model::WaveKind::Airy ? "airy"
-                                                              : "jonswap"),
+                      quote(w.kind == model::WaveKind::None         ? "none"
+                            : w.kind == model::WaveKind::Airy       ? "airy"
+                            : w.kind == model::WaveKind::Components ? "components"
+                                                                    : "jonswap"),
                       fixed(w.kind == model::WaveKind::Jonswap ? w.significantHeight : w.height, 3),
                       fixed(w.kind == model::WaveKind::Jonswap ? w.peakPeriod : w.period, 3),
                       fixed(w.azimuth, 6)));

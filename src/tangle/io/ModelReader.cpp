@@ -613,27 +613,35 @@ model::WaveSpec readWaves(const Value& v, double waterDepth) {
   static const std::vector<std::string> kAiryKeys{"height", "period", "phase"};
   static const std::vector<std::string> kJonswapKeys{"significant_height", "peak_period", "gamma",
                                                      "components", "seed"};
+  static const std::vector<std::string> kComponentKeys{"table"};
   std::vector<std::string> allowed{"type"};
-  allowed.insert(allowed.end(), kAiryKeys.begin(), kAiryKeys.end());
-  allowed.insert(allowed.end(), kJonswapKeys.begin(), kJonswapKeys.end());
+  for (const auto* keys : {&kAiryKeys, &kJonswapKeys, &kComponentKeys})
+    allowed.insert(allowed.end(), keys->begin(), keys->end());
   allowed.emplace_back("azimuth");
   allowed.emplace_back("stretching");
   const Map m(v, allowed);
 
   model::WaveSpec w;
-  w.kind = m.get("type", "one of: none, airy, jonswap")
-               .choice<WaveKind>(
-                   {{"none", WaveKind::None}, {"airy", WaveKind::Airy}, {"jonswap", WaveKind::Jonswap}});
+  w.kind = m.get("type", "one of: none, airy, jonswap, components")
+               .choice<WaveKind>({{"none", WaveKind::None},
+                                  {"airy", WaveKind::Airy},
+                                  {"jonswap", WaveKind::Jonswap},
+                                  {"components", WaveKind::Components}});
   if (w.kind == WaveKind::None)
     return w;  // the other keys are ignored: waves can be switched off in one place
 
   const bool airy = w.kind == WaveKind::Airy;
-  const std::string typeName = airy ? "airy" : "jonswap";
-  for (const std::string& key : airy ? kJonswapKeys : kAiryKeys)
-    if (const std::optional<Value> foreign = m.find(key))
-      foreign->fail(
-          fmt::format("key '{}' does not apply to waves of type {}; their keys are: type, {}, azimuth", key,
-                      typeName, join(airy ? kAiryKeys : kJonswapKeys)));
+  const bool jonswap = w.kind == WaveKind::Jonswap;
+  const std::string typeName = airy ? "airy" : jonswap ? "jonswap" : "components";
+  const std::vector<std::string>& own = airy ? kAiryKeys : jonswap ? kJonswapKeys : kComponentKeys;
+  for (const auto* keys : {&kAiryKeys, &kJonswapKeys, &kComponentKeys}) {
+    if (keys == &own) continue;
+    for (const std::string& key : *keys)
+      if (const std::optional<Value> foreign = m.find(key))
+        foreign->fail(
+            fmt::format("key '{}' does not apply to waves of type {}; their keys are: type, {}, azimuth", key,
+                        typeName, join(own)));
+  }
 
   const std::string required = "required for waves of type " + typeName;
   const model::WaveSpec d;
@@ -642,7 +650,7 @@ model::WaveSpec readWaves(const Value& v, double waterDepth) {
                                       .withHint(required + "; at most 1.6 x water_depth (crest above the seabed)"));
     w.period = m.number("period", positiveUpTo(kMaxWavePeriod).withHint(required));
     w.phase = m.angle("phase", d.phase);
-  } else {
+  } else if (jonswap) {
     w.significantHeight = m.number("significant_height", positiveUpTo(std::min(kMaxWaveHeight, 0.8 * waterDepth))
                                                              .withHint(required + "; at most 0.8 x water_depth"));
     w.peakPeriod = m.number("peak_period", positiveUpTo(kMaxWavePeriod).withHint(required));
@@ -650,6 +658,32 @@ model::WaveSpec readWaves(const Value& v, double waterDepth) {
     w.components = m.integer("components", d.components, atLeastUpTo(1.0, kMaxWaveComponents));
     const std::optional<Value> seed = m.find("seed");
     w.seed = seed ? static_cast<unsigned>(seed->integer64(closed(0.0, 4294967295.0))) : d.seed;
+  } else {
+    // Rows [period s, amplitude m, phase deg] or [period, amplitude, phase, azimuth deg] (the azimuth
+    // defaults to waves.azimuth).
+    const double azimuth = m.angle("azimuth", d.azimuth);
+    const Value table =
+        m.get("table", "a list of rows [period s, amplitude m, phase deg, azimuth deg] (" + required + ")");
+    const std::vector<Value> rows = table.items(1);
+    if (rows.size() > static_cast<std::size_t>(kMaxWaveComponents))
+      table.fail(fmt::format("{} components; at most {} are accepted", rows.size(), kMaxWaveComponents));
+    for (const Value& row : rows) {
+      const bool withAzimuth = row.isSequence() && row.node().size() == 4;
+      const std::vector<double> r =
+          withAzimuth ? row.numbers(4, "[period, amplitude, phase, azimuth] (s, m, deg, deg)")
+                      : row.numbers(3, "[period, amplitude, phase] (s, m, deg), or with an azimuth in deg");
+      if (!(r[0] > 0.0 && r[0] <= kMaxWavePeriod))
+        row.fail(fmt::format("expected a period in (0, {}] s in the first column, got {}",
+                             numberText(kMaxWavePeriod), numberText(r[0])));
+      if (!(r[1] >= 0.0 && r[1] <= 0.8 * std::min(kMaxWaveHeight, waterDepth)))
+        row.fail(fmt::format("expected an amplitude in [0, {}] m in the second column, got {}",
+                             numberText(0.8 * std::min(kMaxWaveHeight, waterDepth)), numberText(r[1])));
+      for (std::size_t k = 2; k < r.size(); ++k)
+        if (!(std::abs(r[k]) <= 3600.0))
+          row.fail(fmt::format("expected an angle within +-3600 deg in column {}, got {}", k + 1,
+                               numberText(r[k])));
+      w.componentTable.push_back({r[0], r[1], degToRad(r[2]), withAzimuth ? degToRad(r[3]) : azimuth});
+    }
   }
   w.azimuth = m.angle("azimuth", d.azimuth);
   if (const std::optional<Value> stretching = m.find("stretching"))

@@ -57,6 +57,8 @@ struct Options {
   double frictionDamping = 200.0;     ///< FricDamp [N s/m]
   double staticDynamicScale = 1.0;    ///< StatDynFricScale [-]
   int currentMode = 0;                ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt
+  int waveMode = 0;        ///< WaveKin 2, 3 or 7: components from wave_frequencies/wave_elevation.txt
+  double waveStep = 0.25;  ///< dtWave [s]: the resampling of wave_elevation.txt (WaveKin 3)
   std::string seafloorFile;           ///< SeafloorFile, resolved to a readable path; empty: flat
   std::map<std::string, int> lineOf;  ///< option (lower case) -> deck line, for comments
 };
@@ -111,6 +113,12 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
       noted(
           "wave kinematics from the host program (WaveKin 1): through the C API (MoorDyn_ExternalWaveKinSet); a "
           "standalone run has still water unless the converted model's `environment` gives waves");
+    } else if (name == "wavekin" && (value() == 2.0 || value() == 3.0 || value() == 7.0)) {
+      // Waves from files in the deck's folder, as components (MoorDyn's grid or node evaluation aside).
+      opt.waveMode = static_cast<int>(value());
+    } else if (name == "dtwave") {
+      opt.waveStep = value();
+      if (!(opt.waveStep > 0.0)) throw InputError(deck.file, o.sourceLine, o.name, "expected dtWave > 0 s");
     } else if (name == "currents" && (value() == 1.0 || value() == 3.0)) {
       // A steady profile, interpolated on a grid (1) or at the nodes (3): the same profile in tangle.
       opt.currentMode = static_cast<int>(value());
@@ -160,8 +168,8 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
     } else if (name == "writelog" || name == "writeunits" || name == "dtout" || name == "disableoutput" ||
                name == "disableouttime" || name == "outswitch") {
       noted("MoorDyn's output files; tangle writes its own (docs/moordyn.md, output channels)");
-    } else if (name == "dtwave" || name == "unifycurrentgrid") {
-      noted("wave-kinematics grid; not used (no wave kinematics from MoorDyn)");
+    } else if (name == "unifycurrentgrid") {
+      noted("MoorDyn's kinematics grid; tangle evaluates the waves and current at each element");
     } else {
       throw InputError(
           deck.file, o.sourceLine, o.name,
@@ -170,6 +178,131 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
   }
   for (const auto& [why, names] : unused) notes.push_back(fmt::format("{}: {}: {}", deck.file, names, why));
   return opt;
+}
+
+/// One wave component in tangle's convention (ComponentSea): period [s], amplitude [m], phase [deg], azimuth
+/// [deg], and where it came from.
+struct DeckWaveComponent {
+  double period, amplitude, phase, azimuth;
+  int sourceLine;
+};
+
+/// The numbers of each non-empty line of a wave file (columns separated by blanks, commas or tabs).
+std::vector<std::pair<int, std::vector<double>>> readNumberRows(const std::string& path,
+                                                                const MoorDynDeck& deck, int optionLine,
+                                                                const char* what) {
+  std::ifstream in(path);
+  if (!in)
+    throw InputError(deck.file, optionLine, "WaveKin",
+                     fmt::format("{} is read from {}, which cannot be opened", what, path));
+  std::vector<std::pair<int, std::vector<double>>> rows;
+  std::string text;
+  for (int lineNo = 1; std::getline(in, text); ++lineNo) {
+    for (char& c : text)
+      if (c == ',' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream words(text);
+    std::vector<double> row;
+    for (std::string w; words >> w;) {
+      const std::optional<double> v = deckNumber(w);
+      if (!v || !std::isfinite(*v))
+        throw InputError(path, lineNo, "", fmt::format("expected a number, got '{}'", w));
+      row.push_back(*v);
+    }
+    if (!row.empty()) rows.emplace_back(lineNo, std::move(row));
+  }
+  return rows;
+}
+
+/// MoorDyn's wave_frequencies.txt (WaveKin 2 and 7; docs/waterkinematics.rst): rows omega [rad/s], the real
+/// and imaginary parts of the complex amplitude c [m], and optionally the direction of travel beta [rad].
+/// MoorDyn (Waves/SpectrumKin.cpp) sums |c| sin(omega t - k (x cos beta + y sin beta) + arg c): in tangle's
+/// a cos(k s - omega t + phase), phase = 90 deg - arg c. The zero frequency (a mean level) is left out.
+std::vector<DeckWaveComponent> readWaveFrequencies(const MoorDynDeck& deck, int optionLine,
+                                                   std::vector<std::string>& notes) {
+  const std::string path = (std::filesystem::path(deck.file).parent_path() / "wave_frequencies.txt").string();
+  std::vector<DeckWaveComponent> out;
+  for (const auto& [lineNo, r] : readNumberRows(path, deck, optionLine, "the wave spectrum")) {
+    if (r.size() < 3 || r.size() > 4)
+      throw InputError(path, lineNo, "",
+                       "expected 3 or 4 numbers: omega [rad/s], Re(c), Im(c) [m], [beta rad]");
+    if (r[0] < 0.0) throw InputError(path, lineNo, "omega", "expected a frequency >= 0 rad/s");
+    const double amplitude = std::hypot(r[1], r[2]);
+    if (r[0] == 0.0) {
+      if (amplitude != 0.0)
+        notes.push_back(fmt::format("{}:{}: the zero-frequency component (a mean level of {} m) is left out",
+                                    path, lineNo, num(r[2])));
+      continue;
+    }
+    if (amplitude == 0.0) continue;
+    const double phase = 90.0 - std::atan2(r[2], r[1]) * 180.0 / std::numbers::pi;
+    out.push_back({2.0 * std::numbers::pi / r[0], amplitude, phase,
+                   r.size() == 4 ? r[3] * 180.0 / std::numbers::pi : 0.0, lineNo});
+  }
+  if (out.empty())
+    throw InputError(path, 0, "", "no wave component with a frequency > 0 and an amplitude > 0");
+  return out;
+}
+
+/// MoorDyn's wave_elevation.txt (WaveKin 3): rows t [s], eta [m] at the origin, resampled every dtWave [s]
+/// (linearly; an odd count drops its last sample, as MoorDyn) and expanded in its discrete Fourier series:
+/// eta(t) = sum_k a_k cos(omega_k t + psi_k), omega_k = 2 pi k / (N dtWave), a_k = 2 |X_k| / N (|X_k| / N at
+/// the Nyquist frequency), psi_k = arg X_k. Waves travelling towards +x, phase = -psi_k in tangle's form.
+std::vector<DeckWaveComponent> readWaveElevation(const MoorDynDeck& deck, int optionLine, double step,
+                                                 std::vector<std::string>& notes) {
+  const std::string path = (std::filesystem::path(deck.file).parent_path() / "wave_elevation.txt").string();
+  std::vector<double> t, eta;
+  for (const auto& [lineNo, r] : readNumberRows(path, deck, optionLine, "the wave elevation record")) {
+    if (r.size() != 2) throw InputError(path, lineNo, "", "expected 2 numbers: t [s], eta [m]");
+    if (!t.empty() && r[0] <= t.back()) throw InputError(path, lineNo, "t", "times must increase");
+    t.push_back(r[0]);
+    eta.push_back(r[1]);
+  }
+  if (t.size() < 3) throw InputError(path, 0, "", "a wave elevation record needs at least 3 samples");
+  auto count = static_cast<std::size_t>(std::floor((t.back() - t.front()) / step + 1e-9)) + 1;
+  if (count > 20001)
+    throw InputError(
+        deck.file, optionLine, "dtWave",
+        fmt::format("{} samples of the wave record at dtWave = {} s; at most 20001 (a longer dtWave)", count,
+                    num(step)));
+  if (count % 2 == 1) --count;
+  if (count < 2) throw InputError(deck.file, optionLine, "dtWave", "dtWave is longer than the wave record");
+  std::vector<double> samples(count);
+  for (std::size_t n = 0, j = 0; n < count; ++n) {
+    const double tn = t.front() + static_cast<double>(n) * step;
+    while (j + 2 < t.size() && t[j + 1] < tn) ++j;
+    const double w = std::clamp((tn - t[j]) / (t[j + 1] - t[j]), 0.0, 1.0);
+    samples[n] = eta[j] + w * (eta[j + 1] - eta[j]);
+  }
+  std::vector<DeckWaveComponent> out;
+  const double duration = static_cast<double>(count) * step;
+  double mean = 0.0;
+  for (const double v : samples) mean += v / static_cast<double>(count);
+  for (std::size_t k = 1; k <= count / 2; ++k) {
+    double re = 0.0, im = 0.0;
+    for (std::size_t n = 0; n < count; ++n) {
+      const double angle =
+          2.0 * std::numbers::pi * static_cast<double>(k * n % count) / static_cast<double>(count);
+      re += samples[n] * std::cos(angle);
+      im -= samples[n] * std::sin(angle);
+    }
+    const double scale = (k == count / 2 ? 1.0 : 2.0) / static_cast<double>(count);
+    const double amplitude = scale * std::hypot(re, im);
+    if (amplitude <= 1e-12 * (1.0 + std::abs(mean))) continue;
+    // X_k = sum eta_n e^{-i omega_k t_n}: eta carries Re(X_k e^{i omega_k t}) = |X_k| cos(omega_k t + arg
+    // X_k).
+    const double psi =
+        std::atan2(im, re) - 2.0 * std::numbers::pi * static_cast<double>(k) * t.front() / duration;
+    out.push_back({duration / static_cast<double>(k), amplitude, -psi * 180.0 / std::numbers::pi, 0.0, 0});
+  }
+  if (std::abs(mean) > 1e-9)
+    notes.push_back(fmt::format(
+        "{}: the record's mean level {} m is left out (tangle's waves are about z = 0)", path, num(mean)));
+  if (out.empty()) throw InputError(path, 0, "", "the wave elevation record is flat: no wave component");
+  notes.push_back(
+      fmt::format("{}: {} samples at dtWave = {} s become {} wave components, a series that repeats every "
+                  "{} s; they travel towards +x",
+                  path, count, num(step), out.size(), num(duration)));
+  return out;
 }
 
 /// One level of a MoorDyn steady current profile (current_profile.txt).
@@ -182,13 +315,15 @@ struct ProfileLevel {
 /// MoorDyn's steady current profile (Waves/WaveGrid.cpp, constructSteadyCurrentGrid): current_profile.txt
 /// beside the deck, three header lines, then rows `z ux [uy [uz]]`. tangle's current is horizontal, below
 /// the still water level, one value per level. @throws InputError naming the file and its line
-std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int optionLine) {
+std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int optionLine,
+                                             std::vector<std::string>& notes) {
   const std::string path = (std::filesystem::path(deck.file).parent_path() / "current_profile.txt").string();
   std::ifstream in(path);
   if (!in)
     throw InputError(deck.file, optionLine, "Currents",
                      fmt::format("a steady current profile is read from {}, which cannot be opened", path));
   std::vector<ProfileLevel> levels;
+  int above = 0;
   std::string text;
   for (int lineNo = 1; std::getline(in, text); ++lineNo) {
     if (lineNo <= 3) continue;  // title, description, column names
@@ -210,8 +345,10 @@ std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int option
     }
     level.z = values[0];
     level.velocity = Vec3(values[1], values[2], values[3]);
-    if (level.z > 0.0)
-      throw InputError(path, lineNo, "z", "a level above the still water level (tangle's current is below z = 0)");
+    if (level.z > 0.0) {  // in the air above still water: tangle's profile ends at z = 0
+      ++above;
+      continue;
+    }
     if (level.velocity.z() != 0.0)
       throw InputError(path, lineNo, "uz", "a vertical current is not supported (tangle's current is horizontal)");
     for (const ProfileLevel& other : levels)
@@ -220,7 +357,12 @@ std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int option
                                                           other.sourceLine));
     levels.push_back(level);
   }
-  if (levels.empty()) throw InputError(path, 0, "", "the current profile has no level");
+  if (levels.empty()) throw InputError(path, 0, "", "the current profile has no level at or below z = 0");
+  if (above > 0)
+    notes.push_back(
+        fmt::format("{}: {} level(s) above the still water level (z > 0) left out: tangle's current "
+                    "profile ends at z = 0",
+                    path, above));
   return levels;
 }
 
@@ -523,8 +665,27 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
           fmt::format("StatDynFricScale = {}: tangle has one friction coefficient (static = dynamic)",
                       num(opt.staticDynamicScale)));
   }
+  if (opt.waveMode != 0) {
+    const int optionLine = opt.lineOf.at("wavekin");
+    const std::vector<DeckWaveComponent> components =
+        opt.waveMode == 3 ? readWaveElevation(deck, optionLine, opt.waveStep, notes)
+                          : readWaveFrequencies(deck, optionLine, notes);
+    line(fmt::format("  waves:                    # WaveKin {} (deck line {}): {}", opt.waveMode, optionLine,
+                     opt.waveMode == 3 ? "wave_elevation.txt as its Fourier series"
+                                       : "wave_frequencies.txt, summed as MoorDyn's WaveKin 7"));
+    line("    type: components");
+    line("    table:                  # [period s, amplitude m, phase deg, azimuth deg]");
+    for (const DeckWaveComponent& c : components)
+      line(fmt::format(
+          "      - [{}, {}, {}, {}]{}", num(c.period), num(c.amplitude), num(c.phase), num(c.azimuth),
+          c.sourceLine > 0 ? fmt::format("   # wave_frequencies.txt line {}", c.sourceLine) : ""));
+    if (opt.waveMode == 2)
+      notes.push_back(
+          "WaveKin 2: the components are summed at each element (MoorDyn's WaveKin 7), not "
+          "interpolated on an inverse-FFT grid");
+  }
   if (opt.currentMode != 0) {
-    const std::vector<ProfileLevel> levels = readCurrentProfile(deck, opt.lineOf.at("currents"));
+    const std::vector<ProfileLevel> levels = readCurrentProfile(deck, opt.lineOf.at("currents"), notes);
     line(fmt::format("  current:                  # Currents {} (deck line {}): current_profile.txt, (ux, uy) as "
                      "speed and azimuth",
                      opt.currentMode, opt.lineOf.at("currents")));

@@ -30,7 +30,7 @@ struct CurrentLevel {
 };
 
 /// Kind of wave train.
-enum class WaveKind { None, Airy, Jonswap };
+enum class WaveKind { None, Airy, Jonswap, Components };
 
 /// How wave kinematics are taken above and below the still water level (z = 0) under a finite wave.
 enum class WaveStretching {
@@ -51,6 +51,9 @@ struct WaveSpec {
   unsigned seed = 1;            ///< random seed of the JONSWAP phases [-]
   double azimuth = 0.0;         ///< direction of travel, anticlockwise from +x [rad]
   double phase = 0.0;           ///< phase of the regular wave [rad]
+  /// `type: components`: each component's period [s], amplitude [m], phase [rad] and direction of travel
+  /// [rad] (hydro::ComponentSea: eta_i = a cos(k (x cos(beta) + y sin(beta)) - 2 pi t / T + phase)).
+  std::vector<std::array<double, 4>> componentTable;
   WaveStretching stretching = WaveStretching::Wheeler;  ///< kinematics above/below z = 0
 };
 

@@ -69,6 +69,13 @@ std::string modelSummary(const model::Model& m) {
           w.significantHeight, w.peakPeriod, w.gamma, w.components, w.seed, radToDeg(w.azimuth),
           waveStretchingName(w.stretching));
       break;
+    case model::WaveKind::Components: {
+      double m0 = 0.0;
+      for (const auto& c : w.componentTable) m0 += 0.5 * c[1] * c[1];
+      out += fmt::format("waves: {} given components, Hs = 4 sqrt(m0) = {:.2f} m, stretching {}\n",
+                         w.componentTable.size(), 4.0 * std::sqrt(m0), waveStretchingName(w.stretching));
+      break;
+    }
   }
   if (env.current.empty()) {
     out += "current: none\n";

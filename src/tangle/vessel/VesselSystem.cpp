@@ -6,6 +6,7 @@
 #include "tangle/core/Ramp.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/hydro/AiryWave.hpp"
+#include "tangle/hydro/ComponentSea.hpp"
 #include "tangle/hydro/JonswapSea.hpp"
 #include "tangle/vessel/Tensioner.hpp"
 
@@ -40,6 +41,11 @@ VesselSystem::VesselSystem(const model::Model& model, const hydro::HydroLoads& h
   m_waveAmplitude = w.kind == model::WaveKind::Airy      ? 0.5 * w.height
                     : w.kind == model::WaveKind::Jonswap ? 0.5 * w.significantHeight
                                                          : 0.0;
+  if (w.kind == model::WaveKind::Components) {  // Hs / 2 = 2 sqrt(m0) of the components
+    double m0 = 0.0;
+    for (const auto& c : w.componentTable) m0 += 0.5 * c[1] * c[1];
+    m_waveAmplitude = 2.0 * std::sqrt(m0);
+  }
   // Wave components for the RAO motion (phase sign: the waves use cos(k x - omega t + phase), the RAO
   // motion cos(omega t - k x + phase), so the component phase is the negated wave phase).
   std::vector<RaoMotion::Component> components;
@@ -50,6 +56,11 @@ VesselSystem::VesselSystem(const model::Model& model, const hydro::HydroLoads& h
     } else if (const auto* sea = dynamic_cast<const hydro::JonswapSea*>(field)) {
       for (const hydro::WaveComponent& c : sea->components())
         components.push_back({c.amplitude, c.omega, c.waveNumber, sea->parameters().azimuth, -c.phase});
+    } else if (const auto* given = dynamic_cast<const hydro::ComponentSea*>(field)) {
+      for (std::size_t i = 0; i < given->components().size(); ++i) {
+        const hydro::ComponentSea::Component& c = given->components()[i];
+        components.push_back({c.amplitude, c.omega, given->waveNumber(i), c.azimuth, -c.phase});
+      }
     }
   }
   for (int v = 0; v < static_cast<int>(model.vessels().size()); ++v) {

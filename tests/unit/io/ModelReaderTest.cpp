@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -1011,9 +1012,32 @@ TEST(ModelReaderErrors, WaveKeyOfAnotherWaveType) {
                   "gamma:", "environment.waves.gamma", "key 'gamma' does not apply to waves of type airy");
 }
 
+TEST(ModelReader, ReadsWaveComponents) {
+  // Rows [period s, amplitude m, phase deg] take waves.azimuth (45 deg in the base model); [.., azimuth deg].
+  const std::string yaml =
+      edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
+             "    type: components\n    table:\n      - [12, 1.5, 90]\n      - [7, 0.4, -30, 180]\n");
+  const model::WaveSpec w = readModelString(yaml, kSource).environment.waves;
+  EXPECT_EQ(w.kind, WaveKind::Components);
+  ASSERT_EQ(w.componentTable.size(), 2u);
+  EXPECT_EQ(w.componentTable[0], (std::array<double, 4>{12.0, 1.5, degToRad(90.0), degToRad(45.0)}));
+  EXPECT_EQ(w.componentTable[1], (std::array<double, 4>{7.0, 0.4, degToRad(-30.0), degToRad(180.0)}));
+}
+
+TEST(ModelReaderErrors, WaveComponentWithoutAPositivePeriod) {
+  expectEditError("    type: airy\n    height: 2.0\n    period: 10.0\n",
+                  "    type: components\n    table:\n      - [12, 1.5, 90]\n      - [-7, 0.4, 0]\n",
+                  "[-7, 0.4", "environment.waves.table[1]", "expected a period in (0,");
+}
+
+TEST(ModelReaderErrors, WaveComponentTableOnAnAiryWave) {
+  expectEditError("    period: 10.0\n", "    period: 10.0\n    table: [[12, 1, 0]]\n",
+                  "table:", "environment.waves.table", "key 'table' does not apply to waves of type airy");
+}
+
 TEST(ModelReaderErrors, UnknownWaveType) {
   expectEditError("type: airy", "type: stokes", "type: stokes", "environment.waves.type",
-                  "expected one of: none, airy, jonswap, got stokes");
+                  "expected one of: none, airy, jonswap, components, got stokes");
 }
 
 // ----------------------------------------------------------------------------------------------------

@@ -3,17 +3,24 @@
 /// becomes): every supported kind of entry read and converted value by value, lines joined at free points,
 /// and one test per refused entry checking the file, the 1-based line and the entry's name.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "TestPaths.hpp"
 #include "tangle/core/Error.hpp"
+#include "tangle/core/Units.hpp"
+#include "tangle/hydro/AiryWave.hpp"
+#include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/io/ModelReader.hpp"
 #include "tangle/io/MoorDynConversion.hpp"
 #include "tangle/io/MoorDynDeck.hpp"
@@ -329,6 +336,70 @@ TEST(MoorDynDeck, ReadsASteadyCurrentProfile) {
   bool noted = false;
   for (const std::string& w : spec.warnings) noted = noted || w.find("turns with depth") != std::string::npos;
   EXPECT_TRUE(noted);
+}
+
+/// A deck in its own temporary folder `name` with `file` (wave_frequencies.txt or wave_elevation.txt) beside
+/// it and WaveKin `mode`; returns the converted model.
+model::ModelSpec convertedWithWaveFile(const std::string& name, const std::string& file,
+                                       const std::string& text, int mode,
+                                       const std::string& extraOptions = "") {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("tangle-moordyn-" + name);
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / file) << text;
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
+      deck(kTwoPoints, "1 chain 1 2 320 32 -\n", fmt::format("{}  WaveKin  waves\n", mode) + extraOptions),
+      (dir / "deck.txt").string()));
+  std::filesystem::remove_all(dir);
+  return readModelString(c.yaml, "converted.yaml");
+}
+
+TEST(MoorDynDeck, WaveFrequenciesBecomeWaveComponentsWithMoorDynsElevation) {
+  // WaveKin 7: rows omega [rad/s], Re c, Im c [m], [beta rad]; MoorDyn (Waves/SpectrumKin.cpp) sums
+  // |c| sin(omega t - k (x cos beta + y sin beta) + arg c). The converted sea gives that elevation, with k
+  // from the same dispersion relation; the zero-frequency row is left out. Tolerance: round-off, 1e-12 m.
+  const std::vector<std::array<double, 4>> rows{
+      {0.35, 1.0, 0.0, 0.0}, {0.4, 0.0, 1.0, 1.57}, {0.9, -0.3, 0.2, -0.5}};
+  std::string text = "0.0 0.0 0.0\n";
+  for (const auto& r : rows) text += fmt::format("{} {} {} {}\n", r[0], r[1], r[2], r[3]);
+  const model::ModelSpec spec = convertedWithWaveFile("wave-frequencies", "wave_frequencies.txt", text, 7);
+  ASSERT_EQ(spec.environment.waves.kind, model::WaveKind::Components);
+  ASSERT_EQ(spec.environment.waves.componentTable.size(), 3u);
+  const std::unique_ptr<hydro::WaveField> sea = hydro::makeWaveField(spec.environment);
+  const double depth = spec.environment.waterDepth, g = spec.environment.gravity;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(40.0, -25.0, 0.0)})
+    for (const double t : {0.0, 3.7, 21.2}) {
+      double expected = 0.0;
+      for (const auto& r : rows) {
+        const double k = hydro::solveDispersion(r[0], depth, g);
+        expected += std::hypot(r[1], r[2]) *
+                    std::sin(r[0] * t - k * (p.x() * std::cos(r[3]) + p.y() * std::sin(r[3])) +
+                             std::atan2(r[2], r[1]));
+      }
+      EXPECT_NEAR(sea->elevation(p.x(), p.y(), t), expected, 1e-12) << p.transpose() << " t " << t;
+    }
+}
+
+TEST(MoorDynDeck, AWaveElevationRecordBecomesItsFourierSeries) {
+  // WaveKin 3: t, eta rows resampled every dtWave and expanded in their discrete Fourier series. A record of
+  // 0.8 sin(2 pi t / 12) + 0.3 cos(2 pi t / 4 + 0.4) over one 12 s period, sampled every 0.05 s and resampled
+  // at dtWave = 0.1 s: two components of those periods and amplitudes, and the series through every sample at
+  // x = 0 (the record is periodic and band-limited: exact to round-off, 1e-9 m).
+  const auto record = [](double t) {
+    return 0.8 * std::sin(2.0 * kPi * t / 12.0) + 0.3 * std::cos(2.0 * kPi * t / 4.0 + 0.4);
+  };
+  std::string text;
+  for (int n = 0; n <= 240; ++n) text += fmt::format("{:.17g} {:.17g}\n", 0.05 * n, record(0.05 * n));
+  const model::ModelSpec spec =
+      convertedWithWaveFile("wave-elevation", "wave_elevation.txt", text, 3, "0.1  dtWave  step\n");
+  const auto& table = spec.environment.waves.componentTable;
+  ASSERT_EQ(table.size(), 2u);
+  EXPECT_NEAR(table[0][0], 12.0, 1e-9);
+  EXPECT_NEAR(table[0][1], 0.8, 1e-9);
+  EXPECT_NEAR(table[1][0], 4.0, 1e-9);
+  EXPECT_NEAR(table[1][1], 0.3, 1e-9);
+  const std::unique_ptr<hydro::WaveField> sea = hydro::makeWaveField(spec.environment);
+  for (const double t : {0.0, 0.05, 1.3, 7.77, 11.95, 30.0})
+    EXPECT_NEAR(sea->elevation(0.0, 0.0, t), record(t), 1e-9) << t;
 }
 
 TEST(MoorDynDeck, RefusesAVerticalCurrentNamingTheProfileLine) {
