@@ -258,12 +258,13 @@ std::vector<DeckWaveComponent> readWaveElevation(const MoorDynDeck& deck, int op
     eta.push_back(r[1]);
   }
   if (t.size() < 3) throw InputError(path, 0, "", "a wave elevation record needs at least 3 samples");
-  auto count = static_cast<std::size_t>(std::floor((t.back() - t.front()) / step + 1e-9)) + 1;
-  if (count > 20001)
-    throw InputError(
-        deck.file, optionLine, "dtWave",
-        fmt::format("{} samples of the wave record at dtWave = {} s; at most 20001 (a longer dtWave)", count,
-                    num(step)));
+  // Range first: a double beyond size_t's range does not convert (the fuzzers' lesson).
+  const double samplesInRecord = std::floor((t.back() - t.front()) / step + 1e-9) + 1.0;
+  if (!(samplesInRecord <= 20001.0))
+    throw InputError(deck.file, optionLine, "dtWave",
+                     fmt::format("{} samples of the wave record at dtWave = {} s; at most 20001 (a longer dtWave)",
+                                 num(samplesInRecord), num(step)));
+  auto count = static_cast<std::size_t>(samplesInRecord);
   if (count % 2 == 1) --count;
   if (count < 2) throw InputError(deck.file, optionLine, "dtWave", "dtWave is longer than the wave record");
   std::vector<double> samples(count);
