@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -475,14 +476,28 @@ std::string HtmlReport::json() const {
                 }) +
           ",");
   const model::WaveSpec& w = env.waves;
+  // The arrow's label: H and T of a regular wave, Hs and Tp of a sea; for given components Hs = 4 sqrt(m0) and
+  // the period and direction of the largest component.
+  double height = w.kind == model::WaveKind::Jonswap ? w.significantHeight : w.height;
+  double period = w.kind == model::WaveKind::Jonswap ? w.peakPeriod : w.period;
+  double azimuth = w.azimuth;
+  if (w.kind == model::WaveKind::Components && !w.componentTable.empty()) {
+    double m0 = 0.0;
+    const std::array<double, 4>* largest = &w.componentTable.front();
+    for (const auto& c : w.componentTable) {
+      m0 += 0.5 * c[1] * c[1];
+      if (c[1] > (*largest)[1]) largest = &c;
+    }
+    height = 4.0 * std::sqrt(m0);
+    period = (*largest)[0];
+    azimuth = (*largest)[3];
+  }
   f.write(fmt::format("\"waves\":{{\"kind\":{},\"height\":{},\"period\":{},\"azimuth\":{}}},",
                       quote(w.kind == model::WaveKind::None         ? "none"
                             : w.kind == model::WaveKind::Airy       ? "airy"
                             : w.kind == model::WaveKind::Components ? "components"
                                                                     : "jonswap"),
-                      fixed(w.kind == model::WaveKind::Jonswap ? w.significantHeight : w.height, 3),
-                      fixed(w.kind == model::WaveKind::Jonswap ? w.peakPeriod : w.period, 3),
-                      fixed(w.azimuth, 6)));
+                      fixed(height, 3), fixed(period, 3), fixed(azimuth, 6)));
   f.write(fmt::format("\"wind\":{{\"speed\":{},\"azimuth\":{}}},", fixed(env.windSpeed, 3),
                       fixed(env.windAzimuth, 6)));
   const double interval = spec.dynamics.outputInterval;
