@@ -23,6 +23,9 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model), m_required(model.spec().clearance.required) {
+  std::vector<double> radius;
+  for (const model::LineElement& el : model.elements()) radius.push_back(0.5 * el.type->contactDiameter);
+  m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, std::move(radius));
   std::set<std::array<int, 2>> pairs;
   auto add = [&](int a, int b) {
     if (a < 0 || b < 0 || a == b) return;
@@ -72,10 +75,20 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   const bool smoothCables = m_model->spec().contact.smoothCables();
   // Surface distance from x to segment j of line b (the clearance before x's own radius).
   const model::PartedElements& parted = m_model->parted();
+  // Node i of line a and segment j of line b are not assessed across an exclusion (a shared connection: lines
+  // at one fairlead or one point touch there by construction; contact.exclude, exclusion_zones), as contact
+  // skips them: allowed when either element at node i may touch segment j.
+  int node = 0;  // the node of line a whose clearance is being found
+  const auto allowed = [&](int i, int j) {
+    const int eb = b.firstElement + j;
+    return (i > 0 && m_exclusions->elementPairAllowed(a.firstElement + i - 1, eb)) ||
+           (i < a.nodeCount - 1 && m_exclusions->elementPairAllowed(a.firstElement + i, eb));
+  };
   const auto segmentDistance = [&](const Vec3& x, int j) {
     // A parted element (lines[].failure) is no segment: nothing is near it.
     if (parted.parted(static_cast<std::size_t>(b.firstElement + j), state.time))
       return std::numeric_limits<double>::infinity();
+    if (!allowed(node, j)) return std::numeric_limits<double>::infinity();
     const int m1 = b.firstNode + j, m2 = m1 + 1;
     const Vec3& p = state.position[m1];
     const Vec3 axis = state.position[m2] - p;
@@ -154,6 +167,7 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   }
   for (int i = 0; i < a.nodeCount; ++i) {
     if (skipNode[static_cast<std::size_t>(i)]) continue;  // out[i] stays +inf: not a new minimum
+    node = i;
     const int n = a.firstNode + i;
     const Vec3& x = state.position[n];
     double best = kInf;
@@ -204,6 +218,7 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
         const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
         double smooth = kInf;
         for (int j = std::max(bestSegment - 1, 0); j <= std::min(bestSegment + 1, segments - 1); ++j) {
+          if (!allowed(i, j)) continue;
           const Vec3 axis = state.position[b.firstNode + j + 1] - state.position[b.firstNode + j];
           const double l2 = axis.squaredNorm();
           const double t0 =

@@ -5,20 +5,24 @@
 /// in the static equilibrium and over every accepted step of the dynamics (with the time it occurs), and
 /// a pass / fail against the required clearance of the model file (clearance.required).
 ///
-/// Clearance at node i of line A to line B: min over the elements of B of the distance from x_i to the
+/// Clearance at node i of line A to line B: min over the elements of B that may touch an element at node i
+/// (the contact's rules: not across a shared connection, an `exclude` pair or an exclusion zone; a node whose
+/// elements may touch none has no clearance, +inf) of the distance from x_i to the
 /// element's chord, minus the contact radii (half the contact diameters of node i and of the nearer
 /// node of the element); negative when the surfaces overlap. Where B is a beam and x_i is within a
 /// quarter element of its surface, the distance is taken to B's smooth centreline instead (on the
-/// nearest element and its neighbours), the curve contact measures (SmoothCentreline.hpp). Written to clearance/envelope.csv and
-/// clearance/summary.json; a few lines for the terminal.
+/// nearest element and its neighbours), the curve contact measures (SmoothCentreline.hpp). Written to
+/// clearance/envelope.csv and clearance/summary.json; a few lines for the terminal.
 
 #include <array>
 #include <filesystem>
 #include <limits>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "tangle/contact/ContactCandidates.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
 
@@ -71,6 +75,9 @@ class ClearanceEnvelope {
   Minimum minimum(std::size_t pair, bool dynamic) const;
 
   const model::Model* m_model;
+  /// The contact's rules of which element pairs may touch (its exclusions and shared connections), for the
+  /// pairs the envelope skips.
+  std::unique_ptr<ContactCandidates> m_exclusions;
   std::vector<std::array<int, 2>> m_pairs;
   std::vector<Side> m_sides;
   bool m_dynamic = false;

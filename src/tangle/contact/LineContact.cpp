@@ -940,6 +940,9 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
     const double ra = m_radius[la.firstElement + i];
     for (int j = 0; j < lb.elementCount; ++j) {
       if (lineA == lineB && std::abs(i - j) <= 1) continue;
+      // Not across an exclusion (contact.exclude, exclusion_zones, a shared connection: lines at one fairlead
+      // or at one point touch there by construction; the clearance is the contact's, which skips them too).
+      if (!m_search.elementPairAllowed(la.firstElement + i, lb.firstElement + j)) continue;
       const model::LineElement& eb = elements[lb.firstElement + j];
       const Vec3& b0 = state.position[eb.node1];
       const Vec3& b1 = state.position[eb.node2];
@@ -976,6 +979,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
         for (int j = std::max(j0 - 1, 0); j <= std::min(j0 + 1, lb.elementCount - 1); ++j) {
           if (lineA == lineB && std::abs(i - j) <= 1) continue;
           const int ea = la.firstElement + i, eb = lb.firstElement + j;
+          if (!m_search.elementPairAllowed(ea, eb)) continue;
           const geometry::SegmentDistanceResult d = geometry::segmentDistance(
               state.position[elements[ea].node1], state.position[elements[ea].node2],
               state.position[elements[eb].node1], state.position[elements[eb].node2]);

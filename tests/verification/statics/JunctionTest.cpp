@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <string>
@@ -24,6 +25,7 @@
 
 #include "tangle/analysis/EquilibriumAudit.hpp"
 #include "tangle/analysis/Simulation.hpp"
+#include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/io/ModelReader.hpp"
 
 namespace tangle {
@@ -178,6 +180,29 @@ TEST(Junction, ClumpOnAnUnequalBridleMatchesTheHandEquilibrium) {
   // The body's term is its net weight; the lines' term holds it up.
   EXPECT_NEAR(b.terms[0].second.z(), -net, 1e-9 * net);
   EXPECT_NEAR(b.terms[2].second.z(), net, 1e-6 * net);
+}
+
+TEST(Junction, LinesMeetingAtAPointAreNeitherAClashNorAClearanceFailure) {
+  // The three legs touch at the buoy by construction: contact, the clash report's clearance and the
+  // DNV-RP-F203 envelope skip them there (a shared connection, as lines at one fairlead), and measure the
+  // legs where they part: one element (7.5 m) from the buoy, at 120 degrees, 14 m apart. Before, the envelope
+  // read -0.10 m (the sum of the radii) at the point and failed every pair.
+  const double c = std::cos(2.0 * 3.141592653589793 / 3.0), s = std::sin(2.0 * 3.141592653589793 / 3.0);
+  const std::vector<Leg> legs{{"leg1", {50.0, 0.0, -99.0}, 75.0, 1.0e7, false, false},
+                              {"leg2", {50.0 * c, 50.0 * s, -99.0}, 75.0, 1.0e7, false, false},
+                              {"leg3", {50.0 * c, -50.0 * s, -99.0}, 75.0, 1.0e7, false, true}};
+  analysis::Simulation sim(io::readModelString(
+      junctionModel(legs, "anchored", {0.0, 0.0, -40.0}, 2000.0, 10.0) + "contact: {}\n", "junction (test)"));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  ASSERT_NE(sim.contact(), nullptr);
+  contact::ClearanceEnvelope envelope(sim.model(), sim.contact()->assessedPairs(sim.state()));
+  envelope.recordStatic(sim.state());
+  ASSERT_EQ(envelope.sides().size(), 6u);
+  for (const contact::ClearanceEnvelope::Side& side : envelope.sides()) {
+    const double smallest = *std::min_element(side.staticClearance.begin(), side.staticClearance.end());
+    EXPECT_GT(smallest, 10.0) << side.line << " to " << side.other;
+    EXPECT_GT(sim.contact()->clearance(sim.state(), side.line, side.other)[0], 10.0);
+  }
 }
 
 }  // namespace
