@@ -80,6 +80,28 @@ Vec3 sumOver(const model::DofMap& dofs, const VecX& force, int first, int last) 
   return sum;
 }
 
+/// The sum of the forces the line ends at `endNodes` exert on what holds them (their end forces) [N].
+Vec3 endPulls(const model::Model& model, const std::vector<solver::LineSnapshot>& snapshot,
+              const std::vector<int>& endNodes) {
+  Vec3 pulls = Vec3::Zero();
+  for (const int node : endNodes) {
+    const auto l = static_cast<std::size_t>(model.lineOfNode(node));
+    pulls += node == model.lines()[l].firstNode ? snapshot[l].endTensionForceA : snapshot[l].endTensionForceB;
+  }
+  return pulls;
+}
+
+/// A body's residual (the sum of its terms), its reference force (its largest term, at least 1 N) and the
+/// tolerance of a body held by `ends` line ends: what the statics' test allows at 1 + ends nodes.
+void closeBodyBalance(solver::ForceBalance& b, std::size_t ends, double nodeBound) {
+  b.scale = 1.0;
+  for (const auto& term : b.terms) {
+    b.residual += term.second;
+    b.scale = std::max(b.scale, term.second.norm());
+  }
+  b.tolerance = static_cast<double>(1 + ends) * nodeBound / b.scale;
+}
+
 }  // namespace
 
 void setStaticEndForces(Simulation& simulation, std::vector<solver::LineSnapshot>& lines) {
@@ -161,20 +183,9 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
     // What is attached at the carrier node is at the point (external loads positive).
     const int d = dofs.firstDof(p.node);
     const Vec3 body = -t.attachments.segment<3>(d), drag = -t.endAttachmentDrag.segment<3>(d);
-    Vec3 pulls = Vec3::Zero();
-    for (const int node : p.endNodes) {
-      const int l = model.lineOfNode(node);
-      const solver::LineSnapshot& s = snapshot[static_cast<std::size_t>(l)];
-      pulls += node == model.lines()[static_cast<std::size_t>(l)].firstNode ? s.endTensionForceA
-                                                                            : s.endTensionForceB;
-    }
-    b.terms = {{"weight and buoyancy", body}, {"drag", drag}, {"lines", pulls}};
-    b.scale = 1.0;
-    for (const auto& term : b.terms) {
-      b.residual += term.second;
-      b.scale = std::max(b.scale, term.second.norm());
-    }
-    b.tolerance = static_cast<double>(1 + p.endNodes.size()) * nodeBound / b.scale;
+    b.terms = {
+        {"weight and buoyancy", body}, {"drag", drag}, {"lines", endPulls(model, snapshot, p.endNodes)}};
+    closeBodyBalance(b, p.endNodes.size(), nodeBound);
     audit.points.push_back(std::move(b));
   }
 
@@ -186,24 +197,14 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
       if (!r.free) continue;
       solver::ForceBalance b;
       b.name = r.name;
-      Vec3 pulls = Vec3::Zero();
-      for (const int node : r.endNodes) {
-        const int l = model.lineOfNode(node);
-        const solver::LineSnapshot& s = snapshot[static_cast<std::size_t>(l)];
-        pulls += node == model.lines()[static_cast<std::size_t>(l)].firstNode ? s.endTensionForceA
-                                                                                : s.endTensionForceB;
-      }
       // Hull contact (vessel::HullContact, the only contact that loads a vessel node), with the sign of an
       // external load; a term only in models with a hull.
-      b.terms = {{"body loads", r.body.head<3>()}, {"station keeping", r.hold.head<3>()}, {"lines", pulls}};
+      b.terms = {{"body loads", r.body.head<3>()},
+                 {"station keeping", r.hold.head<3>()},
+                 {"lines", endPulls(model, snapshot, r.endNodes)}};
       if (simulation.hullContact())
         b.terms.push_back({"hull contact", -t.contact.segment<3>(dofs.firstDof(r.node))});
-      b.scale = 1.0;
-      for (const auto& term : b.terms) {
-        b.residual += term.second;
-        b.scale = std::max(b.scale, term.second.norm());
-      }
-      b.tolerance = static_cast<double>(1 + r.endNodes.size()) * nodeBound / b.scale;
+      closeBodyBalance(b, r.endNodes.size(), nodeBound);
       audit.vessels.push_back(std::move(b));
     }
   }

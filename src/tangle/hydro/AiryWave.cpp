@@ -77,6 +77,15 @@ DepthAttenuation depthAttenuation(double k, double zPrime, double depth) {
   return scaledAttenuation(k, zPrime, depth, attenuationScale(k, depth));
 }
 
+DepthAttenuation unscaledAttenuation(double k, double zPrime, double heightAboveSeabed) {
+  constexpr double kNegligibleExponent = 40.0;  // e^{-40} = 4.3e-18 < half an ulp of 1
+  const double e1 = std::exp(k * zPrime);
+  const double x = 2.0 * k * heightAboveSeabed;
+  if (!(x < kNegligibleExponent)) return {e1, e1};
+  const double em = std::expm1(-x);
+  return {e1 * (2.0 + em), -e1 * em};
+}
+
 double stretchedLevel(double z, double eta, double depth, Stretching stretching) {
   const double zc = std::max(z, -depth);
   switch (stretching) {

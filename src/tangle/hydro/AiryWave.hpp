@@ -33,6 +33,12 @@ struct DepthAttenuation {
 /// sinh(k(z+h))/sinh(kh) = e^{kz} (1 - e^{-2k(z+h)}) / (1 - e^{-2kh}), with 1 - e^{-x} = -expm1(-x).
 DepthAttenuation depthAttenuation(double k, double zPrime, double depth);
 
+/// depthAttenuation times (1 - e^{-2kh}), for sums over components that fold that constant into their scales:
+/// horizontal e^{kz'} (1 + e^{-2k(z'+h)}), vertical e^{kz'} (1 - e^{-2k(z'+h)}) at zPrime [m] with
+/// heightAboveSeabed = z' + h >= 0 [m]; the seabed image term e^{-2k(z'+h)} is left out where it is below
+/// half an ulp of 1 (2 k (z' + h) >= 40: deep-water short components). JonswapSea and ComponentSea.
+DepthAttenuation unscaledAttenuation(double k, double zPrime, double heightAboveSeabed);
+
 /// Level z' [m] in [-h, 0] at which the linear profile is evaluated for a point at z [m] under a
 /// surface elevation eta [m], water depth h [m]; z is first clamped to >= -h. The point must be wet
 /// (z <= eta). Wheeler (1970), "Method for calculating forces produced by irregular waves",

@@ -11,12 +11,6 @@
 
 namespace tangle::hydro {
 
-namespace {
-/// Above this value of 2 k (z' + h) the seabed image term of the depth attenuation is below half an ulp
-/// (as JonswapSea).
-constexpr double kNegligibleExponent = 40.0;
-}  // namespace
-
 ComponentSea::ComponentSea(std::vector<Component> components, double waterDepth, double gravity,
                            Stretching stretching)
     : m_components(std::move(components)), m_depth(waterDepth), m_stretching(stretching) {
@@ -78,15 +72,8 @@ FluidKinematics ComponentSea::kinematics(const Vec3& p, double t, double& elevat
   const double zPrime = stretchedLevel(p.z(), eta, m_depth, m_stretching);
   const double heightAboveSeabed = zPrime + m_depth;
   for (std::size_t i = 0; i < n; ++i) {
-    const double k = m_k[i];
-    const double e1 = std::exp(k * zPrime);
-    const double x = 2.0 * k * heightAboveSeabed;
-    double horizontal = e1, vertical = e1;  // cosh and sinh ratios times (1 - e^{-2kh}) (AiryWave.hpp)
-    if (x < kNegligibleExponent) {
-      const double em = std::expm1(-x);
-      horizontal = e1 * (2.0 + em);
-      vertical = -e1 * em;
-    }
+    // Times 1/(1 - e^{-2kh}) in the scales.
+    const auto [horizontal, vertical] = unscaledAttenuation(m_k[i], zPrime, heightAboveSeabed);
     const double c = cs[2 * i], s = cs[2 * i + 1];
     const double uh = m_velocityScale[i] * horizontal * c;
     const double duh = m_accelerationScale[i] * horizontal * s;

@@ -29,10 +29,6 @@ void require(bool ok, const char* what, const char* requirement, double value) {
 /// std::uniform_real_distribution whose algorithm is left to the library).
 double uniform01(std::mt19937_64& engine) { return static_cast<double>(engine() >> 11) * 0x1.0p-53; }
 
-/// Above this value of 2 k (z' + h), e^{-2k(z'+h)} < 4.3e-18 is below half an ulp of 1: the seabed
-/// image term of the depth attenuation is skipped (deep-water short components).
-constexpr double kNegligibleExponent = 40.0;
-
 }  // namespace
 
 JonswapSea::JonswapSea(const Parameters& parameters) : m_parameters(parameters) {
@@ -165,16 +161,8 @@ FluidKinematics JonswapSea::kinematics(const Vec3& p, double t, double& elevatio
   double duh = 0.0;
   double dw = 0.0;
   for (std::size_t i = 0; i < n; ++i) {
-    const double k = m_k[i];
-    const double e1 = std::exp(k * zPrime);
-    const double x = 2.0 * k * heightAboveSeabed;
-    double horizontal = e1;  // e^{kz'} (1 + e^{-2k(z'+h)}), times 1/(1 - e^{-2kh}) in the scales
-    double vertical = e1;    // e^{kz'} (1 - e^{-2k(z'+h)})
-    if (x < kNegligibleExponent) {
-      const double em = std::expm1(-x);
-      horizontal = e1 * (2.0 + em);
-      vertical = -e1 * em;
-    }
+    // Times 1/(1 - e^{-2kh}) in the scales.
+    const auto [horizontal, vertical] = unscaledAttenuation(m_k[i], zPrime, heightAboveSeabed);
     const double c = cs[2 * i];
     const double sn = cs[2 * i + 1];
     uh += m_velocityScale[i] * horizontal * c;
