@@ -26,6 +26,7 @@
 #include "Line.h"
 #include "MoorDynAPI.h"
 #include "Point.h"
+#include "Rod.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -34,15 +35,14 @@ extern "C" {
 /* A mooring system. (The struct tags are MoorDyn's, for hosts that name them.) */
 typedef struct __MoorDyn* MoorDyn;
 /* Kinds of objects tangle does not have; declared so that hosts written for MoorDyn compile. The
- * functions returning them return NULL. */
+ * functions returning them return NULL. (Rods: Rod.h.) */
 typedef struct __MoorDynBody* MoorDynBody;
-typedef struct __MoorDynRod* MoorDynRod;
 typedef struct __MoorDynWaves* MoorDynWaves;
 typedef struct __MoorDynSeafloor* MoorDynSeafloor;
 
 /* Reads a MoorDyn v2 input file (NULL or "": "Mooring/lines.txt", as MoorDyn) and builds the system; call
  * MoorDyn_Init next. Returns NULL, with the reason on stderr, when the file cannot be read, holds an entry
- * tangle cannot represent (rods, bodies, ...: named with its line) or has no valid model. */
+ * tangle cannot represent (bodies, coupled rods, ...: named with its line) or has no valid model. */
 MoorDyn DECLDIR MoorDyn_Create(const char* infilename);
 /* Number of coupled degrees of freedom: 3 per coupled point (the length of x, xd and f). */
 int DECLDIR MoorDyn_NCoupledDOF(MoorDyn system, unsigned int* n);
@@ -93,9 +93,10 @@ static inline DEPRECATED int MoorDyn_SetWaveKin(MoorDyn system, const double* U,
   return MoorDyn_ExternalWaveKinSet(system, U, Ud, t);
 }
 
-/* Bodies and rods: tangle has none (counts 0, handles NULL). */
+/* Bodies: tangle has none (count 0, handles NULL). */
 int DECLDIR MoorDyn_GetNumberBodies(MoorDyn system, unsigned int* n);
 MoorDynBody DECLDIR MoorDyn_GetBody(MoorDyn system, unsigned int b);
+/* Number of rods of the input file, and rod r (1 to that number; NULL otherwise). */
 int DECLDIR MoorDyn_GetNumberRods(MoorDyn system, unsigned int* n);
 MoorDynRod DECLDIR MoorDyn_GetRod(MoorDyn system, unsigned int r);
 

@@ -64,7 +64,7 @@ TEST(MoorDynApi, DescribesTheDeckBeforeInit) {
   EXPECT_EQ(MoorDyn_GetPoint(system, 0), nullptr);
   EXPECT_EQ(MoorDyn_GetPoint(system, 3), nullptr);
   EXPECT_EQ(MoorDyn_GetBody(system, 1), nullptr);
-  EXPECT_EQ(MoorDyn_GetRod(system, 1), nullptr);
+  EXPECT_EQ(MoorDyn_GetRod(system, 1), nullptr);  // the deck has no rod
 
   MoorDynLine line = MoorDyn_GetLine(system, 1);
   ASSERT_NE(line, nullptr);
@@ -315,6 +315,66 @@ TEST(MoorDynApi, OldApiHoldsOneSystem) {
   EXPECT_EQ(MoorDynClose(), MOORDYN_SUCCESS);
   EXPECT_EQ(MoorDynClose(), MOORDYN_INVALID_VALUE);
   EXPECT_EQ(MoorDynInit(x, xd, "/nonexistent/tangle/deck.txt"), MOORDYN_UNHANDLED_ERROR);
+}
+
+// MoorDyn's tests/rods.cpp through the C API: the rod of RodHanging.txt stays level and centred, and the
+// buoyant free rod of rod_tests/AddedMass.txt (no line) rises from rest at a = (rho V - M) g / (M + Ca rho
+// V), checked as MoorDyn's test does at its 0.1 s steps until z > -1 (MoorDyn allows 1e-8 relative; tangle
+// 1e-6 m, its Newton tolerance: MoorDynRodsTest).
+TEST(MoorDynApi, RodsAnswerAsMoorDynsRodTests) {
+  const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
+  MoorDyn hanging = MoorDyn_Create((dir + "RodHanging.txt").c_str());
+  ASSERT_NE(hanging, nullptr);
+  unsigned int n = 0;
+  EXPECT_EQ(MoorDyn_GetNumberRods(hanging, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 1u);
+  EXPECT_EQ(MoorDyn_GetRod(hanging, 2), nullptr);
+  MoorDynRod rod = MoorDyn_GetRod(hanging, 1);
+  ASSERT_NE(rod, nullptr);
+  int id = 0, type = 7;
+  EXPECT_EQ(MoorDyn_GetRodID(rod, &id), MOORDYN_SUCCESS);
+  EXPECT_EQ(id, 1);
+  EXPECT_EQ(MoorDyn_GetRodType(rod, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, 0);  // free
+  EXPECT_EQ(MoorDyn_GetRodN(rod, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 1u);
+  EXPECT_EQ(MoorDyn_GetRodNumberNodes(rod, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, 2u);
+  double a[3], b[3];
+  EXPECT_EQ(MoorDyn_GetRodNodePos(rod, 2, a), MOORDYN_INVALID_VALUE);
+  ASSERT_EQ(MoorDyn_Init(hanging, nullptr, nullptr), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 0, a), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 1, b), MOORDYN_SUCCESS);
+  EXPECT_NEAR(a[0], -10.0, 1e-3);
+  EXPECT_NEAR(b[0], 10.0, 1e-3);
+  EXPECT_NEAR(a[2], b[2], 1e-6);
+  EXPECT_LT(a[2], -75.0);  // it hangs lower than the deck puts it
+  double force[6];
+  EXPECT_EQ(MoorDyn_GetRodForce(rod, force), MOORDYN_NON_IMPLEMENTED);
+  EXPECT_EQ(MoorDyn_Close(hanging), MOORDYN_SUCCESS);
+
+  MoorDyn rising = MoorDyn_Create((dir + "rod_AddedMass.txt").c_str());
+  ASSERT_NE(rising, nullptr);
+  ASSERT_EQ(MoorDyn_Init(rising, nullptr, nullptr), MOORDYN_SUCCESS);
+  rod = MoorDyn_GetRod(rising, 1);
+  ASSERT_NE(rod, nullptr);
+  const double rho = 1025.0, area = 3.141592653589793 / 4.0 * 0.5 * 0.5, mass = 100.0, g = 9.80665;
+  const double acceleration = (rho * area - mass) * g / (mass + rho * area);
+  double t = 0.0, dt = 0.1;
+  int steps = 0;
+  while (t < 2.5) {
+    ASSERT_EQ(MoorDyn_Step(rising, nullptr, nullptr, nullptr, &t, &dt), MOORDYN_SUCCESS);
+    ++steps;
+    const double expected = -10.0 + 0.5 * acceleration * t * t;
+    ASSERT_EQ(MoorDyn_GetRodN(rod, &n), MOORDYN_SUCCESS);
+    for (unsigned int i = 0; i <= n; ++i) {
+      ASSERT_EQ(MoorDyn_GetRodNodePos(rod, i, a), MOORDYN_SUCCESS);
+      EXPECT_NEAR(a[2], expected, 1e-6) << "node " << i << " at t = " << t;
+    }
+    if (expected > -1.0) break;
+  }
+  EXPECT_GE(steps, 20);
+  EXPECT_EQ(MoorDyn_Close(rising), MOORDYN_SUCCESS);
 }
 
 }  // namespace

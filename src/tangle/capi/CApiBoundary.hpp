@@ -113,6 +113,22 @@ int withPoint(const char* function, MoorDynPoint handle, Body&& body) noexcept {
   }
 }
 
+/// Runs body(system, rod index) for a rod handle; MOORDYN_INVALID_VALUE for a null one.
+template <class Body>
+int withRod(const char* function, MoorDynRod handle, Body&& body) noexcept {
+  if (handle == nullptr) {
+    reportError(nullptr, function, "the rod is NULL");
+    return MOORDYN_INVALID_VALUE;
+  }
+  const RodHandle& rod = *reinterpret_cast<const RodHandle*>(handle);
+  try {
+    body(*rod.system, rod.index);
+    return MOORDYN_SUCCESS;
+  } catch (...) {
+    return handleCurrentException(rod.system, function);
+  }
+}
+
 /// @throws NotImplemented with the message "not implemented by tangle: <why>" (the guards prefix the
 ///         function's name)
 [[noreturn]] void throwNotImplemented(const std::string& why);

@@ -144,13 +144,18 @@ MoorDynBody MoorDyn_GetBody(MoorDyn system, unsigned int b) {
 }
 
 int MoorDyn_GetNumberRods(MoorDyn system, unsigned int* n) {
-  return capi::withSystem("MoorDyn_GetNumberRods", system,
-                          [&](capi::MoorDynSystem&) { capi::output(n, "n") = 0; });
+  return capi::withSystem("MoorDyn_GetNumberRods", system, [&](capi::MoorDynSystem& s) {
+    capi::output(n, "n") = static_cast<unsigned int>(s.rodCount());
+  });
 }
 
 MoorDynRod MoorDyn_GetRod(MoorDyn system, unsigned int r) {
-  if (capi::MoorDynSystem* s = systemOrReport(system, "MoorDyn_GetRod"))
-    capi::reportError(s, "MoorDyn_GetRod", "there is no rod " + std::to_string(r) + " (tangle has no rods)");
+  capi::MoorDynSystem* s = systemOrReport(system, "MoorDyn_GetRod");
+  if (s == nullptr) return nullptr;
+  if (capi::RodHandle* h = s->rod(r)) return reinterpret_cast<MoorDynRod>(h);
+  capi::reportError(
+      s, "MoorDyn_GetRod",
+      "there is no rod " + std::to_string(r) + " (the input file has " + std::to_string(s->rodCount()) + ")");
   return nullptr;
 }
 

@@ -1,6 +1,6 @@
 /// @file MoorDynObjectsApi.cpp
-/// The line and point functions of the MoorDyn v2 C API (include/tangle-moordyn/Line.h, Point.h) on
-/// capi::MoorDynSystem. Every function catches every exception (CApiBoundary.hpp) and returns a MOORDYN_*
+/// The line, point and rod functions of the MoorDyn v2 C API (include/tangle-moordyn/Line.h, Point.h, Rod.h)
+/// on capi::MoorDynSystem. Every function catches every exception (CApiBoundary.hpp) and returns a MOORDYN_*
 /// code.
 
 #include <string>
@@ -246,6 +246,62 @@ int MoorDyn_GetPointAttached(MoorDynPoint point, unsigned int i, MoorDynLine* l,
 int MoorDyn_SavePointVTK(MoorDynPoint point, const char* /*filename*/) {
   return pointNotImplemented("MoorDyn_SavePointVTK", point,
                              "`tangle run` writes ParaView files (vtk/lines.pvd) for a model run on its own");
+}
+
+int MoorDyn_GetRodID(MoorDynRod rod, int* id) {
+  return capi::withRod("MoorDyn_GetRodID", rod,
+                       [&](capi::MoorDynSystem& s, int r) { capi::output(id, "id") = s.deckRod(r).id; });
+}
+
+int MoorDyn_GetRodType(MoorDynRod rod, int* t) {
+  return capi::withRod("MoorDyn_GetRodType", rod,
+                       [&](capi::MoorDynSystem& s, int r) { capi::output(t, "t") = s.rodType(r); });
+}
+
+int MoorDyn_GetRodForce(MoorDynRod rod, double /*f*/[6]) {
+  return capi::withRod("MoorDyn_GetRodForce", rod, [&](capi::MoorDynSystem&, int) {
+    capi::throwNotImplemented(
+        "tangle does not export a rod's net force (its line's end forces are in results.h5)");
+  });
+}
+
+int MoorDyn_GetRodM(MoorDynRod rod, double /*m*/[6][6]) {
+  return capi::withRod("MoorDyn_GetRodM", rod, [&](capi::MoorDynSystem&, int) {
+    capi::throwNotImplemented("tangle does not export the rod mass matrices");
+  });
+}
+
+int MoorDyn_GetRodN(MoorDynRod rod, unsigned int* n) {
+  return capi::withRod("MoorDyn_GetRodN", rod, [&](capi::MoorDynSystem& s, int r) {
+    capi::output(n, "n") = static_cast<unsigned int>(s.deckRod(r).segments);
+  });
+}
+
+int MoorDyn_GetRodNumberNodes(MoorDynRod rod, unsigned int* n) {
+  return capi::withRod("MoorDyn_GetRodNumberNodes", rod, [&](capi::MoorDynSystem& s, int r) {
+    capi::output(n, "n") = static_cast<unsigned int>(s.deckRod(r).segments) + 1;
+  });
+}
+
+int MoorDyn_GetRodNodePos(MoorDynRod rod, unsigned int i, double pos[3]) {
+  return capi::withRod("MoorDyn_GetRodNodePos", rod, [&](capi::MoorDynSystem& s, int r) {
+    capi::output(pos, "pos");
+    put(s.rodNodePosition(r, i), pos);
+  });
+}
+
+int MoorDyn_GetRodNodeVel(MoorDynRod rod, unsigned int i, double vel[3]) {
+  return capi::withRod("MoorDyn_GetRodNodeVel", rod, [&](capi::MoorDynSystem& s, int r) {
+    capi::output(vel, "vel");
+    put(s.rodNodeVelocity(r, i), vel);
+  });
+}
+
+int MoorDyn_SaveRodVTK(MoorDynRod rod, const char* /*filename*/) {
+  return capi::withRod("MoorDyn_SaveRodVTK", rod, [&](capi::MoorDynSystem&, int) {
+    capi::throwNotImplemented(
+        "`tangle run` writes ParaView files (vtk/lines.pvd) for a model run on its own");
+  });
 }
 
 }  // extern "C"

@@ -35,6 +35,13 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     throw Error(fmt::format("{}: the conversion maps {} of {} lines and {} of {} points (a bug in tangle)",
                             m_path, c.lines.size(), m_coupling.deck.lines.size(), c.points.size(),
                             m_coupling.deck.points.size()));
+  // MoorDyn couples a rod's 6 (or 3, pinned) DOFs ahead of the points': tangle holds coupled rods.
+  for (const io::MoorDynRod& r : m_coupling.deck.rods)
+    if (r.kind == io::MoorDynRodKind::Coupled || r.kind == io::MoorDynRodKind::CoupledPinned)
+      throw Error(
+          fmt::format("{}:{}: rod {} is {}: rods coupled to a host are not supported by tangle's MoorDyn "
+                      "API (make it Fixed, or couple the points that hold it)",
+                      m_path, r.sourceLine, r.id, r.kindWord));
   // What the conversion changed or approximated, and the reader's plausibility warnings.
   for (const std::string& warning : m_coupling.spec.warnings)
     log(MOORDYN_WRN_LEVEL, "tangle (MoorDyn API): " + warning + "\n");
@@ -46,6 +53,8 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     m_lineHandles.push_back(std::make_unique<LineHandle>(LineHandle{this, static_cast<int>(l)}));
   for (std::size_t p = 0; p < c.points.size(); ++p)
     m_pointHandles.push_back(std::make_unique<PointHandle>(PointHandle{this, static_cast<int>(p)}));
+  for (std::size_t r = 0; r < c.rods.size(); ++r)
+    m_rodHandles.push_back(std::make_unique<RodHandle>(RodHandle{this, static_cast<int>(r)}));
 }
 
 MoorDynSystem::~MoorDynSystem() = default;
@@ -122,6 +131,11 @@ std::string MoorDynSystem::timeSchemeName() const {
 LineHandle* MoorDynSystem::line(unsigned int id) {
   if (id < 1 || id > m_lineHandles.size()) return nullptr;
   return m_lineHandles[id - 1].get();
+}
+
+RodHandle* MoorDynSystem::rod(unsigned int id) {
+  if (id < 1 || id > m_rodHandles.size()) return nullptr;
+  return m_rodHandles[id - 1].get();
 }
 
 PointHandle* MoorDynSystem::point(unsigned int id) {
@@ -303,6 +317,11 @@ Vec3 MoorDynSystem::pointPosition(int p) {
   if (!initialized()) return map.position;
   const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
   if (coupled >= 0) return m_run->pointPosition(coupled);
+  return mappedPosition(map);
+}
+
+Vec3 MoorDynSystem::mappedPosition(const io::MoorDynPointMap& map) {
+  if (!initialized()) return map.position;
   if (!map.ends.empty()) return endNodePosition(map.ends.front());
   if (!map.junctionLine.empty()) {
     const solver::LineSnapshot& s =
@@ -317,6 +336,11 @@ Vec3 MoorDynSystem::pointVelocity(int p) {
   if (!initialized() || map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
   const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
   if (coupled >= 0) return m_run->pointVelocity(coupled);
+  return mappedVelocity(map);
+}
+
+Vec3 MoorDynSystem::mappedVelocity(const io::MoorDynPointMap& map) {
+  if (!initialized() || map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
   if (!map.ends.empty()) return endNodeVelocity(map.ends.front());
   if (!map.junctionLine.empty()) {
     const TangleLine& t = tangleLine(map.junctionLine);
@@ -327,6 +351,50 @@ Vec3 MoorDynSystem::pointVelocity(int p) {
     return velocity(n);
   }
   return Vec3::Zero();
+}
+
+int MoorDynSystem::rodType(int r) const {
+  switch (deckRod(r).kind) {
+    case io::MoorDynRodKind::Fixed:
+      return kRodFixed;
+    case io::MoorDynRodKind::Pinned:
+      return kRodPinned;
+    case io::MoorDynRodKind::Free:
+      return kRodFree;
+    case io::MoorDynRodKind::Coupled:
+      return kRodCoupled;
+    case io::MoorDynRodKind::CoupledPinned:
+      return kRodCoupledPinned;
+  }
+  return kRodFixed;
+}
+
+Vec3 MoorDynSystem::rodNodePosition(int r, unsigned int i) {
+  const io::MoorDynRod& rod = deckRod(r);
+  if (i > static_cast<unsigned int>(rod.segments))
+    throw InvalidValue(fmt::format("rod {} has nodes 0 to {}, not {}", rod.id, rod.segments, i));
+  const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
+  if (rod.segments == 0) return mappedPosition(map.point);
+  if (map.tangleLine.empty() || !initialized())
+    return rod.endA + (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments);
+  const solver::LineSnapshot& s =
+      m_run->lineResults()[static_cast<std::size_t>(tangleLine(map.tangleLine).snapshot)];
+  return s.position.at(i);
+}
+
+Vec3 MoorDynSystem::rodNodeVelocity(int r, unsigned int i) {
+  const io::MoorDynRod& rod = deckRod(r);
+  if (i > static_cast<unsigned int>(rod.segments))
+    throw InvalidValue(fmt::format("rod {} has nodes 0 to {}, not {}", rod.id, rod.segments, i));
+  const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
+  if (rod.segments == 0) return mappedVelocity(map.point);
+  if (map.tangleLine.empty() || !initialized()) return Vec3::Zero();
+  const TangleLine& t = tangleLine(map.tangleLine);
+  NodeRef n;
+  n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
+  n.modelLine = t.modelLine;
+  n.node = static_cast<int>(i);
+  return velocity(n);
 }
 
 Vec3 MoorDynSystem::pointForce(int p) {

@@ -51,6 +51,19 @@ struct PointHandle {
   int index = 0;  ///< 0-based position in the deck's POINTS table (deck id - 1)
 };
 
+/// What a MoorDynRod handle points to: a rod of the deck (owned by its system).
+struct RodHandle {
+  MoorDynSystem* system = nullptr;
+  int index = 0;  ///< 0-based position in the deck's RODS table (deck id - 1)
+};
+
+/// MoorDyn's rod types (MoorDyn's Rod::types), as MoorDyn_GetRodType returns them.
+inline constexpr int kRodCoupled = -2;
+inline constexpr int kRodCoupledPinned = -1;
+inline constexpr int kRodFree = 0;
+inline constexpr int kRodPinned = 1;
+inline constexpr int kRodFixed = 2;
+
 /// MoorDyn's point types (MoorDyn's Point::types), as MoorDyn_GetPointType returns them.
 inline constexpr int kPointCoupled = -1;
 inline constexpr int kPointFree = 0;
@@ -98,9 +111,11 @@ class MoorDynSystem {
   std::string timeSchemeName() const;
   int lineCount() const { return static_cast<int>(m_lineHandles.size()); }
   int pointCount() const { return static_cast<int>(m_pointHandles.size()); }
+  int rodCount() const { return static_cast<int>(m_rodHandles.size()); }
   /// Handles by 1-based deck id; null when out of range. Owned by this system.
   LineHandle* line(unsigned int id);
   PointHandle* point(unsigned int id);
+  RodHandle* rod(unsigned int id);
   /// @}
 
   /// @name Deck lines (index l = deck id - 1; node i from 0 at the deck line's end A to its segment count)
@@ -157,6 +172,17 @@ class MoorDynSystem {
   Vec3 pointForce(int p);
   /// @}
 
+  /// @name Deck rods (index r = deck id - 1; node i from 0 at the rod's end A to NumSegs)
+  /// @{
+  const io::MoorDynRod& deckRod(int r) const { return m_coupling.deck.rods[static_cast<std::size_t>(r)]; }
+  /// kRodFixed, kRodPinned, kRodFree, kRodCoupled or kRodCoupledPinned.
+  int rodType(int r) const;
+  /// A pinned or free rod's node from its tangle line (`rod<id>`); a held rod's where the deck puts it; a
+  /// zero-length rod's (one node) its point's [m]. @throws InvalidValue for i above NumSegs
+  Vec3 rodNodePosition(int r, unsigned int i);
+  Vec3 rodNodeVelocity(int r, unsigned int i);
+  /// @}
+
  private:
   /// A node of a deck line in the tangle model.
   struct NodeRef {
@@ -184,6 +210,9 @@ class MoorDynSystem {
   /// Position / velocity of a tangle line end (name, 0 A / 1 B).
   Vec3 endNodePosition(const std::pair<std::string, int>& end);
   Vec3 endNodeVelocity(const std::pair<std::string, int>& end);
+  /// Position / velocity of the point a map describes (its first line end, or its junction node).
+  Vec3 mappedPosition(const io::MoorDynPointMap& map);
+  Vec3 mappedVelocity(const io::MoorDynPointMap& map);
 
   std::string m_path;
   io::DeckCoupling m_coupling;
@@ -193,6 +222,7 @@ class MoorDynSystem {
   std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)
   std::vector<std::unique_ptr<LineHandle>> m_lineHandles;
   std::vector<std::unique_ptr<PointHandle>> m_pointHandles;
+  std::vector<std::unique_ptr<RodHandle>> m_rodHandles;
   int m_verbosity;
   int m_logLevel;
   std::ofstream m_logFile;

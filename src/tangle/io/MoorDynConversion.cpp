@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -371,6 +372,113 @@ std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int option
 constexpr double kMaxFrictionVelocity = 10.0;
 
 /// One deck line placed in a chain of deck lines joined at free points.
+/// A deck whose rods' ends are points: for each rod end that lines attach to, a point (after the deck's own)
+/// and the lines' rod ends rewritten to it (docs/moordyn.md, rods). A fixed or coupled rod's end is a fixed
+/// point; a pinned rod's end A too; a moving rod's other ends are tangle points carried by the rod's line
+/// (its end node is the point); a zero-length rod is one point (free for a free rod).
+struct RodEnds {
+  MoorDynDeck deck;
+  std::size_t deckPoints = 0;   ///< points of the deck as written (the rest are rod ends)
+  std::vector<int> carrierRod;  ///< per point (id - 1): the rod whose line's end is the point, 0: none
+  std::vector<int> carrierEnd;  ///< and which end of it (0 = A, 1 = B)
+  std::vector<Vec3> clampAxis;  ///< per point: outward unit axis of a fixed rod's end (lines with EI clamp to
+                                ///< it), zero: none
+  std::vector<bool> movingRod;  ///< per rod (id - 1): a tangle line (pinned or free, of length > 0)
+  std::vector<std::array<int, 2>> endPoint;  ///< per rod: the point id of each end, 0: no line there
+};
+
+/// Pi/4 d^2 [m^2].
+double circleArea(double d) { return std::numbers::pi / 4.0 * d * d; }
+
+RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes) {
+  RodEnds r;
+  r.deck = input;
+  MoorDynDeck& deck = r.deck;
+  r.deckPoints = deck.points.size();
+  r.carrierRod.assign(deck.points.size(), 0);
+  r.carrierEnd.assign(deck.points.size(), 0);
+  r.clampAxis.assign(deck.points.size(), Vec3::Zero());
+  r.movingRod.assign(deck.rods.size(), false);
+  r.endPoint.assign(deck.rods.size(), {0, 0});
+  const auto rodType = [&](const MoorDynRod& rod) -> const MoorDynRodType& {
+    return *std::find_if(deck.rodTypes.begin(), deck.rodTypes.end(),
+                         [&](const MoorDynRodType& t) { return t.name == rod.rodType; });
+  };
+  for (const MoorDynRod& rod : deck.rods) {
+    const bool zeroLength = rod.length() == 0.0;
+    r.movingRod[static_cast<std::size_t>(rod.id - 1)] =
+        !zeroLength && (rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned ||
+                        rod.kind == MoorDynRodKind::Free);
+    if (rod.kind == MoorDynRodKind::Coupled || rod.kind == MoorDynRodKind::CoupledPinned)
+      notes.push_back(fmt::format(
+          "{}:{}: rod {} is {}: held where the deck puts it (a standalone run); its end A is not moved by a "
+          "host (the C API refuses coupled rods)",
+          deck.file, rod.sourceLine, rod.id, rod.kindWord));
+  }
+  const auto addPoint = [&](const MoorDynRod& rod, int end, MoorDynPointKind kind) {
+    MoorDynPoint p;
+    p.id = static_cast<int>(deck.points.size()) + 1;
+    p.kind = kind;
+    p.kindWord = fmt::format("rod {} end {}", rod.id, end == 0 ? 'A' : 'B');
+    p.position = end == 0 ? rod.endA : rod.endB;
+    p.sourceLine = rod.sourceLine;
+    deck.points.push_back(p);
+    r.carrierRod.push_back(0);
+    r.carrierEnd.push_back(0);
+    r.clampAxis.push_back(Vec3::Zero());
+    return p.id;
+  };
+  for (MoorDynLine& l : deck.lines) {
+    for (int side = 0; side < 2; ++side) {
+      const int rodId = side == 0 ? l.rodA : l.rodB;
+      if (rodId == 0) continue;
+      const MoorDynRod& rod = deck.rods[static_cast<std::size_t>(rodId - 1)];
+      const int rodEnd = side == 0 ? l.rodEndA : l.rodEndB;
+      const bool zeroLength = rod.length() == 0.0;
+      std::array<int, 2>& ends = r.endPoint[static_cast<std::size_t>(rodId - 1)];
+      // A zero-length rod's two ends are one point.
+      const int slot = zeroLength ? 0 : rodEnd;
+      if (ends[static_cast<std::size_t>(slot)] == 0) {
+        const bool held =
+            rod.kind == MoorDynRodKind::Fixed || rod.kind == MoorDynRodKind::Coupled ||
+            ((rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned) &&
+             (slot == 0 || zeroLength));
+        const int id = addPoint(rod, slot, held ? MoorDynPointKind::Fixed : MoorDynPointKind::Free);
+        ends[static_cast<std::size_t>(slot)] = id;
+        MoorDynPoint& p = deck.points.back();
+        if (held && !zeroLength &&
+            (rod.kind == MoorDynRodKind::Fixed || rod.kind == MoorDynRodKind::Coupled)) {
+          const Vec3 axis = (rod.endB - rod.endA) / rod.length();
+          r.clampAxis.back() = slot == 1 ? axis : Vec3(-axis);
+        }
+        if (!held && zeroLength) {
+          // MoorDyn's zero-length rod (Rod.cpp): no length, so no mass, net buoyancy or side drag; the axial
+          // drag CdEnd on pi/4 d^2 of both its ends (applied at its one node) becomes the point's drag area.
+          const MoorDynRodType& t = rodType(rod);
+          p.dragArea = 2.0 * t.dragEnd * circleArea(t.diameter);
+          if (t.addedMassEnd > 0.0)
+            notes.push_back(fmt::format(
+                "{}:{}: zero-length rod {} is a free point with drag area CdEnd pi/4 d^2 = {} m^2; its end "
+                "added mass (CaEnd = {}) is left out",
+                deck.file, rod.sourceLine, rod.id, p.dragArea, t.addedMassEnd));
+        }
+        if (!held && !zeroLength) {
+          r.carrierRod.back() = rod.id;
+          r.carrierEnd.back() = slot;
+        }
+      }
+      (side == 0 ? l.pointA : l.pointB) = ends[static_cast<std::size_t>(slot)];
+      l.rodA = side == 0 ? 0 : l.rodA;
+      l.rodB = side == 1 ? 0 : l.rodB;
+    }
+    if (l.pointA == l.pointB)
+      throw InputError(deck.file, l.sourceLine, fmt::format("line {}", l.id),
+                       "both ends of the line are on the same rod end (a zero-length rod's two ends are one "
+                       "point)");
+  }
+  return r;
+}
+
 struct ChainEntry {
   int line = 0;           ///< index in deck.lines
   bool reversed = false;  ///< traversed from its end B to its end A
@@ -378,11 +486,21 @@ struct ChainEntry {
 
 }  // namespace
 
-MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
+MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   MoorDynConversion out;
   std::vector<std::string>& notes = out.notes;
-  const Options opt = readOptions(deck, notes);
+  const Options opt = readOptions(input, notes);
+  const RodEnds rodEnds = resolveRodEnds(input, notes);
+  const MoorDynDeck& deck = rodEnds.deck;  // rod ends that lines attach to are points in it
   const auto pointLine = [&](int id) { return deck.points[static_cast<std::size_t>(id - 1)].sourceLine; };
+  const auto carrier = [&](int pointId) { return rodEnds.carrierRod[static_cast<std::size_t>(pointId - 1)]; };
+  // A tangle point's name: a free point's `point<id>`, a moving rod's end `rod<id>a` / `rod<id>b`.
+  const auto pointName = [&](int pointId) {
+    const int rod = carrier(pointId);
+    return rod != 0 ? fmt::format("rod{}{}", rod,
+                                  rodEnds.carrierEnd[static_cast<std::size_t>(pointId - 1)] == 0 ? 'a' : 'b')
+                    : fmt::format("point{}", pointId);
+  };
 
   // Water depth: WtrDpth, deepened to the lowest point as MoorDyn does (MoorDyn2.cpp, point list).
   double depth = opt.depth;
@@ -395,6 +513,15 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
                         deck.file, p.sourceLine, p.id, num(opt.depth), num(-p.position.z())));
       depth = -p.position.z();
     }
+  for (const MoorDynRod& rod : deck.rods)
+    for (const Vec3& e : {rod.endA, rod.endB})
+      if (-e.z() > depth) {
+        if (opt.depth > 0.0)
+          notes.push_back(
+              fmt::format("{}:{}: rod {} reaches below WtrDpth = {} m: the water depth is set to {} m",
+                          deck.file, rod.sourceLine, rod.id, num(opt.depth), num(-e.z())));
+        depth = -e.z();
+      }
   if (!(depth > 0.0))
     throw InputError(deck.file, opt.lineOf.count("wtrdpth") ? opt.lineOf.at("wtrdpth") : 0, "WtrDpth",
                      "expected a water depth > 0 (option WtrDpth, or a point below the surface)");
@@ -414,12 +541,15 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
   }
   // A free point joining three or more deck lines (a bridle's apex, a triplate) is a tangle point, where the
   // lines end with `type: point`; a free point joining two is a node inside one tangle line (a chain).
+  // A moving rod's end is a tangle point too, carried by the rod's line (written first: its end node).
   const auto isHub = [&](int pointId) {
-    return deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
-           atPoint[static_cast<std::size_t>(pointId - 1)].size() > 2;
+    return carrier(pointId) != 0 ||
+           (deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
+            atPoint[static_cast<std::size_t>(pointId - 1)].size() > 2);
   };
   const auto isJunction = [&](int pointId) {
-    return deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
+    return carrier(pointId) == 0 &&
+           deck.points[static_cast<std::size_t>(pointId - 1)].kind == MoorDynPointKind::Free &&
            atPoint[static_cast<std::size_t>(pointId - 1)].size() == 2;
   };
   const auto pointAt = [&](int line, int end) {
@@ -585,7 +715,10 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
       longestSegment = segment;
     }
   }
-  const double width = widest->diameter;
+  // A deck of rods only: the widest rod sets it (nothing lies on the seabed along its length but a rod).
+  double width = widest != nullptr ? widest->diameter : 0.0;
+  for (const MoorDynRodType& t : deck.rodTypes)
+    if (widest == nullptr) width = std::max(width, t.diameter);
   bool typesDiffer = false;
   for (const MoorDynLineType& t : deck.lineTypes) typesDiffer = typesDiffer || t.diameter != width;
   if (typesDiffer)
@@ -635,7 +768,9 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
         fmt::format("    bathymetry: {{file: {}, interpolation: bilinear}}  # SeafloorFile ({}; bilinear as "
                     "MoorDyn's interp2)",
                     yamlQuoted(opt.seafloorFile), optionComment("seafloorfile", "")));
-  if (opt.friction > 0.0) {
+  if (opt.friction > 0.0 && widest == nullptr)
+    notes.push_back("FrictionCoefficient: a deck without lines; the seabed friction is left out");
+  if (opt.friction > 0.0 && widest != nullptr) {
     // MoorDyn (Line.cpp): friction = min(mu FricDamp |v|, mu N) with N the node's seabed force: a viscous
     // law saturating at |v| = N / FricDamp. tangle's viscous law mu N v / max(|v|, v_f) has the same slope
     // when v_f = N / FricDamp, with N the submerged weight of one segment of the longest line type.
@@ -750,6 +885,41 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     line(fmt::format("    added_mass_normal: {}   # Ca", num(t.addedMassNormal)));
     line(fmt::format("    added_mass_axial: {}    # CaAx", num(t.addedMassAxial)));
   }
+  // Rods that move (pinned or free, of length > 0): MoorDyn's rigid cylinder as a stiff beam line. Its
+  // stiffness is set by its own load scale q = (m + rho pi/4 d^2) g [N/m] over its length L, so that its
+  // sag under that load is about 1e-7 L (EI = 1e5 q L^3: 5/384 q L^4 / EI) and its stretch about 1e-7
+  // (EA = 1e7 q L), and at least 1000 times the stiffest line type's EA (the lines pulling on it); both at
+  // most 1e13.
+  double lineAxial = 0.0;
+  for (const MoorDynLineType& t : deck.lineTypes) lineAxial = std::max(lineAxial, t.axialStiffness);
+  std::set<std::string> rodTypesWritten;
+  for (const MoorDynRodType& t : deck.rodTypes) {
+    double rodLength = 0.0;
+    for (const MoorDynRod& rod : deck.rods)
+      if (rod.rodType == t.name && rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)])
+        rodLength = std::max(rodLength, rod.length());
+    if (rodLength == 0.0) continue;
+    rodTypesWritten.insert(t.name);
+    const double q = (t.massPerLength + opt.density * circleArea(t.diameter)) * std::max(opt.gravity, 1.0);
+    // At most tangle's largest stiffness, 1e13 (a 10 m diameter can's sag is then still 1e-8 of its length).
+    const double axial = std::min(std::max({1e7 * q * rodLength, 1e3 * lineAxial, 1e6}), 1e13);
+    const double bending = std::min(std::max(1e5 * q * rodLength * rodLength * rodLength, 1e3), 1e13);
+    line(fmt::format(
+        "  - name: {}                # rod type {} (deck line {}): MoorDyn's rigid rod as a stiff beam",
+        yamlQuoted("rod-" + t.name), t.name, t.sourceLine));
+    line(fmt::format("    outer_diameter: {}      # Diam", num(t.diameter)));
+    line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
+    line(
+        fmt::format("    axial_stiffness: {}     # rigid: max(1e7 q L, 1e3 x the largest line EA), q = (m + "
+                    "rho pi/4 d^2) g, L = {} m",
+                    num(axial), num(rodLength)));
+    line(fmt::format("    bending_stiffness: {}   # rigid: 1e5 q L^3 (sag about 1e-7 L)", num(bending)));
+    line(fmt::format("    drag_normal: {}         # Cd", num(t.drag)));
+    line("    drag_axial: 0             # a rod's side has no axial drag (CdEnd at its ends)");
+    line(fmt::format("    added_mass_normal: {}   # Ca", num(t.addedMass)));
+    line("    added_mass_axial: 0");
+    line("    maximum_strain: 0.001       # a rigid rod");
+  }
   line("");
 
   // Point maps, filled as the lines are written.
@@ -771,18 +941,37 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
                       "weight, buoyancy, drag and inertia)",
                       deck.file, p.sourceLine, p.id));
 
-  const auto endBlock = [&](const char* key, int pointId, const std::string& lineName, int end) {
+  // A line end at point `pointId`; `bending` is the EI of the line's end section. Returns true when the end
+  // is clamped to a fixed rod's axis (a `fixed` end: the line's start shape then leaves along that axis).
+  const auto endBlock = [&](const char* key, int pointId, const std::string& lineName, int end,
+                            double bending) {
     const MoorDynPoint& p = deck.points[static_cast<std::size_t>(pointId - 1)];
     MoorDynPointMap& m = out.points[static_cast<std::size_t>(pointId - 1)];
     m.ends.push_back({lineName, end});
+    const bool rodEnd = static_cast<std::size_t>(pointId) > rodEnds.deckPoints;
+    if (rodEnd && bending > 0.0 &&
+        (p.kind != MoorDynPointKind::Fixed ||
+         rodEnds.clampAxis[static_cast<std::size_t>(pointId - 1)].isZero()))
+      notes.push_back(
+          fmt::format("{}:{}: line {} (EI > 0) is pinned to {} (MoorDyn clamps a line with bending stiffness "
+                      "to the rod's "
+                      "axis; tangle's free and pinned rods carry no moment from their lines)",
+                      deck.file, p.sourceLine, lineName, p.kindWord));
     switch (p.kind) {
       case MoorDynPointKind::Fixed: {
+        const bool clamped =
+            bending > 0.0 && !rodEnds.clampAxis[static_cast<std::size_t>(pointId - 1)].isZero();
         const bool onSeabed = p.position.z() <= -depth + 1e-9 * depth;
         line(fmt::format("    {}:", key));
-        line(fmt::format("      type: {}          # point {} {} (deck line {})",
-                         onSeabed ? "anchored" : "pinned", p.id, p.kindWord, p.sourceLine));
+        if (clamped)
+          line(fmt::format(
+              "      type: fixed             # {} (deck line {}): fixed rod, the line clamped to its axis",
+              p.kindWord, p.sourceLine));
+        else
+          line(fmt::format("      type: {}          # {} {} (deck line {})", onSeabed ? "anchored" : "pinned",
+                           rodEnd ? "" : fmt::format("point {}", p.id), p.kindWord, p.sourceLine));
         line(fmt::format("      position: {}", vec(p.position)));
-        break;
+        return clamped;
       }
       case MoorDynPointKind::Coupled:
         line(fmt::format("    {}:", key));
@@ -794,16 +983,20 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
         break;
       case MoorDynPointKind::Free:
         if (isHub(pointId)) {
-          line(fmt::format(
-              "    {}: {{type: point, point: point{}}}   # point {} free (deck line {}), joining {} "
-              "lines",
-              key, p.id, p.id, p.sourceLine, atPoint[static_cast<std::size_t>(pointId - 1)].size()));
+          if (carrier(pointId) != 0)
+            line(fmt::format("    {}: {{type: point, point: {}}}   # {} (deck line {})", key,
+                             pointName(pointId), p.kindWord, p.sourceLine));
+          else
+            line(fmt::format(
+                "    {}: {{type: point, point: {}}}   # point {} free (deck line {}), joining {} lines", key,
+                pointName(pointId), p.id, p.sourceLine,
+                atPoint[static_cast<std::size_t>(pointId - 1)].size()));
           // The first line end at the point carries it (the Model's rule): its end node is the point.
           if (m.junctionLine.empty()) {
             m.junctionLine = lineName;
             m.junctionNode = end == 0 ? 0 : -2;  // -2: the last node, set when the line's segments are known
           }
-          break;
+          return false;
         }
         line(fmt::format("    {}:", key));
         line(fmt::format(
@@ -813,6 +1006,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
         line(fmt::format("      position: {}", vec(p.position)));
         break;
     }
+    return false;
   };
   const auto attachment = [&](const MoorDynPoint& p, double arcLength) {
     if (p.mass == 0.0 && p.volume == 0.0 && p.dragArea == 0.0) return;
@@ -828,9 +1022,15 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
   bool anyHub = false;
   for (const MoorDynPoint& p : deck.points) {
     if (!isHub(p.id)) continue;
-    if (!anyHub) line("points:                          # free points joining three or more lines");
+    if (!anyHub)
+      line("points:                          # free points joining three or more lines, moving rods' ends");
     anyHub = true;
-    line(fmt::format("  - name: point{}                # point {} (deck line {})", p.id, p.id, p.sourceLine));
+    if (carrier(p.id) != 0)
+      line(fmt::format("  - name: {}                # {} (deck line {}), where its lines join it",
+                       pointName(p.id), p.kindWord, p.sourceLine));
+    else
+      line(fmt::format("  - name: {}                # point {} (deck line {})", pointName(p.id), p.id,
+                       p.sourceLine));
     line(fmt::format("    position: {}", vec(p.position)));
     if (p.mass != 0.0) line(fmt::format("    mass: {}", num(p.mass)));
     if (p.volume != 0.0) {
@@ -842,7 +1042,79 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
   }
   if (anyHub) line("");
 
+  out.rods.resize(deck.rods.size());
+  for (const MoorDynRod& rod : deck.rods) {
+    MoorDynRodMap& m = out.rods[static_cast<std::size_t>(rod.id - 1)];
+    m.deckId = rod.id;
+    m.kind = rod.kind;
+    if (rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)]) {
+      m.tangleLine = fmt::format("rod{}", rod.id);
+      m.segments = rod.segments;
+    }
+  }
+  bool anyMovingRod = false;
+  for (const bool moving : rodEnds.movingRod) anyMovingRod = anyMovingRod || moving;
+  if (chains.empty() && !anyMovingRod)
+    throw InputError(deck.file, deck.rods.empty() ? 0 : deck.rods.front().sourceLine, "RODS",
+                     "nothing to model: the deck has no line and no rod that moves (fixed and coupled rods "
+                     "hold lines; tangle models lines)");
   line("lines:");
+  // Moving rods first: a rod's end node carries the tangle point where its lines join it (the Model's rule:
+  // the first line end at a point in input order).
+  const auto bendingOf = [&](const std::string& typeName) {
+    for (const MoorDynLineType& t : deck.lineTypes)
+      if (t.name == typeName) return t.bendingStiffness;
+    return 0.0;
+  };
+  for (const MoorDynRod& rod : deck.rods) {
+    if (!rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)]) continue;
+    const MoorDynRodType& t = *std::find_if(deck.rodTypes.begin(), deck.rodTypes.end(),
+                                            [&](const MoorDynRodType& rt) { return rt.name == rod.rodType; });
+    const std::string name = fmt::format("rod{}", rod.id);
+    const std::array<int, 2>& ends = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)];
+    line(fmt::format("  - name: {}                  # rod {} (deck line {}): {}, a stiff beam", name, rod.id,
+                     rod.sourceLine, rod.kindWord));
+    for (int end = 0; end < 2; ++end) {
+      const char* key = end == 0 ? "end_a" : "end_b";
+      const Vec3& at = end == 0 ? rod.endA : rod.endB;
+      const int pointId = ends[static_cast<std::size_t>(end)];
+      const bool pinned =
+          end == 0 && (rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned);
+      if (pinned) {
+        line(fmt::format("    {}: {{type: pinned, position: {}}}   # {}: end A held, free to rotate", key,
+                         vec(at), rod.kindWord));
+      } else if (pointId != 0) {
+        line(fmt::format("    {}: {{type: point, point: {}}}   # where its lines join it", key,
+                         pointName(pointId)));
+        MoorDynPointMap& m = out.points[static_cast<std::size_t>(pointId - 1)];
+        m.ends.push_back({name, end});
+        m.junctionLine = name;
+        m.junctionNode = end == 0 ? 0 : rod.segments;
+      } else {
+        line(fmt::format("    {}: {{type: free, position: {}}}", key, vec(at)));
+      }
+    }
+    line("    sections:");
+    line(fmt::format("      - {{type: {}, length: {}, elements: {}}}   # the rod's length and NumSegs",
+                     yamlQuoted("rod-" + t.name), num(rod.length()), rod.segments));
+    // MoorDyn's end effects (Rod.cpp): axial drag CdEnd on pi/4 d^2 and added mass CaEnd rho 2/3 pi (d/2)^3
+    // at each end; tangle's attachments act in every direction (MoorDyn's along the axis only).
+    const double endDrag = t.dragEnd * circleArea(t.diameter);
+    const double endAdded =
+        t.addedMassEnd * opt.density * 2.0 / 3.0 * std::numbers::pi * std::pow(t.diameter / 2.0, 3);
+    if (endDrag > 0.0 || endAdded > 0.0) {
+      line(
+          "    attachments:                # end effects: CdEnd pi/4 d^2, CaEnd rho 2/3 pi (d/2)^3 at each "
+          "end");
+      for (const double arc : {0.0, rod.length()})
+        line(fmt::format("      - {{arc_length: {}, drag_area: {}, added_mass: {}}}", num(arc), num(endDrag),
+                         num(endAdded)));
+      notes.push_back(
+          fmt::format("{}:{}: rod {}'s end drag and added mass (CdEnd, CaEnd) act in every direction in "
+                      "tangle, along the rod's axis in MoorDyn",
+                      deck.file, rod.sourceLine, rod.id));
+    }
+  }
   for (std::size_t chainIndex = 0; chainIndex < chains.size(); ++chainIndex) {
     const std::vector<ChainEntry>& chain = chains[chainIndex];
     std::string name;
@@ -859,8 +1131,10 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
                              deck.lines[static_cast<std::size_t>(c.line)].sourceLine);
     line(fmt::format("  - name: {}                  # deck line{} {}{}", name, chain.size() > 1 ? "s" : "",
                      sources, chain.size() > 1 ? " (joined in series at free points)" : ""));
-    endBlock("end_a", startPoint, name, 0);
-    endBlock("end_b", endPoint, name, 1);
+    const MoorDynLine& headLine = deck.lines[static_cast<std::size_t>(head.line)];
+    const MoorDynLine& tailLine = deck.lines[static_cast<std::size_t>(tail.line)];
+    const bool clampA = endBlock("end_a", startPoint, name, 0, bendingOf(headLine.lineType));
+    const bool clampB = endBlock("end_b", endPoint, name, 1, bendingOf(tailLine.lineType));
     if (const auto f = failureOfChain.find(chainIndex); f != failureOfChain.end()) line(f->second);
     line("    sections:");
     int node = 0;
@@ -907,15 +1181,51 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
       for (const auto& [p, s] : junctions) attachment(deck.points[static_cast<std::size_t>(p - 1)], s);
       if (endMass) attachment(last, arc);
     }
-    if (!junctions.empty()) {
+    if (!junctions.empty() || clampA || clampB) {
       line("    start_shape:                # the free points' positions in the deck, as the starting shape");
+      // A line clamped to a fixed rod leaves along the rod's axis: its first element starts along it.
+      if (clampA) {
+        const double h = headLine.length / headLine.segments;
+        line(fmt::format("      - {{position: {}, arc_length: {}}}   # one element along the rod's axis",
+                         vec(deck.points[static_cast<std::size_t>(startPoint - 1)].position +
+                             h * rodEnds.clampAxis[static_cast<std::size_t>(startPoint - 1)]),
+                         num(h)));
+      }
       for (const auto& [p, s] : junctions)
         line(fmt::format("      - {{position: {}, arc_length: {}}}   # point {} (deck line {})",
                          vec(deck.points[static_cast<std::size_t>(p - 1)].position), num(s), p,
                          pointLine(p)));
+      if (clampB) {
+        const double h = tailLine.length / tailLine.segments;
+        line(fmt::format("      - {{position: {}, arc_length: {}}}   # one element along the rod's axis",
+                         vec(deck.points[static_cast<std::size_t>(endPoint - 1)].position +
+                             h * rodEnds.clampAxis[static_cast<std::size_t>(endPoint - 1)]),
+                         num(arc - h)));
+      }
     }
   }
   line("");
+
+  // A free rod that no line holds has no static equilibrium (it sinks or rises, and drifts): start from the
+  // deck's positions at rest, as MoorDyn does without its initial-condition solve (TmaxIC = 0).
+  std::string unheld;
+  for (const MoorDynRod& rod : deck.rods) {
+    const std::array<int, 2>& ends = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)];
+    if (rod.kind == MoorDynRodKind::Free && ends[0] == 0 && ends[1] == 0)
+      unheld += fmt::format("{}{}", unheld.empty() ? "" : ", ", rod.id);
+  }
+  if (!unheld.empty()) {
+    line("statics:");
+    line(fmt::format(
+        "  method: none                  # free rod {} held by no line: no static equilibrium; the "
+        "dynamics starts from the deck's positions at rest",
+        unheld));
+    line("");
+    notes.push_back(
+        fmt::format("free rod {} is held by no line: no static solve (statics.method: none); the "
+                    "run starts from the deck's positions at rest",
+                    unheld));
+  }
 
   // Dynamics: MoorDyn has no duration of its own (the host decides): a standalone run is the statics, the
   // initial conditions. The step is tangle's own (implicit), never below 0.01 s for dtM's explicit limit.
@@ -949,6 +1259,14 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& deck) {
     y += "\n# Differences from MoorDyn for this deck:\n";
     for (const std::string& n : notes) y += "#  - " + n + "\n";
   }
+  // The maps keep the deck's own points (a rod's ends are in `rods`).
+  for (const MoorDynRod& rod : deck.rods) {
+    MoorDynRodMap& m = out.rods[static_cast<std::size_t>(rod.id - 1)];
+    const int pointId = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)][0];
+    if (rod.length() == 0.0 && pointId != 0) m.point = out.points[static_cast<std::size_t>(pointId - 1)];
+    m.point.position = rod.endA;
+  }
+  out.points.resize(rodEnds.deckPoints);
   out.yaml = std::move(y);
   return out;
 }

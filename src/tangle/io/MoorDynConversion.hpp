@@ -39,11 +39,24 @@ struct MoorDynPointMap {
   std::vector<std::pair<int, int>> attachedLines;  ///< (deck line id, 0 = end A / 1 = end B) attached here
 };
 
+/// Where a deck's rod went in the tangle model: a pinned or free rod of length > 0 is a stiff beam line
+/// (`rod<id>`, its nodes the rod's); a fixed or coupled rod, or a zero-length rod, is its ends' points.
+struct MoorDynRodMap {
+  int deckId = 0;
+  MoorDynRodKind kind = MoorDynRodKind::Fixed;
+  std::string tangleLine;  ///< name of the tangle line, empty when the rod is not one
+  int segments = 0;        ///< its elements (NumSegs)
+  /// A zero-length rod: the point it is (its lines' ends there, or the node inside the tangle line that joins
+  /// two of them), as a deck point's map; its position the rod's.
+  MoorDynPointMap point;
+};
+
 /// A deck converted into a tangle model.
 struct MoorDynConversion {
   std::string yaml;  ///< the tangle model file, with comments saying where each value came from
   std::vector<MoorDynLineMap> lines;    ///< in deck order
   std::vector<MoorDynPointMap> points;  ///< in deck order
+  std::vector<MoorDynRodMap> rods;      ///< in deck order
   std::vector<std::string> notes;       ///< what differs from MoorDyn (also in the YAML's comments)
 };
 

@@ -37,7 +37,18 @@ bool isBlank(const std::string& line) {
 }
 
 /// The sections of a MoorDyn v2 deck (MoorDyn2.cpp, ReadInFile): the names a "---" line may hold.
-enum class Section { None, LineTypes, Points, Lines, Failures, Options, Outputs, Unsupported };
+enum class Section {
+  None,
+  LineTypes,
+  RodTypes,
+  Rods,
+  Points,
+  Lines,
+  Failures,
+  Options,
+  Outputs,
+  Unsupported
+};
 
 struct SectionName {
   const char* name;
@@ -52,11 +63,11 @@ const SectionName kSections[] = {
     {"LINE PROPERTIES", Section::Lines, ""},
     {"LINE LIST", Section::Lines, ""},
     {"LINES", Section::Lines, ""},
-    {"ROD DICTIONARY", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
-    {"ROD TYPES", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
-    {"ROD PROPERTIES", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
-    {"ROD LIST", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
-    {"RODS", Section::Unsupported, "rods (rigid cylinders) are not supported by tangle"},
+    {"ROD DICTIONARY", Section::RodTypes, ""},
+    {"ROD TYPES", Section::RodTypes, ""},
+    {"ROD PROPERTIES", Section::Rods, ""},
+    {"ROD LIST", Section::Rods, ""},
+    {"RODS", Section::Rods, ""},
     {"BODY PROPERTIES", Section::Unsupported,
      "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
      "bodies and add a `vessels` block)"},
@@ -115,6 +126,15 @@ class DeckParser {
             deck.lineTypes.push_back(lineType(n, w));
           });
           break;
+        case Section::RodTypes:
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            deck.rodTypes.push_back(rodType(n, w));
+          });
+          break;
+        case Section::Rods:
+          i = readTable(
+              i + 3, [&](int n, const std::vector<std::string>& w) { deck.rods.push_back(rod(n, w, deck)); });
+          break;
         case Section::Points:
           i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
             deck.points.push_back(point(n, w, deck));
@@ -148,16 +168,34 @@ class DeckParser {
           break;
       }
     }
-    if (!sawLineTypes)
+    if (!sawLineTypes && deck.rods.empty())
       fail(0, "LINE TYPES", "the deck has no LINE TYPES section (is it a MoorDyn v2 input file?)");
-    if (deck.lines.empty()) fail(0, "LINES", "the deck has no line (a LINES section with at least one row)");
+    if (deck.lines.empty() && deck.rods.empty())
+      fail(0, "LINES", "the deck has no line and no rod (a LINES or RODS section with at least one row)");
+    for (const MoorDynRod& r : deck.rods) {
+      const bool known = std::any_of(deck.rodTypes.begin(), deck.rodTypes.end(),
+                                     [&](const MoorDynRodType& t) { return t.name == r.rodType; });
+      if (!known)
+        fail(r.sourceLine, fmt::format("rod {} RodType", r.id),
+             fmt::format("no rod type named '{}'", r.rodType));
+    }
     // Lines may be listed before the points they name only if MoorDyn would read them: MoorDyn reads the
     // sections in its own order (types, points, lines), so check the references once everything is read.
     for (const MoorDynLine& l : deck.lines) {
-      for (const int p : {l.pointA, l.pointB})
+      for (const auto& [p, r] : {std::pair{l.pointA, l.rodA}, std::pair{l.pointB, l.rodB}}) {
+        if (r != 0) {
+          if (r < 1 || r > static_cast<int>(deck.rods.size()))
+            fail(l.sourceLine, fmt::format("line {} AttachA/AttachB", l.id),
+                 fmt::format("rod {} does not exist (the deck has {} rods)", r, deck.rods.size()));
+          continue;
+        }
         if (p < 1 || p > static_cast<int>(deck.points.size()))
           fail(l.sourceLine, fmt::format("line {} AttachA/AttachB", l.id),
                fmt::format("point {} does not exist (the deck has {} points)", p, deck.points.size()));
+      }
+      if (l.rodA != 0 && l.rodA == l.rodB && l.rodEndA == l.rodEndB)
+        fail(l.sourceLine, fmt::format("line {} AttachB", l.id),
+             "both ends of the line are on the same rod end");
       const bool known = std::any_of(deck.lineTypes.begin(), deck.lineTypes.end(),
                                      [&](const MoorDynLineType& t) { return t.name == l.lineType; });
       if (!known)
@@ -352,6 +390,88 @@ class DeckParser {
     return t;
   }
 
+  /// One ROD TYPES row: TypeName Diam Mass/m Cd Ca CdEnd CaEnd (MoorDyn2.cpp, readRodProps).
+  MoorDynRodType rodType(int n, const std::vector<std::string>& w) const {
+    if (w.size() < 7)
+      fail(n, "ROD TYPES",
+           fmt::format("expected 7 columns (TypeName Diam Mass/m Cd Ca CdEnd CaEnd), got {}", w.size()));
+    MoorDynRodType t;
+    t.name = w[0];
+    t.sourceLine = n;
+    const auto key = [&](const char* column) { return fmt::format("rod type {} {}", t.name, column); };
+    t.diameter = number(n, key("Diam"), w[1]);
+    t.massPerLength = number(n, key("Mass/m"), w[2]);
+    t.drag = number(n, key("Cd"), w[3]);
+    t.addedMass = number(n, key("Ca"), w[4]);
+    t.dragEnd = number(n, key("CdEnd"), w[5]);
+    t.addedMassEnd = number(n, key("CaEnd"), w[6]);
+    if (!(t.diameter > 0.0)) fail(n, key("Diam"), "expected a diameter > 0");
+    if (!(t.massPerLength > 0.0)) fail(n, key("Mass/m"), "expected a mass per length > 0");
+    for (const auto& [value, column] : {std::pair{t.drag, "Cd"}, std::pair{t.addedMass, "Ca"},
+                                        std::pair{t.dragEnd, "CdEnd"}, std::pair{t.addedMassEnd, "CaEnd"}})
+      if (value < 0.0) fail(n, key(column), "expected a coefficient >= 0");
+    return t;
+  }
+
+  /// One RODS row: ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs (MoorDyn2.cpp, readRod).
+  MoorDynRod rod(int n, const std::vector<std::string>& w, const MoorDynDeck& deck) const {
+    if (w.size() < 11)
+      fail(n, "RODS",
+           fmt::format(
+               "expected 11 columns (ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs), got {}",
+               w.size()));
+    MoorDynRod r;
+    r.sourceLine = n;
+    r.id = integer(n, "RODS ID", w[0]);
+    if (r.id != static_cast<int>(deck.rods.size()) + 1)
+      fail(n, "RODS ID",
+           fmt::format("rod IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
+                       deck.rods.size() + 1, r.id));
+    const auto key = [&](const char* column) { return fmt::format("rod {} {}", r.id, column); };
+    r.rodType = w[1];
+    r.kindWord = w[2];
+    std::string letters;
+    for (const char c : upper(w[2]))
+      if (std::isalpha(static_cast<unsigned char>(c)))
+        letters += c;
+      else
+        break;
+    if (letters == "ANCHOR" || letters == "FIXED" || letters == "FIX") {
+      r.kind = MoorDynRodKind::Fixed;
+    } else if (letters == "PINNED" || letters == "PIN") {
+      r.kind = MoorDynRodKind::Pinned;
+    } else if (letters == "POINT" || letters == "CON" || letters == "FREE") {
+      r.kind = MoorDynRodKind::Free;
+    } else if (letters == "VESSEL" || letters == "VES" || letters == "COUPLED" || letters == "CPLD") {
+      r.kind = MoorDynRodKind::Coupled;
+    } else if (letters == "VESSELPINNED" || letters == "VESPIN" || letters == "CPLDPIN" ||
+               letters == "COUPLEDPINNED") {
+      r.kind = MoorDynRodKind::CoupledPinned;
+    } else if (letters == "BODY" || letters == "TURBINE") {
+      fail(n, key("Attachment"),
+           fmt::format("'{}': rods on MoorDyn bodies are not supported (tangle's rigid bodies are vessels)",
+                       w[2]));
+    } else {
+      fail(n, key("Attachment"),
+           fmt::format("unknown rod type '{}' (expected Fixed/Anchor, Pinned, Free, Coupled/Vessel or "
+                       "CoupledPinned/VesselPinned)",
+                       w[2]));
+    }
+    const char* const names[] = {"Xa", "Ya", "Za", "Xb", "Yb", "Zb"};
+    for (int k = 0; k < 3; ++k) {
+      r.endA[k] = number(n, key(names[k]), w[3 + static_cast<std::size_t>(k)]);
+      r.endB[k] = number(n, key(names[3 + k]), w[6 + static_cast<std::size_t>(k)]);
+    }
+    r.segments = integer(n, key("NumSegs"), w[9]);
+    r.outputs = w[10];
+    if (r.segments < 0) fail(n, key("NumSegs"), "expected NumSegs >= 0 (0 for a zero-length rod)");
+    const double length = r.length();
+    if (length > 0.0 && r.segments < 1)
+      fail(n, key("NumSegs"),
+           "expected at least 1 segment for a rod of length > 0 (0 only when its ends coincide)");
+    return r;
+  }
+
   MoorDynPoint point(int n, const std::vector<std::string>& w, const MoorDynDeck& deck) const {
     if (w.size() < 9)
       fail(n, "POINTS",
@@ -415,18 +535,37 @@ class DeckParser {
     return p;
   }
 
-  int attachment(int n, const std::string& key, const std::string& word) const {
+  /// A line end's attachment: a point number (`3`, `P3`, `C3`), or a rod's end (`R2A`, `ROD2B`: rod, end).
+  struct Attachment {
+    int point = 0;
+    int rod = 0;
+    int rodEnd = 0;
+  };
+
+  Attachment attachment(int n, const std::string& key, const std::string& word) const {
     const std::string u = upper(word);
     std::size_t i = 0;
     while (i < u.size() && std::isalpha(static_cast<unsigned char>(u[i]))) ++i;
     const std::string letters = u.substr(0, i);
-    if (letters == "R" || letters == "ROD")
-      fail(n, key, fmt::format("'{}': lines attached to rods are not supported by tangle", word));
+    if (letters == "R" || letters == "ROD") {
+      // MoorDyn2.cpp (decomposeString): letters, the rod's number, then A or B.
+      std::size_t j = i;
+      while (j < u.size() && std::isdigit(static_cast<unsigned char>(u[j]))) ++j;
+      const std::string end = u.substr(j);
+      if (j == i || (end != "A" && end != "B"))
+        fail(n, key, fmt::format("'{}': expected a rod's end as R<number>A or R<number>B (e.g. R1A)", word));
+      Attachment a;
+      a.rod = integer(n, key, u.substr(i, j - i));
+      a.rodEnd = end == "A" ? 0 : 1;
+      return a;
+    }
     if (letters == "B" || letters == "BODY")
       fail(n, key, fmt::format("'{}': lines attached to bodies are not supported by tangle", word));
     if (!(letters.empty() || letters == "C" || letters == "CON" || letters == "P" || letters == "POINT"))
-      fail(n, key, fmt::format("'{}': expected a point number (e.g. 3 or P3)", word));
-    return integer(n, key, word.substr(i));
+      fail(n, key, fmt::format("'{}': expected a point number (e.g. 3 or P3) or a rod end (e.g. R1A)", word));
+    Attachment a;
+    a.point = integer(n, key, word.substr(i));
+    return a;
   }
 
   MoorDynLine line(int n, const std::vector<std::string>& w, const MoorDynDeck& deck) const {
@@ -444,14 +583,21 @@ class DeckParser {
                        deck.lines.size() + 1, l.id));
     const auto key = [&](const char* column) { return fmt::format("line {} {}", l.id, column); };
     l.lineType = w[1];
-    l.pointA = attachment(n, key("AttachA"), w[2]);
-    l.pointB = attachment(n, key("AttachB"), w[3]);
+    const Attachment a = attachment(n, key("AttachA"), w[2]);
+    const Attachment b = attachment(n, key("AttachB"), w[3]);
+    l.pointA = a.point;
+    l.rodA = a.rod;
+    l.rodEndA = a.rodEnd;
+    l.pointB = b.point;
+    l.rodB = b.rod;
+    l.rodEndB = b.rodEnd;
     l.length = number(n, key("UnstrLen"), w[4]);
     l.segments = integer(n, key("NumSegs"), w[5]);
     l.outputs = w[6];
     if (!(l.length > 0.0)) fail(n, key("UnstrLen"), "expected an unstretched length > 0");
     if (l.segments < 1) fail(n, key("NumSegs"), "expected at least 1 segment");
-    if (l.pointA == l.pointB) fail(n, key("AttachB"), "both ends of the line are on the same point");
+    if (l.rodA == 0 && l.rodB == 0 && l.pointA == l.pointB)
+      fail(n, key("AttachB"), "both ends of the line are on the same point");
     return l;
   }
 

@@ -4,11 +4,11 @@
 ///
 /// The deck is read section by section as MoorDyn v2 reads it (MoorDyn2.cpp: a section starts at a line
 /// holding "---" and the section's name; tables skip a column-name and a unit line; a section ends at the
-/// next "---" line): LINE TYPES / LINE DICTIONARY, POINTS / POINT LIST / POINT PROPERTIES / CONNECTION
-/// PROPERTIES / NODE PROPERTIES, LINES / LINE LIST / LINE PROPERTIES, OPTIONS, OUTPUTS. Every entry tangle
-/// cannot represent (rods, bodies, failures, VIV, nonlinear or viscoelastic stiffness tables, wave
-/// kinematics from files, ...) is refused with the file, the line and the entry's name: nothing is skipped
-/// silently. The mapping is documented in docs/moordyn.md.
+/// next "---" line): LINE TYPES / LINE DICTIONARY, ROD TYPES, RODS, POINTS / POINT LIST / POINT PROPERTIES /
+/// CONNECTION PROPERTIES / NODE PROPERTIES, LINES / LINE LIST / LINE PROPERTIES, OPTIONS, OUTPUTS. Every
+/// entry tangle cannot represent (bodies, failures at rods, VIV, nonlinear or viscoelastic stiffness tables,
+/// wave kinematics from files, ...) is refused with the file, the line and the entry's name: nothing is
+/// skipped silently. The mapping is documented in docs/moordyn.md.
 ///
 /// Units as in MoorDyn: SI (m, kg, N, s).
 
@@ -62,12 +62,51 @@ struct MoorDynPoint {
   int sourceLine = 0;
 };
 
+/// One ROD TYPES row (MoorDyn's rod: a rigid cylinder with Morison loads and end effects).
+struct MoorDynRodType {
+  std::string name;
+  double diameter = 0.0;       ///< d [m]
+  double massPerLength = 0.0;  ///< [kg/m]
+  double drag = 0.0;           ///< Cd [-], transverse, on d
+  double addedMass = 0.0;      ///< Ca [-], transverse, on pi/4 d^2
+  double dragEnd = 0.0;        ///< CdEnd [-], axial, on each end's area pi/4 d^2
+  double addedMassEnd = 0.0;   ///< CaEnd [-], axial, on each end's half sphere 2/3 pi (d/2)^3
+  int sourceLine = 0;
+};
+
+/// How a MoorDyn rod is held (MoorDyn2.cpp, the RODS list).
+enum class MoorDynRodKind {
+  Fixed,          ///< Fixed / Anchor: does not move
+  Pinned,         ///< Pinned: end A held, free to rotate about it
+  Free,           ///< Free: 6 degrees of freedom (its roll is not modelled)
+  Coupled,        ///< Coupled / Vessel: moved by the host (held where the deck puts it standalone)
+  CoupledPinned,  ///< CoupledPinned / VesselPinned: end A moved by the host, free to rotate about it
+};
+
+/// One RODS row.
+struct MoorDynRod {
+  int id = 0;
+  std::string rodType;
+  MoorDynRodKind kind = MoorDynRodKind::Fixed;
+  std::string kindWord;      ///< the attachment word as written (e.g. "Pinned")
+  Vec3 endA = Vec3::Zero();  ///< [m]
+  Vec3 endB = Vec3::Zero();  ///< [m]
+  int segments = 0;          ///< NumSegs (0 for a zero-length rod)
+  std::string outputs;       ///< RodOutputs as written
+  int sourceLine = 0;
+  double length() const { return (endB - endA).norm(); }
+};
+
 /// One LINES row.
 struct MoorDynLine {
   int id = 0;
   std::string lineType;
-  int pointA = 0;       ///< id of the point at end A
-  int pointB = 0;       ///< id of the point at end B
+  int pointA = 0;       ///< id of the point at end A (0 when end A is on a rod)
+  int pointB = 0;       ///< id of the point at end B (0 when end B is on a rod)
+  int rodA = 0;         ///< id of the rod end A is attached to (`R3A`, `R3B`), 0 for a point
+  int rodB = 0;         ///< id of the rod end B is attached to, 0 for a point
+  int rodEndA = 0;      ///< which end of rod rodA: 0 = its end A, 1 = its end B
+  int rodEndB = 0;      ///< which end of rod rodB
   double length = 0.0;  ///< unstretched length [m]
   int segments = 1;
   std::string outputs;  ///< the LineOutputs flags as written ("-" for none)
@@ -97,6 +136,8 @@ struct MoorDynDeck {
   std::string file;   ///< path (used in messages)
   std::string title;  ///< the first line after the file's first line of dashes, if any
   std::vector<MoorDynLineType> lineTypes;
+  std::vector<MoorDynRodType> rodTypes;
+  std::vector<MoorDynRod> rods;      ///< ids 1..n in order
   std::vector<MoorDynPoint> points;  ///< ids 1..n in order
   std::vector<MoorDynLine> lines;    ///< ids 1..n in order
   std::vector<MoorDynFailure> failures;

@@ -226,15 +226,136 @@ TEST(MoorDynDeck, ASeafloorFileBecomesTheBathymetry) {
   EXPECT_DOUBLE_EQ(spec.environment.waterDepth, 500.0);  // WtrDpth: the waves' depth
 }
 
-TEST(MoorDynDeck, RefusesRods) {
-  const std::string text = deck(kTwoPoints, "1 chain 1 2 320 40 -\n") +
-                           "---------------------- RODS ----------------------\nID RodType Attachment\n";
-  expectRefused(text, 25, "rods");
+/// ROD TYPES and RODS sections (after the line types) with these rods.
+std::string rods(const std::string& rows) {
+  return "---------------------- ROD TYPES ------------------------------------\n"
+         "TypeName  Diam  Mass/m  Cd   Ca   CdEnd  CaEnd\n"
+         "(name)    (m)   (kg/m)  (-)  (-)  (-)    (-)\n"
+         "pipe      0.25  80      1.6  1.0  1.2    0.8\n"
+         "---------------------- RODS ----------------------------------------\n"
+         "ID  RodType  Attachment  Xa  Ya  Za  Xb  Yb  Zb  NumSegs  RodOutputs\n"
+         "(#) (name)   (#/key)     (m) (m) (m) (m) (m) (m) (-)      (-)\n" +
+         rows;
 }
 
-TEST(MoorDynDeck, ADeckOfRodsOnlyIsADeckAndItsRodsAreRefused) {
+TEST(MoorDynDeck, ReadsRodTypesAndRods) {
+  const MoorDynDeck d = parseMoorDynDeck(
+      deck(kTwoPoints, "1 chain 1 R1A 300 30 -\n2 rope R1B 2 100 10 -\n", "",
+           rods("1 pipe Free -10 0 -80 10 0 -80 4 p\n2 pipe Pinned 0 0 -50 0 0 -40 2 -\n"
+                "3 pipe Fixed 5 5 -90 5 5 -80 1 -\n4 pipe Vessel 0 0 -5 0 0 -15 2 -\n"
+                "5 pipe CoupledPinned 0 0 -5 0 0 -15 2 -\n6 pipe Free 3 0 -60 3 0 -60 0 -\n")),
+      "deck.txt");
+  ASSERT_EQ(d.rodTypes.size(), 1u);
+  const MoorDynRodType& t = d.rodTypes[0];
+  EXPECT_EQ(t.name, "pipe");
+  EXPECT_DOUBLE_EQ(t.diameter, 0.25);
+  EXPECT_DOUBLE_EQ(t.massPerLength, 80.0);
+  EXPECT_DOUBLE_EQ(t.drag, 1.6);
+  EXPECT_DOUBLE_EQ(t.addedMass, 1.0);
+  EXPECT_DOUBLE_EQ(t.dragEnd, 1.2);
+  EXPECT_DOUBLE_EQ(t.addedMassEnd, 0.8);
+  ASSERT_EQ(d.rods.size(), 6u);
+  EXPECT_EQ(d.rods[0].kind, MoorDynRodKind::Free);
+  EXPECT_EQ(d.rods[0].endA, Vec3(-10.0, 0.0, -80.0));
+  EXPECT_EQ(d.rods[0].endB, Vec3(10.0, 0.0, -80.0));
+  EXPECT_EQ(d.rods[0].segments, 4);
+  EXPECT_EQ(d.rods[0].outputs, "p");
+  EXPECT_EQ(d.rods[1].kind, MoorDynRodKind::Pinned);
+  EXPECT_EQ(d.rods[2].kind, MoorDynRodKind::Fixed);
+  EXPECT_EQ(d.rods[3].kind, MoorDynRodKind::Coupled);
+  EXPECT_EQ(d.rods[4].kind, MoorDynRodKind::CoupledPinned);
+  EXPECT_DOUBLE_EQ(d.rods[5].length(), 0.0);
+  EXPECT_EQ(d.lines[0].rodB, 1);
+  EXPECT_EQ(d.lines[0].rodEndB, 0);
+  EXPECT_EQ(d.lines[1].rodA, 1);
+  EXPECT_EQ(d.lines[1].rodEndA, 1);
+}
+
+TEST(MoorDynDeck, AFreeRodIsAStiffBeamWhoseEndsArePoints) {
+  // A 20 m free rod hung from two lines at its ends (MoorDyn's RodHanging.txt, smaller).
+  const MoorDynConversion c =
+      convertMoorDynDeck(parseMoorDynDeck(deck(kTwoPoints, "1 chain 1 R1A 300 30 -\n2 rope R1B 2 100 10 -\n",
+                                               "", rods("1 pipe Free -10 0 -80 10 0 -80 4 -\n")),
+                                          "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  ASSERT_EQ(spec.lines.size(), 3u);
+  const model::LineSpec& rod = spec.lines[0];  // first: its end nodes carry the points
+  EXPECT_EQ(rod.name, "rod1");
+  EXPECT_EQ(rod.endA.kind, model::EndKind::Point);
+  EXPECT_EQ(rod.endA.point, "rod1a");
+  EXPECT_EQ(rod.endB.point, "rod1b");
+  ASSERT_EQ(rod.sections.size(), 1u);
+  EXPECT_DOUBLE_EQ(rod.sections[0].length, 20.0);
+  EXPECT_EQ(rod.sections[0].elements, 4);
+  // End effects at each end: CdEnd pi/4 d^2 and CaEnd rho 2/3 pi (d/2)^3 (MoorDyn's Rod.cpp).
+  ASSERT_EQ(rod.attachments.size(), 2u);
+  EXPECT_DOUBLE_EQ(rod.attachments[1].arcLength, 20.0);
+  EXPECT_NEAR(rod.attachments[0].dragArea, 1.2 * std::numbers::pi / 4.0 * 0.0625, 1e-12);
+  EXPECT_NEAR(rod.attachments[0].addedMass,
+              0.8 * 1025.0 * 2.0 / 3.0 * std::numbers::pi * 0.125 * 0.125 * 0.125, 1e-9);
+  ASSERT_EQ(spec.points.size(), 2u);
+  EXPECT_EQ(spec.points[0].position, Vec3(-10.0, 0.0, -80.0));
+  EXPECT_EQ(spec.lines[1].endB.point, "rod1a");
+  EXPECT_EQ(spec.lines[2].endA.point, "rod1b");
+  // The rod's line type: its own diameter, mass and coefficients, no axial drag; stiff.
+  const auto type = spec.lineTypes.find("rod-pipe");
+  ASSERT_NE(type, spec.lineTypes.end());
+  EXPECT_DOUBLE_EQ(type->second.outerDiameter, 0.25);
+  EXPECT_DOUBLE_EQ(type->second.massPerLength, 80.0);
+  EXPECT_DOUBLE_EQ(type->second.dragNormal, 1.6);
+  EXPECT_DOUBLE_EQ(type->second.dragAxial, 0.0);
+  EXPECT_GE(type->second.axialStiffness, 1e3 * 1.0e9);  // 1000 x the stiffest line's EA
+  EXPECT_GT(type->second.bendingStiffness, 0.0);
+  // The maps: the deck's two points only; the rod is line rod1.
+  EXPECT_EQ(c.points.size(), 2u);
+  ASSERT_EQ(c.rods.size(), 1u);
+  EXPECT_EQ(c.rods[0].tangleLine, "rod1");
+}
+
+TEST(MoorDynDeck, FixedPinnedAndZeroLengthRodsHoldTheirLines) {
+  // Rod 1 fixed: the rope (EI 10) clamps to its axis at end B, the chain (EI 0) pins at end A. Rod 2 pinned:
+  // a line at end A is pinned there, the rod is a beam from a pinned end. Rod 3 zero-length and free, joining
+  // two lines: one tangle line through it, with both ends' drag.
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
+      deck(kTwoPoints + "3 Free -50 0 -70 0 0 0 0\n",
+           "1 chain 1 R1A 200 20 -\n2 rope R1B 3 50 10 -\n3 chain R2A 2 80 8 -\n4 chain R3A 2 70 7 -\n"
+           "5 chain R3B 1 330 33 -\n",
+           "",
+           rods("1 pipe Fixed -100 0 -90 -90 0 -90 1 -\n2 pipe Pinned 20 0 -80 20 0 -70 2 -\n"
+                "3 pipe Free 0 -30 -60 0 -30 -60 0 -\n")),
+      "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  const auto named = [&](const std::string& name) {
+    const auto it =
+        std::find_if(spec.lines.begin(), spec.lines.end(), [&](const auto& l) { return l.name == name; });
+    EXPECT_NE(it, spec.lines.end()) << name;
+    return *it;
+  };
+  EXPECT_EQ(spec.lines[0].name, "rod2");
+  EXPECT_EQ(spec.lines[0].endA.kind, model::EndKind::Pinned);
+  EXPECT_EQ(spec.lines[0].endB.kind, model::EndKind::Free);
+  const model::LineSpec line1 = named("line1");
+  EXPECT_EQ(line1.endB.kind, model::EndKind::Pinned);
+  EXPECT_EQ(line1.endB.position, Vec3(-100.0, 0.0, -90.0));
+  const model::LineSpec line2 = named("line2");
+  EXPECT_EQ(line2.endA.kind, model::EndKind::Fixed);
+  EXPECT_EQ(line2.endA.position, Vec3(-90.0, 0.0, -90.0));
+  ASSERT_EQ(line2.startShape.size(), 1u);  // one element (5 m) along the rod's axis, +x
+  EXPECT_EQ(line2.startShape[0].position, Vec3(-85.0, 0.0, -90.0));
+  EXPECT_DOUBLE_EQ(line2.startShape[0].arcLength, 5.0);
+  EXPECT_EQ(named("line3").endA.kind, model::EndKind::Pinned);
+  EXPECT_EQ(named("line3").endA.position, Vec3(20.0, 0.0, -80.0));
+  // Lines 4 and 5 meet at the zero-length rod: one tangle line, the rod a drag attachment inside it.
+  const model::LineSpec joined = named("line5-line4");  // from point 1 along line 5, then line 4
+  ASSERT_EQ(joined.attachments.size(), 1u);
+  EXPECT_DOUBLE_EQ(joined.attachments[0].arcLength, 330.0);
+  EXPECT_NEAR(joined.attachments[0].dragArea, 2.0 * 1.2 * std::numbers::pi / 4.0 * 0.0625, 1e-12);
+}
+
+TEST(MoorDynDeck, ADeckOfRodsOnlyIsADeck) {
   // MoorDyn's tests/Mooring/RodPinnedFloating.txt has rod types and rods and no line types: it used to be
-  // read as YAML ("invalid YAML"). A YAML comment with dashes is not a deck.
+  // read as YAML ("invalid YAML"). A YAML comment with dashes is not a deck. A free rod that no line holds
+  // has no static equilibrium: the run starts from the deck's positions (statics.method: none).
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tangle-moordyn-rods-only";
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "rods.txt")
@@ -242,28 +363,43 @@ TEST(MoorDynDeck, ADeckOfRodsOnlyIsADeckAndItsRodsAreRefused) {
          "---------------------- ROD TYPES -----------------------------\n"
          "TypeName Diam Mass/m Cd Ca CdEnd CaEnd\n(name) (m) (kg/m) (-) (-) (-) (-)\n"
          "Can 10 1000 0.6 1.0 0.6 1.0\n"
-         "---------------------- RODS ----------------------------------\n";
+         "---------------------- RODS ----------------------------------\n"
+         "ID RodType Attachment Xa Ya Za Xb Yb Zb NumSegs RodOutputs\n(#) (name) (#/key) (m) (m) (m) (m) (m) "
+         "(m) (-) (-)\n"
+         "1 Can Free 0 0 -20 0 0 -10 3 -\n"
+         "---------------------- OPTIONS -------------------------------\n50 WtrDpth -\n";
   std::ofstream(dir / "model.yaml") << "# ---------------------- RODS and LINE TYPES ----------\ntitle: x\n";
   EXPECT_TRUE(isMoorDynDeck((dir / "rods.txt").string()));
   EXPECT_FALSE(isMoorDynDeck((dir / "model.yaml").string()));
-  try {
-    readModelFile((dir / "rods.txt").string());
-    ADD_FAILURE() << "a deck of rods was accepted";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("rod"), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).find("YAML"), std::string::npos) << e.what();
-  }
+  const model::ModelSpec spec = readModelFile((dir / "rods.txt").string());
+  ASSERT_EQ(spec.lines.size(), 1u);
+  EXPECT_EQ(spec.lines[0].endA.kind, model::EndKind::Free);
+  EXPECT_EQ(spec.lines[0].endB.kind, model::EndKind::Free);
+  EXPECT_TRUE(spec.statics.skip);
   std::filesystem::remove_all(dir);
+}
+
+TEST(MoorDynDeck, RefusesRodsItCannotRepresentNamingTheEntry) {
+  const std::string types = rods("1 pipe Free -10 0 -80 10 0 -80 4 -\n");
+  expectRefused(deck(kTwoPoints, "1 chain 1 R2A 300 30 -\n", "", types), 24, "rod 2 does not exist");
+  expectRefused(deck(kTwoPoints, "1 chain 1 R1 300 30 -\n", "", types), 24, "R<number>A");
+  expectRefused(deck(kTwoPoints, "1 chain 1 R1C 300 30 -\n", "", types), 24, "R<number>A");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", rods("1 pipe Body1 0 0 0 0 0 -5 2 -\n")), 15,
+                "bodies");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", rods("1 tube Free 0 0 0 0 0 -5 2 -\n")), 15,
+                "no rod type named 'tube'");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", rods("1 pipe Free 0 0 -5 0 0 -15 0 -\n")), 15,
+                "NumSegs");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", rods("1 pipe Glued 0 0 -5 0 0 -15 2 -\n")), 15,
+                "unknown rod type 'Glued'");
+  expectRefused(deck(kTwoPoints, "1 chain R1A R1B 300 30 -\n", "", rods("1 pipe Free 0 0 -5 0 0 -5 0 -\n")),
+                24, "same rod end");
 }
 
 TEST(MoorDynDeck, RefusesBodiesAndPointsOnThem) {
   expectRefused("---- LINE TYPES ----\na\nb\nchain 0.2 200 1e9 -1 0 1 1 0 0\n---- BODIES ----\nID\n", 5,
                 "bodies are not supported");
   expectRefused(deck("1 Body1 0 0 -10 0 0 0 0\n", "1 chain 1 1 320 40 -\n"), 11, "Body1");
-}
-
-TEST(MoorDynDeck, RefusesLinesOnRods) {
-  expectRefused(deck(kTwoPoints, "1 chain R1A 2 320 40 -\n"), 16, "rods");
 }
 
 TEST(MoorDynDeck, AnEACurveFileBecomesATensionStrainCurve) {
