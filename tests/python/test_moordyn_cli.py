@@ -65,16 +65,16 @@ def test_check_reads_a_deck() -> None:
 
 
 def test_unsupported_entry_is_refused_with_file_line_and_name(tmp_path: Path) -> None:
-    deck = tmp_path / "bodies.txt"
+    deck = tmp_path / "loads.txt"
     text = (DATA / "WD0050_Chain.txt").read_text().replace(
         "---------------------- POINT PROPERTIES",
-        "---------------------- BODIES --------------------------------\nID Attachment\n(#) (-)\n"
+        "---------------------- EXTERNAL LOADS --------------------------------\nID Object\n(#) (-)\n"
         "---------------------- POINT PROPERTIES")
     deck.write_text(text)
-    line = text.splitlines().index("---------------------- BODIES --------------------------------") + 1
+    line = text.splitlines().index("---------------------- EXTERNAL LOADS --------------------------------") + 1
     result = tangle("run", deck, "-o", tmp_path / "r", "-q")
     assert result.returncode == 1
-    assert f"bodies.txt:{line}" in result.stderr and "bodies" in result.stderr
+    assert f"loads.txt:{line}" in result.stderr and "external loads" in result.stderr
     assert not (tmp_path / "r").exists()  # refused before anything is written
 
 

@@ -132,14 +132,18 @@ int MoorDyn_ExternalWaveKinSet(MoorDyn system, const double* U, const double* Ud
 }
 
 int MoorDyn_GetNumberBodies(MoorDyn system, unsigned int* n) {
-  return capi::withSystem("MoorDyn_GetNumberBodies", system,
-                          [&](capi::MoorDynSystem&) { capi::output(n, "n") = 0; });
+  return capi::withSystem("MoorDyn_GetNumberBodies", system, [&](capi::MoorDynSystem& s) {
+    capi::output(n, "n") = static_cast<unsigned int>(s.bodyCount());
+  });
 }
 
 MoorDynBody MoorDyn_GetBody(MoorDyn system, unsigned int b) {
   if (capi::MoorDynSystem* s = systemOrReport(system, "MoorDyn_GetBody"))
-    capi::reportError(s, "MoorDyn_GetBody",
-                      "there is no body " + std::to_string(b) + " (tangle has no bodies)");
+    capi::reportError(
+        s, "MoorDyn_GetBody",
+        "not implemented by tangle: body " + std::to_string(b) + " is a free vessel of the model (body" +
+            std::to_string(b) +
+            "); tangle's MoorDyn API has no body functions (its points and rods are available)");
   return nullptr;
 }
 

@@ -35,6 +35,13 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     throw Error(fmt::format("{}: the conversion maps {} of {} lines and {} of {} points (a bug in tangle)",
                             m_path, c.lines.size(), m_coupling.deck.lines.size(), c.points.size(),
                             m_coupling.deck.points.size()));
+  // MoorDyn couples a body's and a rod's 6 (or 3, pinned) DOFs ahead of the points': tangle holds them.
+  for (const io::MoorDynBody& b : m_coupling.deck.bodies)
+    if (b.kind == io::MoorDynBodyKind::Coupled || b.kind == io::MoorDynBodyKind::CoupledPinned)
+      throw Error(
+          fmt::format("{}:{}: body {} is {}: bodies coupled to a host are not supported by tangle's MoorDyn "
+                      "API (make it Fixed or Free, or couple the points that hold it)",
+                      m_path, b.sourceLine, b.id, b.kindWord));
   // MoorDyn couples a rod's 6 (or 3, pinned) DOFs ahead of the points': tangle holds coupled rods.
   for (const io::MoorDynRod& r : m_coupling.deck.rods)
     if (r.kind == io::MoorDynRodKind::Coupled || r.kind == io::MoorDynRodKind::CoupledPinned)
@@ -292,6 +299,7 @@ int MoorDynSystem::pointType(int p) const {
     case io::MoorDynPointKind::Free:
       return kPointFree;
     case io::MoorDynPointKind::Fixed:
+    case io::MoorDynPointKind::Body:  // MoorDyn: a point on a body is fixed to it
       return kPointFixed;
   }
   return kPointFixed;

@@ -112,6 +112,7 @@ class MoorDynSystem {
   int lineCount() const { return static_cast<int>(m_lineHandles.size()); }
   int pointCount() const { return static_cast<int>(m_pointHandles.size()); }
   int rodCount() const { return static_cast<int>(m_rodHandles.size()); }
+  int bodyCount() const { return static_cast<int>(m_coupling.deck.bodies.size()); }
   /// Handles by 1-based deck id; null when out of range. Owned by this system.
   LineHandle* line(unsigned int id);
   PointHandle* point(unsigned int id);

@@ -1802,10 +1802,27 @@ std::vector<geometry::HullShape> readHull(const Value& v) {
 void readVessels(const Value& v, ModelSpec& spec) {
   NameRegistry names("vessel");
   for (const Value& item : v.items(1, ItemLabel::Name)) {
-    const Map m(
-        item, {"name", "mode", "position", "heading", "mass", "inertia", "added_mass", "linear_damping",
-               "quadratic_damping", "hydrostatic_stiffness", "current_coefficients", "current_areas",
-               "wind_coefficients", "wind_areas", "wave_drift", "raos", "motion", "held_in_statics", "hull"});
+    const Map m(item, {"name",
+                       "mode",
+                       "position",
+                       "heading",
+                       "mass",
+                       "inertia",
+                       "added_mass",
+                       "linear_damping",
+                       "quadratic_damping",
+                       "hydrostatic_stiffness",
+                       "current_coefficients",
+                       "current_areas",
+                       "wind_coefficients",
+                       "wind_areas",
+                       "wave_drift",
+                       "raos",
+                       "motion",
+                       "held_in_statics",
+                       "hull",
+                       "displaced_volume",
+                       "centre_of_buoyancy"});
     model::VesselSpec vs;
     vs.sourceLine = item.line();
     vs.name = names.add(m);
@@ -1830,12 +1847,24 @@ void readVessels(const Value& v, ModelSpec& spec) {
     vs.linearDamping = readSix(m, "linear_damping", nonNegativeUpTo(1.0e16));
     vs.quadraticDamping = readSix(m, "quadratic_damping", nonNegativeUpTo(1.0e16));
     vs.hydrostaticStiffness = readSix(m, "hydrostatic_stiffness", nonNegativeUpTo(1.0e16));
+    // A submerged body: its weight and buoyancy act on it (VesselLoads), and its lines hold it.
+    if (const std::optional<Value> volume = m.find("displaced_volume")) {
+      if (!free) volume->fail("displaced_volume applies only to free vessels (a submerged body)");
+      vs.displacedVolume = m.number("displaced_volume", nonNegativeUpTo(1.0e9));
+    }
+    if (const std::optional<Value> centre = m.find("centre_of_buoyancy")) {
+      if (std::isnan(vs.displacedVolume)) centre->fail("centre_of_buoyancy needs displaced_volume");
+      vs.centreOfBuoyancy = centre->vec3();
+    }
     // A free vessel floats on its waterplane: without heave stiffness nothing holds it up in statics
-    // (the solve would end with a residual that does not name the cause).
-    if (free && !vs.heldInStatics && vs.hydrostaticStiffness[2] <= 0.0)
-      item.fail(fmt::format("free vessel '{}' has no restoring force in heave: give hydrostatic_stiffness "
-                            "[0, 0, heave, roll, pitch, 0] (heave = rho g waterplane area), or held_in_statics: true",
-                            vs.name));
+    // (the solve would end with a residual that does not name the cause). A submerged body hangs on its
+    // lines.
+    if (free && !vs.heldInStatics && vs.hydrostaticStiffness[2] <= 0.0 && std::isnan(vs.displacedVolume))
+      item.fail(fmt::format(
+          "free vessel '{}' has no restoring force in heave: give hydrostatic_stiffness "
+          "[0, 0, heave, roll, pitch, 0] (heave = rho g waterplane area), or held_in_statics: true, "
+          "or displaced_volume for a submerged body",
+          vs.name));
     if (const std::optional<Value> t = m.find("current_coefficients")) vs.currentCoefficients = readHeadingTable(*t);
     if (const std::optional<Value> a = m.find("current_areas")) vs.currentAreas = a->vec3();
     if (const std::optional<Value> t = m.find("wind_coefficients")) vs.windCoefficients = readHeadingTable(*t);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -372,10 +374,33 @@ std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int option
 constexpr double kMaxFrictionVelocity = 10.0;
 
 /// One deck line placed in a chain of deck lines joined at free points.
-/// A deck whose rods' ends are points: for each rod end that lines attach to, a point (after the deck's own)
-/// and the lines' rod ends rewritten to it (docs/moordyn.md, rods). A fixed or coupled rod's end is a fixed
-/// point; a pinned rod's end A too; a moving rod's other ends are tangle points carried by the rod's line
-/// (its end node is the point); a zero-length rod is one point (free for a free rod).
+/// A MoorDyn body as a tangle vessel (docs/moordyn.md, bodies): a free body is a free vessel `body<id>` whose
+/// reference point is the centre of gravity of the body and the masses fixed to it; a fixed or coupled one
+/// holds what is fixed to it where the deck puts it.
+struct BodyFrame {
+  bool free = false;
+  Mat3 rotation = Mat3::Identity();  ///< body axes to global at t = 0 (MoorDyn: Rx(r0) Ry(p0) Rz(y0))
+  Vec3 origin = Vec3::Zero();        ///< the deck's reference point X0, Y0, Z0 [m]
+  Vec3 reference = Vec3::Zero();     ///< the vessel's reference point: the centre of gravity [m]
+  double mass = 0.0;                 ///< the body's and its points' [kg]
+  Vec3 inertia = Vec3::Zero();       ///< about the reference point, global axes at t = 0 (diagonal) [kg m^2]
+  double volume = 0.0;               ///< the body's and its points' [m^3]
+  Vec3 centreOfBuoyancy = Vec3::Zero();      ///< from the reference point, vessel axes [m]
+  Vec3 addedMass = Vec3::Zero();             ///< translational [kg]
+  std::array<double, 6> quadraticDamping{};  ///< 1/2 rho CdA [kg/m, kg m^2]
+  bool held = false;                         ///< a line holds it (directly or through its rods)
+  /// A body-fixed offset (body axes, from the deck's reference point) in the vessel's axes from its reference
+  /// point (tangle's vessel axes are the global axes at t = 0: heading 0).
+  Vec3 vesselOffset(const Vec3& bodyOffset) const { return origin + rotation * bodyOffset - reference; }
+  Vec3 global(const Vec3& bodyOffset) const { return origin + rotation * bodyOffset; }
+};
+
+/// A deck whose rods' and bodies' attachments are points: for each rod end that lines attach to, a point
+/// (after the deck's own) and the lines' rod ends rewritten to it (docs/moordyn.md, rods and bodies). A fixed
+/// or coupled rod's end is a fixed point; a pinned rod's end A too; a moving rod's other ends are tangle
+/// points carried by the rod's line (its end node is the point); a zero-length rod is one point (free for a
+/// free rod). A point or rod end on a free body is a Body point at its offset in the vessel's axes; on a
+/// fixed or coupled body, a fixed point where the deck puts it.
 struct RodEnds {
   MoorDynDeck deck;
   std::size_t deckPoints = 0;   ///< points of the deck as written (the rest are rod ends)
@@ -385,30 +410,162 @@ struct RodEnds {
                                 ///< it), zero: none
   std::vector<bool> movingRod;  ///< per rod (id - 1): a tangle line (pinned or free, of length > 0)
   std::vector<std::array<int, 2>> endPoint;  ///< per rod: the point id of each end, 0: no line there
+  std::vector<std::array<Vec3, 2>> rodOffset;  ///< per rod on a free body: its ends in the vessel's axes
+  std::vector<BodyFrame> bodies;               ///< per body (id - 1)
 };
 
 /// Pi/4 d^2 [m^2].
 double circleArea(double d) { return std::numbers::pi / 4.0 * d * d; }
 
-RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes) {
+/// MoorDyn's Euler2Quat: Rx(roll) Ry(pitch) Rz(yaw), angles in degrees.
+Mat3 bodyRotation(const Vec3& degrees) {
+  const Vec3 a = degrees * std::numbers::pi / 180.0;
+  return (Eigen::AngleAxisd(a.x(), Vec3::UnitX()) * Eigen::AngleAxisd(a.y(), Vec3::UnitY()) *
+          Eigen::AngleAxisd(a.z(), Vec3::UnitZ()))
+      .toRotationMatrix();
+}
+
+/// Adds a mass m at d from the reference point to a diagonal inertia (parallel axes; the products of inertia
+/// a free vessel has no place for are left out).
+void addPointInertia(Vec3& inertia, double m, const Vec3& d) {
+  inertia +=
+      m * Vec3(d.y() * d.y() + d.z() * d.z(), d.x() * d.x() + d.z() * d.z(), d.x() * d.x() + d.y() * d.y());
+}
+
+std::vector<BodyFrame> bodyFrames(const MoorDynDeck& deck, double density, std::vector<std::string>& notes) {
+  std::vector<BodyFrame> frames;
+  for (const MoorDynBody& b : deck.bodies) {
+    BodyFrame f;
+    f.free = b.kind == MoorDynBodyKind::Free;
+    f.rotation = bodyRotation(b.rotation);
+    f.origin = b.position;
+    if (b.kind != MoorDynBodyKind::Free)
+      notes.push_back(
+          fmt::format("{}:{}: body {} is {}: held where the deck puts it (a standalone run), and what is "
+                      "fixed to it with "
+                      "it{}",
+                      deck.file, b.sourceLine, b.id, b.kindWord,
+                      b.kind == MoorDynBodyKind::Fixed
+                          ? ""
+                          : "; its motion is not taken from a host (the C API refuses coupled bodies)"));
+    if (!f.free) {
+      f.reference = b.position;
+      frames.push_back(f);
+      continue;
+    }
+    // Masses and volumes: the body's own at its centre of gravity (MoorDyn's Body.cpp applies its weight and
+    // buoyancy both there), and its points'.
+    struct Lump {
+      double mass, volume;
+      Vec3 at;
+      double dragArea, addedMass;
+    };
+    std::vector<Lump> lumps{{b.mass, b.volume, f.global(b.centreOfGravity), 0.0, 0.0}};
+    for (const MoorDynPoint& p : deck.points)
+      if (p.kind == MoorDynPointKind::Body && p.body == b.id)
+        lumps.push_back(
+            {p.mass, p.volume, f.global(p.position), p.dragArea, p.addedMass * density * p.volume});
+    double mass = 0.0, volume = 0.0, pointDrag = 0.0, pointAdded = 0.0;
+    Vec3 moment = Vec3::Zero(), volumeMoment = Vec3::Zero();
+    for (const Lump& l : lumps) {
+      mass += l.mass;
+      volume += l.volume;
+      moment += l.mass * l.at;
+      volumeMoment += l.volume * l.at;
+      pointDrag += l.dragArea;
+      pointAdded += l.addedMass;
+    }
+    f.reference = mass > 0.0 ? Vec3(moment / mass) : lumps.front().at;
+    f.mass = mass;
+    f.volume = volume;
+    f.centreOfBuoyancy = volume > 0.0 ? Vec3(volumeMoment / volume - f.reference) : Vec3::Zero();
+    // The body's inertia (about its centre of gravity, body axes) in global axes: the diagonal of R I R^T.
+    const Mat3 own = f.rotation * b.inertia.asDiagonal() * f.rotation.transpose();
+    f.inertia = own.diagonal();
+    const double offDiagonal = std::max({std::abs(own(0, 1)), std::abs(own(0, 2)), std::abs(own(1, 2))});
+    if (offDiagonal > 1e-9 * std::max(own.diagonal().maxCoeff(), 1e-300))
+      notes.push_back(
+          fmt::format("{}:{}: body {}'s inertia turned by its initial roll and pitch has products of "
+                      "inertia up to {} kg m^2, left out (a tangle vessel's inertia is diagonal)",
+                      deck.file, b.sourceLine, b.id, num(offDiagonal)));
+    for (const Lump& l : lumps) addPointInertia(f.inertia, l.mass, l.at - f.reference);
+    if (!(f.mass > 0.0) || (f.inertia.array() <= 0.0).any()) {
+      // A body whose mass is all in its rods (their lines carry it) or whose masses lie on one axis: tangle's
+      // free vessel needs a mass and three moments of inertia > 0.
+      const double floorMass = 1e-3, floorInertia = std::max(1e-3, 1e-6 * f.inertia.maxCoeff());
+      notes.push_back(fmt::format(
+          "{}:{}: body {} has {}: tangle's free vessel needs some, so it gets {} kg and at least {} kg m^2 "
+          "about "
+          "each axis (what is fixed to it, its rods and lines, carries its own mass)",
+          deck.file, b.sourceLine, b.id,
+          f.mass > 0.0 ? "a zero moment of inertia about an axis" : "no mass of its own or of its points",
+          num(std::max(f.mass, floorMass)), num(floorInertia)));
+      f.mass = std::max(f.mass, floorMass);
+      for (int k = 0; k < 3; ++k) f.inertia[k] = std::max(f.inertia[k], floorInertia);
+    }
+    // Added mass: Ca rho V along the body's axes (MoorDyn: about its reference point), and the points'.
+    const Mat3 added = f.rotation * (density * b.volume * b.addedMass).asDiagonal() * f.rotation.transpose();
+    f.addedMass = added.diagonal() + Vec3::Constant(pointAdded);
+    // Drag: MoorDyn's 1/2 rho CdA |v| v per body axis on the velocity relative to the water (Body.cpp).
+    for (std::size_t k = 0; k < 6; ++k) f.quadraticDamping[k] = 0.5 * density * b.dragArea[k];
+    for (std::size_t k = 0; k < 3; ++k) f.quadraticDamping[k] += 0.5 * density * pointDrag;
+    if (!b.centreOfGravity.isZero() || lumps.size() > 1)
+      notes.push_back(
+          fmt::format("{}:{}: body {}: the vessel's reference point is the centre of gravity of the body and "
+                      "its points, {} "
+                      "(MoorDyn's is the deck's {}); its drag and added mass act there",
+                      deck.file, b.sourceLine, b.id, vec(f.reference), vec(b.position)));
+    frames.push_back(f);
+  }
+  return frames;
+}
+
+RodEnds resolveRodEnds(const MoorDynDeck& input, double density, std::vector<std::string>& notes) {
   RodEnds r;
   r.deck = input;
   MoorDynDeck& deck = r.deck;
+  r.bodies = bodyFrames(input, density, notes);
   r.deckPoints = deck.points.size();
   r.carrierRod.assign(deck.points.size(), 0);
   r.carrierEnd.assign(deck.points.size(), 0);
   r.clampAxis.assign(deck.points.size(), Vec3::Zero());
   r.movingRod.assign(deck.rods.size(), false);
   r.endPoint.assign(deck.rods.size(), {0, 0});
+  r.rodOffset.assign(deck.rods.size(), {Vec3::Zero(), Vec3::Zero()});
+  const auto frame = [&](int body) -> BodyFrame& { return r.bodies[static_cast<std::size_t>(body - 1)]; };
+  // Points on bodies: on a free body, at their offset in the vessel's axes; on a held one, fixed points.
+  for (MoorDynPoint& p : deck.points) {
+    if (p.kind != MoorDynPointKind::Body) continue;
+    const BodyFrame& f = frame(p.body);
+    if (f.free) {
+      p.position = f.vesselOffset(p.position);
+    } else {
+      p.position = f.global(p.position);
+      p.kind = MoorDynPointKind::Fixed;
+    }
+  }
+  // Rods on bodies: their ends in global axes (and in the vessel's, on a free body); on a held body, a rod
+  // fixed to it is a fixed rod and one pinned to it a pinned rod.
+  for (MoorDynRod& rod : deck.rods) {
+    if (rod.body == 0) continue;
+    const BodyFrame& f = frame(rod.body);
+    r.rodOffset[static_cast<std::size_t>(rod.id - 1)] = {f.vesselOffset(rod.endA), f.vesselOffset(rod.endB)};
+    rod.endA = f.global(rod.endA);
+    rod.endB = f.global(rod.endB);
+    if (!f.free) rod.body = 0;
+  }
   const auto rodType = [&](const MoorDynRod& rod) -> const MoorDynRodType& {
     return *std::find_if(deck.rodTypes.begin(), deck.rodTypes.end(),
                          [&](const MoorDynRodType& t) { return t.name == rod.rodType; });
   };
+  // On a free body: a rod fixed to it moves with it (a line with both ends on the vessel); one pinned to it
+  // turns about its end A on the vessel.
+  const auto onFreeBody = [&](const MoorDynRod& rod) { return rod.body != 0; };
   for (const MoorDynRod& rod : deck.rods) {
     const bool zeroLength = rod.length() == 0.0;
     r.movingRod[static_cast<std::size_t>(rod.id - 1)] =
-        !zeroLength && (rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned ||
-                        rod.kind == MoorDynRodKind::Free);
+        !zeroLength && (onFreeBody(rod) || rod.kind == MoorDynRodKind::Pinned ||
+                        rod.kind == MoorDynRodKind::CoupledPinned || rod.kind == MoorDynRodKind::Free);
     if (rod.kind == MoorDynRodKind::Coupled || rod.kind == MoorDynRodKind::CoupledPinned)
       notes.push_back(fmt::format(
           "{}:{}: rod {} is {}: held where the deck puts it (a standalone run); its end A is not moved by a "
@@ -421,6 +578,10 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes
     p.kind = kind;
     p.kindWord = fmt::format("rod {} end {}", rod.id, end == 0 ? 'A' : 'B');
     p.position = end == 0 ? rod.endA : rod.endB;
+    if (kind == MoorDynPointKind::Body) {
+      p.body = rod.body;
+      p.position = r.rodOffset[static_cast<std::size_t>(rod.id - 1)][static_cast<std::size_t>(end)];
+    }
     p.sourceLine = rod.sourceLine;
     deck.points.push_back(p);
     r.carrierRod.push_back(0);
@@ -439,11 +600,16 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes
       // A zero-length rod's two ends are one point.
       const int slot = zeroLength ? 0 : rodEnd;
       if (ends[static_cast<std::size_t>(slot)] == 0) {
-        const bool held =
-            rod.kind == MoorDynRodKind::Fixed || rod.kind == MoorDynRodKind::Coupled ||
-            ((rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned) &&
-             (slot == 0 || zeroLength));
-        const int id = addPoint(rod, slot, held ? MoorDynPointKind::Fixed : MoorDynPointKind::Free);
+        const bool pinnedEnd =
+            (rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned) &&
+            (slot == 0 || zeroLength);
+        const bool onBody = onFreeBody(rod) && (rod.kind == MoorDynRodKind::Fixed || pinnedEnd);
+        const bool held = !onFreeBody(rod) && (rod.kind == MoorDynRodKind::Fixed ||
+                                               rod.kind == MoorDynRodKind::Coupled || pinnedEnd);
+        const int id = addPoint(rod, slot,
+                                onBody ? MoorDynPointKind::Body
+                                : held ? MoorDynPointKind::Fixed
+                                       : MoorDynPointKind::Free);
         ends[static_cast<std::size_t>(slot)] = id;
         MoorDynPoint& p = deck.points.back();
         if (held && !zeroLength &&
@@ -451,7 +617,7 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes
           const Vec3 axis = (rod.endB - rod.endA) / rod.length();
           r.clampAxis.back() = slot == 1 ? axis : Vec3(-axis);
         }
-        if (!held && zeroLength) {
+        if (!held && !onBody && zeroLength) {
           // MoorDyn's zero-length rod (Rod.cpp): no length, so no mass, net buoyancy or side drag; the axial
           // drag CdEnd on pi/4 d^2 of both its ends (applied at its one node) becomes the point's drag area.
           const MoorDynRodType& t = rodType(rod);
@@ -462,7 +628,7 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes
                 "added mass (CaEnd = {}) is left out",
                 deck.file, rod.sourceLine, rod.id, p.dragArea, t.addedMassEnd));
         }
-        if (!held && !zeroLength) {
+        if (!held && !onBody && !zeroLength) {
           r.carrierRod.back() = rod.id;
           r.carrierEnd.back() = slot;
         }
@@ -476,6 +642,12 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, std::vector<std::string>& notes
                        "both ends of the line are on the same rod end (a zero-length rod's two ends are one "
                        "point)");
   }
+  // A free body is held when a line ends on it (at one of its points or at a rod fixed or pinned to it).
+  for (const MoorDynLine& l : deck.lines)
+    for (const int pointId : {l.pointA, l.pointB}) {
+      const MoorDynPoint& p = deck.points[static_cast<std::size_t>(pointId - 1)];
+      if (p.kind == MoorDynPointKind::Body) frame(p.body).held = true;
+    }
   return r;
 }
 
@@ -490,7 +662,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   MoorDynConversion out;
   std::vector<std::string>& notes = out.notes;
   const Options opt = readOptions(input, notes);
-  const RodEnds rodEnds = resolveRodEnds(input, notes);
+  const RodEnds rodEnds = resolveRodEnds(input, opt.density, notes);
   const MoorDynDeck& deck = rodEnds.deck;  // rod ends that lines attach to are points in it
   const auto pointLine = [&](int id) { return deck.points[static_cast<std::size_t>(id - 1)].sourceLine; };
   const auto carrier = [&](int pointId) { return rodEnds.carrierRod[static_cast<std::size_t>(pointId - 1)]; };
@@ -505,7 +677,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   // Water depth: WtrDpth, deepened to the lowest point as MoorDyn does (MoorDyn2.cpp, point list).
   double depth = opt.depth;
   for (const MoorDynPoint& p : deck.points)
-    if (-p.position.z() > depth) {
+    if (p.kind != MoorDynPointKind::Body && -p.position.z() > depth) {
       if (opt.depth > 0.0)
         notes.push_back(
             fmt::format("{}:{}: point {} is below WtrDpth = {} m: the water depth is set to {} m, as "
@@ -534,7 +706,10 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   }
   for (const MoorDynPoint& p : deck.points) {
     const std::size_t n = atPoint[static_cast<std::size_t>(p.id - 1)].size();
-    if (n == 0)
+    // A point on a body may hold no line (a mass on it; MoorDyn's orbitalBody.txt).
+    const bool onBody = static_cast<std::size_t>(p.id) <= input.points.size() &&
+                        input.points[static_cast<std::size_t>(p.id - 1)].kind == MoorDynPointKind::Body;
+    if (n == 0 && !onBody)
       throw InputError(
           deck.file, p.sourceLine, fmt::format("point {}", p.id),
           "no line is attached to this point (tangle models lines; a lone point has nothing to hold)");
@@ -659,6 +834,30 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
             "point {}",
             triggers, at, f.id, f.sourceLine, id, f.point);
       }
+    }
+  }
+
+  // Bending stiffness: a line type whose bending reaches over a small part of its shortest segment acts as a
+  // cable. Its bending length (EI / w)^(1/3) (w its submerged weight per length, or its weight in air when it
+  // is neutral) below a tenth of the segment: tangle makes it a cable (bar elements), whose statics a beam
+  // of nearly no stiffness would only make ill-conditioned (EA h^2 / EI ~ 1e8: MoorDyn's complex_system.txt).
+  std::map<std::string, double> bendingOfType;
+  for (const MoorDynLineType& t : deck.lineTypes) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const MoorDynLine& l : deck.lines)
+      if (l.lineType == t.name) shortest = std::min(shortest, l.length / l.segments);
+    const double wet =
+        std::abs(t.massPerLength - opt.density * std::numbers::pi / 4.0 * t.diameter * t.diameter);
+    const double w = std::max(wet, 1e-3 * t.massPerLength) * std::max(opt.gravity, 1e-3);
+    const double bendingLength = std::cbrt(t.bendingStiffness / w);
+    bendingOfType[t.name] = t.bendingStiffness;
+    if (t.bendingStiffness > 0.0 && std::isfinite(shortest) && bendingLength < 0.1 * shortest) {
+      bendingOfType[t.name] = 0.0;
+      notes.push_back(
+          fmt::format("line type {}: EI = {} N m^2 bends over (EI / w)^(1/3) = {} m, under a tenth of its "
+                      "shortest segment ({} "
+                      "m): a cable in tangle (EI 0)",
+                      t.name, num(t.bendingStiffness), num(bendingLength), num(shortest)));
     }
   }
 
@@ -870,8 +1069,12 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
                       "{} N, tangle continues the last segment's slope",
                       t.name, num(t.tensionStrain.back().first), num(t.tensionStrain.back().second)));
     }
-    if (t.bendingStiffness > 0.0)
+    if (bendingOfType.at(t.name) > 0.0)
       line(fmt::format("    bending_stiffness: {}   # EI", num(t.bendingStiffness)));
+    else if (t.bendingStiffness > 0.0)
+      line(fmt::format(
+          "    # bending_stiffness: {}   # EI: negligible over its segments, a cable (see the notes)",
+          num(t.bendingStiffness)));
     if (u.damping > 0.0) {
       if (t.axialDamping < 0.0)
         line(fmt::format(
@@ -888,7 +1091,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   // Rods that move (pinned or free, of length > 0): MoorDyn's rigid cylinder as a stiff beam line. Its
   // stiffness is set by its own load scale q = (m + rho pi/4 d^2) g [N/m] over its length L, so that its
   // sag under that load is about 1e-7 L (EI = 1e5 q L^3: 5/384 q L^4 / EI) and its stretch about 1e-7
-  // (EA = 1e7 q L), and at least 1000 times the stiffest line type's EA (the lines pulling on it); both at
+  // (EA = 1e7 q L), and at least 100 times the stiffest line type's EA (the lines pulling on it); both at
   // most 1e13.
   double lineAxial = 0.0;
   for (const MoorDynLineType& t : deck.lineTypes) lineAxial = std::max(lineAxial, t.axialStiffness);
@@ -902,7 +1105,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
     rodTypesWritten.insert(t.name);
     const double q = (t.massPerLength + opt.density * circleArea(t.diameter)) * std::max(opt.gravity, 1.0);
     // At most tangle's largest stiffness, 1e13 (a 10 m diameter can's sag is then still 1e-8 of its length).
-    const double axial = std::min(std::max({1e7 * q * rodLength, 1e3 * lineAxial, 1e6}), 1e13);
+    const double axial = std::min(std::max({1e7 * q * rodLength, 1e2 * lineAxial, 1e6}), 1e13);
     const double bending = std::min(std::max(1e5 * q * rodLength * rodLength * rodLength, 1e3), 1e13);
     line(fmt::format(
         "  - name: {}                # rod type {} (deck line {}): MoorDyn's rigid rod as a stiff beam",
@@ -910,7 +1113,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
     line(fmt::format("    outer_diameter: {}      # Diam", num(t.diameter)));
     line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
     line(
-        fmt::format("    axial_stiffness: {}     # rigid: max(1e7 q L, 1e3 x the largest line EA), q = (m + "
+        fmt::format("    axial_stiffness: {}     # rigid: max(1e7 q L, 100 x the largest line EA), q = (m + "
                     "rho pi/4 d^2) g, L = {} m",
                     num(axial), num(rodLength)));
     line(fmt::format("    bending_stiffness: {}   # rigid: 1e5 q L^3 (sag about 1e-7 L)", num(bending)));
@@ -973,6 +1176,12 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
         line(fmt::format("      position: {}", vec(p.position)));
         return clamped;
       }
+      case MoorDynPointKind::Body:
+        line(fmt::format(
+            "    {}: {{type: vessel, vessel: body{}, position: {}}}   # {} (deck line {}) on body {}", key,
+            p.body, vec(p.position), rodEnd ? p.kindWord : fmt::format("point {}", p.id), p.sourceLine,
+            p.body));
+        return false;
       case MoorDynPointKind::Coupled:
         line(fmt::format("    {}:", key));
         line(
@@ -1019,6 +1228,44 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
                      num(p.addedMass * opt.density * p.volume), num(p.addedMass)));
   };
 
+  // Free bodies: free vessels (submerged bodies: their weight and buoyancy act on them).
+  bool anyVessel = false;
+  for (std::size_t b = 0; b < deck.bodies.size(); ++b) {
+    const BodyFrame& f = rodEnds.bodies[b];
+    if (!f.free) continue;
+    const MoorDynBody& body = deck.bodies[b];
+    if (!anyVessel) line("vessels:                         # MoorDyn's free bodies");
+    anyVessel = true;
+    line(fmt::format("  - name: body{}                 # body {} (deck line {}): {}", body.id, body.id,
+                     body.sourceLine, body.kindWord));
+    line("    mode: free");
+    line(fmt::format("    position: {}   # the centre of gravity of the body and its points",
+                     vec(f.reference)));
+    line(
+        "    heading: 0                 # vessel axes = global axes at t = 0 (positions on it are turned by "
+        "r0, p0, y0)");
+    line(fmt::format("    mass: {}                   # Mass (and its points')", num(f.mass)));
+    line(fmt::format("    inertia: {}   # I about the centre of gravity (and its points')", vec(f.inertia)));
+    line(fmt::format(
+        "    displaced_volume: {}       # Volume (and its points'): weight and buoyancy act on it",
+        num(f.volume)));
+    if (!f.centreOfBuoyancy.isZero())
+      line(fmt::format("    centre_of_buoyancy: {}", vec(f.centreOfBuoyancy)));
+    line(fmt::format("    added_mass: [{}, {}, {}, 0, 0, 0]   # Ca rho Volume", num(f.addedMass.x()),
+                     num(f.addedMass.y()), num(f.addedMass.z())));
+    const auto& q = f.quadraticDamping;
+    if (std::any_of(q.begin(), q.end(), [](double v) { return v != 0.0; }))
+      line(fmt::format("    quadratic_damping: [{}, {}, {}, {}, {}, {}]   # 1/2 rho CdA", num(q[0]),
+                       num(q[1]), num(q[2]), num(q[3]), num(q[4]), num(q[5])));
+    if (std::any_of(q.begin(), q.end(), [](double v) { return v != 0.0; }) &&
+        (opt.currentMode != 0 || opt.waveMode != 0))
+      notes.push_back(
+          fmt::format("body {}: its drag 1/2 rho CdA |v| v is on its own velocity in tangle, on its "
+                      "velocity relative to the water in MoorDyn",
+                      body.id));
+  }
+  if (anyVessel) line("");
+
   bool anyHub = false;
   for (const MoorDynPoint& p : deck.points) {
     if (!isHub(p.id)) continue;
@@ -1062,9 +1309,8 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   // Moving rods first: a rod's end node carries the tangle point where its lines join it (the Model's rule:
   // the first line end at a point in input order).
   const auto bendingOf = [&](const std::string& typeName) {
-    for (const MoorDynLineType& t : deck.lineTypes)
-      if (t.name == typeName) return t.bendingStiffness;
-    return 0.0;
+    const auto it = bendingOfType.find(typeName);
+    return it != bendingOfType.end() ? it->second : 0.0;
   };
   for (const MoorDynRod& rod : deck.rods) {
     if (!rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)]) continue;
@@ -1080,7 +1326,12 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       const int pointId = ends[static_cast<std::size_t>(end)];
       const bool pinned =
           end == 0 && (rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned);
-      if (pinned) {
+      if (rod.body != 0 && (pinned || rod.kind == MoorDynRodKind::Fixed)) {
+        line(fmt::format(
+            "    {}: {{type: vessel, vessel: body{}, position: {}}}   # {} on body {}", key, rod.body,
+            vec(rodEnds.rodOffset[static_cast<std::size_t>(rod.id - 1)][static_cast<std::size_t>(end)]),
+            rod.kindWord, rod.body));
+      } else if (pinned) {
         line(fmt::format("    {}: {{type: pinned, position: {}}}   # {}: end A held, free to rotate", key,
                          vec(at), rod.kindWord));
       } else if (pointId != 0) {
@@ -1211,19 +1462,22 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   std::string unheld;
   for (const MoorDynRod& rod : deck.rods) {
     const std::array<int, 2>& ends = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)];
-    if (rod.kind == MoorDynRodKind::Free && ends[0] == 0 && ends[1] == 0)
-      unheld += fmt::format("{}{}", unheld.empty() ? "" : ", ", rod.id);
+    if (rod.kind == MoorDynRodKind::Free && rod.body == 0 && ends[0] == 0 && ends[1] == 0)
+      unheld += fmt::format("{}rod {}", unheld.empty() ? "" : ", ", rod.id);
   }
+  for (std::size_t b = 0; b < deck.bodies.size(); ++b)
+    if (rodEnds.bodies[b].free && !rodEnds.bodies[b].held)
+      unheld += fmt::format("{}body {}", unheld.empty() ? "" : ", ", b + 1);
   if (!unheld.empty()) {
     line("statics:");
     line(fmt::format(
-        "  method: none                  # free rod {} held by no line: no static equilibrium; the "
-        "dynamics starts from the deck's positions at rest",
+        "  method: none                  # free {} held by no line: no static equilibrium; the dynamics "
+        "starts from the deck's positions at rest",
         unheld));
     line("");
     notes.push_back(
-        fmt::format("free rod {} is held by no line: no static solve (statics.method: none); the "
-                    "run starts from the deck's positions at rest",
+        fmt::format("free {} held by no line: no static solve (statics.method: none); the run starts "
+                    "from the deck's positions at rest",
                     unheld));
   }
 

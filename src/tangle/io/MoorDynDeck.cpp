@@ -40,6 +40,7 @@ bool isBlank(const std::string& line) {
 enum class Section {
   None,
   LineTypes,
+  Bodies,
   RodTypes,
   Rods,
   Points,
@@ -68,15 +69,9 @@ const SectionName kSections[] = {
     {"ROD PROPERTIES", Section::Rods, ""},
     {"ROD LIST", Section::Rods, ""},
     {"RODS", Section::Rods, ""},
-    {"BODY PROPERTIES", Section::Unsupported,
-     "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
-     "bodies and add a `vessels` block)"},
-    {"BODY LIST", Section::Unsupported,
-     "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
-     "bodies and add a `vessels` block)"},
-    {"BODIES", Section::Unsupported,
-     "MoorDyn bodies are not supported (tangle's 6-DOF objects are vessels: convert the deck without the "
-     "bodies and add a `vessels` block)"},
+    {"BODY PROPERTIES", Section::Bodies, ""},
+    {"BODY LIST", Section::Bodies, ""},
+    {"BODIES", Section::Bodies, ""},
     {"POINT PROPERTIES", Section::Points, ""},
     {"POINT LIST", Section::Points, ""},
     {"CONNECTION PROPERTIES", Section::Points, ""},
@@ -126,6 +121,11 @@ class DeckParser {
             deck.lineTypes.push_back(lineType(n, w));
           });
           break;
+        case Section::Bodies:
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            deck.bodies.push_back(body(n, w, deck));
+          });
+          break;
         case Section::RodTypes:
           i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
             deck.rodTypes.push_back(rodType(n, w));
@@ -172,7 +172,14 @@ class DeckParser {
       fail(0, "LINE TYPES", "the deck has no LINE TYPES section (is it a MoorDyn v2 input file?)");
     if (deck.lines.empty() && deck.rods.empty())
       fail(0, "LINES", "the deck has no line and no rod (a LINES or RODS section with at least one row)");
+    for (const MoorDynPoint& p : deck.points)
+      if (p.kind == MoorDynPointKind::Body && (p.body < 1 || p.body > static_cast<int>(deck.bodies.size())))
+        fail(p.sourceLine, fmt::format("point {} Attachment", p.id),
+             fmt::format("body {} does not exist (the deck has {} bodies)", p.body, deck.bodies.size()));
     for (const MoorDynRod& r : deck.rods) {
+      if (r.body != 0 && (r.body < 1 || r.body > static_cast<int>(deck.bodies.size())))
+        fail(r.sourceLine, fmt::format("rod {} Attachment", r.id),
+             fmt::format("body {} does not exist (the deck has {} bodies)", r.body, deck.bodies.size()));
       const bool known = std::any_of(deck.rodTypes.begin(), deck.rodTypes.end(),
                                      [&](const MoorDynRodType& t) { return t.name == r.rodType; });
       if (!known)
@@ -390,6 +397,102 @@ class DeckParser {
     return t;
   }
 
+  /// A column of `|`-separated numbers (MoorDyn's CG, I, CdA, Ca columns).
+  std::vector<double> bar(int n, const std::string& key, const std::string& word) const {
+    std::string list = word;
+    std::replace(list.begin(), list.end(), '|', ' ');
+    std::vector<double> out;
+    for (const std::string& v : words(list)) out.push_back(number(n, key, v));
+    if (out.empty())
+      fail(n, key, fmt::format("expected a number or numbers separated by '|', got '{}'", word));
+    return out;
+  }
+
+  /// One BODIES row: ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca* (MoorDyn2.cpp, readBody).
+  MoorDynBody body(int n, const std::vector<std::string>& w, const MoorDynDeck& deck) const {
+    if (w.size() < 14)
+      fail(
+          n, "BODIES",
+          fmt::format("expected 14 columns (ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG I Volume CdA Ca), got {}",
+                      w.size()));
+    MoorDynBody b;
+    b.sourceLine = n;
+    b.id = integer(n, "BODIES ID", w[0]);
+    if (b.id != static_cast<int>(deck.bodies.size()) + 1)
+      fail(n, "BODIES ID",
+           fmt::format("body IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
+                       deck.bodies.size() + 1, b.id));
+    const auto key = [&](const char* column) { return fmt::format("body {} {}", b.id, column); };
+    b.kindWord = w[1];
+    std::string letters;
+    for (const char c : upper(w[1]))
+      if (std::isalpha(static_cast<unsigned char>(c)))
+        letters += c;
+      else
+        break;
+    if (letters == "ANCHOR" || letters == "FIXED" || letters == "FIX")
+      b.kind = MoorDynBodyKind::Fixed;
+    else if (letters == "VESSEL" || letters == "VES" || letters == "COUPLED" || letters == "CPLD")
+      b.kind = MoorDynBodyKind::Coupled;
+    else if (letters == "VESSELPINNED" || letters == "VESPIN" || letters == "CPLDPIN" ||
+             letters == "COUPLEDPINNED")
+      b.kind = MoorDynBodyKind::CoupledPinned;
+    else
+      b.kind = MoorDynBodyKind::Free;  // MoorDyn: anything else is free
+    const char* const names[] = {"X0", "Y0", "Z0", "r0", "p0", "y0"};
+    for (int k = 0; k < 3; ++k) {
+      b.position[k] = number(n, key(names[k]), w[2 + static_cast<std::size_t>(k)]);
+      b.rotation[k] = number(n, key(names[3 + k]), w[5 + static_cast<std::size_t>(k)]);
+    }
+    b.mass = number(n, key("Mass"), w[8]);
+    const std::vector<double> cg = bar(n, key("CG"), w[9]);
+    if (cg.size() == 1)
+      b.centreOfGravity = Vec3(0.0, 0.0, cg[0]);
+    else if (cg.size() == 3)
+      b.centreOfGravity = Vec3(cg[0], cg[1], cg[2]);
+    else
+      fail(n, key("CG"), "expected 1 (z) or 3 (x|y|z) numbers");
+    const std::vector<double> inertia = bar(n, key("I"), w[10]);
+    if (inertia.size() == 1)
+      b.inertia = Vec3::Constant(inertia[0]);
+    else if (inertia.size() == 3)
+      b.inertia = Vec3(inertia[0], inertia[1], inertia[2]);
+    else
+      fail(n, key("I"), "expected 1 or 3 (Ix|Iy|Iz) numbers");
+    b.volume = number(n, key("Volume"), w[11]);
+    // CdA: 1 value (all six), 2 (translations | rotations), 3 (x|y|z, the same for the rotations) or 6.
+    // (MoorDyn2.cpp's loops for 3 and 6 values skip the first one; tangle reads them as documented.)
+    const std::vector<double> cda = bar(n, key("CdA"), w[12]);
+    if (cda.size() == 1) {
+      b.dragArea.fill(cda[0]);
+    } else if (cda.size() == 2) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        b.dragArea[k] = cda[0];
+        b.dragArea[k + 3] = cda[1];
+      }
+    } else if (cda.size() == 3) {
+      for (std::size_t k = 0; k < 3; ++k) b.dragArea[k] = b.dragArea[k + 3] = cda[k];
+    } else if (cda.size() == 6) {
+      for (std::size_t k = 0; k < 6; ++k) b.dragArea[k] = cda[k];
+    } else {
+      fail(n, key("CdA"), "expected 1, 2, 3 or 6 numbers separated by '|'");
+    }
+    const std::vector<double> ca = bar(n, key("Ca"), w[13]);
+    if (ca.size() == 1)
+      b.addedMass = Vec3::Constant(ca[0]);
+    else if (ca.size() == 3)
+      b.addedMass = Vec3(ca[0], ca[1], ca[2]);
+    else
+      fail(n, key("Ca"), "expected 1 or 3 (x|y|z) numbers");
+    if (b.mass < 0.0) fail(n, key("Mass"), "expected a mass >= 0");
+    if (b.volume < 0.0) fail(n, key("Volume"), "expected a volume >= 0");
+    if ((b.inertia.array() < 0.0).any()) fail(n, key("I"), "expected moments of inertia >= 0");
+    for (const double v : b.dragArea)
+      if (v < 0.0) fail(n, key("CdA"), "expected drag areas >= 0");
+    if ((b.addedMass.array() < 0.0).any()) fail(n, key("Ca"), "expected coefficients >= 0");
+    return b;
+  }
+
   /// One ROD TYPES row: TypeName Diam Mass/m Cd Ca CdEnd CaEnd (MoorDyn2.cpp, readRodProps).
   MoorDynRodType rodType(int n, const std::vector<std::string>& w) const {
     if (w.size() < 7)
@@ -447,10 +550,18 @@ class DeckParser {
     } else if (letters == "VESSELPINNED" || letters == "VESPIN" || letters == "CPLDPIN" ||
                letters == "COUPLEDPINNED") {
       r.kind = MoorDynRodKind::CoupledPinned;
-    } else if (letters == "BODY" || letters == "TURBINE") {
-      fail(n, key("Attachment"),
-           fmt::format("'{}': rods on MoorDyn bodies are not supported (tangle's rigid bodies are vessels)",
-                       w[2]));
+    } else if (letters == "BODY") {
+      // Body<n> (fixed to it) or Body<n>Pinned (end A on it): MoorDyn2.cpp, decomposeString.
+      const std::string u = upper(w[2]);
+      std::size_t j = letters.size();
+      while (j < u.size() && std::isdigit(static_cast<unsigned char>(u[j]))) ++j;
+      const std::string rest = u.substr(j);
+      if (j == letters.size() || !(rest.empty() || rest == "PINNED" || rest == "PIN"))
+        fail(n, key("Attachment"), fmt::format("'{}': expected Body<n> or Body<n>Pinned (e.g. Body1)", w[2]));
+      r.body = integer(n, key("Attachment"), u.substr(letters.size(), j - letters.size()));
+      r.kind = rest.empty() ? MoorDynRodKind::Fixed : MoorDynRodKind::Pinned;
+    } else if (letters == "TURBINE") {
+      fail(n, key("Attachment"), fmt::format("'{}': rods on turbines (FAST.Farm) are not supported", w[2]));
     } else {
       fail(n, key("Attachment"),
            fmt::format("unknown rod type '{}' (expected Fixed/Anchor, Pinned, Free, Coupled/Vessel or "
@@ -500,10 +611,14 @@ class DeckParser {
       p.kind = MoorDynPointKind::Coupled;
     } else if (letters == "POINT" || letters == "CONNECT" || letters == "CON" || letters == "FREE") {
       p.kind = MoorDynPointKind::Free;
-    } else if (letters == "BODY" || letters == "TURBINE") {
-      fail(n, key("Attachment"),
-           fmt::format("'{}': points on MoorDyn bodies are not supported (tangle's rigid bodies are vessels)",
-                       w[1]));
+    } else if (letters == "BODY" || letters == "B") {
+      p.kind = MoorDynPointKind::Body;
+      const std::string digits = kind.substr(letters.size());
+      if (digits.empty())
+        fail(n, key("Attachment"), fmt::format("'{}': expected the body's number, e.g. Body1", w[1]));
+      p.body = integer(n, key("Attachment"), digits);
+    } else if (letters == "TURBINE") {
+      fail(n, key("Attachment"), fmt::format("'{}': points on turbines (FAST.Farm) are not supported", w[1]));
     } else {
       fail(n, key("Attachment"),
            fmt::format("unknown point type '{}' (expected Fixed/Anchor, Coupled/Vessel/Fairlead or "
@@ -560,7 +675,10 @@ class DeckParser {
       return a;
     }
     if (letters == "B" || letters == "BODY")
-      fail(n, key, fmt::format("'{}': lines attached to bodies are not supported by tangle", word));
+      fail(n, key,
+           fmt::format(
+               "'{}': a line end on a body itself: attach it to a point on the body (Body<n> in POINTS)",
+               word));
     if (!(letters.empty() || letters == "C" || letters == "CON" || letters == "P" || letters == "POINT"))
       fail(n, key, fmt::format("'{}': expected a point number (e.g. 3 or P3) or a rod end (e.g. R1A)", word));
     Attachment a;

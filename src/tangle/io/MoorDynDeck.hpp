@@ -12,6 +12,7 @@
 ///
 /// Units as in MoorDyn: SI (m, kg, N, s).
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -46,13 +47,42 @@ enum class MoorDynPointKind {
   Fixed,    ///< Fixed / Anchor
   Coupled,  ///< Coupled / Vessel / Fairlead: moved by the host program (held where the deck puts it
             ///< standalone)
-  Free      ///< Free / Point / Connect: solved for, with its own mass, volume, drag and added mass
+  Free,     ///< Free / Point / Connect: solved for, with its own mass, volume, drag and added mass
+  Body      ///< Body<n>: fixed to body n, its position relative to the body's reference point, body axes
+};
+
+/// How a MoorDyn body is held (MoorDyn2.cpp, readBody).
+enum class MoorDynBodyKind {
+  Free,          ///< anything else (Free, Point, ...): 6 degrees of freedom
+  Fixed,         ///< Fixed / Anchor
+  Coupled,       ///< Coupled / Vessel: moved by the host (held where the deck puts it standalone)
+  CoupledPinned  ///< CoupledPinned / VesselPinned: its reference point moved by the host, free to rotate
+};
+
+/// One BODIES row: a rigid body with its own mass, inertia, volume, drag and added mass, to which points
+/// and rods may be fixed (MoorDyn's Body.cpp: its net weight (rho V - M) g acts at its centre of gravity,
+/// drag and added mass at its reference point).
+struct MoorDynBody {
+  int id = 0;
+  MoorDynBodyKind kind = MoorDynBodyKind::Free;
+  std::string kindWord;                 ///< as written
+  Vec3 position = Vec3::Zero();         ///< X0, Y0, Z0: the reference point [m]
+  Vec3 rotation = Vec3::Zero();         ///< r0, p0, y0 [deg]: R = Rx(r0) Ry(p0) Rz(y0) (MoorDyn's Euler2Quat)
+  double mass = 0.0;                    ///< [kg]
+  Vec3 centreOfGravity = Vec3::Zero();  ///< CG: from the reference point, body axes [m] (one value: z)
+  Vec3 inertia = Vec3::Zero();          ///< I: about the centre of gravity, body axes [kg m^2]
+  double volume = 0.0;                  ///< [m^3]
+  std::array<double, 6>
+      dragArea{};  ///< CdA: x, y, z [m^2] and roll, pitch, yaw [m^5] (MoorDyn's F = 1/2 rho CdA |v| v)
+  Vec3 addedMass = Vec3::Zero();  ///< Ca: x, y, z [-] on the volume
+  int sourceLine = 0;
 };
 
 /// One POINTS row.
 struct MoorDynPoint {
   int id = 0;
   MoorDynPointKind kind = MoorDynPointKind::Fixed;
+  int body = 0;  ///< the body of a Body point (its position is then relative to the body, body axes)
   std::string kindWord;          ///< the attachment word as written (e.g. "Vessel")
   Vec3 position = Vec3::Zero();  ///< [m]
   double mass = 0.0;             ///< [kg]
@@ -76,8 +106,8 @@ struct MoorDynRodType {
 
 /// How a MoorDyn rod is held (MoorDyn2.cpp, the RODS list).
 enum class MoorDynRodKind {
-  Fixed,          ///< Fixed / Anchor: does not move
-  Pinned,         ///< Pinned: end A held, free to rotate about it
+  Fixed,          ///< Fixed / Anchor: does not move; Body<n>: fixed to body n
+  Pinned,         ///< Pinned: end A held, free to rotate about it; Body<n>Pinned: end A on body n
   Free,           ///< Free: 6 degrees of freedom (its roll is not modelled)
   Coupled,        ///< Coupled / Vessel: moved by the host (held where the deck puts it standalone)
   CoupledPinned,  ///< CoupledPinned / VesselPinned: end A moved by the host, free to rotate about it
@@ -89,6 +119,7 @@ struct MoorDynRod {
   std::string rodType;
   MoorDynRodKind kind = MoorDynRodKind::Fixed;
   std::string kindWord;      ///< the attachment word as written (e.g. "Pinned")
+  int body = 0;              ///< Body<n>(Pinned): the body (its ends are then relative to it, body axes)
   Vec3 endA = Vec3::Zero();  ///< [m]
   Vec3 endB = Vec3::Zero();  ///< [m]
   int segments = 0;          ///< NumSegs (0 for a zero-length rod)
@@ -136,6 +167,7 @@ struct MoorDynDeck {
   std::string file;   ///< path (used in messages)
   std::string title;  ///< the first line after the file's first line of dashes, if any
   std::vector<MoorDynLineType> lineTypes;
+  std::vector<MoorDynBody> bodies;  ///< ids 1..n in order
   std::vector<MoorDynRodType> rodTypes;
   std::vector<MoorDynRod> rods;      ///< ids 1..n in order
   std::vector<MoorDynPoint> points;  ///< ids 1..n in order

@@ -132,6 +132,12 @@ struct VesselSpec {
   std::array<double, 6> motionPhase{};      ///< [rad]
   double motionPeriod = 10.0;               ///< [s]
   bool heldInStatics = false;  ///< a free vessel held at its position in statics (a DP unit on station), released at t = 0
+  /// A submerged body (vessels[].displaced_volume; OrcaFlex 6D buoy, MoorDyn body), free vessels only: its
+  /// weight M g at the reference point (its centre of gravity) and its buoyancy rho g V at centreOfBuoyancy
+  /// act on it, constant at any depth [m^3]. NaN: a floating unit, whose weight its displacement balances at
+  /// the initial position (hydrostaticStiffness restores it about there).
+  double displacedVolume = std::numeric_limits<double>::quiet_NaN();
+  Vec3 centreOfBuoyancy = Vec3::Zero();  ///< from the reference point, vessel axes [m]
   /// Solids of its hull that lines and other hulls touch (vessels[].hull), vessel axes; empty: none.
   std::vector<geometry::HullShape> hull;
   int sourceLine = 0;

@@ -113,6 +113,12 @@ VesselLoads::VesselLoads(const model::VesselSpec& vessel, const model::Environme
     checkNonNegative(n, fmt::format("currentAreas[{}]", i), vessel.currentAreas(i));
     checkNonNegative(n, fmt::format("windAreas[{}]", i), vessel.windAreas(i));
   }
+  if (!std::isnan(vessel.displacedVolume)) {
+    checkNonNegative(n, "displacedVolume", vessel.displacedVolume);
+    m_weight = vessel.mass * environment.gravity;
+    m_buoyancy = environment.waterDensity * environment.gravity * vessel.displacedVolume;
+    m_centreOfBuoyancy = vessel.centreOfBuoyancy;
+  }
   checkNonNegative(n, "environment.waterDensity", environment.waterDensity);
   checkNonNegative(n, "environment.airDensity", environment.airDensity);
   checkNonNegative(n, "environment.windSpeed", environment.windSpeed);
@@ -136,9 +142,20 @@ BodyLoad VesselLoads::loads(const Vec3& position, const Mat3& rotation, const Ve
   BodyLoad out;
   const Mat3& r = rotation;
 
+  // --- A submerged body's weight (at the reference point) and buoyancy (at its centre of buoyancy), never
+  // ramped. The moment of a constant force F at r = R c turns with the body: d(r x F)/d(dtheta) =
+  // r F^T - (r . F) I, so -d/d(dtheta) adds (r . F) I - r F^T.
+  if (m_weight != 0.0 || m_buoyancy != 0.0) {
+    const Vec3 lift(0.0, 0.0, m_buoyancy);
+    const Vec3 arm = r * m_centreOfBuoyancy;
+    out.force(2) += m_buoyancy - m_weight;
+    out.force.tail<3>() += arm.cross(lift);
+    out.stiffness.block<3, 3>(3, 3) += arm.dot(lift) * Mat3::Identity() - arm * lift.transpose();
+  }
+
   // --- Hydrostatic restoring (Faltinsen 1990, ch. 2), about the initial equilibrium.
-  out.force(2) = -m_hydrostatic[2] * (position.z() - initialPosition.z());
-  out.stiffness(2, 2) = m_hydrostatic[2];
+  out.force(2) += -m_hydrostatic[2] * (position.z() - initialPosition.z());
+  out.stiffness(2, 2) += m_hydrostatic[2];
   const double k44 = m_hydrostatic[3];
   const double k55 = m_hydrostatic[4];
   if (k44 != 0.0 || k55 != 0.0) {

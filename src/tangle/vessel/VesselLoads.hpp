@@ -14,9 +14,11 @@
 /// pushing the vessel along +x_vessel, +y_vessel and turning it anticlockwise about +z_vessel: a flow
 /// towards +x_vessel (heading 0) with Cx(0) = +1 gives a force along +x_vessel.
 ///
-/// Not included: the vessel weight and the buoyancy at the initial position (they balance each other
-/// there; only the hydrostatic restoring about that equilibrium is modelled), the centre-of-gravity
-/// offset (VesselSpec has none: mass and inertia act about the reference point), gyroscopic terms
+/// Not included for a floating unit: its weight and its buoyancy at the initial position (they balance each
+/// other there; only the hydrostatic restoring about that equilibrium is modelled). A submerged body
+/// (VesselSpec::displacedVolume) carries both: its weight at the reference point, its buoyancy at the centre
+/// of buoyancy. Not included either: a centre-of-gravity offset (mass and inertia act about the reference
+/// point), gyroscopic terms
 /// omega x (I omega) (left to the integrator/assembler), wave-frequency (first-order) loads (the
 /// first-order motion is superposed with RaoMotion instead).
 
@@ -79,6 +81,9 @@ class VesselLoads {
   ///   M_z = 1/2 rho V^2 Cmz(beta) A_y L, in vessel axes, rotated to global. Yaw rate is neglected.
   /// - wind: same form with the air density, the wind from EnvironmentSpec (speed, azimuth), windAreas
   ///   and windCoefficients; the relative wind (wind - vessel velocity) is used (aerodynamic damping).
+  /// - a submerged body's weight -M g e_z at the reference point and buoyancy rho g V e_z at r_b = R c_b
+  ///   (VesselSpec::centreOfBuoyancy), constant: moment r_b x F_b, whose derivative in the rotation increment
+  ///   gives the stiffness (r_b . F_b) I - r_b F_b^T (a pendulum's restoring, exact).
   /// - mean wave drift (Faltinsen 1990, ch. 5: proportional to the amplitude squared):
   ///   (F_x, F_y, M_z) = waveDrift(beta_w) * a^2 in vessel axes, beta_w = direction of wave travel in
   ///   vessel axes (azimuth - vessel yaw), rotated to global.
@@ -105,6 +110,9 @@ class VesselLoads {
   Vec3 m_windScale;     // 1/2 rho_a (A_x, A_y, A_y L) [kg/m]
   Vec3 m_windVelocity;  // global [m/s]
   model::HeadingTable m_waveDrift;
+  double m_weight = 0.0;                   // a submerged body's M g [N] (0: a floating unit)
+  double m_buoyancy = 0.0;                 // and its rho g V [N]
+  Vec3 m_centreOfBuoyancy = Vec3::Zero();  // vessel axes [m]
 };
 
 }  // namespace tangle::vessel

@@ -304,7 +304,7 @@ TEST(MoorDynDeck, AFreeRodIsAStiffBeamWhoseEndsArePoints) {
   EXPECT_DOUBLE_EQ(type->second.massPerLength, 80.0);
   EXPECT_DOUBLE_EQ(type->second.dragNormal, 1.6);
   EXPECT_DOUBLE_EQ(type->second.dragAxial, 0.0);
-  EXPECT_GE(type->second.axialStiffness, 1e3 * 1.0e9);  // 1000 x the stiffest line's EA
+  EXPECT_GE(type->second.axialStiffness, 1e2 * 1.0e9);  // 100 x the stiffest line's EA
   EXPECT_GT(type->second.bendingStiffness, 0.0);
   // The maps: the deck's two points only; the rod is line rod1.
   EXPECT_EQ(c.points.size(), 2u);
@@ -396,10 +396,95 @@ TEST(MoorDynDeck, RefusesRodsItCannotRepresentNamingTheEntry) {
                 24, "same rod end");
 }
 
-TEST(MoorDynDeck, RefusesBodiesAndPointsOnThem) {
-  expectRefused("---- LINE TYPES ----\na\nb\nchain 0.2 200 1e9 -1 0 1 1 0 0\n---- BODIES ----\nID\n", 5,
-                "bodies are not supported");
-  expectRefused(deck("1 Body1 0 0 -10 0 0 0 0\n", "1 chain 1 1 320 40 -\n"), 11, "Body1");
+/// A BODIES section (after the line types) with these rows.
+std::string bodies(const std::string& rows) {
+  return "---------------------------- BODIES -----------------------------------------------------\n"
+         "ID Attachment X0 Y0 Z0 r0 p0 y0 Mass CG* I* Volume CdA* Ca*\n"
+         "(#) (-) (m) (m) (m) (deg) (deg) (deg) (kg) (m) (kg-m^2) (m^3) (m^2) (-)\n" +
+         rows;
+}
+
+TEST(MoorDynDeck, AFreeBodyIsASubmergedFreeVessel) {
+  // Body 1: 2 t, its CG 1 m below its reference point, I 500|600|700, 3 m^3, CdA 0.4|0.2, Ca 0.5; a 1 t point
+  // on it 2 m along x (no line), a line to its point 3 m along y. Body 2 fixed at (10, 0, -40), turned 90 deg
+  // in yaw: its point at x = 1 is at (10, 1, -40), a pinned end.
+  const std::string points = kTwoPoints +
+                             "3 Body1 2 0 0 1000 0.5 0 0\n"
+                             "4 Body1 0 3 0 0 0 0 0\n"
+                             "5 Body2 1 0 0 0 0 0 0\n";
+  const MoorDynConversion c = convertMoorDynDeck(
+      parseMoorDynDeck(deck(points, "1 chain 1 4 300 30 -\n2 rope 2 5 50 5 -\n", "",
+                            bodies("1 Free 0 0 -50 0 0 0 2000 -1 500|600|700 3 0.4|0.2 0.5\n"
+                                   "2 Fixed 10 0 -40 0 0 90 0 0 0 0 0 0\n")),
+                       "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  ASSERT_EQ(spec.vessels.size(), 1u);
+  const model::VesselSpec& v = spec.vessels[0];
+  EXPECT_EQ(v.name, "body1");
+  EXPECT_EQ(v.mode, model::VesselMode::Free);
+  // Reference point: the centre of gravity of the body (at z -1) and the point mass (at x 2).
+  const Vec3 cg = (2000.0 * Vec3(0.0, 0.0, -51.0) + 1000.0 * Vec3(2.0, 0.0, -50.0)) / 3000.0;
+  EXPECT_NEAR((v.position - cg).norm(), 0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(v.mass, 3000.0);
+  // Inertia about it: the body's own plus both masses' parallel-axis terms.
+  const Vec3 d1 = Vec3(0.0, 0.0, -51.0) - cg, d2 = Vec3(2.0, 0.0, -50.0) - cg;
+  const auto parallel = [&](int k) {
+    const auto arm = [&](const Vec3& d) { return d.squaredNorm() - d[k] * d[k]; };
+    return 2000.0 * arm(d1) + 1000.0 * arm(d2);
+  };
+  EXPECT_NEAR(v.inertia.x(), 500.0 + parallel(0), 1e-6);
+  EXPECT_NEAR(v.inertia.y(), 600.0 + parallel(1), 1e-6);
+  EXPECT_NEAR(v.inertia.z(), 700.0 + parallel(2), 1e-6);
+  // Buoyancy: the body's 3 m^3 at its CG and the point's 0.5 m^3 at its place.
+  EXPECT_DOUBLE_EQ(v.displacedVolume, 3.5);
+  const Vec3 cb = (3.0 * Vec3(0.0, 0.0, -51.0) + 0.5 * Vec3(2.0, 0.0, -50.0)) / 3.5 - cg;
+  EXPECT_NEAR((v.centreOfBuoyancy - cb).norm(), 0.0, 1e-9);
+  EXPECT_NEAR(v.addedMass[0], 0.5 * 1025.0 * 3.0, 1e-9);
+  EXPECT_DOUBLE_EQ(v.addedMass[3], 0.0);
+  EXPECT_NEAR(v.quadraticDamping[0], 0.5 * 1025.0 * 0.4, 1e-9);
+  EXPECT_NEAR(v.quadraticDamping[4], 0.5 * 1025.0 * 0.2, 1e-9);
+  // The line to point 4 ends on the vessel, 3 m along y from the deck's reference point.
+  EXPECT_EQ(spec.lines[0].endB.kind, model::EndKind::Vessel);
+  EXPECT_EQ(spec.lines[0].endB.vessel, "body1");
+  EXPECT_NEAR((spec.lines[0].endB.position - (Vec3(0.0, 3.0, -50.0) - cg)).norm(), 0.0, 1e-9);
+  // On the fixed body, turned 90 deg: a pinned end where the deck's point is.
+  EXPECT_EQ(spec.lines[1].endB.kind, model::EndKind::Pinned);
+  EXPECT_NEAR((spec.lines[1].endB.position - Vec3(10.0, 1.0, -40.0)).norm(), 0.0, 1e-9);
+}
+
+TEST(MoorDynDeck, RodsOnAFreeBodyEndOnItsVessel) {
+  // Rod 1 fixed to body 1 (a stiff line with both ends on the vessel), rod 2 pinned to it (end A on the
+  // vessel, end B where a line joins it).
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
+      deck(kTwoPoints + "3 Body1 0 0 0 0 0 0 0\n", "1 chain 1 3 300 30 -\n2 rope 2 R2B 60 6 -\n", "",
+           bodies("1 Free 0 0 -50 0 0 0 5000 0 1e4 2 0 0\n") +
+               rods("1 pipe Body1 0 0 0 0 0 -10 2 -\n2 pipe Body1Pinned 0 0 0 5 0 0 2 -\n")),
+      "deck.txt"));
+  const model::ModelSpec spec = readModelString(c.yaml, "converted.yaml");
+  ASSERT_GE(spec.lines.size(), 4u);
+  EXPECT_EQ(spec.lines[0].name, "rod1");
+  EXPECT_EQ(spec.lines[0].endA.kind, model::EndKind::Vessel);
+  EXPECT_EQ(spec.lines[0].endB.kind, model::EndKind::Vessel);
+  EXPECT_NEAR((spec.lines[0].endB.position - Vec3(0.0, 0.0, -10.0)).norm(), 0.0, 1e-9);
+  EXPECT_EQ(spec.lines[1].name, "rod2");
+  EXPECT_EQ(spec.lines[1].endA.kind, model::EndKind::Vessel);
+  EXPECT_EQ(spec.lines[1].endB.kind, model::EndKind::Point);
+  EXPECT_EQ(spec.lines[1].endB.point, "rod2b");
+}
+
+TEST(MoorDynDeck, RefusesBodiesItCannotRepresentNamingTheEntry) {
+  const std::string body = bodies("1 Free 0 0 -50 0 0 0 5000 0 1e4 2 0 0\n");
+  expectRefused(deck(kTwoPoints, "1 chain 1 B1 300 30 -\n", "", body), 20, "point on the body");
+  expectRefused(deck(kTwoPoints + "3 Body2 0 0 0 0 0 0 0\n", "1 chain 1 3 300 30 -\n", "", body), 17,
+                "body 2 does not exist");
+  expectRefused(
+      deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", bodies("1 Free 0 0 -50 0 0 0 5000 0|1 1e4 2 0 0\n")), 11,
+      "CG");
+  expectRefused(
+      deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", bodies("1 Free 0 0 -50 0 0 0 -5 0 1e4 2 0 0\n")), 11,
+      "mass >= 0");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 300 30 -\n", "", bodies("1 Free 0 0 -50 0 0 0 5\n")), 11,
+                "14 columns");
 }
 
 TEST(MoorDynDeck, AnEACurveFileBecomesATensionStrainCurve) {

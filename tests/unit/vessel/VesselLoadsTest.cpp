@@ -167,6 +167,45 @@ TEST(VesselLoads, StiffnessMatchesFiniteDifferencesForTinyTilt) {
   EXPECT_LT((b.stiffness - fd).cwiseAbs().maxCoeff(), 1e-6 * scale) << "analytic\n" << b.stiffness << "\nfd\n" << fd;
 }
 
+// Source: statics of a rigid body (a submerged body, VesselSpec::displacedVolume): its weight -M g e_z at the
+// reference point and its buoyancy rho g V e_z at R c_b give the force (0, 0, rho g V - M g) and the moment
+// (R c_b) x (rho g V e_z); the stiffness is the central difference of that moment in the rotation (tolerance
+// as above). Tilted by 0.3 rad, the buoyancy 2 m above the reference point rights it: the moment about x is
+// -rho g V 2 sin(0.3) for a roll of +0.3 (a pendulum's), and the stiffness at rest upright is
+// diag(rho g V 2, rho g V 2, 0) (metacentric height 2 m).
+TEST(VesselLoads, SubmergedBodyCarriesItsWeightAndBuoyancy) {
+  model::VesselSpec v;
+  v.name = "buoy";
+  v.mode = model::VesselMode::Free;
+  v.mass = 8000.0;
+  v.inertia = Vec3(2.0e4, 2.0e4, 1.0e4);
+  v.displacedVolume = 12.0;
+  v.centreOfBuoyancy = Vec3(0.0, 0.0, 2.0);
+  const model::EnvironmentSpec env = environment();
+  const VesselLoads loads(v, env);
+  const double lift = env.waterDensity * env.gravity * 12.0;
+  const BodyLoad upright = loads.loads(Vec3(1.0, 2.0, -50.0), Mat3::Identity(), Vec6::Zero(), Vec3::Zero(),
+                                       Mat3::Identity(), Vec3::Zero(), 0.0, 0.0, 0.0);
+  EXPECT_NEAR(upright.force(2), lift - 8000.0 * env.gravity, 1e-9 * lift);
+  EXPECT_NEAR(upright.force.head<2>().norm() + upright.force.tail<3>().norm(), 0.0, 1e-9 * lift);
+  EXPECT_NEAR(upright.stiffness(3, 3), 2.0 * lift, 1e-9 * lift);
+  EXPECT_NEAR(upright.stiffness(4, 4), 2.0 * lift, 1e-9 * lift);
+  EXPECT_NEAR(upright.stiffness(5, 5), 0.0, 1e-9 * lift);
+  const Mat3 rolled = rotX(0.3);
+  const BodyLoad tilted = loads.loads(Vec3::Zero(), rolled, Vec6::Zero(), Vec3::Zero(), Mat3::Identity(),
+                                      Vec3::Zero(), 0.0, 0.0, 0.0);
+  EXPECT_NEAR(tilted.force(3), -lift * 2.0 * std::sin(0.3), 1e-9 * lift);
+  const Mat3 r = rotZ(0.4) * rotY(-0.2) * rotX(0.3);
+  const BodyLoad b =
+      loads.loads(Vec3::Zero(), r, Vec6::Zero(), Vec3::Zero(), Mat3::Identity(), Vec3::Zero(), 0.0, 0.0, 0.0);
+  const Mat6 fd = finiteDifferenceStiffness(loads, Vec3::Zero(), r, Vec6::Zero(), Vec3::Zero(),
+                                            Mat3::Identity(), Vec3::Zero(), 0.0, 0.0, 0.0);
+  EXPECT_LT((b.stiffness - fd).cwiseAbs().maxCoeff(), 1e-6 * fd.cwiseAbs().maxCoeff())
+      << "analytic\n"
+      << b.stiffness << "\nfd\n"
+      << fd;
+}
+
 // Source: at the equilibrium the rotational hydrostatic stiffness is R0 diag(K44, K55, 0) R0^T.
 TEST(VesselLoads, HydrostaticStiffnessAtEquilibrium) {
   model::VesselSpec spec = vesselSpec();
