@@ -1091,31 +1091,39 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   // Rods that move (pinned or free, of length > 0): MoorDyn's rigid cylinder as a stiff beam line. Its
   // stiffness is set by its own load scale q = (m + rho pi/4 d^2) g [N/m] over its length L, so that its
   // sag under that load is about 1e-7 L (EI = 1e5 q L^3: 5/384 q L^4 / EI) and its stretch about 1e-7
-  // (EA = 1e7 q L), and at least 100 times the stiffest line type's EA (the lines pulling on it); both at
-  // most 1e13.
-  double lineAxial = 0.0;
-  for (const MoorDynLineType& t : deck.lineTypes) lineAxial = std::max(lineAxial, t.axialStiffness);
+  // (EA = 1e7 q L), and its elements at least 100 times as stiff axially as the stiffest line segment (EA /
+  // h) that pulls on it; both at most 1e13. (Stiffer still would only raise the round-off of the links that
+  // tie the lines to it, 100 x its own elements' EA / h: a 0.2 m clamp rod at 100 x its lines' EA left the
+  // riser decks' statics at a 13 N round-off floor.)
+  double lineSegmentStiffness = 0.0;  // the largest EA / h of the deck's line segments [N/m]
+  for (const MoorDynLine& l : deck.lines)
+    for (const MoorDynLineType& t : deck.lineTypes)
+      if (t.name == l.lineType)
+        lineSegmentStiffness = std::max(lineSegmentStiffness, t.axialStiffness * l.segments / l.length);
   std::set<std::string> rodTypesWritten;
   for (const MoorDynRodType& t : deck.rodTypes) {
-    double rodLength = 0.0;
+    double rodLength = 0.0, rodElement = std::numeric_limits<double>::infinity();
     for (const MoorDynRod& rod : deck.rods)
-      if (rod.rodType == t.name && rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)])
+      if (rod.rodType == t.name && rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)]) {
         rodLength = std::max(rodLength, rod.length());
+        rodElement = std::min(rodElement, rod.length() / rod.segments);
+      }
     if (rodLength == 0.0) continue;
     rodTypesWritten.insert(t.name);
     const double q = (t.massPerLength + opt.density * circleArea(t.diameter)) * std::max(opt.gravity, 1.0);
     // At most tangle's largest stiffness, 1e13 (a 10 m diameter can's sag is then still 1e-8 of its length).
-    const double axial = std::min(std::max({1e7 * q * rodLength, 1e2 * lineAxial, 1e6}), 1e13);
+    const double axial =
+        std::min(std::max({1e7 * q * rodLength, 1e2 * lineSegmentStiffness * rodElement, 1e6}), 1e13);
     const double bending = std::min(std::max(1e5 * q * rodLength * rodLength * rodLength, 1e3), 1e13);
     line(fmt::format(
         "  - name: {}                # rod type {} (deck line {}): MoorDyn's rigid rod as a stiff beam",
         yamlQuoted("rod-" + t.name), t.name, t.sourceLine));
     line(fmt::format("    outer_diameter: {}      # Diam", num(t.diameter)));
     line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
-    line(
-        fmt::format("    axial_stiffness: {}     # rigid: max(1e7 q L, 100 x the largest line EA), q = (m + "
-                    "rho pi/4 d^2) g, L = {} m",
-                    num(axial), num(rodLength)));
+    line(fmt::format(
+        "    axial_stiffness: {}     # rigid: max(1e7 q L, 100 x the stiffest line segment's EA / h x "
+        "its element {} m), q = (m + rho pi/4 d^2) g, L = {} m",
+        num(axial), num(rodElement), num(rodLength)));
     line(fmt::format("    bending_stiffness: {}   # rigid: 1e5 q L^3 (sag about 1e-7 L)", num(bending)));
     line(fmt::format("    drag_normal: {}         # Cd", num(t.drag)));
     line("    drag_axial: 0             # a rod's side has no axial drag (CdEnd at its ends)");

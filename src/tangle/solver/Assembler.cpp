@@ -126,6 +126,7 @@ void Assembler::nodeRoundoffFloor(const model::State& state, std::vector<double>
   }
   for (int n = 0; n < m_model->nodeCount(); ++n)
     if (m_model->lineOfNode(n) < 0) floor[n] = largest;
+  for (const LoadContributor* c : m_contributors) c->raiseRoundoffFloor(state, floor);
 }
 
 void Assembler::beginStatics(const model::State& state) {

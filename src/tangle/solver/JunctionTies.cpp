@@ -1,5 +1,8 @@
 #include "tangle/solver/JunctionTies.hpp"
 
+#include <algorithm>
+#include <limits>
+
 namespace tangle::solver {
 
 JunctionTies::JunctionTies(const model::Model& model) : m_model(&model) {}
@@ -39,6 +42,16 @@ VecX JunctionTies::tieForces(const model::State& state) const {
   VecX force = VecX::Zero(m_model->dofs().fullDofCount());
   addTies(state, 1.0, force, nullptr);
   return force;
+}
+
+void JunctionTies::raiseRoundoffFloor(const model::State& state, std::vector<double>& floor) const {
+  for (const model::NodeTie& t : m_model->ties()) {
+    const double x = std::max(state.position[static_cast<std::size_t>(t.node)].cwiseAbs().maxCoeff(),
+                              state.position[static_cast<std::size_t>(t.carrier)].cwiseAbs().maxCoeff());
+    const double f = 16.0 * std::numeric_limits<double>::epsilon() * t.stiffness * x;
+    for (const int n : {t.node, t.carrier})
+      floor[static_cast<std::size_t>(n)] = std::max(floor[static_cast<std::size_t>(n)], f);
+  }
 }
 
 }  // namespace tangle::solver

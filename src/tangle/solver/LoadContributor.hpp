@@ -124,6 +124,10 @@ class LoadContributor {
   /// True if limitIncrement must also filter the Newton corrections of dynamics (a barrier that no iterate
   /// may jump past); the dynamics then calls it with the correction of the displacements.
   virtual bool limitsDynamicIncrements() const { return false; }
+  /// Raises `floor` [N] (per node) to the round-off of this contributor's stiffest springs at the nodes they
+  /// act on, 16 eps k |x| as an element's (Assembler::nodeRoundoffFloor): a penalty link 100 times as stiff
+  /// as a line's end element leaves 100 times its round-off in the out-of-balance force there.
+  virtual void raiseRoundoffFloor(const model::State& /*state*/, std::vector<double>& /*floor*/) const {}
   /// Statics starts (or restarts, or reverts to its last converged increment) from `state`: the reference
   /// for rejectState until the next commitIncrement (a contributor that tracks crossings compares with it).
   virtual void beginStatic(const model::State& /*state*/) {}

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "tangle/core/Ramp.hpp"
 #include "tangle/geometry/Rotation.hpp"
@@ -290,6 +291,19 @@ BodyLoad VesselSystem::bodyLoad(const model::State& state, const VesselData& d,
           .velocity;
   return d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0,
                         current, m_waveAmplitude, m_waveAzimuth, 1.0);
+}
+
+void VesselSystem::raiseRoundoffFloor(const model::State& state, std::vector<double>& floor) const {
+  for (const Connection& c : m_connections) {
+    const VesselData& d = m_vessels[static_cast<std::size_t>(c.vessel)];
+    if (d.spec->mode != model::VesselMode::Free) continue;
+    const double x =
+        std::max(state.position[static_cast<std::size_t>(c.node)].cwiseAbs().maxCoeff(),
+                 state.position[static_cast<std::size_t>(d.node)].cwiseAbs().maxCoeff() + c.offset.norm());
+    const double f = 16.0 * std::numeric_limits<double>::epsilon() * c.linkStiffness * x;
+    for (const int n : {c.node, d.node})
+      floor[static_cast<std::size_t>(n)] = std::max(floor[static_cast<std::size_t>(n)], f);
+  }
 }
 
 Vec6 VesselSystem::holdLoad(const model::State& state, const VesselData& d) const {

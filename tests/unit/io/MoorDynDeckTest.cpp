@@ -304,7 +304,8 @@ TEST(MoorDynDeck, AFreeRodIsAStiffBeamWhoseEndsArePoints) {
   EXPECT_DOUBLE_EQ(type->second.massPerLength, 80.0);
   EXPECT_DOUBLE_EQ(type->second.dragNormal, 1.6);
   EXPECT_DOUBLE_EQ(type->second.dragAxial, 0.0);
-  EXPECT_GE(type->second.axialStiffness, 1e2 * 1.0e9);  // 100 x the stiffest line's EA
+  EXPECT_GE(type->second.axialStiffness,
+            1e2 * 1.0e9 / 10.0 * 5.0);  // 100 x the stiffest segment (chain, 10 m) over its 5 m elements
   EXPECT_GT(type->second.bendingStiffness, 0.0);
   // The maps: the deck's two points only; the rod is line rod1.
   EXPECT_EQ(c.points.size(), 2u);
