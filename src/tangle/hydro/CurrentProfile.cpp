@@ -3,6 +3,8 @@
 
 #include "tangle/hydro/CurrentProfile.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -93,7 +95,33 @@ Vec3 CurrentProfile::profileVelocity(double z) const {
 }
 
 bool CurrentProfile::isZero() const {
+  if (!m_snapshots.empty())
+    return std::all_of(m_snapshots.begin(), m_snapshots.end(),
+                       [](const CurrentProfile& p) { return p.isZero(); });
   return std::all_of(m_levels.begin(), m_levels.end(), [](const CurrentLevel& l) { return l.speed == 0.0; });
+}
+
+Vec3 CurrentProfile::velocity(double z, double t) const {
+  if (m_times.empty()) return velocity(z);
+  if (t <= m_times.front()) return m_snapshots.front().velocity(z);
+  if (t >= m_times.back()) return m_snapshots.back().velocity(z);
+  const std::size_t k =
+      static_cast<std::size_t>(std::upper_bound(m_times.begin(), m_times.end(), t) - m_times.begin()) - 1;
+  const double f = (t - m_times[k]) / (m_times[k + 1] - m_times[k]);
+  return (1.0 - f) * m_snapshots[k].velocity(z) + f * m_snapshots[k + 1].velocity(z);
+}
+
+CurrentProfile CurrentProfile::withHistory(std::vector<double> times, std::vector<CurrentProfile> profiles) {
+  if (times.empty() || times.size() != profiles.size())
+    throw Error(fmt::format("current history: {} times and {} profiles (at least one of each, as many)",
+                            times.size(), profiles.size()));
+  for (std::size_t k = 1; k < times.size(); ++k)
+    if (!(times[k] > times[k - 1]))
+      throw Error(fmt::format("current history: time {} s does not follow {} s", times[k], times[k - 1]));
+  CurrentProfile out = profiles.front();
+  out.m_times = std::move(times);
+  out.m_snapshots = std::move(profiles);
+  return out;
 }
 
 }  // namespace tangle::hydro

@@ -1,6 +1,7 @@
 #pragma once
 /// @file CurrentProfile.hpp
-/// Steady current: horizontal velocity varying piecewise-linearly with the vertical coordinate.
+/// Current: horizontal velocity varying piecewise-linearly with the vertical coordinate, steady or changing
+/// in time through a history of such profiles.
 
 #include <vector>
 
@@ -37,8 +38,20 @@ class CurrentProfile {
   static CurrentProfile uniform(double speed, double azimuth);
 
   /// Horizontal current velocity [m/s] at global level z [m] (see the class comment for z outside the
-  /// levels).
+  /// levels); with a history, its first profile's (the statics' current).
   Vec3 velocity(double z) const { return m_levels.empty() ? Vec3::Zero() : profileVelocity(z); }
+
+  /// The velocity at level z [m] and time t [s]: with a history (withHistory), interpolated linearly in time
+  /// between the profiles before and after t, component by component (MoorDyn's dynamic current grid), and
+  /// the first or last profile's outside their times; otherwise velocity(z).
+  Vec3 velocity(double z, double t) const;
+
+  /// A current changing in time: `profiles` at increasing `times` [s] (at least one; the first is this
+  /// profile's steady value). @throws tangle::Error for times not increasing or sizes that differ
+  static CurrentProfile withHistory(std::vector<double> times, std::vector<CurrentProfile> profiles);
+
+  /// True when the current changes in time.
+  bool changes() const { return !m_times.empty(); }
 
   /// The levels, sorted by increasing z (deepest first); empty for no current.
   const std::vector<CurrentLevel>& levels() const { return m_levels; }
@@ -50,6 +63,8 @@ class CurrentProfile {
   /// velocity() with at least one level.
   Vec3 profileVelocity(double z) const;
   std::vector<CurrentLevel> m_levels;
+  std::vector<double> m_times;              // a history's times [s], increasing; empty: steady
+  std::vector<CurrentProfile> m_snapshots;  // and its profiles (steady ones)
   std::vector<double> m_unwrappedAzimuth;  // level azimuths made continuous along the shorter arcs [rad]
   std::vector<Vec2> m_unwrappedDirection;  // (cos, sin) of m_unwrappedAzimuth [-]
   Vec2 m_frontDirection = Vec2::UnitX();   // (cos, sin) of the lowest level's azimuth [-]

@@ -57,11 +57,22 @@ std::unique_ptr<WaveField> makeWaveField(const model::EnvironmentSpec& env) {
   return nullptr;
 }
 
-CurrentProfile makeCurrentProfile(const model::EnvironmentSpec& env) {
-  if (env.current.empty()) return CurrentProfile();
+CurrentProfile makeCurrentProfile(const std::vector<model::CurrentLevel>& current) {
+  if (current.empty()) return CurrentProfile();
   std::vector<CurrentLevel> levels;
-  for (const model::CurrentLevel& c : env.current) levels.push_back({c.z, c.speed, c.azimuth});
+  for (const model::CurrentLevel& c : current) levels.push_back({c.z, c.speed, c.azimuth});
   return CurrentProfile(levels);
+}
+
+CurrentProfile makeCurrentProfile(const model::EnvironmentSpec& env) {
+  if (env.currentHistory.empty()) return makeCurrentProfile(env.current);
+  std::vector<double> times;
+  std::vector<CurrentProfile> profiles;
+  for (const model::CurrentSnapshot& s : env.currentHistory) {
+    times.push_back(s.time);
+    profiles.push_back(makeCurrentProfile(s.levels));
+  }
+  return CurrentProfile::withHistory(std::move(times), std::move(profiles));
 }
 
 HydroLoads::HydroLoads(const model::Model& model)
@@ -96,7 +107,7 @@ double HydroLoads::surfaceAt(double x, double y, double t, bool dynamic) const {
 
 FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const {
   FluidKinematics k;
-  k.velocity = m_current.velocity(p.z());
+  k.velocity = m_current.velocity(p.z(), t);
   if (dynamic && m_waves) {
     const double r = core::ramp(t, m_rampTime).value;
     if (r > 0.0) {
@@ -198,7 +209,7 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     const Vec3 v1 = request.dynamic ? Vec3(state.velocity.segment<3>(d1)) : zero;
     const Vec3 v2 = request.dynamic ? Vec3(state.velocity.segment<3>(d2)) : zero;
     FluidKinematics fluid;
-    fluid.velocity = m_current.velocity(0.5 * (x1.z() + x2.z()));
+    fluid.velocity = m_current.velocity(0.5 * (x1.z() + x2.z()), request.time);
     if (m_wake) fluid.velocity += m_elementWake[e].velocityChange;
     if (!request.dynamic) fluid.velocity *= request.currentFactor;  // the statics' current continuation
     if (waves) {

@@ -608,6 +608,26 @@ std::vector<model::CurrentLevel> readCurrent(const Value& v) {
   return levels;
 }
 
+/// `current: {history: [{time, profile}, ...]}`: a current changing in time, each profile as `current`.
+std::vector<model::CurrentSnapshot> readCurrentHistory(const Value& v) {
+  const Map m(v, {"history"});
+  const Value list = m.get("history", "a list of {time, profile} (the current at increasing times)");
+  std::vector<model::CurrentSnapshot> out;
+  for (const Value& item : list.items(1)) {
+    const Map s(item, {"time", "profile"});
+    model::CurrentSnapshot snapshot;
+    const Value time = s.get("time", "a time in s");
+    snapshot.time = time.number(atLeast(0.0));
+    if (!out.empty() && !(snapshot.time > out.back().time))
+      time.fail(fmt::format("times must increase: {} s follows {} s", numberText(snapshot.time),
+                            numberText(out.back().time)));
+    snapshot.levels =
+        readCurrent(s.get("profile", "a list of levels {z, speed, azimuth} or a map {speed, azimuth}"));
+    out.push_back(std::move(snapshot));
+  }
+  return out;
+}
+
 model::WaveSpec readWaves(const Value& v, double waterDepth) {
   using model::WaveKind;
   static const std::vector<std::string> kAiryKeys{"height", "period", "phase"};
@@ -702,7 +722,14 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
   env.waterDensity = m.number("water_density", d.waterDensity, closed(500.0, 2000.0));
   env.gravity = m.number("gravity", d.gravity, closed(1.0, 30.0));
   if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env);
-  if (const std::optional<Value> current = m.find("current")) env.current = readCurrent(*current);
+  if (const std::optional<Value> current = m.find("current")) {
+    if (current->node().IsMap() && current->node()["history"]) {
+      env.currentHistory = readCurrentHistory(*current);
+      env.current = env.currentHistory.front().levels;
+    } else {
+      env.current = readCurrent(*current);
+    }
+  }
   if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves, env.waterDepth);
   if (const std::optional<Value> wind = m.find("wind")) {
     const Map w(*wind, {"speed", "azimuth", "air_density"});

@@ -59,7 +59,7 @@ struct Options {
   double friction = 0.0;              ///< FrictionCoefficient [-]
   double frictionDamping = 200.0;     ///< FricDamp [N s/m]
   double staticDynamicScale = 1.0;    ///< StatDynFricScale [-]
-  int currentMode = 0;                ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt
+  int currentMode = 0;  ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt, 2 a history
   int waveMode = 0;        ///< WaveKin 2, 3 or 7: components from wave_frequencies/wave_elevation.txt
   double waveStep = 0.25;  ///< dtWave [s]: the resampling of wave_elevation.txt (WaveKin 3)
   std::string seafloorFile;           ///< SeafloorFile, resolved to a readable path; empty: flat
@@ -122,8 +122,9 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
     } else if (name == "dtwave") {
       opt.waveStep = value();
       if (!(opt.waveStep > 0.0)) throw InputError(deck.file, o.sourceLine, o.name, "expected dtWave > 0 s");
-    } else if (name == "currents" && (value() == 1.0 || value() == 3.0)) {
-      // A steady profile, interpolated on a grid (1) or at the nodes (3): the same profile in tangle.
+    } else if (name == "currents" && (value() == 1.0 || value() == 2.0 || value() == 3.0)) {
+      // A steady profile, interpolated on a grid (1) or at the nodes (3): the same profile in tangle; one
+      // changing in time (2, current_profile_dynamic.txt): a current history.
       opt.currentMode = static_cast<int>(value());
     } else if (name == "wavekin" || name == "currents") {
       if (value() != 0.0)
@@ -370,10 +371,89 @@ std::vector<ProfileLevel> readCurrentProfile(const MoorDynDeck& deck, int option
   return levels;
 }
 
+/// MoorDyn's current_profile_dynamic.txt (Currents 2; Waves/WaveGrid.cpp, constructDynamicCurrentGrid): line
+/// 5 the levels z [m], from line 7 one row per time: t [s], ux at each level, then uy and uz at each level
+/// (each block optional: zero when missing). Returns the profiles at each time, levels above z = 0 left out.
+std::vector<std::pair<double, std::vector<ProfileLevel>>> readDynamicCurrent(
+    const MoorDynDeck& deck, int optionLine, std::vector<std::string>& notes) {
+  const std::string path =
+      (std::filesystem::path(deck.file).parent_path() / "current_profile_dynamic.txt").string();
+  std::ifstream in(path);
+  if (!in)
+    throw InputError(deck.file, optionLine, "Currents",
+                     fmt::format("a current changing in time is read from {}, which cannot be opened", path));
+  std::vector<std::string> lines;
+  for (std::string text; std::getline(in, text);) lines.push_back(text);
+  if (lines.size() < 7) throw InputError(path, 0, "", "expected at least 7 lines (MoorDyn's format)");
+  const auto numbers = [&](std::size_t row, const char* what) {
+    std::string text = lines[row];
+    for (char& c : text)
+      if (c == ',' || c == '\t' || c == '\r') c = ' ';
+    std::istringstream words(text);
+    std::vector<double> out;
+    for (std::string w; words >> w;) {
+      const std::optional<double> v = deckNumber(w);
+      if (!v)
+        throw InputError(path, static_cast<int>(row) + 1, what,
+                         fmt::format("expected a number, got '{}'", w));
+      out.push_back(*v);
+    }
+    return out;
+  };
+  const std::vector<double> z = numbers(4, "z");
+  if (z.empty()) throw InputError(path, 5, "z", "expected the levels z [m] on line 5");
+  std::vector<std::pair<double, std::vector<ProfileLevel>>> out;
+  int above = 0;
+  for (std::size_t row = 6; row < lines.size(); ++row) {
+    const std::vector<double> v = numbers(row, "t ux");
+    if (v.empty()) continue;
+    if (v.size() <= z.size())
+      throw InputError(
+          path, static_cast<int>(row) + 1, "t ux",
+          fmt::format("expected t and ux at each of the {} levels (then uy and uz), got {} numbers", z.size(),
+                      v.size()));
+    if (!out.empty() && !(v[0] > out.back().first))
+      throw InputError(
+          path, static_cast<int>(row) + 1, "t",
+          fmt::format("times must increase: {} s follows {} s", num(v[0]), num(out.back().first)));
+    std::vector<ProfileLevel> levels;
+    above = 0;
+    for (std::size_t k = 0; k < z.size(); ++k) {
+      ProfileLevel level;
+      level.z = z[k];
+      level.sourceLine = static_cast<int>(row) + 1;
+      const auto at = [&](std::size_t block) {
+        const std::size_t i = 1 + block * z.size() + k;
+        return i < v.size() && v.size() >= 1 + (block + 1) * z.size() ? v[i] : 0.0;
+      };
+      level.velocity = Vec3(at(0), at(1), at(2));
+      if (level.z > 0.0) {
+        ++above;
+        continue;
+      }
+      if (level.velocity.z() != 0.0)
+        throw InputError(path, static_cast<int>(row) + 1, "uz",
+                         "a vertical current is not supported (tangle's current is horizontal)");
+      levels.push_back(level);
+    }
+    if (levels.empty()) throw InputError(path, 5, "z", "no level at or below z = 0");
+    out.push_back({v[0], std::move(levels)});
+  }
+  if (out.empty()) throw InputError(path, 7, "t ux", "no time row");
+  if (above > 0)
+    notes.push_back(
+        fmt::format("{}: {} level(s) above the still water level (z > 0) left out: tangle's current "
+                    "profile ends at z = 0",
+                    path, above));
+  notes.push_back(
+      fmt::format("{}: the current after its last time ({} s) stays at its last profile in tangle", path,
+                  num(out.back().first)));
+  return out;
+}
+
 /// Largest seabed friction_velocity the model reader accepts [m/s].
 constexpr double kMaxFrictionVelocity = 10.0;
 
-/// One deck line placed in a chain of deck lines joined at free points.
 /// A MoorDyn body as a tangle vessel (docs/moordyn.md, bodies): a free body is a free vessel `body<id>` whose
 /// reference point is the centre of gravity of the body and the masses fixed to it; a fixed or coupled one
 /// holds what is fixed to it where the deck puts it.
@@ -651,6 +731,7 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, double density, std::vector<std
   return r;
 }
 
+/// One deck line placed in a chain of deck lines joined at free points.
 struct ChainEntry {
   int line = 0;           ///< index in deck.lines
   bool reversed = false;  ///< traversed from its end B to its end A
@@ -1019,7 +1100,29 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
           "WaveKin 2: the components are summed at each element (MoorDyn's WaveKin 7), not "
           "interpolated on an inverse-FFT grid");
   }
-  if (opt.currentMode != 0) {
+  if (opt.currentMode == 2) {
+    const auto history = readDynamicCurrent(deck, opt.lineOf.at("currents"), notes);
+    line(fmt::format(
+        "  current:                  # Currents 2 (deck line {}): current_profile_dynamic.txt, (ux, uy) as "
+        "speed and azimuth at each time",
+        opt.lineOf.at("currents")));
+    line("    history:");
+    for (const auto& [time, levels] : history) {
+      line(fmt::format("      - time: {}             # current_profile_dynamic.txt line {}", num(time),
+                       levels.front().sourceLine));
+      line("        profile:");
+      for (const ProfileLevel& l : levels) {
+        const double speed = std::hypot(l.velocity.x(), l.velocity.y());
+        const double azimuth =
+            speed > 0.0 ? std::atan2(l.velocity.y(), l.velocity.x()) * 180.0 / std::numbers::pi : 0.0;
+        line(
+            fmt::format("          - {{z: {}, speed: {}, azimuth: {}}}", num(l.z), num(speed), num(azimuth)));
+      }
+    }
+    notes.push_back(
+        "current history: tangle interpolates each profile's speed and direction between levels and the "
+        "velocity components between times; MoorDyn the components in both");
+  } else if (opt.currentMode != 0) {
     const std::vector<ProfileLevel> levels = readCurrentProfile(deck, opt.lineOf.at("currents"), notes);
     line(fmt::format("  current:                  # Currents {} (deck line {}): current_profile.txt, (ux, uy) as "
                      "speed and azimuth",

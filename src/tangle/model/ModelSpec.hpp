@@ -57,6 +57,12 @@ struct WaveSpec {
   WaveStretching stretching = WaveStretching::Wheeler;  ///< kinematics above/below z = 0
 };
 
+/// The current at one time of a current that changes in time (environment.current.history).
+struct CurrentSnapshot {
+  double time = 0.0;                 ///< [s]
+  std::vector<CurrentLevel> levels;  ///< its profile
+};
+
 /// Environment: water, gravity, seabed, current and waves.
 struct EnvironmentSpec {
   /// Depth of the seabed below still water level [m]: everywhere for a flat seabed, under the origin for a
@@ -68,6 +74,10 @@ struct EnvironmentSpec {
   /// The seabed's shape (a slope, a bathymetry grid); null: flat at z = -waterDepth.
   std::shared_ptr<const ::tangle::seabed::SeabedSurface> seabedSurface;
   std::vector<CurrentLevel> current;  ///< empty: no current
+  /// A current that changes in time (environment.current.history; MoorDyn's Currents 2): profiles at
+  /// increasing times, interpolated linearly between them, the first before its time and the last after its
+  /// own; `current` is then the first profile (the statics' current). Empty: steady.
+  std::vector<CurrentSnapshot> currentHistory;
   WaveSpec waves;
   double windSpeed = 0.0;         ///< wind speed at 10 m [m/s]
   double windAzimuth = 0.0;       ///< direction the wind blows towards [rad]

@@ -84,6 +84,9 @@ std::string modelSummary(const model::Model& m) {
     for (const model::CurrentLevel& c : env.current)
       out += fmt::format(" z = {:.1f} m: {:.2f} m/s towards {:.1f} deg;", c.z, c.speed, radToDeg(c.azimuth));
     out.back() = '\n';
+    if (env.currentHistory.size() > 1)
+      out += fmt::format("  (at t = 0: it changes in time, {} profiles to t = {:.1f} s)\n",
+                         env.currentHistory.size(), env.currentHistory.back().time);
   }
   if (env.windSpeed > 0.0)
     out += fmt::format("wind: {:.2f} m/s towards {:.1f} deg\n", env.windSpeed, radToDeg(env.windAzimuth));

@@ -86,4 +86,23 @@ TEST(CurrentProfile, RejectsInvalidLevels) {
 }
 
 }  // namespace
+// A current changing in time: linear in time between its profiles, component by component; the first profile
+// before its time (and as the steady velocity(z)), the last after its own. Exact values by hand.
+TEST(CurrentProfile, HistoryInterpolatesInTime) {
+  const CurrentProfile east = CurrentProfile::uniform(1.0, 0.0);
+  const CurrentProfile north({{-100.0, 0.0, kPi / 2.0}, {0.0, 2.0, kPi / 2.0}});
+  const CurrentProfile h = CurrentProfile::withHistory({10.0, 20.0}, {east, north});
+  EXPECT_TRUE(h.changes());
+  EXPECT_FALSE(east.changes());
+  EXPECT_NEAR((h.velocity(-50.0) - Vec3(1.0, 0.0, 0.0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((h.velocity(-50.0, 0.0) - Vec3(1.0, 0.0, 0.0)).norm(), 0.0, 1e-15);
+  // Halfway in time at z = -50 (north's speed there is 1 m/s): the mean of (1, 0) and (0, 1).
+  EXPECT_NEAR((h.velocity(-50.0, 15.0) - Vec3(0.5, 0.5, 0.0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((h.velocity(0.0, 17.5) - Vec3(0.25, 1.5, 0.0)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((h.velocity(-50.0, 99.0) - Vec3(0.0, 1.0, 0.0)).norm(), 0.0, 1e-15);
+  EXPECT_FALSE(h.isZero());
+  EXPECT_THROW(CurrentProfile::withHistory({10.0, 10.0}, {east, north}), Error);
+  EXPECT_THROW(CurrentProfile::withHistory({10.0}, {east, north}), Error);
+}
+
 }  // namespace tangle::hydro

@@ -401,6 +401,37 @@ TEST(ModelReader, ReadsUniformCurrentGivenAsOneMap) {
   EXPECT_DOUBLE_EQ(spec.environment.current[0].azimuth, degToRad(30.0));
 }
 
+TEST(ModelReader, ReadsACurrentChangingInTime) {
+  const std::string yaml = edited(
+      kBaseModel,
+      "  current:\n    - {z: 0, speed: 1.0, azimuth: 90}\n"
+      "    - {z: -100, speed: 0.2, azimuth: 90}\n",
+      "  current:\n    history:\n"
+      "      - {time: 0, profile: {speed: 0.5, azimuth: 30}}\n"
+      "      - {time: 60, profile: [{z: 0, speed: 1.0, azimuth: 90}, {z: -50, speed: 0.2, azimuth: 90}]}\n");
+  const ModelSpec spec = readModelString(yaml, kSource);
+  ASSERT_EQ(spec.environment.currentHistory.size(), 2u);
+  EXPECT_DOUBLE_EQ(spec.environment.currentHistory[1].time, 60.0);
+  ASSERT_EQ(spec.environment.currentHistory[1].levels.size(), 2u);
+  EXPECT_DOUBLE_EQ(spec.environment.currentHistory[1].levels[1].z, -50.0);
+  ASSERT_EQ(spec.environment.current.size(), 1u);  // the first profile, the statics' current
+  EXPECT_DOUBLE_EQ(spec.environment.current[0].speed, 0.5);
+  const std::string backwards = edited(kBaseModel,
+                                       "  current:\n    - {z: 0, speed: 1.0, azimuth: 90}\n"
+                                       "    - {z: -100, speed: 0.2, azimuth: 90}\n",
+                                       "  current:\n    history:\n"
+                                       "      - {time: 10, profile: {speed: 0.5, azimuth: 30}}\n"
+                                       "      - {time: 5, profile: {speed: 0.5, azimuth: 30}}\n");
+  try {
+    readModelString(backwards, kSource);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("times must increase: 5 s follows 10 s"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("history[1].time"), std::string::npos) << e.what();
+  }
+}
+
 TEST(ModelReader, ReadsJonswapWaves) {
   const std::string yaml = edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
                                   "    type: JONSWAP\n    significant_height: 4.0\n    peak_period: 9\n"

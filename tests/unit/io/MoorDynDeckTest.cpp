@@ -542,6 +542,42 @@ std::string writeDeckWithProfile(const std::string& name, const std::string& pro
   return (dir / "deck.txt").string();
 }
 
+TEST(MoorDynDeck, ReadsACurrentChangingInTime) {
+  // MoorDyn's Currents 2 (Waves/WaveGrid.cpp, constructDynamicCurrentGrid): current_profile_dynamic.txt, the
+  // levels on line 5, from line 7 rows t, ux at each level, uy at each level (uz left out: zero). A level
+  // above z = 0 is left out with a note.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tangle-moordyn-dynamic-current";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "deck.txt") << deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "2 Currents\n");
+  std::ofstream(dir / "current_profile_dynamic.txt") << "--- MoorDyn dynamic currents ---\nTabulated\n2\n3\n"
+                                                        "-100 0 1\n\n"
+                                                        "0 0.1 0.2 0.3 0 0 0\n"
+                                                        "60 0 0 0 0.5 1.0 1.5\n";
+  const model::ModelSpec spec = readModelFile((dir / "deck.txt").string());
+  const auto& history = spec.environment.currentHistory;
+  ASSERT_EQ(history.size(), 2u);
+  EXPECT_DOUBLE_EQ(history[1].time, 60.0);
+  ASSERT_EQ(history[1].levels.size(), 2u);  // z = 1 left out
+  EXPECT_DOUBLE_EQ(history[0].levels[1].speed, 0.2);
+  EXPECT_DOUBLE_EQ(history[1].levels[1].speed, 1.0);
+  EXPECT_NEAR(history[1].levels[1].azimuth, std::numbers::pi / 2.0, 1e-12);  // along +y
+  EXPECT_EQ(spec.environment.current.size(), 2u);  // the first profile: the statics'
+  bool noted = false;
+  for (const std::string& w : spec.warnings)
+    noted = noted || w.find("above the still water level") != std::string::npos;
+  EXPECT_TRUE(noted);
+  // Times that do not increase are refused naming the file and its row.
+  std::ofstream(dir / "current_profile_dynamic.txt") << "a\nb\n2\n3\n-100 0\n\n5 0.1 0.2\n5 0.1 0.2\n";
+  try {
+    readModelFile((dir / "deck.txt").string());
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 8);
+    EXPECT_NE(std::string(e.what()).find("times must increase"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(MoorDynDeck, ReadsASteadyCurrentProfile) {
   // MoorDyn's Currents 1: (ux, uy) at each level from current_profile.txt beside the deck, linear in z.
   const std::string path = writeDeckWithProfile("profile", "-100 0.3 0.4 0\n-50 0.0 1.0\n0 1.0\n");
