@@ -4,11 +4,11 @@
 ///
 /// The deck is read section by section as MoorDyn v2 reads it (MoorDyn2.cpp: a section starts at a line
 /// holding "---" and the section's name; tables skip a column-name and a unit line; a section ends at the
-/// next "---" line): LINE TYPES / LINE DICTIONARY, ROD TYPES, RODS, POINTS / POINT LIST / POINT PROPERTIES /
-/// CONNECTION PROPERTIES / NODE PROPERTIES, LINES / LINE LIST / LINE PROPERTIES, OPTIONS, OUTPUTS. Every
-/// entry tangle cannot represent (bodies, failures at rods, VIV, nonlinear or viscoelastic stiffness tables,
-/// wave kinematics from files, ...) is refused with the file, the line and the entry's name: nothing is
-/// skipped silently. The mapping is documented in docs/moordyn.md.
+/// next "---" line): LINE TYPES / LINE DICTIONARY, BODIES, ROD TYPES, RODS, POINTS / POINT LIST / POINT
+/// PROPERTIES / CONNECTION PROPERTIES / NODE PROPERTIES, LINES / LINE LIST / LINE PROPERTIES, FAILURE,
+/// OPTIONS, OUTPUTS. Every entry tangle cannot represent (failures at rods, VIV, viscoelastic or Syrope
+/// stiffness laws, 4D current grids, external loads, ...) is refused with the file, the line and the entry's
+/// name: nothing is skipped silently. The mapping is documented in docs/moordyn.md.
 ///
 /// Units as in MoorDyn: SI (m, kg, N, s).
 
