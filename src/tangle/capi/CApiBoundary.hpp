@@ -22,6 +22,7 @@
 #include <mutex>
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "MoorDyn2.h"
 #include "tangle/capi/MoorDynSystem.hpp"
@@ -81,52 +82,39 @@ int withSystem(const char* function, MoorDyn handle, Body&& body) noexcept {
   }
 }
 
+/// Runs body(system, index) for an object handle (a line's, point's or rod's: `Object` is LineHandle,
+/// PointHandle or RodHandle, `what` its name in the message); MOORDYN_INVALID_VALUE for a null one.
+template <class Object, class Handle, class Body>
+int withObject(const char* function, Handle handle, const char* what, Body&& body) noexcept {
+  if (handle == nullptr) {
+    reportError(nullptr, function, std::string("the ") + what + " is NULL");
+    return MOORDYN_INVALID_VALUE;
+  }
+  const Object& object = *reinterpret_cast<const Object*>(handle);
+  try {
+    body(*object.system, object.index);
+    return MOORDYN_SUCCESS;
+  } catch (...) {
+    return handleCurrentException(object.system, function);
+  }
+}
+
 /// Runs body(system, line index) for a line handle; MOORDYN_INVALID_VALUE for a null one.
 template <class Body>
 int withLine(const char* function, MoorDynLine handle, Body&& body) noexcept {
-  if (handle == nullptr) {
-    reportError(nullptr, function, "the line is NULL");
-    return MOORDYN_INVALID_VALUE;
-  }
-  const LineHandle& line = *reinterpret_cast<const LineHandle*>(handle);
-  try {
-    body(*line.system, line.index);
-    return MOORDYN_SUCCESS;
-  } catch (...) {
-    return handleCurrentException(line.system, function);
-  }
+  return withObject<LineHandle>(function, handle, "line", std::forward<Body>(body));
 }
 
 /// Runs body(system, point index) for a point handle; MOORDYN_INVALID_VALUE for a null one.
 template <class Body>
 int withPoint(const char* function, MoorDynPoint handle, Body&& body) noexcept {
-  if (handle == nullptr) {
-    reportError(nullptr, function, "the point is NULL");
-    return MOORDYN_INVALID_VALUE;
-  }
-  const PointHandle& point = *reinterpret_cast<const PointHandle*>(handle);
-  try {
-    body(*point.system, point.index);
-    return MOORDYN_SUCCESS;
-  } catch (...) {
-    return handleCurrentException(point.system, function);
-  }
+  return withObject<PointHandle>(function, handle, "point", std::forward<Body>(body));
 }
 
 /// Runs body(system, rod index) for a rod handle; MOORDYN_INVALID_VALUE for a null one.
 template <class Body>
 int withRod(const char* function, MoorDynRod handle, Body&& body) noexcept {
-  if (handle == nullptr) {
-    reportError(nullptr, function, "the rod is NULL");
-    return MOORDYN_INVALID_VALUE;
-  }
-  const RodHandle& rod = *reinterpret_cast<const RodHandle*>(handle);
-  try {
-    body(*rod.system, rod.index);
-    return MOORDYN_SUCCESS;
-  } catch (...) {
-    return handleCurrentException(rod.system, function);
-  }
+  return withObject<RodHandle>(function, handle, "rod", std::forward<Body>(body));
 }
 
 /// @throws NotImplemented with the message "not implemented by tangle: <why>" (the guards prefix the

@@ -494,6 +494,12 @@ struct RodEnds {
   std::vector<BodyFrame> bodies;               ///< per body (id - 1)
 };
 
+/// The rod's type (the deck reader checked that it exists).
+const MoorDynRodType& rodTypeOf(const MoorDynDeck& deck, const MoorDynRod& rod) {
+  return *std::find_if(deck.rodTypes.begin(), deck.rodTypes.end(),
+                       [&](const MoorDynRodType& t) { return t.name == rod.rodType; });
+}
+
 /// Pi/4 d^2 [m^2].
 double circleArea(double d) { return std::numbers::pi / 4.0 * d * d; }
 
@@ -634,10 +640,6 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, double density, std::vector<std
     rod.endB = f.global(rod.endB);
     if (!f.free) rod.body = 0;
   }
-  const auto rodType = [&](const MoorDynRod& rod) -> const MoorDynRodType& {
-    return *std::find_if(deck.rodTypes.begin(), deck.rodTypes.end(),
-                         [&](const MoorDynRodType& t) { return t.name == rod.rodType; });
-  };
   // On a free body: a rod fixed to it moves with it (a line with both ends on the vessel); one pinned to it
   // turns about its end A on the vessel.
   const auto onFreeBody = [&](const MoorDynRod& rod) { return rod.body != 0; };
@@ -700,7 +702,7 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, double density, std::vector<std
         if (!held && !onBody && zeroLength) {
           // MoorDyn's zero-length rod (Rod.cpp): no length, so no mass, net buoyancy or side drag; the axial
           // drag CdEnd on pi/4 d^2 of both its ends (applied at its one node) becomes the point's drag area.
-          const MoorDynRodType& t = rodType(rod);
+          const MoorDynRodType& t = rodTypeOf(deck, rod);
           p.dragArea = 2.0 * t.dragEnd * circleArea(t.diameter);
           if (t.addedMassEnd > 0.0)
             notes.push_back(fmt::format(
@@ -1425,8 +1427,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   };
   for (const MoorDynRod& rod : deck.rods) {
     if (!rodEnds.movingRod[static_cast<std::size_t>(rod.id - 1)]) continue;
-    const MoorDynRodType& t = *std::find_if(deck.rodTypes.begin(), deck.rodTypes.end(),
-                                            [&](const MoorDynRodType& rt) { return rt.name == rod.rodType; });
+    const MoorDynRodType& t = rodTypeOf(deck, rod);
     const std::string name = fmt::format("rod{}", rod.id);
     const std::array<int, 2>& ends = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)];
     line(fmt::format("  - name: {}                  # rod {} (deck line {}): {}, a stiff beam", name, rod.id,

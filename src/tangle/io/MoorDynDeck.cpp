@@ -32,6 +32,15 @@ std::vector<std::string> words(const std::string& line) {
   return out;
 }
 
+/// The leading letters of a word, upper case: MoorDyn2.cpp (str::decomposeString) splits an attachment word
+/// into letters and a number, and the letters decide its kind ("Body1" -> "BODY", "R2A" -> "R").
+std::string leadingLetters(const std::string& word) {
+  const std::string u = upper(word);
+  std::size_t i = 0;
+  while (i < u.size() && std::isalpha(static_cast<unsigned char>(u[i]))) ++i;
+  return u.substr(0, i);
+}
+
 bool isBlank(const std::string& line) {
   return std::all_of(line.begin(), line.end(), [](unsigned char c) { return std::isspace(c) != 0; });
 }
@@ -284,6 +293,17 @@ class DeckParser {
     return *v;
   }
 
+  /// A table's ID column: MoorDyn's rule, IDs 1, 2, 3, ... in order (`read` rows read before this one).
+  int sequentialId(int line, const std::string& table, const std::string& what, const std::string& word,
+                   std::size_t read) const {
+    const int id = integer(line, table + " ID", word);
+    if (id != static_cast<int>(read) + 1)
+      fail(line, table + " ID",
+           fmt::format("{} IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}", what,
+                       read + 1, id));
+    return id;
+  }
+
   int integer(int line, const std::string& key, const std::string& word) const {
     const double v = number(line, key, word);
     // Range first: converting a double outside int's range is undefined (the reader fuzzer found 7.8e125).
@@ -417,19 +437,10 @@ class DeckParser {
                       w.size()));
     MoorDynBody b;
     b.sourceLine = n;
-    b.id = integer(n, "BODIES ID", w[0]);
-    if (b.id != static_cast<int>(deck.bodies.size()) + 1)
-      fail(n, "BODIES ID",
-           fmt::format("body IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
-                       deck.bodies.size() + 1, b.id));
+    b.id = sequentialId(n, "BODIES", "body", w[0], deck.bodies.size());
     const auto key = [&](const char* column) { return fmt::format("body {} {}", b.id, column); };
     b.kindWord = w[1];
-    std::string letters;
-    for (const char c : upper(w[1]))
-      if (std::isalpha(static_cast<unsigned char>(c)))
-        letters += c;
-      else
-        break;
+    const std::string letters = leadingLetters(w[1]);
     if (letters == "ANCHOR" || letters == "FIXED" || letters == "FIX")
       b.kind = MoorDynBodyKind::Fixed;
     else if (letters == "VESSEL" || letters == "VES" || letters == "COUPLED" || letters == "CPLD")
@@ -525,20 +536,11 @@ class DeckParser {
                w.size()));
     MoorDynRod r;
     r.sourceLine = n;
-    r.id = integer(n, "RODS ID", w[0]);
-    if (r.id != static_cast<int>(deck.rods.size()) + 1)
-      fail(n, "RODS ID",
-           fmt::format("rod IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
-                       deck.rods.size() + 1, r.id));
+    r.id = sequentialId(n, "RODS", "rod", w[0], deck.rods.size());
     const auto key = [&](const char* column) { return fmt::format("rod {} {}", r.id, column); };
     r.rodType = w[1];
     r.kindWord = w[2];
-    std::string letters;
-    for (const char c : upper(w[2]))
-      if (std::isalpha(static_cast<unsigned char>(c)))
-        letters += c;
-      else
-        break;
+    const std::string letters = leadingLetters(w[2]);
     if (letters == "ANCHOR" || letters == "FIXED" || letters == "FIX") {
       r.kind = MoorDynRodKind::Fixed;
     } else if (letters == "PINNED" || letters == "PIN") {
@@ -589,21 +591,12 @@ class DeckParser {
            fmt::format("expected 9 columns (ID Attachment X Y Z Mass Volume CdA Ca), got {}", w.size()));
     MoorDynPoint p;
     p.sourceLine = n;
-    p.id = integer(n, "POINTS ID", w[0]);
-    if (p.id != static_cast<int>(deck.points.size()) + 1)
-      fail(n, "POINTS ID",
-           fmt::format("point IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
-                       deck.points.size() + 1, p.id));
+    p.id = sequentialId(n, "POINTS", "point", w[0], deck.points.size());
     const auto key = [&](const char* column) { return fmt::format("point {} {}", p.id, column); };
     p.kindWord = w[1];
     const std::string kind = upper(w[1]);
     // MoorDyn2.cpp splits the word into letters and a number; the letters decide the kind.
-    std::string letters;
-    for (const char c : kind)
-      if (std::isalpha(static_cast<unsigned char>(c)))
-        letters += c;
-      else
-        break;
+    const std::string letters = leadingLetters(w[1]);
     if (letters == "ANCHOR" || letters == "FIXED" || letters == "FIX") {
       p.kind = MoorDynPointKind::Fixed;
     } else if (letters == "FAIRLEAD" || letters == "VESSEL" || letters == "VES" || letters == "COUPLED" ||
@@ -659,9 +652,8 @@ class DeckParser {
 
   Attachment attachment(int n, const std::string& key, const std::string& word) const {
     const std::string u = upper(word);
-    std::size_t i = 0;
-    while (i < u.size() && std::isalpha(static_cast<unsigned char>(u[i]))) ++i;
-    const std::string letters = u.substr(0, i);
+    const std::string letters = leadingLetters(word);
+    const std::size_t i = letters.size();
     if (letters == "R" || letters == "ROD") {
       // MoorDyn2.cpp (decomposeString): letters, the rod's number, then A or B.
       std::size_t j = i;
@@ -694,11 +686,7 @@ class DeckParser {
                       w.size()));
     MoorDynLine l;
     l.sourceLine = n;
-    l.id = integer(n, "LINES ID", w[0]);
-    if (l.id != static_cast<int>(deck.lines.size()) + 1)
-      fail(n, "LINES ID",
-           fmt::format("line IDs must run 1, 2, 3, ... in order (MoorDyn's rule): expected {}, got {}",
-                       deck.lines.size() + 1, l.id));
+    l.id = sequentialId(n, "LINES", "line", w[0], deck.lines.size());
     const auto key = [&](const char* column) { return fmt::format("line {} {}", l.id, column); };
     l.lineType = w[1];
     const Attachment a = attachment(n, key("AttachA"), w[2]);
