@@ -172,12 +172,8 @@ MoorDynSystem::NodeRef MoorDynSystem::deckNode(int l, unsigned int i) {
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   if (i > static_cast<unsigned int>(map.segments))
     throw InvalidValue(fmt::format("line {} has nodes 0 to {}, not {}", deckLine(l).id, map.segments, i));
-  const TangleLine& t = tangleLine(map.tangleLine);
-  NodeRef n;
-  n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
-  n.modelLine = t.modelLine;
   const int offset = static_cast<int>(i);
-  n.node = map.firstNode + (map.reversed ? -offset : offset);
+  const NodeRef n = tangleNode(map.tangleLine, map.firstNode + (map.reversed ? -offset : offset));
   if (n.node < 0 || n.node >= static_cast<int>(n.snapshot->position.size()))
     throw Error(fmt::format(
         "{}: node {} of line {} maps to node {} of tangle line '{}', which has {} (a bug in tangle)", m_path,
@@ -311,12 +307,18 @@ Vec3 MoorDynSystem::endNodePosition(const std::pair<std::string, int>& end) {
   return end.second == 0 ? s.position.front() : s.position.back();
 }
 
-Vec3 MoorDynSystem::endNodeVelocity(const std::pair<std::string, int>& end) {
-  const TangleLine& t = tangleLine(end.first);
+MoorDynSystem::NodeRef MoorDynSystem::tangleNode(const std::string& line, int node) {
+  const TangleLine& t = tangleLine(line);
   NodeRef n;
   n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
   n.modelLine = t.modelLine;
-  n.node = end.second == 0 ? 0 : static_cast<int>(n.snapshot->position.size()) - 1;
+  n.node = node;
+  return n;
+}
+
+Vec3 MoorDynSystem::endNodeVelocity(const std::pair<std::string, int>& end) {
+  NodeRef n = tangleNode(end.first, 0);
+  if (end.second != 0) n.node = static_cast<int>(n.snapshot->position.size()) - 1;
   return velocity(n);
 }
 
@@ -350,14 +352,7 @@ Vec3 MoorDynSystem::pointVelocity(int p) {
 Vec3 MoorDynSystem::mappedVelocity(const io::MoorDynPointMap& map) {
   if (!initialized() || map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
   if (!map.ends.empty()) return endNodeVelocity(map.ends.front());
-  if (!map.junctionLine.empty()) {
-    const TangleLine& t = tangleLine(map.junctionLine);
-    NodeRef n;
-    n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
-    n.modelLine = t.modelLine;
-    n.node = map.junctionNode;
-    return velocity(n);
-  }
+  if (!map.junctionLine.empty()) return velocity(tangleNode(map.junctionLine, map.junctionNode));
   return Vec3::Zero();
 }
 
@@ -397,12 +392,7 @@ Vec3 MoorDynSystem::rodNodeVelocity(int r, unsigned int i) {
   const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
   if (rod.segments == 0) return mappedVelocity(map.point);
   if (map.tangleLine.empty() || !initialized()) return Vec3::Zero();
-  const TangleLine& t = tangleLine(map.tangleLine);
-  NodeRef n;
-  n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
-  n.modelLine = t.modelLine;
-  n.node = static_cast<int>(i);
-  return velocity(n);
+  return velocity(tangleNode(map.tangleLine, static_cast<int>(i)));
 }
 
 Vec3 MoorDynSystem::pointForce(int p) {

@@ -200,6 +200,8 @@ class MoorDynSystem {
   void requireInitialized() const;
   /// The tangle line named `name` (after initialize). @throws Error when the model has no such line
   const TangleLine& tangleLine(const std::string& name);
+  /// Node `node` (from its end A) of the tangle line named `line` (after initialize).
+  NodeRef tangleNode(const std::string& line, int node);
   /// Node i of deck line l. @throws InvalidValue for i above the line's segment count
   NodeRef deckNode(int l, unsigned int i);
   /// The tension vector at `n` oriented from the tangle line's end A to its end B [N]; `l` is the deck line.
