@@ -94,7 +94,15 @@ Vec3 CurrentProfile::profileVelocity(double z) const {
   return Vec3(speed * std::cos(azimuth), speed * std::sin(azimuth), 0.0);
 }
 
+CurrentProfile CurrentProfile::withGrid(std::shared_ptr<const CurrentGrid> grid) {
+  if (!grid) throw Error("current grid: none given");
+  CurrentProfile out;
+  out.m_grid = std::move(grid);
+  return out;
+}
+
 bool CurrentProfile::isZero() const {
+  if (m_grid) return m_grid->isZero();
   if (!m_snapshots.empty())
     return std::all_of(m_snapshots.begin(), m_snapshots.end(),
                        [](const CurrentProfile& p) { return p.isZero(); });

@@ -3,9 +3,11 @@
 /// Current: horizontal velocity varying piecewise-linearly with the vertical coordinate, steady or changing
 /// in time through a history of such profiles.
 
+#include <memory>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 
 namespace tangle::hydro {
 
@@ -50,8 +52,17 @@ class CurrentProfile {
   /// profile's steady value). @throws tangle::Error for times not increasing or sizes that differ
   static CurrentProfile withHistory(std::vector<double> times, std::vector<CurrentProfile> profiles);
 
+  /// A current on a grid in space and time (MoorDyn's Currents 5): velocity(position, t) is the grid's.
+  static CurrentProfile withGrid(std::shared_ptr<const CurrentGrid> grid);
+
+  /// The velocity at `position` [m] and time t [s] [m/s]: the grid's where there is one (it may have a
+  /// vertical component), else velocity(position.z(), t).
+  Vec3 velocity(const Vec3& position, double t) const {
+    return m_grid ? m_grid->velocity(position, t) : velocity(position.z(), t);
+  }
+
   /// True when the current changes in time.
-  bool changes() const { return !m_times.empty(); }
+  bool changes() const { return !m_times.empty() || (m_grid && m_grid->ticks(3).size() > 1); }
 
   /// The levels, sorted by increasing z (deepest first); empty for no current.
   const std::vector<CurrentLevel>& levels() const { return m_levels; }
@@ -63,6 +74,7 @@ class CurrentProfile {
   /// velocity() with at least one level.
   Vec3 profileVelocity(double z) const;
   std::vector<CurrentLevel> m_levels;
+  std::shared_ptr<const CurrentGrid> m_grid;  // a grid in space and time, or none
   std::vector<double> m_times;              // a history's times [s], increasing; empty: steady
   std::vector<CurrentProfile> m_snapshots;  // and its profiles (steady ones)
   std::vector<double> m_unwrappedAzimuth;  // level azimuths made continuous along the shorter arcs [rad]

@@ -65,6 +65,7 @@ CurrentProfile makeCurrentProfile(const std::vector<model::CurrentLevel>& curren
 }
 
 CurrentProfile makeCurrentProfile(const model::EnvironmentSpec& env) {
+  if (env.currentGrid) return CurrentProfile::withGrid(env.currentGrid);
   if (env.currentHistory.empty()) return makeCurrentProfile(env.current);
   std::vector<double> times;
   std::vector<CurrentProfile> profiles;
@@ -107,7 +108,7 @@ double HydroLoads::surfaceAt(double x, double y, double t, bool dynamic) const {
 
 FluidKinematics HydroLoads::fluidAt(const Vec3& p, double t, bool dynamic) const {
   FluidKinematics k;
-  k.velocity = m_current.velocity(p.z(), t);
+  k.velocity = m_current.velocity(p, t);
   if (dynamic && m_waves) {
     const double r = core::ramp(t, m_rampTime).value;
     if (r > 0.0) {
@@ -209,7 +210,7 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     const Vec3 v1 = request.dynamic ? Vec3(state.velocity.segment<3>(d1)) : zero;
     const Vec3 v2 = request.dynamic ? Vec3(state.velocity.segment<3>(d2)) : zero;
     FluidKinematics fluid;
-    fluid.velocity = m_current.velocity(0.5 * (x1.z() + x2.z()), request.time);
+    fluid.velocity = m_current.velocity(0.5 * (x1 + x2), request.time);
     if (m_wake) fluid.velocity += m_elementWake[e].velocityChange;
     if (!request.dynamic) fluid.velocity *= request.currentFactor;  // the statics' current continuation
     if (waves) {

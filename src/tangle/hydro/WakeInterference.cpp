@@ -132,7 +132,7 @@ ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair,
   if (length <= 0.0) return o;
   const Vec3 t = axis / length;
   const Vec3 q = a + s * axis;
-  const Vec3 current = m_current->velocity(p.z());
+  const Vec3 current = m_current->velocity(p, 0.0);  // the steady (first) current, as the wake model assumes
   const Vec3 normalFlow = current - current.dot(t) * t;
   const double speed = normalFlow.norm();
   if (speed <= 1e-9) return o;

@@ -32,6 +32,7 @@
 #include "tangle/analysis/SnCurve.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/io/MoorDynConversion.hpp"
 
 namespace tangle::io {
@@ -608,6 +609,24 @@ std::vector<model::CurrentLevel> readCurrent(const Value& v) {
   return levels;
 }
 
+/// `current: {grid: {file}}`: a current on a grid in space and time (MoorDyn's current_profile_4d.txt format,
+/// hydro::readCurrentGridFile), the file's path relative to the model file.
+std::shared_ptr<const hydro::CurrentGrid> readCurrentGrid(const Value& v) {
+  const Map m(v, {"grid"});
+  const Map g(m.get("grid", "a map {file}"), {"file"});
+  const Value file =
+      g.get("file", "a file name (MoorDyn's current_profile_4d.txt format), relative to the model file");
+  namespace fs = std::filesystem;
+  fs::path path(
+      file.text("a file name (MoorDyn's current_profile_4d.txt format), relative to the model file"));
+  if (path.is_relative()) path = fs::path(file.source()).parent_path() / path;
+  try {
+    return std::make_shared<const hydro::CurrentGrid>(hydro::readCurrentGridFile(path.string()));
+  } catch (const Error& e) {
+    file.fail(fmt::format("cannot read the current grid: {}", e.what()));
+  }
+}
+
 /// `current: {history: [{time, profile}, ...]}`: a current changing in time, each profile as `current`.
 std::vector<model::CurrentSnapshot> readCurrentHistory(const Value& v) {
   const Map m(v, {"history"});
@@ -719,18 +738,27 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
   model::EnvironmentSpec& env = spec.environment;
   const model::EnvironmentSpec d;
   env.waterDepth = m.number("water_depth", positiveUpTo(kMaxWaterDepth).withHint("seabed at z = -water_depth"));
-  env.waterDensity = m.number("water_density", d.waterDensity, closed(500.0, 2000.0));
-  env.gravity = m.number("gravity", d.gravity, closed(1.0, 30.0));
+  // 0 is allowed for both: a line in air (no buoyancy, added mass or drag) and a model without weight (a
+  // MoorDyn kinematics test); waves need gravity (their dispersion), refused below.
+  env.waterDensity =
+      m.number("water_density", d.waterDensity, closed(0.0, 2000.0).withHint("0 for a model in air"));
+  env.gravity = m.number("gravity", d.gravity, closed(0.0, 30.0).withHint("0 for a model without weight"));
   if (const std::optional<Value> seabed = m.find("seabed")) readSeabed(*seabed, env);
   if (const std::optional<Value> current = m.find("current")) {
     if (current->node().IsMap() && current->node()["history"]) {
       env.currentHistory = readCurrentHistory(*current);
       env.current = env.currentHistory.front().levels;
+    } else if (current->node().IsMap() && current->node()["grid"]) {
+      env.currentGrid = readCurrentGrid(*current);
     } else {
       env.current = readCurrent(*current);
     }
   }
-  if (const std::optional<Value> waves = m.find("waves")) env.waves = readWaves(*waves, env.waterDepth);
+  if (const std::optional<Value> waves = m.find("waves")) {
+    if (!(env.gravity > 0.0))
+      waves->fail("waves need gravity (their dispersion relation): give environment.gravity > 0");
+    env.waves = readWaves(*waves, env.waterDepth);
+  }
   if (const std::optional<Value> wind = m.find("wind")) {
     const Map w(*wind, {"speed", "azimuth", "air_density"});
     env.windSpeed = w.number("speed", nonNegativeUpTo(kMaxSpeed));

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "tangle/core/Error.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 
 namespace tangle::io {
 namespace {
@@ -59,7 +60,8 @@ struct Options {
   double friction = 0.0;              ///< FrictionCoefficient [-]
   double frictionDamping = 200.0;     ///< FricDamp [N s/m]
   double staticDynamicScale = 1.0;    ///< StatDynFricScale [-]
-  int currentMode = 0;  ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt, 2 a history
+  int currentMode = 0;  ///< Currents: 0 none, 1 or 3 a steady profile from current_profile.txt, 2 a history,
+                        ///< 5 a grid in space and time (current_profile_4d.txt)
   int waveMode = 0;        ///< WaveKin 2, 3 or 7: components from wave_frequencies/wave_elevation.txt
   double waveStep = 0.25;  ///< dtWave [s]: the resampling of wave_elevation.txt (WaveKin 3)
   std::string seafloorFile;           ///< SeafloorFile, resolved to a readable path; empty: flat
@@ -122,9 +124,10 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
     } else if (name == "dtwave") {
       opt.waveStep = value();
       if (!(opt.waveStep > 0.0)) throw InputError(deck.file, o.sourceLine, o.name, "expected dtWave > 0 s");
-    } else if (name == "currents" && (value() == 1.0 || value() == 2.0 || value() == 3.0)) {
+    } else if (name == "currents" && (value() == 1.0 || value() == 2.0 || value() == 3.0 || value() == 5.0)) {
       // A steady profile, interpolated on a grid (1) or at the nodes (3): the same profile in tangle; one
-      // changing in time (2, current_profile_dynamic.txt): a current history.
+      // changing in time (2, current_profile_dynamic.txt): a current history; a grid in space and time (5,
+      // current_profile_4d.txt): a current grid.
       opt.currentMode = static_cast<int>(value());
     } else if (name == "wavekin" || name == "currents") {
       if (value() != 0.0)
@@ -1102,7 +1105,27 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
           "WaveKin 2: the components are summed at each element (MoorDyn's WaveKin 7), not "
           "interpolated on an inverse-FFT grid");
   }
-  if (opt.currentMode == 2) {
+  if (opt.currentMode == 5) {
+    const std::string path =
+        std::filesystem::absolute(std::filesystem::path(deck.file).parent_path() / "current_profile_4d.txt")
+            .lexically_normal()
+            .string();
+    // Read here too, so that a bad file is reported against the deck's option.
+    try {
+      hydro::readCurrentGridFile(path);
+    } catch (const InputError& e) {
+      throw InputError(
+          deck.file, opt.lineOf.at("currents"), "Currents",
+          fmt::format("Currents = 5 reads current_profile_4d.txt next to the deck: {}", e.what()));
+    }
+    line(fmt::format("  current:                  # Currents 5 (deck line {}): a grid in space and time",
+                     opt.lineOf.at("currents")));
+    line(fmt::format("    grid: {{file: {}}}", yamlQuoted(path)));
+    notes.push_back(
+        "Currents 5: tangle holds the grid's last velocities after its last time (MoorDyn repeats the grid) "
+        "and "
+        "reads every node row of current_profile_4d.txt (MoorDyn skips the first)");
+  } else if (opt.currentMode == 2) {
     const auto history = readDynamicCurrent(deck, opt.lineOf.at("currents"), notes);
     line(fmt::format(
         "  current:                  # Currents 2 (deck line {}): current_profile_dynamic.txt, (ux, uy) as "

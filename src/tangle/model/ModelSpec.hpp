@@ -15,6 +15,7 @@
 
 #include "tangle/core/Types.hpp"
 #include "tangle/geometry/HullShape.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/seabed/SeabedSpec.hpp"
 #include "tangle/seabed/SeabedSurface.hpp"
 #include "tangle/section/LineType.hpp"
@@ -78,6 +79,9 @@ struct EnvironmentSpec {
   /// increasing times, interpolated linearly between them, the first before its time and the last after its
   /// own; `current` is then the first profile (the statics' current). Empty: steady.
   std::vector<CurrentSnapshot> currentHistory;
+  /// A current on a grid in space and time (environment.current.grid; MoorDyn's Currents 5); null: none. With
+  /// it, `current` and `currentHistory` are empty.
+  std::shared_ptr<const ::tangle::hydro::CurrentGrid> currentGrid;
   WaveSpec waves;
   double windSpeed = 0.0;         ///< wind speed at 10 m [m/s]
   double windAzimuth = 0.0;       ///< direction the wind blows towards [rad]

@@ -77,7 +77,16 @@ std::string modelSummary(const model::Model& m) {
       break;
     }
   }
-  if (env.current.empty()) {
+  if (env.currentGrid) {
+    const hydro::CurrentGrid& g = *env.currentGrid;
+    out += fmt::format(
+        "current: a grid of {} x {} x {} points at {} time(s), x {:.1f} to {:.1f} m, y {:.1f} to {:.1f} m, z "
+        "{:.1f} "
+        "to {:.1f} m, t to {:.1f} s\n",
+        g.ticks(0).size(), g.ticks(1).size(), g.ticks(2).size(), g.ticks(3).size(), g.ticks(0).front(),
+        g.ticks(0).back(), g.ticks(1).front(), g.ticks(1).back(), g.ticks(2).front(), g.ticks(2).back(),
+        g.ticks(3).back());
+  } else if (env.current.empty()) {
     out += "current: none\n";
   } else {
     out += fmt::format("current: {} level(s):", env.current.size());

@@ -12,6 +12,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/core/WordTable.hpp"
 
 namespace tangle::seabed {
 
@@ -291,68 +292,31 @@ std::string SeabedSurface::describe() const {
 }
 
 SeabedSurface readSeafloorFile(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
-    throw InputError(path, 0, "SeafloorFile", "a readable file (the bathymetry grid); it cannot be opened");
-  std::vector<std::vector<std::string>> rows;
-  std::vector<int> lineOf;
-  std::string text;
-  for (int line = 1; std::getline(in, text); ++line) {
-    std::istringstream words(text);
-    std::vector<std::string> row;
-    for (std::string w; words >> w;) row.push_back(w);
-    if (row.empty()) continue;
-    rows.push_back(std::move(row));
-    lineOf.push_back(line);
-  }
-  if (rows.size() < 4)
+  const core::WordTable table(path, "SeafloorFile");
+  if (table.size() < 4)
     throw InputError(path, 0, "SeafloorFile",
                      "at least 4 lines: 'nx ny', the x ticks, the y ticks and one 'x y z' row per grid node");
-  auto number = [&](std::size_t r, std::size_t c, const char* what) {
-    const std::string& w = rows[r][c];
-    char* end = nullptr;
-    const double v = std::strtod(w.c_str(), &end);
-    if (end == w.c_str() || *end != '\0' || !std::isfinite(v))
-      throw InputError(path, lineOf[r], what, "a finite number, got '" + w + "'");
-    return v;
-  };
-  auto count = [&](std::size_t c, const char* what) {
-    if (rows[0].size() < 2) throw InputError(path, lineOf[0], "nx ny", "two counts on the first line");
-    const double v = number(0, c, what);
-    // Range-checked before it becomes an integer (no undefined conversion of 1e84).
-    if (!(v >= 1.0 && v <= 100000.0) || v != std::floor(v))
-      throw InputError(path, lineOf[0], what, "a whole number from 1 to 100000, got '" + rows[0][c] + "'");
-    return static_cast<std::size_t>(v);
-  };
-  const std::size_t nx = count(0, "nx"), ny = count(1, "ny");
-  if (nx * ny > 4000000) throw InputError(path, lineOf[0], "nx ny", "at most 4 000 000 grid nodes");
-  auto ticks = [&](std::size_t r, std::size_t n, const char* what) {
-    if (rows[r].size() != n)
-      throw InputError(path, lineOf[r], what,
-                       fmt::format("{} ticks (as the first line says), got {}", n, rows[r].size()));
-    std::vector<double> t;
-    for (std::size_t c = 0; c < n; ++c) t.push_back(number(r, c, what));
-    for (std::size_t c = 1; c < n; ++c)
-      if (!(t[c] > t[c - 1]))
-        throw InputError(path, lineOf[r], what,
-                         fmt::format("increasing ticks; {} follows {}", t[c], t[c - 1]));
-    return t;
-  };
-  std::vector<double> x = ticks(1, nx, "x ticks"), y = ticks(2, ny, "y ticks");
+  if (table.rows()[0].words.size() < 2)
+    throw InputError(path, table.rows()[0].line, "nx ny", "two counts on the first line");
+  const std::size_t nx = table.count(0, 0, "nx", 1.0, 100000.0), ny = table.count(0, 1, "ny", 1.0, 100000.0);
+  if (nx * ny > 4000000)
+    throw InputError(path, table.rows()[0].line, "nx ny", "at most 4 000 000 grid nodes");
+  std::vector<double> x = table.ticks(1, nx, "x ticks"), y = table.ticks(2, ny, "y ticks");
   // MoorDyn's calcInsertIndex: the first tick above the value, less one (the tick at or below it).
   auto snap = [](const std::vector<double>& t, double v) {
     const auto above = std::upper_bound(t.begin(), t.end(), v);
     return above == t.begin() ? std::size_t{0} : static_cast<std::size_t>(above - t.begin()) - 1;
   };
   std::vector<double> height(nx * ny, std::numeric_limits<double>::quiet_NaN());
-  for (std::size_t r = 3; r < rows.size(); ++r) {
-    if (rows[r].size() != 3)
-      throw InputError(path, lineOf[r], "x y z", fmt::format("3 numbers (x, y, z), got {}", rows[r].size()));
-    const double z = number(r, 2, "z");
+  for (std::size_t r = 3; r < table.size(); ++r) {
+    const core::WordRow& row = table.rows()[r];
+    if (row.words.size() != 3)
+      throw InputError(path, row.line, "x y z", fmt::format("3 numbers (x, y, z), got {}", row.words.size()));
+    const double z = table.number(r, 2, "z");
     if (z > 0.0)
-      throw InputError(path, lineOf[r], "z",
+      throw InputError(path, row.line, "z",
                        fmt::format("the seabed's z <= 0 (below still water), got {}", z));
-    height[snap(y, number(r, 1, "y")) * nx + snap(x, number(r, 0, "x"))] = z;
+    height[snap(y, table.number(r, 1, "y")) * nx + snap(x, table.number(r, 0, "x"))] = z;
   }
   for (std::size_t j = 0; j < ny; ++j)
     for (std::size_t i = 0; i < nx; ++i)

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <future>
 #include <memory>
 #include <string>
@@ -430,6 +431,47 @@ TEST(ModelReader, ReadsACurrentChangingInTime) {
         << e.what();
     EXPECT_NE(std::string(e.what()).find("history[1].time"), std::string::npos) << e.what();
   }
+}
+
+// environment.current.grid: {file} relative to the model file (MoorDyn's current_profile_4d.txt format).
+TEST(ModelReader, ReadsACurrentGridFromAFileNextToTheModel) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "tangle-reader-current-grid";
+  fs::create_directories(dir);
+  std::ofstream(dir / "grid.txt") << "2 1 1 1\n0 10\n0\n0\n0\n0 0 0 0 1 0 0\n10 0 0 0 3 0 0\n";
+  const std::string from =
+      "  current:\n    - {z: 0, speed: 1.0, azimuth: 90}\n    - {z: -100, speed: 0.2, azimuth: 90}\n";
+  const std::string yaml = edited(kBaseModel, from, "  current:\n    grid: {file: grid.txt}\n");
+  const ModelSpec spec = readModelString(yaml, (dir / "model.yaml").string());
+  ASSERT_TRUE(spec.environment.currentGrid);
+  EXPECT_TRUE(spec.environment.current.empty());
+  EXPECT_DOUBLE_EQ(spec.environment.currentGrid->velocity(Vec3(5.0, 0.0, -3.0), 0.0).x(), 2.0);
+  const std::string missing = edited(kBaseModel, from, "  current:\n    grid: {file: no-such-grid.txt}\n");
+  try {
+    readModelString(missing, (dir / "model.yaml").string());
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("environment.current.grid.file"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot read the current grid"), std::string::npos) << e.what();
+  }
+  expectEditError(from, "  current:\n    grid: {files: a.txt}\n", "grid: {files",
+                  "environment.current.grid.files", "did you mean 'file'?");
+  fs::remove_all(dir);
+}
+
+// A model in air (MoorDyn's WtrDnsty 0) or without weight (g 0, a kinematics test) is read; waves then need
+// gravity.
+TEST(ModelReader, ReadsAModelInAirOrWithoutGravity) {
+  const ModelSpec inAir = readModelString(
+      edited(edited(kBaseModel, "  water_density: 1025", "  water_density: 0"),
+             "  waves:\n    type: airy\n    height: 2.0\n    period: 10.0\n    azimuth: 45\n", ""),
+      kSource);
+  EXPECT_EQ(inAir.environment.waterDensity, 0.0);
+  const std::string weightless =
+      edited(kBaseModel, "  water_density: 1025", "  water_density: 1025\n  gravity: 0");
+  expectInputError(weightless, "waves:", "environment.waves", "waves need gravity");
+  expectEditError("  water_density: 1025", "  water_density: -1", "water_density: -1",
+                  "environment.water_density", "0 for a model in air");
 }
 
 TEST(ModelReader, ReadsJonswapWaves) {

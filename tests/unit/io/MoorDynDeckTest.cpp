@@ -578,6 +578,37 @@ TEST(MoorDynDeck, ReadsACurrentChangingInTime) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(MoorDynDeck, ReadsACurrentOnAGridInSpaceAndTime) {
+  // MoorDyn's Currents 5 (Waves/WaveGrid.cpp, construct4DCurrentGrid): current_profile_4d.txt beside the
+  // deck, "nx ny nz nt", the four tick lines, then "x y z t ux uy uz" rows; tangle reads it as
+  // environment.current.grid.
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tangle-moordyn-4d-current";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "deck.txt") << deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "5 Currents\n");
+  std::ofstream(dir / "current_profile_4d.txt") << "2 1 1 2\n-500 500\n0\n-100\n0 10\n"
+                                                   "-500 0 -100 0 0.2 0 0\n-500 0 -100 10 0.4 0 0\n"
+                                                   "500 0 -100 0 0.6 0 0\n500 0 -100 10 0.8 0 0\n";
+  const model::ModelSpec spec = readModelFile((dir / "deck.txt").string());
+  ASSERT_TRUE(spec.environment.currentGrid);
+  EXPECT_NEAR(spec.environment.currentGrid->velocity(Vec3(0.0, 0.0, -50.0), 5.0).x(), 0.5, 1e-15);
+  bool noted = false;
+  for (const std::string& w : spec.warnings) noted = noted || w.find("Currents 5") != std::string::npos;
+  EXPECT_TRUE(noted);
+  // A grid row off the ticks is refused naming the deck's option and the grid file's line.
+  std::ofstream(dir / "current_profile_4d.txt") << "2 1 1 1\n-500 500\n0\n-100\n0\n"
+                                                   "-500 0 -100 0 0.2 0 0\n400 0 -100 0 0.6 0 0\n";
+  try {
+    readModelFile((dir / "deck.txt").string());
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "Currents");
+    EXPECT_NE(std::string(e.what()).find("current_profile_4d.txt:7: key 'x': one of the x ticks, got 400"),
+              std::string::npos)
+        << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(MoorDynDeck, ReadsASteadyCurrentProfile) {
   // MoorDyn's Currents 1: (ux, uy) at each level from current_profile.txt beside the deck, linear in z.
   const std::string path = writeDeckWithProfile("profile", "-100 0.3 0.4 0\n-50 0.0 1.0\n0 1.0\n");
