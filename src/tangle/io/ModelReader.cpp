@@ -770,10 +770,11 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
 void readLineTypes(const Value& v, ModelSpec& spec) {
   NameRegistry names("line type");
   for (const Value& item : v.items(1, ItemLabel::Name)) {
-    const Map m(item, {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
-                       "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal",
-                       "drag_axial", "added_mass_normal", "added_mass_axial", "axial_damping",
-                       "minimum_breaking_load", "internal_diameter", "maximum_strain", "tension_strain"});
+    const Map m(item,
+                {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
+                 "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal", "drag_axial",
+                 "added_mass_normal", "added_mass_axial", "axial_damping", "minimum_breaking_load",
+                 "internal_diameter", "maximum_strain", "tension_strain", "viscoelastic"});
     const section::LineType d;
     section::LineType t;
     t.name = names.add(m);
@@ -819,6 +820,28 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     t.addedMassNormal = m.number("added_mass_normal", d.addedMassNormal, nonNegativeUpTo(kMaxCoefficient));
     t.addedMassAxial = m.number("added_mass_axial", d.addedMassAxial, nonNegativeUpTo(kMaxCoefficient));
     t.axialDamping = m.number("axial_damping", d.axialDamping, nonNegativeUpTo(kMaxStiffness));
+    if (const std::optional<Value> visco = m.find("viscoelastic")) {
+      // A polyester rope's static-dynamic stiffness (element::ViscoelasticAxialLaw): the static EA is
+      // axial_stiffness; the dynamics follows the dynamic stiffness and the two dashpots.
+      if (t.bendingStiffness > 0.0) visco->fail("a viscoelastic rope is a cable (no bending_stiffness)");
+      if (curve) visco->fail("give either a tension_strain curve or viscoelastic, not both");
+      const Map vm(*visco,
+                   {"dynamic_stiffness", "dynamic_stiffness_slope", "slow_damping", "dynamic_damping"});
+      section::Viscoelasticity& ve = t.viscoelastic;
+      const Value dynamic =
+          vm.get("dynamic_stiffness", "the dynamic stiffness EA_d in N, above axial_stiffness");
+      ve.dynamicStiffness =
+          dynamic.number(positiveUpTo(kMaxStiffness).withHint("EA_d in N, above axial_stiffness"));
+      if (!(ve.dynamicStiffness > t.axialStiffness))
+        dynamic.fail(fmt::format("the dynamic stiffness ({} N) must exceed the static axial_stiffness ({} N)",
+                                 numberText(ve.dynamicStiffness), numberText(t.axialStiffness)));
+      ve.dynamicStiffnessSlope =
+          vm.number("dynamic_stiffness_slope", 0.0,
+                    nonNegativeUpTo(1.0e4).withHint("d EA_d / d T_mean, dimensionless (0: a constant EA_d)"));
+      ve.slowDamping = vm.number("slow_damping", positiveUpTo(kMaxStiffness * 1e3).withHint("BA in N s"));
+      ve.dynamicDamping =
+          vm.number("dynamic_damping", 0.0, nonNegativeUpTo(kMaxStiffness * 1e3).withHint("BA_d in N s"));
+    }
     if (m.find("maximum_strain"))
       t.maximumStrain = m.number("maximum_strain", positiveUpTo(1.0).withHint("a fraction: 0.005 for 0.5 %"));
     if (const std::optional<Value> bore = m.find("internal_diameter")) {

@@ -1203,7 +1203,21 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       line(fmt::format(
           "    # bending_stiffness: {}   # EI: negligible over its segments, a cable (see the notes)",
           num(t.bendingStiffness)));
-    if (u.damping > 0.0) {
+    if (t.dynamicStiffness > 0.0) {
+      line(fmt::format("    viscoelastic:           # EA|{} (deck line {}): the static EA above, and",
+                       t.dynamicStiffnessSlope > 0.0 ? "alphaMBL|vbeta" : "EA_d", t.sourceLine));
+      line(fmt::format("      dynamic_stiffness: {}   # {}", num(t.dynamicStiffness),
+                       t.dynamicStiffnessSlope > 0.0 ? "alphaMBL" : "EA_d"));
+      if (t.dynamicStiffnessSlope > 0.0)
+        line(fmt::format("      dynamic_stiffness_slope: {}   # vbeta", num(t.dynamicStiffnessSlope)));
+      line(fmt::format("      slow_damping: {}        # BA", num(t.axialDamping)));
+      if (t.dynamicDamping > 0.0)
+        line(fmt::format("      dynamic_damping: {}     # BA_d", num(t.dynamicDamping)));
+      notes.push_back(fmt::format(
+          "line type {}: viscoelastic; tangle's dynamics starts from the rope relaxed at its static solution "
+          "(MoorDyn from its slow stretch equal to the whole stretch, relaxed by its initial-condition run)",
+          t.name));
+    } else if (u.damping > 0.0) {
       if (t.axialDamping < 0.0)
         line(fmt::format(
             "    axial_damping: {}       # BA/-zeta = {}: zeta x (L/N) x sqrt(EA m) of line {}, as MoorDyn",
@@ -1522,6 +1536,30 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
     const bool clampA = endBlock("end_a", startPoint, name, 0, bendingOf(headLine.lineType));
     const bool clampB = endBlock("end_b", endPoint, name, 1, bendingOf(tailLine.lineType));
     if (const auto f = failureOfChain.find(chainIndex); f != failureOfChain.end()) line(f->second);
+    {
+      // MoorDyn starts a line between any two points; tangle refuses ends more than 1.2 x the line's length
+      // apart (a units mistake, usually) unless told: a deck that starts a line that stretched (a rope's
+      // constitutive test) says so.
+      double length = 0.0;
+      for (const ChainEntry& c : chain) length += deck.lines[static_cast<std::size_t>(c.line)].length;
+      const auto located = [&](int id) -> const MoorDynPoint* {
+        if (id <= 0) return nullptr;
+        const MoorDynPoint& p = deck.points[static_cast<std::size_t>(id - 1)];
+        return p.kind == MoorDynPointKind::Body ? nullptr : &p;
+      };
+      const MoorDynPoint* a = located(startPoint);
+      const MoorDynPoint* b = located(endPoint);
+      if (a && b && (b->position - a->position).norm() > 1.2 * length) {
+        const double stretch = (b->position - a->position).norm() / length - 1.0;
+        line(
+            fmt::format("    span_check: false         # its ends are {:.0f} % farther apart than its length",
+                        100.0 * stretch));
+        notes.push_back(
+            fmt::format("line {}: starts stretched {:.0f} % (its points' distance against its "
+                        "UnstrLen); accepted, as MoorDyn does",
+                        name, 100.0 * stretch));
+      }
+    }
     line("    sections:");
     int node = 0;
     double arc = 0.0;

@@ -388,13 +388,44 @@ class DeckParser {
     const auto key = [&](const char* column) { return fmt::format("line type {} {}", t.name, column); };
     t.diameter = number(n, key("Diam"), w[1]);
     t.massPerLength = number(n, key("Mass/m"), w[2]);
-    if (w[3].find('|') == std::string::npos && upper(w[3]).rfind("SYROPE:", 0) != 0 && !deckNumber(w[3])) {
+    if (upper(w[3]).rfind("SYROPE:", 0) == 0) {
+      fail(n, key("EA"),
+           fmt::format(
+               "'{}': the SYROPE rope model (working curves that follow the largest mean tension) is not "
+               "supported by tangle; its viscoelastic model (EA|EA_d or EA|alphaMBL|vbeta) is",
+               w[3]));
+    } else if (w[3].find('|') != std::string::npos) {
+      // MoorDyn's viscoelastic model (MoorDyn2.cpp, readLineType): "EA_s|EA_d" (a constant dynamic stiffness)
+      // or "EA_s|alphaMBL|vbeta" (EA_d = alphaMBL + vbeta T_mean); BA "BA|BA_d" (BA_d 0 if not given).
+      const std::vector<double> parts = bar(n, key("EA"), w[3]);
+      if (parts.size() != 2 && parts.size() != 3)
+        fail(n, key("EA"), fmt::format("'{}': expected EA|EA_d or EA|alphaMBL|vbeta (2 or 3 values)", w[3]));
+      t.axialStiffness = parts[0];
+      t.dynamicStiffness = parts[1];
+      if (parts.size() == 3) t.dynamicStiffnessSlope = parts[2];
+      if (!(t.dynamicStiffness > t.axialStiffness) || t.dynamicStiffnessSlope < 0.0)
+        fail(n, key("EA"),
+             fmt::format("'{}': the dynamic stiffness must exceed the static one and its slope be >= 0",
+                         w[3]));
+      const std::vector<double> damping = bar(n, key("BA/-zeta"), w[4]);
+      if (damping.size() > 2)
+        fail(n, key("BA/-zeta"), fmt::format("'{}': expected BA or BA|BA_d (1 or 2 values)", w[4]));
+      t.axialDamping = damping[0];
+      if (damping.size() == 2) t.dynamicDamping = damping[1];
+      if (!(t.axialDamping > 0.0) || t.dynamicDamping < 0.0)
+        fail(n, key("BA/-zeta"),
+             fmt::format(
+                 "'{}': a viscoelastic rope needs BA > 0 in N s (its slow dashpot; not a damping ratio) "
+                 "and BA_d >= 0",
+                 w[4]));
+    } else if (!deckNumber(w[3])) {
       readTensionStrain(n, t, w[3]);  // a nonlinear EA from a curve file
     } else {
       t.axialStiffness = scalarProperty(n, t.name, "EA", w[3], "viscoelastic axial stiffness laws");
     }
-    t.axialDamping =
-        scalarProperty(n, t.name, "BA/-zeta", w[4], "tension-dependent or viscoelastic axial damping laws");
+    if (t.dynamicStiffness == 0.0)
+      t.axialDamping =
+          scalarProperty(n, t.name, "BA/-zeta", w[4], "tension-dependent or viscoelastic axial damping laws");
     t.bendingStiffness = scalarProperty(n, t.name, "EI", w[5], "nonlinear bending stiffness laws");
     t.dragNormal = number(n, key("Cd"), w[6]);
     t.addedMassNormal = number(n, key("Ca"), w[7]);

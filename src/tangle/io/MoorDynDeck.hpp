@@ -34,6 +34,11 @@ struct MoorDynLineType {
   std::vector<std::pair<double, double>> tensionStrain;
   std::string tensionStrainFile;  ///< the curve file's path as read
   double axialDamping = 0.0;      ///< BA [N s] (>= 0), or minus a damping ratio of the segments' axial mode
+  /// A viscoelastic rope (EA "EA|EA_d" or "EA|alphaMBL|vbeta", BA "BA|BA_d"): EA_d0 [N] (0: elastic), its
+  /// slope with the mean load beta [-] and the dynamic dashpot BA_d [N s]; BA is then the slow dashpot.
+  double dynamicStiffness = 0.0;
+  double dynamicStiffnessSlope = 0.0;
+  double dynamicDamping = 0.0;
   double bendingStiffness = 0.0;  ///< EI [N m^2]
   double dragNormal = 0.0;        ///< Cd [-] on d
   double addedMassNormal = 0.0;   ///< Ca [-] on pi/4 d^2

@@ -20,6 +20,7 @@ void State::applyIncrement(const DofMap& dofs, const VecX& fullIncrement, bool o
 
 void State::setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement) {
   time = from.time;
+  if (&from != this) viscoelastic = from.viscoelastic;
   const int nodes = dofs.nodeCount();
   position.resize(static_cast<std::size_t>(nodes));
   // Nodes without rotations keep the identity triad in every state (the struct's contract): copied only
@@ -41,6 +42,7 @@ void State::assignFrom(const State& from, const DofMap& dofs) {
   position = from.position;
   velocity = from.velocity;
   acceleration = from.acceleration;
+  viscoelastic = from.viscoelastic;
   if (triad.size() != from.triad.size()) {
     triad = from.triad;
     return;

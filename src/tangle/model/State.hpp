@@ -17,6 +17,14 @@ struct State {
   std::vector<Mat3> triad;     ///< node triads (beam nodes; identity for bar nodes)
   VecX velocity;               ///< per full DOF
   VecX acceleration;           ///< per full DOF
+  /// Internal variables of the viscoelastic rope elements (solver::ViscoelasticElements numbers them): the
+  /// slow strain x [-] and the tension [N] of each at `time` [s], the last committed dynamic state. Empty
+  /// before the dynamics (the statics uses the ropes' static EA) and in a model without such ropes.
+  struct Viscoelastic {
+    std::vector<double> slowStrain;
+    std::vector<double> tension;
+    double time = 0.0;
+  } viscoelastic;
 
   /// Applies an increment given per full DOF: x += du, Q <- exp(dtheta) Q (multiplicative, spatial).
   /// With `orthonormalise`, each updated triad is re-orthonormalised (round-off drift over many updates);
@@ -28,7 +36,8 @@ struct State {
   /// triad, per iterate showed in profiles: docs/performance.md).
   /// `from` may be this state.
   void setIncremented(const State& from, const DofMap& dofs, const VecX& fullIncrement);
-  /// This state made equal to `from` (same model): time, positions, velocities, accelerations, and the
+  /// This state made equal to `from` (same model): time, positions, velocities, accelerations, the internal
+  /// variables, and the
   /// triads of the nodes with rotations; the other triads are copied only when this state has none yet (they
   /// are the identity in every state). The copy of a time step's start: 12 bar lines' identity triads were
   /// 174 kB a step.

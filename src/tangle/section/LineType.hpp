@@ -9,6 +9,17 @@
 
 namespace tangle::section {
 
+/// A viscoelastic (polyester) rope's axial behaviour beside its static EA (line_types[].viscoelastic;
+/// MoorDyn's "EA|EA_d" or "EA|alphaMBL|vbeta" with "BA|BA_d"): element::ViscoelasticAxialLaw.
+/// dynamicStiffness 0: none.
+struct Viscoelasticity {
+  double dynamicStiffness = 0.0;       ///< EA_d0 [N]: the dynamic stiffness at zero mean load, > EA
+  double dynamicStiffnessSlope = 0.0;  ///< beta [-]: d EA_d / d T_mean (0: constant)
+  double slowDamping = 0.0;            ///< BA [N s]: the dashpot parallel to the static branch
+  double dynamicDamping = 0.0;         ///< BA_d [N s]: the dashpot parallel to the dynamic spring
+  bool present() const { return dynamicStiffness > 0.0; }
+};
+
 /// Cross-section properties of a line, per unit length where it applies.
 /// A line type with bendingStiffness == 0 is a cable (chain, wire): it is meshed with bar elements
 /// (3 DOF per node); otherwise with co-rotational beams (6 DOF per node).
@@ -37,6 +48,9 @@ struct LineType {
   double addedMassNormal = 1.0;     ///< normal added-mass coefficient Can [-]
   double addedMassAxial = 0.0;      ///< axial added-mass coefficient Caa [-]
   double axialDamping = 0.0;        ///< structural axial damping coefficient c [N s] (force = c * strain rate)
+  /// Cables only: a viscoelastic rope's dynamic stiffness and dashpots; the dynamics follows them, the
+  /// statics the static EA (axialStiffness: the rope relaxed).
+  Viscoelasticity viscoelastic;
   /// Minimum breaking load, MBL [N] (line_types[].minimum_breaking_load); 0: not given. The run warns where
   /// the effective tension exceeds it and reports the largest tension over MBL of each line.
   double minimumBreakingLoad = 0.0;

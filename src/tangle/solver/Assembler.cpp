@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "tangle/core/Error.hpp"
 #include "tangle/core/ForEachIndex.hpp"
 #include "tangle/seabed/Seabed.hpp"
 
@@ -19,7 +20,7 @@ double submergedFraction(double z1, double z2) {
 }
 }  // namespace
 
-Assembler::Assembler(const model::Model& model) : m_model(&model) {
+Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model) {
   const auto& env = model.environment();
   std::vector<double> submerged(model.lines().size(), 0.0), air(model.lines().size(), 0.0);
   for (const auto& el : model.elements()) {
@@ -159,6 +160,7 @@ void Assembler::commitStep(model::State& state, double dt) {
     addSeabed(state, request, scratch, nullptr, nullptr);
     commitAnchors(state);
   }
+  m_visco.commit(state);
   for (LoadContributor* c : m_contributors) c->commitStep(state, dt);
 }
 
@@ -272,7 +274,10 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     const int d1 = dofs.firstDof(el.node1);
     const int d2 = dofs.firstDof(el.node2);
     std::optional<element::Bar> barCopy;
-    if (el.bar && !matrix && beta == 0.0) {
+    const int visco = request.dynamic ? m_visco.index(e) : -1;
+    if (visco >= 0 && m_visco.active(state)) {
+      addViscoelasticBar(state, el, visco, d1, d2, beta, request, force, matrix);
+    } else if (el.bar && !matrix && beta == 0.0) {
       // The force alone (Bar::forceOnNode2: the same arithmetic as compute's, inline).
       const Vec3 f2 =
           barOf(e, barCopy)
@@ -304,6 +309,34 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     if (request.dynamic && el.type->axialDamping > 0.0)
       addAxialDamping(state, el, d1, d2, request, force, matrix);
   });
+}
+
+void Assembler::addViscoelasticBar(const model::State& state, const model::LineElement& el, int k, int d1,
+                                   int d2, double beta, const AssemblyRequest& request, VecX& force,
+                                   SystemMatrix* matrix) const {
+  const Vec3 chord = state.position[el.node2] - state.position[el.node1];
+  const double l = chord.norm();
+  if (!(l > 0.0)) throw Error("Bar: the two nodes coincide (zero current length)");
+  const Vec3 e = chord / l;
+  const double l0 = el.restLength;
+  const double rate = e.dot(state.velocity.segment<3>(d2) - state.velocity.segment<3>(d1)) / l0;
+  const ViscoelasticElements::Axial a = m_visco.axial(k, state, (l - l0) / l0, rate, compressionFactor(el));
+  Vec6 f;
+  f.head<3>() = -a.force * e;
+  f.tail<3>() = a.force * e;
+  Mat6 kt;
+  const Mat3 ee = e * e.transpose();
+  const Mat3 k3 = (a.stiffness / l0) * ee + (a.force / l) * (Mat3::Identity() - ee);
+  kt << k3, -k3, -k3, k3;
+  const int map[6] = {d1, d1 + 1, d1 + 2, d2, d2 + 1, d2 + 2};
+  scatterElement(map, f, kt, state, beta, request, force, matrix);
+  if (matrix && request.cf != 0.0 && a.damping != 0.0) {
+    const Mat3 c = (a.damping / l0) * ee;
+    matrix->add3x3(d1, d1, c, request.cf);
+    matrix->add3x3(d2, d2, c, request.cf);
+    matrix->add3x3(d1, d2, c, -request.cf);
+    matrix->add3x3(d2, d1, c, -request.cf);
+  }
 }
 
 void Assembler::addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
@@ -667,7 +700,9 @@ void Assembler::elementTension(const model::State& state, std::vector<double>& t
       if (beamForces) (*beamForces)[e] = element::BeamSectionForces{0.0, 0.0, Vec3::Zero(), Vec3::Zero()};
       continue;
     }
-    if (el.bar) {
+    if (const int visco = m_visco.index(e); visco >= 0 && m_visco.active(state)) {
+      t[e] = m_visco.tension(visco, state, compressionFactor(el));
+    } else if (el.bar) {
       std::optional<element::Bar> barCopy;
       t[e] = barOf(e, barCopy)
                  .axialForce(state.position[el.node1], state.position[el.node2], compressionFactor(el));

@@ -17,6 +17,7 @@
 #include "tangle/model/State.hpp"
 #include "tangle/solver/LoadContributor.hpp"
 #include "tangle/solver/SystemMatrix.hpp"
+#include "tangle/solver/ViscoelasticElements.hpp"
 
 namespace tangle::solver {
 
@@ -194,6 +195,12 @@ class Assembler {
                  SystemMatrix* matrix = nullptr);
   void addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
                        const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const;
+  /// A viscoelastic rope's bar in the dynamics (ViscoelasticElements k): its axial force from the law, the
+  /// tangent kf (dN/d eps / L0 e e^T + N / l (I - e e^T)) + cf dN/d eps' / L0 e e^T, Rayleigh damping as a
+  /// bar's.
+  void addViscoelasticBar(const model::State& state, const model::LineElement& el, int k, int d1, int d2,
+                          double beta, const AssemblyRequest& request, VecX& force,
+                          SystemMatrix* matrix) const;
   void addSeabed(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix,
                  const std::vector<int>* nodes = nullptr);
   void addOwnMass(double mf, SystemMatrix* matrix, const VecX* acceleration, VecX* out,
@@ -213,6 +220,7 @@ class Assembler {
   }
 
   const model::Model* m_model;
+  ViscoelasticElements m_visco;  // the viscoelastic ropes' bars and their internal variables
   std::vector<LoadContributor*> m_contributors;
   double m_forceScale = 1.0;
   std::vector<double> m_nodeForceScale;

@@ -604,6 +604,33 @@ TEST(ModelReader, ReadsATensionStrainCurve) {
   EXPECT_DOUBLE_EQ(t.axialStiffness, 4.0e8);  // the largest slope
 }
 
+TEST(ModelReader, ReadsAViscoelasticRope) {
+  const std::string yaml =
+      edited(kBaseModel, "    axial_stiffness: 5.8e8\n",
+             "    axial_stiffness: 1.4e8\n    viscoelastic: {dynamic_stiffness: 1.6e8, "
+             "dynamic_stiffness_slope: 0.4, slow_damping: 4e9, dynamic_damping: 1.1e7}\n");
+  const section::LineType& t = readModelString(yaml, kSource).lineTypes.at("chain");
+  EXPECT_DOUBLE_EQ(t.axialStiffness, 1.4e8);
+  EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicStiffness, 1.6e8);
+  EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicStiffnessSlope, 0.4);
+  EXPECT_DOUBLE_EQ(t.viscoelastic.slowDamping, 4e9);
+  EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicDamping, 1.1e7);
+}
+
+TEST(ModelReaderErrors, ViscoelasticRopeNeedsAStifferDynamicBranch) {
+  expectEditError(
+      "    axial_stiffness: 5.8e8\n",
+      "    axial_stiffness: 5.8e8\n    viscoelastic: {dynamic_stiffness: 5e8, slow_damping: 1e9}\n",
+      "viscoelastic", "line_types[chain].viscoelastic.dynamic_stiffness", "must exceed the static");
+  expectEditError("    axial_stiffness: 5.8e8\n",
+                  "    axial_stiffness: 5.8e8\n    viscoelastic: {dynamic_stiffness: 9e8}\n", "viscoelastic",
+                  "line_types[chain].viscoelastic.slow_damping", "");
+  expectEditError(
+      "    axial_stiffness: 2.0e9\n",
+      "    axial_stiffness: 2.0e9\n    viscoelastic: {dynamic_stiffness: 3e9, slow_damping: 1e9}\n",
+      "viscoelastic", "line_types[pipe].viscoelastic", "no bending_stiffness");
+}
+
 TEST(ModelReaderErrors, TensionStrainCurveMustIncrease) {
   expectEditError("    axial_stiffness: 5.8e8\n", "    tension_strain: [[0.02, 2.0e6], [0.01, 3.0e6]]\n",
                   "tension_strain", "line_types[chain].tension_strain[1]", "strains must increase from 0");

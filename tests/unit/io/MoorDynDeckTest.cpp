@@ -511,11 +511,40 @@ TEST(MoorDynDeck, AnEACurveFileBecomesATensionStrainCurve) {
   std::filesystem::remove_all(dir);
 }
 
-TEST(MoorDynDeck, RefusesViscoelasticStiffnessAndMissingCurveFiles) {
+TEST(MoorDynDeck, RefusesSyropeAndBadViscoelasticRopesAndMissingCurveFiles) {
   expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 poly_ea.dat -1 0 1 1 0 0\n"), 8,
                 "neither a number nor a curve file that can be opened");
+  expectRefused(
+      deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 SYROPE:s.dat|1e8|20 1e9 0 1 1 0 0\n"), 8,
+      "SYROPE");
+  // A damping ratio (negative BA) is no viscoelastic rope's slow dashpot; a dynamic stiffness at or below EA.
   expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 1e8|2e8 -1 0 1 1 0 0\n"), 8,
-                "viscoelastic");
+                "BA > 0");
+  expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 1e8|5e7 1e9 0 1 1 0 0\n"), 8,
+                "must exceed the static one");
+  expectRefused(deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", "poly 0.2 20 1e8|2e8|1|2 1e9 0 1 1 0 0\n"), 8,
+                "2 or 3 values");
+}
+
+// MoorDyn's viscoelastic rope (MoorDyn2.cpp readLineType): "EA|EA_d" or "EA|alphaMBL|vbeta" with "BA|BA_d"
+// becomes line_types[].viscoelastic, the static EA the axial_stiffness, BA the slow dashpot (not
+// axial_damping).
+TEST(MoorDynDeck, ReadsViscoelasticRopes) {
+  for (const char* ea : {"1e8|2e8", "1e8|1.5e8|0.4"}) {
+    const MoorDynDeck d = parseMoorDynDeck(
+        deck(kTwoPoints, "1 poly 1 2 320 40 -\n", "", fmt::format("poly 0.2 20 {} 4e9|1e7 0 1 1 0 0\n", ea)),
+        "visco.txt");
+    const MoorDynConversion c = convertMoorDynDeck(d);
+    const model::ModelSpec spec = readModelString(c.yaml, "visco.txt");
+    const section::LineType& t = spec.lineTypes.at("poly");
+    EXPECT_DOUBLE_EQ(t.axialStiffness, 1e8);
+    EXPECT_TRUE(t.viscoelastic.present());
+    EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicStiffness, std::string(ea) == "1e8|2e8" ? 2e8 : 1.5e8);
+    EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicStiffnessSlope, std::string(ea) == "1e8|2e8" ? 0.0 : 0.4);
+    EXPECT_DOUBLE_EQ(t.viscoelastic.slowDamping, 4e9);
+    EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicDamping, 1e7);
+    EXPECT_EQ(t.axialDamping, 0.0);
+  }
 }
 
 TEST(MoorDynDeck, RefusesVortexInducedVibration) {
