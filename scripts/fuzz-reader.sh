@@ -17,7 +17,9 @@ mkdir -p "$work/corpus"
 sources=("$root/tests/fuzz/ReaderFuzz.cpp" "$root/src/tangle/io/ModelReader.cpp" "$root/src/tangle/core/Error.cpp"
          "$root/src/tangle/analysis/SnCurve.cpp" "$root/src/tangle/io/MoorDynDeck.cpp"
          "$root/src/tangle/io/MoorDynConversion.cpp" "$root/src/tangle/seabed/SeabedSurface.cpp"
-         "$root/src/tangle/geometry/HullShape.cpp" "$root/src/tangle/geometry/Rotation.cpp")
+         "$root/src/tangle/geometry/HullShape.cpp" "$root/src/tangle/geometry/Rotation.cpp"
+         "$root/src/tangle/core/WordTable.cpp" "$root/src/tangle/hydro/CurrentGrid.cpp"
+         "$root/src/tangle/element/SyropeAxialLaw.cpp")
 binary="$work/reader-fuzz"
 # Rebuild only when a source or header of the reader is newer than the binary.
 rebuild=1

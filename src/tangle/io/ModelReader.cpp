@@ -32,6 +32,7 @@
 #include "tangle/analysis/SnCurve.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/element/SyropeAxialLaw.hpp"
 #include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/io/MoorDynConversion.hpp"
 
@@ -767,6 +768,60 @@ void readEnvironment(const Value& v, ModelSpec& spec) {
   }
 }
 
+/// line_types[].syrope: a SYROPE rope (element::SyropeAxialLaw); its static law (tensionStrain) is the
+/// working curve of its initial largest mean tension.
+void readSyrope(const Value& v, const Map& type, section::LineType& t) {
+  if (t.bendingStiffness > 0.0) v.fail("a SYROPE rope is a cable (no bending_stiffness)");
+  for (const char* other : {"tension_strain", "axial_stiffness", "viscoelastic"})
+    if (type.find(other))
+      v.fail(fmt::format("a SYROPE rope's curves replace {}: give one or the other", other));
+  const Map m(v, {"original_curve", "working_curve", "k1", "k2", "dynamic_stiffness",
+                  "dynamic_stiffness_slope", "slow_damping", "dynamic_damping", "initial_max_mean_tension"});
+  auto curves = std::make_shared<section::SyropeCurves>();
+  const Value owc = m.get("original_curve", "a list of [strain, tension] from a point of zero tension");
+  std::vector<double> strain, tension;
+  for (const Value& row : owc.items(2)) {
+    const std::vector<double> p = row.numbers(2, "[strain (a fraction), tension in N]");
+    if (!strain.empty() && (!(p[0] > strain.back()) || !(p[1] > tension.back())))
+      row.fail("strains and tensions must increase");
+    if (strain.empty() && (p[1] != 0.0 || p[0] < 0.0))
+      row.fail("the curve starts at zero tension (a strain >= 0)");
+    strain.push_back(p[0]);
+    tension.push_back(p[1]);
+  }
+  curves->originalCurve = std::make_shared<const core::PiecewiseLinear>(strain, tension);
+  curves->form =
+      m.get("working_curve", "linear, quadratic or exponential")
+          .choice<section::SyropeCurves::Form>({{"linear", section::SyropeCurves::Form::Linear},
+                                                {"quadratic", section::SyropeCurves::Form::Quadratic},
+                                                {"exponential", section::SyropeCurves::Form::Exponential}});
+  curves->k1 = m.number("k1", nonNegativeUpTo(kMaxStiffness));
+  curves->k2 = m.number("k2", 0.0, closed(-50.0, 50.0));
+  const Value tmax = m.get("initial_max_mean_tension", "Tmax at the start, in N");
+  curves->initialMaxMeanTension =
+      tmax.number(nonNegativeUpTo(kMaxStiffness).withHint("Tmax at the start, N"));
+  if (curves->initialMaxMeanTension > tension.back())
+    tmax.fail(fmt::format("Tmax {} N is beyond the original curve's last tension {} N",
+                          numberText(curves->initialMaxMeanTension), numberText(tension.back())));
+  section::Viscoelasticity& ve = t.viscoelastic;
+  ve.dynamicStiffness =
+      m.number("dynamic_stiffness", positiveUpTo(kMaxStiffness).withHint("alpha (alphaMBL) in N"));
+  ve.dynamicStiffnessSlope = m.number("dynamic_stiffness_slope", 0.0, nonNegativeUpTo(1.0e4));
+  ve.slowDamping = m.number("slow_damping", positiveUpTo(kMaxStiffness * 1e3).withHint("BA in N s"));
+  ve.dynamicDamping = m.number("dynamic_damping", 0.0, nonNegativeUpTo(kMaxStiffness * 1e3));
+  try {
+    const element::SyropeAxialLaw law({curves->originalCurve,
+                                       static_cast<element::WorkingCurveForm>(static_cast<int>(curves->form)),
+                                       curves->k1, curves->k2, ve.dynamicStiffness, ve.dynamicStiffnessSlope,
+                                       ve.slowDamping, ve.dynamicDamping});
+    t.tensionStrain = law.staticCurve(curves->initialMaxMeanTension);
+  } catch (const Error& e) {
+    v.fail(e.what());
+  }
+  t.axialStiffness = t.tensionStrain->largestSlope();
+  t.syrope = std::move(curves);
+}
+
 void readLineTypes(const Value& v, ModelSpec& spec) {
   NameRegistry names("line type");
   for (const Value& item : v.items(1, ItemLabel::Name)) {
@@ -774,7 +829,7 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
                 {"name", "outer_diameter", "buoyancy_diameter", "contact_diameter", "mass_per_length",
                  "axial_stiffness", "bending_stiffness", "torsional_stiffness", "drag_normal", "drag_axial",
                  "added_mass_normal", "added_mass_axial", "axial_damping", "minimum_breaking_load",
-                 "internal_diameter", "maximum_strain", "tension_strain", "viscoelastic"});
+                 "internal_diameter", "maximum_strain", "tension_strain", "viscoelastic", "syrope"});
     const section::LineType d;
     section::LineType t;
     t.name = names.add(m);
@@ -784,7 +839,7 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
     t.contactDiameter = m.number("contact_diameter", t.outerDiameter, diameter);
     t.massPerLength = m.number("mass_per_length", positiveUpTo(kMaxMassPerLength));
     const std::optional<Value> curve = m.find("tension_strain");
-    if (!curve || m.find("axial_stiffness"))
+    if ((!curve && !m.find("syrope")) || m.find("axial_stiffness"))
       t.axialStiffness = m.number("axial_stiffness", positiveUpTo(kMaxStiffness));
     t.bendingStiffness = m.number("bending_stiffness", d.bendingStiffness, nonNegativeUpTo(kMaxStiffness));
     if (curve) {
@@ -842,6 +897,7 @@ void readLineTypes(const Value& v, ModelSpec& spec) {
       ve.dynamicDamping =
           vm.number("dynamic_damping", 0.0, nonNegativeUpTo(kMaxStiffness * 1e3).withHint("BA_d in N s"));
     }
+    if (const std::optional<Value> syrope = m.find("syrope")) readSyrope(*syrope, m, t);
     if (m.find("maximum_strain"))
       t.maximumStrain = m.number("maximum_strain", positiveUpTo(1.0).withHint("a fraction: 0.005 for 0.5 %"));
     if (const std::optional<Value> bore = m.find("internal_diameter")) {

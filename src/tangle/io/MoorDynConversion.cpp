@@ -1175,7 +1175,61 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
     line(fmt::format("    outer_diameter: {}      # Diam: drag, added mass and buoyancy (pi/4 d^2)",
                      num(t.diameter)));
     line(fmt::format("    mass_per_length: {}     # Mass/m", num(t.massPerLength)));
-    if (t.tensionStrain.empty()) {
+    if (t.syrope) {
+      // The SYROPE IC rows of its lines: one Tmax0 for the type (tangle keeps it per line type).
+      const MoorDynSyropeIc* ic = nullptr;
+      for (const int l : u.lines) {
+        const int id = deck.lines[static_cast<std::size_t>(l)].id;
+        for (const MoorDynSyropeIc& row : deck.syropeIc)
+          if (std::find(row.lines.begin(), row.lines.end(), id) != row.lines.end()) {
+            if (ic && ic->maxTension != row.maxTension)
+              throw InputError(
+                  deck.file, row.sourceLine, "SYROPE IC",
+                  fmt::format("lines of line type {} start from different Tmax0 ({} and {} N): tangle "
+                              "keeps one per line type; give them types of their own",
+                              t.name, num(ic->maxTension), num(row.maxTension)));
+            ic = &row;
+          }
+        if (!ic)
+          throw InputError(deck.file, t.sourceLine, fmt::format("line type {} EA", t.name),
+                           fmt::format("line {} is a SYROPE rope without a row in the SYROPE IC section (its "
+                                       "initial Tmax0 and Tmean0, as MoorDyn needs)",
+                                       id));
+      }
+      std::vector<std::pair<double, double>> curve = t.syropeCurve;
+      if (curve.front().second > 0.0) {
+        notes.push_back(
+            fmt::format("line type {}: its original working curve ({}) starts at tension {} N (MoorDyn's "
+                        "read_curve skips "
+                        "three header lines); tangle starts it at (0, 0), which moves the working curves' "
+                        "eps_0 from {} to 0 "
+                        "for the quadratic and exponential forms",
+                        t.name, t.syropeCurveFile, num(curve.front().second), num(curve.front().first)));
+        curve.insert(curve.begin(), {0.0, 0.0});
+      }
+      std::string points;
+      for (const auto& [strain, tension] : curve)
+        points += fmt::format("{}[{}, {}]", points.empty() ? "" : ", ", num(strain), num(tension));
+      line(fmt::format("    syrope:                 # EA SYROPE:{}|alphaMBL|vbeta (deck line {})",
+                       t.syropeSettingsFile, t.sourceLine));
+      line(fmt::format("      original_curve: [{}]   # OWC {}", points, t.syropeCurveFile));
+      line(fmt::format("      working_curve: {}       # WCType",
+                       t.syropeForm == "exp" ? "exponential" : t.syropeForm));
+      line(fmt::format("      k1: {}", num(t.syropeK1)));
+      line(fmt::format("      k2: {}", num(t.syropeK2)));
+      line(fmt::format("      dynamic_stiffness: {}   # alphaMBL", num(t.dynamicStiffness)));
+      line(fmt::format("      dynamic_stiffness_slope: {}   # vbeta", num(t.dynamicStiffnessSlope)));
+      line(fmt::format("      slow_damping: {}        # BA", num(t.axialDamping)));
+      if (t.dynamicDamping > 0.0)
+        line(fmt::format("      dynamic_damping: {}     # BA_d", num(t.dynamicDamping)));
+      line(fmt::format("      initial_max_mean_tension: {}   # SYROPE IC Tmax0 (deck line {})",
+                       num(ic->maxTension), ic->sourceLine));
+      notes.push_back(fmt::format(
+          "line type {}: SYROPE; tangle's statics follows the working curve of Tmax0 and its dynamics starts "
+          "from that equilibrium (MoorDyn starts the slow strain at Tmean0 = {} N whatever the stretch); the "
+          "working curves are exact (MoorDyn tabulates them)",
+          t.name, num(ic->meanTension)));
+    } else if (t.tensionStrain.empty()) {
       line(fmt::format("    axial_stiffness: {}     # EA", num(t.axialStiffness)));
     } else {
       // MoorDyn (Line.cpp, getNonlinearEA; Util/Interp.hpp): the tension is interpolated in the curve's
@@ -1203,7 +1257,9 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       line(fmt::format(
           "    # bending_stiffness: {}   # EI: negligible over its segments, a cable (see the notes)",
           num(t.bendingStiffness)));
-    if (t.dynamicStiffness > 0.0) {
+    if (t.syrope) {
+      // (the dashpots are in its syrope block)
+    } else if (t.dynamicStiffness > 0.0) {
       line(fmt::format("    viscoelastic:           # EA|{} (deck line {}): the static EA above, and",
                        t.dynamicStiffnessSlope > 0.0 ? "alphaMBL|vbeta" : "EA_d", t.sourceLine));
       line(fmt::format("      dynamic_stiffness: {}   # {}", num(t.dynamicStiffness),

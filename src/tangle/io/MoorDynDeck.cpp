@@ -16,6 +16,12 @@
 namespace tangle::io {
 namespace {
 
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
 std::string upper(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
                  [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
@@ -55,6 +61,7 @@ enum class Section {
   Points,
   Lines,
   Failures,
+  SyropeIc,
   Options,
   Outputs,
   Unsupported
@@ -87,7 +94,7 @@ const SectionName kSections[] = {
     {"NODE PROPERTIES", Section::Points, ""},
     {"POINTS", Section::Points, ""},
     {"FAILURE", Section::Failures, ""},
-    {"SYROPE IC", Section::Unsupported, "the Syrope rope model is not supported"},
+    {"SYROPE IC", Section::SyropeIc, ""},
     {"EXTERNAL LOADS", Section::Unsupported, "external loads on points and bodies are not supported"},
     {"OPTIONS", Section::Options, ""},
     {"OUTPUT", Section::Outputs, ""},
@@ -157,6 +164,22 @@ class DeckParser {
         case Section::Failures:
           i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
             deck.failures.push_back(failure(n, w));
+          });
+          break;
+        case Section::SyropeIc:
+          i = readTable(i + 3, [&](int n, const std::vector<std::string>& w) {
+            if (w.size() < 3)
+              fail(n, "SYROPE IC", "expected `Line(s) Tmax0 Tmean0` (e.g. `1,2 1.4e6 4.3e5`)");
+            MoorDynSyropeIc ic;
+            ic.sourceLine = n;
+            std::string ids = w[0];
+            std::replace(ids.begin(), ids.end(), ',', ' ');
+            for (const std::string& id : words(ids)) ic.lines.push_back(integer(n, "SYROPE IC Line(s)", id));
+            ic.maxTension = number(n, "SYROPE IC Tmax0", w[1]);
+            ic.meanTension = number(n, "SYROPE IC Tmean0", w[2]);
+            if (!(ic.maxTension > 0.0) || ic.meanTension < 0.0 || ic.meanTension > ic.maxTension)
+              fail(n, "SYROPE IC", "expected 0 <= Tmean0 <= Tmax0 and Tmax0 > 0 (N)");
+            deck.syropeIc.push_back(std::move(ic));
           });
           break;
         case Section::Options:
@@ -336,12 +359,29 @@ class DeckParser {
   void readTensionStrain(int n, MoorDynLineType& t, const std::string& word) const {
     const std::string key = fmt::format("line type {} EA", t.name);
     const std::filesystem::path path = std::filesystem::path(m_file).parent_path() / word;
+    t.tensionStrainFile = path.string();
+    t.tensionStrain = readCurve(n, key, path, word);
+    // EA: the largest slope of the curve tangle builds from it (from (0, 0): MoorDynConversion).
+    std::vector<double> strains{0.0}, tensions{0.0};
+    for (const auto& [strain, tension] : t.tensionStrain)
+      if (strain > 0.0) {
+        strains.push_back(strain);
+        tensions.push_back(tension);
+      }
+    t.axialStiffness = core::PiecewiseLinear(strains, tensions).largestSlope();
+  }
+
+  /// A curve file as MoorDyn's read_curve reads it: three header lines, then `strain tension` rows, both
+  /// increasing from >= 0.
+  std::vector<std::pair<double, double>> readCurve(int n, const std::string& key,
+                                                   const std::filesystem::path& path,
+                                                   const std::string& word) const {
     std::ifstream in(path);
     if (!in)
       fail(n, key,
            fmt::format("'{}' is neither a number nor a curve file that can be opened ({})", word,
                        path.string()));
-    t.tensionStrainFile = path.string();
+    std::vector<std::pair<double, double>> curve;
     std::string text;
     for (int row = 1; std::getline(in, text); ++row) {
       if (row <= 3) continue;  // headers
@@ -356,24 +396,82 @@ class DeckParser {
         return *x;
       };
       const double strain = value(0, "strain"), tension = value(1, "tension");
-      const double lastStrain = t.tensionStrain.empty() ? -1.0 : t.tensionStrain.back().first;
-      const double lastTension = t.tensionStrain.empty() ? -1.0 : t.tensionStrain.back().second;
+      const double lastStrain = curve.empty() ? -1.0 : curve.back().first;
+      const double lastTension = curve.empty() ? -1.0 : curve.back().second;
       if (!(strain > lastStrain) || strain < 0.0 || !(tension > lastTension) || tension < 0.0)
         throw InputError(
             path.string(), row, "strain tension",
             "strains and tensions increasing from >= 0 (tangle's curve is monotonic: a rope that "
             "softens to nothing has no equilibrium)");
-      t.tensionStrain.push_back({strain, tension});
+      curve.push_back({strain, tension});
     }
-    if (t.tensionStrain.size() < 2)
+    if (curve.size() < 2)
       fail(n, key, fmt::format("the curve file {} has fewer than two points", path.string()));
-    // EA: the largest slope of the curve tangle builds from it (from (0, 0): MoorDynConversion).
-    std::vector<double> strains{0.0}, tensions{0.0};
-    for (const auto& [strain, tension] : t.tensionStrain)
-      if (strain > 0.0) {
-        strains.push_back(strain);
-        tensions.push_back(tension);
+    return curve;
+  }
+
+  /// A SYROPE line type's EA "SYROPE:settings|alphaMBL|vbeta" (MoorDyn2.cpp, readLineType and
+  /// read_syrope_working_curves): the settings file beside the deck, rows `value name`: OWC (the curve file,
+  /// relative to the deck), WCType (linear, quadratic, exp), k1, k2.
+  void readSyrope(int n, MoorDynLineType& t, const std::string& word) const {
+    const std::string key = fmt::format("line type {} EA", t.name);
+    const std::vector<std::string> parts = [&] {
+      std::string list = word.substr(7);
+      std::replace(list.begin(), list.end(), '|', ' ');
+      return words(list);
+    }();
+    if (parts.size() != 3)
+      fail(n, key, fmt::format("'{}': expected SYROPE:settings-file|alphaMBL|vbeta (3 values)", word));
+    t.syrope = true;
+    t.dynamicStiffness = number(n, key, parts[1]);
+    t.dynamicStiffnessSlope = number(n, key, parts[2]);
+    if (!(t.dynamicStiffness > 0.0) || t.dynamicStiffnessSlope < 0.0)
+      fail(n, key, fmt::format("'{}': expected alphaMBL > 0 and vbeta >= 0", word));
+    const std::filesystem::path folder = std::filesystem::path(m_file).parent_path();
+    const std::filesystem::path settings = folder / parts[0];
+    t.syropeSettingsFile = settings.string();
+    std::ifstream in(settings);
+    if (!in) fail(n, key, fmt::format("the SYROPE settings file {} cannot be opened", settings.string()));
+    std::string owc;
+    bool haveK1 = false, haveK2 = false;
+    std::string text;
+    for (int row = 1; std::getline(in, text); ++row) {
+      const std::vector<std::string> v = words(text);
+      if (v.size() < 2) continue;
+      const std::string name = upper(v[1]);
+      const auto value = [&] {
+        const std::optional<double> x = deckNumber(v[0]);
+        if (!x)
+          throw InputError(settings.string(), row, v[1], fmt::format("expected a number, got '{}'", v[0]));
+        return *x;
+      };
+      if (name == "OWC") {
+        owc = v[0];
+      } else if (name == "WCTYPE") {
+        t.syropeForm = lower(v[0]);
+        if (t.syropeForm != "linear" && t.syropeForm != "quadratic" && t.syropeForm != "exp")
+          throw InputError(settings.string(), row, "WCType",
+                           fmt::format("expected LINEAR, QUADRATIC or EXP, got '{}'", v[0]));
+      } else if (name == "K1") {
+        t.syropeK1 = value();
+        haveK1 = true;
+      } else if (name == "K2") {
+        t.syropeK2 = value();
+        haveK2 = true;
       }
+    }
+    if (owc.empty() || t.syropeForm.empty() || !haveK1 || !haveK2)
+      fail(n, key,
+           fmt::format("the SYROPE settings file {} needs OWC, WCType, k1 and k2", settings.string()));
+    const std::filesystem::path curve = folder / owc;
+    t.syropeCurveFile = curve.string();
+    t.syropeCurve = readCurve(n, key, curve, owc);
+    // The static EA's stand-in (rod stiffness, notes): the curve's largest slope.
+    std::vector<double> strains, tensions;
+    for (const auto& [s, f] : t.syropeCurve) {
+      strains.push_back(s);
+      tensions.push_back(f);
+    }
     t.axialStiffness = core::PiecewiseLinear(strains, tensions).largestSlope();
   }
 
@@ -389,11 +487,14 @@ class DeckParser {
     t.diameter = number(n, key("Diam"), w[1]);
     t.massPerLength = number(n, key("Mass/m"), w[2]);
     if (upper(w[3]).rfind("SYROPE:", 0) == 0) {
-      fail(n, key("EA"),
-           fmt::format(
-               "'{}': the SYROPE rope model (working curves that follow the largest mean tension) is not "
-               "supported by tangle; its viscoelastic model (EA|EA_d or EA|alphaMBL|vbeta) is",
-               w[3]));
+      readSyrope(n, t, w[3]);
+      const std::vector<double> damping = bar(n, key("BA/-zeta"), w[4]);
+      if (damping.size() > 2)
+        fail(n, key("BA/-zeta"), fmt::format("'{}': expected BA or BA|BA_d (1 or 2 values)", w[4]));
+      t.axialDamping = damping[0];
+      if (damping.size() == 2) t.dynamicDamping = damping[1];
+      if (!(t.axialDamping > 0.0) || t.dynamicDamping < 0.0)
+        fail(n, key("BA/-zeta"), fmt::format("'{}': a SYROPE rope needs BA > 0 in N s and BA_d >= 0", w[4]));
     } else if (w[3].find('|') != std::string::npos) {
       // MoorDyn's viscoelastic model (MoorDyn2.cpp, readLineType): "EA_s|EA_d" (a constant dynamic stiffness)
       // or "EA_s|alphaMBL|vbeta" (EA_d = alphaMBL + vbeta T_mean); BA "BA|BA_d" (BA_d 0 if not given).
@@ -423,7 +524,7 @@ class DeckParser {
     } else {
       t.axialStiffness = scalarProperty(n, t.name, "EA", w[3], "viscoelastic axial stiffness laws");
     }
-    if (t.dynamicStiffness == 0.0)
+    if (t.dynamicStiffness == 0.0 && !t.syrope)
       t.axialDamping =
           scalarProperty(n, t.name, "BA/-zeta", w[4], "tension-dependent or viscoelastic axial damping laws");
     t.bendingStiffness = scalarProperty(n, t.name, "EI", w[5], "nonlinear bending stiffness laws");

@@ -39,6 +39,16 @@ struct MoorDynLineType {
   double dynamicStiffness = 0.0;
   double dynamicStiffnessSlope = 0.0;
   double dynamicDamping = 0.0;
+  /// A SYROPE rope (EA "SYROPE:settings|alphaMBL|vbeta"): alphaMBL and vbeta in dynamicStiffness and its
+  /// slope, BA and BA_d as above; the settings file's working-curve formula ("linear", "quadratic", "exp"),
+  /// k1, k2 and original working curve (read as MoorDyn's read_curve reads it: three header lines skipped).
+  bool syrope = false;
+  std::string syropeForm;
+  double syropeK1 = 0.0;
+  double syropeK2 = 0.0;
+  std::vector<std::pair<double, double>> syropeCurve;  ///< (strain [-], tension [N])
+  std::string syropeSettingsFile;
+  std::string syropeCurveFile;
   double bendingStiffness = 0.0;  ///< EI [N m^2]
   double dragNormal = 0.0;        ///< Cd [-] on d
   double addedMassNormal = 0.0;   ///< Ca [-] on pi/4 d^2
@@ -160,6 +170,14 @@ struct MoorDynFailure {
   int sourceLine = 0;
 };
 
+/// One SYROPE IC row: the lines' initial largest and mean tensions (MoorDyn2.cpp).
+struct MoorDynSyropeIc {
+  std::vector<int> lines;    ///< ids of the lines
+  double maxTension = 0.0;   ///< Tmax0 [N]
+  double meanTension = 0.0;  ///< Tmean0 [N]
+  int sourceLine = 0;
+};
+
 /// One OPTIONS entry.
 struct MoorDynOption {
   std::string name;   ///< as written
@@ -178,6 +196,7 @@ struct MoorDynDeck {
   std::vector<MoorDynPoint> points;  ///< ids 1..n in order
   std::vector<MoorDynLine> lines;    ///< ids 1..n in order
   std::vector<MoorDynFailure> failures;
+  std::vector<MoorDynSyropeIc> syropeIc;
   std::vector<MoorDynOption> options;
   std::vector<std::string> outputs;  ///< OUTPUTS channel names
 };

@@ -15,10 +15,15 @@
 
 #include "tangle/core/Types.hpp"
 #include "tangle/geometry/HullShape.hpp"
-#include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/seabed/SeabedSpec.hpp"
 #include "tangle/seabed/SeabedSurface.hpp"
 #include "tangle/section/LineType.hpp"
+
+// The current grid the reader builds (hydro is a layer above model: the spec only carries it; io reads it and
+// hydro evaluates it).
+namespace tangle::hydro {
+class CurrentGrid;
+}
 
 namespace tangle::model {
 

@@ -23,6 +23,10 @@ struct State {
   struct Viscoelastic {
     std::vector<double> slowStrain;
     std::vector<double> tension;
+    /// The static branch's load [N]: a SYROPE rope's mean tension T (MoorDyn's segment tension Te), a
+    /// viscoelastic rope's EA_1 x (its "mean load").
+    std::vector<double> meanTension;
+    std::vector<double> maxMeanTension;  ///< a SYROPE rope's largest mean tension so far [N] (0 for others)
     double time = 0.0;
   } viscoelastic;
 

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "tangle/core/Units.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 
 namespace tangle::results {
 

@@ -20,6 +20,18 @@ struct Viscoelasticity {
   bool present() const { return dynamicStiffness > 0.0; }
 };
 
+/// A SYROPE rope's curves (line_types[].syrope; MoorDyn's "SYROPE:file|alphaMBL|vbeta"):
+/// element::SyropeAxialLaw. Its dynamic branch (alpha, beta, BA, BA_d) is in LineType::viscoelastic
+/// (dynamicStiffness = alpha).
+struct SyropeCurves {
+  enum class Form { Linear, Quadratic, Exponential };
+  std::shared_ptr<const core::PiecewiseLinear> originalCurve;  ///< the OWC: tension [N] against strain [-]
+  Form form = Form::Linear;                                    ///< the working curves' formula
+  double k1 = 0.0;                     ///< its first parameter [-] (linear with k1 >= 1: a slope [N])
+  double k2 = 0.0;                     ///< its second parameter [-]
+  double initialMaxMeanTension = 0.0;  ///< Tmax at the start [N]: its working curve is the statics' law
+};
+
 /// Cross-section properties of a line, per unit length where it applies.
 /// A line type with bendingStiffness == 0 is a cable (chain, wire): it is meshed with bar elements
 /// (3 DOF per node); otherwise with co-rotational beams (6 DOF per node).
@@ -51,6 +63,9 @@ struct LineType {
   /// Cables only: a viscoelastic rope's dynamic stiffness and dashpots; the dynamics follows them, the
   /// statics the static EA (axialStiffness: the rope relaxed).
   Viscoelasticity viscoelastic;
+  /// Cables only: a SYROPE rope (with `viscoelastic` for its dynamic branch); null: none. tensionStrain then
+  /// holds the working curve of its initial Tmax (the statics' law).
+  std::shared_ptr<const SyropeCurves> syrope;
   /// Minimum breaking load, MBL [N] (line_types[].minimum_breaking_load); 0: not given. The run warns where
   /// the effective tension exceeds it and reports the largest tension over MBL of each line.
   double minimumBreakingLoad = 0.0;

@@ -46,7 +46,7 @@ bool StaticSolver::debugOutput() {
 }
 
 bool StaticSolver::hasCurrent(const model::Model& model) {
-  if (model.environment().currentGrid && !model.environment().currentGrid->isZero()) return true;
+  if (model.environment().currentGrid) return true;  // (a grid of zeros too: harmless)
   for (const model::CurrentLevel& c : model.environment().current)
     if (c.speed != 0.0) return true;
   return false;

@@ -14,9 +14,19 @@ ViscoelasticElements::ViscoelasticElements(const model::Model& model) : m_model(
     m_index[e] = static_cast<int>(m_elements.size());
     m_elements.push_back(e);
     const section::Viscoelasticity& v = el.type->viscoelastic;
-    m_laws.emplace_back(element::ViscoelasticConstants{el.type->axialStiffness, v.dynamicStiffness,
-                                                       v.dynamicStiffnessSlope, v.slowDamping,
-                                                       v.dynamicDamping});
+    if (const section::SyropeCurves* s = el.type->syrope.get()) {
+      const element::WorkingCurveForm form =
+          s->form == section::SyropeCurves::Form::Quadratic     ? element::WorkingCurveForm::Quadratic
+          : s->form == section::SyropeCurves::Form::Exponential ? element::WorkingCurveForm::Exponential
+                                                                : element::WorkingCurveForm::Linear;
+      m_laws.emplace_back(
+          element::SyropeAxialLaw({s->originalCurve, form, s->k1, s->k2, v.dynamicStiffness,
+                                   v.dynamicStiffnessSlope, v.slowDamping, v.dynamicDamping}));
+    } else {
+      m_laws.emplace_back(
+          element::ViscoelasticAxialLaw({el.type->axialStiffness, v.dynamicStiffness, v.dynamicStiffnessSlope,
+                                         v.slowDamping, v.dynamicDamping}));
+    }
   }
 }
 
@@ -35,13 +45,19 @@ void ViscoelasticElements::strainOf(std::size_t e, const model::State& state, do
 ViscoelasticElements::Axial ViscoelasticElements::axial(int k, const model::State& state, double strain,
                                                         double strainRate, double compressionFactor) const {
   const std::size_t kk = static_cast<std::size_t>(k);
-  const element::ViscoelasticAxialLaw& law = m_laws[kk];
-  const double ea = law.constants().staticStiffness;
+  // The slack law's stiffness: the static EA (a SYROPE rope's: its static curve's largest slope).
+  const double ea = m_model->elements()[m_elements[kk]].type->axialStiffness;
   const double dt = state.time - state.viscoelastic.time;
   if (strain < 0.0) return {compressionFactor * ea * strain, compressionFactor * ea, 0.0};
   if (!(dt > 0.0)) return {state.viscoelastic.tension[kk], ea, 0.0};
+  const double x0 = state.viscoelastic.slowStrain[kk];
+  if (const auto* syrope = std::get_if<element::SyropeAxialLaw>(&m_laws[kk])) {
+    const element::SyropeAxialLaw::Step s =
+        syrope->step(strain, strainRate, x0, state.viscoelastic.maxMeanTension[kk], dt);
+    return {s.tension, s.dTensionDStrain, s.dTensionDRate};
+  }
   const element::ViscoelasticAxialLaw::Step s =
-      law.step(strain, strainRate, state.viscoelastic.slowStrain[kk], dt);
+      std::get<element::ViscoelasticAxialLaw>(m_laws[kk]).step(strain, strainRate, x0, dt);
   return {s.tension, s.dTensionDStrain, s.dTensionDRate};
 }
 
@@ -53,18 +69,44 @@ void ViscoelasticElements::commit(model::State& state) const {
   if (!first && !(dt > 0.0)) return;  // the same state again
   v.slowStrain.resize(m_elements.size());
   v.tension.resize(m_elements.size());
+  v.meanTension.resize(m_elements.size(), 0.0);
+  v.maxMeanTension.resize(m_elements.size(), 0.0);
   for (std::size_t k = 0; k < m_elements.size(); ++k) {
     double strain = 0.0, rate = 0.0;
     strainOf(m_elements[k], state, strain, rate);
-    const element::ViscoelasticAxialLaw& law = m_laws[k];
-    const double compression = m_model->elements()[m_elements[k]].type->compressionFactor;
+    const section::LineType& type = *m_model->elements()[m_elements[k]].type;
+    const double slack =
+        type.compressionFactor * type.axialStiffness * strain;  // a compressed rope's tension
+    if (const auto* syrope = std::get_if<element::SyropeAxialLaw>(&m_laws[k])) {
+      if (first) {
+        // Relaxed on the working curve of the initial Tmax (the statics' law; above Tmax, the OWC).
+        const double tmax = type.syrope->initialMaxMeanTension;
+        const double t = syrope->staticTension(strain, tmax);
+        v.slowStrain[k] = syrope->slowStrain(t, tmax);
+        v.meanTension[k] = t;
+        v.maxMeanTension[k] = std::max(tmax, t);
+        v.tension[k] = strain < 0.0 ? slack : t;
+      } else {
+        const element::SyropeAxialLaw::Step s =
+            syrope->step(strain, rate, v.slowStrain[k], v.maxMeanTension[k], dt);
+        v.slowStrain[k] = s.slowStrain;
+        v.meanTension[k] = s.meanTension;
+        v.maxMeanTension[k] = std::max(v.maxMeanTension[k], s.meanTension);
+        v.tension[k] = strain < 0.0 ? slack : s.tension;
+      }
+      continue;
+    }
+    const auto& law = std::get<element::ViscoelasticAxialLaw>(m_laws[k]);
     if (first) {
       v.slowStrain[k] = law.relaxedSlowStrain(std::max(strain, 0.0));
-      v.tension[k] = law.constants().staticStiffness * strain * (strain < 0.0 ? compression : 1.0);
+      v.meanTension[k] = law.staticBranchStiffnessAt(v.slowStrain[k]) * v.slowStrain[k];
+      v.tension[k] = strain < 0.0 ? slack : law.constants().staticStiffness * strain;
     } else {
+      const double ea1 = law.staticBranchStiffnessAt(v.slowStrain[k]);  // lagged, as the step takes it
       const element::ViscoelasticAxialLaw::Step s = law.step(strain, rate, v.slowStrain[k], dt);
       v.slowStrain[k] = s.slowStrain;
-      v.tension[k] = strain < 0.0 ? compression * law.constants().staticStiffness * strain : s.tension;
+      v.meanTension[k] = ea1 * s.slowStrain;
+      v.tension[k] = strain < 0.0 ? slack : s.tension;
     }
   }
   v.time = state.time;

@@ -1,12 +1,15 @@
 #pragma once
 /// @file ViscoelasticElements.hpp
-/// The bar elements of viscoelastic ropes (section::Viscoelasticity) and their internal variables: the slow
-/// strain each carries from one committed dynamic state to the next (model::State::viscoelastic), the tension
-/// and its tangent at a trial state, and the commit. The statics uses the ropes' static EA (the rope
-/// relaxed); the dynamics starts from the relaxed slow strain of the static solution (docs/theory.md 3.6).
+/// The bar elements of viscoelastic ropes (section::Viscoelasticity, section::SyropeCurves) and their
+/// internal variables: the slow strain each carries from one committed dynamic state to the next
+/// (model::State::viscoelastic), the tension and its tangent at a trial state, and the commit. The statics
+/// uses the ropes' static EA (the rope relaxed); the dynamics starts from the relaxed slow strain of the
+/// static solution (docs/theory.md 3.6).
 
+#include <variant>
 #include <vector>
 
+#include "tangle/element/SyropeAxialLaw.hpp"
 #include "tangle/element/ViscoelasticAxialLaw.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
@@ -54,9 +57,9 @@ class ViscoelasticElements {
   /// Strain and strain rate of element e at `state` (rate 0 without velocities).
   void strainOf(std::size_t e, const model::State& state, double& strain, double& rate) const;
   const model::Model* m_model;
-  std::vector<int> m_index;                           // per element: its number k, or -1
-  std::vector<std::size_t> m_elements;                // per k: the element
-  std::vector<element::ViscoelasticAxialLaw> m_laws;  // per k
+  std::vector<int> m_index;             // per element: its number k, or -1
+  std::vector<std::size_t> m_elements;  // per k: the element
+  std::vector<std::variant<element::ViscoelasticAxialLaw, element::SyropeAxialLaw>> m_laws;  // per k
 };
 
 }  // namespace tangle::solver

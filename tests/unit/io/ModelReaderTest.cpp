@@ -22,6 +22,7 @@
 #include "TestPaths.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/io/ModelReader.hpp"
 
 namespace tangle::io {
@@ -615,6 +616,33 @@ TEST(ModelReader, ReadsAViscoelasticRope) {
   EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicStiffnessSlope, 0.4);
   EXPECT_DOUBLE_EQ(t.viscoelastic.slowDamping, 4e9);
   EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicDamping, 1.1e7);
+}
+
+// line_types[].syrope: the statics' law is the working curve of the initial Tmax (a linear one of slope k1
+// from eps_min = X_owc(Tmax) - Tmax / k1), the OWC beyond.
+TEST(ModelReader, ReadsASyropeRope) {
+  const std::string syrope =
+      "    syrope: {original_curve: [[0, 0], [0.01, 8.0e5], [0.02, 1.4e6], [0.04, 2.4e6]], working_curve: "
+      "linear,\n"
+      "             k1: 1.25e8, k2: 0, dynamic_stiffness: 1.53e8, dynamic_stiffness_slope: 23.12,\n"
+      "             slow_damping: 5e10, dynamic_damping: 1e5, initial_max_mean_tension: 1.1e6}\n";
+  const section::LineType& t =
+      readModelString(edited(kBaseModel, "    axial_stiffness: 5.8e8\n", syrope), kSource)
+          .lineTypes.at("chain");
+  ASSERT_TRUE(t.syrope);
+  ASSERT_TRUE(t.tensionStrain);
+  EXPECT_DOUBLE_EQ(t.viscoelastic.dynamicStiffness, 1.53e8);
+  // X_owc(1.1 MN) = 0.015, eps_min = 0.015 - 1.1e6 / 1.25e8 = 0.0062: the tension at 0.012 is k1 (0.012 -
+  // eps_min).
+  EXPECT_NEAR(t.tensionStrain->at(0.012).value, 1.25e8 * (0.012 - 0.0062), 1.0);
+  EXPECT_NEAR(t.tensionStrain->at(0.03).value, 1.9e6, 1.0);  // the OWC beyond Tmax
+  expectEditError("    axial_stiffness: 5.8e8\n", "    axial_stiffness: 5.8e8\n" + syrope,
+                  "syrope:", "line_types[chain].syrope", "replace axial_stiffness");
+  std::string beyond = syrope;
+  beyond.replace(beyond.find("1.1e6"), 5, "3.0e6");
+  expectEditError("    axial_stiffness: 5.8e8\n", beyond, "slow_damping: 5e10",
+                  "line_types[chain].syrope.initial_max_mean_tension",
+                  "beyond the original curve's last tension");
 }
 
 TEST(ModelReaderErrors, ViscoelasticRopeNeedsAStifferDynamicBranch) {

@@ -20,6 +20,7 @@
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Units.hpp"
 #include "tangle/hydro/AiryWave.hpp"
+#include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/io/ModelReader.hpp"
 #include "tangle/io/MoorDynConversion.hpp"
