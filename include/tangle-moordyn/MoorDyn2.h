@@ -23,6 +23,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 
+#include "Body.h"
 #include "Line.h"
 #include "MoorDynAPI.h"
 #include "Point.h"
@@ -35,8 +36,7 @@ extern "C" {
 /* A mooring system. (The struct tags are MoorDyn's, for hosts that name them.) */
 typedef struct __MoorDyn* MoorDyn;
 /* Kinds of objects tangle does not have; declared so that hosts written for MoorDyn compile. The
- * functions returning them return NULL. (Rods: Rod.h.) */
-typedef struct __MoorDynBody* MoorDynBody;
+ * functions returning them return NULL. (Rods: Rod.h; bodies: Body.h.) */
 typedef struct __MoorDynWaves* MoorDynWaves;
 typedef struct __MoorDynSeafloor* MoorDynSeafloor;
 

@@ -401,4 +401,60 @@ TEST(MoorDynApi, ABodyDeckStaysAtRestInItsDynamics) {
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
+// Bodies (Body.h): riser.txt's free body 1 (29.5 kg, at (452, 0, -313)) is a free vessel of the converted
+// model whose reference point is the centre of gravity of the body and its points. The body's own reference
+// point, which the functions report, must coincide with point 3 (on Body1 at offset 0) and carry the clamp
+// rod's end A at body offset (0.1, 0, 0) through the reported attitude: three routes (the point map, the
+// rod's line end, the body state) to the same place. The point and the rod's end are line end nodes tied to
+// the vessel by links of 100 x their end element's EA / h (the vessel end's stiffness), which stretch by
+// tension / stiffness (2 um here): 1e-5 m.
+TEST(MoorDynApi, BodiesAnswerWithTheirReferencePointAndAttitude) {
+  MoorDyn system = MoorDyn_Create((std::string(tangle::test::kTestDataDir) + "/moordyn/riser.txt").c_str());
+  ASSERT_NE(system, nullptr);
+  MoorDynBody body = MoorDyn_GetBody(system, 1);
+  ASSERT_NE(body, nullptr);
+  EXPECT_EQ(MoorDyn_GetBody(system, 2), nullptr);
+  int id = 0, type = 5;
+  EXPECT_EQ(MoorDyn_GetBodyID(body, &id), MOORDYN_SUCCESS);
+  EXPECT_EQ(id, 1);
+  EXPECT_EQ(MoorDyn_GetBodyType(body, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, 0);  // free
+  double r[6], rd[6];
+  ASSERT_EQ(MoorDyn_GetBodyState(body, r, rd), MOORDYN_SUCCESS);  // before MoorDyn_Init: the input file's
+  EXPECT_DOUBLE_EQ(r[0], 452.0);
+  EXPECT_DOUBLE_EQ(r[2], -313.0);
+  double x[3] = {0.0, 0.0, -63.6}, v[3] = {0.0, 0.0, 0.0}, f[3];
+  ASSERT_EQ(MoorDyn_Init(system, x, v), MOORDYN_SUCCESS);
+  double t = 0.0, dt = 0.05;
+  for (int step = 0; step <= 20; ++step) {
+    if (step > 0) {
+      x[0] = 0.5 * std::sin(0.5 * t);  // the top swayed, so that the body moves and turns
+      v[0] = 0.25 * std::cos(0.5 * t);
+      ASSERT_EQ(MoorDyn_Step(system, x, v, f, &t, &dt), MOORDYN_SUCCESS);
+    }
+    ASSERT_EQ(MoorDyn_GetBodyState(body, r, rd), MOORDYN_SUCCESS);
+    double pos[3], ang[3], point[3], rodEnd[3];
+    ASSERT_EQ(MoorDyn_GetBodyPos(body, pos), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetBodyAngle(body, ang), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(system, 3), point), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetRodNodePos(MoorDyn_GetRod(system, 1), 0, rodEnd), MOORDYN_SUCCESS);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_EQ(pos[k], r[k]);
+      EXPECT_EQ(ang[k], r[3 + k]);
+      EXPECT_NEAR(pos[k], point[k], 1e-5) << "step " << step << " component " << k;
+    }
+    // R = Rx(a) Ry(b) Rz(c); its first column R e_x = (cb cc, ca sc + sa sb cc, sa sc - ca sb cc).
+    const double ca = std::cos(r[3]), sa = std::sin(r[3]), cb = std::cos(r[4]), sb = std::sin(r[4]),
+                 cc = std::cos(r[5]), sc = std::sin(r[5]);
+    const double ex[3] = {cb * cc, ca * sc + sa * sb * cc, sa * sc - ca * sb * cc};
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(rodEnd[k], pos[k] + 0.1 * ex[k], 1e-5) << "step " << step << " component " << k;
+  }
+  EXPECT_GT(std::abs(r[0] - 452.0), 1e-3);  // it did move
+  EXPECT_GT(std::abs(r[4]), 0.1);  // pitched (0.36 rad): the rod-end check of the attitude is not vacuous
+  double f6[6];
+  EXPECT_EQ(MoorDyn_GetBodyForce(body, f6), MOORDYN_NON_IMPLEMENTED);
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
 }  // namespace

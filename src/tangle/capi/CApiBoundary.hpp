@@ -117,6 +117,12 @@ int withRod(const char* function, MoorDynRod handle, Body&& body) noexcept {
   return withObject<RodHandle>(function, handle, "rod", std::forward<Body>(body));
 }
 
+/// Runs body(system, body index) for a body handle; MOORDYN_INVALID_VALUE for a null one.
+template <class Body>
+int withBody(const char* function, MoorDynBody handle, Body&& body) noexcept {
+  return withObject<BodyHandle>(function, handle, "body", std::forward<Body>(body));
+}
+
 /// @throws NotImplemented with the message "not implemented by tangle: <why>" (the guards prefix the
 ///         function's name)
 [[noreturn]] void throwNotImplemented(const std::string& why);

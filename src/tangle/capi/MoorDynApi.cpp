@@ -138,12 +138,12 @@ int MoorDyn_GetNumberBodies(MoorDyn system, unsigned int* n) {
 }
 
 MoorDynBody MoorDyn_GetBody(MoorDyn system, unsigned int b) {
-  if (capi::MoorDynSystem* s = systemOrReport(system, "MoorDyn_GetBody"))
-    capi::reportError(
-        s, "MoorDyn_GetBody",
-        "not implemented by tangle: body " + std::to_string(b) + " is a free vessel of the model (body" +
-            std::to_string(b) +
-            "); tangle's MoorDyn API has no body functions (its points and rods are available)");
+  capi::MoorDynSystem* s = systemOrReport(system, "MoorDyn_GetBody");
+  if (s == nullptr) return nullptr;
+  if (capi::BodyHandle* h = s->body(b)) return reinterpret_cast<MoorDynBody>(h);
+  capi::reportError(s, "MoorDyn_GetBody",
+                    "there is no body " + std::to_string(b) + " (the input file has " +
+                        std::to_string(s->bodyCount()) + "; ids start at 1)");
   return nullptr;
 }
 

@@ -1,5 +1,6 @@
 /// @file MoorDynObjectsApi.cpp
-/// The line, point and rod functions of the MoorDyn v2 C API (include/tangle-moordyn/Line.h, Point.h, Rod.h)
+/// The line, point, rod and body functions of the MoorDyn v2 C API (include/tangle-moordyn/Line.h, Point.h,
+/// Rod.h, Body.h)
 /// on capi::MoorDynSystem. Every function catches every exception (CApiBoundary.hpp) and returns a MOORDYN_*
 /// code.
 
@@ -305,3 +306,71 @@ int MoorDyn_SaveRodVTK(MoorDynRod rod, const char* /*filename*/) {
 }
 
 }  // extern "C"
+
+// ---- Bodies (Body.h)
+
+int MoorDyn_GetBodyID(MoorDynBody b, int* id) {
+  return capi::withBody("MoorDyn_GetBodyID", b,
+                        [&](capi::MoorDynSystem& s, int i) { capi::output(id, "id") = s.deckBody(i).id; });
+}
+
+int MoorDyn_GetBodyType(MoorDynBody b, int* t) {
+  return capi::withBody("MoorDyn_GetBodyType", b,
+                        [&](capi::MoorDynSystem& s, int i) { capi::output(t, "t") = s.bodyType(i); });
+}
+
+int MoorDyn_GetBodyState(MoorDynBody b, double r[6], double rd[6]) {
+  return capi::withBody("MoorDyn_GetBodyState", b, [&](capi::MoorDynSystem& s, int i) {
+    capi::output(r, "r");
+    capi::output(rd, "rd");
+    tangle::Vec6 position, velocity;
+    s.bodyState(i, position, velocity);
+    for (int k = 0; k < 6; ++k) {
+      r[k] = position[k];
+      rd[k] = velocity[k];
+    }
+  });
+}
+
+namespace {
+/// One half of the body's state (position or velocity, first or last three) into `out` [3].
+template <bool Velocity, int First>
+int bodyPart(const char* function, MoorDynBody b, double* out) {
+  return capi::withBody(function, b, [&](capi::MoorDynSystem& s, int i) {
+    capi::output(out, "the output array");
+    tangle::Vec6 position, velocity;
+    s.bodyState(i, position, velocity);
+    const tangle::Vec6& v = Velocity ? velocity : position;
+    for (int k = 0; k < 3; ++k) out[k] = v[First + k];
+  });
+}
+}  // namespace
+
+int MoorDyn_GetBodyPos(MoorDynBody b, double r[3]) { return bodyPart<false, 0>("MoorDyn_GetBodyPos", b, r); }
+int MoorDyn_GetBodyAngle(MoorDynBody b, double r[3]) {
+  return bodyPart<false, 3>("MoorDyn_GetBodyAngle", b, r);
+}
+int MoorDyn_GetBodyVel(MoorDynBody b, double rd[3]) { return bodyPart<true, 0>("MoorDyn_GetBodyVel", b, rd); }
+int MoorDyn_GetBodyAngVel(MoorDynBody b, double rd[3]) {
+  return bodyPart<true, 3>("MoorDyn_GetBodyAngVel", b, rd);
+}
+
+int MoorDyn_GetBodyForce(MoorDynBody b, double /*f*/[6]) {
+  return capi::withBody("MoorDyn_GetBodyForce", b, [&](capi::MoorDynSystem&, int) {
+    capi::throwNotImplemented(
+        "tangle does not export a body's net force (its vessel's loads are in results.h5)");
+  });
+}
+
+int MoorDyn_GetBodyM(MoorDynBody b, double /*m*/[6][6]) {
+  return capi::withBody("MoorDyn_GetBodyM", b, [&](capi::MoorDynSystem&, int) {
+    capi::throwNotImplemented(
+        "tangle does not export a body's mass matrix (its vessel's is in the model file)");
+  });
+}
+
+int MoorDyn_SaveBodyVTK(MoorDynBody b, const char* /*filename*/) {
+  return capi::withBody("MoorDyn_SaveBodyVTK", b, [&](capi::MoorDynSystem&, int) {
+    capi::throwNotImplemented("tangle writes ParaView files of the whole model (output.vtk), not per body");
+  });
+}

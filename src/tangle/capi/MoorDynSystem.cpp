@@ -62,6 +62,8 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     m_pointHandles.push_back(std::make_unique<PointHandle>(PointHandle{this, static_cast<int>(p)}));
   for (std::size_t r = 0; r < c.rods.size(); ++r)
     m_rodHandles.push_back(std::make_unique<RodHandle>(RodHandle{this, static_cast<int>(r)}));
+  for (std::size_t b = 0; b < c.bodies.size(); ++b)
+    m_bodyHandles.push_back(std::make_unique<BodyHandle>(BodyHandle{this, static_cast<int>(b)}));
 }
 
 MoorDynSystem::~MoorDynSystem() = default;
@@ -143,6 +145,54 @@ LineHandle* MoorDynSystem::line(unsigned int id) {
 RodHandle* MoorDynSystem::rod(unsigned int id) {
   if (id < 1 || id > m_rodHandles.size()) return nullptr;
   return m_rodHandles[id - 1].get();
+}
+
+BodyHandle* MoorDynSystem::body(unsigned int id) {
+  if (id < 1 || id > m_bodyHandles.size()) return nullptr;
+  return m_bodyHandles[id - 1].get();
+}
+
+int MoorDynSystem::bodyType(int b) const {
+  switch (deckBody(b).kind) {
+    case io::MoorDynBodyKind::Free:
+      return kBodyFree;
+    case io::MoorDynBodyKind::Fixed:
+      return kBodyFixed;
+    case io::MoorDynBodyKind::Coupled:
+      return kBodyCoupled;
+    case io::MoorDynBodyKind::CoupledPinned:
+      return kBodyCoupledPinned;
+  }
+  return kBodyFixed;
+}
+
+void MoorDynSystem::bodyState(int b, Vec6& position, Vec6& velocity) {
+  const io::MoorDynBodyMap& map = m_coupling.conversion.bodies[static_cast<std::size_t>(b)];
+  Vec3 origin = map.origin;
+  Mat3 rotation = map.rotation;
+  velocity.setZero();
+  if (!map.vessel.empty() && initialized()) {
+    // The vessel's node: its reference point p and the rotation Q from its axes at t = 0 (the global axes);
+    // the body's reference point is p + Q (origin0 - reference0), its axes Q R0.
+    const model::Model& model = m_run->simulation().model();
+    const model::State& state = m_run->simulation().state();
+    const int node = model.vesselNode(model.vesselIndex(map.vessel));
+    const Mat3& q = state.triad[static_cast<std::size_t>(node)];
+    const Vec3 arm = q * (map.origin - map.reference);
+    origin = state.position[static_cast<std::size_t>(node)] + arm;
+    rotation = q * map.rotation;
+    const int dof = model.dofs().firstDof(node);
+    const Vec3 omega = state.velocity.segment<3>(dof + 3);
+    velocity.head<3>() = state.velocity.segment<3>(dof) + omega.cross(arm);
+    velocity.tail<3>() = omega;
+  }
+  // MoorDyn's XYZ Euler angles (Misc.hpp, Quat2Euler: canonical angles about x, y, z): R = Rx(a) Ry(b) Rz(c),
+  // R(0, 2) = sin b, R(0, 0) = cos b cos c, R(0, 1) = -cos b sin c, R(1, 2) = -sin a cos b, R(2, 2) = cos a
+  // cos b.
+  position.head<3>() = origin;
+  position[3] = std::atan2(-rotation(1, 2), rotation(2, 2));
+  position[4] = std::asin(std::clamp(rotation(0, 2), -1.0, 1.0));
+  position[5] = std::atan2(-rotation(0, 1), rotation(0, 0));
 }
 
 PointHandle* MoorDynSystem::point(unsigned int id) {

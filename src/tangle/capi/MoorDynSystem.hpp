@@ -57,6 +57,18 @@ struct RodHandle {
   int index = 0;  ///< 0-based position in the deck's RODS table (deck id - 1)
 };
 
+/// What a MoorDynBody handle points to: a body of the deck (owned by its system).
+struct BodyHandle {
+  MoorDynSystem* system = nullptr;
+  int index = 0;  ///< 0-based position in the deck's BODIES table (deck id - 1)
+};
+
+/// MoorDyn's body types (MoorDyn's Body::types), as MoorDyn_GetBodyType returns them.
+inline constexpr int kBodyCoupled = -1;
+inline constexpr int kBodyFree = 0;
+inline constexpr int kBodyFixed = 1;
+inline constexpr int kBodyCoupledPinned = 2;
+
 /// MoorDyn's rod types (MoorDyn's Rod::types), as MoorDyn_GetRodType returns them.
 inline constexpr int kRodCoupled = -2;
 inline constexpr int kRodCoupledPinned = -1;
@@ -112,11 +124,24 @@ class MoorDynSystem {
   int lineCount() const { return static_cast<int>(m_lineHandles.size()); }
   int pointCount() const { return static_cast<int>(m_pointHandles.size()); }
   int rodCount() const { return static_cast<int>(m_rodHandles.size()); }
-  int bodyCount() const { return static_cast<int>(m_coupling.deck.bodies.size()); }
+  int bodyCount() const { return static_cast<int>(m_bodyHandles.size()); }
   /// Handles by 1-based deck id; null when out of range. Owned by this system.
   LineHandle* line(unsigned int id);
   PointHandle* point(unsigned int id);
   RodHandle* rod(unsigned int id);
+  BodyHandle* body(unsigned int id);
+  /// @}
+
+  /// @name Deck bodies (index b = deck id - 1)
+  /// @{
+  const io::MoorDynBody& deckBody(int b) const { return m_coupling.deck.bodies[static_cast<std::size_t>(b)]; }
+  /// kBodyFree, kBodyFixed, kBodyCoupled or kBodyCoupledPinned.
+  int bodyType(int b) const;
+  /// The body's reference point (the deck's X0, Y0, Z0 moved with it) [m] and its attitude as MoorDyn's XYZ
+  /// Euler angles (R = Rx(roll) Ry(pitch) Rz(yaw)) [rad]; the velocity of the reference point [m/s] and the
+  /// angular velocity [rad/s], global axes. A free body's from its tangle vessel; a held one's where the deck
+  /// puts it, at rest; before MoorDyn_Init the deck's.
+  void bodyState(int b, Vec6& position, Vec6& velocity);
   /// @}
 
   /// @name Deck lines (index l = deck id - 1; node i from 0 at the deck line's end A to its segment count)
@@ -226,6 +251,7 @@ class MoorDynSystem {
   std::vector<std::unique_ptr<LineHandle>> m_lineHandles;
   std::vector<std::unique_ptr<PointHandle>> m_pointHandles;
   std::vector<std::unique_ptr<RodHandle>> m_rodHandles;
+  std::vector<std::unique_ptr<BodyHandle>> m_bodyHandles;
   int m_verbosity;
   int m_logLevel;
   std::ofstream m_logFile;

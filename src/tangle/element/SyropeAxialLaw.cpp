@@ -153,7 +153,7 @@ std::shared_ptr<const core::PiecewiseLinear> SyropeAxialLaw::staticCurve(double 
     x.push_back(epsMin);
     y.push_back(1e-6 * maxTension * epsMin / (epsMax - epsMin));
   }
-  constexpr int kSamples = 64;
+  constexpr int kSamples = 256;
   for (int i = 1; i <= kSamples; ++i) {
     const double xi = double(i) / kSamples;
     x.push_back(epsMin + xi * (epsMax - epsMin));

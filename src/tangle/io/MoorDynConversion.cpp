@@ -1438,8 +1438,10 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   bool anyVessel = false;
   for (std::size_t b = 0; b < deck.bodies.size(); ++b) {
     const BodyFrame& f = rodEnds.bodies[b];
-    if (!f.free) continue;
     const MoorDynBody& body = deck.bodies[b];
+    out.bodies.push_back({body.id, body.kind, f.free ? fmt::format("body{}", body.id) : std::string(),
+                          f.origin, f.rotation, f.reference});
+    if (!f.free) continue;
     if (!anyVessel) line("vessels:                         # MoorDyn's free bodies");
     anyVessel = true;
     line(fmt::format("  - name: body{}                 # body {} (deck line {}): {}", body.id, body.id,

@@ -51,12 +51,25 @@ struct MoorDynRodMap {
   MoorDynPointMap point;
 };
 
+/// Where a deck's body went in the tangle model: a free body is the free vessel `vessel` ("body<id>"), whose
+/// reference point is the centre of gravity of the body and its points and whose axes are the global axes at
+/// t = 0; a fixed or coupled body holds what is on it where the deck puts it (no vessel).
+struct MoorDynBodyMap {
+  int deckId = 0;
+  MoorDynBodyKind kind = MoorDynBodyKind::Free;
+  std::string vessel;                ///< the tangle vessel, empty for a held body
+  Vec3 origin = Vec3::Zero();        ///< the deck's reference point X0, Y0, Z0 at t = 0 [m]
+  Mat3 rotation = Mat3::Identity();  ///< body axes to global at t = 0 (Rx(r0) Ry(p0) Rz(y0))
+  Vec3 reference = Vec3::Zero();     ///< the vessel's reference point at t = 0 [m]
+};
+
 /// A deck converted into a tangle model.
 struct MoorDynConversion {
   std::string yaml;  ///< the tangle model file, with comments saying where each value came from
   std::vector<MoorDynLineMap> lines;    ///< in deck order
   std::vector<MoorDynPointMap> points;  ///< in deck order
   std::vector<MoorDynRodMap> rods;      ///< in deck order
+  std::vector<MoorDynBodyMap> bodies;   ///< in deck order
   std::vector<std::string> notes;       ///< what differs from MoorDyn (also in the YAML's comments)
 };
 

@@ -48,17 +48,24 @@ ViscoelasticElements::Axial ViscoelasticElements::axial(int k, const model::Stat
   // The slack law's stiffness: the static EA (a SYROPE rope's: its static curve's largest slope).
   const double ea = m_model->elements()[m_elements[kk]].type->axialStiffness;
   const double dt = state.time - state.viscoelastic.time;
-  if (strain < 0.0) return {compressionFactor * ea * strain, compressionFactor * ea, 0.0};
+  // A rope cannot push: where the law's tension falls below the slack law's (compressed, or stretched less
+  // than its lagging slow strain), the slack law holds: continuous where they cross (the cable's kink), also
+  // at zero strain, where the dashpots may still pull a rope that is being stretched fast (as MoorDyn's
+  // damping force acts whatever the stretch).
+  const Axial slack{compressionFactor * ea * strain, compressionFactor * ea, 0.0};
   if (!(dt > 0.0)) return {state.viscoelastic.tension[kk], ea, 0.0};
   const double x0 = state.viscoelastic.slowStrain[kk];
+  Axial law;
   if (const auto* syrope = std::get_if<element::SyropeAxialLaw>(&m_laws[kk])) {
     const element::SyropeAxialLaw::Step s =
         syrope->step(strain, strainRate, x0, state.viscoelastic.maxMeanTension[kk], dt);
-    return {s.tension, s.dTensionDStrain, s.dTensionDRate};
+    law = {s.tension, s.dTensionDStrain, s.dTensionDRate};
+  } else {
+    const element::ViscoelasticAxialLaw::Step s =
+        std::get<element::ViscoelasticAxialLaw>(m_laws[kk]).step(strain, strainRate, x0, dt);
+    law = {s.tension, s.dTensionDStrain, s.dTensionDRate};
   }
-  const element::ViscoelasticAxialLaw::Step s =
-      std::get<element::ViscoelasticAxialLaw>(m_laws[kk]).step(strain, strainRate, x0, dt);
-  return {s.tension, s.dTensionDStrain, s.dTensionDRate};
+  return law.force > slack.force ? law : slack;
 }
 
 void ViscoelasticElements::commit(model::State& state) const {
@@ -79,20 +86,21 @@ void ViscoelasticElements::commit(model::State& state) const {
         type.compressionFactor * type.axialStiffness * strain;  // a compressed rope's tension
     if (const auto* syrope = std::get_if<element::SyropeAxialLaw>(&m_laws[k])) {
       if (first) {
-        // Relaxed on the working curve of the initial Tmax (the statics' law; above Tmax, the OWC).
+        // Relaxed on the working curve of the initial Tmax: the statics' law (its sampled curve, the tension
+        // the static solution is in balance with), the slow strain from the exact curve.
         const double tmax = type.syrope->initialMaxMeanTension;
-        const double t = syrope->staticTension(strain, tmax);
+        const double t = strain > 0.0 && type.tensionStrain ? type.tensionStrain->at(strain).value : 0.0;
         v.slowStrain[k] = syrope->slowStrain(t, tmax);
         v.meanTension[k] = t;
         v.maxMeanTension[k] = std::max(tmax, t);
-        v.tension[k] = strain < 0.0 ? slack : t;
+        v.tension[k] = std::max(t, slack);
       } else {
         const element::SyropeAxialLaw::Step s =
             syrope->step(strain, rate, v.slowStrain[k], v.maxMeanTension[k], dt);
         v.slowStrain[k] = s.slowStrain;
         v.meanTension[k] = s.meanTension;
         v.maxMeanTension[k] = std::max(v.maxMeanTension[k], s.meanTension);
-        v.tension[k] = strain < 0.0 ? slack : s.tension;
+        v.tension[k] = std::max(s.tension, slack);
       }
       continue;
     }
@@ -100,13 +108,13 @@ void ViscoelasticElements::commit(model::State& state) const {
     if (first) {
       v.slowStrain[k] = law.relaxedSlowStrain(std::max(strain, 0.0));
       v.meanTension[k] = law.staticBranchStiffnessAt(v.slowStrain[k]) * v.slowStrain[k];
-      v.tension[k] = strain < 0.0 ? slack : law.constants().staticStiffness * strain;
+      v.tension[k] = std::max(law.constants().staticStiffness * strain, slack);
     } else {
       const double ea1 = law.staticBranchStiffnessAt(v.slowStrain[k]);  // lagged, as the step takes it
       const element::ViscoelasticAxialLaw::Step s = law.step(strain, rate, v.slowStrain[k], dt);
       v.slowStrain[k] = s.slowStrain;
       v.meanTension[k] = ea1 * s.slowStrain;
-      v.tension[k] = strain < 0.0 ? slack : s.tension;
+      v.tension[k] = std::max(s.tension, slack);
     }
   }
   v.time = state.time;
