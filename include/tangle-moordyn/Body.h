@@ -4,10 +4,14 @@
  * takes MoorDyn's values: -1 coupled, 0 free, 1 fixed, 2 coupled and pinned. tangle models a free body as a
  * free vessel (6 degrees of freedom) whose reference point is the centre of gravity of the body and its
  * points; these functions answer for the body's own reference point (the input file's X0, Y0, Z0 moved with
- * it). A fixed or coupled body holds what is on it where the input file puts it (coupled bodies are not moved
- * by the host: MoorDyn_Create says so). Attitudes are MoorDyn's XYZ Euler angles (R = Rx(roll) Ry(pitch)
- * Rz(yaw)). Units: SI (m, rad, m/s, rad/s). Every function returns MOORDYN_SUCCESS or an error code
- * (MoorDynAPI.h): MOORDYN_INVALID_VALUE for a NULL body or output. Details: docs/moordyn.md, "Bodies". */
+ * it). A fixed body holds what is on it where the input file puts it. A coupled body takes 6 of the host's
+ * coupled DOFs, ahead of the points' as MoorDyn orders them (x, y, z and roll, pitch, yaw, XYZ Euler angles,
+ * and their rates, the angles' taken as the angular velocity); they move the points on it rigidly, and
+ * MoorDyn_Step returns for it the force and moment of the lines on its points about its reference point (its
+ * own weight, buoyancy, inertia and drag are the host's). Rods on a coupled body and CoupledPinned bodies are
+ * refused by MoorDyn_Create. Attitudes are MoorDyn's XYZ Euler angles (R = Rx(roll) Ry(pitch) Rz(yaw)).
+ * Units: SI (m, rad, m/s, rad/s). Every function returns MOORDYN_SUCCESS or an error code (MoorDynAPI.h):
+ * MOORDYN_INVALID_VALUE for a NULL body or output. Details: docs/moordyn.md, "Bodies". */
 
 #ifndef TANGLE_MOORDYN_BODY_H
 #define TANGLE_MOORDYN_BODY_H

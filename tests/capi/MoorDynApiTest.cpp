@@ -8,6 +8,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
 #include <string>
 
 #include "MoorDyn.h"
@@ -455,6 +459,102 @@ TEST(MoorDynApi, BodiesAnswerWithTheirReferencePointAndAttitude) {
   double f6[6];
   EXPECT_EQ(MoorDyn_GetBodyForce(body, f6), MOORDYN_NON_IMPLEMENTED);
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
+// A coupled body (Body.h): the host's 6 DOFs move its two fairleads rigidly. The same fairleads as two
+// coupled points, moved by the host to where the body puts them, are the reference: the lines see the same
+// motion, so the body's force is the sum of the points' forces and its moment their moments about its
+// reference point, and its points are where the reference's are (1e-9 m). The two runs' inputs differ at
+// round-off (the rotation evaluated two ways), so each step's Newton iteration, converged to the dynamics'
+// tolerance, may end a few ulps of the input apart: 1e-6 of the force allowed (5e-9 seen). The motion: a
+// surge of 0.5 m and a yaw of 0.05 rad at 10 s, with a small roll, so that every component of the rotation
+// counts.
+TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
+  const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
+  MoorDyn body = MoorDyn_Create((dir + "coupled_body.txt").c_str());
+  MoorDyn points = MoorDyn_Create((dir + "coupled_body_points.txt").c_str());
+  ASSERT_NE(body, nullptr);
+  ASSERT_NE(points, nullptr);
+  unsigned int n = 0;
+  ASSERT_EQ(MoorDyn_NCoupledDOF(body, &n), MOORDYN_SUCCESS);
+  ASSERT_EQ(n, 6u);
+  int type = 5;
+  ASSERT_EQ(MoorDyn_GetBodyType(MoorDyn_GetBody(body, 1), &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, -1);  // coupled
+  const double omega = 2.0 * std::numbers::pi / 10.0;
+  const auto motion = [&](double t, double r[6], double rd[6]) {
+    r[0] = 0.5 * std::sin(omega * t), rd[0] = 0.5 * omega * std::cos(omega * t);
+    r[1] = 0.0, rd[1] = 0.0;
+    r[2] = -5.0, rd[2] = 0.0;
+    r[3] = 0.01 * std::sin(omega * t), rd[3] = 0.01 * omega * std::cos(omega * t);
+    r[4] = 0.0, rd[4] = 0.0;
+    r[5] = 0.05 * std::sin(omega * t), rd[5] = 0.05 * omega * std::cos(omega * t);
+  };
+  // The fairleads where the body puts them: X + Rx(a) Rz(c) (0, +-10, 0) (no pitch), and their velocities
+  // Xd + w x arm, w = (ad, 0, cd) (the angle rates as the angular velocity, as MoorDyn).
+  const auto fairleads = [&](const double r[6], const double rd[6], double x[6], double xd[6]) {
+    for (int k = 0; k < 2; ++k) {
+      const double y = k == 0 ? 10.0 : -10.0;
+      const double ca = std::cos(r[3]), sa = std::sin(r[3]), cc = std::cos(r[5]), sc = std::sin(r[5]);
+      const double arm[3] = {-sc * y, ca * cc * y, sa * cc * y};  // Rx(a) Rz(c) (0, y, 0)
+      const double w[3] = {rd[3], rd[4], rd[5]};
+      const double wxa[3] = {w[1] * arm[2] - w[2] * arm[1], w[2] * arm[0] - w[0] * arm[2],
+                             w[0] * arm[1] - w[1] * arm[0]};
+      for (int i = 0; i < 3; ++i) {
+        x[3 * k + i] = r[i] + arm[i];
+        xd[3 * k + i] = rd[i] + wxa[i];
+      }
+    }
+  };
+  double r[6], rd[6], x[6], xd[6], fb[6], fp[6];
+  motion(0.0, r, rd);
+  fairleads(r, rd, x, xd);
+  ASSERT_EQ(MoorDyn_Init(body, r, rd), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_Init(points, x, xd), MOORDYN_SUCCESS);
+  double tb = 0.0, tp = 0.0, dt = 0.05;
+  double largestMoment = 0.0;
+  for (int step = 0; step < 100; ++step) {
+    motion(tb, r, rd);
+    fairleads(r, rd, x, xd);
+    ASSERT_EQ(MoorDyn_Step(body, r, rd, fb, &tb, &dt), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_Step(points, x, xd, fp, &tp, &dt), MOORDYN_SUCCESS);
+    double p3[3], p4[3], q3[3], q4[3];
+    ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(points, 3), p3), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(points, 4), p4), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(body, 3), q3), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(body, 4), q4), MOORDYN_SUCCESS);
+    double reference[3];  // the body's reference point at the end of the step (its motion is linear over it)
+    for (int i = 0; i < 3; ++i) reference[i] = r[i] + rd[i] * dt;
+    const double scale = std::max(norm(fp), norm(fp + 3));
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(q3[i], p3[i], 1e-9) << "step " << step;
+      EXPECT_NEAR(q4[i], p4[i], 1e-9) << "step " << step;
+      EXPECT_NEAR(fb[i], fp[i] + fp[3 + i], 1e-6 * scale) << "step " << step << " force " << i;
+    }
+    const double a3[3] = {p3[0] - reference[0], p3[1] - reference[1], p3[2] - reference[2]};
+    const double a4[3] = {p4[0] - reference[0], p4[1] - reference[1], p4[2] - reference[2]};
+    const double moment[3] = {a3[1] * fp[2] - a3[2] * fp[1] + a4[1] * fp[5] - a4[2] * fp[4],
+                              a3[2] * fp[0] - a3[0] * fp[2] + a4[2] * fp[3] - a4[0] * fp[5],
+                              a3[0] * fp[1] - a3[1] * fp[0] + a4[0] * fp[4] - a4[1] * fp[3]};
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(fb[3 + i], moment[i], 1e-6 * 10.0 * scale) << "step " << step << " moment " << i;
+    largestMoment = std::max(largestMoment, std::abs(fb[5]));
+  }
+  EXPECT_GT(largestMoment, 1e4);  // the yaw loads it: the moment check is not vacuous
+  double state[6], rates[6];
+  ASSERT_EQ(MoorDyn_GetBodyState(MoorDyn_GetBody(body, 1), state, rates), MOORDYN_SUCCESS);
+  EXPECT_NEAR(state[5], r[5] + rd[5] * dt, 1e-12);  // the host's yaw at the end of the last step
+  EXPECT_EQ(MoorDyn_Close(body), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDyn_Close(points), MOORDYN_SUCCESS);
+  // A body whose host gives only its translation (CoupledPinned: its rotation free) is refused by name.
+  std::ifstream in(dir + "coupled_body.txt");
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  deck.replace(deck.find("1    Coupled"), 12, "1    CoupledPinned");
+  const std::string pinned =
+      (std::filesystem::temp_directory_path() / "tangle-coupled-pinned-body.txt").string();
+  std::ofstream(pinned) << deck;
+  EXPECT_EQ(MoorDyn_Create(pinned.c_str()), nullptr);
+  std::filesystem::remove(pinned);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <iostream>
+#include <numbers>
 #include <span>
 #include <utility>
 
@@ -35,13 +36,53 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     throw Error(fmt::format("{}: the conversion maps {} of {} lines and {} of {} points (a bug in tangle)",
                             m_path, c.lines.size(), m_coupling.deck.lines.size(), c.points.size(),
                             m_coupling.deck.points.size()));
-  // MoorDyn couples a body's and a rod's 6 (or 3, pinned) DOFs ahead of the points': tangle holds them.
-  for (const io::MoorDynBody& b : m_coupling.deck.bodies)
-    if (b.kind == io::MoorDynBodyKind::Coupled || b.kind == io::MoorDynBodyKind::CoupledPinned)
+  // MoorDyn couples a body's 6 DOFs ahead of the points': a Coupled body moves the points on it rigidly
+  // (their line ends become coupled points of the run); a CoupledPinned one (its rotation free) is not
+  // supported.
+  m_runPoints = m_coupling.points;
+  m_deckCoupledPoints = static_cast<int>(m_runPoints.size());
+  m_coupledIndex.assign(c.points.size(), -1);
+  {
+    int k = 0;
+    for (std::size_t p = 0; p < c.points.size(); ++p)
+      if (c.points[p].kind == io::MoorDynPointKind::Coupled) m_coupledIndex[p] = k++;
+  }
+  for (std::size_t bi = 0; bi < m_coupling.deck.bodies.size(); ++bi) {
+    const io::MoorDynBody& b = m_coupling.deck.bodies[bi];
+    if (b.kind == io::MoorDynBodyKind::CoupledPinned)
       throw Error(
-          fmt::format("{}:{}: body {} is {}: bodies coupled to a host are not supported by tangle's MoorDyn "
-                      "API (make it Fixed or Free, or couple the points that hold it)",
+          fmt::format("{}:{}: body {} is {}: a body whose host gives its translation and leaves its rotation "
+                      "free is not supported by tangle's MoorDyn API (make it Coupled, Free or Fixed)",
                       m_path, b.sourceLine, b.id, b.kindWord));
+    if (b.kind != io::MoorDynBodyKind::Coupled) continue;
+    for (const io::MoorDynRod& r : m_coupling.deck.rods)
+      if (r.body == b.id)
+        throw Error(
+            fmt::format("{}:{}: rod {} is on coupled body {}: tangle's MoorDyn API moves the points of "
+                        "a coupled body, not its rods (attach the lines to points on the body)",
+                        m_path, r.sourceLine, r.id, b.id));
+    CoupledBody cb;
+    cb.body = static_cast<int>(bi);
+    cb.position << b.position, b.rotation * (std::numbers::pi / 180.0);
+    for (std::size_t p = 0; p < m_coupling.deck.points.size(); ++p) {
+      const io::MoorDynPoint& point = m_coupling.deck.points[p];
+      if (point.kind != io::MoorDynPointKind::Body || point.body != b.id) continue;
+      cb.points.push_back(static_cast<int>(p));
+      cb.offsets.push_back(point.position);
+      if (!c.points[p].ends.empty()) {
+        m_coupledIndex[p] = static_cast<int>(m_runPoints.size());
+        m_runPoints.push_back({fmt::format("body{}point{}", b.id, point.id), c.points[p].ends});
+      }
+    }
+    if (b.mass != 0.0 || b.volume != 0.0)
+      log(MOORDYN_WRN_LEVEL,
+          fmt::format(
+              "tangle (MoorDyn API): {}:{}: coupled body {}: the forces returned are those of the lines "
+              "on its points; its own weight, buoyancy, inertia and drag are the host's (MoorDyn adds "
+              "them)\n",
+              m_path, b.sourceLine, b.id));
+    m_coupledBodies.push_back(std::move(cb));
+  }
   // MoorDyn couples a rod's 6 (or 3, pinned) DOFs ahead of the points': tangle holds coupled rods.
   for (const io::MoorDynRod& r : m_coupling.deck.rods)
     if (r.kind == io::MoorDynRodKind::Coupled || r.kind == io::MoorDynRodKind::CoupledPinned)
@@ -52,10 +93,7 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
   // What the conversion changed or approximated, and the reader's plausibility warnings.
   for (const std::string& warning : m_coupling.spec.warnings)
     log(MOORDYN_WRN_LEVEL, "tangle (MoorDyn API): " + warning + "\n");
-  m_run = std::make_unique<analysis::CoupledRun>(m_coupling.spec, m_coupling.points);
-  int coupled = 0;
-  for (const io::MoorDynPointMap& p : c.points)
-    m_coupledIndex.push_back(p.kind == io::MoorDynPointKind::Coupled ? coupled++ : -1);
+  m_run = std::make_unique<analysis::CoupledRun>(m_coupling.spec, m_runPoints);
   for (std::size_t l = 0; l < c.lines.size(); ++l)
     m_lineHandles.push_back(std::make_unique<LineHandle>(LineHandle{this, static_cast<int>(l)}));
   for (std::size_t p = 0; p < c.points.size(); ++p)
@@ -83,12 +121,14 @@ void MoorDynSystem::initialize(const double* x, const double* xd) {
   if (initialized()) throw InvalidValue("MoorDyn_Init was already called on this system");
   const int n = coupledDofCount();
   checkFinite(x, n, "x");
-  std::vector<double> velocity(static_cast<std::size_t>(n), 0.0);
+  std::vector<double> hostVelocity(static_cast<std::size_t>(n), 0.0);
   if (xd != nullptr) {
     checkFinite(xd, n, "xd");
-    std::copy(xd, xd + n, velocity.begin());
+    std::copy(xd, xd + n, hostVelocity.begin());
   }
-  m_run->initialize(std::span<const double>(x, static_cast<std::size_t>(n)), velocity);
+  std::vector<double> position, velocity;
+  hostToRun(x, hostVelocity.data(), position, velocity, 0.0);
+  m_run->initialize(position, velocity);
   m_tangleLines.clear();
   m_elementTension.clear();
 }
@@ -102,13 +142,90 @@ void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t
     if (!std::isfinite(dt)) throw InvalidValue("dt is infinite");
     checkFinite(x, n, "x");
     checkFinite(xd, n, "xd");
-    const auto size = static_cast<std::size_t>(n);
-    m_run->step(std::span<const double>(x, size), std::span<const double>(xd, size), dt);
+    std::vector<double> position, velocity;
+    hostToRun(x, xd, position, velocity, m_run->time());
+    m_run->step(position, velocity, dt);
     m_elementTension.clear();
   }
+  // The bodies' forces and moments about their reference points (the sum over the line ends at their points),
+  // then the deck's coupled points' forces.
   const std::vector<double>& forces = m_run->forces();
-  if (n > 0) std::copy(forces.begin(), forces.begin() + n, f);
+  for (std::size_t k = 0; k < m_coupledBodies.size(); ++k) {
+    const CoupledBody& cb = m_coupledBodies[k];
+    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
+    for (std::size_t j = 0; j < cb.points.size(); ++j) {
+      const int run = m_coupledIndex[static_cast<std::size_t>(cb.points[j])];
+      if (run < 0) continue;
+      const Vec3 fp(forces[3 * run], forces[3 * run + 1], forces[3 * run + 2]);
+      force += fp;
+      moment += (m_run->pointPosition(run) - bodyReference(cb, m_run->time())).cross(fp);
+    }
+    for (int i = 0; i < 3; ++i) {
+      f[6 * k + i] = force[i];
+      f[6 * k + 3 + i] = moment[i];
+    }
+  }
+  if (n > 0)
+    std::copy(forces.begin(), forces.begin() + 3 * m_deckCoupledPoints, f + 6 * m_coupledBodies.size());
   if (t != nullptr) *t = m_run->time();
+}
+
+namespace {
+/// MoorDyn's body rotation from its XYZ Euler angles [rad]: R = Rx(a) Ry(b) Rz(c) (Misc.hpp, Euler2Quat).
+Mat3 eulerRotation(const Vec3& angles) {
+  return (Eigen::AngleAxisd(angles.x(), Vec3::UnitX()) * Eigen::AngleAxisd(angles.y(), Vec3::UnitY()) *
+          Eigen::AngleAxisd(angles.z(), Vec3::UnitZ()))
+      .toRotationMatrix();
+}
+}  // namespace
+
+void MoorDynSystem::coupledBodyPoint(const CoupledBody& c, const Vec3& offset, double t, Vec3& position,
+                                     Vec3& velocity) const {
+  // The host's 6-vector moves linearly over its step, its angles too (as MoorDyn's Body::updateFairlead); the
+  // angle rates are taken as the angular velocity (as MoorDyn's setDependentStates).
+  const Vec6 s = c.position + c.velocity * (t - c.time0);
+  const Vec3 arm = eulerRotation(s.tail<3>()) * offset;
+  position = s.head<3>() + arm;
+  velocity = c.velocity.head<3>() + c.velocity.tail<3>().cross(arm);
+}
+
+const MoorDynSystem::CoupledBody* MoorDynSystem::coupledBodyOf(int p, Vec3* offset) const {
+  for (const CoupledBody& c : m_coupledBodies)
+    for (std::size_t j = 0; j < c.points.size(); ++j)
+      if (c.points[j] == p) {
+        if (offset) *offset = c.offsets[j];
+        return &c;
+      }
+  return nullptr;
+}
+
+void MoorDynSystem::hostToRun(const double* x, const double* xd, std::vector<double>& position,
+                              std::vector<double>& velocity, double time0) {
+  position.assign(3 * m_runPoints.size(), 0.0);
+  velocity.assign(3 * m_runPoints.size(), 0.0);
+  const std::size_t bodyDofs = 6 * m_coupledBodies.size();
+  for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(m_deckCoupledPoints); ++i) {
+    position[i] = x[bodyDofs + i];
+    velocity[i] = xd[bodyDofs + i];
+  }
+  for (std::size_t k = 0; k < m_coupledBodies.size(); ++k) {
+    CoupledBody& c = m_coupledBodies[k];
+    for (int i = 0; i < 6; ++i) {
+      c.position[i] = x[6 * k + static_cast<std::size_t>(i)];
+      c.velocity[i] = xd[6 * k + static_cast<std::size_t>(i)];
+    }
+    c.time0 = time0;
+    for (std::size_t j = 0; j < c.points.size(); ++j) {
+      const int run = m_coupledIndex[static_cast<std::size_t>(c.points[j])];
+      if (run < 0) continue;
+      Vec3 p, v;
+      coupledBodyPoint(c, c.offsets[j], time0, p, v);
+      for (int i = 0; i < 3; ++i) {
+        position[3 * static_cast<std::size_t>(run) + static_cast<std::size_t>(i)] = p[i];
+        velocity[3 * static_cast<std::size_t>(run) + static_cast<std::size_t>(i)] = v[i];
+      }
+    }
+  }
 }
 
 void MoorDynSystem::setTimeStep(double dt) {
@@ -122,7 +239,7 @@ void MoorDynSystem::setTimeStep(double dt) {
   d.minTimeStep = std::min(d.minTimeStep, dt);
   d.outputInterval = std::max(d.outputInterval, dt);
   if (d.maxTimeStep > 0.0) d.maxTimeStep = std::max(d.maxTimeStep, dt);
-  m_run = std::make_unique<analysis::CoupledRun>(m_coupling.spec, m_coupling.points);
+  m_run = std::make_unique<analysis::CoupledRun>(m_coupling.spec, m_runPoints);
 }
 
 std::string MoorDynSystem::timeSchemeName() const {
@@ -167,6 +284,14 @@ int MoorDynSystem::bodyType(int b) const {
 }
 
 void MoorDynSystem::bodyState(int b, Vec6& position, Vec6& velocity) {
+  for (const CoupledBody& c : m_coupledBodies)
+    if (c.body == b) {
+      // The host's motion (its angles as given: MoorDyn's XYZ Euler angles).
+      const double t = initialized() ? m_run->time() : c.time0;
+      position = c.position + c.velocity * (t - c.time0);
+      velocity = c.velocity;
+      return;
+    }
   const io::MoorDynBodyMap& map = m_coupling.conversion.bodies[static_cast<std::size_t>(b)];
   Vec3 origin = map.origin;
   Mat3 rotation = map.rotation;
@@ -377,6 +502,11 @@ Vec3 MoorDynSystem::pointPosition(int p) {
   if (!initialized()) return map.position;
   const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
   if (coupled >= 0) return m_run->pointPosition(coupled);
+  Vec3 offset, position, velocity;
+  if (const CoupledBody* c = coupledBodyOf(p, &offset)) {  // a point on a coupled body that no line holds
+    coupledBodyPoint(*c, offset, m_run->time(), position, velocity);
+    return position;
+  }
   return mappedPosition(map);
 }
 
@@ -396,6 +526,11 @@ Vec3 MoorDynSystem::pointVelocity(int p) {
   if (!initialized() || map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
   const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
   if (coupled >= 0) return m_run->pointVelocity(coupled);
+  Vec3 offset, position, velocity;
+  if (const CoupledBody* c = coupledBodyOf(p, &offset)) {
+    coupledBodyPoint(*c, offset, m_run->time(), position, velocity);
+    return velocity;
+  }
   return mappedVelocity(map);
 }
 

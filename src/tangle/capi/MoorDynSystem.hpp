@@ -104,8 +104,10 @@ class MoorDynSystem {
 
   /// @name The system
   /// @{
-  /// Number of coupled DOFs: 3 per coupled point.
-  int coupledDofCount() const { return 3 * m_run->pointCount(); }
+  /// Number of coupled DOFs: 6 per coupled body (ahead, as MoorDyn orders them), then 3 per coupled point.
+  int coupledDofCount() const {
+    return 6 * static_cast<int>(m_coupledBodies.size()) + 3 * m_deckCoupledPoints;
+  }
   bool initialized() const { return m_run->initialized(); }
   /// CoupledRun::initialize with x [m] and xd [m/s] (coupledDofCount() values each; xd may be null: zero).
   /// @throws InvalidValue when called twice, for a null or non-finite x; ConvergenceError from the statics
@@ -246,7 +248,34 @@ class MoorDynSystem {
   io::DeckCoupling m_coupling;
   std::unique_ptr<analysis::CoupledRun> m_run;
   std::vector<double> m_elementTension;  ///< every element's tension at the current state [N]; empty: not yet
-  std::vector<int> m_coupledIndex;  ///< per deck point, its index among the coupled points (-1: not coupled)
+  std::vector<int> m_coupledIndex;  ///< per deck point, its index among the run's coupled points (-1: none)
+  /// A body the host moves (MoorDyn's Coupled body): its 6 DOFs move the points on it rigidly; the line ends
+  /// at them are coupled points of the run (after the deck's own coupled points).
+  struct CoupledBody {
+    int body = 0;                  ///< deck index
+    std::vector<int> points;       ///< deck indices of the points on it
+    std::vector<Vec3> offsets;     ///< their positions in body axes from its reference point [m]
+    Vec6 position = Vec6::Zero();  ///< the host's: reference point [m] and XYZ Euler angles [rad] at time0
+    Vec6 velocity =
+        Vec6::Zero();    ///< and their rates [m/s, rad/s] (the angles' taken as the angular velocity)
+    double time0 = 0.0;  ///< [s]
+  };
+  std::vector<CoupledBody> m_coupledBodies;
+  int m_deckCoupledPoints = 0;                          ///< the deck's Coupled points
+  std::vector<analysis::CoupledPointSpec> m_runPoints;  ///< the run's coupled points: the deck's, the bodies'
+  /// The host's DOFs (bodies' 6, then points' 3) as the run's point positions and velocities.
+  void hostToRun(const double* x, const double* xd, std::vector<double>& position,
+                 std::vector<double>& velocity, double time0);
+  /// The position [m] and velocity [m/s] of a point at body offset `offset` of coupled body `c` at time t
+  /// [s].
+  void coupledBodyPoint(const CoupledBody& c, const Vec3& offset, double t, Vec3& position,
+                        Vec3& velocity) const;
+  /// The coupled body whose points include deck point p (its offset into *offset), or null.
+  const CoupledBody* coupledBodyOf(int p, Vec3* offset) const;
+  /// A coupled body's reference point at time t [s] (the host's motion, linear over its step) [m].
+  static Vec3 bodyReference(const CoupledBody& c, double t) {
+    return c.position.head<3>() + c.velocity.head<3>() * (t - c.time0);
+  }
   std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)
   std::vector<std::unique_ptr<LineHandle>> m_lineHandles;
   std::vector<std::unique_ptr<PointHandle>> m_pointHandles;

@@ -529,14 +529,15 @@ std::vector<BodyFrame> bodyFrames(const MoorDynDeck& deck, double density, std::
     f.rotation = bodyRotation(b.rotation);
     f.origin = b.position;
     if (b.kind != MoorDynBodyKind::Free)
-      notes.push_back(
-          fmt::format("{}:{}: body {} is {}: held where the deck puts it (a standalone run), and what is "
-                      "fixed to it with "
-                      "it{}",
-                      deck.file, b.sourceLine, b.id, b.kindWord,
-                      b.kind == MoorDynBodyKind::Fixed
-                          ? ""
-                          : "; its motion is not taken from a host (the C API refuses coupled bodies)"));
+      notes.push_back(fmt::format(
+          "{}:{}: body {} is {}: held where the deck puts it (a standalone run), and what is "
+          "fixed to it with "
+          "it{}",
+          deck.file, b.sourceLine, b.id, b.kindWord,
+          b.kind == MoorDynBodyKind::Fixed ? ""
+          : b.kind == MoorDynBodyKind::Coupled
+              ? "; through the C API the host's 6 DOFs move the points on it"
+              : "; its motion is not taken from a host (the C API refuses CoupledPinned bodies)"));
     if (!f.free) {
       f.reference = b.position;
       frames.push_back(f);
