@@ -486,18 +486,25 @@ class DeckParser {
     const auto key = [&](const char* column) { return fmt::format("line type {} {}", t.name, column); };
     t.diameter = number(n, key("Diam"), w[1]);
     t.massPerLength = number(n, key("Mass/m"), w[2]);
-    if (upper(w[3]).rfind("SYROPE:", 0) == 0) {
-      readSyrope(n, t, w[3]);
+    // A rope's dashpots "BA|BA_d" (MoorDyn2.cpp, readLineType; BA_d 0 if not given): BA its slow one.
+    const auto ropeDashpots = [&](const char* rope) {
       const std::vector<double> damping = bar(n, key("BA/-zeta"), w[4]);
       if (damping.size() > 2)
         fail(n, key("BA/-zeta"), fmt::format("'{}': expected BA or BA|BA_d (1 or 2 values)", w[4]));
       t.axialDamping = damping[0];
       if (damping.size() == 2) t.dynamicDamping = damping[1];
       if (!(t.axialDamping > 0.0) || t.dynamicDamping < 0.0)
-        fail(n, key("BA/-zeta"), fmt::format("'{}': a SYROPE rope needs BA > 0 in N s and BA_d >= 0", w[4]));
+        fail(n, key("BA/-zeta"),
+             fmt::format("'{}': a {} rope needs BA > 0 in N s (its slow dashpot; not a damping ratio) and "
+                         "BA_d >= 0",
+                         w[4], rope));
+    };
+    if (upper(w[3]).rfind("SYROPE:", 0) == 0) {
+      readSyrope(n, t, w[3]);
+      ropeDashpots("SYROPE");
     } else if (w[3].find('|') != std::string::npos) {
       // MoorDyn's viscoelastic model (MoorDyn2.cpp, readLineType): "EA_s|EA_d" (a constant dynamic stiffness)
-      // or "EA_s|alphaMBL|vbeta" (EA_d = alphaMBL + vbeta T_mean); BA "BA|BA_d" (BA_d 0 if not given).
+      // or "EA_s|alphaMBL|vbeta" (EA_d = alphaMBL + vbeta T_mean).
       const std::vector<double> parts = bar(n, key("EA"), w[3]);
       if (parts.size() != 2 && parts.size() != 3)
         fail(n, key("EA"), fmt::format("'{}': expected EA|EA_d or EA|alphaMBL|vbeta (2 or 3 values)", w[3]));
@@ -508,17 +515,7 @@ class DeckParser {
         fail(n, key("EA"),
              fmt::format("'{}': the dynamic stiffness must exceed the static one and its slope be >= 0",
                          w[3]));
-      const std::vector<double> damping = bar(n, key("BA/-zeta"), w[4]);
-      if (damping.size() > 2)
-        fail(n, key("BA/-zeta"), fmt::format("'{}': expected BA or BA|BA_d (1 or 2 values)", w[4]));
-      t.axialDamping = damping[0];
-      if (damping.size() == 2) t.dynamicDamping = damping[1];
-      if (!(t.axialDamping > 0.0) || t.dynamicDamping < 0.0)
-        fail(n, key("BA/-zeta"),
-             fmt::format(
-                 "'{}': a viscoelastic rope needs BA > 0 in N s (its slow dashpot; not a damping ratio) "
-                 "and BA_d >= 0",
-                 w[4]));
+      ropeDashpots("viscoelastic");
     } else if (!deckNumber(w[3])) {
       readTensionStrain(n, t, w[3]);  // a nonlinear EA from a curve file
     } else {
