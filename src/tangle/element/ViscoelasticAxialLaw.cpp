@@ -41,19 +41,18 @@ ViscoelasticAxialLaw::Step ViscoelasticAxialLaw::step(double strain, double stra
                                                       double dt) const {
   const double ea2 = dynamicStiffnessAt(x0);
   const double ea1 = ea2 * m_c.staticStiffness / (ea2 - m_c.staticStiffness);
-  const double c = m_c.slowDamping + m_c.dynamicDamping;
-  // Backward Euler: c (x - x0) / dt = EA_2 eps - (EA_1 + EA_2) x + BA_d eps', so
-  // x - x0 = (EA_2 eps + BA_d eps' - (EA_1 + EA_2) x0) dt / (c + (EA_1 + EA_2) dt) (the increment itself: no
-  // cancellation of c x0 / dt against c x / dt when dt is small).
   const double a = ea1 + ea2;
-  const double increment = (ea2 * strain + m_c.dynamicDamping * strainRate - a * x0) * dt / (c + a * dt);
-  const double x = x0 + increment;
-  // N = EA_1 x + BA (x - x0) / dt; dx/d eps = EA_2 dt / (c + a dt), dx/d eps' = BA_d dt / (c + a dt).
+  // Backward Euler: (BA + BA_d) (x - x0) / dt = EA_2 eps - (EA_1 + EA_2) x + BA_d eps', so
+  // x - x0 = drive dt / den with drive = EA_2 eps + BA_d eps' - (EA_1 + EA_2) x0, den = BA + BA_d + (EA_1 +
+  // EA_2) dt (the increment itself: no cancellation of c x0 / dt against c x / dt when dt is small).
+  const double drive = ea2 * strain + m_c.dynamicDamping * strainRate - a * x0;
+  const double den = m_c.slowDamping + m_c.dynamicDamping + a * dt;
+  const double x = x0 + drive * dt / den;
+  // N = EA_1 x + BA (x - x0) / dt = EA_1 x + BA drive / den; dx/d eps = EA_2 dt / den, dx/d eps' = BA_d dt /
+  // den.
   const double dNdx = ea1 + m_c.slowDamping / dt;
-  const double dxdEps = ea2 * dt / (c + a * dt);
-  return {
-      x, ea1 * x + m_c.slowDamping * (ea2 * strain + m_c.dynamicDamping * strainRate - a * x0) / (c + a * dt),
-      dNdx * dxdEps, dNdx * m_c.dynamicDamping * dt / (c + a * dt)};
+  return {x, ea1 * x + m_c.slowDamping * drive / den, dNdx * ea2 * dt / den,
+          dNdx * m_c.dynamicDamping * dt / den};
 }
 
 double ViscoelasticAxialLaw::relaxedSlowStrain(double strain) const {
