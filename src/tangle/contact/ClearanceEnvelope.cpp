@@ -18,6 +18,8 @@ namespace tangle::contact {
 
 namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
+/// Accuracy of the dynamic envelope relative to its height above the pair's minimum [-] (record()).
+constexpr double kEnvelopeTolerance = 1e-3;
 }  // namespace
 
 ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
@@ -56,18 +58,12 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
       s.knownTravel.assign(n, 0.0);
       m_sides.push_back(std::move(s));
     }
-  const auto& diameter = model.nodeContactDiameter();
-  for (const model::Line& l : model.lines()) {
-    double jump = 0.0;
-    for (int n = l.firstNode; n + 1 < l.firstNode + l.nodeCount; ++n)
-      jump = std::max(jump, 0.5 * std::abs(diameter[n + 1] - diameter[n]));
-    m_radiusJump.push_back(jump);
-  }
 }
 
 std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, int line, int other,
                                                      const std::vector<double>* onlyBelow,
-                                                     const std::vector<char>* skip) const {
+                                                     const std::vector<char>* skip,
+                                                     std::vector<double>* lower) const {
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
   const auto& diameter = m_model->nodeContactDiameter();
@@ -84,7 +80,10 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
     return (i > 0 && m_exclusions->elementPairAllowed(a.firstElement + i - 1, eb)) ||
            (i < a.nodeCount - 1 && m_exclusions->elementPairAllowed(a.firstElement + i, eb));
   };
-  const auto segmentDistance = [&](const Vec3& x, int j) {
+  // `low` is lowered to the distance less the segment's larger contact radius: the clearance with that
+  // radius is 1-Lipschitz in x and in the segment's nodes (the radius switches at the segment's middle),
+  // the bound record() carries from step to step.
+  const auto segmentDistance = [&](const Vec3& x, int j, double& low) {
     // A parted element (lines[].failure) is no segment: nothing is near it.
     if (parted.parted(static_cast<std::size_t>(b.firstElement + j), state.time))
       return std::numeric_limits<double>::infinity();
@@ -95,7 +94,9 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
     const double l2 = axis.squaredNorm();
     const double s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
     const double radius = 0.5 * (s < 0.5 ? diameter[m1] : diameter[m2]);
-    return (x - (p + s * axis)).norm() - radius;
+    const double distance = (x - (p + s * axis)).norm();
+    low = std::min(low, distance - 0.5 * std::max(diameter[m1], diameter[m2]));
+    return distance - radius;
   };
   // Bounding spheres of blocks of kBlock segments: no segment of a block is nearer to x than
   // |x - centre| - sphere radius - the block's largest contact radius, so a block whose bound is not below
@@ -165,73 +166,112 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
       if (!reachable) std::fill(skipNode.begin() + first, skipNode.begin() + last, 1);
     }
   }
-  for (int i = 0; i < a.nodeCount; ++i) {
-    if (skipNode[static_cast<std::size_t>(i)]) continue;  // out[i] stays +inf: not a new minimum
-    node = i;
-    const int n = a.firstNode + i;
-    const Vec3& x = state.position[n];
-    double best = kInf;
-    int bestSegment = -1;
-    if (onlyBelow) {
-      // A node whose clearance cannot fall below its envelope so far needs no exact search: the blocks'
-      // bounds all reach the threshold (most nodes at most steps, as the envelope settles).
-      const double threshold = (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[n];
-      bool reachable = !std::isfinite(threshold);
-      for (int k = 0; k < blocks && !reachable; ++k) {
-        const double limit = threshold + reach[static_cast<std::size_t>(k)];
-        reachable = limit <= 0.0 || (x - centre[static_cast<std::size_t>(k)]).squaredNorm() < limit * limit;
+  // Nodes in blocks of kBlock (a sphere (ca, ra) around them): a first best distance per node from its
+  // hint segment; a segment block whose bound |ca - c_k| - ra - reach_k is above the largest of them
+  // cannot improve any node of the block and is left out of their searches. One bound per node block
+  // and segment block instead of one per node (the envelope searches most nodes at every step while
+  // lines close: their clearance falls, a new minimum each step).
+  std::vector<double> hintDistance(static_cast<std::size_t>(kBlock)), hintLow(hintDistance.size());
+  if (lower) lower->assign(static_cast<std::size_t>(a.nodeCount), -kInf);
+  std::vector<int> near;
+  near.reserve(static_cast<std::size_t>(blocks));
+  for (int start = 0; start < a.nodeCount; start += kBlock) {
+    const int stop = std::min(start + kBlock, a.nodeCount);
+    double upper = -kInf;
+    Vec3 lo = state.position[a.firstNode + start], hi = lo;
+    for (int i = start; i < stop; ++i) {
+      const Vec3& x = state.position[a.firstNode + i];
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
+      double best = kInf, low = kInf;
+      if (!skipNode[static_cast<std::size_t>(i)] && segments > 0) {
+        node = i;
+        best = segmentDistance(x, std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1), low);
+        upper = std::max(upper, best);
       }
-      if (!reachable) continue;  // out[i] stays +inf: not a new minimum
+      hintDistance[static_cast<std::size_t>(i - start)] = best;
+      hintLow[static_cast<std::size_t>(i - start)] = low;
     }
-    if (segments > 0) {
-      const int guess = std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1);
-      best = segmentDistance(x, guess);
-      bestSegment = guess;
-    }
-    for (int k = 0; k < blocks; ++k) {
-      // Skip when |x - c| - reach >= best, tested on squares (no root) while best + reach > 0.
-      const double limit = best + reach[static_cast<std::size_t>(k)];
-      if (limit > 0.0 && (x - centre[static_cast<std::size_t>(k)]).squaredNorm() >= limit * limit) continue;
-      const int end = std::min((k + 1) * kBlock, segments);
-      for (int j = k * kBlock; j < end; ++j) {
-        // The same test on the segment's own bounding sphere (no root, no projection) before its distance.
-        const double segmentLimit = best + segmentReach[static_cast<std::size_t>(j)];
-        if (segmentLimit > 0.0 &&
-            (x - segmentMiddle[static_cast<std::size_t>(j)]).squaredNorm() >= segmentLimit * segmentLimit)
-          continue;
-        const double d = segmentDistance(x, j);
-        if (d < best) {
-          best = d;
-          bestSegment = j;
+    if (upper == -kInf && segments > 0) continue;  // every node of the block skipped
+    const Vec3 ca = 0.5 * (lo + hi);
+    double ra = 0.0;
+    for (int i = start; i < stop; ++i) ra = std::max(ra, (state.position[a.firstNode + i] - ca).norm());
+    near.clear();
+    for (int k = 0; k < blocks; ++k)
+      if ((ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <=
+          upper)
+        near.push_back(k);
+    for (int i = start; i < stop; ++i) {
+      if (skipNode[static_cast<std::size_t>(i)]) continue;  // out[i] stays +inf: not a new minimum
+      node = i;
+      const int n = a.firstNode + i;
+      const Vec3& x = state.position[n];
+      if (onlyBelow) {
+        // A node whose clearance cannot fall below its envelope so far needs no exact search: the bounds of
+        // the blocks that may hold its nearest segment all reach the threshold (most nodes at most steps, as
+        // the envelope settles).
+        const double threshold = (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[n];
+        bool reachable = !std::isfinite(threshold);
+        for (std::size_t m = 0; m < near.size() && !reachable; ++m) {
+          const std::size_t k = static_cast<std::size_t>(near[m]);
+          const double limit = threshold + reach[k];
+          reachable = limit <= 0.0 || (x - centre[k]).squaredNorm() < limit * limit;
+        }
+        if (!reachable) continue;  // out[i] stays +inf: not a new minimum
+      }
+      double best = hintDistance[static_cast<std::size_t>(i - start)];
+      double low = hintLow[static_cast<std::size_t>(i - start)];
+      int bestSegment = segments > 0 ? std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1) : -1;
+      for (const int k : near) {
+        // Skip when |x - c| - reach >= best, tested on squares (no root) while best + reach > 0.
+        const double limit = best + reach[static_cast<std::size_t>(k)];
+        if (limit > 0.0 && (x - centre[static_cast<std::size_t>(k)]).squaredNorm() >= limit * limit) continue;
+        const int end = std::min((k + 1) * kBlock, segments);
+        for (int j = k * kBlock; j < end; ++j) {
+          // The same test on the segment's own bounding sphere (no root, no projection) before its distance.
+          const double segmentLimit = best + segmentReach[static_cast<std::size_t>(j)];
+          if (segmentLimit > 0.0 &&
+              (x - segmentMiddle[static_cast<std::size_t>(j)]).squaredNorm() >= segmentLimit * segmentLimit)
+            continue;
+          const double d = segmentDistance(x, j, low);
+          if (d < best) {
+            best = d;
+            bestSegment = j;
+          }
         }
       }
-    }
-    hint[static_cast<std::size_t>(i)] = std::max(bestSegment, 0);
-    if (bestSegment >= 0 && hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables)) {
-      // A beam's surface (with the distributed formulation, a cable's too) is around its smooth centreline,
-      // the one contact measures (SmoothCentreline.hpp), which lies off the chords by up to kappa L^2 / 8:
-      // 4 cm for a flexible of 10 m elements near its touchdown, read as an overlap where contact saw 1 mm.
-      // Near the surface, the distance to that curve on the nearest segment and its neighbours.
-      const double bulgeBound = 0.25 * m_model->elements()[b.firstElement + bestSegment].restLength;
-      if (best < 0.5 * diameter[n] + bulgeBound) {
-        const int element = i + 1 < a.nodeCount ? a.firstElement + i : a.firstElement + i - 1;
-        const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
-        double smooth = kInf;
-        for (int j = std::max(bestSegment - 1, 0); j <= std::min(bestSegment + 1, segments - 1); ++j) {
-          if (!allowed(i, j)) continue;
-          const Vec3 axis = state.position[b.firstNode + j + 1] - state.position[b.firstNode + j];
-          const double l2 = axis.squaredNorm();
-          const double t0 =
-              l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
-          const CentrelineDistance c = centrelineDistance(
-              *m_model, state.position, element, b.firstElement + j, s, t0, true, false, smoothCables);
-          const double radius = 0.5 * (c.t < 0.5 ? diameter[b.firstNode + j] : diameter[b.firstNode + j + 1]);
-          smooth = std::min(smooth, c.distance - radius);
+      hint[static_cast<std::size_t>(i)] = std::max(bestSegment, 0);
+      if (bestSegment >= 0 && hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables)) {
+        // A beam's surface (with the distributed formulation, a cable's too) is around its smooth centreline,
+        // the one contact measures (SmoothCentreline.hpp), which lies off the chords by up to kappa L^2 / 8:
+        // 4 cm for a flexible of 10 m elements near its touchdown, read as an overlap where contact saw 1 mm.
+        // Near the surface, the distance to that curve on the nearest segment and its neighbours.
+        const double bulgeBound = 0.25 * m_model->elements()[b.firstElement + bestSegment].restLength;
+        if (best < 0.5 * diameter[n] + bulgeBound) {
+          const int element = i + 1 < a.nodeCount ? a.firstElement + i : a.firstElement + i - 1;
+          const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
+          double smooth = kInf;
+          for (int j = std::max(bestSegment - 1, 0); j <= std::min(bestSegment + 1, segments - 1); ++j) {
+            if (!allowed(i, j)) continue;
+            const Vec3 axis = state.position[b.firstNode + j + 1] - state.position[b.firstNode + j];
+            const double l2 = axis.squaredNorm();
+            const double t0 =
+                l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
+            const CentrelineDistance c = centrelineDistance(
+                *m_model, state.position, element, b.firstElement + j, s, t0, true, false, smoothCables);
+            const double radius =
+                0.5 * (c.t < 0.5 ? diameter[b.firstNode + j] : diameter[b.firstNode + j + 1]);
+            smooth = std::min(smooth, c.distance - radius);
+          }
+          if (std::isfinite(smooth)) best = smooth;
         }
-        if (std::isfinite(smooth)) best = smooth;
       }
+      out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
+      // Every segment that could be nearer with its larger radius was measured (each pruned one's bound
+      // uses that radius and is not below best, so not below low): low is exact. With the smooth
+      // centreline the clearance may be below the chords' (best replaced above).
+      if (lower) (*lower)[static_cast<std::size_t>(i)] = std::min(low, best) - 0.5 * diameter[n];
     }
-    out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
   }
   return out;
 }
@@ -256,27 +296,42 @@ void ClearanceEnvelope::record(const model::State& state) {
   }
   m_lastPosition = state.position;
   std::vector<char> skip;
-  for (Side& s : m_sides) {
-    // The clearance of a node to a polyline is 1-Lipschitz in the node's position and in the polyline's
-    // nodes (each point of a segment moves at most as far as its farther node), except for the radius
-    // switch at segment middles. So since the node's last exact clearance c0 it is at least
-    // c0 - |x - x0| - (travel of the other line since) - radius jump; a node whose bound is not below its
-    // envelope cannot set a new minimum and needs no search (most nodes at most steps: the lines move
-    // millimetres per step). The result is the same as searching every node.
+  std::vector<double> lower;
+  // Each pair's smallest dynamic clearance so far, over both its sides [m].
+  std::vector<double> pairMinimum(m_pairs.size(), kInf);
+  for (std::size_t k = 0; k < m_sides.size(); ++k)
+    for (const double c : m_sides[k].dynamicClearance) pairMinimum[k / 2] = std::min(pairMinimum[k / 2], c);
+  for (std::size_t side = 0; side < m_sides.size(); ++side) {
+    Side& s = m_sides[side];
+    // The clearance of a node to a polyline is at least its lower clearance (each segment with its larger
+    // contact radius: nodeClearance's `lower`), which is 1-Lipschitz in the node's position and in the
+    // polyline's nodes (each point of a segment moves at most as far as its farther node). So since the
+    // node's last search, where its lower clearance was c0, it is at least c0 - |x - x0| - (travel of the
+    // other line since); a node whose bound is not below its envelope cannot set a new minimum and needs no
+    // search (most nodes at most steps: the lines move millimetres per step). (With the clearance itself as
+    // c0 less the largest radius jump of the other line, a 4 m LMRP at the end of a 0.46 m riser made the
+    // bound 1.8 m too low for every node: all were searched at every step.)
+    // While lines close, every node's clearance falls and would set a new minimum at every step (nodes
+    // hundreds of metres away searched at every step: 10 % of a drifting riser's run). So a node is
+    // searched again only once its bound is below its envelope e by more than kEnvelopeTolerance (e - P),
+    // P the pair's smallest envelope so far: the envelope is never below the exact minimum, and above it by
+    // at most that. The pair's minimum itself is exact: the node where it occurs has no tolerance at that
+    // time, as a node above P by less than its tolerance would be above by less than itself.
     const model::Line& a = lines[static_cast<std::size_t>(s.line)];
     const double travel = m_travel[static_cast<std::size_t>(s.other)];
-    const double jump = m_radiusJump[static_cast<std::size_t>(s.other)];
     skip.assign(static_cast<std::size_t>(a.nodeCount), 0);
     for (std::size_t i = 0; i < skip.size(); ++i) {
       const Vec3& x = state.position[a.firstNode + static_cast<int>(i)];
-      const double now =
-          s.knownClearance[i] - (x - s.knownPosition[i]).norm() - (travel - s.knownTravel[i]) - jump;
-      skip[i] = now >= s.dynamicClearance[i] ? 1 : 0;
+      const double now = s.knownClearance[i] - (x - s.knownPosition[i]).norm() - (travel - s.knownTravel[i]);
+      const double envelope = s.dynamicClearance[i];
+      const double above = envelope - pairMinimum[side / 2];
+      const double tolerance = std::isfinite(above) ? kEnvelopeTolerance * std::max(above, 0.0) : 0.0;
+      skip[i] = now >= envelope - tolerance ? 1 : 0;
     }
-    const std::vector<double> c = nodeClearance(state, s.line, s.other, &s.dynamicClearance, &skip);
+    const std::vector<double> c = nodeClearance(state, s.line, s.other, &s.dynamicClearance, &skip, &lower);
     for (std::size_t i = 0; i < c.size(); ++i) {
       if (std::isfinite(c[i])) {  // searched: its exact clearance
-        s.knownClearance[i] = c[i];
+        s.knownClearance[i] = lower[i];
         s.knownPosition[i] = state.position[a.firstNode + static_cast<int>(i)];
         s.knownTravel[i] = travel;
       }

@@ -37,7 +37,10 @@ class ClearanceEnvelope {
   bool empty() const { return m_pairs.empty(); }
   /// The static clearance at every node (call once, at the static equilibrium).
   void recordStatic(const model::State& state);
-  /// Updates the dynamic envelope with this state (call every accepted step).
+  /// Updates the dynamic envelope with this state (call every accepted step). Each pair's minimum (value,
+  /// place and time) is exact; a node's dynamic minimum e is never below the exact one and above it by at
+  /// most 0.1 % of e - P, P the pair's minimum (a node is searched again only when it may have closed by
+  /// more than that: ClearanceEnvelope.cpp).
   void record(const model::State& state);
   /// Writes clearance/envelope.csv and clearance/summary.json.
   void write(const std::filesystem::path& dir) const;
@@ -47,17 +50,22 @@ class ClearanceEnvelope {
   /// comment). With `onlyBelow` (one value per node [m]), a node whose clearance is provably not below its
   /// value gets +inf instead of the exact clearance (the dynamic envelope needs only new minima).
   /// With `skip` (one flag per node), flagged nodes get +inf without any search.
+  /// With `lower`, it gets per node searched its lower clearance [m] (each segment of `other` with its
+  /// larger contact radius, and the clearance where less: a bound of the clearance that is 1-Lipschitz in
+  /// the positions), -inf for the nodes not searched.
   std::vector<double> nodeClearance(const model::State& state, int line, int other,
                                     const std::vector<double>* onlyBelow = nullptr,
-                                    const std::vector<char>* skip = nullptr) const;
+                                    const std::vector<char>* skip = nullptr,
+                                    std::vector<double>* lower = nullptr) const;
 
   struct Side {
     int line = -1, other = -1;
     std::vector<double> staticClearance;   ///< per node of `line` [m] (NaN before recordStatic)
     std::vector<double> dynamicClearance;  ///< per node, minimum over the run [m] (+inf before record)
     std::vector<double> timeOfMinimum;     ///< per node [s]
-    // Last exact clearance of each node (-inf: none yet), where the node was then [m], and how far line
-    // `other` had travelled by then (m_travel) [m]: a lower bound of the clearance now (record()).
+    // Lower clearance of each node at its last search (nodeClearance's `lower`; -inf: none yet), where the
+    // node was then [m], and how far line `other` had travelled by then (m_travel) [m]: a lower bound of
+    // the clearance now (record()).
     std::vector<double> knownClearance;
     std::vector<Vec3> knownPosition;
     std::vector<double> knownTravel;
@@ -89,9 +97,6 @@ class ClearanceEnvelope {
   /// displacement [m]: no point of the line has moved farther since any earlier call than the difference.
   std::vector<Vec3> m_lastPosition;
   std::vector<double> m_travel;
-  /// Per line, the largest difference of contact radius between the two nodes of a segment [m]: the
-  /// clearance to a segment switches radius at its middle, the one place it is not 1-Lipschitz in x.
-  std::vector<double> m_radiusJump;
 };
 
 }  // namespace tangle::contact
