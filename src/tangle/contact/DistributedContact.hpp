@@ -11,7 +11,7 @@
 /// Integration (Gauss-point-to-curve, Meier, Popp & Wall 2016 without the point-to-point blending of
 /// Meier, Wall & Popp 2017): for each element of line A near line B, the interval of the element where its
 /// centreline is closer to B's centreline than the sum of the radii is found (the minimum of the distance,
-/// then the two roots of gap(xi) = 0 on either side by the Illinois method); 4 Gauss points on each piece
+/// then the two roots of gap(xi) = 0 on either side by bracketed Newton steps); 4 Gauss points on each piece
 /// of that interval between the points where the integrand is not smooth (where the penetration passes
 /// the law's p0 and p1) carry the penalty law f(p) per unit length along the
 /// closest-point normal to B.
