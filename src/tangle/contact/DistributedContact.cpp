@@ -509,6 +509,12 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
                                      bool relaxation, const std::vector<Vec3>& reference) {
   // The samples depend on these inputs and on what commitSamples, beginStep and setStepScale change
   // (they clear m_found): the same inputs give the same samples.
+  if (search.candidates().empty()) {
+    // No pair is near: no samples, whatever the state (the lines apart: no copies of the state kept).
+    m_samples.clear();
+    m_found.valid = false;
+    return;
+  }
   if (m_found.valid && m_found.dynamic == dynamic && m_found.relaxation == relaxation &&
       m_found.position == state.position && m_found.velocity.size() == state.velocity.size() &&
       m_found.velocity == state.velocity && m_found.acceleration.size() == state.acceleration.size() &&
