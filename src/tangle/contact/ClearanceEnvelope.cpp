@@ -138,51 +138,45 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   std::vector<int>& hint = m_hint[{line, other}];
   hint.resize(static_cast<std::size_t>(a.nodeCount), 0);
   std::vector<double> out(static_cast<std::size_t>(a.nodeCount), kInf);
-  // With a threshold, whole blocks of kBlock nodes of line a are skipped first: no node within the sphere
-  // (ca, ra) of a block is nearer to segment block k than |ca - c_k| - ra - reach_k.
   std::vector<char> skipNode = skip ? *skip : std::vector<char>(static_cast<std::size_t>(a.nodeCount), 0);
-  if (onlyBelow) {
-    for (int first = 0; first < a.nodeCount; first += kBlock) {
-      const int last = std::min(first + kBlock, a.nodeCount);
-      Vec3 lo = state.position[a.firstNode + first], hi = lo;
-      double threshold = -kInf;
-      for (int i = first; i < last; ++i) {
-        const int n = a.firstNode + i;
-        lo = lo.cwiseMin(state.position[n]);
-        hi = hi.cwiseMax(state.position[n]);
-        threshold = std::max(threshold, (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[n]);
-      }
-      if (!std::isfinite(threshold)) continue;
-      if (std::all_of(skipNode.begin() + first, skipNode.begin() + last, [](char c) { return c != 0; }))
-        continue;
-      const Vec3 ca = 0.5 * (lo + hi);
-      double ra = 0.0;
-      for (int i = first; i < last; ++i) ra = std::max(ra, (state.position[a.firstNode + i] - ca).norm());
-      bool reachable = false;
-      for (int k = 0; k < blocks && !reachable; ++k)
-        reachable =
-            (ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <
-            threshold;
-      if (!reachable) std::fill(skipNode.begin() + first, skipNode.begin() + last, 1);
-    }
-  }
-  // Nodes in blocks of kBlock (a sphere (ca, ra) around them): a first best distance per node from its
-  // hint segment; a segment block whose bound |ca - c_k| - ra - reach_k is above the largest of them
-  // cannot improve any node of the block and is left out of their searches. One bound per node block
-  // and segment block instead of one per node (the envelope searches most nodes at every step while
-  // lines close: their clearance falls, a new minimum each step).
+  // Nodes in blocks of kBlock (a sphere (ca, ra) around them). With a threshold, a whole block is skipped
+  // first when no node within its sphere is nearer to any segment block k than its threshold allows
+  // (|ca - c_k| - ra - reach_k). Then a first best distance per node from its hint segment; a segment
+  // block whose bound is above the largest of them cannot improve any node of the block and is left out
+  // of their searches. One bound per node block and segment block instead of one per node (the envelope
+  // searches most nodes at every step while lines close: their clearance falls, a new minimum each step).
   std::vector<double> hintDistance(static_cast<std::size_t>(kBlock)), hintLow(hintDistance.size());
   if (lower) lower->assign(static_cast<std::size_t>(a.nodeCount), -kInf);
   std::vector<int> near;
   near.reserve(static_cast<std::size_t>(blocks));
   for (int start = 0; start < a.nodeCount; start += kBlock) {
     const int stop = std::min(start + kBlock, a.nodeCount);
-    double upper = -kInf;
     Vec3 lo = state.position[a.firstNode + start], hi = lo;
     for (int i = start; i < stop; ++i) {
+      lo = lo.cwiseMin(state.position[a.firstNode + i]);
+      hi = hi.cwiseMax(state.position[a.firstNode + i]);
+    }
+    const Vec3 ca = 0.5 * (lo + hi);
+    double ra = 0.0;
+    for (int i = start; i < stop; ++i) ra = std::max(ra, (state.position[a.firstNode + i] - ca).norm());
+    if (onlyBelow &&
+        std::any_of(skipNode.begin() + start, skipNode.begin() + stop, [](char c) { return c == 0; })) {
+      double threshold = -kInf;
+      for (int i = start; i < stop; ++i)
+        threshold =
+            std::max(threshold, (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[a.firstNode + i]);
+      if (std::isfinite(threshold)) {
+        bool reachable = false;
+        for (int k = 0; k < blocks && !reachable; ++k)
+          reachable =
+              (ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <
+              threshold;
+        if (!reachable) std::fill(skipNode.begin() + start, skipNode.begin() + stop, 1);
+      }
+    }
+    double upper = -kInf;
+    for (int i = start; i < stop; ++i) {
       const Vec3& x = state.position[a.firstNode + i];
-      lo = lo.cwiseMin(x);
-      hi = hi.cwiseMax(x);
       double best = kInf, low = kInf;
       if (!skipNode[static_cast<std::size_t>(i)] && segments > 0) {
         node = i;
@@ -193,9 +187,6 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
       hintLow[static_cast<std::size_t>(i - start)] = low;
     }
     if (upper == -kInf && segments > 0) continue;  // every node of the block skipped
-    const Vec3 ca = 0.5 * (lo + hi);
-    double ra = 0.0;
-    for (int i = start; i < stop; ++i) ra = std::max(ra, (state.position[a.firstNode + i] - ca).norm());
     near.clear();
     for (int k = 0; k < blocks; ++k)
       if ((ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <=
