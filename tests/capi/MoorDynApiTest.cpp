@@ -13,6 +13,7 @@
 #include <iterator>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "MoorDyn.h"
 #include "MoorDyn2.h"
@@ -257,7 +258,8 @@ TEST(MoorDynApi, FreePointJoiningTwoLinesIsBalanced) {
   ASSERT_EQ(MoorDyn_GetPointForce(MoorDyn_GetPoint(system, 2), f), MOORDYN_SUCCESS);
   const double g = 9.80665, rho = 1025.0, pi = 3.141592653589793;
   const double lift = (12.0 * rho - 1000.0) * g;
-  const double halfSegments = 5.0 * g * ((140.0 - rho * pi / 4.0 * 0.15 * 0.15) + (20.0 - rho * pi / 4.0 * 0.16 * 0.16));
+  const double halfSegments =
+      5.0 * g * ((140.0 - rho * pi / 4.0 * 0.15 * 0.15) + (20.0 - rho * pi / 4.0 * 0.16 * 0.16));
   EXPECT_NEAR(f[0], 0.0, 1.0);
   EXPECT_NEAR(f[2], -(lift - halfSegments), 10.0);
   // The chain below the buoy carries far more than the rope above it, each at its own end.
@@ -516,6 +518,11 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
   for (int step = 0; step < 100; ++step) {
     motion(tb, r, rd);
     fairleads(r, rd, x, xd);
+    // Over a step the body's points move along the chord to where its pose puts them at the step's end.
+    double r1[6], x1[6], unused[6];
+    for (int i = 0; i < 6; ++i) r1[i] = r[i] + rd[i] * dt;
+    fairleads(r1, rd, x1, unused);
+    for (int i = 0; i < 6; ++i) xd[i] = (x1[i] - x[i]) / dt;
     ASSERT_EQ(MoorDyn_Step(body, r, rd, fb, &tb, &dt), MOORDYN_SUCCESS);
     ASSERT_EQ(MoorDyn_Step(points, x, xd, fp, &tp, &dt), MOORDYN_SUCCESS);
     double p3[3], p4[3], q3[3], q4[3];
@@ -527,6 +534,7 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
     for (int i = 0; i < 3; ++i) reference[i] = r[i] + rd[i] * dt;
     const double scale = std::max(norm(fp), norm(fp + 3));
     for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(q3[i], x1[i], 1e-9) << "step " << step;  // on the body at the step's end
       EXPECT_NEAR(q3[i], p3[i], 1e-9) << "step " << step;
       EXPECT_NEAR(q4[i], p4[i], 1e-9) << "step " << step;
       EXPECT_NEAR(fb[i], fp[i] + fp[3 + i], 1e-6 * scale) << "step " << step << " force " << i;
@@ -546,15 +554,233 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
   EXPECT_NEAR(state[5], r[5] + rd[5] * dt, 1e-12);  // the host's yaw at the end of the last step
   EXPECT_EQ(MoorDyn_Close(body), MOORDYN_SUCCESS);
   EXPECT_EQ(MoorDyn_Close(points), MOORDYN_SUCCESS);
-  // A body whose host gives only its translation (CoupledPinned: its rotation free) is refused by name.
+  // A body whose host gives only its translation (CoupledPinned: its rotation solved) carries its mass at the
+  // pin: one whose mass is off its reference point is refused by name.
   std::ifstream in(dir + "coupled_body.txt");
   std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  deck.replace(deck.find("1    Coupled"), 12, "1    CoupledPinned");
+  const std::string row = "1    Coupled     0.0    0.0    -5.0   0      0      0      0      0";
+  ASSERT_NE(deck.find(row), std::string::npos);
+  deck.replace(deck.find(row), row.size(),
+               "1    CoupledPinned     0.0    0.0    -5.0   0      0      0      1000      1");
   const std::string pinned =
       (std::filesystem::temp_directory_path() / "tangle-coupled-pinned-body.txt").string();
   std::ofstream(pinned) << deck;
   EXPECT_EQ(MoorDyn_Create(pinned.c_str()), nullptr);
   std::filesystem::remove(pinned);
+}
+
+// A Coupled rod (6 DOFs: its end A and XYZ Euler angles turning the deck's axis, MoorDyn's Rod::COUPLED):
+// MoorDyn's RodHanging.txt with its free rod made Coupled, the host swinging it in surge and yaw, against
+// the same deck with two Coupled points in place of the rod's ends, moved along the same chords. The rod's
+// ends and the line ends there end each step where the host's pose puts them (1e-9 m); the force is the
+// points' sum and the moment theirs about end A (1e-6 relative: sums of the same numbers, as the coupled
+// body's); MoorDyn_GetRodForce returns what MoorDyn_Step did.
+TEST(MoorDynApi, CoupledRodMovesItsLinesEndsRigidlyAndReturnsTheirForceAndMoment) {
+  const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
+  std::ifstream in(dir + "RodHanging.txt");
+  const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto edited = [&](const std::vector<std::pair<std::string, std::string>>& edits, const char* name) {
+    std::string deck = original;
+    for (const auto& [from, to] : edits) {
+      EXPECT_NE(deck.find(from), std::string::npos) << from;
+      if (deck.find(from) != std::string::npos) deck.replace(deck.find(from), from.size(), to);
+    }
+    const std::string path = (std::filesystem::temp_directory_path() / name).string();
+    std::ofstream(path) << deck;
+    MoorDyn system = MoorDyn_Create(path.c_str());
+    std::filesystem::remove(path);
+    return system;
+  };
+  MoorDyn system = edited({{"1    rod       Free        -10", "1    rod       Coupled     -10"}},
+                          "tangle-coupled-rod.txt");
+  MoorDyn points = edited({{"1    rod       Free        -10   0     -75   10    0     -75  1       -", ""},
+                           {"2     Fixed      450    0       0       0      0       0      0",
+                            "2     Fixed      450    0       0       0      0       0      0\n"
+                            "3     Coupled   -10     0     -75      0      0       0      0\n"
+                            "4     Coupled    10     0     -75      0      0       0      0"},
+                           {"R1A", "3  "},
+                           {"R1B", "4  "}},
+                          "tangle-coupled-rod-points.txt");
+  ASSERT_NE(system, nullptr);
+  ASSERT_NE(points, nullptr);
+  unsigned int n = 0;
+  ASSERT_EQ(MoorDyn_NCoupledDOF(system, &n), MOORDYN_SUCCESS);
+  ASSERT_EQ(n, 6u);
+  MoorDynRod rod = MoorDyn_GetRod(system, 1);
+  ASSERT_NE(rod, nullptr);
+  int type = 5;
+  ASSERT_EQ(MoorDyn_GetRodType(rod, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, -2);  // coupled
+  const double omega = 2.0 * std::numbers::pi / 10.0;
+  const auto motion = [&](double t, double r[6], double rd[6]) {
+    for (int i = 0; i < 6; ++i) r[i] = rd[i] = 0.0;
+    r[0] = -10.0 + 2.0 * std::sin(omega * t), rd[0] = 2.0 * omega * std::cos(omega * t);
+    r[2] = -75.0;
+    r[5] = 0.1 * std::sin(omega * t), rd[5] = 0.1 * omega * std::cos(omega * t);
+  };
+  // The rod's ends for pose r: A at r, B at r + Rz(yaw) (20, 0, 0).
+  const auto ends = [](const double r[6], double x[6]) {
+    for (int i = 0; i < 3; ++i) x[i] = r[i];
+    x[3] = r[0] + 20.0 * std::cos(r[5]), x[4] = r[1] + 20.0 * std::sin(r[5]), x[5] = r[2];
+  };
+  double r[6], rd[6], x[6], xd[6], f[6], fp[6], g[6];
+  motion(0.0, r, rd);
+  ends(r, x);
+  for (int i = 0; i < 3; ++i) xd[i] = rd[i];
+  xd[3] = rd[0] - 20.0 * std::sin(r[5]) * rd[5], xd[4] = rd[1] + 20.0 * std::cos(r[5]) * rd[5], xd[5] = rd[2];
+  ASSERT_EQ(MoorDyn_Init(system, r, rd), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_Init(points, x, xd), MOORDYN_SUCCESS);
+  MoorDynLine line2 = MoorDyn_GetLine(system, 2);
+  double t = 0.0, tp = 0.0, dt = 0.05, largestMoment = 0.0;
+  for (int step = 0; step < 100; ++step) {
+    motion(t, r, rd);
+    double r1[6], x1[6];
+    for (int i = 0; i < 6; ++i) r1[i] = r[i] + rd[i] * dt;  // the host's pose at the step's end
+    ends(r, x);
+    ends(r1, x1);
+    for (int i = 0; i < 6; ++i) xd[i] = (x1[i] - x[i]) / dt;
+    ASSERT_EQ(MoorDyn_Step(system, r, rd, f, &t, &dt), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_Step(points, x, xd, fp, &tp, &dt), MOORDYN_SUCCESS);
+    double a0[3], b0[3], lb[3];
+    ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 0, a0), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 1, b0), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetLineNodePos(line2, 45, lb), MOORDYN_SUCCESS);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(a0[i], x1[i], 1e-9) << "step " << step;
+      EXPECT_NEAR(b0[i], x1[3 + i], 1e-9) << "step " << step;
+      EXPECT_NEAR(lb[i], x1[3 + i], 1e-9) << "step " << step;
+    }
+    const double scale = std::max(norm(fp), norm(fp + 3));
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(f[i], fp[i] + fp[3 + i], 1e-6 * scale) << "step " << step << " force " << i;
+    const double arm[3] = {x1[3] - x1[0], x1[4] - x1[1], x1[5] - x1[2]};
+    const double* fb = fp + 3;
+    const double moment[3] = {arm[1] * fb[2] - arm[2] * fb[1], arm[2] * fb[0] - arm[0] * fb[2],
+                              arm[0] * fb[1] - arm[1] * fb[0]};
+    for (int i = 0; i < 3; ++i)
+      EXPECT_NEAR(f[3 + i], moment[i], 1e-6 * 20.0 * scale) << "step " << step << " moment " << i;
+    largestMoment = std::max(largestMoment, std::abs(f[4]));
+  }
+  EXPECT_GT(largestMoment, 1e4);  // the line's weight at end B: the moment check is not vacuous
+  ASSERT_EQ(MoorDyn_GetRodForce(rod, g), MOORDYN_SUCCESS);
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(g[i], f[i]);
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDyn_Close(points), MOORDYN_SUCCESS);
+}
+
+/// Runs a host that moves a coupled-pinned object (3 DOFs at the front of the coupled vector; `counted` what
+/// MoorDyn_NCoupledDOF says) from (0, 0, -5) with a constant acceleration `accel` along y from rest, at
+/// the host's 0.01 s step, until two full swings (MoorDyn's tests/bodies.cpp, "Pinned body": the fourth
+/// extremum of the swing angle after the first 30 steps). Returns the mean swing angle about x [rad]
+/// (`angle` reads it after each step) and the mean force the host got [N].
+struct SwingResult {
+  double meanAngle = 0.0;
+  double meanForce[3] = {0.0, 0.0, 0.0};
+  int steps = 0;
+};
+template <typename Angle>
+SwingResult swingUnderAcceleration(MoorDyn system, unsigned int counted, double accel, Angle&& angle) {
+  SwingResult out;
+  unsigned int n = 0;
+  EXPECT_EQ(MoorDyn_NCoupledDOF(system, &n), MOORDYN_SUCCESS);
+  EXPECT_EQ(n, counted);
+  std::vector<double> x(n, 0.0), xd(n, 0.0), f(n, 0.0);
+  x[2] = -5.0;
+  EXPECT_EQ(MoorDyn_Init(system, x.data(), xd.data()), MOORDYN_SUCCESS);
+  std::vector<double> roll;
+  double t = 0.0, dt = 0.01;
+  int extrema = 0;
+  for (int i = 0; t < 50.0; ++i) {
+    x[1] = 0.5 * accel * t * t;
+    xd[1] = accel * t;
+    if (MoorDyn_Step(system, x.data(), xd.data(), f.data(), &t, &dt) != MOORDYN_SUCCESS) {
+      ADD_FAILURE() << "step " << i << " failed";
+      return out;
+    }
+    roll.push_back(angle());
+    for (int k = 0; k < 3; ++k) out.meanForce[k] += f[static_cast<std::size_t>(k)];
+    const std::size_t j = roll.size() - 1;
+    if (j >= 30 && (roll[j] - roll[j - 1]) * (roll[j - 1] - roll[j - 2]) < 0.0) ++extrema;
+    if (extrema > 3) break;
+  }
+  out.steps = static_cast<int>(roll.size());
+  for (double r : roll) out.meanAngle += r / static_cast<double>(roll.size());
+  for (double& v : out.meanForce) v /= static_cast<double>(roll.size());
+  return out;
+}
+
+// MoorDyn's own "Pinned body" test (tests/bodies.cpp, its deck tests/Mooring/body_tests/pinnedBody.txt): a
+// massless CoupledPinned body holding a fixed 10 m rod of 50 t, in vacuum, its pin accelerated at 0.5 m/s^2:
+// a pendulum on an accelerating cart, whose angle swings between 0 and 2 theta about theta = atan(-a / g).
+// MoorDyn's tolerance on the mean roll: 0.001 rad. The mean force on the host over whole swings (from rest
+// to an extremum, where the rod is at rest relative to the pin): momentum, -m (0, a, g), to 1 % (the window
+// ends at the sample nearest the extremum, 0.01 s: the rod's relative momentum there is below 0.1 % of m a
+// T).
+TEST(MoorDynApi, PinnedBodySwingsAboutAtanOfItsAccelerationOverGravity) {
+  const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
+  MoorDyn system = MoorDyn_Create((dir + "pinnedBody.txt").c_str());
+  ASSERT_NE(system, nullptr);
+  MoorDynBody body = MoorDyn_GetBody(system, 1);
+  ASSERT_NE(body, nullptr);
+  int type = 5;
+  ASSERT_EQ(MoorDyn_GetBodyType(body, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, 2);  // coupled pinned
+  const double accel = 0.5, g = 9.80665, mass = 5e3 * 10.0;
+  const SwingResult r = swingUnderAcceleration(system, 6, accel, [&] {
+    double q[6], qd[6];
+    EXPECT_EQ(MoorDyn_GetBodyState(body, q, qd), MOORDYN_SUCCESS);
+    return q[3];
+  });
+  const double theta = std::atan(-accel / g);
+  EXPECT_GT(r.steps, 500);  // two swings of a 10 m rod 5 m below its pin: about 2 x 5.6 s
+  EXPECT_NEAR(r.meanAngle, theta, 0.001);
+  EXPECT_NEAR(r.meanForce[0], 0.0, 0.01 * mass * g);
+  EXPECT_NEAR(r.meanForce[1], -mass * accel, 0.01 * mass * accel);
+  EXPECT_NEAR(r.meanForce[2], -mass * g, 0.01 * mass * g);
+  double f[6];
+  ASSERT_EQ(MoorDyn_GetBodyForce(body, f), MOORDYN_SUCCESS);
+  EXPECT_EQ(f[3], 0.0);  // a pinned body returns no moment
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
+// The same pendulum as a CoupledPinned rod (3 DOFs: its end A) from (0, 0, -5) to (0, 0, -15), no body:
+// the same mean angle (MoorDyn's tolerance) and force; the angle from the rod's end nodes.
+TEST(MoorDynApi, PinnedRodSwingsAboutAtanOfItsAccelerationOverGravity) {
+  const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
+  std::ifstream in(dir + "pinnedBody.txt");
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bodyRow = "1     CoupledPinned    0.00    0.00  -5.00";
+  const std::string rodRow = "1      Can     Body1         0     0     -5     0     0     -15     3";
+  ASSERT_NE(deck.find(bodyRow), std::string::npos);
+  ASSERT_NE(deck.find(rodRow), std::string::npos);
+  deck.erase(deck.find(bodyRow), deck.find('\n', deck.find(bodyRow)) + 1 - deck.find(bodyRow));
+  deck.replace(deck.find(rodRow), rodRow.size(),
+               "1      Can     CoupledPinned 0     0     -5     0     0     -15     3");
+  const std::string path = (std::filesystem::temp_directory_path() / "tangle-pinned-rod.txt").string();
+  std::ofstream(path) << deck;
+  MoorDyn system = MoorDyn_Create(path.c_str());
+  std::filesystem::remove(path);
+  ASSERT_NE(system, nullptr);
+  MoorDynRod rod = MoorDyn_GetRod(system, 1);
+  ASSERT_NE(rod, nullptr);
+  int type = 5;
+  ASSERT_EQ(MoorDyn_GetRodType(rod, &type), MOORDYN_SUCCESS);
+  EXPECT_EQ(type, -1);  // coupled pinned
+  const double accel = 0.5, g = 9.80665, mass = 5e3 * 10.0;
+  const SwingResult r = swingUnderAcceleration(system, 3, accel, [&] {
+    double a[3], b[3];
+    EXPECT_EQ(MoorDyn_GetRodNodePos(rod, 0, a), MOORDYN_SUCCESS);
+    EXPECT_EQ(MoorDyn_GetRodNodePos(rod, 3, b), MOORDYN_SUCCESS);
+    return std::atan2(b[1] - a[1], a[2] - b[2]);  // Rx(phi) (0, 0, -1) = (0, sin phi, -cos phi)
+  });
+  EXPECT_GT(r.steps, 400);
+  EXPECT_NEAR(r.meanAngle, std::atan(-accel / g), 0.001);
+  EXPECT_NEAR(r.meanForce[1], -mass * accel, 0.01 * mass * accel);
+  EXPECT_NEAR(r.meanForce[2], -mass * g, 0.01 * mass * g);
+  double f[6];
+  ASSERT_EQ(MoorDyn_GetRodForce(rod, f), MOORDYN_SUCCESS);
+  EXPECT_LT(f[2], 0.0);
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <iostream>
 #include <limits>
 
@@ -14,7 +15,11 @@ namespace tangle::analysis {
 struct CoupledRun::HostMotion {
   std::vector<Vec3> start;     ///< [m]
   std::vector<Vec3> velocity;  ///< [m/s]
-  double t0 = 0.0;             ///< [s]
+  /// The change of the host's velocity over its last step divided by it [m/s^2] (MoorDyn's estimate for its
+  /// coupled bodies and rods, MoorDyn2.cpp Step): the held nodes' acceleration, so that the force on the host
+  /// carries their inertia (the position stays linear over the step).
+  std::vector<Vec3> acceleration;
+  double t0 = 0.0;  ///< [s]
   Vec3 at(int point, double t) const {
     return start[static_cast<std::size_t>(point)] + velocity[static_cast<std::size_t>(point)] * (t - t0);
   }
@@ -26,6 +31,25 @@ CoupledRun::CoupledRun(model::ModelSpec spec, std::vector<CoupledPointSpec> poin
   for (std::size_t p = 0; p < m_points.size(); ++p) {
     const CoupledPointSpec& point = m_points[p];
     const int first = static_cast<int>(m_ends.size());
+    m_vesselOfPoint.push_back(-1);
+    if (!point.vessel.empty()) {
+      const std::string key = fmt::format("coupled point {}: vessel {}", point.name, point.vessel);
+      const auto it = std::find_if(m_spec.vessels.begin(), m_spec.vessels.end(),
+                                   [&](const model::VesselSpec& v) { return v.name == point.vessel; });
+      if (it == m_spec.vessels.end()) throw InputError(file, 0, key, "no vessel of that name");
+      if (it->mode != model::VesselMode::Free || !it->pinned)
+        throw InputError(file, it->sourceLine, key,
+                         "a host moves a vessel's reference point only when it is free and pinned (its "
+                         "rotations solved)");
+      if (!point.ends.empty())
+        throw InputError(file, 0, key, "a coupled vessel point holds no line ends (they are on the vessel)");
+      for (int q : m_vesselOfPoint)
+        if (q == static_cast<int>(it - m_spec.vessels.begin()))
+          throw InputError(file, it->sourceLine, key, "this vessel is in two coupled points");
+      m_vesselOfPoint.back() = static_cast<int>(it - m_spec.vessels.begin());
+      m_pointOfEnd.push_back({first, first});
+      continue;
+    }
     if (point.ends.empty())
       throw InputError(file, 0, fmt::format("coupled point {}", point.name),
                        "a coupled point needs at least one line end");
@@ -56,11 +80,10 @@ CoupledRun::CoupledRun(model::ModelSpec spec, std::vector<CoupledPointSpec> poin
   m_forces.assign(3 * m_points.size(), 0.0);
   m_motion->start.assign(m_points.size(), Vec3::Zero());
   m_motion->velocity.assign(m_points.size(), Vec3::Zero());
-  for (std::size_t p = 0; p < m_points.size(); ++p) {
-    const auto [line, end] = m_ends[static_cast<std::size_t>(m_pointOfEnd[p].first)];
-    const model::LineSpec& ls = m_spec.lines[static_cast<std::size_t>(line)];
-    m_motion->start[p] = end == 0 ? ls.endA.position : ls.endB.position;
-  }
+  m_motion->acceleration.assign(m_points.size(), Vec3::Zero());
+  const std::vector<double> x = modelPositions();
+  for (std::size_t p = 0; p < m_points.size(); ++p)
+    m_motion->start[p] = Vec3(x[3 * p], x[3 * p + 1], x[3 * p + 2]);
 }
 
 CoupledRun::~CoupledRun() {
@@ -76,24 +99,32 @@ CoupledRun::~CoupledRun() {
 std::vector<double> CoupledRun::modelPositions() const {
   std::vector<double> out;
   for (std::size_t p = 0; p < m_points.size(); ++p) {
-    const auto [line, end] = m_ends[static_cast<std::size_t>(m_pointOfEnd[p].first)];
-    const model::LineSpec& ls = m_spec.lines[static_cast<std::size_t>(line)];
-    const Vec3 x = end == 0 ? ls.endA.position : ls.endB.position;
+    Vec3 x;
+    if (m_vesselOfPoint[p] >= 0) {
+      x = m_spec.vessels[static_cast<std::size_t>(m_vesselOfPoint[p])].position;
+    } else {
+      const auto [line, end] = m_ends[static_cast<std::size_t>(m_pointOfEnd[p].first)];
+      const model::LineSpec& ls = m_spec.lines[static_cast<std::size_t>(line)];
+      x = end == 0 ? ls.endA.position : ls.endB.position;
+    }
     out.insert(out.end(), {x.x(), x.y(), x.z()});
   }
   return out;
 }
 
-void CoupledRun::setHostMotion(std::span<const double> x, std::span<const double> xd, double t0) {
+void CoupledRun::setHostMotion(std::span<const double> x, std::span<const double> xd, double t0, double dt) {
   const std::size_t n = 3 * m_points.size();
   if (x.size() != n || xd.size() != n)
     throw InputError(m_spec.sourceFile, 0, "coupled points",
                      fmt::format("expected {} positions and velocities (3 per coupled point), got {} and {}",
                                  n, x.size(), xd.size()));
   for (std::size_t p = 0; p < m_points.size(); ++p) {
+    const Vec3 velocity(xd[3 * p], xd[3 * p + 1], xd[3 * p + 2]);
+    m_motion->acceleration[p] = dt > 0.0 ? Vec3((velocity - m_motion->velocity[p]) / dt) : Vec3::Zero();
     m_motion->start[p] = Vec3(x[3 * p], x[3 * p + 1], x[3 * p + 2]);
-    m_motion->velocity[p] = Vec3(xd[3 * p], xd[3 * p + 1], xd[3 * p + 2]);
-    if (!m_motion->start[p].allFinite() || !m_motion->velocity[p].allFinite())
+    m_motion->velocity[p] = velocity;
+    if (!m_motion->start[p].allFinite() || !m_motion->velocity[p].allFinite() ||
+        !m_motion->acceleration[p].allFinite())
       throw InputError(m_spec.sourceFile, 0, fmt::format("coupled point {}", m_points[p].name),
                        "the host gave a position or velocity that is not a finite number");
   }
@@ -102,7 +133,7 @@ void CoupledRun::setHostMotion(std::span<const double> x, std::span<const double
 
 void CoupledRun::initialize(std::span<const double> x, std::span<const double> xd) {
   if (m_simulation) throw Error("CoupledRun::initialize: the run is initialised already");
-  setHostMotion(x, xd, 0.0);
+  setHostMotion(x, xd, 0.0, 0.0);
   model::ModelSpec spec = m_spec;
   for (std::size_t k = 0; k < m_ends.size(); ++k) {
     const auto [line, end] = m_ends[k];
@@ -110,6 +141,9 @@ void CoupledRun::initialize(std::span<const double> x, std::span<const double> x
                                  : spec.lines[static_cast<std::size_t>(line)].endB;
     e.position = m_motion->start[static_cast<std::size_t>(m_endPoint[k])];
   }
+  for (std::size_t p = 0; p < m_points.size(); ++p)
+    if (m_vesselOfPoint[p] >= 0)
+      spec.vessels[static_cast<std::size_t>(m_vesselOfPoint[p])].position = m_motion->start[p];
   auto simulation = std::make_unique<Simulation>(std::move(spec));
   const solver::StaticResult statics = simulation->solveStatics();
   if (!statics.converged)
@@ -134,6 +168,21 @@ void CoupledRun::initialize(std::span<const double> x, std::span<const double> x
                       model::MotionValue v;
                       v.displacement = motion->at(point, t) - base;
                       v.velocity = motion->velocity[static_cast<std::size_t>(point)];
+                      v.acceleration = motion->acceleration[static_cast<std::size_t>(point)];
+                      return v;
+                    }});
+  }
+  // A pinned vessel's reference point: its translations follow the host, its rotations are solved.
+  for (std::size_t p = 0; p < m_points.size(); ++p) {
+    if (m_vesselOfPoint[p] < 0) continue;
+    const int point = static_cast<int>(p);
+    const Vec3 base = m_motion->start[p];
+    std::shared_ptr<const HostMotion> motion = m_motion;
+    held.push_back({model.vesselNode(m_vesselOfPoint[p]), base, [motion, point, base](double t) {
+                      model::MotionValue v;
+                      v.displacement = motion->at(point, t) - base;
+                      v.velocity = motion->velocity[static_cast<std::size_t>(point)];
+                      v.acceleration = motion->acceleration[static_cast<std::size_t>(point)];
                       return v;
                     }});
   }
@@ -149,7 +198,7 @@ void CoupledRun::step(std::span<const double> x, std::span<const double> xd, dou
   if (!(dt > 0.0) || !std::isfinite(dt))
     throw InputError(m_spec.sourceFile, 0, "dt", fmt::format("expected a time step > 0, got {}", dt));
   model::State& state = m_simulation->state();
-  setHostMotion(x, xd, state.time);
+  setHostMotion(x, xd, state.time, dt);
   if (!m_dynamics->advance(state, state.time + dt)) throw ConvergenceError(m_dynamics->result().message);
   refreshResults(true);
 }
@@ -176,6 +225,28 @@ void CoupledRun::refreshResults(bool dynamic) {
     // The force the line exerts on its support (LineSnapshot::endForceA/B): on the host.
     const Vec3& onHost = end == 0 ? s.endForceA : s.endForceB;
     for (int i = 0; i < 3; ++i) m_forces[3 * static_cast<std::size_t>(m_endPoint[k]) + i] += onHost[i];
+  }
+  if (std::all_of(m_vesselOfPoint.begin(), m_vesselOfPoint.end(), [](int v) { return v < 0; })) return;
+  // A pinned vessel: the out-of-balance force at its held translations (body loads, its lines' links, its
+  // inertia M a) is its support's reaction; the vessel pushes on the host with its opposite (MoorDyn's
+  // Body::getFnet of a CoupledPinned body: F6net - M a, translations).
+  const model::State& state = m_simulation->state();
+  solver::AssemblyRequest request;
+  request.wantMatrix = false;
+  request.dynamic = dynamic;
+  request.time = state.time;
+  VecX force;
+  m_simulation->assembler().assemble(state, request, force, nullptr);
+  if (dynamic) {
+    VecX inertia = VecX::Zero(force.size());
+    m_simulation->assembler().addMass(state, 0.0, nullptr, &state.acceleration, &inertia);
+    force += inertia;
+  }
+  const model::Model& model = m_simulation->model();
+  for (std::size_t p = 0; p < m_points.size(); ++p) {
+    if (m_vesselOfPoint[p] < 0) continue;
+    const int d = model.dofs().firstDof(model.vesselNode(m_vesselOfPoint[p]));
+    for (int i = 0; i < 3; ++i) m_forces[3 * p + static_cast<std::size_t>(i)] = -force[d + i];
   }
 }
 

@@ -8,11 +8,12 @@
 /// Contract (MoorDyn v2's, MoorDyn2.h): initialize(x, xd) puts the coupled points at x and finds the
 /// static equilibrium there (MoorDyn's initial conditions); step(x, xd, dt) advances the model from time()
 /// to time() + dt while each coupled point moves as x + xd (tau - time()) (the host's kinematics at the
-/// step start, extrapolated linearly over the step), with the model's own time steps (dynamics.time_step,
-/// cut back and regrown by the usual step control) inside the host's step; forces() then gives the force
-/// the lines exert on each point at the end of the step [N] (minus the support reactions, with the end
-/// nodes' inertia: the host's body feels the lines' pull and the end nodes' weight and inertia, as
-/// MoorDyn's). Units: SI (m, m/s, N, s).
+/// step start, extrapolated linearly over the step; their acceleration, for the held nodes' inertia, the
+/// change of xd over the host's step divided by it, as MoorDyn's for coupled bodies), with the model's own
+/// time steps (dynamics.time_step, cut back and regrown by the usual step control) inside the host's step;
+/// forces() then gives the force the lines exert on each point at the end of the step [N] (minus the support
+/// reactions, with the end nodes' inertia: the host's body feels the lines' pull and the end nodes' weight
+/// and inertia, as MoorDyn's). Units: SI (m, m/s, N, s).
 
 #include <memory>
 #include <span>
@@ -25,11 +26,14 @@
 
 namespace tangle::analysis {
 
-/// A point whose motion the host imposes: the line ends held there (line name, 0 = end A, 1 = end B).
-/// Each end must be a held end (anchored, pinned or fixed) without a motion of its own.
+/// A point whose motion the host imposes: either the line ends held there (line name, 0 = end A, 1 = end B),
+/// each a held end (anchored, pinned or fixed) without a motion of its own; or the reference point of a
+/// pinned free vessel (`vessel`, VesselSpec::pinned: the host moves its translations, its rotations are
+/// solved; MoorDyn's CoupledPinned body), with no ends.
 struct CoupledPointSpec {
   std::string name;
   std::vector<std::pair<std::string, int>> ends;
+  std::string vessel;
 };
 
 class CoupledRun {
@@ -54,7 +58,9 @@ class CoupledRun {
   void step(std::span<const double> x, std::span<const double> xd, double dt);
   /// Simulated time [s] (0 after initialize).
   double time() const;
-  /// Force the lines exert on each coupled point at the current state (x, y, z per point) [N].
+  /// Force the lines exert on each coupled point at the current state (x, y, z per point) [N]; on a pinned
+  /// vessel's point, what the vessel exerts on its support: the reaction at its held translations, with its
+  /// inertia (the body's net force less its mass times the point's acceleration, MoorDyn's Body::getFnet).
   const std::vector<double>& forces() const { return m_forces; }
   /// Results along every line at the current state (positions, tensions, end forces).
   const std::vector<solver::LineSnapshot>& lineResults() const { return m_lines; }
@@ -68,7 +74,8 @@ class CoupledRun {
  private:
   struct HostMotion;
   void refreshResults(bool dynamic);
-  void setHostMotion(std::span<const double> x, std::span<const double> xd, double t0);
+  /// The host's positions x and velocities xd at t0 [s], dt [s] the step that follows (0 at initialize).
+  void setHostMotion(std::span<const double> x, std::span<const double> xd, double t0, double dt);
 
   model::ModelSpec m_spec;
   std::vector<CoupledPointSpec> m_points;
@@ -76,6 +83,7 @@ class CoupledRun {
       m_pointOfEnd;                         ///< per coupled point, first and one-past-last index in m_ends
   std::vector<std::pair<int, int>> m_ends;  ///< (line index, end) of every coupled end
   std::vector<int> m_endPoint;              ///< coupled point of each entry of m_ends
+  std::vector<int> m_vesselOfPoint;         ///< per coupled point, the pinned vessel it moves (-1: line ends)
   std::shared_ptr<HostMotion> m_motion;
   std::unique_ptr<Simulation> m_simulation;
   std::unique_ptr<time::DynamicAnalysis> m_dynamics;

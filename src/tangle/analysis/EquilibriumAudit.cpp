@@ -194,7 +194,7 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
     request.time = simulation.state().time;
     request.wantMatrix = false;
     for (const auto& r : vessels->loadReadings(simulation.state(), request)) {
-      if (!r.free) continue;
+      if (!r.free || r.pinned) continue;  // held in translation: the balance is its support's reaction
       solver::ForceBalance b;
       b.name = r.name;
       // Hull contact (vessel::HullContact, the only contact that loads a vessel node), with the sign of an

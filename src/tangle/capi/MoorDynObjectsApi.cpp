@@ -259,10 +259,11 @@ int MoorDyn_GetRodType(MoorDynRod rod, int* t) {
                        [&](capi::MoorDynSystem& s, int r) { capi::output(t, "t") = s.rodType(r); });
 }
 
-int MoorDyn_GetRodForce(MoorDynRod rod, double /*f*/[6]) {
-  return capi::withRod("MoorDyn_GetRodForce", rod, [&](capi::MoorDynSystem&, int) {
-    capi::throwNotImplemented(
-        "tangle does not export a rod's net force (its line's end forces are in results.h5)");
+int MoorDyn_GetRodForce(MoorDynRod rod, double f[6]) {
+  return capi::withRod("MoorDyn_GetRodForce", rod, [&](capi::MoorDynSystem& s, int r) {
+    capi::output(f, "f");
+    const tangle::Vec6 force = s.rodForce(r);
+    for (int k = 0; k < 6; ++k) f[k] = force[k];
   });
 }
 
@@ -355,10 +356,11 @@ int MoorDyn_GetBodyAngVel(MoorDynBody b, double rd[3]) {
   return bodyPart<true, 3>("MoorDyn_GetBodyAngVel", b, rd);
 }
 
-int MoorDyn_GetBodyForce(MoorDynBody b, double /*f*/[6]) {
-  return capi::withBody("MoorDyn_GetBodyForce", b, [&](capi::MoorDynSystem&, int) {
-    capi::throwNotImplemented(
-        "tangle does not export a body's net force (its vessel's loads are in results.h5)");
+int MoorDyn_GetBodyForce(MoorDynBody b, double f[6]) {
+  return capi::withBody("MoorDyn_GetBodyForce", b, [&](capi::MoorDynSystem& s, int i) {
+    capi::output(f, "f");
+    const tangle::Vec6 force = s.bodyForce(i);
+    for (int k = 0; k < 6; ++k) f[k] = force[k];
   });
 }
 

@@ -36,9 +36,7 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     throw Error(fmt::format("{}: the conversion maps {} of {} lines and {} of {} points (a bug in tangle)",
                             m_path, c.lines.size(), m_coupling.deck.lines.size(), c.points.size(),
                             m_coupling.deck.points.size()));
-  // MoorDyn couples a body's 6 DOFs ahead of the points': a Coupled body moves the points on it rigidly
-  // (their line ends become coupled points of the run); a CoupledPinned one (its rotation free) is not
-  // supported.
+  // MoorDyn couples the bodies' DOFs ahead of the rods', and those ahead of the points' (MoorDyn2.cpp).
   m_runPoints = m_coupling.points;
   m_deckCoupledPoints = static_cast<int>(m_runPoints.size());
   m_coupledIndex.assign(c.points.size(), -1);
@@ -47,32 +45,40 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     for (std::size_t p = 0; p < c.points.size(); ++p)
       if (c.points[p].kind == io::MoorDynPointKind::Coupled) m_coupledIndex[p] = k++;
   }
+  const auto addRunPoint = [&](std::string name, std::vector<std::pair<std::string, int>> ends) {
+    if (ends.empty()) return -1;
+    m_runPoints.push_back({std::move(name), std::move(ends), {}});
+    return static_cast<int>(m_runPoints.size()) - 1;
+  };
   for (std::size_t bi = 0; bi < m_coupling.deck.bodies.size(); ++bi) {
     const io::MoorDynBody& b = m_coupling.deck.bodies[bi];
-    if (b.kind == io::MoorDynBodyKind::CoupledPinned)
-      throw Error(
-          fmt::format("{}:{}: body {} is {}: a body whose host gives its translation and leaves its rotation "
-                      "free is not supported by tangle's MoorDyn API (make it Coupled, Free or Fixed)",
-                      m_path, b.sourceLine, b.id, b.kindWord));
-    if (b.kind != io::MoorDynBodyKind::Coupled) continue;
+    if (b.kind != io::MoorDynBodyKind::Coupled && b.kind != io::MoorDynBodyKind::CoupledPinned) continue;
+    HostObject h;
+    h.body = static_cast<int>(bi);
+    if (b.kind == io::MoorDynBodyKind::CoupledPinned) {
+      // A pinned free vessel of the converted model (VesselSpec::pinned): the run moves its reference point.
+      h.pinned = true;
+      h.position.head<3>() = b.position;
+      m_runPoints.push_back({fmt::format("body{}", b.id), {}, c.bodies[bi].vessel});
+      h.runPoint = static_cast<int>(m_runPoints.size()) - 1;
+      m_hostObjects.push_back(std::move(h));
+      continue;
+    }
     for (const io::MoorDynRod& r : m_coupling.deck.rods)
       if (r.body == b.id)
         throw Error(
             fmt::format("{}:{}: rod {} is on coupled body {}: tangle's MoorDyn API moves the points of "
                         "a coupled body, not its rods (attach the lines to points on the body)",
                         m_path, r.sourceLine, r.id, b.id));
-    CoupledBody cb;
-    cb.body = static_cast<int>(bi);
-    cb.position << b.position, b.rotation * (std::numbers::pi / 180.0);
+    h.position << b.position, b.rotation * (std::numbers::pi / 180.0);
     for (std::size_t p = 0; p < m_coupling.deck.points.size(); ++p) {
       const io::MoorDynPoint& point = m_coupling.deck.points[p];
       if (point.kind != io::MoorDynPointKind::Body || point.body != b.id) continue;
-      cb.points.push_back(static_cast<int>(p));
-      cb.offsets.push_back(point.position);
-      if (!c.points[p].ends.empty()) {
-        m_coupledIndex[p] = static_cast<int>(m_runPoints.size());
-        m_runPoints.push_back({fmt::format("body{}point{}", b.id, point.id), c.points[p].ends});
-      }
+      h.points.push_back(static_cast<int>(p));
+      h.offsets.push_back(point.position);
+      const int run = addRunPoint(fmt::format("body{}point{}", b.id, point.id), c.points[p].ends);
+      h.runPoints.push_back(run);
+      if (run >= 0) m_coupledIndex[p] = run;
     }
     if (b.mass != 0.0 || b.volume != 0.0)
       log(MOORDYN_WRN_LEVEL,
@@ -81,15 +87,38 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
               "on its points; its own weight, buoyancy, inertia and drag are the host's (MoorDyn adds "
               "them)\n",
               m_path, b.sourceLine, b.id));
-    m_coupledBodies.push_back(std::move(cb));
+    m_hostObjects.push_back(std::move(h));
   }
-  // MoorDyn couples a rod's 6 (or 3, pinned) DOFs ahead of the points': tangle holds coupled rods.
-  for (const io::MoorDynRod& r : m_coupling.deck.rods)
-    if (r.kind == io::MoorDynRodKind::Coupled || r.kind == io::MoorDynRodKind::CoupledPinned)
-      throw Error(
-          fmt::format("{}:{}: rod {} is {}: rods coupled to a host are not supported by tangle's MoorDyn "
-                      "API (make it Fixed, or couple the points that hold it)",
-                      m_path, r.sourceLine, r.id, r.kindWord));
+  for (std::size_t ri = 0; ri < m_coupling.deck.rods.size(); ++ri) {
+    const io::MoorDynRod& r = m_coupling.deck.rods[ri];
+    const io::MoorDynRodMap& map = c.rods[ri];
+    if (r.kind != io::MoorDynRodKind::Coupled && r.kind != io::MoorDynRodKind::CoupledPinned) continue;
+    HostObject h;
+    h.rod = static_cast<int>(ri);
+    h.position.head<3>() = r.endA;
+    if (r.kind == io::MoorDynRodKind::CoupledPinned) {
+      // The rod's line pinned at its end A (and the deck lines there): the host moves that point.
+      h.pinned = true;
+      h.counted = 3;
+      h.runPoint = addRunPoint(fmt::format("rod{}a", r.id), map.endLines[0]);
+    } else {
+      // A Coupled rod holds its lines at its ends, which the host's 6 DOFs move as a rigid body: its
+      // reference point is end A, its axes the global axes at the deck's attitude (MoorDyn's Rod: the host's
+      // angles turn the deck's axis q0).
+      const bool zeroLength = r.length() == 0.0;
+      for (int end = 0; end < (zeroLength ? 1 : 2); ++end) {
+        h.offsets.push_back(end == 0 ? Vec3::Zero() : Vec3(r.endB - r.endA));
+        h.runPoints.push_back(addRunPoint(fmt::format("rod{}{}", r.id, end == 0 ? 'a' : 'b'),
+                                          map.endLines[static_cast<std::size_t>(end)]));
+      }
+      log(MOORDYN_WRN_LEVEL,
+          fmt::format("tangle (MoorDyn API): {}:{}: coupled rod {}: the forces returned are those of the "
+                      "lines at its ends; its own weight, buoyancy, inertia and drag are the host's (MoorDyn "
+                      "adds them), and a line clamped to it keeps its initial direction\n",
+                      m_path, r.sourceLine, r.id));
+    }
+    m_hostObjects.push_back(std::move(h));
+  }
   // What the conversion changed or approximated, and the reader's plausibility warnings.
   for (const std::string& warning : m_coupling.spec.warnings)
     log(MOORDYN_WRN_LEVEL, "tangle (MoorDyn API): " + warning + "\n");
@@ -119,7 +148,7 @@ void MoorDynSystem::log(int level, std::string_view text) {
 
 void MoorDynSystem::initialize(const double* x, const double* xd) {
   if (initialized()) throw InvalidValue("MoorDyn_Init was already called on this system");
-  const int n = coupledDofCount();
+  const int n = hostDofCount();
   checkFinite(x, n, "x");
   std::vector<double> hostVelocity(static_cast<std::size_t>(n), 0.0);
   if (xd != nullptr) {
@@ -127,7 +156,7 @@ void MoorDynSystem::initialize(const double* x, const double* xd) {
     std::copy(xd, xd + n, hostVelocity.begin());
   }
   std::vector<double> position, velocity;
-  hostToRun(x, hostVelocity.data(), position, velocity, 0.0);
+  hostToRun(x, hostVelocity.data(), position, velocity, 0.0, 0.0);
   m_run->initialize(position, velocity);
   m_tangleLines.clear();
   m_elementTension.clear();
@@ -135,7 +164,7 @@ void MoorDynSystem::initialize(const double* x, const double* xd) {
 
 void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t, double dt) {
   requireInitialized();
-  const int n = coupledDofCount();
+  const int n = hostDofCount();
   if (n > 0 && f == nullptr) throw InvalidValue(fmt::format("f is NULL ({} coupled DOFs)", n));
   if (std::isnan(dt)) throw InvalidValue("dt is NaN");
   if (dt > 0.0) {
@@ -143,30 +172,36 @@ void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t
     checkFinite(x, n, "x");
     checkFinite(xd, n, "xd");
     std::vector<double> position, velocity;
-    hostToRun(x, xd, position, velocity, m_run->time());
+    hostToRun(x, xd, position, velocity, m_run->time(), dt);
     m_run->step(position, velocity, dt);
     m_elementTension.clear();
   }
-  // The bodies' forces and moments about their reference points (the sum over the line ends at their points),
-  // then the deck's coupled points' forces.
+  // The objects' forces (and a rigid one's moment about its reference point, the sum over the line ends at
+  // its points), then the deck's coupled points' forces.
   const std::vector<double>& forces = m_run->forces();
-  for (std::size_t k = 0; k < m_coupledBodies.size(); ++k) {
-    const CoupledBody& cb = m_coupledBodies[k];
-    Vec3 force = Vec3::Zero(), moment = Vec3::Zero();
-    for (std::size_t j = 0; j < cb.points.size(); ++j) {
-      const int run = m_coupledIndex[static_cast<std::size_t>(cb.points[j])];
-      if (run < 0) continue;
-      const Vec3 fp(forces[3 * run], forces[3 * run + 1], forces[3 * run + 2]);
-      force += fp;
-      moment += (m_run->pointPosition(run) - bodyReference(cb, m_run->time())).cross(fp);
+  const auto runForce = [&](int run) {
+    return Vec3(forces[3 * static_cast<std::size_t>(run)], forces[3 * static_cast<std::size_t>(run) + 1],
+                forces[3 * static_cast<std::size_t>(run) + 2]);
+  };
+  std::size_t ix = 0;
+  for (HostObject& h : m_hostObjects) {
+    h.force.setZero();
+    if (h.pinned) {
+      if (h.runPoint >= 0) h.force.head<3>() = runForce(h.runPoint);
+    } else {
+      for (std::size_t j = 0; j < h.runPoints.size(); ++j) {
+        if (h.runPoints[j] < 0) continue;
+        const Vec3 fp = runForce(h.runPoints[j]);
+        h.force.head<3>() += fp;
+        h.force.tail<3>() +=
+            (m_run->pointPosition(h.runPoints[j]) - hostReference(h, m_run->time())).cross(fp);
+      }
     }
-    for (int i = 0; i < 3; ++i) {
-      f[6 * k + i] = force[i];
-      f[6 * k + 3 + i] = moment[i];
-    }
+    const int written = h.pinned ? 3 : 6;
+    for (int i = 0; i < written; ++i) f[ix + static_cast<std::size_t>(i)] = h.force[i];
+    ix += static_cast<std::size_t>(written);
   }
-  if (n > 0)
-    std::copy(forces.begin(), forces.begin() + 3 * m_deckCoupledPoints, f + 6 * m_coupledBodies.size());
+  if (m_deckCoupledPoints > 0) std::copy(forces.begin(), forces.begin() + 3 * m_deckCoupledPoints, f + ix);
   if (t != nullptr) *t = m_run->time();
 }
 
@@ -179,8 +214,20 @@ Mat3 eulerRotation(const Vec3& angles) {
 }
 }  // namespace
 
-void MoorDynSystem::coupledBodyPoint(const CoupledBody& c, const Vec3& offset, double t, Vec3& position,
-                                     Vec3& velocity) const {
+int MoorDynSystem::coupledDofCount() const {
+  int n = 3 * m_deckCoupledPoints;
+  for (const HostObject& h : m_hostObjects) n += h.counted;
+  return n;
+}
+
+int MoorDynSystem::hostDofCount() const {
+  int n = 3 * m_deckCoupledPoints;
+  for (const HostObject& h : m_hostObjects) n += h.pinned ? 3 : 6;
+  return n;
+}
+
+void MoorDynSystem::hostObjectPoint(const HostObject& c, const Vec3& offset, double t, Vec3& position,
+                                    Vec3& velocity) const {
   // The host's 6-vector moves linearly over its step, its angles too (as MoorDyn's Body::updateFairlead); the
   // angle rates are taken as the angular velocity (as MoorDyn's setDependentStates).
   const Vec6 s = c.position + c.velocity * (t - c.time0);
@@ -189,8 +236,8 @@ void MoorDynSystem::coupledBodyPoint(const CoupledBody& c, const Vec3& offset, d
   velocity = c.velocity.head<3>() + c.velocity.tail<3>().cross(arm);
 }
 
-const MoorDynSystem::CoupledBody* MoorDynSystem::coupledBodyOf(int p, Vec3* offset) const {
-  for (const CoupledBody& c : m_coupledBodies)
+const MoorDynSystem::HostObject* MoorDynSystem::hostObjectOf(int p, Vec3* offset) const {
+  for (const HostObject& c : m_hostObjects)
     for (std::size_t j = 0; j < c.points.size(); ++j)
       if (c.points[j] == p) {
         if (offset) *offset = c.offsets[j];
@@ -200,31 +247,46 @@ const MoorDynSystem::CoupledBody* MoorDynSystem::coupledBodyOf(int p, Vec3* offs
 }
 
 void MoorDynSystem::hostToRun(const double* x, const double* xd, std::vector<double>& position,
-                              std::vector<double>& velocity, double time0) {
+                              std::vector<double>& velocity, double time0, double dt) {
   position.assign(3 * m_runPoints.size(), 0.0);
   velocity.assign(3 * m_runPoints.size(), 0.0);
-  const std::size_t bodyDofs = 6 * m_coupledBodies.size();
-  for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(m_deckCoupledPoints); ++i) {
-    position[i] = x[bodyDofs + i];
-    velocity[i] = xd[bodyDofs + i];
-  }
-  for (std::size_t k = 0; k < m_coupledBodies.size(); ++k) {
-    CoupledBody& c = m_coupledBodies[k];
-    for (int i = 0; i < 6; ++i) {
-      c.position[i] = x[6 * k + static_cast<std::size_t>(i)];
-      c.velocity[i] = xd[6 * k + static_cast<std::size_t>(i)];
+  const auto put = [&](int run, const Vec3& p, const Vec3& v) {
+    for (int i = 0; i < 3; ++i) {
+      position[3 * static_cast<std::size_t>(run) + static_cast<std::size_t>(i)] = p[i];
+      velocity[3 * static_cast<std::size_t>(run) + static_cast<std::size_t>(i)] = v[i];
     }
+  };
+  std::size_t ix = 0;
+  for (HostObject& c : m_hostObjects) {
+    const int read = c.pinned ? 3 : 6;
+    for (int i = 0; i < read; ++i) {
+      c.position[i] = x[ix + static_cast<std::size_t>(i)];
+      c.velocity[i] = xd[ix + static_cast<std::size_t>(i)];
+    }
+    ix += static_cast<std::size_t>(read);
     c.time0 = time0;
-    for (std::size_t j = 0; j < c.points.size(); ++j) {
-      const int run = m_coupledIndex[static_cast<std::size_t>(c.points[j])];
-      if (run < 0) continue;
-      Vec3 p, v;
-      coupledBodyPoint(c, c.offsets[j], time0, p, v);
-      for (int i = 0; i < 3; ++i) {
-        position[3 * static_cast<std::size_t>(run) + static_cast<std::size_t>(i)] = p[i];
-        velocity[3 * static_cast<std::size_t>(run) + static_cast<std::size_t>(i)] = v[i];
-      }
+    if (c.pinned) {
+      if (c.runPoint >= 0) put(c.runPoint, c.position.head<3>(), c.velocity.head<3>());
+      continue;
     }
+    for (std::size_t j = 0; j < c.offsets.size(); ++j) {
+      if (c.runPoints[j] < 0) continue;
+      Vec3 p, v;
+      hostObjectPoint(c, c.offsets[j], time0, p, v);
+      // Over a step, the chord to where the pose puts the point at its end: the run's points move linearly,
+      // and so end each step on the rigid body (no jump into the next step, as a point velocity would
+      // leave, dt^2 omega^2 |arm| / 2).
+      if (dt > 0.0) {
+        Vec3 p1, v1;
+        hostObjectPoint(c, c.offsets[j], time0 + dt, p1, v1);
+        v = (p1 - p) / dt;
+      }
+      put(c.runPoints[j], p, v);
+    }
+  }
+  for (std::size_t i = 0; i < 3 * static_cast<std::size_t>(m_deckCoupledPoints); ++i) {
+    position[i] = x[ix + i];
+    velocity[i] = xd[ix + i];
   }
 }
 
@@ -283,9 +345,27 @@ int MoorDynSystem::bodyType(int b) const {
   return kBodyFixed;
 }
 
+Vec6 MoorDynSystem::bodyForce(int b) const {
+  requireInitialized();
+  for (const HostObject& c : m_hostObjects)
+    if (c.body == b) return c.force;
+  throw NotImplemented(
+      "a free or fixed body's net force is not exported (a free body's vessel loads are in results.h5); a "
+      "coupled body's is what MoorDyn_Step returned");
+}
+
+Vec6 MoorDynSystem::rodForce(int r) const {
+  requireInitialized();
+  for (const HostObject& c : m_hostObjects)
+    if (c.rod == r) return c.force;
+  throw NotImplemented(
+      "a rod's net force is exported for coupled rods only (what MoorDyn_Step returned); a moving rod's "
+      "line end forces are in results.h5");
+}
+
 void MoorDynSystem::bodyState(int b, Vec6& position, Vec6& velocity) {
-  for (const CoupledBody& c : m_coupledBodies)
-    if (c.body == b) {
+  for (const HostObject& c : m_hostObjects)
+    if (c.body == b && !c.pinned) {
       // The host's motion (its angles as given: MoorDyn's XYZ Euler angles).
       const double t = initialized() ? m_run->time() : c.time0;
       position = c.position + c.velocity * (t - c.time0);
@@ -503,8 +583,8 @@ Vec3 MoorDynSystem::pointPosition(int p) {
   const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
   if (coupled >= 0) return m_run->pointPosition(coupled);
   Vec3 offset, position, velocity;
-  if (const CoupledBody* c = coupledBodyOf(p, &offset)) {  // a point on a coupled body that no line holds
-    coupledBodyPoint(*c, offset, m_run->time(), position, velocity);
+  if (const HostObject* c = hostObjectOf(p, &offset)) {  // a point on a coupled body that no line holds
+    hostObjectPoint(*c, offset, m_run->time(), position, velocity);
     return position;
   }
   return mappedPosition(map);
@@ -527,8 +607,8 @@ Vec3 MoorDynSystem::pointVelocity(int p) {
   const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
   if (coupled >= 0) return m_run->pointVelocity(coupled);
   Vec3 offset, position, velocity;
-  if (const CoupledBody* c = coupledBodyOf(p, &offset)) {
-    coupledBodyPoint(*c, offset, m_run->time(), position, velocity);
+  if (const HostObject* c = hostObjectOf(p, &offset)) {
+    hostObjectPoint(*c, offset, m_run->time(), position, velocity);
     return velocity;
   }
   return mappedVelocity(map);
@@ -563,8 +643,15 @@ Vec3 MoorDynSystem::rodNodePosition(int r, unsigned int i) {
     throw InvalidValue(fmt::format("rod {} has nodes 0 to {}, not {}", rod.id, rod.segments, i));
   const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
   if (rod.segments == 0) return mappedPosition(map.point);
-  if (map.tangleLine.empty() || !initialized())
-    return rod.endA + (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments);
+  const Vec3 along = (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments);
+  if (initialized())
+    for (const HostObject& c : m_hostObjects)
+      if (c.rod == r && !c.pinned) {  // a Coupled rod, moved rigidly by the host
+        Vec3 position, velocity;
+        hostObjectPoint(c, along, m_run->time(), position, velocity);
+        return position;
+      }
+  if (map.tangleLine.empty() || !initialized()) return rod.endA + along;
   const solver::LineSnapshot& s =
       m_run->lineResults()[static_cast<std::size_t>(tangleLine(map.tangleLine).snapshot)];
   return s.position.at(i);
@@ -576,6 +663,14 @@ Vec3 MoorDynSystem::rodNodeVelocity(int r, unsigned int i) {
     throw InvalidValue(fmt::format("rod {} has nodes 0 to {}, not {}", rod.id, rod.segments, i));
   const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
   if (rod.segments == 0) return mappedVelocity(map.point);
+  if (initialized())
+    for (const HostObject& c : m_hostObjects)
+      if (c.rod == r && !c.pinned) {
+        Vec3 position, velocity;
+        hostObjectPoint(c, (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments), m_run->time(),
+                        position, velocity);
+        return velocity;
+      }
   if (map.tangleLine.empty() || !initialized()) return Vec3::Zero();
   return velocity(tangleNode(map.tangleLine, static_cast<int>(i)));
 }

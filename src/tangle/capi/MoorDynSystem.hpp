@@ -104,10 +104,13 @@ class MoorDynSystem {
 
   /// @name The system
   /// @{
-  /// Number of coupled DOFs: 6 per coupled body (ahead, as MoorDyn orders them), then 3 per coupled point.
-  int coupledDofCount() const {
-    return 6 * static_cast<int>(m_coupledBodies.size()) + 3 * m_deckCoupledPoints;
-  }
+  /// Number of coupled DOFs as MoorDyn_NCoupledDOF counts them: 6 per coupled body, 6 per coupled and 3 per
+  /// coupled-pinned rod, 3 per coupled point. (MoorDyn v2.7.1 counts 6 for a CoupledPinned body but reads
+  /// and writes its 3 translations only: the host's arrays keep the count, the objects after it start 3
+  /// later.)
+  int coupledDofCount() const;
+  /// The DOFs read from and written to the host's arrays (a CoupledPinned body's 3).
+  int hostDofCount() const;
   bool initialized() const { return m_run->initialized(); }
   /// CoupledRun::initialize with x [m] and xd [m/s] (coupledDofCount() values each; xd may be null: zero).
   /// @throws InvalidValue when called twice, for a null or non-finite x; ConvergenceError from the statics
@@ -144,6 +147,10 @@ class MoorDynSystem {
   /// angular velocity [rad/s], global axes. A free body's from its tangle vessel; a held one's where the deck
   /// puts it, at rest; before MoorDyn_Init the deck's.
   void bodyState(int b, Vec6& position, Vec6& velocity);
+  /// What MoorDyn_Step gave the host for a coupled body or rod at the last step: force [N] and moment [N m]
+  /// about its reference point (a pinned one's moment 0). @throws NotImplemented for others
+  Vec6 bodyForce(int b) const;
+  Vec6 rodForce(int r) const;
   /// @}
 
   /// @name Deck lines (index l = deck id - 1; node i from 0 at the deck line's end A to its segment count)
@@ -249,31 +256,43 @@ class MoorDynSystem {
   std::unique_ptr<analysis::CoupledRun> m_run;
   std::vector<double> m_elementTension;  ///< every element's tension at the current state [N]; empty: not yet
   std::vector<int> m_coupledIndex;  ///< per deck point, its index among the run's coupled points (-1: none)
-  /// A body the host moves (MoorDyn's Coupled body): its 6 DOFs move the points on it rigidly; the line ends
-  /// at them are coupled points of the run (after the deck's own coupled points).
-  struct CoupledBody {
-    int body = 0;                  ///< deck index
-    std::vector<int> points;       ///< deck indices of the points on it
-    std::vector<Vec3> offsets;     ///< their positions in body axes from its reference point [m]
-    Vec6 position = Vec6::Zero();  ///< the host's: reference point [m] and XYZ Euler angles [rad] at time0
+  /// A body or rod the host moves, in MoorDyn's order of the coupled DOFs (coupled bodies, coupled rods, then
+  /// the coupled points). Rigid (a Coupled body or rod, 6 DOFs: reference point [m] and XYZ Euler angles
+  /// [rad]): its 6 DOFs move the points on it rigidly, and the line ends at them are coupled points of the
+  /// run. Pinned (3 DOFs, translations): a CoupledPinned body is a pinned free vessel of the run, a
+  /// CoupledPinned rod's end A a coupled point holding the rod's line (its rotations solved by tangle).
+  struct HostObject {
+    int body = -1;                 ///< deck index of the body, or -1
+    int rod = -1;                  ///< deck index of the rod, or -1
+    bool pinned = false;           ///< 3 DOFs (translations), not 6
+    int counted = 6;               ///< DOFs MoorDyn_NCoupledDOF counts for it (v2.7.1: 6 for every body)
+    std::vector<int> points;       ///< rigid: deck indices of the deck points on it (a body's)
+    std::vector<int> runPoints;    ///< rigid: per offset, the run's coupled point (-1: no line end there)
+    std::vector<Vec3> offsets;     ///< rigid: positions in its axes from its reference point [m]
+    int runPoint = -1;             ///< pinned: the run's coupled point (-1: nothing to move)
+    Vec6 position = Vec6::Zero();  ///< the host's at time0 (pinned: the first three)
     Vec6 velocity =
-        Vec6::Zero();    ///< and their rates [m/s, rad/s] (the angles' taken as the angular velocity)
-    double time0 = 0.0;  ///< [s]
+        Vec6::Zero();           ///< and their rates [m/s, rad/s] (the angles' taken as the angular velocity)
+    double time0 = 0.0;         ///< [s]
+    Vec6 force = Vec6::Zero();  ///< what the host got at the last step: force [N], moment [N m] (pinned: 0)
   };
-  std::vector<CoupledBody> m_coupledBodies;
-  int m_deckCoupledPoints = 0;                          ///< the deck's Coupled points
-  std::vector<analysis::CoupledPointSpec> m_runPoints;  ///< the run's coupled points: the deck's, the bodies'
-  /// The host's DOFs (bodies' 6, then points' 3) as the run's point positions and velocities.
+  std::vector<HostObject> m_hostObjects;
+  int m_deckCoupledPoints = 0;  ///< the deck's Coupled points
+  std::vector<analysis::CoupledPointSpec>
+      m_runPoints;  ///< the run's coupled points: the deck's, the objects'
+  /// The host's DOFs (objects', then points' 3) as the run's point positions and velocities at time0 [s]; a
+  /// rigid object's points move over the host's step dt [s] along the chord to where its pose puts them at
+  /// its end (dt = 0, at initialize: their velocity).
   void hostToRun(const double* x, const double* xd, std::vector<double>& position,
-                 std::vector<double>& velocity, double time0);
-  /// The position [m] and velocity [m/s] of a point at body offset `offset` of coupled body `c` at time t
+                 std::vector<double>& velocity, double time0, double dt);
+  /// The position [m] and velocity [m/s] of a point at offset `offset` of rigid host object `c` at time t
   /// [s].
-  void coupledBodyPoint(const CoupledBody& c, const Vec3& offset, double t, Vec3& position,
-                        Vec3& velocity) const;
-  /// The coupled body whose points include deck point p (its offset into *offset), or null.
-  const CoupledBody* coupledBodyOf(int p, Vec3* offset) const;
-  /// A coupled body's reference point at time t [s] (the host's motion, linear over its step) [m].
-  static Vec3 bodyReference(const CoupledBody& c, double t) {
+  void hostObjectPoint(const HostObject& c, const Vec3& offset, double t, Vec3& position,
+                       Vec3& velocity) const;
+  /// The rigid host object whose points include deck point p (its offset into *offset), or null.
+  const HostObject* hostObjectOf(int p, Vec3* offset) const;
+  /// A host object's reference point at time t [s] (the host's motion, linear over its step) [m].
+  static Vec3 hostReference(const HostObject& c, double t) {
     return c.position.head<3>() + c.velocity.head<3>() * (t - c.time0);
   }
   std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)

@@ -1954,6 +1954,7 @@ void readVessels(const Value& v, ModelSpec& spec) {
                        "raos",
                        "motion",
                        "held_in_statics",
+                       "pinned",
                        "hull",
                        "displaced_volume",
                        "centre_of_buoyancy"});
@@ -1969,6 +1970,10 @@ void readVessels(const Value& v, ModelSpec& spec) {
     const bool free = vs.mode == model::VesselMode::Free;
     vs.heldInStatics = m.boolean("held_in_statics", false);
     if (vs.heldInStatics && !free) m.get("held_in_statics", "").fail("held_in_statics applies only to free vessels");
+    vs.pinned = m.boolean("pinned", false);
+    if (vs.pinned && !free) m.get("pinned", "").fail("pinned applies only to free vessels (their rotations are solved)");
+    if (vs.pinned && vs.heldInStatics)
+      m.get("pinned", "").fail("a pinned vessel is held in translation always: leave out held_in_statics");
     vs.mass = free ? m.number("mass", positiveUpTo(kMaxMass)) : m.number("mass", 0.0, nonNegativeUpTo(kMaxMass));
     if (const std::optional<Value> inertia = m.find("inertia")) {
       vs.inertia = inertia->vec3();
@@ -1993,7 +1998,8 @@ void readVessels(const Value& v, ModelSpec& spec) {
     // A free vessel floats on its waterplane: without heave stiffness nothing holds it up in statics
     // (the solve would end with a residual that does not name the cause). A submerged body hangs on its
     // lines.
-    if (free && !vs.heldInStatics && vs.hydrostaticStiffness[2] <= 0.0 && std::isnan(vs.displacedVolume))
+    if (free && !vs.heldInStatics && !vs.pinned && vs.hydrostaticStiffness[2] <= 0.0 &&
+        std::isnan(vs.displacedVolume))
       item.fail(fmt::format(
           "free vessel '{}' has no restoring force in heave: give hydrostatic_stiffness "
           "[0, 0, heave, roll, pitch, 0] (heave = rho g waterplane area), or held_in_statics: true, "

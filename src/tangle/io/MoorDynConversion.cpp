@@ -462,6 +462,8 @@ constexpr double kMaxFrictionVelocity = 10.0;
 /// holds what is fixed to it where the deck puts it.
 struct BodyFrame {
   bool free = false;
+  bool pinned =
+      false;  ///< a CoupledPinned body: a free vessel held at its reference point (VesselSpec::pinned)
   Mat3 rotation = Mat3::Identity();  ///< body axes to global at t = 0 (MoorDyn: Rx(r0) Ry(p0) Rz(y0))
   Vec3 origin = Vec3::Zero();        ///< the deck's reference point X0, Y0, Z0 [m]
   Vec3 reference = Vec3::Zero();     ///< the vessel's reference point: the centre of gravity [m]
@@ -525,19 +527,23 @@ std::vector<BodyFrame> bodyFrames(const MoorDynDeck& deck, double density, std::
   std::vector<BodyFrame> frames;
   for (const MoorDynBody& b : deck.bodies) {
     BodyFrame f;
-    f.free = b.kind == MoorDynBodyKind::Free;
+    f.pinned = b.kind == MoorDynBodyKind::CoupledPinned;
+    f.free = b.kind == MoorDynBodyKind::Free || f.pinned;
     f.rotation = bodyRotation(b.rotation);
     f.origin = b.position;
-    if (b.kind != MoorDynBodyKind::Free)
+    if (b.kind == MoorDynBodyKind::Fixed || b.kind == MoorDynBodyKind::Coupled)
       notes.push_back(fmt::format(
           "{}:{}: body {} is {}: held where the deck puts it (a standalone run), and what is "
-          "fixed to it with "
-          "it{}",
+          "fixed to it with it{}",
           deck.file, b.sourceLine, b.id, b.kindWord,
           b.kind == MoorDynBodyKind::Fixed ? ""
-          : b.kind == MoorDynBodyKind::Coupled
-              ? "; through the C API the host's 6 DOFs move the points on it"
-              : "; its motion is not taken from a host (the C API refuses CoupledPinned bodies)"));
+                                           : "; through the C API the host's 6 DOFs move the points on it"));
+    if (f.pinned)
+      notes.push_back(
+          fmt::format("{}:{}: body {} is {}: a free vessel pinned at its reference point (held there in a "
+                      "standalone run; "
+                      "through the C API the host's 3 DOFs move it), its rotations solved",
+                      deck.file, b.sourceLine, b.id, b.kindWord));
     if (!f.free) {
       f.reference = b.position;
       frames.push_back(f);
@@ -566,6 +572,19 @@ std::vector<BodyFrame> bodyFrames(const MoorDynDeck& deck, double density, std::
       pointAdded += l.addedMass;
     }
     f.reference = mass > 0.0 ? Vec3(moment / mass) : lumps.front().at;
+    if (f.pinned) {
+      // Held at the pin, the vessel carries its mass, weight and buoyancy there: a mass or volume elsewhere
+      // would swing the body, which a vessel whose reference point is its centre of gravity cannot show.
+      for (const Lump& l : lumps)
+        if ((l.mass != 0.0 || l.volume != 0.0) &&
+            (l.at - b.position).norm() > 1e-9 * std::max(1.0, b.position.norm()))
+          throw InputError(deck.file, b.sourceLine, fmt::format("body {}", b.id),
+                           fmt::format("a CoupledPinned body with a mass or volume off its reference point "
+                                       "(at {}) is not supported by tangle: its pinned vessel carries them "
+                                       "at the pin (put what swings on a rod fixed to the body)",
+                                       vec(l.at)));
+      f.reference = b.position;
+    }
     f.mass = mass;
     f.volume = volume;
     f.centreOfBuoyancy = volume > 0.0 ? Vec3(volumeMoment / volume - f.reference) : Vec3::Zero();
@@ -654,9 +673,11 @@ RodEnds resolveRodEnds(const MoorDynDeck& input, double density, std::vector<std
                         rod.kind == MoorDynRodKind::CoupledPinned || rod.kind == MoorDynRodKind::Free);
     if (rod.kind == MoorDynRodKind::Coupled || rod.kind == MoorDynRodKind::CoupledPinned)
       notes.push_back(fmt::format(
-          "{}:{}: rod {} is {}: held where the deck puts it (a standalone run); its end A is not moved by a "
-          "host (the C API refuses coupled rods)",
-          deck.file, rod.sourceLine, rod.id, rod.kindWord));
+          "{}:{}: rod {} is {}: held where the deck puts it (a standalone run); through the C API the host "
+          "moves {}",
+          deck.file, rod.sourceLine, rod.id, rod.kindWord,
+          rod.kind == MoorDynRodKind::Coupled ? "it rigidly (6 DOFs: its ends and the lines there)"
+                                              : "its end A (3 DOFs), its rotation solved"));
   }
   const auto addPoint = [&](const MoorDynRod& rod, int end, MoorDynPointKind kind) {
     MoorDynPoint p;
@@ -1448,13 +1469,19 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
     line(fmt::format("  - name: body{}                 # body {} (deck line {}): {}", body.id, body.id,
                      body.sourceLine, body.kindWord));
     line("    mode: free");
-    line(fmt::format("    position: {}   # the centre of gravity of the body and its points",
-                     vec(f.reference)));
+    if (f.pinned)
+      line(
+          "    pinned: true               # CoupledPinned: its reference point held (moved by a host through "
+          "the C API)");
+    line(fmt::format("    position: {}   # {}", vec(f.reference),
+                     f.pinned ? "the body's reference point, the pin"
+                              : "the centre of gravity of the body and its points"));
     line(
         "    heading: 0                 # vessel axes = global axes at t = 0 (positions on it are turned by "
         "r0, p0, y0)");
     line(fmt::format("    mass: {}                   # Mass (and its points')", num(f.mass)));
-    line(fmt::format("    inertia: {}   # I about the centre of gravity (and its points')", vec(f.inertia)));
+    line(fmt::format("    inertia: {}   # I about the {} (and its points')", vec(f.inertia),
+                     f.pinned ? "pin" : "centre of gravity"));
     line(fmt::format(
         "    displaced_volume: {}       # Volume (and its points'): weight and buoyancy act on it",
         num(f.volume)));
@@ -1698,7 +1725,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       unheld += fmt::format("{}rod {}", unheld.empty() ? "" : ", ", rod.id);
   }
   for (std::size_t b = 0; b < deck.bodies.size(); ++b)
-    if (rodEnds.bodies[b].free && !rodEnds.bodies[b].held)
+    if (rodEnds.bodies[b].free && !rodEnds.bodies[b].pinned && !rodEnds.bodies[b].held)
       unheld += fmt::format("{}body {}", unheld.empty() ? "" : ", ", b + 1);
   if (!unheld.empty()) {
     line("statics:");
@@ -1751,6 +1778,13 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
     const int pointId = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)][0];
     if (rod.length() == 0.0 && pointId != 0) m.point = out.points[static_cast<std::size_t>(pointId - 1)];
     m.point.position = rod.endA;
+    for (std::size_t end = 0; end < 2; ++end) {
+      const int id = rodEnds.endPoint[static_cast<std::size_t>(rod.id - 1)][end];
+      if (id != 0) m.endLines[end] = out.points[static_cast<std::size_t>(id - 1)].ends;
+    }
+    if (!m.tangleLine.empty() &&
+        (rod.kind == MoorDynRodKind::Pinned || rod.kind == MoorDynRodKind::CoupledPinned) && rod.body == 0)
+      m.endLines[0].insert(m.endLines[0].begin(), {m.tangleLine, 0});
   }
   out.points.resize(rodEnds.deckPoints);
   out.yaml = std::move(y);

@@ -5,6 +5,7 @@
 /// run DECK`, `tangle convert` and the MoorDyn-compatible C API (capi/) use. The mapping is documented in
 /// docs/moordyn.md.
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -46,6 +47,10 @@ struct MoorDynRodMap {
   MoorDynRodKind kind = MoorDynRodKind::Fixed;
   std::string tangleLine;  ///< name of the tangle line, empty when the rod is not one
   int segments = 0;        ///< its elements (NumSegs)
+  /// The tangle line ends held at each end (0 = A, 1 = B; a zero-length rod's at A): a fixed or coupled rod's
+  /// end points' lines; at end A of a pinned or coupled-pinned rod that is a line, the rod's own end first.
+  /// What a host moves when it moves the rod (capi::MoorDynSystem).
+  std::array<std::vector<std::pair<std::string, int>>, 2> endLines;
   /// A zero-length rod: the point it is (its lines' ends there, or the node inside the tangle line that joins
   /// two of them), as a deck point's map; its position the rod's.
   MoorDynPointMap point;

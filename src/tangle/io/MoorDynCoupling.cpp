@@ -10,7 +10,7 @@ std::vector<analysis::CoupledPointSpec> coupledPoints(const MoorDynConversion& c
   std::vector<analysis::CoupledPointSpec> points;
   for (const MoorDynPointMap& p : conversion.points) {
     if (p.kind != MoorDynPointKind::Coupled) continue;
-    points.push_back({"point" + std::to_string(p.deckId), p.ends});
+    points.push_back({"point" + std::to_string(p.deckId), p.ends, {}});
   }
   return points;
 }

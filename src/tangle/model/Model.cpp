@@ -126,8 +126,9 @@ void Model::buildVessel(int v) {
   m_nodeMass.push_back(0.0);  // the vessel contributor adds its 6x6 mass matrix
   m_nodeRotationalInertia.push_back(0.0);
   m_momentScale.push_back(10.0);  // moments on a hull compared with forces over a 10 m lever
-  if (vs.mode != VesselMode::Free)
-    for (int k = 0; k < 6; ++k) m_dofs.constrain(first + k);
+  // A pinned free vessel: its translations are held (a host may move them), its rotations solved.
+  const int held = vs.mode != VesselMode::Free ? 6 : vs.pinned ? 3 : 0;
+  for (int k = 0; k < held; ++k) m_dofs.constrain(first + k);
 }
 
 namespace {

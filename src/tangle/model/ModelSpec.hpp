@@ -151,6 +151,10 @@ struct VesselSpec {
   std::array<double, 6> motionPhase{};      ///< [rad]
   double motionPeriod = 10.0;               ///< [s]
   bool heldInStatics = false;  ///< a free vessel held at its position in statics (a DP unit on station), released at t = 0
+  /// A free vessel whose reference point is held (at `position`, or where a host moves it:
+  /// analysis::CoupledRun) while its rotations are solved: a buoy on a swivel, a pendulum, MoorDyn's
+  /// CoupledPinned body.
+  bool pinned = false;
   /// A submerged body (vessels[].displaced_volume; OrcaFlex 6D buoy, MoorDyn body), free vessels only: its
   /// weight M g at the reference point (its centre of gravity) and its buoyancy rho g V at centreOfBuoyancy
   /// act on it, constant at any depth [m^3]. NaN: a floating unit, whose weight its displacement balances at

@@ -363,6 +363,7 @@ std::vector<VesselSystem::VesselLoadReading> VesselSystem::loadReadings(
     r.name = d.spec->name;
     r.node = d.node;
     r.free = d.spec->mode == model::VesselMode::Free;
+    r.pinned = r.free && d.spec->pinned;
     for (const Connection& c : m_connections)
       if (c.vessel == static_cast<int>(v)) r.endNodes.push_back(c.node);
     if (r.free) {

@@ -75,6 +75,8 @@ class VesselSystem final : public solver::LoadContributor {
     std::string name;
     int node = 0;       ///< the vessel's node
     bool free = false;  ///< solved for (VesselMode::Free); otherwise held, and its balance is a reaction
+    bool pinned =
+        false;  ///< free but its translations held (VesselSpec::pinned): its force balance is a reaction
     /// Body loads (current, wind, wave drift, hydrostatics, damping), force [N] and moment about the
     /// reference point [N m], global axes (VesselLoads::loads).
     Vec6 body = Vec6::Zero();
