@@ -740,6 +740,20 @@ TEST(MoorDynApi, PinnedBodySwingsAboutAtanOfItsAccelerationOverGravity) {
   double f[6];
   ASSERT_EQ(MoorDyn_GetBodyForce(body, f), MOORDYN_SUCCESS);
   EXPECT_EQ(f[3], 0.0);  // a pinned body returns no moment
+  // Its mass about the pin (the rod fixed to it, lumped on its 4 nodes as the deck's `mass: lumped`): the
+  // total mass and its first moment exact (the rod's centre 10 m below the pin, along its current axis);
+  // the moment of inertia within 2 % of the continuous rod's m (L^2 / 12 + d^2) + m D^2 / 16 (3 lumped
+  // elements: +1.7 %).
+  double m[6][6], q[6], qd[6];
+  ASSERT_EQ(MoorDyn_GetBodyM(body, m), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetBodyState(body, q, qd), MOORDYN_SUCCESS);
+  const double vessel = 1e-3;  // the massless body's floor (a conversion note)
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m[i][i], mass + vessel, 1e-9 * mass);
+  // m[1][3]: the y force of a unit roll acceleration, -m z_c with z_c = -10 cos(roll) about the pin.
+  EXPECT_NEAR(m[1][3], mass * 10.0 * std::cos(q[3]), 1e-6 * mass * 10.0);
+  EXPECT_NEAR(m[3][1], m[1][3], 1e-9 * std::abs(m[1][3]));
+  const double rollInertia = mass * (100.0 / 12.0 + 100.0) + mass * 4.0 / 16.0;
+  EXPECT_NEAR(m[3][3], rollInertia, 0.02 * rollInertia);
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
@@ -780,6 +794,17 @@ TEST(MoorDynApi, PinnedRodSwingsAboutAtanOfItsAccelerationOverGravity) {
   double f[6];
   ASSERT_EQ(MoorDyn_GetRodForce(rod, f), MOORDYN_SUCCESS);
   EXPECT_LT(f[2], 0.0);
+  // Its mass about end A: total and first moment exact (centre 5 m along the rod), inertia within 6 % of
+  // m L^2 / 3 + m D^2 / 16 (3 lumped elements: +5.6 %).
+  double m[6][6];
+  ASSERT_EQ(MoorDyn_GetRodM(rod, m), MOORDYN_SUCCESS);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m[i][i], mass, 1e-9 * mass);
+  double a[3], b[3];
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 0, a), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 3, b), MOORDYN_SUCCESS);
+  EXPECT_NEAR(m[1][3], -mass * 0.5 * (b[2] - a[2]), 1e-6 * mass * 5.0);  // -m z_c, z_c from end A
+  const double inertia = mass * 100.0 / 3.0 + mass * 4.0 / 16.0;
+  EXPECT_NEAR(m[3][3], inertia, 0.06 * inertia);
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 

@@ -267,9 +267,12 @@ int MoorDyn_GetRodForce(MoorDynRod rod, double f[6]) {
   });
 }
 
-int MoorDyn_GetRodM(MoorDynRod rod, double /*m*/[6][6]) {
-  return capi::withRod("MoorDyn_GetRodM", rod, [&](capi::MoorDynSystem&, int) {
-    capi::throwNotImplemented("tangle does not export the rod mass matrices");
+int MoorDyn_GetRodM(MoorDynRod rod, double m[6][6]) {
+  return capi::withRod("MoorDyn_GetRodM", rod, [&](capi::MoorDynSystem& s, int r) {
+    capi::output(m, "m");
+    const tangle::Mat6 mass = s.rodMass(r);
+    for (int i = 0; i < 6; ++i)
+      for (int j = 0; j < 6; ++j) m[i][j] = mass(i, j);
   });
 }
 
@@ -364,10 +367,12 @@ int MoorDyn_GetBodyForce(MoorDynBody b, double f[6]) {
   });
 }
 
-int MoorDyn_GetBodyM(MoorDynBody b, double /*m*/[6][6]) {
-  return capi::withBody("MoorDyn_GetBodyM", b, [&](capi::MoorDynSystem&, int) {
-    capi::throwNotImplemented(
-        "tangle does not export a body's mass matrix (its vessel's is in the model file)");
+int MoorDyn_GetBodyM(MoorDynBody b, double m[6][6]) {
+  return capi::withBody("MoorDyn_GetBodyM", b, [&](capi::MoorDynSystem& s, int i) {
+    capi::output(m, "m");
+    const tangle::Mat6 mass = s.bodyMass(i);
+    for (int r = 0; r < 6; ++r)
+      for (int c = 0; c < 6; ++c) m[r][c] = mass(r, c);
   });
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <iostream>
@@ -361,6 +362,69 @@ Vec6 MoorDynSystem::rodForce(int r) const {
   throw NotImplemented(
       "a rod's net force is exported for coupled rods only (what MoorDyn_Step returned); a moving rod's "
       "line end forces are in results.h5");
+}
+
+Mat6 MoorDynSystem::rigidMass(const std::vector<int>& nodes, const Vec3& reference) {
+  analysis::Simulation& sim = m_run->simulation();
+  const model::DofMap& dofs = sim.model().dofs();
+  const model::State& state = sim.state();
+  std::array<VecX, 6> mode, inertia;
+  for (int j = 0; j < 6; ++j) {
+    mode[static_cast<std::size_t>(j)] = VecX::Zero(dofs.fullDofCount());
+    VecX& phi = mode[static_cast<std::size_t>(j)];
+    const Vec3 axis = Vec3::Unit(j % 3);
+    for (int node : nodes) {
+      const int d = dofs.firstDof(node);
+      if (j < 3) {
+        phi.segment<3>(d) = axis;
+      } else {
+        phi.segment<3>(d) = axis.cross(state.position[static_cast<std::size_t>(node)] - reference);
+        if (dofs.hasRotations(node)) phi.segment<3>(d + 3) = axis;
+      }
+    }
+    inertia[static_cast<std::size_t>(j)] = VecX::Zero(dofs.fullDofCount());
+    sim.assembler().addMass(state, 0.0, nullptr, &phi, &inertia[static_cast<std::size_t>(j)]);
+  }
+  Mat6 m;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 6; ++j)
+      m(i, j) = mode[static_cast<std::size_t>(i)].dot(inertia[static_cast<std::size_t>(j)]);
+  return m;
+}
+
+Mat6 MoorDynSystem::bodyMass(int b) {
+  requireInitialized();
+  const io::MoorDynBodyMap& map = m_coupling.conversion.bodies[static_cast<std::size_t>(b)];
+  if (map.vessel.empty())
+    throw NotImplemented(
+        "a fixed or coupled body's mass is not modelled by tangle (the host owns a coupled body's)");
+  const model::Model& model = m_run->simulation().model();
+  std::vector<int> nodes{model.vesselNode(model.vesselIndex(map.vessel))};
+  const int id = deckBody(b).id;
+  for (std::size_t r = 0; r < m_coupling.deck.rods.size(); ++r) {
+    const io::MoorDynRod& rod = m_coupling.deck.rods[r];
+    const std::string& line = m_coupling.conversion.rods[r].tangleLine;
+    if (rod.body != id || rod.kind != io::MoorDynRodKind::Fixed || line.empty()) continue;
+    const model::Line& l = model.lines()[static_cast<std::size_t>(model.lineIndex(line))];
+    for (int i = 0; i < l.nodeCount; ++i) nodes.push_back(l.firstNode + i);
+  }
+  Vec6 position, velocity;
+  bodyState(b, position, velocity);
+  return rigidMass(nodes, position.head<3>());
+}
+
+Mat6 MoorDynSystem::rodMass(int r) {
+  requireInitialized();
+  const std::string& line = m_coupling.conversion.rods[static_cast<std::size_t>(r)].tangleLine;
+  if (line.empty())
+    throw NotImplemented(
+        "a fixed, coupled or zero-length rod is not a line in tangle: its mass is not modelled (the host "
+        "owns a coupled rod's)");
+  const model::Model& model = m_run->simulation().model();
+  const model::Line& l = model.lines()[static_cast<std::size_t>(model.lineIndex(line))];
+  std::vector<int> nodes;
+  for (int i = 0; i < l.nodeCount; ++i) nodes.push_back(l.firstNode + i);
+  return rigidMass(nodes, m_run->simulation().state().position[static_cast<std::size_t>(l.firstNode)]);
 }
 
 void MoorDynSystem::bodyState(int b, Vec6& position, Vec6& velocity) {

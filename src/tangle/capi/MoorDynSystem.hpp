@@ -151,6 +151,14 @@ class MoorDynSystem {
   /// about its reference point (a pinned one's moment 0). @throws NotImplemented for others
   Vec6 bodyForce(int b) const;
   Vec6 rodForce(int r) const;
+  /// A free or pinned body's mass matrix about its reference point, global axes [kg, kg m, kg m^2]: tangle's
+  /// mass (structural, added and attached, lumped or consistent as the model) of its vessel and the rods
+  /// fixed to it, under the six rigid motions about that point (MoorDyn's Body::getM: its own, its points'
+  /// and its rods'). @throws NotImplemented for a fixed or coupled body (tangle does not model its mass)
+  Mat6 bodyMass(int b);
+  /// A moving (pinned or free) rod's mass matrix about its end A, global axes, as bodyMass (MoorDyn's
+  /// Rod::getM). @throws NotImplemented for a fixed, coupled or zero-length rod
+  Mat6 rodMass(int r);
   /// @}
 
   /// @name Deck lines (index l = deck id - 1; node i from 0 at the deck line's end A to its segment count)
@@ -291,6 +299,10 @@ class MoorDynSystem {
                        Vec3& velocity) const;
   /// The rigid host object whose points include deck point p (its offset into *offset), or null.
   const HostObject* hostObjectOf(int p, Vec3* offset) const;
+  /// The 6x6 mass of the model's nodes `nodes` under the rigid motions about `reference` [m]: M_ij = phi_i^T
+  /// M phi_j, phi_j the node accelerations of a unit rigid acceleration j (x, y, z, then rotations about
+  /// them).
+  Mat6 rigidMass(const std::vector<int>& nodes, const Vec3& reference);
   /// A host object's reference point at time t [s] (the host's motion, linear over its step) [m].
   static Vec3 hostReference(const HostObject& c, double t) {
     return c.position.head<3>() + c.velocity.head<3>() * (t - c.time0);
