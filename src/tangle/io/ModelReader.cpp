@@ -1971,7 +1971,8 @@ void readVessels(const Value& v, ModelSpec& spec) {
     vs.heldInStatics = m.boolean("held_in_statics", false);
     if (vs.heldInStatics && !free) m.get("held_in_statics", "").fail("held_in_statics applies only to free vessels");
     vs.pinned = m.boolean("pinned", false);
-    if (vs.pinned && !free) m.get("pinned", "").fail("pinned applies only to free vessels (their rotations are solved)");
+    if (vs.pinned && !free)
+      m.get("pinned", "").fail("pinned applies only to free vessels (their rotations are solved)");
     if (vs.pinned && vs.heldInStatics)
       m.get("pinned", "").fail("a pinned vessel is held in translation always: leave out held_in_statics");
     vs.mass = free ? m.number("mass", positiveUpTo(kMaxMass)) : m.number("mass", 0.0, nonNegativeUpTo(kMaxMass));

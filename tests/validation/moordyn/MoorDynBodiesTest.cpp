@@ -10,12 +10,12 @@
 //   nodes the rigid spin before the run (as MoorDyn's test gives its bodies), and reads the reference point
 //   as MoorDyn_GetBodyState does, p + Q (origin0 - reference0) from the vessel's node.
 //   Body 1 (a rigid vessel): exact to round-off (measured: angle 9e-14 rad after 10 s, radius 2e-15 m).
-//   Body 2 is a known failure (MoorDynBodiesKnownFailures, run as expected to fail): its rod is tangle's stiff
-//   beam (EA = 3.3e10 N for a 40 kg rod) tied to a 1 g vessel, and its spin drifts by about 1.5e-5 of omega
-//   (measured 2.9e-6 rad/s at dt = 0.01 s; 0.9e-6 to 3.7e-6 rad/s, either sign, at dt = 0.001 to 0.05 s, not
-//   converging with dt, the same with a Newton tolerance of 1e-6 or 1e-10: consistent with the round-off of
-//   the rod's stiffness, 16 eps k |x| = 6e-3 N per node 20 m from the origin, not proven), 15 times MoorDyn's
-//   1e-6 (its radius holds to 2e-11 m).
+//   Body 2 is a known failure (MoorDynBodiesKnownFailures, run as expected to fail): its rod is tangle's
+//   stiff beam (EA = 3.3e10 N for a 40 kg rod) tied to a 1 g vessel, and its spin drifts by about 1.5e-5 of
+//   omega (measured 2.9e-6 rad/s at dt = 0.01 s; 0.9e-6 to 3.7e-6 rad/s, either sign, at dt = 0.001 to 0.05
+//   s, not converging with dt, the same with a Newton tolerance of 1e-6 or 1e-10: consistent with the
+//   round-off of the rod's stiffness, 16 eps k |x| = 6e-3 N per node 20 m from the origin, not proven), 15
+//   times MoorDyn's 1e-6 (its radius holds to 2e-11 m).
 
 #include <gtest/gtest.h>
 
