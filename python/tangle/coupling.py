@@ -39,7 +39,9 @@ class Coupling:
     model file (YAML). ``points``: the line ends each coupled point holds, one list per point, each end
     named ``"line_name:a"`` or ``"line_name:b"`` (tangle line names); required for a YAML model, and by
     default for a deck its Coupled points in deck order. Every end must be a held end (``anchored``,
-    ``pinned`` or ``fixed``) without a motion of its own.
+    ``pinned`` or ``fixed``) without a motion of its own. A point ``["vessel:name"]`` is the reference point
+    of a pinned free vessel (``pinned: true``): the host moves it, the vessel's rotations are solved, and its
+    force is what the vessel exerts on its pin (the reaction, with its inertia).
 
     Raises ``tangle.ModelError`` (a ValueError) for a file that cannot be read, bad end names or ends that
     cannot be coupled; ``tangle.ConvergenceError`` (a RuntimeError) when the statics or a step cannot be
@@ -98,7 +100,9 @@ class Coupling:
     @property
     def forces(self) -> np.ndarray:
         """Forces the lines exert on the points at the current state [N], shape (n, 3) (zero before
-        ``init``): the lines' pull with the weight and inertia of their end nodes."""
+        ``init``): the lines' pull with the weight and inertia of their end nodes (their acceleration the
+        change of ``xd`` over the host's step divided by it); at a pinned vessel's point, what the vessel
+        exerts on its pin."""
         return np.asarray(self._core.forces()).reshape(self.n_points, 3)
 
     def line_tensions(self) -> dict[str, np.ndarray]:

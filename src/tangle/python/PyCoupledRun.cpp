@@ -24,7 +24,8 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-/// The coupled points given as lists of "line_name:a" / "line_name:b" (points named point1, point2, ...).
+/// The coupled points given as lists of "line_name:a" / "line_name:b", or as ["vessel:name"] for a pinned
+/// vessel's reference point (points named point1, point2, ...).
 std::vector<analysis::CoupledPointSpec> parsePoints(const std::vector<std::vector<std::string>>& points,
                                                     const std::string& path) {
   std::vector<analysis::CoupledPointSpec> out;
@@ -32,8 +33,14 @@ std::vector<analysis::CoupledPointSpec> parsePoints(const std::vector<std::vecto
     analysis::CoupledPointSpec p;
     p.name = fmt::format("point{}", i + 1);
     if (points[i].empty())
-      throw InputError(path, 0, fmt::format("points[{}]", i),
-                       "a list of at least one line end ('line_name:a')");
+      throw InputError(
+          path, 0, fmt::format("points[{}]", i),
+          "a list of at least one line end ('line_name:a'), or ['vessel:name'] for a pinned vessel");
+    if (points[i].size() == 1 && points[i][0].rfind("vessel:", 0) == 0) {
+      p.vessel = points[i][0].substr(7);  // CoupledRun checks that it names a pinned free vessel
+      out.push_back(std::move(p));
+      continue;
+    }
     for (std::size_t j = 0; j < points[i].size(); ++j) {
       const std::string& text = points[i][j];
       const std::size_t colon = text.rfind(':');
@@ -80,6 +87,7 @@ std::vector<std::vector<std::string>> PyCoupledRun::pointEnds() const {
   std::vector<std::vector<std::string>> out;
   for (const analysis::CoupledPointSpec& p : m_points) {
     std::vector<std::string> ends;
+    if (!p.vessel.empty()) ends.push_back("vessel:" + p.vessel);
     for (const auto& [line, end] : p.ends) ends.push_back(line + (end == 0 ? ":a" : ":b"));
     out.push_back(std::move(ends));
   }
