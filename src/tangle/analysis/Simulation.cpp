@@ -158,11 +158,13 @@ bool Simulation::solveWithDragStiffness(const model::State& start, solver::Stati
 }
 
 bool Simulation::relaxThenSolve(solver::StaticResult& result) {
-  // Not with free vessels (a DP unit held in statics would drift off during the relaxation). With line
-  // contact the contact acts as in dynamics (penalty, no step passes lines through each other) but no
-  // step is committed to it, so the relaxation leaves no events in the clash report.
+  // Not with a free vessel held in statics (a DP unit on station would drift off during the relaxation);
+  // other free vessels settle with their lines (a body that must sink metres before its cans float:
+  // MoorDyn's BodiesAndRods.dat, where Newton's first tangent has no heave stiffness). With line contact
+  // the contact acts as in dynamics (penalty, no step passes lines through each other) but no step is
+  // committed to it, so the relaxation leaves no events in the clash report.
   for (const model::VesselSpec& v : m_model->spec().vessels)
-    if (v.mode == model::VesselMode::Free) return false;
+    if (v.mode == model::VesselMode::Free && v.heldInStatics) return false;
   double longest = 0.0;
   for (const model::LineSpec& line : m_model->spec().lines) {
     double length = 0.0;

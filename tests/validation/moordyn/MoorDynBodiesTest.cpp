@@ -16,10 +16,19 @@
 //   s, not converging with dt, the same with a Newton tolerance of 1e-6 or 1e-10: consistent with the
 //   round-off of the rod's stiffness, 16 eps k |x| = 6e-3 N per node 20 m from the origin, not proven), 15
 //   times MoorDyn's 1e-6 (its radius holds to 2e-11 m).
+// - BodiesAndRods.dat (MoorDyn's RM3 wave-energy deck; MoorDyn's tests only run it): a free 1000 t body with
+//   no volume at the surface, two 10 m diameter, 13 m cans (1 t/m) fixed and pinned on it standing above the
+//   water, four slack lines. It must sink until the cans float: the statics converges (through dynamic
+//   relaxation), the body floats with its cans through the surface, and the whole floating body balances
+//   vertically: rho g V - (M + m_cans) g + the lines' vertical pulls = 0, V the cans' volume below z = 0 from
+//   their nodes (straight elements, pi/4 d^2 times the length below the surface). Tolerance 1e-5 of the
+//   weight (the statics tolerance is 1e-6 of it).
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "TestPaths.hpp"
@@ -67,6 +76,37 @@ void checkExcentricBody(int body) {
 }
 
 TEST(MoorDynBodies, ExcentricBodyOfPointsOrbitsItsCentreOfGravityAtItsSpin) { checkExcentricBody(1); }
+
+TEST(MoorDynBodies, BodyOnTwoCansSinksUntilTheyFloat) {
+  analysis::Simulation sim(io::readModelFile(deck("BodiesAndRods.dat")));
+  const solver::StaticResult statics = sim.solveStatics();
+  ASSERT_TRUE(statics.converged) << statics.message;
+  const model::Model& m = sim.model();
+  const double rho = 1025.0, g = 9.80665, area = std::numbers::pi / 4.0 * 10.0 * 10.0;
+  const double body = sim.state().position[static_cast<std::size_t>(m.vesselNode(0))].z();
+  EXPECT_LT(body, -2.0);   // the cans (from 2 m above the body) reach into the water
+  EXPECT_GT(body, -15.0);  // and stand out of it
+  double volume = 0.0, canMass = 0.0, pull = 0.0;
+  for (const solver::LineSnapshot& s : sim.snapshot()) {
+    if (s.name == "rod1" || s.name == "rod2") {
+      for (std::size_t i = 0; i + 1 < s.position.size(); ++i) {
+        const double za = s.position[i].z(), zb = s.position[i + 1].z();
+        const double length = (s.position[i + 1] - s.position[i]).norm();
+        const double below = za < 0.0 && zb < 0.0     ? 1.0
+                             : za >= 0.0 && zb >= 0.0 ? 0.0
+                                                      : std::max(-za, -zb) / std::abs(zb - za);
+        volume += area * length * below;
+        canMass += 1000.0 * length;
+      }
+    } else {
+      pull += s.endForceB.z();  // every line's end B is on the body
+    }
+  }
+  const double weight = (1.0e6 + canMass) * g;
+  EXPECT_GT(volume, 0.0);
+  EXPECT_NEAR(rho * g * volume - weight + pull, 0.0, 1e-5 * weight)
+      << "buoyancy " << rho * g * volume << " N, weight " << weight << " N, lines " << pull << " N";
+}
 
 TEST(MoorDynBodiesKnownFailures, ExcentricBodyWithARodOrbitsItsCentreOfGravityAtItsSpin) {
   checkExcentricBody(2);
