@@ -158,34 +158,26 @@ void CoupledRun::initialize(std::span<const double> x, std::span<const double> x
   if (simulation->vessels()) dynamics->addPrescribed(simulation->vessels()->prescribedNodes());
   std::vector<model::PrescribedNode> held;
   const model::Model& model = simulation->model();
+  // A held node that follows coupled point `point`: its position linear over the host's step.
+  const auto follow = [&](int node, int point) {
+    const Vec3 base = m_motion->start[static_cast<std::size_t>(point)];
+    std::shared_ptr<const HostMotion> motion = m_motion;
+    held.push_back({node, base, [motion, point, base](double t) {
+                      model::MotionValue v;
+                      v.displacement = motion->at(point, t) - base;
+                      v.velocity = motion->velocity[static_cast<std::size_t>(point)];
+                      v.acceleration = motion->acceleration[static_cast<std::size_t>(point)];
+                      return v;
+                    }});
+  };
   for (std::size_t k = 0; k < m_ends.size(); ++k) {
     const auto [line, end] = m_ends[k];
     const model::Line& ml = model.lines()[static_cast<std::size_t>(line)];
-    const int point = m_endPoint[k];
-    const Vec3 base = m_motion->start[static_cast<std::size_t>(point)];
-    std::shared_ptr<const HostMotion> motion = m_motion;
-    held.push_back({end == 0 ? ml.firstNode : ml.lastNode(), base, [motion, point, base](double t) {
-                      model::MotionValue v;
-                      v.displacement = motion->at(point, t) - base;
-                      v.velocity = motion->velocity[static_cast<std::size_t>(point)];
-                      v.acceleration = motion->acceleration[static_cast<std::size_t>(point)];
-                      return v;
-                    }});
+    follow(end == 0 ? ml.firstNode : ml.lastNode(), m_endPoint[k]);
   }
   // A pinned vessel's reference point: its translations follow the host, its rotations are solved.
-  for (std::size_t p = 0; p < m_points.size(); ++p) {
-    if (m_vesselOfPoint[p] < 0) continue;
-    const int point = static_cast<int>(p);
-    const Vec3 base = m_motion->start[p];
-    std::shared_ptr<const HostMotion> motion = m_motion;
-    held.push_back({model.vesselNode(m_vesselOfPoint[p]), base, [motion, point, base](double t) {
-                      model::MotionValue v;
-                      v.displacement = motion->at(point, t) - base;
-                      v.velocity = motion->velocity[static_cast<std::size_t>(point)];
-                      v.acceleration = motion->acceleration[static_cast<std::size_t>(point)];
-                      return v;
-                    }});
-  }
+  for (std::size_t p = 0; p < m_points.size(); ++p)
+    if (m_vesselOfPoint[p] >= 0) follow(model.vesselNode(m_vesselOfPoint[p]), static_cast<int>(p));
   dynamics->addPrescribed(std::move(held));
   m_simulation = std::move(simulation);
   m_dynamics = std::move(dynamics);

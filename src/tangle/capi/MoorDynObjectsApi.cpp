@@ -20,6 +20,15 @@ void put(const tangle::Vec3& v, double* out) {
   out[2] = v.z();
 }
 
+void put(const tangle::Vec6& v, double* out) {
+  for (int k = 0; k < 6; ++k) out[k] = v[k];
+}
+
+void put(const tangle::Mat6& m, double out[6][6]) {
+  for (int r = 0; r < 6; ++r)
+    for (int c = 0; c < 6; ++c) out[r][c] = m(r, c);
+}
+
 /// The guard of a per-node vector result: writes get(system, line, node) into out[3].
 template <class Get>
 int nodeVector(const char* function, MoorDynLine l, unsigned int i, double* out, Get get) {
@@ -262,17 +271,14 @@ int MoorDyn_GetRodType(MoorDynRod rod, int* t) {
 int MoorDyn_GetRodForce(MoorDynRod rod, double f[6]) {
   return capi::withRod("MoorDyn_GetRodForce", rod, [&](capi::MoorDynSystem& s, int r) {
     capi::output(f, "f");
-    const tangle::Vec6 force = s.rodForce(r);
-    for (int k = 0; k < 6; ++k) f[k] = force[k];
+    put(s.rodForce(r), f);
   });
 }
 
 int MoorDyn_GetRodM(MoorDynRod rod, double m[6][6]) {
   return capi::withRod("MoorDyn_GetRodM", rod, [&](capi::MoorDynSystem& s, int r) {
     capi::output(m, "m");
-    const tangle::Mat6 mass = s.rodMass(r);
-    for (int i = 0; i < 6; ++i)
-      for (int j = 0; j < 6; ++j) m[i][j] = mass(i, j);
+    put(s.rodMass(r), m);
   });
 }
 
@@ -329,10 +335,8 @@ int MoorDyn_GetBodyState(MoorDynBody b, double r[6], double rd[6]) {
     capi::output(rd, "rd");
     tangle::Vec6 position, velocity;
     s.bodyState(i, position, velocity);
-    for (int k = 0; k < 6; ++k) {
-      r[k] = position[k];
-      rd[k] = velocity[k];
-    }
+    put(position, r);
+    put(velocity, rd);
   });
 }
 
@@ -362,17 +366,14 @@ int MoorDyn_GetBodyAngVel(MoorDynBody b, double rd[3]) {
 int MoorDyn_GetBodyForce(MoorDynBody b, double f[6]) {
   return capi::withBody("MoorDyn_GetBodyForce", b, [&](capi::MoorDynSystem& s, int i) {
     capi::output(f, "f");
-    const tangle::Vec6 force = s.bodyForce(i);
-    for (int k = 0; k < 6; ++k) f[k] = force[k];
+    put(s.bodyForce(i), f);
   });
 }
 
 int MoorDyn_GetBodyM(MoorDynBody b, double m[6][6]) {
   return capi::withBody("MoorDyn_GetBodyM", b, [&](capi::MoorDynSystem& s, int i) {
     capi::output(m, "m");
-    const tangle::Mat6 mass = s.bodyMass(i);
-    for (int r = 0; r < 6; ++r)
-      for (int c = 0; c < 6; ++c) m[r][c] = mass(r, c);
+    put(s.bodyMass(i), m);
   });
 }
 

@@ -100,7 +100,6 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
     if (r.kind == io::MoorDynRodKind::CoupledPinned) {
       // The rod's line pinned at its end A (and the deck lines there): the host moves that point.
       h.pinned = true;
-      h.counted = 3;
       h.runPoint = addRunPoint(fmt::format("rod{}a", r.id), map.endLines[0]);
     } else {
       // A Coupled rod holds its lines at its ends, which the host's 6 DOFs move as a rigid body: its
@@ -198,7 +197,7 @@ void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t
             (m_run->pointPosition(h.runPoints[j]) - hostReference(h, m_run->time())).cross(fp);
       }
     }
-    const int written = h.pinned ? 3 : 6;
+    const int written = h.hostValues();
     for (int i = 0; i < written; ++i) f[ix + static_cast<std::size_t>(i)] = h.force[i];
     ix += static_cast<std::size_t>(written);
   }
@@ -217,13 +216,13 @@ Mat3 eulerRotation(const Vec3& angles) {
 
 int MoorDynSystem::coupledDofCount() const {
   int n = 3 * m_deckCoupledPoints;
-  for (const HostObject& h : m_hostObjects) n += h.counted;
+  for (const HostObject& h : m_hostObjects) n += h.countedValues();
   return n;
 }
 
 int MoorDynSystem::hostDofCount() const {
   int n = 3 * m_deckCoupledPoints;
-  for (const HostObject& h : m_hostObjects) n += h.pinned ? 3 : 6;
+  for (const HostObject& h : m_hostObjects) n += h.hostValues();
   return n;
 }
 
@@ -247,6 +246,12 @@ const MoorDynSystem::HostObject* MoorDynSystem::hostObjectOf(int p, Vec3* offset
   return nullptr;
 }
 
+const MoorDynSystem::HostObject* MoorDynSystem::rigidRod(int r) const {
+  for (const HostObject& c : m_hostObjects)
+    if (c.rod == r && !c.pinned) return &c;
+  return nullptr;
+}
+
 void MoorDynSystem::hostToRun(const double* x, const double* xd, std::vector<double>& position,
                               std::vector<double>& velocity, double time0, double dt) {
   position.assign(3 * m_runPoints.size(), 0.0);
@@ -259,7 +264,7 @@ void MoorDynSystem::hostToRun(const double* x, const double* xd, std::vector<dou
   };
   std::size_t ix = 0;
   for (HostObject& c : m_hostObjects) {
-    const int read = c.pinned ? 3 : 6;
+    const int read = c.hostValues();
     for (int i = 0; i < read; ++i) {
       c.position[i] = x[ix + static_cast<std::size_t>(i)];
       c.velocity[i] = xd[ix + static_cast<std::size_t>(i)];
@@ -708,13 +713,11 @@ Vec3 MoorDynSystem::rodNodePosition(int r, unsigned int i) {
   const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
   if (rod.segments == 0) return mappedPosition(map.point);
   const Vec3 along = (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments);
-  if (initialized())
-    for (const HostObject& c : m_hostObjects)
-      if (c.rod == r && !c.pinned) {  // a Coupled rod, moved rigidly by the host
-        Vec3 position, velocity;
-        hostObjectPoint(c, along, m_run->time(), position, velocity);
-        return position;
-      }
+  if (const HostObject* c = initialized() ? rigidRod(r) : nullptr) {  // a Coupled rod, moved by the host
+    Vec3 position, velocity;
+    hostObjectPoint(*c, along, m_run->time(), position, velocity);
+    return position;
+  }
   if (map.tangleLine.empty() || !initialized()) return rod.endA + along;
   const solver::LineSnapshot& s =
       m_run->lineResults()[static_cast<std::size_t>(tangleLine(map.tangleLine).snapshot)];
@@ -727,14 +730,12 @@ Vec3 MoorDynSystem::rodNodeVelocity(int r, unsigned int i) {
     throw InvalidValue(fmt::format("rod {} has nodes 0 to {}, not {}", rod.id, rod.segments, i));
   const io::MoorDynRodMap& map = m_coupling.conversion.rods[static_cast<std::size_t>(r)];
   if (rod.segments == 0) return mappedVelocity(map.point);
-  if (initialized())
-    for (const HostObject& c : m_hostObjects)
-      if (c.rod == r && !c.pinned) {
-        Vec3 position, velocity;
-        hostObjectPoint(c, (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments), m_run->time(),
-                        position, velocity);
-        return velocity;
-      }
+  if (const HostObject* c = initialized() ? rigidRod(r) : nullptr) {
+    Vec3 position, velocity;
+    hostObjectPoint(*c, (rod.endB - rod.endA) * (static_cast<double>(i) / rod.segments), m_run->time(),
+                    position, velocity);
+    return velocity;
+  }
   if (map.tangleLine.empty() || !initialized()) return Vec3::Zero();
   return velocity(tangleNode(map.tangleLine, static_cast<int>(i)));
 }

@@ -273,7 +273,6 @@ class MoorDynSystem {
     int body = -1;                 ///< deck index of the body, or -1
     int rod = -1;                  ///< deck index of the rod, or -1
     bool pinned = false;           ///< 3 DOFs (translations), not 6
-    int counted = 6;               ///< DOFs MoorDyn_NCoupledDOF counts for it (v2.7.1: 6 for every body)
     std::vector<int> points;       ///< rigid: deck indices of the deck points on it (a body's)
     std::vector<int> runPoints;    ///< rigid: per offset, the run's coupled point (-1: no line end there)
     std::vector<Vec3> offsets;     ///< rigid: positions in its axes from its reference point [m]
@@ -283,6 +282,10 @@ class MoorDynSystem {
         Vec6::Zero();           ///< and their rates [m/s, rad/s] (the angles' taken as the angular velocity)
     double time0 = 0.0;         ///< [s]
     Vec6 force = Vec6::Zero();  ///< what the host got at the last step: force [N], moment [N m] (pinned: 0)
+    /// Values it reads from and writes to the host's arrays.
+    int hostValues() const { return pinned ? 3 : 6; }
+    /// DOFs MoorDyn_NCoupledDOF counts for it (MoorDyn v2.7.1: 6 for every body, pinned or not).
+    int countedValues() const { return body >= 0 ? 6 : hostValues(); }
   };
   std::vector<HostObject> m_hostObjects;
   int m_deckCoupledPoints = 0;  ///< the deck's Coupled points
@@ -299,6 +302,8 @@ class MoorDynSystem {
                        Vec3& velocity) const;
   /// The rigid host object whose points include deck point p (its offset into *offset), or null.
   const HostObject* hostObjectOf(int p, Vec3* offset) const;
+  /// The rigid host object that is rod r (a Coupled rod), or null.
+  const HostObject* rigidRod(int r) const;
   /// The 6x6 mass of the model's nodes `nodes` under the rigid motions about `reference` [m]: M_ij = phi_i^T
   /// M phi_j, phi_j the node accelerations of a unit rigid acceleration j (x, y, z, then rotations about
   /// them).
