@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "support/UpwardCrossings.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/io/ModelReader.hpp"
 
@@ -74,22 +75,13 @@ TEST(JunctionDynamics, BuoyOnThreeLegsHeavesAtTheirNaturalPeriod) {
   ASSERT_NEAR(zStatic, kAnchorZ + h, 1e-3);
   for (const int node : point.endNodes) sim.state().velocity[m.dofs().firstDof(node) + 2] = 0.01;
 
-  std::vector<double> crossings;
-  double previousTime = 0.0, previousOffset = 0.0;
-  bool first = true;
+  test::UpwardCrossings crossings;
   const time::DynamicResult run = sim.runDynamics(nullptr, false, [&](const model::State& s, double) {
-    const double offset = s.position[static_cast<std::size_t>(point.node)].z() - zStatic;
-    if (!first && previousOffset < 0.0 && offset >= 0.0)
-      crossings.push_back(previousTime +
-                          (s.time - previousTime) * (-previousOffset) / (offset - previousOffset));
-    first = false;
-    previousTime = s.time;
-    previousOffset = offset;
+    crossings.add(s.time, s.position[static_cast<std::size_t>(point.node)].z() - zStatic);
   });
   ASSERT_TRUE(run.completed) << run.message;
-  ASSERT_GE(crossings.size(), 6u) << "period " << expected << " s";
-  const double measured = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  EXPECT_NEAR(measured, expected, 5e-3 * expected) << crossings.size() << " crossings";
+  ASSERT_GE(crossings.count(), 6u) << "period " << expected << " s";
+  EXPECT_NEAR(crossings.meanPeriod(), expected, 5e-3 * expected) << crossings.count() << " crossings";
 }
 
 }  // namespace

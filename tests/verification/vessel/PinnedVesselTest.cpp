@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "support/UpwardCrossings.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -90,24 +91,17 @@ TEST(PinnedVessel, SwingsWithTheRigidPendulumsLargeAmplitudePeriod) {
   const double expected =
       4.0 * std::sqrt(inertia / (kRodMass * kG * d)) * std::comp_ellint_1(std::sin(theta0 / 2.0));
   // Upward zero crossings of the mid-point's horizontal offset from the pin (it starts at +x, at rest).
-  std::vector<double> crossings;
-  double previousTime = 0.0, previousX = 0.0, largestPinMove = 0.0;
-  bool first = true;
+  test::UpwardCrossings crossings;
+  double largestPinMove = 0.0;
   const int node = sim.model().vesselNode(0);
   const time::DynamicResult run = sim.runDynamics([&](const model::State& s, const VecX&) {
     largestPinMove = std::max(largestPinMove, (s.position[static_cast<std::size_t>(node)] - kPin).norm());
-    const double x = rodMiddle(sim.snapshot(true)).x() - kPin.x();
-    if (!first && previousX < 0.0 && x >= 0.0)
-      crossings.push_back(previousTime + (s.time - previousTime) * (-previousX) / (x - previousX));
-    first = false;
-    previousTime = s.time;
-    previousX = x;
+    crossings.add(s.time, rodMiddle(sim.snapshot(true)).x() - kPin.x());
   });
   ASSERT_TRUE(run.completed) << run.message;
   EXPECT_LT(largestPinMove, 1e-9);
-  ASSERT_GE(crossings.size(), 2u) << "period " << expected << " s";
-  const double measured = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  EXPECT_NEAR(measured, expected, 1e-3 * expected) << crossings.size() << " crossings";
+  ASSERT_GE(crossings.count(), 2u) << "period " << expected << " s";
+  EXPECT_NEAR(crossings.meanPeriod(), expected, 1e-3 * expected) << crossings.count() << " crossings";
 }
 
 TEST(PinnedVessel, OnlyAFreeVesselCanBePinned) {

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "support/UpwardCrossings.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/geometry/Rotation.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -76,21 +77,13 @@ TEST(SubmergedBody, RollsAtItsMetacentricPeriod) {
   const int node = m.vesselNode(0);
   sim.state().velocity[m.dofs().firstDof(node) + 3] = 0.01;  // roll rate [rad/s]
   const double expected = 2.0 * std::numbers::pi * std::sqrt(kRollInertia / (kRho * kG * kVolume * kArm));
-  std::vector<double> crossings;
-  double previousTime = 0.0, previousRoll = 0.0;
-  bool first = true;
+  test::UpwardCrossings crossings;
   const time::DynamicResult run = sim.runDynamics([&](const model::State& s, const VecX&) {
-    const double roll = geometry::logMap(s.triad[static_cast<std::size_t>(node)]).x();
-    if (!first && previousRoll < 0.0 && roll >= 0.0)
-      crossings.push_back(previousTime + (s.time - previousTime) * (-previousRoll) / (roll - previousRoll));
-    first = false;
-    previousTime = s.time;
-    previousRoll = roll;
+    crossings.add(s.time, geometry::logMap(s.triad[static_cast<std::size_t>(node)]).x());
   });
   ASSERT_TRUE(run.completed) << run.message;
-  ASSERT_GE(crossings.size(), 5u) << "period " << expected << " s";
-  const double measured = (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
-  EXPECT_NEAR(measured, expected, 2e-3 * expected) << crossings.size() << " crossings";
+  ASSERT_GE(crossings.count(), 5u) << "period " << expected << " s";
+  EXPECT_NEAR(crossings.meanPeriod(), expected, 2e-3 * expected) << crossings.count() << " crossings";
 }
 
 }  // namespace
