@@ -50,13 +50,20 @@ inline model::DynamicSolverSpec whenSlow() {
   s.renewalRule = false;
   return s;
 }
+inline model::DynamicSolverSpec extrapolatedPredictor() {
+  model::DynamicSolverSpec s;
+  s.seabedPredictor = false;
+  return s;
+}
 
-/// Runs the mooring example for `duration` s with output at every step, at the tolerance kComparisonTolerance.
-/// With azimuths [deg], its line is copied around a point instead: fairleads on a 20 m circle, anchors 1000 m
-/// further out, each fairlead moved as the example's (5 m / 10 s along x). `solver`: the Newton path
-/// (dynamics.solver; the default: the fast path).
+/// Runs the mooring example for `duration` s with output at every step, at the tolerance
+/// kComparisonTolerance. With azimuths [deg], its line is copied around a point instead: fairleads on a 20 m
+/// circle, anchors 1000 m further out, each fairlead moved as the example's (5 m / 10 s along x). `solver`:
+/// the Newton path (dynamics.solver; the default: the fast path). `timeStep` [s] (0: the example's 0.01 s)
+/// and `tolerance` [-] replace the example's step and the comparison tolerance.
 inline FairleadRun runMooringExample(double duration, const model::DynamicSolverSpec& solver = {},
-                                     const std::vector<double>& azimuthsDeg = {}) {
+                                     const std::vector<double>& azimuthsDeg = {}, double timeStep = 0.0,
+                                     double tolerance = kComparisonTolerance) {
   model::ModelSpec spec = io::readModelFile(std::string(kExamplesDir) + "/mooring-dynamics/model.yaml");
   if (!azimuthsDeg.empty()) {
     const model::LineSpec base = spec.lines.at(0);
@@ -73,7 +80,8 @@ inline FairleadRun runMooringExample(double duration, const model::DynamicSolver
   }
   spec.dynamics.duration = duration;
   spec.dynamics.solver = solver;
-  spec.dynamics.tolerance = kComparisonTolerance;
+  if (timeStep > 0.0) spec.dynamics.timeStep = timeStep;
+  spec.dynamics.tolerance = tolerance;
   spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
   spec.output.vtk = false;
   spec.output.plots = false;

@@ -109,8 +109,7 @@ bool CurrentProfile::isZero() const {
   return std::all_of(m_levels.begin(), m_levels.end(), [](const CurrentLevel& l) { return l.speed == 0.0; });
 }
 
-Vec3 CurrentProfile::velocity(double z, double t) const {
-  if (m_times.empty()) return velocity(z);
+Vec3 CurrentProfile::historyVelocity(double z, double t) const {
   if (t <= m_times.front()) return m_snapshots.front().velocity(z);
   if (t >= m_times.back()) return m_snapshots.back().velocity(z);
   const std::size_t k =

@@ -343,6 +343,10 @@ struct DynamicSolverSpec {
   /// matrix_refresh: `renewal` (the kept matrix is also refreshed when keeping it costs more iterations
   /// than a refresh, the renewal rule of theory 8.2) or `when_slow` (only when a step converges slowly).
   bool renewalRule = true;
+  /// predictor: `seabed` (the constant-acceleration predictor corrected at nodes on or onto the seabed for
+  /// the change of their seabed reaction within the step, time::SeabedPredictor) or `extrapolated` (not
+  /// corrected).
+  bool seabedPredictor = true;
 
   /// One key of `dynamics.solver`: its name, the names of its two values and the member it sets. The reader,
   /// the run log and summary.json all name the choices from this table.
@@ -352,12 +356,13 @@ struct DynamicSolverSpec {
     const char* whenFalse;
     bool DynamicSolverSpec::*member;
   };
-  /// The four keys, in the order of docs/model-format.md.
-  static constexpr std::array<Choice, 4> kChoices{{
+  /// The five keys, in the order of docs/model-format.md.
+  static constexpr std::array<Choice, 5> kChoices{{
       {"newton", "modified", "full", &DynamicSolverSpec::modifiedNewton},
       {"assembly", "parts", "whole", &DynamicSolverSpec::partIterations},
       {"refresh", "blocks", "whole", &DynamicSolverSpec::blockRefresh},
       {"matrix_refresh", "renewal", "when_slow", &DynamicSolverSpec::renewalRule},
+      {"predictor", "seabed", "extrapolated", &DynamicSolverSpec::seabedPredictor},
   }};
   /// The name of the value chosen for `choice`.
   const char* valueOf(const Choice& choice) const { return this->*choice.member ? choice.whenTrue : choice.whenFalse; }

@@ -35,33 +35,12 @@ SeabedNodeReaction Seabed::reaction(const Vec3& position, const Vec3& velocity, 
   if (r.penetration <= 0.0) return r;
   const Vec3& n = local.normal;
   r.normal = n;
-  const double k = m_spec.normalStiffness * tributaryLength;
-  // C1 onset over the first kSmoothPenetration of penetration (quadratic, then linear and offset by half
-  // of it): a node touching down or lifting off changes the tangent continuously, so Newton does not
-  // cycle on the touchdown nodes of a finely meshed line.
-  double normal = 0.0;
-  double kn = 0.0;  // dN/d(penetration); d(penetration)/d(position) = -n (the normal is constant on a plane)
-  if (r.penetration < kSmoothPenetration) {
-    normal = 0.5 * k * r.penetration * r.penetration / kSmoothPenetration;
-    kn = k * r.penetration / kSmoothPenetration;
-  } else {
-    normal = k * (r.penetration - 0.5 * kSmoothPenetration);
-    kn = k;
-  }
   const double vn = n.dot(velocity);
-  double c = 0.0;
-  if (dynamic && m_spec.damping > 0.0) {
-    c = m_spec.damping * tributaryLength;
-    const double damped = normal - c * vn;
-    // The dashpot may lower the reaction but never make the seabed pull the line down.
-    if (damped > 0.0) {
-      normal = damped;
-    } else {
-      normal = 0.0;
-      kn = 0.0;
-      c = 0.0;
-    }
-  }
+  // d(penetration)/d(position) = -n (the normal is constant on a plane).
+  const NormalLaw law = normalLaw(r.penetration, vn, tributaryLength, dynamic);
+  const double normal = law.force;
+  const double kn = law.stiffness;
+  const double c = law.damping;
   const Mat3 nn = n * n.transpose();
   r.stiffness = kn * nn;
   r.damping = c * nn;
@@ -90,6 +69,10 @@ SeabedNodeReaction Seabed::reaction(const Vec3& position, const Vec3& velocity, 
   return r;
 }
 
+Vec3 Seabed::normalAt(const Vec3& position) const {
+  return m_surface->isFlat() ? Vec3::UnitZ() : m_surface->at(position.x(), position.y()).normal;
+}
+
 Vec3 Seabed::reactionForce(const Vec3& position, const Vec3& velocity, double tributaryLength, double radius,
                            bool dynamic) const {
   // reaction()'s force, step by step (its comments give the reasons).
@@ -97,14 +80,8 @@ Vec3 Seabed::reactionForce(const Vec3& position, const Vec3& velocity, double tr
   const double penetration = local.penetration;
   if (penetration <= 0.0) return Vec3::Zero();
   const Vec3& n = local.normal;
-  const double k = m_spec.normalStiffness * tributaryLength;
-  double normal = penetration < kSmoothPenetration ? 0.5 * k * penetration * penetration / kSmoothPenetration
-                                                   : k * (penetration - 0.5 * kSmoothPenetration);
   const double vn = n.dot(velocity);
-  if (dynamic && m_spec.damping > 0.0) {
-    const double damped = normal - m_spec.damping * tributaryLength * vn;
-    normal = damped > 0.0 ? damped : 0.0;
-  }
+  const double normal = normalLaw(penetration, vn, tributaryLength, dynamic).force;
   Vec3 force = normal * n;
   if (dynamic && !m_spec.elasticFriction && m_spec.frictionCoefficient > 0.0 && normal > 0.0) {
     const Vec3 vt = velocity - vn * n;

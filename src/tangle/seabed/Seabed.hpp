@@ -92,6 +92,45 @@ class Seabed {
   /// Penetration over which the normal reaction sets in smoothly (C1 quadratic onset) [m].
   static constexpr double kSmoothPenetration = 0.002;
 
+  /// The normal reaction's law, the one reaction() and reactionForce() apply along the normal: its magnitude
+  /// and derivatives for a node of tributary length `tributaryLength` [m] at penetration `penetration` [m]
+  /// (> 0: touching) moving along the normal at `normalVelocity` [m/s] (> 0: away from the seabed), with
+  /// the dashpot when `dynamic`.
+  struct NormalLaw {
+    double force = 0.0;      ///< N [N], >= 0
+    double stiffness = 0.0;  ///< dN/d(penetration) [N/m]
+    double damping = 0.0;    ///< -dN/d(normal velocity) [N s/m]
+  };
+  NormalLaw normalLaw(double penetration, double normalVelocity, double tributaryLength, bool dynamic) const {
+    NormalLaw law;
+    if (penetration <= 0.0) return law;
+    const double k = m_spec.normalStiffness * tributaryLength;
+    // C1 onset over the first kSmoothPenetration of penetration (quadratic, then linear and offset by half
+    // of it): a node touching down or lifting off changes the tangent continuously, so Newton does not
+    // cycle on the touchdown nodes of a finely meshed line.
+    if (penetration < kSmoothPenetration) {
+      law.force = 0.5 * k * penetration * penetration / kSmoothPenetration;
+      law.stiffness = k * penetration / kSmoothPenetration;
+    } else {
+      law.force = k * (penetration - 0.5 * kSmoothPenetration);
+      law.stiffness = k;
+    }
+    if (dynamic && m_spec.damping > 0.0) {
+      const double c = m_spec.damping * tributaryLength;
+      const double damped = law.force - c * normalVelocity;
+      // The dashpot may lower the reaction but never make the seabed pull the line down.
+      if (damped > 0.0) {
+        law.force = damped;
+        law.damping = c;
+      } else {
+        law = NormalLaw{};
+      }
+    }
+    return law;
+  }
+  /// The seabed's unit normal under `position` [-] (e_z on a flat seabed).
+  Vec3 normalAt(const Vec3& position) const;
+
   /// Penetration [m] at which a laid line of submerged weight `weightPerLength` [N/m] rests on a seabed of
   /// normal stiffness `normalStiffness` [N/m/m]: N = k d^2 / (2 d_s) up to d_s, k (d - d_s / 2) beyond,
   /// solved for N = w. Zero for a line that floats (w <= 0).

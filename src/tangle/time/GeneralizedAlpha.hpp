@@ -21,11 +21,12 @@
 #include <vector>
 
 #include "tangle/model/ModelSpec.hpp"
+#include "tangle/model/PrescribedMotion.hpp"
 #include "tangle/model/State.hpp"
 #include "tangle/solver/Assembler.hpp"
 #include "tangle/solver/LinearSolver.hpp"
 #include "tangle/solver/NewtonIteration.hpp"
-#include "tangle/model/PrescribedMotion.hpp"
+#include "tangle/time/SeabedPredictor.hpp"
 
 namespace tangle::time {
 
@@ -104,8 +105,10 @@ class GeneralizedAlpha {
   std::vector<model::PrescribedNode> m_prescribed;
   AlphaParameters m_params;
   std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
+  std::vector<double> m_allowed;    // the out-of-balance force each node is allowed this step [N]
   std::vector<int> m_constrainedDofs;  // full DOFs without an equation
   solver::NewtonIteration m_newton;    // the iteration matrix, its refresh, blocks and parts
+  SeabedPredictor m_seabedPredictor;   // the predictor's correction on the seabed (dynamics.solver.predictor)
   VecX m_forceOld;  // F(q_n, v_n, t_n)
   // step()'s work space: the state at the step's start, the prescribed target, the increment over the step
   // (full DOFs), the mass combination, the inertia force and the residual (equations), and a correction in
