@@ -17,6 +17,8 @@ md_include="$1"; md_lib="$2"
 deck="${3:-$root/bench/moordyn/chain-1130m.txt}"
 dt="${4:-0.01}"; duration="${5:-100}"; repeats="${6:-3}"
 work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
+# A copy of the deck in the work folder: MoorDyn writes its output files next to the deck.
+cp "$deck" "$work/deck.txt"; deck="$work/deck.txt"
 
 (cd "$root" && cmake --preset release >/dev/null && cmake --build --preset release -j 2 --target tangle_moordyn >/dev/null)
 cc -O2 -std=c99 -o "$work/host_tangle" "$root/tests/capi/moordyn_host.c" -I"$root/include/tangle-moordyn" \
