@@ -61,6 +61,12 @@ class SeabedPredictor {
               const std::vector<double>& allowed, VecX& dq);
 
  private:
+  /// Sets the mass along the seabed normal of every cable node free in its translations at `start` and the
+  /// largest k L / m among them.
+  void updateMass(const model::State& start);
+  /// Steps the mass along the normal is kept for.
+  static constexpr int kMassAge = 100;
+
   solver::Assembler* m_assembler;
   seabed::Seabed m_bed;
   std::vector<int> m_nodes;    // this step's nodes on or onto the seabed
@@ -70,6 +76,7 @@ class SeabedPredictor {
   std::vector<Vec3> m_cachedNormal;
   VecX m_direction, m_massAlong;
   int m_massAge = 0;
+  double m_largestOmegaSquared = 0.0;  // the largest k L / m of those nodes [1/s^2]
 };
 
 }  // namespace tangle::time
