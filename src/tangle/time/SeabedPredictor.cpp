@@ -30,7 +30,8 @@ void SeabedPredictor::updateMass(const model::State& start) {
   for (int node = 0; node < dofs.nodeCount(); ++node) {
     const auto i = static_cast<std::size_t>(node);
     const double mass = m_cachedNormal[i].dot(m_massAlong.segment<3>(dofs.firstDof(node)));
-    if (mass > 0.0) m_largestOmegaSquared = std::max(m_largestOmegaSquared, k * model.tributaryLength()[i] / mass);
+    if (mass > 0.0)
+      m_largestOmegaSquared = std::max(m_largestOmegaSquared, k * model.tributaryLength()[i] / mass);
   }
   m_massAge = kMassAge;
 }
