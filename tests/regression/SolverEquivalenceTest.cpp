@@ -2,10 +2,10 @@
 //
 // Every example with dynamics (cables and beams, prescribed motions, free and prescribed vessels,
 // line-to-line contact, wakes, seabed friction) runs its first kDuration seconds twice: with the default path
-// (modified Newton, iterations on parts, blocks and stretches refreshed on their own, the renewal rule) and
-// with the plainest (full Newton, whole assembly, whole refresh). Both must complete, and agree at every
-// output time: each line's end tensions within kRelative of the largest end tension of the run plus
-// kAbsolute.
+// (modified Newton, iterations on parts, blocks and stretches refreshed on their own, the renewal rule, the
+// seabed predictor) and with the plainest (full Newton, whole assembly, whole refresh, extrapolated
+// predictor). Both must complete, and agree at every output time: each line's end tensions within kRelative
+// of the largest end tension of the run plus kAbsolute.
 //
 // Why the bound: both paths converge every step to the same tolerance, so they differ by what the
 // tolerance leaves, which grows through the run where the response is sensitive (touchdown chatter,
@@ -192,6 +192,7 @@ TEST_P(SolverEquivalence, DefaultPathAgreesWithThePlainestWithinTheTolerance) {
   plainest.modifiedNewton = false;
   plainest.partIterations = false;
   plainest.blockRefresh = false;
+  plainest.seabedPredictor = false;
   const ExampleRun plain = runExample(GetParam(), plainest);
   ASSERT_TRUE(plain.result.completed) << plain.result.message;
   ASSERT_EQ(fast.tension.size(), plain.tension.size());

@@ -8,9 +8,9 @@
 //    rotation kept converging linearly (0.56 per iteration) down to the minimum step, while the same model
 //    with a whole refresh ran to the end. A step that fails now falls back to a whole refresh and then to
 //    full Newton before it is cut. The default run must complete, and agree with the plainest path (full
-//    Newton, whole assembly, whole refresh) until the hose first touches the pipeline (t = 9.1 s): the
-//    hose's end tensions at every output time within 1e-4 of their largest value (measured 2026-11-29: 1.3 N
-//    of 92 kN at the default tolerance 1e-6, with 134 steps converged by a fallback). After the
+//    Newton, whole assembly, whole refresh, extrapolated predictor) until the hose first touches the
+//    pipeline (t = 9.1 s): the hose's end tensions at every output time within 1e-4 of their largest value
+//    (measured 2026-11-29: 1.3 N of 92 kN at the default tolerance 1e-6, with 134 steps converged by a fallback). After the
 //    hose has landed along the pipeline (about 20 s) its ends keep going down: it is pushed into compression
 //    on the pipeline (-5 to -12 kN) and buckles, a bifurcation whose branch any perturbation decides: the two
 //    paths then differ by up to 10 kN, and so does one path at tolerances 1e-6 and 1e-8 (up to 16 kN at t =
@@ -99,6 +99,7 @@ TEST(SolverFallback, HoseLoweredOntoAPipelineRunsOnTheDefaultPathAsOnThePlainest
   plainest.modifiedNewton = false;
   plainest.partIterations = false;
   plainest.blockRefresh = false;
+  plainest.seabedPredictor = false;
   const HoseRun plain = runHose(plainest, kDuration);
   ASSERT_TRUE(plain.result.completed) << plain.result.message;
   ASSERT_EQ(fast.tension.size(), plain.tension.size());
