@@ -10,8 +10,8 @@
 //    full Newton before it is cut. The default run must complete, and agree with the plainest path (full
 //    Newton, whole assembly, whole refresh, extrapolated predictor) until the hose first touches the
 //    pipeline (t = 9.1 s): the hose's end tensions at every output time within 1e-4 of their largest value
-//    (measured 2026-11-29: 1.3 N of 92 kN at the default tolerance 1e-6, with 134 steps converged by a fallback). After the
-//    hose has landed along the pipeline (about 20 s) its ends keep going down: it is pushed into compression
+//    (measured 2026-11-29: 1.3 N of 92 kN at the default tolerance 1e-6, with 134 steps converged by a
+//    fallback). After the hose has landed along the pipeline (about 20 s) its ends keep going down: it is pushed into compression
 //    on the pipeline (-5 to -12 kN) and buckles, a bifurcation whose branch any perturbation decides: the two
 //    paths then differ by up to 10 kN, and so does one path at tolerances 1e-6 and 1e-8 (up to 16 kN at t =
 //    26 s). There only completion is checked.
