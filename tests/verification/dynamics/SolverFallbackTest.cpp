@@ -1,20 +1,19 @@
 // Issue 44: a faster path never decides whether a run completes.
 //
 // 1. A hose (40 beams) between two pins lowered by a time table onto a pipeline (60 beams) on the seabed,
-//    before any contact is made (the issue's model, rebuilt here: depth 100 m; pipeline OD 0.5 m, 400 kg/m,
-//    EA 6e9 N, EI 2e8 N m^2, 120 m on the seabed; hose OD 0.3 m, 120 kg/m, EA 4e8 N, EI 1e5 N m^2, 84 m
-//    between pins 80 m apart at z = -85 m, both lowered 14 m in 40 s). With the default path (modified
-//    Newton, stretch and block refreshes) it stopped at t = 0.428 s: the stretch refresh of the pinned end's
-//    rotation kept converging linearly (0.56 per iteration) down to the minimum step, while the same model
-//    with a whole refresh ran to the end. A step that fails now falls back to a whole refresh and then to
-//    full Newton before it is cut. The default run must complete, and agree with the plainest path (full
-//    Newton, whole assembly, whole refresh, extrapolated predictor) until the hose first touches the
-//    pipeline (t = 9.1 s): the hose's end tensions at every output time within 1e-4 of their largest value
-//    (measured 2026-11-29: 1.3 N of 92 kN at the default tolerance 1e-6, with 134 steps converged by a
-//    fallback). After the hose has landed along the pipeline (about 20 s) its ends keep going down: it is pushed into compression
-//    on the pipeline (-5 to -12 kN) and buckles, a bifurcation whose branch any perturbation decides: the two
-//    paths then differ by up to 10 kN, and so does one path at tolerances 1e-6 and 1e-8 (up to 16 kN at t =
-//    26 s). There only completion is checked.
+//    before any contact is made (the issue's model, rebuilt here: depth 100 m; pipeline OD 0.5 m, 400 kg/m, EA 6e9 N,
+//    EI 2e8 N m^2, 120 m on the seabed; hose OD 0.3 m, 120 kg/m, EA 4e8 N, EI 1e5 N m^2, 84 m between pins 80 m apart
+//    at z = -85 m, both lowered 14 m in 40 s). With the default path (modified Newton, stretch and block refreshes) it
+//    stopped at t = 0.428 s: the stretch refresh of the pinned end's rotation kept converging linearly (0.56 per
+//    iteration) down to the minimum step, while the same model with a whole refresh ran to the end. A step that fails
+//    now falls back to a whole refresh and then to full Newton before it is cut. The default run must complete, and
+//    agree with the plainest path (full Newton, whole assembly, whole refresh, extrapolated predictor) until the hose
+//    first touches the pipeline (t = 9.1 s): the hose's end tensions at every output time within 1e-4 of their largest
+//    value (measured 2026-11-29: 1.3 N of 92 kN at the default tolerance 1e-6, with 134 steps converged by a fallback).
+//    After the hose has landed along the pipeline (about 20 s) its ends keep going down: it is pushed into compression
+//    on the pipeline (-5 to -12 kN) and buckles, a bifurcation whose branch any perturbation decides: the two paths
+//    then differ by up to 10 kN, and so does one path at tolerances 1e-6 and 1e-8 (up to 16 kN at t = 26 s). There only
+//    completion is checked.
 // 2. A step whose out-of-balance force is not finite is reported as such, with its node (the message said
 //    "0 N at unknown node" when no finite residual was left to name).
 
