@@ -49,9 +49,11 @@ void NewtonIteration::setAllowed(double tolerance, const std::vector<double>& no
   const auto& eqDofs = dofs.equationDofs();
   const std::vector<double>& scale = m_assembler->nodeForceScale();
   m_inverseAllowed.resize(dofs.equationCount());
+  m_allowedForce.resize(static_cast<std::size_t>(dofs.nodeCount()));
   for (int node = 0; node < dofs.nodeCount(); ++node) {
     const int first = dofs.firstDof(node);
     const double allowed = std::max(tolerance * scale[node], nodeFloor[node]);
+    m_allowedForce[static_cast<std::size_t>(node)] = allowed;
     const double inverseForce = 1.0 / allowed;
     const double inverseMoment =
         dofs.hasRotations(node) ? 1.0 / (allowed * std::max(model.momentScale(node), 1e-6)) : 0.0;

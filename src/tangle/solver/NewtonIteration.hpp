@@ -52,6 +52,8 @@ class NewtonIteration {
   /// (Assembler::nodeForceScale, [N]), or the node's round-off floor `nodeFloor` [N] when larger; moments
   /// over the node's moment scale [m].
   void setAllowed(double tolerance, const std::vector<double>& nodeFloor);
+  /// The out-of-balance force each node is allowed this step (setAllowed's) [N].
+  const std::vector<double>& allowedForce() const { return m_allowedForce; }
   /// Starts an attempt at a step of dt [s] on the Newton path `mode`: the kept factorisation is used when it
   /// was made for this step length and no refresh is due.
   void startAttempt(double dt, const model::DynamicSolverSpec& mode);
@@ -121,6 +123,7 @@ class NewtonIteration {
   MatrixWork m_work;
   VecX m_delta;           // Newton correction of the equations [m, rad]
   VecX m_inverseAllowed;  // 1 / allowed out-of-balance of each equation this step [1/N or 1/(N m)]
+  std::vector<double> m_allowedForce;  // allowed out-of-balance force of each node this step [N]
   SystemMatrix m_matrix;
   LinearSolver m_solver{true};  // banded when the pattern suits (LinearSolver.hpp)
   SparseMatrix m_k;

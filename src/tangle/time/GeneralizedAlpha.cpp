@@ -231,24 +231,20 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
   // Other constrained DOFs stay where they are.
   for (const int dof : m_constrainedDofs)
     if (!m_prescribedDof[dof]) dq[dof] = 0.0;
+  // Convergence: every free DOF's out-of-balance force below tol times its line's weight (moments over the
+  // node's moment scale), or below the round-off floor of the elements at its node (Section 8.2 of the
+  // theory manual). Per node: one global scale, the largest line's weight, would make a light line's test
+  // meaningless next to a heavy one; the former scale, the largest element weight, made the test stricter
+  // as the mesh was refined (1e-8 of the tension on a 200-bar mooring line, 4.8 residual assemblies per
+  // step where 3.5 give the same tension ranges to 1.5e-4). Set here: the seabed predictor reads it.
+  m_assembler->nodeRoundoffFloor(start, m_nodeFloor);
+  m_newton.setAllowed(m_settings.tolerance, m_nodeFloor);
   // Nodes on, or predicted onto, the seabed: the change of their seabed reaction within the step balanced
   // against their inertia (SeabedPredictor). Only with the constant-acceleration predictor, whose premise
   // (the rest of the force unchanged over the step) the correction shares.
-  // The convergence test's allowance per node: every free DOF's out-of-balance force below tol times its
-  // line's weight (moments over the node's moment scale), or below the round-off floor of the elements at
-  // its node (Section 8.2 of the theory manual). Per node: one global scale, the largest line's weight, would
-  // make a light line's test meaningless next to a heavy one; the former scale, the largest element weight,
-  // made the test stricter as the mesh was refined (1e-8 of the tension on a 200-bar mooring line, 4.8
-  // residual assemblies per step where 3.5 give the same tension ranges to 1.5e-4).
-  m_assembler->nodeRoundoffFloor(start, m_nodeFloor);
-  m_newton.setAllowed(m_settings.tolerance, m_nodeFloor);
   if (mode.seabedPredictor && sameStep(dt, m_lastStep)) {
-    const std::vector<double>& scale = m_assembler->nodeForceScale();
-    m_allowed.resize(m_nodeFloor.size());
-    for (std::size_t n = 0; n < m_nodeFloor.size(); ++n)
-      m_allowed[n] = std::max(m_settings.tolerance * scale[n], m_nodeFloor[n]);
     const PredictorCoefficients coefficients{p.beta, p.gamma, 1.0 - p.alphaM, 1.0 - p.alphaF};
-    m_seabedPredictor.correct(start, coefficients, dt, m_allowed, dq);
+    m_seabedPredictor.correct(start, coefficients, dt, m_newton.allowedForce(), dq);
   }
   // A contact barrier filters the predictor too: extrapolated over a step much longer than an impact, it
   // can carry a line through another (a 20 m/s bar 1 m past a wire in one 0.05 s step: TunnellingTest),

@@ -104,8 +104,7 @@ class GeneralizedAlpha {
   model::DynamicSpec m_settings;
   std::vector<model::PrescribedNode> m_prescribed;
   AlphaParameters m_params;
-  std::vector<double> m_nodeFloor;  // round-off floor of each node this step [N]
-  std::vector<double> m_allowed;    // the out-of-balance force each node is allowed this step [N]
+  std::vector<double> m_nodeFloor;     // round-off floor of each node this step [N]
   std::vector<int> m_constrainedDofs;  // full DOFs without an equation
   solver::NewtonIteration m_newton;    // the iteration matrix, its refresh, blocks and parts
   SeabedPredictor m_seabedPredictor;   // the predictor's correction on the seabed (dynamics.solver.predictor)
