@@ -107,34 +107,51 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   constexpr int kBlock = 8;
   const int segments = b.nodeCount - 1;
   const int blocks = (segments + kBlock - 1) / kBlock;
-  std::vector<Vec3> centre(static_cast<std::size_t>(std::max(blocks, 0)));
-  std::vector<double> reach(centre.size());
-  for (int k = 0; k < blocks; ++k) {
-    const int first = b.firstNode + k * kBlock, last = b.firstNode + std::min((k + 1) * kBlock, segments);
-    Vec3 lo = state.position[first], hi = lo;
-    double contact = 0.0;
-    for (int n = first; n <= last; ++n) {
-      lo = lo.cwiseMin(state.position[n]);
-      hi = hi.cwiseMax(state.position[n]);
-      contact = std::max(contact, 0.5 * diameter[n]);
+  std::vector<Vec3> centre;
+  std::vector<double> reach;
+  // Per segment: its middle and the radius of its bounding sphere plus its larger contact radius, made for
+  // a block's segments when a node first searches the block (most blocks are never searched).
+  std::vector<Vec3> segmentMiddle;
+  std::vector<double> segmentReach;
+  std::vector<char> blockSpheres;
+  // Made when the first node is searched (the envelope's record() skips most nodes, often all of a side).
+  bool blockSpheresMade = false;
+  const auto makeBlockSpheres = [&] {
+    if (blockSpheresMade) return;
+    blockSpheresMade = true;
+    centre.resize(static_cast<std::size_t>(std::max(blocks, 0)));
+    reach.resize(centre.size());
+    segmentMiddle.resize(static_cast<std::size_t>(std::max(segments, 0)));
+    segmentReach.resize(segmentMiddle.size());
+    blockSpheres.assign(centre.size(), 0);
+    for (int k = 0; k < blocks; ++k) {
+      const int first = b.firstNode + k * kBlock, last = b.firstNode + std::min((k + 1) * kBlock, segments);
+      Vec3 lo = state.position[first], hi = lo;
+      double contact = 0.0;
+      for (int n = first; n <= last; ++n) {
+        lo = lo.cwiseMin(state.position[n]);
+        hi = hi.cwiseMax(state.position[n]);
+        contact = std::max(contact, 0.5 * diameter[n]);
+      }
+      const Vec3 c = 0.5 * (lo + hi);
+      double r2 = 0.0;  // [m^2] (one root per block)
+      for (int n = first; n <= last; ++n) r2 = std::max(r2, (state.position[n] - c).squaredNorm());
+      centre[static_cast<std::size_t>(k)] = c;
+      reach[static_cast<std::size_t>(k)] = std::sqrt(r2) + contact;
     }
-    const Vec3 c = 0.5 * (lo + hi);
-    double r = 0.0;
-    for (int n = first; n <= last; ++n) r = std::max(r, (state.position[n] - c).norm());
-    centre[static_cast<std::size_t>(k)] = c;
-    reach[static_cast<std::size_t>(k)] = r + contact;
-  }
-  // Per segment: its middle and the radius of its bounding sphere plus its larger contact radius.
-  std::vector<Vec3> segmentMiddle(static_cast<std::size_t>(std::max(segments, 0)));
-  std::vector<double> segmentReach(segmentMiddle.size());
-  for (int j = 0; j < segments; ++j) {
-    const int m1 = b.firstNode + j;
-    const Vec3& p = state.position[m1];
-    const Vec3& q = state.position[m1 + 1];
-    segmentMiddle[static_cast<std::size_t>(j)] = 0.5 * (p + q);
-    segmentReach[static_cast<std::size_t>(j)] =
-        0.5 * (q - p).norm() + 0.5 * std::max(diameter[m1], diameter[m1 + 1]);
-  }
+  };
+  const auto makeSegmentSpheres = [&](int k) {
+    if (blockSpheres[static_cast<std::size_t>(k)]) return;
+    blockSpheres[static_cast<std::size_t>(k)] = 1;
+    for (int j = k * kBlock; j < std::min((k + 1) * kBlock, segments); ++j) {
+      const int m1 = b.firstNode + j;
+      const Vec3& p = state.position[m1];
+      const Vec3& q = state.position[m1 + 1];
+      segmentMiddle[static_cast<std::size_t>(j)] = 0.5 * (p + q);
+      segmentReach[static_cast<std::size_t>(j)] =
+          0.5 * (q - p).norm() + 0.5 * std::max(diameter[m1], diameter[m1 + 1]);
+    }
+  };
   std::vector<int>& hint = m_hint[{line, other}];
   hint.resize(static_cast<std::size_t>(a.nodeCount), 0);
   std::vector<double> out(static_cast<std::size_t>(a.nodeCount), kInf);
@@ -151,14 +168,20 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   near.reserve(static_cast<std::size_t>(blocks));
   for (int start = 0; start < a.nodeCount; start += kBlock) {
     const int stop = std::min(start + kBlock, a.nodeCount);
+    // Every node of the block skipped: out stays +inf, lower -inf (what the searches below would leave).
+    if (std::all_of(skipNode.begin() + start, skipNode.begin() + stop, [](char c) { return c != 0; }))
+      continue;
+    makeBlockSpheres();
     Vec3 lo = state.position[a.firstNode + start], hi = lo;
     for (int i = start; i < stop; ++i) {
       lo = lo.cwiseMin(state.position[a.firstNode + i]);
       hi = hi.cwiseMax(state.position[a.firstNode + i]);
     }
     const Vec3 ca = 0.5 * (lo + hi);
-    double ra = 0.0;
-    for (int i = start; i < stop; ++i) ra = std::max(ra, (state.position[a.firstNode + i] - ca).norm());
+    double ra2 = 0.0;  // [m^2]
+    for (int i = start; i < stop; ++i)
+      ra2 = std::max(ra2, (state.position[a.firstNode + i] - ca).squaredNorm());
+    const double ra = std::sqrt(ra2);
     if (onlyBelow &&
         std::any_of(skipNode.begin() + start, skipNode.begin() + stop, [](char c) { return c == 0; })) {
       double threshold = -kInf;
@@ -217,6 +240,7 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
         // Skip when |x - c| - reach >= best, tested on squares (no root) while best + reach > 0.
         const double limit = best + reach[static_cast<std::size_t>(k)];
         if (limit > 0.0 && (x - centre[static_cast<std::size_t>(k)]).squaredNorm() >= limit * limit) continue;
+        makeSegmentSpheres(k);
         const int end = std::min((k + 1) * kBlock, segments);
         for (int j = k * kBlock; j < end; ++j) {
           // The same test on the segment's own bounding sphere (no root, no projection) before its distance.
@@ -313,11 +337,16 @@ void ClearanceEnvelope::record(const model::State& state) {
     skip.assign(static_cast<std::size_t>(a.nodeCount), 0);
     for (std::size_t i = 0; i < skip.size(); ++i) {
       const Vec3& x = state.position[a.firstNode + static_cast<int>(i)];
-      const double now = s.knownClearance[i] - (x - s.knownPosition[i]).norm() - (travel - s.knownTravel[i]);
       const double envelope = s.dynamicClearance[i];
       const double above = envelope - pairMinimum[side / 2];
       const double tolerance = std::isfinite(above) ? kEnvelopeTolerance * std::max(above, 0.0) : 0.0;
-      skip[i] = now >= envelope - tolerance ? 1 : 0;
+      // Skipped when the bound now, c0 - |x - x0| - travel since, is not below envelope - tolerance: when
+      // |x - x0| <= room, tested on squares (no root per node). c0 = +inf: no segment may touch the node.
+      const double room = s.knownClearance[i] - (travel - s.knownTravel[i]) - (envelope - tolerance);
+      skip[i] = s.knownClearance[i] == kInf ||
+                        (room >= 0.0 && (x - s.knownPosition[i]).squaredNorm() <= room * room)
+                    ? 1
+                    : 0;
     }
     const std::vector<double> c = nodeClearance(state, s.line, s.other, &s.dynamicClearance, &skip, &lower);
     for (std::size_t i = 0; i < c.size(); ++i) {

@@ -106,14 +106,13 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
   // docs/performance.md.)
   bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
   if (reuse) {
-    double moved = 0.0;
-    for (std::size_t i = 0; i < m_proxies.size() && reuse; ++i) {
-      moved = std::max({moved, (m_proxies[i].a - m_verletProxies[i].a).norm(),
-                        (m_proxies[i].b - m_verletProxies[i].b).norm()});
+    // margin + 2 moved <= the list's margin, on squares (no root per segment end).
+    const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
+    for (std::size_t i = 0; i < m_proxies.size() && reuse; ++i)
       // A non-finite position goes to the broad phase, which reports it.
-      reuse =
-          margin + 2.0 * moved <= m_verletMargin && m_proxies[i].a.allFinite() && m_proxies[i].b.allFinite();
-    }
+      reuse = (m_proxies[i].a - m_verletProxies[i].a).squaredNorm() <= allowed2 &&
+              (m_proxies[i].b - m_verletProxies[i].b).squaredNorm() <= allowed2 &&
+              m_proxies[i].a.allFinite() && m_proxies[i].b.allFinite();
   }
   if (!reuse) {
     BroadPhaseOptions options = m_broadPhase.options();

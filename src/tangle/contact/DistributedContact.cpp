@@ -277,9 +277,14 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
   const double radii = m_radius[slave] + m_radius[master];
   const geometry::SegmentDistanceResult chords = geometry::segmentDistance(a0, a1, b0, b1);
-  // The C1 centreline lies off the chord by at most about (kink angle) L / 8: a quarter of the element
-  // lengths bounds it.
-  if (chords.distance >= radii + 0.25 * (ea.restLength + eb.restLength)) return false;
+  // Each piece of the C1 centreline (xi, t in [0, 1], the ranges the gap is measured on) lies within its
+  // chordDeviationBound of its chord: pieces whose chords are farther apart than the radii and both bounds
+  // cannot touch. (With a quarter of the element lengths as the bound, 158 000 of drilling-riser-drift's
+  // 200 000 searches went on to the minimisation, 79 000 of them of pairs this bound leaves out.)
+  if (chords.distance >= radii +
+                             chordDeviationBound(m_curves[static_cast<std::size_t>(slave)], state.position) +
+                             chordDeviationBound(m_curves[static_cast<std::size_t>(master)], state.position))
+    return false;
   const CentrelineDistance closest = centrelineDistance(*m_model, state.position, slave, master, chords.s,
                                                         chords.t, false, false, true, &m_curves);
   // The slave's share of its line is xi in [0, 1] (its neighbours integrate the rest), and the master's is
@@ -446,8 +451,18 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   const Vec3 x = centrelineStencil(m_curves[static_cast<std::size_t>(slave)], xi).point(state.position);
   for (const int f : masters) {
     const model::LineElement& eb = elements[f];
-    const double t0 =
-        std::clamp(projectOnAxis(x, state.position[eb.node1], state.position[eb.node2]), 0.0, 1.0);
+    const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
+    const double t0 = std::clamp(projectOnAxis(x, b0, b1), 0.0, 1.0);
+    if (bestMaster >= 0) {
+      // The piece lies within its chordDeviationBound of the chord: a piece whose chord is farther from x
+      // than that and the best distance so far cannot be the better one below, and needs no projection (a
+      // margin well above the tie's for round-off).
+      const double tie = 1e-9 * std::max(1.0, best.distance);
+      const double chordDistance = (x - (b0 + t0 * (b1 - b0))).norm();
+      if (chordDistance - chordDeviationBound(m_curves[static_cast<std::size_t>(f)], state.position) >
+          best.distance + tie)
+        continue;
+    }
     const CentrelineDistance p = project(state, slave, xi, f, t0);
     const double tie = 1e-12 * std::max(1.0, p.distance);
     const bool better = bestMaster < 0 || p.distance < best.distance - tie ||

@@ -141,6 +141,9 @@ class DistributedContact {
     m_curves = elementCurves(*m_model, true);
     m_found.valid = false;
   }
+  /// Every element's C1 centreline data (elementCurves(model, true), kept up to date with parted elements):
+  /// for the other searches of the distributed formulation's curves (centrelineDistance's `curves`).
+  const std::vector<ElementCurve>& curves() const { return m_curves; }
   /// A step, load increment or retry starts: the passes' shares are decided again at the next findSamples.
   void beginStep() {
     m_bent.clear();

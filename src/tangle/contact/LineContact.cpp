@@ -151,12 +151,12 @@ double LineContact::arcOf(int line, int element, double w) const {
 
 double LineContact::broadPhaseMargin(const model::State& state, bool dynamic) const {
   // What any node can move within a few nominal steps, plus the largest contact radius.
-  double maxSpeed = 0.0;
+  double maxSpeed2 = 0.0;  // [m^2/s^2] (one root, not one per node)
   const model::DofMap& dofs = m_model->dofs();
   if (dynamic)
     for (int n = 0; n < m_model->nodeCount(); ++n)
-      maxSpeed = std::max(maxSpeed, state.velocity.segment<3>(dofs.firstDof(n)).norm());
-  return m_search.maxRadius() + 4.0 * maxSpeed * m_timeStep;
+      maxSpeed2 = std::max(maxSpeed2, state.velocity.segment<3>(dofs.firstDof(n)).squaredNorm());
+  return m_search.maxRadius() + 4.0 * std::sqrt(maxSpeed2) * m_timeStep;
 }
 
 bool LineContact::markLoadedNodes(std::vector<char>& mark) const {
@@ -574,7 +574,7 @@ double LineContact::limitStep(const model::State& state) {
       // would see a touch that late and let a nominal step run into it (an unresolved impact, its
       // force applied over the whole step).
       const CentrelineDistance cd = centrelineDistance(*m_model, state.position, a.element, b.element, d.s,
-                                                       d.t, false, false, smoothCables);
+                                                       d.t, false, false, smoothCables, curves());
       gap = cd.distance - radii;
       n = cd.pointA - cd.pointB;
       relativeVelocity = stencilValue(state.velocity, cd.a) - stencilValue(state.velocity, cd.b);
@@ -708,10 +708,10 @@ std::string LineContact::rejectStep(const model::State& before, const model::Sta
       // The distributed formulation measures the C1 centrelines: a chord of a sharply folded cable can
       // cut through a line the smooth curve wraps. Crossed only if the smooth curves' separation reversed
       // too, at a stationary point inside both.
-      const CentrelineDistance c0 =
-          centrelineDistance(*m_model, before.position, a.element, b.element, d0.s, d0.t, false, false, true);
-      const CentrelineDistance c1 =
-          centrelineDistance(*m_model, after.position, a.element, b.element, d1.s, d1.t, false, false, true);
+      const CentrelineDistance c0 = centrelineDistance(*m_model, before.position, a.element, b.element, d0.s,
+                                                       d0.t, false, false, true, curves());
+      const CentrelineDistance c1 = centrelineDistance(*m_model, after.position, a.element, b.element, d1.s,
+                                                       d1.t, false, false, true, curves());
       crossed = c1.sFree && c1.tFree && (c0.pointA - c0.pointB).dot(c1.pointA - c1.pointB) < 0.0;
     }
     if (!tooDeep && !crossed) continue;
@@ -932,6 +932,36 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   const auto& elements = m_model->elements();
   std::array<double, 3> best{kInf, 0.0, 0.0};
   int i0 = 0, j0 = 0;  // elements of the nearest pair along each line
+  // The gap of the nearest pair at the last call (the lines move little between steps) bounds the minimum:
+  // pairs whose boxes are farther apart are culled from the start. Every pair that may attain the minimum is
+  // still measured, in the same order: the same result as without it.
+  double seed = kInf;
+  std::pair<int, int>& hint = m_clearanceHint[{lineA, lineB}];
+  if (hint.first < la.elementCount && hint.second < lb.elementCount &&
+      !(lineA == lineB && std::abs(hint.first - hint.second) <= 1) &&
+      m_search.elementPairAllowed(la.firstElement + hint.first, lb.firstElement + hint.second)) {
+    const model::LineElement& ea = elements[la.firstElement + hint.first];
+    const model::LineElement& eb = elements[lb.firstElement + hint.second];
+    seed = geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
+                                     state.position[eb.node1], state.position[eb.node2])
+               .distance -
+           m_radius[la.firstElement + hint.first] - m_radius[lb.firstElement + hint.second];
+  }
+  // Line B's elements in blocks of kBlock: a box and the largest radius per block, whose distance bound to an
+  // element of A culls the whole block at once (a bound below each of its pairs' bounds: the same result).
+  constexpr int kBlock = 8;
+  const int blocks = (lb.elementCount + kBlock - 1) / kBlock;
+  std::vector<Vec3> blockLo(static_cast<std::size_t>(blocks)), blockHi(blockLo.size());
+  std::vector<double> blockRadius(blockLo.size(), 0.0);
+  for (int j = 0; j < lb.elementCount; ++j) {
+    const model::LineElement& eb = elements[lb.firstElement + j];
+    const std::size_t k = static_cast<std::size_t>(j / kBlock);
+    const Vec3 lo = state.position[eb.node1].cwiseMin(state.position[eb.node2]);
+    const Vec3 hi = state.position[eb.node1].cwiseMax(state.position[eb.node2]);
+    blockLo[k] = j % kBlock == 0 ? lo : Vec3(blockLo[k].cwiseMin(lo));
+    blockHi[k] = j % kBlock == 0 ? hi : Vec3(blockHi[k].cwiseMax(hi));
+    blockRadius[k] = std::max(blockRadius[k], m_radius[lb.firstElement + j]);
+  }
   for (int i = 0; i < la.elementCount; ++i) {
     const model::LineElement& ea = elements[la.firstElement + i];
     const Vec3& a0 = state.position[ea.node1];
@@ -939,6 +969,14 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
     const Vec3 lo = a0.cwiseMin(a1), hi = a0.cwiseMax(a1);
     const double ra = m_radius[la.firstElement + i];
     for (int j = 0; j < lb.elementCount; ++j) {
+      if (j % kBlock == 0) {
+        const std::size_t k = static_cast<std::size_t>(j / kBlock);
+        const Vec3 gapBlock = (lo - blockHi[k]).cwiseMax(blockLo[k] - hi).cwiseMax(0.0);
+        if (gapBlock.norm() - ra - blockRadius[k] > std::min({best[0], m_spec.clearanceMargin, seed})) {
+          j += kBlock - 1;
+          continue;
+        }
+      }
       if (lineA == lineB && std::abs(i - j) <= 1) continue;
       // Not across an exclusion (contact.exclude, exclusion_zones, a shared connection: lines at one fairlead
       // or at one point touch there by construction; the clearance is the contact's, which skips them too).
@@ -950,7 +988,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
       // Box distance lower bound: skip pairs that cannot beat the best (or the margin).
       const Vec3 gapBox = (lo - b0.cwiseMax(b1)).cwiseMax(b0.cwiseMin(b1) - hi).cwiseMax(0.0);
       const double bound = gapBox.norm() - ra - rb;
-      if (bound > std::min(best[0], m_spec.clearanceMargin)) continue;
+      if (bound > std::min({best[0], m_spec.clearanceMargin, seed})) continue;
       const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
       const double gap = d.distance - ra - rb;
       if (gap < best[0]) {
@@ -961,6 +999,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
       }
     }
   }
+  if (std::isfinite(best[0])) hint = {i0, j0};
   // Beams (and with the distributed formulation, cables too) are measured on their smooth centrelines, as
   // contact measures them: the chords' gap is off by up to kappa L^2 / 8 (4 cm for a flexible of 10 m
   // elements near its touchdown, an overlap where the contact saw 1 mm; a wire of 6 m bars kinked over a
@@ -983,8 +1022,8 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
           const geometry::SegmentDistanceResult d = geometry::segmentDistance(
               state.position[elements[ea].node1], state.position[elements[ea].node2],
               state.position[elements[eb].node1], state.position[elements[eb].node2]);
-          const CentrelineDistance c =
-              centrelineDistance(*m_model, state.position, ea, eb, d.s, d.t, false, false, smoothCables);
+          const CentrelineDistance c = centrelineDistance(*m_model, state.position, ea, eb, d.s, d.t, false,
+                                                          false, smoothCables, curves());
           const double gap = c.distance - m_radius[ea] - m_radius[eb];
           if (gap < refined) {
             refined = gap;

@@ -340,8 +340,16 @@ class LineContact final : public solver::LoadContributor {
   /// last accepted step). Contact normals point to the side the lines were on there (findContacts).
   std::vector<Vec3> m_reference;
   bool m_debug = false;  // TANGLE_DEBUG_CONTACT set: print the contact search on stderr
+  /// Per (lineA, lineB): the elements of the nearest chord pair at the last clearance() call (a first
+  /// bound that culls most pairs; a cache, not part of the result).
+  mutable std::map<std::pair<int, int>, std::pair<int, int>> m_clearanceHint;
   std::unique_ptr<DistributedContact> m_distributed;  // contact.formulation: distributed
   bool m_lastDynamic = false;                         // the last assembly was a dynamic one
+  /// The distributed formulation's element curves (DistributedContact::curves) for centrelineDistance, or
+  /// null (the point formulation: cables on their chords, the curves made per call).
+  const std::vector<ElementCurve>* curves() const {
+    return m_distributed ? &m_distributed->curves() : nullptr;
+  }
   /// The distributed formulation's parts of addForces, commitStep and limitStep.
   void addDistributedForces(const model::State& state, const solver::AssemblyRequest& request, VecX& force,
                             solver::SystemMatrix* matrix);

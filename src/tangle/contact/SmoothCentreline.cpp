@@ -6,24 +6,6 @@
 
 namespace tangle::contact {
 
-Vec3 CentrelineStencil::point(const std::vector<Vec3>& x) const {
-  Vec3 p = Vec3::Zero();
-  for (int k = 0; k < 4; ++k) p += N[k] * x[node[k]];
-  return p;
-}
-
-Vec3 CentrelineStencil::tangent(const std::vector<Vec3>& x) const {
-  Vec3 p = Vec3::Zero();
-  for (int k = 0; k < 4; ++k) p += dN[k] * x[node[k]];
-  return p;
-}
-
-Vec3 CentrelineStencil::secondDerivative(const std::vector<Vec3>& x) const {
-  Vec3 p = Vec3::Zero();
-  for (int k = 0; k < 4; ++k) p += ddN[k] * x[node[k]];
-  return p;
-}
-
 Vec3 CentrelineStencil::value(const model::DofMap& dofs, const VecX& field) const {
   Vec3 v = Vec3::Zero();
   for (int k = 0; k < 4; ++k)
@@ -84,23 +66,12 @@ std::vector<ElementCurve> elementCurves(const model::Model& model, bool smoothCa
   return out;
 }
 
-CentrelineStencil centrelineStencil(const ElementCurve& c, double s) {
-  CentrelineStencil st;
-  st.node = c.node;
-  if (!c.smooth) {
-    st.N = {0.0, 1.0 - s, s, 0.0};
-    st.dN = {0.0, -1.0, 1.0, 0.0};
-    return st;
-  }
-  // Cubic Hermite basis and its derivatives.
-  const double s2 = s * s, s3 = s2 * s;
-  const double h00 = 2 * s3 - 3 * s2 + 1, h01 = -2 * s3 + 3 * s2, h10 = s3 - 2 * s2 + s, h11 = s3 - s2;
-  const double d00 = 6 * s2 - 6 * s, d01 = -6 * s2 + 6 * s, d10 = 3 * s2 - 4 * s + 1, d11 = 3 * s2 - 2 * s;
-  const double e00 = 12 * s - 6, e01 = -12 * s + 6, e10 = 6 * s - 4, e11 = 6 * s - 2;
-  st.N = {h10 * c.a0, h00 + h10 * c.a1 + h11 * c.b1, h01 + h10 * c.a2 + h11 * c.b2, h11 * c.b3};
-  st.dN = {d10 * c.a0, d00 + d10 * c.a1 + d11 * c.b1, d01 + d10 * c.a2 + d11 * c.b2, d11 * c.b3};
-  st.ddN = {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
-  return st;
+double chordDeviationBound(const ElementCurve& c, const std::vector<Vec3>& x) {
+  if (!c.smooth) return 0.0;
+  const Vec3 d = x[c.node[2]] - x[c.node[1]];
+  const Vec3 m1 = c.a0 * x[c.node[0]] + c.a1 * x[c.node[1]] + c.a2 * x[c.node[2]];
+  const Vec3 m2 = c.b1 * x[c.node[1]] + c.b2 * x[c.node[2]] + c.b3 * x[c.node[3]];
+  return 4.0 / 27.0 * ((m1 - d).norm() + (m2 - d).norm());
 }
 
 CentrelineStencil centrelineStencil(const model::Model& model, int element, double s, bool smoothCables) {

@@ -42,11 +42,19 @@ struct CentrelineStencil {
   std::array<int, 4> node{};               ///< global node indices
   std::array<double, 4> N{}, dN{}, ddN{};  ///< weights [-] and their first and second s-derivatives [-]
 
-  Vec3 point(const std::vector<Vec3>& x) const;             ///< c(s) [m]
-  Vec3 tangent(const std::vector<Vec3>& x) const;           ///< dc/ds [m]
-  Vec3 secondDerivative(const std::vector<Vec3>& x) const;  ///< d2c/ds2 [m]
+  // Inline: the contact search evaluates them millions of times per run (DistributedContact::project).
+  Vec3 point(const std::vector<Vec3>& x) const { return combine(N, x); }               ///< c(s) [m]
+  Vec3 tangent(const std::vector<Vec3>& x) const { return combine(dN, x); }            ///< dc/ds [m]
+  Vec3 secondDerivative(const std::vector<Vec3>& x) const { return combine(ddN, x); }  ///< d2c/ds2 [m]
   /// The same combination of a per-DOF field (velocity [m/s], acceleration [m/s^2]).
   Vec3 value(const model::DofMap& dofs, const VecX& field) const;
+
+ private:
+  Vec3 combine(const std::array<double, 4>& w, const std::vector<Vec3>& x) const {
+    Vec3 p = Vec3::Zero();
+    for (int k = 0; k < 4; ++k) p += w[k] * x[node[k]];
+    return p;
+  }
 };
 
 /// True if `element` belongs to a line measured on the smooth centreline (a beam), false for a cable;
@@ -68,8 +76,32 @@ struct ElementCurve {
 ElementCurve elementCurve(const model::Model& model, int element, bool smoothCables = false);
 /// The curve data of every element of the model.
 std::vector<ElementCurve> elementCurves(const model::Model& model, bool smoothCables = false);
-/// Stencil at parameter s of an element given by its curve data.
-CentrelineStencil centrelineStencil(const ElementCurve& curve, double s);
+/// Stencil at parameter s of an element given by its curve data (inline: see CentrelineStencil::point).
+inline CentrelineStencil centrelineStencil(const ElementCurve& c, double s) {
+  CentrelineStencil st;
+  st.node = c.node;
+  if (!c.smooth) {
+    st.N = {0.0, 1.0 - s, s, 0.0};
+    st.dN = {0.0, -1.0, 1.0, 0.0};
+    return st;
+  }
+  // Cubic Hermite basis and its derivatives.
+  const double s2 = s * s, s3 = s2 * s;
+  const double h00 = 2 * s3 - 3 * s2 + 1, h01 = -2 * s3 + 3 * s2, h10 = s3 - 2 * s2 + s, h11 = s3 - s2;
+  const double d00 = 6 * s2 - 6 * s, d01 = -6 * s2 + 6 * s, d10 = 3 * s2 - 4 * s + 1, d11 = 3 * s2 - 2 * s;
+  const double e00 = 12 * s - 6, e01 = -12 * s + 6, e10 = 6 * s - 4, e11 = 6 * s - 2;
+  st.N = {h10 * c.a0, h00 + h10 * c.a1 + h11 * c.b1, h01 + h10 * c.a2 + h11 * c.b2, h11 * c.b3};
+  st.dN = {d10 * c.a0, d00 + d10 * c.a1 + d11 * c.b1, d01 + d10 * c.a2 + d11 * c.b2, d11 * c.b3};
+  st.ddN = {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
+  return st;
+}
+
+/// Largest distance [m] of an element's piece of the centreline, s in [0, 1], from its chord at `position`:
+/// the cubic is the chord's linear interpolation plus h10(s) (m1 - d) + h11(s) (m2 - d), d = x2 - x1 and
+/// m1, m2 the nodal tangents, and |h10|, |h11| <= 4/27 on [0, 1], so the bound is 4/27 (|m1 - d| + |m2 - d|)
+/// (0 for a chord). A cheap test that two pieces cannot touch: their chords farther apart than the radii
+/// plus both bounds.
+double chordDeviationBound(const ElementCurve& curve, const std::vector<Vec3>& position);
 
 /// Stencil of the smooth centreline (the chord's linear interpolation for a cable) on `element` at parameter
 /// s (s may lie a little outside [0, 1]: the cubic is extrapolated).

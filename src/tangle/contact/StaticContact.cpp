@@ -120,10 +120,10 @@ std::string LineContact::rejectState(const model::State& state) {
                    passedThrough(a.element, b.element, r, d);
     if (crossed && m_distributed) {
       // On the C1 centrelines the distributed formulation measures (see rejectStep).
-      const CentrelineDistance c0 =
-          centrelineDistance(*m_model, m_reference, a.element, b.element, r.s, r.t, false, false, true);
-      const CentrelineDistance c1 =
-          centrelineDistance(*m_model, state.position, a.element, b.element, d.s, d.t, false, false, true);
+      const CentrelineDistance c0 = centrelineDistance(*m_model, m_reference, a.element, b.element, r.s, r.t,
+                                                       false, false, true, curves());
+      const CentrelineDistance c1 = centrelineDistance(*m_model, state.position, a.element, b.element, d.s,
+                                                       d.t, false, false, true, curves());
       crossed = c1.sFree && c1.tFree && (c0.pointA - c0.pointB).dot(c1.pointA - c1.pointB) < 0.0;
     }
     if (crossed) return fmt::format("{} have passed through each other", where);
