@@ -155,6 +155,18 @@ void ContactCandidates::markLoadedNodes(std::vector<char>& mark) const {
 }
 
 void ContactCandidates::buildProxies(const model::State& state) {
+  // While no element of the model has parted the proxies are every element of the enabled lines, in the
+  // same order: only their ends move (the build runs twice per time step).
+  if (m_proxiesComplete && !m_model->parted().any()) {
+    const auto& elements = m_model->elements();
+    for (SegmentProxy& p : m_proxies) {
+      const model::LineElement& el = elements[static_cast<std::size_t>(p.element)];
+      p.a = state.position[el.node1];
+      p.b = state.position[el.node2];
+    }
+    return;
+  }
+  m_proxiesComplete = !m_model->parted().any();
   m_proxies.clear();
   for (int l = 0; l < static_cast<int>(m_model->lines().size()); ++l) {
     if (!m_lineEnabled[l]) continue;

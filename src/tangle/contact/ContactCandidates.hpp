@@ -77,6 +77,7 @@ class ContactCandidates {
       m_zones;  // (lineA, lineB) -> zones on A [from, to] and B [from, to]
   BroadPhase m_broadPhase;
   std::vector<SegmentProxy> m_proxies;
+  bool m_proxiesComplete = false;  // m_proxies holds every element of the enabled lines (none parted)
   std::vector<CandidatePair> m_candidates;
   /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] of the proxies at m_verletProxies.
   std::vector<CandidatePair> m_verletPairs;
