@@ -31,16 +31,6 @@ LinePairFilter allowLinePairs(const std::vector<std::pair<int, int>>& allowed) {
   };
 }
 
-ProxyBox proxyBox(const SegmentProxy& p, double margin) {
-  const double w = p.radius + 0.5 * margin;
-  return {p.a.cwiseMin(p.b).array() - w, p.a.cwiseMax(p.b).array() + w};
-}
-
-bool boxesOverlap(const ProxyBox& a, const ProxyBox& b) {
-  return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() && b.lo.y() <= a.hi.y() &&
-         a.lo.z() <= b.hi.z() && b.lo.z() <= a.hi.z();
-}
-
 BroadPhase::BroadPhase(BroadPhaseOptions options) : m_options(std::move(options)) {
   if (!(m_options.margin >= 0.0) || !std::isfinite(m_options.margin)) {
     throw Error("BroadPhase: margin must be finite and >= 0, got " + std::to_string(m_options.margin));

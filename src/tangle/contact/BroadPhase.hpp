@@ -67,8 +67,16 @@ struct SegmentProxy {
 struct ProxyBox {
   Vec3 lo, hi;
 };
-ProxyBox proxyBox(const SegmentProxy& p, double margin);
-bool boxesOverlap(const ProxyBox& a, const ProxyBox& b);
+// Inline: ContactCandidates::pairsWithin tests every pair of its Verlet list with them at each call (60 M
+// calls in drift-into-spread's 200 s).
+inline ProxyBox proxyBox(const SegmentProxy& p, double margin) {
+  const double w = p.radius + 0.5 * margin;
+  return {p.a.cwiseMin(p.b).array() - w, p.a.cwiseMax(p.b).array() + w};
+}
+inline bool boxesOverlap(const ProxyBox& a, const ProxyBox& b) {
+  return a.lo.x() <= b.hi.x() && b.lo.x() <= a.hi.x() && a.lo.y() <= b.hi.y() && b.lo.y() <= a.hi.y() &&
+         a.lo.z() <= b.hi.z() && b.lo.z() <= a.hi.z();
+}
 
 /// A candidate pair: indices into the proxy array, first < second.
 struct CandidatePair {

@@ -81,6 +81,22 @@ class ClearanceEnvelope {
     double time;       ///< [s] (NaN for the static one)
   };
   Minimum minimum(std::size_t pair, bool dynamic) const;
+  /// nodeClearance, with the spheres that bound blocks of `other`'s segments kept from call to call when
+  /// `travel` (how far line `other` has moved in all, m_travel [m]) is given.
+  std::vector<double> search(const model::State& state, int line, int other,
+                             const std::vector<double>* onlyBelow, const std::vector<char>* skip,
+                             std::vector<double>* lower, const double* travel) const;
+  /// Bounding spheres of a line's blocks of segments and of their segments, as made at some earlier call.
+  struct LineSpheres {
+    double travel = -1.0;       ///< the line's m_travel when the blocks' spheres were made [m] (< 0: never)
+    std::vector<Vec3> centre;   ///< per block [m]
+    std::vector<double> reach;  ///< per block: sphere radius plus its largest contact radius [m]
+    std::vector<Vec3> segmentMiddle;   ///< per segment [m]
+    std::vector<double> segmentReach;  ///< per segment: half its length plus its larger contact radius [m]
+    /// Per block: the line's m_travel when its segments' spheres were made [m] (< 0: not made).
+    std::vector<double> segmentTravel;
+  };
+  mutable std::map<std::size_t, LineSpheres> m_spheres;  ///< per line (record()'s searches)
 
   const model::Model* m_model;
   /// The contact's rules of which element pairs may touch (its exclusions and shared connections), for the
@@ -97,6 +113,8 @@ class ClearanceEnvelope {
   /// displacement [m]: no point of the line has moved farther since any earlier call than the difference.
   std::vector<Vec3> m_lastPosition;
   std::vector<double> m_travel;
+  /// Per pair, the smallest dynamic clearance of its nodes so far [m] (record()).
+  std::vector<double> m_pairMinimum;
 };
 
 }  // namespace tangle::contact

@@ -97,22 +97,40 @@ std::size_t ContactCandidates::allowedPairCount() const {
 }
 
 std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& state, double margin) {
-  buildProxies(state);
   // Verlet list (skin): the broad phase runs with a margin larger than asked for, and its pairs serve later
   // calls while no segment end has moved more than half the extra margin since. A box of margin m now lies
   // inside the box of margin m + 2 delta at the earlier positions when no end has moved more than delta,
   // so the earlier list holds every pair overlapping now; the box test below keeps exactly those, in the
   // broad phase's order: the same pairs as a fresh search. (The search runs twice per step:
   // docs/performance.md.)
-  bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
-  if (reuse) {
-    // margin + 2 moved <= the list's margin, on squares (no root per segment end).
-    const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
-    for (std::size_t i = 0; i < m_proxies.size() && reuse; ++i)
-      // A non-finite position goes to the broad phase, which reports it.
-      reuse = (m_proxies[i].a - m_verletProxies[i].a).squaredNorm() <= allowed2 &&
-              (m_proxies[i].b - m_verletProxies[i].b).squaredNorm() <= allowed2 &&
-              m_proxies[i].a.allFinite() && m_proxies[i].b.allFinite();
+  // margin + 2 moved <= the list's margin, on squares (no root per segment end), every end tested without
+  // a branch (the list is reused at nearly every call). A non-finite end fails the test (its squared
+  // distance from the list's finite end is NaN or infinite) and goes to the broad phase, which reports it.
+  const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
+  const auto moved = [&](const SegmentProxy& p, const SegmentProxy& q) {
+    return ((p.a - q.a).squaredNorm() <= allowed2) & ((p.b - q.b).squaredNorm() <= allowed2);
+  };
+  bool reuse = false;
+  if (m_proxiesComplete && !m_model->parted().any() && m_verletProxies.size() == m_proxies.size() &&
+      margin <= m_verletMargin) {
+    // buildProxies' update in place and the test in one pass over the proxies.
+    const auto& elements = m_model->elements();
+    bool within = true;
+    for (std::size_t i = 0; i < m_proxies.size(); ++i) {
+      SegmentProxy& p = m_proxies[i];
+      const model::LineElement& el = elements[static_cast<std::size_t>(p.element)];
+      p.a = state.position[el.node1];
+      p.b = state.position[el.node2];
+      within &= moved(p, m_verletProxies[i]);
+    }
+    reuse = within;
+  } else {
+    buildProxies(state);
+    if (m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin) {
+      bool within = true;
+      for (std::size_t i = 0; i < m_proxies.size(); ++i) within &= moved(m_proxies[i], m_verletProxies[i]);
+      reuse = within;
+    }
   }
   if (!reuse) {
     BroadPhaseOptions options = m_broadPhase.options();
@@ -266,6 +284,12 @@ void ContactCandidates::buildExclusions() {
         m_zones[{a, b}].push_back(zone);
       }
   }
+}
+
+bool ContactCandidates::hasExclusions(int lineA, int lineB) const {
+  // The zones elementPairAllowed looks up for an element of each line.
+  return m_zones.count({lineA, lineB}) > 0 || m_zones.count({lineB, lineA}) > 0 ||
+         m_zones.count({lineA, -1}) > 0 || m_zones.count({lineB, -1}) > 0;
 }
 
 bool ContactCandidates::elementPairAllowed(int eA, int eB) const {

@@ -45,6 +45,9 @@ class ContactCandidates {
   /// Whether element eA (of its line) and eB may touch (not excluded by a pair, a zone or a shared
   /// connection point).
   bool elementPairAllowed(int eA, int eB) const;
+  /// False when every element pair of lines a and b may touch (no zone or shared connection excludes any of
+  /// them): callers skip elementPairAllowed then.
+  bool hasExclusions(int lineA, int lineB) const;
 
   /// Rebuilds the proxies at `state` and returns the element pairs whose boxes come within `margin` [m]
   /// of each other and may touch (exclusion zones applied). candidates() then refer to stale proxies.

@@ -214,6 +214,19 @@ class DistributedContact {
   double arcOf(int element, double w) const;
   /// The projection of slave element e's point at xi on master element f, started at t0.
   CentrelineDistance project(const model::State& state, int slave, double xi, int master, double t0) const;
+  /// Projected Newton on V(t) = |x - c(t)|^2 / 2 over master element f's parameter t in [0, 1], started at
+  /// t0: the parameter of the point of its piece nearest x [-] (project's and projectPoint's).
+  double nearestParameter(const model::State& state, const Vec3& x, int master, double t0) const;
+  /// What the interval search needs of project (the same numbers, without the stencils' derivative weights:
+  /// 89 of a search's 140 projections).
+  struct Projection {
+    double t = 0.0;                                     ///< master's parameter [-]
+    Vec3 pointA = Vec3::Zero(), pointB = Vec3::Zero();  ///< the slave's point and the nearest point [m]
+    double distance = 0.0;                              ///< |pointA - pointB| [m]
+    Vec3 tangentA = Vec3::Zero();                       ///< dc_A/dxi at xi [m] (with `slope`)
+  };
+  Projection projectPoint(const model::State& state, int slave, double xi, int master, double t0,
+                          bool slope) const;
   /// A contact interval of a slave element's parameter, with the points inside it where the integrand is
   /// not smooth (where the penetration passes the law's p0 and p1).
   struct Interval {
@@ -224,6 +237,10 @@ class DistributedContact {
   /// per dip of the gap, in increasing xi; false if none.
   bool contactIntervals(const model::State& state, int slave, int master,
                         std::vector<Interval>& intervals) const;
+  /// chordDeviationBound of an element's piece at the state findSamples is searching [m] (contactIntervals
+  /// and addSample, called by findSamples only): computed once per element and search, into m_chordBound,
+  /// which findSamples resets (a master element's bound was computed again for every Gauss point before).
+  double chordBound(const model::State& state, int element) const;
   void addSample(const model::State& state, int slave, double xi, double weight,
                  const std::vector<int>& masters, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
@@ -269,6 +286,7 @@ class DistributedContact {
   /// Bentness per element, held through a step (beginStep clears it).
   std::map<int, double> m_bent;
   std::vector<ElementCurve> m_curves;  ///< every element's C1 centreline data (SmoothCentreline.hpp)
+  mutable std::vector<double> m_chordBound;  ///< chordBound per element [m] (NaN: not yet in this search)
   /// What the last findSamples was asked (its samples are kept while nothing else changed): a step's
   /// converged state is sampled by its last assembly, by LineContact::rejectStep and by commitDistributed
   /// alike; searched once, not three times (risers side by side: 2.08 s against 0.30 s wall for point

@@ -50,11 +50,7 @@ struct CentrelineStencil {
   Vec3 value(const model::DofMap& dofs, const VecX& field) const;
 
  private:
-  Vec3 combine(const std::array<double, 4>& w, const std::vector<Vec3>& x) const {
-    Vec3 p = Vec3::Zero();
-    for (int k = 0; k < 4; ++k) p += w[k] * x[node[k]];
-    return p;
-  }
+  Vec3 combine(const std::array<double, 4>& w, const std::vector<Vec3>& x) const;
 };
 
 /// True if `element` belongs to a line measured on the smooth centreline (a beam), false for a cable;
@@ -77,23 +73,54 @@ ElementCurve elementCurve(const model::Model& model, int element, bool smoothCab
 /// The curve data of every element of the model.
 std::vector<ElementCurve> elementCurves(const model::Model& model, bool smoothCables = false);
 /// Stencil at parameter s of an element given by its curve data (inline: see CentrelineStencil::point).
+/// The weights N_k(s) of a piece [-] (centrelineStencil's N).
+inline std::array<double, 4> centrelineWeights(const ElementCurve& c, double s) {
+  if (!c.smooth) return {0.0, 1.0 - s, s, 0.0};
+  // Cubic Hermite basis.
+  const double s2 = s * s, s3 = s2 * s;
+  const double h00 = 2 * s3 - 3 * s2 + 1, h01 = -2 * s3 + 3 * s2, h10 = s3 - 2 * s2 + s, h11 = s3 - s2;
+  return {h10 * c.a0, h00 + h10 * c.a1 + h11 * c.b1, h01 + h10 * c.a2 + h11 * c.b2, h11 * c.b3};
+}
+
+/// Their first s-derivatives dN_k/ds [-] (centrelineStencil's dN).
+inline std::array<double, 4> centrelineSlopeWeights(const ElementCurve& c, double s) {
+  if (!c.smooth) return {0.0, -1.0, 1.0, 0.0};
+  const double s2 = s * s;
+  const double d00 = 6 * s2 - 6 * s, d01 = -6 * s2 + 6 * s, d10 = 3 * s2 - 4 * s + 1, d11 = 3 * s2 - 2 * s;
+  return {d10 * c.a0, d00 + d10 * c.a1 + d11 * c.b1, d01 + d10 * c.a2 + d11 * c.b2, d11 * c.b3};
+}
+
+/// Their second s-derivatives [-] (centrelineStencil's ddN; zero on a chord).
+inline std::array<double, 4> centrelineCurvatureWeights(const ElementCurve& c, double s) {
+  if (!c.smooth) return {0.0, 0.0, 0.0, 0.0};
+  const double e00 = 12 * s - 6, e01 = -12 * s + 6, e10 = 6 * s - 4, e11 = 6 * s - 2;
+  return {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
+}
+
+/// sum_k w_k x_k over a piece's four nodes [m], in CentrelineStencil's order of operations (the same bits).
+inline Vec3 combineNodes(const std::array<int, 4>& node, const std::array<double, 4>& w,
+                         const std::vector<Vec3>& x) {
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) p += w[k] * x[node[k]];
+  return p;
+}
+
+inline Vec3 CentrelineStencil::combine(const std::array<double, 4>& w, const std::vector<Vec3>& x) const {
+  return combineNodes(node, w, x);
+}
+
 inline CentrelineStencil centrelineStencil(const ElementCurve& c, double s) {
   CentrelineStencil st;
   st.node = c.node;
-  if (!c.smooth) {
-    st.N = {0.0, 1.0 - s, s, 0.0};
-    st.dN = {0.0, -1.0, 1.0, 0.0};
-    return st;
-  }
-  // Cubic Hermite basis and its derivatives.
-  const double s2 = s * s, s3 = s2 * s;
-  const double h00 = 2 * s3 - 3 * s2 + 1, h01 = -2 * s3 + 3 * s2, h10 = s3 - 2 * s2 + s, h11 = s3 - s2;
-  const double d00 = 6 * s2 - 6 * s, d01 = -6 * s2 + 6 * s, d10 = 3 * s2 - 4 * s + 1, d11 = 3 * s2 - 2 * s;
-  const double e00 = 12 * s - 6, e01 = -12 * s + 6, e10 = 6 * s - 4, e11 = 6 * s - 2;
-  st.N = {h10 * c.a0, h00 + h10 * c.a1 + h11 * c.b1, h01 + h10 * c.a2 + h11 * c.b2, h11 * c.b3};
-  st.dN = {d10 * c.a0, d00 + d10 * c.a1 + d11 * c.b1, d01 + d10 * c.a2 + d11 * c.b2, d11 * c.b3};
-  st.ddN = {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
+  st.N = centrelineWeights(c, s);
+  st.dN = centrelineSlopeWeights(c, s);
+  st.ddN = centrelineCurvatureWeights(c, s);
   return st;
+}
+
+/// The point c(s) of a piece [m]: centrelineStencil(c, s).point(x) without the derivatives' weights.
+inline Vec3 centrelinePoint(const ElementCurve& c, double s, const std::vector<Vec3>& x) {
+  return combineNodes(c.node, centrelineWeights(c, s), x);
 }
 
 /// Largest distance [m] of an element's piece of the centreline, s in [0, 1], from its chord at `position`:

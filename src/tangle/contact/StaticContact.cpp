@@ -39,11 +39,12 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   const auto& elements = m_model->elements();
   const int nodes = m_model->nodeCount();
   std::vector<Vec3> move(nodes);
-  double largest = 0.0;
+  double largest2 = 0.0;  // [m^2] (one root, not one per node: the same largest move, sqrt being monotonic)
   for (int n = 0; n < nodes; ++n) {
     move[n] = fullIncrement.segment<3>(dofs.firstDof(n));
-    largest = std::max(largest, move[n].norm());
+    largest2 = std::max(largest2, move[n].squaredNorm());
   }
+  const double largest = std::sqrt(largest2);  // [m]
   if (largest <= 0.0) return 1.0;
   if (m_distributed && m_lastDynamic) {
     // Dynamics: this step's candidates (found at its first assembly; no contact arises outside them within

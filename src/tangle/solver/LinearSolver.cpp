@@ -39,10 +39,13 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
     return true;
   }
   if (!m_ldltAnalysed) {
-    m_ldlt.analyzePattern(k);
+    analyzeLdlt(k);
     m_ldltAnalysed = true;
   }
-  m_ldlt.factorize(k);
+  double* permuted = m_permuted.valuePtr();
+  const double* values = k.valuePtr();
+  for (std::size_t i = 0; i < m_permutedSource.size(); ++i) permuted[i] = values[m_permutedSource[i]];
+  m_ldlt.factorize(m_permuted);
   bool useLu = m_ldlt.info() != Eigen::Success;
   if (!useLu) {
     // LDL^T without pivoting can "succeed" on a numerically singular matrix: check the pivots.
@@ -58,6 +61,31 @@ bool LinearSolver::factorize(const SparseMatrix& k) {
   }
   m_method = Method::Ldlt;
   return true;
+}
+
+void LinearSolver::analyzeLdlt(const SparseMatrix& k) {
+  // The ordering as SimplicialCholeskyBase::ordering makes it (Eigen 3.4): AMD of the full symmetric matrix
+  // from K's lower triangle, P its inverse.
+  {
+    SparseMatrix full;
+    full = k.selfadjointView<Eigen::Lower>();
+    Eigen::AMDOrdering<int> amd;
+    amd(full, m_ldltPinv);
+  }
+  if (m_ldltPinv.size() > 0)
+    m_ldltP = m_ldltPinv.inverse();
+  else
+    m_ldltP.resize(0);
+  // The permuted structure, with each entry's source found by permuting the indices (1-based, exact in a
+  // double) instead of the values.
+  SparseMatrix index = k;
+  for (Eigen::Index i = 0; i < index.nonZeros(); ++i) index.valuePtr()[i] = static_cast<double>(i + 1);
+  m_permuted.resize(k.rows(), k.cols());
+  m_permuted.selfadjointView<Eigen::Upper>() = index.selfadjointView<Eigen::Lower>().twistedBy(m_ldltP);
+  m_permutedSource.resize(static_cast<std::size_t>(m_permuted.nonZeros()));
+  for (std::size_t i = 0; i < m_permutedSource.size(); ++i)
+    m_permutedSource[i] = static_cast<int>(m_permuted.valuePtr()[i]) - 1;
+  m_ldlt.analyzePattern(m_permuted);
 }
 
 bool LinearSolver::samePatternAsBanded(const SparseMatrix& k) const {
@@ -88,7 +116,15 @@ VecX LinearSolver::solve(const VecX& b) const {
 void LinearSolver::solveInPlace(VecX& b) const {
   switch (m_method) {
     case Method::Banded: m_skyline.solveInPlace(b); return;
-    case Method::Ldlt: b = m_ldlt.solve(b); return;
+    case Method::Ldlt:
+      // x = P^-1 (LDL^T)^-1 P b, as SimplicialLDLT's own solve with its ordering.
+      if (m_ldltP.size() > 0) {
+        const VecX permuted = m_ldltP * b;
+        b = m_ldltPinv * m_ldlt.solve(permuted);
+      } else {
+        b = m_ldlt.solve(b);
+      }
+      return;
     case Method::Lu: b = m_lu.solve(b); return;
   }
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -478,6 +479,41 @@ TEST(LinearSolver, BandedForLinesGeneralForScatteredCouplings) {
   ASSERT_TRUE(banded.usedBanded());
   EXPECT_EQ(banded.blockCount(), 2);
   EXPECT_EQ(banded.blockStart(1), 150);
+}
+
+TEST(LinearSolver, GeneralMethodIsEigensSimplicialLdltToTheBit) {
+  // The general method factorises P K P^T, permuted through a map made once per pattern, instead of letting
+  // Eigen permute K at every factorisation: the same factor and solution to the bit as Eigen's
+  // SimplicialLDLT<Lower, AMDOrdering> (the reference here), for full and lower-only storage, new values on
+  // the same pattern, and a new pattern (a contact made: couplings added).
+  const auto sameBits = [](const VecX& x, const VecX& y) {
+    return x.size() == y.size() &&
+           std::equal(x.data(), x.data() + x.size(), y.data(),
+                      [](double a, double b) { return std::memcmp(&a, &b, sizeof(double)) == 0; });
+  };
+  std::vector<std::pair<int, int>> contacts;
+  for (int a = 0; a < 60; a += 3) contacts.emplace_back(300 + 3 * a, 3 * a + 1);
+  solver::LinearSolver general(false);
+  const VecX b = VecX::Random(600);
+  for (const unsigned seed : {11u, 12u}) {
+    for (const bool coupled : {false, true}) {
+      const SparseMatrix full =
+          lineMatrix(200, 3, coupled ? contacts : std::vector<std::pair<int, int>>{}, seed);
+      for (const bool lowerOnly : {false, true}) {
+        SparseMatrix k = full;
+        if (lowerOnly) {
+          k = full.triangularView<Eigen::Lower>();
+          k.makeCompressed();
+        }
+        Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> reference(k);
+        ASSERT_EQ(reference.info(), Eigen::Success);
+        ASSERT_TRUE(general.factorize(k));
+        ASSERT_FALSE(general.usedBanded());
+        EXPECT_TRUE(sameBits(general.solve(b), reference.solve(b)))
+            << "seed " << seed << " coupled " << coupled;
+      }
+    }
+  }
 }
 
 TEST(LinearSolver, SingularMatrixFallsBackAndReportsFailure) {
