@@ -106,31 +106,15 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
   // margin + 2 moved <= the list's margin, on squares (no root per segment end), every end tested without
   // a branch (the list is reused at nearly every call). A non-finite end fails the test (its squared
   // distance from the list's finite end is NaN or infinite) and goes to the broad phase, which reports it.
-  const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
-  const auto moved = [&](const SegmentProxy& p, const SegmentProxy& q) {
-    return ((p.a - q.a).squaredNorm() <= allowed2) & ((p.b - q.b).squaredNorm() <= allowed2);
-  };
-  bool reuse = false;
-  if (m_proxiesComplete && !m_model->parted().any() && m_verletProxies.size() == m_proxies.size() &&
-      margin <= m_verletMargin) {
-    // buildProxies' update in place and the test in one pass over the proxies.
-    const auto& elements = m_model->elements();
+  buildProxies(state);
+  bool reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
+  if (reuse) {
+    const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
     bool within = true;
-    for (std::size_t i = 0; i < m_proxies.size(); ++i) {
-      SegmentProxy& p = m_proxies[i];
-      const model::LineElement& el = elements[static_cast<std::size_t>(p.element)];
-      p.a = state.position[el.node1];
-      p.b = state.position[el.node2];
-      within &= moved(p, m_verletProxies[i]);
-    }
+    for (std::size_t i = 0; i < m_proxies.size(); ++i)
+      within &= ((m_proxies[i].a - m_verletProxies[i].a).squaredNorm() <= allowed2) &
+                ((m_proxies[i].b - m_verletProxies[i].b).squaredNorm() <= allowed2);
     reuse = within;
-  } else {
-    buildProxies(state);
-    if (m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin) {
-      bool within = true;
-      for (std::size_t i = 0; i < m_proxies.size(); ++i) within &= moved(m_proxies[i], m_verletProxies[i]);
-      reuse = within;
-    }
   }
   if (!reuse) {
     BroadPhaseOptions options = m_broadPhase.options();

@@ -495,7 +495,7 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   CentrelineDistance best;
   best.distance = kInf;
   int bestMaster = -1;
-  const Vec3 x = centrelineStencil(m_curves[static_cast<std::size_t>(slave)], xi).point(state.position);
+  const Vec3 x = centrelinePoint(m_curves[static_cast<std::size_t>(slave)], xi, state.position);
   for (const int f : masters) {
     const model::LineElement& eb = elements[f];
     const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];

@@ -935,11 +935,16 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   // The gap of the nearest pair at the last call (the lines move little between steps) bounds the minimum:
   // pairs whose boxes are farther apart are culled from the start. Every pair that may attain the minimum is
   // still measured, in the same order: the same result as without it.
+  // Element i of A and j of B are measured unless neighbours on one line or across an exclusion
+  // (contact.exclude, exclusion_zones, a shared connection: lines at one fairlead or at one point touch there
+  // by construction; the clearance is the contact's, which skips them too).
+  const auto measured = [&](int i, int j) {
+    return !(lineA == lineB && std::abs(i - j) <= 1) &&
+           m_search.elementPairAllowed(la.firstElement + i, lb.firstElement + j);
+  };
   double seed = kInf;
   std::pair<int, int>& hint = m_clearanceHint[{lineA, lineB}];
-  if (hint.first < la.elementCount && hint.second < lb.elementCount &&
-      !(lineA == lineB && std::abs(hint.first - hint.second) <= 1) &&
-      m_search.elementPairAllowed(la.firstElement + hint.first, lb.firstElement + hint.second)) {
+  if (hint.first < la.elementCount && hint.second < lb.elementCount && measured(hint.first, hint.second)) {
     const model::LineElement& ea = elements[la.firstElement + hint.first];
     const model::LineElement& eb = elements[lb.firstElement + hint.second];
     seed = geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
@@ -977,10 +982,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
           continue;
         }
       }
-      if (lineA == lineB && std::abs(i - j) <= 1) continue;
-      // Not across an exclusion (contact.exclude, exclusion_zones, a shared connection: lines at one fairlead
-      // or at one point touch there by construction; the clearance is the contact's, which skips them too).
-      if (!m_search.elementPairAllowed(la.firstElement + i, lb.firstElement + j)) continue;
+      if (!measured(i, j)) continue;
       const model::LineElement& eb = elements[lb.firstElement + j];
       const Vec3& b0 = state.position[eb.node1];
       const Vec3& b1 = state.position[eb.node2];

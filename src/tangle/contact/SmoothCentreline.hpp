@@ -72,7 +72,6 @@ struct ElementCurve {
 ElementCurve elementCurve(const model::Model& model, int element, bool smoothCables = false);
 /// The curve data of every element of the model.
 std::vector<ElementCurve> elementCurves(const model::Model& model, bool smoothCables = false);
-/// Stencil at parameter s of an element given by its curve data (inline: see CentrelineStencil::point).
 /// The weights N_k(s) of a piece [-] (centrelineStencil's N).
 inline std::array<double, 4> centrelineWeights(const ElementCurve& c, double s) {
   if (!c.smooth) return {0.0, 1.0 - s, s, 0.0};
@@ -109,6 +108,7 @@ inline Vec3 CentrelineStencil::combine(const std::array<double, 4>& w, const std
   return combineNodes(node, w, x);
 }
 
+/// Stencil at parameter s of an element given by its curve data (inline: see CentrelineStencil::point).
 inline CentrelineStencil centrelineStencil(const ElementCurve& c, double s) {
   CentrelineStencil st;
   st.node = c.node;
