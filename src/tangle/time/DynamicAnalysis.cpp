@@ -112,8 +112,10 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
   int& successes = m_successes;
   // Remainders shorter than this are round-off, not time to simulate.
   const double eps = 1e-6 * nominal;
-  model::State before;
-  // Contributors that may refuse a converged step (lines passed through each other) need the state before it.
+  // Contributors that may refuse a converged step (lines passed through each other) need the state before it:
+  // the stepper's own copy of it (a copy per step here was 0.27 G instructions of drilling-riser-drift's
+  // run).
+  model::State& before = stepper.stepStart();
   const bool checkSteps = m_stepControl && m_assembler->rejectsSteps();
   double& lastStep = m_lastStep;
   while (state.time < end - eps) {
@@ -146,7 +148,6 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
     if (snap < h) h = land(snap);
     if (h <= eps) h = std::min(dt, end - state.time);
     const bool clippedForOutput = h < dt * (1.0 - 1e-9);
-    if (checkSteps || errorControl) before = state;
     StepOutcome o = stepper.step(state, h);
     result.newtonIterations += o.iterations;
     result.partIterations += o.partIterations;

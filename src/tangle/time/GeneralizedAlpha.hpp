@@ -85,6 +85,9 @@ class GeneralizedAlpha {
   const AlphaParameters& parameters() const { return m_params; }
   /// Undoes the last accepted step: `previous` is the state before it (F_n is re-evaluated there).
   void restore(model::State& previous) { initialize(previous); }
+  /// The state at the start of the last step() (bitwise the state it was given), until the next step() or
+  /// restore(): what a caller that may refuse the step needs, without a copy of its own.
+  model::State& stepStart() { return m_start; }
   /// Out-of-balance force F at the last accepted state (full DOFs) [N]; its values at constrained
   /// DOFs are the support reactions.
   const VecX& lastForce() const { return m_forceOld; }
