@@ -49,14 +49,15 @@ class ContactCandidates {
   /// them): callers skip elementPairAllowed then.
   bool hasExclusions(int lineA, int lineB) const;
 
-  /// Rebuilds the proxies at `state` and returns the element pairs whose boxes come within `margin` [m]
-  /// of each other and may touch (exclusion zones applied). candidates() then refer to stale proxies.
+  /// The element pairs whose boxes at `state` come within `margin` [m] of each other and may touch (exclusion
+  /// zones applied). The proxies of those pairs (and of every pair of the Verlet list) are then at `state`;
+  /// the others' positions may be older (their element, line and radius are always valid).
   std::vector<CandidatePair> pairsWithin(const model::State& state, double margin);
   /// candidates() = pairsWithin(state, margin).
   void refresh(const model::State& state, double margin) { m_candidates = pairsWithin(state, margin); }
   /// The candidate pairs of the last refresh (indices into proxies()).
   const std::vector<CandidatePair>& candidates() const { return m_candidates; }
-  /// The segments of the contact-enabled lines at the last pairsWithin / refresh.
+  /// The segments of the contact-enabled lines (positions: see pairsWithin).
   const std::vector<SegmentProxy>& proxies() const { return m_proxies; }
   /// Largest contact radius of the model [m].
   double maxRadius() const { return m_maxRadius; }
@@ -86,6 +87,10 @@ class ContactCandidates {
   std::vector<CandidatePair> m_verletPairs;
   std::vector<SegmentProxy> m_verletProxies;
   double m_verletMargin = -1.0;
+  /// With every proxy complete (no element parted): the proxies' nodes, and their positions when the Verlet
+  /// list was made [m] (the list's test is on them; m_verletProxies is then unused).
+  std::vector<int> m_proxyNodes;
+  std::vector<Vec3> m_verletPositions;
 };
 
 }  // namespace tangle::contact

@@ -789,11 +789,23 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
   const model::DofMap& dofs = m_model->dofs();
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
-    const CentrelineKinematics kin = centrelineKinematics(state.position, smp.curve, 1.0, matrix != nullptr);
     const Vec3 f = smp.length * (smp.lineForce * smp.normal + smp.friction);  // on A [N]
+    if (!matrix) {
+      // The force alone: its weights are the stencils' N_k on A and -N_k on B (centrelineKinematics' slots;
+      // the kinematics, with its 24 x 24 Hessian zeroed and copied, was 0.3 G instructions of
+      // drilling-riser-drift's run, where most assemblies want no matrix).
+      for (int i = 0; i < 4; ++i)
+        if (smp.curve.a.N[i] != 0.0)
+          force.segment<3>(dofs.firstDof(smp.curve.a.node[i])) -= smp.curve.a.N[i] * f;
+      for (int i = 0; i < 4; ++i) {
+        const double weight = -smp.curve.b.N[i];
+        if (weight != 0.0) force.segment<3>(dofs.firstDof(smp.curve.b.node[i])) -= weight * f;
+      }
+      continue;
+    }
+    const CentrelineKinematics kin = centrelineKinematics(state.position, smp.curve, 1.0, true);
     for (int i = 0; i < 8; ++i)
       if (kin.weight[i] != 0.0) force.segment<3>(dofs.firstDof(kin.node[i])) -= kin.weight[i] * f;
-    if (!matrix) continue;
     // Normal: k' grad d grad d^T - f Hess d (the Gauss point held, its projection free: envelope theorem,
     // SmoothCentreline.hpp), k' = f'(p) psi (the restitution's factor; finishSamples); f psi'(v) n n^T on
     // the velocities; friction on the displacements. (psi's change with the patch's v_s is not

@@ -38,7 +38,8 @@ double LineContact::limitIncrement(const model::State& state, const VecX& fullIn
   const model::DofMap& dofs = m_model->dofs();
   const auto& elements = m_model->elements();
   const int nodes = m_model->nodeCount();
-  std::vector<Vec3> move(nodes);
+  std::vector<Vec3>& move = m_move;
+  move.resize(static_cast<std::size_t>(nodes));
   double largest2 = 0.0;  // [m^2] (one root, not one per node: the same largest move, sqrt being monotonic)
   for (int n = 0; n < nodes; ++n) {
     move[n] = fullIncrement.segment<3>(dofs.firstDof(n));
