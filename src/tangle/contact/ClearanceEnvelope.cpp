@@ -23,7 +23,93 @@ constexpr double kEnvelopeTolerance = 1e-3;
 /// How far a line may move before record()'s searches make its bounding spheres again, in its mean element
 /// lengths [-] (nodeClearance's `travel`).
 constexpr double kSphereSlack = 0.05;
+
+/// Distance of x from segment j of line b less the contact radius at the segment's end nearer its closest
+/// point (`clearance`), and less the segment's larger contact radius (`low`: 1-Lipschitz in x and in the
+/// segment's nodes, as the radius switches at the segment's middle) [m].
+struct ChordClearance {
+  double clearance = kInf, low = kInf;
+};
+ChordClearance chordClearance(const std::vector<Vec3>& position, const std::vector<double>& diameter,
+                              const model::Line& b, int j, const Vec3& x) {
+  const int m1 = b.firstNode + j, m2 = m1 + 1;
+  const Vec3& p = position[m1];
+  const Vec3 axis = position[m2] - p;
+  const double l2 = axis.squaredNorm();
+  const double s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
+  const double radius = 0.5 * (s < 0.5 ? diameter[m1] : diameter[m2]);
+  const double distance = (x - (p + s * axis)).norm();
+  return {distance - radius, distance - 0.5 * std::max(diameter[m1], diameter[m2])};
+}
 }  // namespace
+
+/// Which segments of line b node i of line a is assessed against: not a parted element's (lines[].failure:
+/// nothing is near it), and not across an exclusion (a shared connection: lines at one fairlead or one point
+/// touch there by construction; contact.exclude, exclusion_zones), as contact skips them: allowed when either
+/// element at node i may touch segment j.
+struct ClearanceEnvelope::SegmentRule {
+  const ContactCandidates* exclusions;
+  const model::PartedElements* parted;
+  const model::Line* a;
+  const model::Line* b;
+  double time;     ///< [s]
+  bool everyPair;  ///< no exclusion between the lines: allowed() is true without map look-ups
+  bool allowed(int i, int j) const {
+    if (everyPair) return true;
+    const int eb = b->firstElement + j;
+    return (i > 0 && exclusions->elementPairAllowed(a->firstElement + i - 1, eb)) ||
+           (i < a->nodeCount - 1 && exclusions->elementPairAllowed(a->firstElement + i, eb));
+  }
+  bool assessed(int i, int j) const {
+    return !parted->parted(static_cast<std::size_t>(b->firstElement + j), time) && allowed(i, j);
+  }
+};
+
+ClearanceEnvelope::SegmentRule ClearanceEnvelope::segmentRule(const model::State& state, int line,
+                                                              int other) const {
+  // (Four map look-ups per segment measured otherwise, two calls each: 5.2 M calls in drilling-riser-drift.)
+  return {m_exclusions.get(),
+          &m_model->parted(),
+          &m_model->lines()[static_cast<std::size_t>(line)],
+          &m_model->lines()[static_cast<std::size_t>(other)],
+          state.time,
+          !m_exclusions->hasExclusions(line, other)};
+}
+
+double ClearanceEnvelope::smoothClearance(const model::State& state, const SegmentRule& rule, int i,
+                                          int bestSegment, double best) const {
+  const model::Line& a = *rule.a;
+  const model::Line& b = *rule.b;
+  const auto& diameter = m_model->nodeContactDiameter();
+  // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
+  const bool smoothCables = m_model->spec().contact.smoothCables();
+  if (bestSegment < 0 || !hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables))
+    return best;
+  // A beam's surface (with the distributed formulation, a cable's too) is around its smooth centreline, the
+  // one contact measures (SmoothCentreline.hpp), which lies off the chords by up to kappa L^2 / 8: 4 cm for a
+  // flexible of 10 m elements near its touchdown, read as an overlap where contact saw 1 mm. Near the
+  // surface, the distance to that curve on the nearest segment and its neighbours.
+  const int n = a.firstNode + i;
+  const Vec3& x = state.position[n];
+  const double bulgeBound = 0.25 * m_model->elements()[b.firstElement + bestSegment].restLength;
+  if (!(best < 0.5 * diameter[n] + bulgeBound)) return best;
+  const int segments = b.nodeCount - 1;
+  const int element = i + 1 < a.nodeCount ? a.firstElement + i : a.firstElement + i - 1;
+  const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
+  double smooth = kInf;
+  for (int j = std::max(bestSegment - 1, 0); j <= std::min(bestSegment + 1, segments - 1); ++j) {
+    if (!rule.allowed(i, j)) continue;
+    const Vec3 axis = state.position[b.firstNode + j + 1] - state.position[b.firstNode + j];
+    const double l2 = axis.squaredNorm();
+    const double t0 =
+        l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
+    const CentrelineDistance c = centrelineDistance(*m_model, state.position, element, b.firstElement + j, s,
+                                                    t0, true, false, smoothCables);
+    const double radius = 0.5 * (c.t < 0.5 ? diameter[b.firstNode + j] : diameter[b.firstNode + j + 1]);
+    smooth = std::min(smooth, c.distance - radius);
+  }
+  return std::isfinite(smooth) ? smooth : best;
+}
 
 ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
@@ -59,6 +145,7 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
       s.knownClearance.assign(n, -kInf);
       s.knownPosition.assign(n, Vec3::Zero());
       s.knownTravel.assign(n, 0.0);
+      s.otherSegments.assign(n, -kInf);
       m_sides.push_back(std::move(s));
     }
 }
@@ -67,50 +154,29 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
                                                      const std::vector<double>* onlyBelow,
                                                      const std::vector<char>* skip,
                                                      std::vector<double>* lower) const {
-  return search(state, line, other, onlyBelow, skip, lower, nullptr);
+  return search(state, line, other, onlyBelow, skip, lower, nullptr, nullptr);
 }
 
 std::vector<double> ClearanceEnvelope::search(const model::State& state, int line, int other,
                                               const std::vector<double>* onlyBelow,
                                               const std::vector<char>* skip, std::vector<double>* lower,
-                                              const double* travel) const {
+                                              const double* travel, const Certificate* certificate) const {
+  std::vector<double>* others = certificate ? certificate->others : nullptr;
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
   const auto& diameter = m_model->nodeContactDiameter();
-  // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
-  const bool smoothCables = m_model->spec().contact.smoothCables();
-  // Surface distance from x to segment j of line b (the clearance before x's own radius).
-  const model::PartedElements& parted = m_model->parted();
-  // Node i of line a and segment j of line b are not assessed across an exclusion (a shared connection: lines
-  // at one fairlead or one point touch there by construction; contact.exclude, exclusion_zones), as contact
-  // skips them: allowed when either element at node i may touch segment j.
+  const SegmentRule rule = segmentRule(state, line, other);
   int node = 0;  // the node of line a whose clearance is being found
-  // (Four map look-ups per call otherwise, two calls per segment measured: 5.2 M calls in
-  // drilling-riser-drift.)
-  const bool everyPairAllowed = !m_exclusions->hasExclusions(line, other);
-  const auto allowed = [&](int i, int j) {
-    if (everyPairAllowed) return true;
-    const int eb = b.firstElement + j;
-    return (i > 0 && m_exclusions->elementPairAllowed(a.firstElement + i - 1, eb)) ||
-           (i < a.nodeCount - 1 && m_exclusions->elementPairAllowed(a.firstElement + i, eb));
-  };
-  // `low` is lowered to the distance less the segment's larger contact radius: the clearance with that
-  // radius is 1-Lipschitz in x and in the segment's nodes (the radius switches at the segment's middle),
-  // the bound record() carries from step to step.
+  // Surface distance from x to segment j of line b (the clearance before x's own radius); `low` is lowered to
+  // the distance less the segment's larger contact radius, the bound record() carries from step to step. With
+  // `others`, the segments measured and their `low` go to `measured`.
+  std::vector<std::pair<int, double>> measured;
   const auto segmentDistance = [&](const Vec3& x, int j, double& low) {
-    // A parted element (lines[].failure) is no segment: nothing is near it.
-    if (parted.parted(static_cast<std::size_t>(b.firstElement + j), state.time))
-      return std::numeric_limits<double>::infinity();
-    if (!allowed(node, j)) return std::numeric_limits<double>::infinity();
-    const int m1 = b.firstNode + j, m2 = m1 + 1;
-    const Vec3& p = state.position[m1];
-    const Vec3 axis = state.position[m2] - p;
-    const double l2 = axis.squaredNorm();
-    const double s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
-    const double radius = 0.5 * (s < 0.5 ? diameter[m1] : diameter[m2]);
-    const double distance = (x - (p + s * axis)).norm();
-    low = std::min(low, distance - 0.5 * std::max(diameter[m1], diameter[m2]));
-    return distance - radius;
+    if (!rule.assessed(node, j)) return kInf;
+    const ChordClearance c = chordClearance(state.position, diameter, b, j, x);
+    low = std::min(low, c.low);
+    if (others) measured.emplace_back(j, c.low);
+    return c.clearance;
   };
   // Bounding spheres of blocks of kBlock segments: no segment of a block is nearer to x than
   // |x - centre| - sphere radius - the block's largest contact radius, so a block whose bound is not below
@@ -199,6 +265,7 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   // searches most nodes at every step while lines close: their clearance falls, a new minimum each step).
   std::vector<double> hintDistance(static_cast<std::size_t>(kBlock)), hintLow(hintDistance.size());
   if (lower) lower->assign(static_cast<std::size_t>(a.nodeCount), -kInf);
+  if (others) others->assign(static_cast<std::size_t>(a.nodeCount), -kInf);
   std::vector<int> near;
   near.reserve(static_cast<std::size_t>(blocks));
   for (int start = 0; start < a.nodeCount; start += kBlock) {
@@ -246,10 +313,15 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
     }
     if (upper == -kInf && segments > 0) continue;  // every node of the block skipped
     near.clear();
-    for (int k = 0; k < blocks; ++k)
-      if ((ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)] <=
-          upper)
+    double farBound = kInf;  // the blocks left out for every node here: their smallest bound [m]
+    for (int k = 0; k < blocks; ++k) {
+      const double bound =
+          (ca - centre[static_cast<std::size_t>(k)]).norm() - ra - reach[static_cast<std::size_t>(k)];
+      if (bound <= upper)
         near.push_back(k);
+      else
+        farBound = std::min(farBound, bound);
+    }
     for (int i = start; i < stop; ++i) {
       if (skipNode[static_cast<std::size_t>(i)]) continue;  // out[i] stays +inf: not a new minimum
       node = i;
@@ -271,18 +343,77 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       double best = hintDistance[static_cast<std::size_t>(i - start)];
       double low = hintLow[static_cast<std::size_t>(i - start)];
       int bestSegment = segments > 0 ? std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1) : -1;
+      if (certificate && bestSegment >= 0 && (*certificate->bound)[static_cast<std::size_t>(i)] > -kInf) {
+        // The certificate (Side::otherSegments): at the node's last search every segment of line b but the
+        // nearest and its neighbours was at least L from it (their `low`); each point of them has moved
+        // since by at most b's travel, and the node by |x - x0|, so they are at least L - |x - x0| - travel
+        // since now. When the nearest of the three is not farther than that, it is the nearest of all: the
+        // search's result from three segments (the same expressions: the same bits). The search of the
+        // nodes whose clearance falls, again every few steps as lines close and in contact, was most of the
+        // envelope's time (1.65 of 2.3 G instructions of drilling-riser-drift's run). The bound for the
+        // segments outside the new nearest one's three: the old one less the moves, and those of the three
+        // that now lie outside.
+        const double farther =
+            (*certificate->bound)[static_cast<std::size_t>(i)] -
+            (x - (*certificate->position)[static_cast<std::size_t>(i)]).norm() -
+            (certificate->travel - (*certificate->travelThen)[static_cast<std::size_t>(i)]);
+        const int h = bestSegment;
+        std::array<double, 3> segmentLow{kInf, low, kInf};  // h - 1, h (measured above), h + 1
+        double nearBest = best, nearLow = low;
+        int nearSegment = std::isfinite(best) ? h : -1;
+        for (const int j : {h - 1, h + 1}) {
+          if (j < 0 || j >= segments) continue;
+          double segmentLowJ = kInf;
+          const double d = segmentDistance(x, j, segmentLowJ);
+          segmentLow[static_cast<std::size_t>(j - h + 1)] = segmentLowJ;
+          nearLow = std::min(nearLow, segmentLowJ);
+          if (d < nearBest) {
+            nearBest = d;
+            nearSegment = j;
+          }
+        }
+        if (nearSegment >= 0 && nearBest <= farther) {
+          double outside = farther;
+          for (int j = h - 1; j <= h + 1; ++j)
+            if (std::abs(j - nearSegment) > 1)
+              outside = std::min(outside, segmentLow[static_cast<std::size_t>(j - h + 1)]);
+          (*others)[static_cast<std::size_t>(i)] = outside;
+          hint[static_cast<std::size_t>(i)] = nearSegment;
+          best = smoothClearance(state, rule, i, nearSegment, nearBest);
+          out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
+          if (lower)
+            (*lower)[static_cast<std::size_t>(i)] = std::min({nearLow, farther, best}) - 0.5 * diameter[n];
+          continue;
+        }
+      }
+      measured.clear();
+      if (others && bestSegment >= 0 && std::isfinite(low))
+        measured.emplace_back(bestSegment, low);  // the hint's
+      // For `others`: the blocks and segments left out by their spheres, as the smallest squared distance to
+      // a centre and the largest reach (each one's |x - c| - reach is at least the root of the one less the
+      // other) [m^2, m].
+      double prunedBlock2 = kInf, prunedBlockReach = 0.0, prunedSegment2 = kInf, prunedSegmentReach = 0.0;
       for (const int k : near) {
         // Skip when |x - c| - reach >= best, tested on squares (no root) while best + reach > 0.
         const double limit = best + reach[static_cast<std::size_t>(k)];
-        if (limit > 0.0 && (x - centre[static_cast<std::size_t>(k)]).squaredNorm() >= limit * limit) continue;
+        const double blockDistance2 = (x - centre[static_cast<std::size_t>(k)]).squaredNorm();
+        if (limit > 0.0 && blockDistance2 >= limit * limit) {
+          prunedBlock2 = std::min(prunedBlock2, blockDistance2);
+          prunedBlockReach = std::max(prunedBlockReach, reach[static_cast<std::size_t>(k)]);
+          continue;
+        }
         const double widening = makeSegmentSpheres(k);  // [m]
         const int end = std::min((k + 1) * kBlock, segments);
         for (int j = k * kBlock; j < end; ++j) {
           // The same test on the segment's own bounding sphere (no root, no projection) before its distance.
-          const double segmentLimit = best + segmentReach[static_cast<std::size_t>(j)] + widening;
-          if (segmentLimit > 0.0 &&
-              (x - segmentMiddle[static_cast<std::size_t>(j)]).squaredNorm() >= segmentLimit * segmentLimit)
+          const double segmentReachNow = segmentReach[static_cast<std::size_t>(j)] + widening;
+          const double segmentLimit = best + segmentReachNow;
+          const double segmentDistance2 = (x - segmentMiddle[static_cast<std::size_t>(j)]).squaredNorm();
+          if (segmentLimit > 0.0 && segmentDistance2 >= segmentLimit * segmentLimit) {
+            prunedSegment2 = std::min(prunedSegment2, segmentDistance2);
+            prunedSegmentReach = std::max(prunedSegmentReach, segmentReachNow);
             continue;
+          }
           const double d = segmentDistance(x, j, low);
           if (d < best) {
             best = d;
@@ -291,31 +422,16 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         }
       }
       hint[static_cast<std::size_t>(i)] = std::max(bestSegment, 0);
-      if (bestSegment >= 0 && hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables)) {
-        // A beam's surface (with the distributed formulation, a cable's too) is around its smooth centreline,
-        // the one contact measures (SmoothCentreline.hpp), which lies off the chords by up to kappa L^2 / 8:
-        // 4 cm for a flexible of 10 m elements near its touchdown, read as an overlap where contact saw 1 mm.
-        // Near the surface, the distance to that curve on the nearest segment and its neighbours.
-        const double bulgeBound = 0.25 * m_model->elements()[b.firstElement + bestSegment].restLength;
-        if (best < 0.5 * diameter[n] + bulgeBound) {
-          const int element = i + 1 < a.nodeCount ? a.firstElement + i : a.firstElement + i - 1;
-          const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
-          double smooth = kInf;
-          for (int j = std::max(bestSegment - 1, 0); j <= std::min(bestSegment + 1, segments - 1); ++j) {
-            if (!allowed(i, j)) continue;
-            const Vec3 axis = state.position[b.firstNode + j + 1] - state.position[b.firstNode + j];
-            const double l2 = axis.squaredNorm();
-            const double t0 =
-                l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
-            const CentrelineDistance c = centrelineDistance(
-                *m_model, state.position, element, b.firstElement + j, s, t0, true, false, smoothCables);
-            const double radius =
-                0.5 * (c.t < 0.5 ? diameter[b.firstNode + j] : diameter[b.firstNode + j + 1]);
-            smooth = std::min(smooth, c.distance - radius);
-          }
-          if (std::isfinite(smooth)) best = smooth;
-        }
+      if (others) {
+        // A lower bound of every segment's `low` but the nearest one's and its neighbours' (record()'s
+        // certificate): the measured ones' own, and the left-out blocks' and segments' sphere bounds.
+        double bound = std::min({farBound, std::sqrt(prunedBlock2) - prunedBlockReach,
+                                 std::sqrt(prunedSegment2) - prunedSegmentReach});
+        for (const auto& [j, segmentLow] : measured)
+          if (std::abs(j - bestSegment) > 1) bound = std::min(bound, segmentLow);
+        (*others)[static_cast<std::size_t>(i)] = bound;
       }
+      best = smoothClearance(state, rule, i, bestSegment, best);
       out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
       // Every segment that could be nearer with its larger radius was measured (each pruned one's bound
       // uses that radius and is not below best, so not below low): low is exact. With the smooth
@@ -346,7 +462,7 @@ void ClearanceEnvelope::record(const model::State& state) {
   }
   m_lastPosition = state.position;
   std::vector<char> skip;
-  std::vector<double> lower;
+  std::vector<double> lower, others;
   // Each pair's smallest dynamic clearance so far, over both its sides [m] (kept as the envelope falls).
   if (m_pairMinimum.size() != m_pairs.size()) m_pairMinimum.assign(m_pairs.size(), kInf);
   const std::vector<double> pairMinimum = m_pairMinimum;
@@ -386,18 +502,24 @@ void ClearanceEnvelope::record(const model::State& state) {
     }
     // Nothing to search: nothing changes (a sixth of drift-into-spread's 326 000 side calls).
     if (!anySearched) continue;
-    const std::vector<double> c = search(state, s.line, s.other, &s.dynamicClearance, &skip, &lower, &travel);
+    const auto newValue = [&](std::size_t i, double clearance) {
+      if (clearance < s.dynamicClearance[i]) {
+        s.dynamicClearance[i] = clearance;
+        s.timeOfMinimum[i] = state.time;
+        m_pairMinimum[side / 2] = std::min(m_pairMinimum[side / 2], clearance);
+      }
+    };
+    const Certificate certificate{&s.otherSegments, &s.knownPosition, &s.knownTravel, travel, &others};
+    const std::vector<double> c =
+        search(state, s.line, s.other, &s.dynamicClearance, &skip, &lower, &travel, &certificate);
     for (std::size_t i = 0; i < c.size(); ++i) {
       if (std::isfinite(c[i])) {  // searched: its exact clearance
         s.knownClearance[i] = lower[i];
         s.knownPosition[i] = state.position[a.firstNode + static_cast<int>(i)];
         s.knownTravel[i] = travel;
+        s.otherSegments[i] = others[i];
       }
-      if (c[i] < s.dynamicClearance[i]) {
-        s.dynamicClearance[i] = c[i];
-        s.timeOfMinimum[i] = state.time;
-        m_pairMinimum[side / 2] = std::min(m_pairMinimum[side / 2], c[i]);
-      }
+      newValue(i, c[i]);
     }
   }
 }

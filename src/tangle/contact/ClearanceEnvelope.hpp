@@ -69,6 +69,10 @@ class ClearanceEnvelope {
     std::vector<double> knownClearance;
     std::vector<Vec3> knownPosition;
     std::vector<double> knownTravel;
+    /// Per node, then too: a lower bound of the `lower` clearance-distance (before the node's radius) to
+    /// every segment of `other` but its nearest one (m_hint's) and that one's neighbours [m] (-inf: none).
+    /// While those three are nearer than it, less the moves since, one of them is the nearest (record()).
+    std::vector<double> otherSegments;
   };
   const std::vector<Side>& sides() const { return m_sides; }  ///< two per pair (A to B, B to A)
 
@@ -81,11 +85,28 @@ class ClearanceEnvelope {
     double time;       ///< [s] (NaN for the static one)
   };
   Minimum minimum(std::size_t pair, bool dynamic) const;
+  /// record()'s certificate of a side's nodes (ClearanceEnvelope.cpp, search()).
+  struct Certificate {
+    const std::vector<double>* bound;       ///< Side::otherSegments [m]
+    const std::vector<Vec3>* position;      ///< Side::knownPosition [m]
+    const std::vector<double>* travelThen;  ///< Side::knownTravel [m]
+    double travel;                          ///< line `other`'s m_travel now [m]
+    std::vector<double>* others;  ///< gets per node found its new otherSegments bound (-inf for the others)
+  };
   /// nodeClearance, with the spheres that bound blocks of `other`'s segments kept from call to call when
-  /// `travel` (how far line `other` has moved in all, m_travel [m]) is given.
+  /// `travel` (how far line `other` has moved in all, m_travel [m]) is given, and with a `certificate`, the
+  /// nodes whose nearest segment it proves found from three segments.
   std::vector<double> search(const model::State& state, int line, int other,
                              const std::vector<double>* onlyBelow, const std::vector<char>* skip,
-                             std::vector<double>* lower, const double* travel) const;
+                             std::vector<double>* lower, const double* travel,
+                             const Certificate* certificate) const;
+  struct SegmentRule;
+  /// Which segments of `other` each node of `line` is assessed against (ClearanceEnvelope.cpp).
+  SegmentRule segmentRule(const model::State& state, int line, int other) const;
+  /// The clearance-distance `best` [m] of node i (of rule.a) from the chords of rule.b, nearest at segment
+  /// `bestSegment`, taken to rule.b's smooth centreline there when near it (the file comment).
+  double smoothClearance(const model::State& state, const SegmentRule& rule, int i, int bestSegment,
+                         double best) const;
   /// Bounding spheres of a line's blocks of segments and of their segments, as made at some earlier call.
   struct LineSpheres {
     double travel = -1.0;       ///< the line's m_travel when the blocks' spheres were made [m] (< 0: never)
