@@ -52,7 +52,8 @@ class ClearanceEnvelope {
   /// With `skip` (one flag per node), flagged nodes get +inf without any search.
   /// With `lower`, it gets per node searched its lower clearance [m] (each segment of `other` with its
   /// larger contact radius, and the clearance where less: a bound of the clearance that is 1-Lipschitz in
-  /// the positions), -inf for the nodes not searched.
+  /// the positions), for a node that `onlyBelow` lets off on its bounding spheres alone (+inf) a lower bound
+  /// of it (the spheres'), -inf for the nodes not searched.
   std::vector<double> nodeClearance(const model::State& state, int line, int other,
                                     const std::vector<double>* onlyBelow = nullptr,
                                     const std::vector<char>* skip = nullptr,
@@ -73,6 +74,9 @@ class ClearanceEnvelope {
     /// every segment of `other` but its nearest one (m_hint's) and that one's neighbours [m] (-inf: none).
     /// While those three are nearer than it, less the moves since, one of them is the nearest (record()).
     std::vector<double> otherSegments;
+    /// Per node: while line's and other's m_travel together are not above it, the node cannot have closed
+    /// below its envelope by more than the tolerance since record() last tested it [m] (-inf: test it).
+    std::vector<double> wake;
   };
   const std::vector<Side>& sides() const { return m_sides; }  ///< two per pair (A to B, B to A)
 
