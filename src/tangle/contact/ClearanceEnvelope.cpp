@@ -173,7 +173,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   // Surface distance from x to segment j of line b (the clearance before x's own radius); `low` is lowered to
   // the distance less the segment's larger contact radius, the bound record() carries from step to step. With
   // `others`, the segments measured and their `low` go to `measured`.
-  std::vector<std::pair<int, double>> measured;
+  std::vector<std::pair<int, double>>& measured = m_work.measured;
+  measured.clear();
   const auto segmentDistance = [&](const Vec3& x, int j, double& low) {
     if (!rule.assessed(node, j)) return kInf;
     const ChordClearance c = chordClearance(state.position, diameter, b, j, x);
@@ -201,7 +202,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   const double slack =
       kSphereSlack * (b.arcLength.back() - b.arcLength.front()) / std::max(segments, 1);  // [m]
   const std::vector<Vec3>& centre = spheres.centre;
-  std::vector<double> reach;  // the blocks' reach widened by b's travel since they were made [m]
+  std::vector<double>& reach =
+      m_work.reach;  // the blocks' reach widened by b's travel since they were made [m]
   // Per segment: its middle and the radius of its bounding sphere plus its larger contact radius, made for
   // a block's segments when a node first searches the block (most blocks are never searched).
   const std::vector<Vec3>& segmentMiddle = spheres.segmentMiddle;
@@ -259,16 +261,72 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   std::vector<int>& hint = m_hint[{line, other}];
   hint.resize(static_cast<std::size_t>(a.nodeCount), 0);
   std::vector<double> out(static_cast<std::size_t>(a.nodeCount), kInf);
-  std::vector<char> skipNode = skip ? *skip : std::vector<char>(static_cast<std::size_t>(a.nodeCount), 0);
+  std::vector<char>& skipNode = m_work.skipNode;
+  if (skip)
+    skipNode = *skip;
+  else
+    skipNode.assign(static_cast<std::size_t>(a.nodeCount), 0);
   // Nodes in blocks of kBlock (a sphere (ca, ra) around them). With a threshold, a whole block is skipped
   // first when no node within its sphere is nearer to any segment block k than its threshold allows
   // (|ca - c_k| - ra - reach_k). Then a first best distance per node from its hint segment; a segment
   // block whose bound is above the largest of them cannot improve any node of the block and is left out
   // of their searches. One bound per node block and segment block instead of one per node (the envelope
   // searches most nodes at every step while lines close: their clearance falls, a new minimum each step).
-  std::vector<double> hintDistance(static_cast<std::size_t>(kBlock)), hintLow(hintDistance.size());
+  std::array<double, kBlock> hintDistance{}, hintLow{};
   if (lower) lower->assign(static_cast<std::size_t>(a.nodeCount), -kInf);
   if (others) others->assign(static_cast<std::size_t>(a.nodeCount), -kInf);
+  if (certificate) {
+    // The certificate (Side::otherSegments): at the node's last search every segment of line b but the
+    // nearest and its neighbours was at least L from it (their `low`); each point of them has moved since by
+    // at most b's travel, and the node by |x - x0|, so they are at least L - |x - x0| - travel since now.
+    // When the nearest of the three is not farther than that, it is the nearest of all: the search's result
+    // from three segments (the same expressions: the same bits). Tried first, node by node, so that a block
+    // of nodes all certified needs none of the spheres below (the block bounds were 0.7 of the 0.86 G
+    // instructions of the envelope's searches in the first 130 s of drilling-riser-drift, the lines apart).
+    // The bound for the segments outside the new nearest one's three: the old one less the moves, and those
+    // of the three that now lie outside. A node it does not settle is searched in full below.
+    for (int i = 0; i < a.nodeCount && segments > 0; ++i) {
+      if (skipNode[static_cast<std::size_t>(i)] ||
+          !((*certificate->bound)[static_cast<std::size_t>(i)] > -kInf))
+        continue;
+      node = i;
+      const int n = a.firstNode + i;
+      const Vec3& x = state.position[n];
+      const int h = std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1);
+      double low = kInf;
+      const double best = segmentDistance(x, h, low);
+      const double farther = (*certificate->bound)[static_cast<std::size_t>(i)] -
+                             (x - (*certificate->position)[static_cast<std::size_t>(i)]).norm() -
+                             (certificate->travel - (*certificate->travelThen)[static_cast<std::size_t>(i)]);
+      std::array<double, 3> segmentLow{kInf, low, kInf};  // h - 1, h, h + 1
+      double nearBest = best, nearLow = low;
+      int nearSegment = std::isfinite(best) ? h : -1;
+      for (const int j : {h - 1, h + 1}) {
+        if (j < 0 || j >= segments) continue;
+        double segmentLowJ = kInf;
+        const double d = segmentDistance(x, j, segmentLowJ);
+        segmentLow[static_cast<std::size_t>(j - h + 1)] = segmentLowJ;
+        nearLow = std::min(nearLow, segmentLowJ);
+        if (d < nearBest) {
+          nearBest = d;
+          nearSegment = j;
+        }
+      }
+      if (nearSegment < 0 || nearBest > farther) continue;
+      double outside = farther;
+      for (int j = h - 1; j <= h + 1; ++j)
+        if (std::abs(j - nearSegment) > 1)
+          outside = std::min(outside, segmentLow[static_cast<std::size_t>(j - h + 1)]);
+      (*others)[static_cast<std::size_t>(i)] = outside;
+      hint[static_cast<std::size_t>(i)] = nearSegment;
+      const double clearance = smoothClearance(state, rule, i, nearSegment, nearBest);
+      out[static_cast<std::size_t>(i)] = clearance - 0.5 * diameter[n];
+      if (lower)
+        (*lower)[static_cast<std::size_t>(i)] = std::min({nearLow, farther, clearance}) - 0.5 * diameter[n];
+      skipNode[static_cast<std::size_t>(i)] = 1;  // settled: the blocks below leave it as it is
+    }
+    measured.clear();
+  }
   // A node found not below its threshold by the spheres alone, every segment's `low` at least `bound` [m]: no
   // exact clearance (out[i] +inf), but `bound` less its radius is a lower clearance of it now, and `bound` a
   // bound of every segment but any three (the certificate's). record() keeps them as the node's fresh
@@ -279,11 +337,11 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
     if (lower) (*lower)[static_cast<std::size_t>(i)] = bound - 0.5 * diameter[a.firstNode + i];
     if (others) (*others)[static_cast<std::size_t>(i)] = bound;
   };
-  std::vector<int> near;
-  near.reserve(static_cast<std::size_t>(blocks));
+  std::vector<int>& near = m_work.near;
   for (int start = 0; start < a.nodeCount; start += kBlock) {
     const int stop = std::min(start + kBlock, a.nodeCount);
-    // Every node of the block skipped: out stays +inf, lower -inf (what the searches below would leave).
+    // Every node of the block skipped (out +inf, lower -inf: what the searches below would leave) or
+    // certified.
     if (std::all_of(skipNode.begin() + start, skipNode.begin() + stop, [](char c) { return c != 0; }))
       continue;
     makeBlockSpheres();
@@ -343,7 +401,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         farBound = std::min(farBound, bound);
     }
     for (int i = start; i < stop; ++i) {
-      if (skipNode[static_cast<std::size_t>(i)]) continue;  // out[i] stays +inf: not a new minimum
+      if (skipNode[static_cast<std::size_t>(i)])
+        continue;  // skipped (out[i] +inf: not a new minimum) or settled
       node = i;
       const int n = a.firstNode + i;
       const Vec3& x = state.position[n];
@@ -370,49 +429,6 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       double best = hintDistance[static_cast<std::size_t>(i - start)];
       double low = hintLow[static_cast<std::size_t>(i - start)];
       int bestSegment = segments > 0 ? std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1) : -1;
-      if (certificate && bestSegment >= 0 && (*certificate->bound)[static_cast<std::size_t>(i)] > -kInf) {
-        // The certificate (Side::otherSegments): at the node's last search every segment of line b but the
-        // nearest and its neighbours was at least L from it (their `low`); each point of them has moved
-        // since by at most b's travel, and the node by |x - x0|, so they are at least L - |x - x0| - travel
-        // since now. When the nearest of the three is not farther than that, it is the nearest of all: the
-        // search's result from three segments (the same expressions: the same bits). The search of the
-        // nodes whose clearance falls, again every few steps as lines close and in contact, was most of the
-        // envelope's time (1.65 of 2.3 G instructions of drilling-riser-drift's run). The bound for the
-        // segments outside the new nearest one's three: the old one less the moves, and those of the three
-        // that now lie outside.
-        const double farther =
-            (*certificate->bound)[static_cast<std::size_t>(i)] -
-            (x - (*certificate->position)[static_cast<std::size_t>(i)]).norm() -
-            (certificate->travel - (*certificate->travelThen)[static_cast<std::size_t>(i)]);
-        const int h = bestSegment;
-        std::array<double, 3> segmentLow{kInf, low, kInf};  // h - 1, h (measured above), h + 1
-        double nearBest = best, nearLow = low;
-        int nearSegment = std::isfinite(best) ? h : -1;
-        for (const int j : {h - 1, h + 1}) {
-          if (j < 0 || j >= segments) continue;
-          double segmentLowJ = kInf;
-          const double d = segmentDistance(x, j, segmentLowJ);
-          segmentLow[static_cast<std::size_t>(j - h + 1)] = segmentLowJ;
-          nearLow = std::min(nearLow, segmentLowJ);
-          if (d < nearBest) {
-            nearBest = d;
-            nearSegment = j;
-          }
-        }
-        if (nearSegment >= 0 && nearBest <= farther) {
-          double outside = farther;
-          for (int j = h - 1; j <= h + 1; ++j)
-            if (std::abs(j - nearSegment) > 1)
-              outside = std::min(outside, segmentLow[static_cast<std::size_t>(j - h + 1)]);
-          (*others)[static_cast<std::size_t>(i)] = outside;
-          hint[static_cast<std::size_t>(i)] = nearSegment;
-          best = smoothClearance(state, rule, i, nearSegment, nearBest);
-          out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
-          if (lower)
-            (*lower)[static_cast<std::size_t>(i)] = std::min({nearLow, farther, best}) - 0.5 * diameter[n];
-          continue;
-        }
-      }
       measured.clear();
       if (others && bestSegment >= 0 && std::isfinite(low))
         measured.emplace_back(bestSegment, low);  // the hint's
@@ -488,8 +504,9 @@ void ClearanceEnvelope::record(const model::State& state) {
     }
   }
   m_lastPosition = state.position;
-  std::vector<char> skip;
-  std::vector<double> lower, others;
+  std::vector<char>& skip = m_work.skip;
+  std::vector<double>& lower = m_work.lower;
+  std::vector<double>& others = m_work.others;
   // Each pair's smallest dynamic clearance so far, over both its sides [m] (kept as the envelope falls).
   if (m_pairMinimum.size() != m_pairs.size()) m_pairMinimum.assign(m_pairs.size(), kInf);
   const std::vector<double> pairMinimum = m_pairMinimum;
@@ -517,7 +534,8 @@ void ClearanceEnvelope::record(const model::State& state) {
     const double travel = m_travel[static_cast<std::size_t>(s.other)];
     const double bothTravel = m_travel[static_cast<std::size_t>(s.line)] + travel;  // [m]
     skip.assign(static_cast<std::size_t>(a.nodeCount), 0);
-    bool anySearched = false;
+    std::vector<int>& tried = m_work.tried;  // the nodes not let off (search() may find their clearance)
+    tried.clear();
     for (std::size_t i = 0; i < skip.size(); ++i) {
       if (bothTravel <= s.wake[i]) {
         skip[i] = 1;
@@ -532,12 +550,12 @@ void ClearanceEnvelope::record(const model::State& state) {
       const double room = s.knownClearance[i] - (travel - s.knownTravel[i]) - (envelope - tolerance);
       const double moved2 = (x - s.knownPosition[i]).squaredNorm();  // [m^2]
       skip[i] = s.knownClearance[i] == kInf || (room >= 0.0 && moved2 <= room * room) ? 1 : 0;
-      anySearched |= skip[i] == 0;
+      if (!skip[i]) tried.push_back(static_cast<int>(i));
       // The room to spare, less a margin for the round-off of the two tests (positions of 1e3 m: 1e-13 m).
       if (skip[i]) s.wake[i] = bothTravel + (room - std::sqrt(moved2)) - kWakeMargin;
     }
     // Nothing to search: nothing changes (a sixth of drift-into-spread's 326 000 side calls).
-    if (!anySearched) continue;
+    if (tried.empty()) continue;
     const auto newValue = [&](std::size_t i, double clearance) {
       if (clearance < s.dynamicClearance[i]) {
         s.dynamicClearance[i] = clearance;
@@ -548,7 +566,8 @@ void ClearanceEnvelope::record(const model::State& state) {
     const Certificate certificate{&s.otherSegments, &s.knownPosition, &s.knownTravel, travel, &others};
     const std::vector<double> c =
         search(state, s.line, s.other, &s.dynamicClearance, &skip, &lower, &travel, &certificate);
-    for (std::size_t i = 0; i < c.size(); ++i) {
+    for (const int node : tried) {  // the others: +inf and -inf, nothing to keep
+      const std::size_t i = static_cast<std::size_t>(node);
       if (std::isfinite(lower[i])) {  // searched (its exact clearance), or settled by the spheres
         s.knownClearance[i] = lower[i];
         s.knownPosition[i] = state.position[a.firstNode + static_cast<int>(i)];

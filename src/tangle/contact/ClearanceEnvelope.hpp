@@ -20,6 +20,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tangle/contact/ContactCandidates.hpp"
@@ -122,6 +123,17 @@ class ClearanceEnvelope {
     std::vector<double> segmentTravel;
   };
   mutable std::map<std::size_t, LineSpheres> m_spheres;  ///< per line (record()'s searches)
+  /// Work space of search() and record() (their vectors kept from call to call: no allocation per step).
+  struct Workspace {
+    std::vector<std::pair<int, double>> measured;
+    std::vector<double> reach;
+    std::vector<char> skipNode;
+    std::vector<int> near;
+    std::vector<char> skip;
+    std::vector<int> tried;
+    std::vector<double> lower, others;
+  };
+  mutable Workspace m_work;
 
   const model::Model* m_model;
   /// The contact's rules of which element pairs may touch (its exclusions and shared connections), for the
