@@ -106,11 +106,15 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
   // margin + 2 moved <= the list's margin, on squares (no root per segment end), every end tested without
   // a branch (the list is reused at nearly every call). A non-finite end fails the test (its squared
   // distance from the list's finite end is NaN or infinite) and goes to the broad phase, which reports it.
-  // While no element has parted, the ends are the enabled lines' nodes: each is tested once, on the state,
-  // and only the proxies of the list's pairs are brought to it (all of them were, at every call: 0.7 G
-  // instructions of drilling-riser-drift's run, where the list holds a few pairs of 300 segments).
+  // The ends are the proxies' nodes: each is tested once, on the state. While no element has parted, the
+  // proxies are every element of the enabled lines and only those of the list's pairs are brought to the
+  // state (all of them were, at every call: 0.7 G instructions of drilling-riser-drift's run, where the list
+  // holds a few pairs of 300 segments); once one may have, they are made again at every call, and the list
+  // serves while it is of the same proxies (parting only removes elements, and a rewound step's time only
+  // brings back those removed later: the same count, the same proxies).
   const bool complete = m_proxiesComplete && !m_model->parted().any();
-  bool reuse = complete && !m_verletPositions.empty() && margin <= m_verletMargin;
+  if (!complete) buildProxies(state);
+  bool reuse = m_verletMargin >= 0.0 && margin <= m_verletMargin && m_proxies.size() == m_verletProxyCount;
   if (reuse) {
     const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
     bool within = true;
@@ -119,30 +123,19 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
           (state.position[static_cast<std::size_t>(m_proxyNodes[k])] - m_verletPositions[k]).squaredNorm() <=
           allowed2;
     reuse = within;
-    if (reuse) {
-      const auto& elements = m_model->elements();
-      for (const CandidatePair& c : m_verletPairs)
-        for (const int i : {c.first, c.second}) {
-          SegmentProxy& p = m_proxies[static_cast<std::size_t>(i)];
-          const model::LineElement& el = elements[static_cast<std::size_t>(p.element)];
-          p.a = state.position[el.node1];
-          p.b = state.position[el.node2];
-        }
-    }
-  } else if (!complete) {
-    buildProxies(state);
-    reuse = m_verletProxies.size() == m_proxies.size() && margin <= m_verletMargin;
-    if (reuse) {
-      const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
-      bool within = true;
-      for (std::size_t i = 0; i < m_proxies.size(); ++i)
-        within &= ((m_proxies[i].a - m_verletProxies[i].a).squaredNorm() <= allowed2) &
-                  ((m_proxies[i].b - m_verletProxies[i].b).squaredNorm() <= allowed2);
-      reuse = within;
-    }
+  }
+  if (reuse && complete) {
+    const auto& elements = m_model->elements();
+    for (const CandidatePair& c : m_verletPairs)
+      for (const int i : {c.first, c.second}) {
+        SegmentProxy& p = m_proxies[static_cast<std::size_t>(i)];
+        const model::LineElement& el = elements[static_cast<std::size_t>(p.element)];
+        p.a = state.position[el.node1];
+        p.b = state.position[el.node2];
+      }
   }
   if (!reuse) {
-    buildProxies(state);
+    if (complete) buildProxies(state);
     BroadPhaseOptions options = m_broadPhase.options();
     options.margin = 2.0 * margin;  // skin: the extra margin
     m_verletMargin = options.margin;
@@ -155,24 +148,18 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
                                                                       m_proxies[c.second].element);
                                          }),
                           m_verletPairs.end());
-    if (m_proxiesComplete && !m_model->parted().any()) {
-      if (m_proxyNodes.empty()) {
-        const auto& elements = m_model->elements();
-        for (const SegmentProxy& p : m_proxies)
-          for (const int n : {elements[static_cast<std::size_t>(p.element)].node1,
-                              elements[static_cast<std::size_t>(p.element)].node2})
-            m_proxyNodes.push_back(n);
-        std::sort(m_proxyNodes.begin(), m_proxyNodes.end());
-        m_proxyNodes.erase(std::unique(m_proxyNodes.begin(), m_proxyNodes.end()), m_proxyNodes.end());
-      }
-      m_verletPositions.resize(m_proxyNodes.size());
-      for (std::size_t k = 0; k < m_proxyNodes.size(); ++k)
-        m_verletPositions[k] = state.position[static_cast<std::size_t>(m_proxyNodes[k])];
-      m_verletProxies.clear();
-    } else {
-      m_verletPositions.clear();
-      m_verletProxies = m_proxies;
-    }
+    const auto& elements = m_model->elements();
+    m_proxyNodes.clear();
+    for (const SegmentProxy& p : m_proxies)
+      for (const int n : {elements[static_cast<std::size_t>(p.element)].node1,
+                          elements[static_cast<std::size_t>(p.element)].node2})
+        m_proxyNodes.push_back(n);
+    std::sort(m_proxyNodes.begin(), m_proxyNodes.end());
+    m_proxyNodes.erase(std::unique(m_proxyNodes.begin(), m_proxyNodes.end()), m_proxyNodes.end());
+    m_verletPositions.resize(m_proxyNodes.size());
+    for (std::size_t k = 0; k < m_proxyNodes.size(); ++k)
+      m_verletPositions[k] = state.position[static_cast<std::size_t>(m_proxyNodes[k])];
+    m_verletProxyCount = m_proxies.size();
   }
   std::vector<CandidatePair> pairs;
   for (const CandidatePair& c : m_verletPairs)

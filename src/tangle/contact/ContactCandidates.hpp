@@ -83,12 +83,12 @@ class ContactCandidates {
   std::vector<SegmentProxy> m_proxies;
   bool m_proxiesComplete = false;  // m_proxies holds every element of the enabled lines (none parted)
   std::vector<CandidatePair> m_candidates;
-  /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] of the proxies at m_verletProxies.
+  /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] (< 0: none made) of the proxies, as
+  /// they were when it was made; the proxies' count then, their nodes (ascending, each once) and those nodes'
+  /// positions then [m] (the list's test is on them).
   std::vector<CandidatePair> m_verletPairs;
-  std::vector<SegmentProxy> m_verletProxies;
   double m_verletMargin = -1.0;
-  /// With every proxy complete (no element parted): the proxies' nodes, and their positions when the Verlet
-  /// list was made [m] (the list's test is on them; m_verletProxies is then unused).
+  std::size_t m_verletProxyCount = 0;
   std::vector<int> m_proxyNodes;
   std::vector<Vec3> m_verletPositions;
 };
