@@ -287,7 +287,7 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
     // of the three that now lie outside. A node it does not settle is searched in full below.
     for (int i = 0; i < a.nodeCount && segments > 0; ++i) {
       if (skipNode[static_cast<std::size_t>(i)] ||
-          !((*certificate->bound)[static_cast<std::size_t>(i)] > -kInf))
+          !(certificate->side->otherSegments[static_cast<std::size_t>(i)] > -kInf))
         continue;
       node = i;
       const int n = a.firstNode + i;
@@ -295,9 +295,10 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       const int h = std::clamp(hint[static_cast<std::size_t>(i)], 0, segments - 1);
       double low = kInf;
       const double best = segmentDistance(x, h, low);
-      const double farther = (*certificate->bound)[static_cast<std::size_t>(i)] -
-                             (x - (*certificate->position)[static_cast<std::size_t>(i)]).norm() -
-                             (certificate->travel - (*certificate->travelThen)[static_cast<std::size_t>(i)]);
+      const Side& known = *certificate->side;
+      const double farther = known.otherSegments[static_cast<std::size_t>(i)] -
+                             (x - known.knownPosition[static_cast<std::size_t>(i)]).norm() -
+                             (*travel - known.knownTravel[static_cast<std::size_t>(i)]);
       std::array<double, 3> segmentLow{kInf, low, kInf};  // h - 1, h, h + 1
       double nearBest = best, nearLow = low;
       int nearSegment = std::isfinite(best) ? h : -1;
@@ -563,7 +564,7 @@ void ClearanceEnvelope::record(const model::State& state) {
         m_pairMinimum[side / 2] = std::min(m_pairMinimum[side / 2], clearance);
       }
     };
-    const Certificate certificate{&s.otherSegments, &s.knownPosition, &s.knownTravel, travel, &others};
+    const Certificate certificate{&s, &others};
     const std::vector<double> c =
         search(state, s.line, s.other, &s.dynamicClearance, &skip, &lower, &travel, &certificate);
     for (const int node : tried) {  // the others: +inf and -inf, nothing to keep

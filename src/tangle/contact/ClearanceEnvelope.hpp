@@ -90,17 +90,16 @@ class ClearanceEnvelope {
     double time;       ///< [s] (NaN for the static one)
   };
   Minimum minimum(std::size_t pair, bool dynamic) const;
-  /// record()'s certificate of a side's nodes (ClearanceEnvelope.cpp, search()).
+  /// record()'s certificate of a side's nodes (ClearanceEnvelope.cpp, search()): the side's knowledge
+  /// (otherSegments, knownPosition, knownTravel), and where the nodes' new otherSegments bounds go (-inf for
+  /// the nodes not found).
   struct Certificate {
-    const std::vector<double>* bound;       ///< Side::otherSegments [m]
-    const std::vector<Vec3>* position;      ///< Side::knownPosition [m]
-    const std::vector<double>* travelThen;  ///< Side::knownTravel [m]
-    double travel;                          ///< line `other`'s m_travel now [m]
-    std::vector<double>* others;  ///< gets per node found its new otherSegments bound (-inf for the others)
+    const Side* side;
+    std::vector<double>* others;
   };
   /// nodeClearance, with the spheres that bound blocks of `other`'s segments kept from call to call when
-  /// `travel` (how far line `other` has moved in all, m_travel [m]) is given, and with a `certificate`, the
-  /// nodes whose nearest segment it proves found from three segments.
+  /// `travel` (how far line `other` has moved in all, m_travel [m]) is given, and with a `certificate` (and
+  /// `travel`), the nodes whose nearest segment it proves found from three segments.
   std::vector<double> search(const model::State& state, int line, int other,
                              const std::vector<double>* onlyBelow, const std::vector<char>* skip,
                              std::vector<double>* lower, const double* travel,
