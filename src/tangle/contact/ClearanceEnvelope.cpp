@@ -202,8 +202,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   const double slack =
       kSphereSlack * (b.arcLength.back() - b.arcLength.front()) / std::max(segments, 1);  // [m]
   const std::vector<Vec3>& centre = spheres.centre;
-  std::vector<double>& reach =
-      m_work.reach;  // the blocks' reach widened by b's travel since they were made [m]
+  // The blocks' reach widened by b's travel since they were made [m].
+  std::vector<double>& reach = m_work.reach;
   // Per segment: its middle and the radius of its bounding sphere plus its larger contact radius, made for
   // a block's segments when a node first searches the block (most blocks are never searched).
   const std::vector<Vec3>& segmentMiddle = spheres.segmentMiddle;

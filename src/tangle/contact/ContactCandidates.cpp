@@ -110,11 +110,18 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
   // proxies are every element of the enabled lines and only those of the list's pairs are brought to the
   // state (all of them were, at every call: 0.7 G instructions of drilling-riser-drift's run, where the list
   // holds a few pairs of 300 segments); once one may have, they are made again at every call, and the list
-  // serves while it is of the same proxies (parting only removes elements, and a rewound step's time only
-  // brings back those removed later: the same count, the same proxies).
+  // serves while it is of the same proxies (the same elements in the same order: its pairs are indices).
   const bool complete = m_proxiesComplete && !m_model->parted().any();
   if (!complete) buildProxies(state);
-  bool reuse = m_verletMargin >= 0.0 && margin <= m_verletMargin && m_proxies.size() == m_verletProxyCount;
+  const auto sameProxies = [&] {
+    if (m_proxies.size() != m_verletElements.size()) return false;
+    for (std::size_t i = 0; i < m_proxies.size(); ++i)
+      if (m_proxies[i].element != m_verletElements[i]) return false;
+    return true;
+  };
+  // (Complete now and the same count: complete then too, every element of the enabled lines in order.)
+  bool reuse = m_verletMargin >= 0.0 && margin <= m_verletMargin &&
+               (complete ? m_proxies.size() == m_verletElements.size() : sameProxies());
   if (reuse) {
     const double allowed = 0.5 * (m_verletMargin - margin), allowed2 = allowed * allowed;
     bool within = true;
@@ -159,7 +166,8 @@ std::vector<CandidatePair> ContactCandidates::pairsWithin(const model::State& st
     m_verletPositions.resize(m_proxyNodes.size());
     for (std::size_t k = 0; k < m_proxyNodes.size(); ++k)
       m_verletPositions[k] = state.position[static_cast<std::size_t>(m_proxyNodes[k])];
-    m_verletProxyCount = m_proxies.size();
+    m_verletElements.resize(m_proxies.size());
+    for (std::size_t i = 0; i < m_proxies.size(); ++i) m_verletElements[i] = m_proxies[i].element;
   }
   std::vector<CandidatePair> pairs;
   for (const CandidatePair& c : m_verletPairs)

@@ -84,11 +84,11 @@ class ContactCandidates {
   bool m_proxiesComplete = false;  // m_proxies holds every element of the enabled lines (none parted)
   std::vector<CandidatePair> m_candidates;
   /// Verlet list of pairsWithin: the pairs within m_verletMargin [m] (< 0: none made) of the proxies, as
-  /// they were when it was made; the proxies' count then, their nodes (ascending, each once) and those nodes'
-  /// positions then [m] (the list's test is on them).
+  /// they were when it was made; the proxies' elements then, their nodes (ascending, each once) and those
+  /// nodes' positions then [m] (the list's test is on them).
   std::vector<CandidatePair> m_verletPairs;
   double m_verletMargin = -1.0;
-  std::size_t m_verletProxyCount = 0;
+  std::vector<int> m_verletElements;
   std::vector<int> m_proxyNodes;
   std::vector<Vec3> m_verletPositions;
 };
