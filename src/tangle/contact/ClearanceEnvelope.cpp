@@ -171,17 +171,15 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   const SegmentRule rule = segmentRule(state, line, other);
   int node = 0;  // the node of line a whose clearance is being found
   // Surface distance from x to segment j of line b (the clearance before x's own radius); `low` is lowered to
-  // the distance less the segment's larger contact radius, the bound record() carries from step to step. With
-  // `others`, the segments measured and their `low` go to `measured`.
-  std::vector<std::pair<int, double>>& measured = m_work.measured;
-  measured.clear();
+  // the distance less the segment's larger contact radius, the bound record() carries from step to step.
   const auto segmentDistance = [&](const Vec3& x, int j, double& low) {
     if (!rule.assessed(node, j)) return kInf;
     const ChordClearance c = chordClearance(state.position, diameter, b, j, x);
     low = std::min(low, c.low);
-    if (others) measured.emplace_back(j, c.low);
     return c.clearance;
   };
+  // With `others`, a full search's segments and their `low` (the hint's, then those of the blocks searched).
+  std::vector<std::pair<int, double>>& measured = m_work.measured;
   // Bounding spheres of blocks of kBlock segments: no segment of a block is nearer to x than
   // |x - centre| - sphere radius - the block's largest contact radius, so a block whose bound is not below
   // the best distance so far is skipped. The minimum is exactly the brute-force one (same expression on the
@@ -326,7 +324,6 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         (*lower)[static_cast<std::size_t>(i)] = std::min({nearLow, farther, clearance}) - 0.5 * diameter[n];
       skipNode[static_cast<std::size_t>(i)] = 1;  // settled: the blocks below leave it as it is
     }
-    measured.clear();
   }
   // A node found not below its threshold by the spheres alone, every segment's `low` at least `bound` [m]: no
   // exact clearance (out[i] +inf), but `bound` less its radius is a lower clearance of it now, and `bound` a
@@ -458,7 +455,10 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
             prunedSegmentReach = std::max(prunedSegmentReach, segmentReachNow);
             continue;
           }
-          const double d = segmentDistance(x, j, low);
+          double segmentLow = kInf;
+          const double d = segmentDistance(x, j, segmentLow);
+          low = std::min(low, segmentLow);
+          if (others) measured.emplace_back(j, segmentLow);
           if (d < best) {
             best = d;
             bestSegment = j;
@@ -551,9 +551,10 @@ void ClearanceEnvelope::record(const model::State& state) {
       const double room = s.knownClearance[i] - (travel - s.knownTravel[i]) - (envelope - tolerance);
       const double moved2 = (x - s.knownPosition[i]).squaredNorm();  // [m^2]
       skip[i] = s.knownClearance[i] == kInf || (room >= 0.0 && moved2 <= room * room) ? 1 : 0;
-      if (!skip[i]) tried.push_back(static_cast<int>(i));
-      // The room to spare, less a margin for the round-off of the two tests (positions of 1e3 m: 1e-13 m).
-      if (skip[i]) s.wake[i] = bothTravel + (room - std::sqrt(moved2)) - kWakeMargin;
+      if (skip[i])  // the room to spare, less a margin for the round-off of the two tests (1e-13 m at 1e3 m)
+        s.wake[i] = bothTravel + (room - std::sqrt(moved2)) - kWakeMargin;
+      else
+        tried.push_back(static_cast<int>(i));
     }
     // Nothing to search: nothing changes (a sixth of drift-into-spread's 326 000 side calls).
     if (tried.empty()) continue;
