@@ -208,15 +208,40 @@ Simulation& CoupledRun::simulation() {
   return *m_simulation;
 }
 
+const std::vector<solver::LineSnapshot>& CoupledRun::lineResults() {
+  if (!m_linesCurrent && m_simulation) {
+    m_simulation->lineResults(m_supportForce, m_dynamicResults, m_lines);
+    m_linesCurrent = true;
+  }
+  return m_lines;
+}
+
+const std::vector<solver::LineSnapshot>& CoupledRun::lineEnds() {
+  if (m_linesCurrent) return m_lines;
+  if (!m_endsCurrent && m_simulation) {
+    m_simulation->lineResults(m_supportForce, m_dynamicResults, m_endResults, solver::LineResultDetail::Ends);
+    m_endsCurrent = true;
+  }
+  return m_endResults;
+}
+
 void CoupledRun::refreshResults(bool dynamic) {
-  m_lines = m_simulation->snapshot(dynamic);
+  // The line results are formed when asked for (lineResults, lineEnds); the forces on the host are the
+  // support reactions at the coupled ends.
+  m_supportForce = m_simulation->supportForce(dynamic);
+  m_dynamicResults = dynamic;
+  m_linesCurrent = false;
+  m_endsCurrent = false;
+  const model::Model& model = m_simulation->model();
   std::fill(m_forces.begin(), m_forces.end(), 0.0);
   for (std::size_t k = 0; k < m_ends.size(); ++k) {
     const auto [line, end] = m_ends[k];
-    const solver::LineSnapshot& s = m_lines[static_cast<std::size_t>(line)];
-    // The force the line exerts on its support (LineSnapshot::endForceA/B): on the host.
-    const Vec3& onHost = end == 0 ? s.endForceA : s.endForceB;
-    for (int i = 0; i < 3; ++i) m_forces[3 * static_cast<std::size_t>(m_endPoint[k]) + i] += onHost[i];
+    const model::Line& ml = model.lines()[static_cast<std::size_t>(line)];
+    // The force the line exerts on its support (LineSnapshot::endForceA/B, minus the support's reaction on
+    // the line): on the host.
+    const Eigen::Index dof = model.dofs().firstDof(end == 0 ? ml.firstNode : ml.lastNode());
+    for (int i = 0; i < 3; ++i)
+      m_forces[3 * static_cast<std::size_t>(m_endPoint[k]) + i] -= m_supportForce[dof + i];
   }
   if (std::all_of(m_vesselOfPoint.begin(), m_vesselOfPoint.end(), [](int v) { return v < 0; })) return;
   // A pinned vessel: the out-of-balance force at its held translations (body loads, its lines' links, its
@@ -234,7 +259,6 @@ void CoupledRun::refreshResults(bool dynamic) {
     m_simulation->assembler().addMass(state, 0.0, nullptr, &state.acceleration, &inertia);
     force += inertia;
   }
-  const model::Model& model = m_simulation->model();
   for (std::size_t p = 0; p < m_points.size(); ++p) {
     if (m_vesselOfPoint[p] < 0) continue;
     const int d = model.dofs().firstDof(model.vesselNode(m_vesselOfPoint[p]));

@@ -62,8 +62,15 @@ class CoupledRun {
   /// vessel's point, what the vessel exerts on its support: the reaction at its held translations, with its
   /// inertia (the body's net force less its mass times the point's acceleration, MoorDyn's Body::getFnet).
   const std::vector<double>& forces() const { return m_forces; }
-  /// Results along every line at the current state (positions, tensions, end forces).
-  const std::vector<solver::LineSnapshot>& lineResults() const { return m_lines; }
+  /// Results along every line at the current state (positions, tensions, end forces), formed at the first
+  /// call after initialize or a step (a host that reads only the forces does not pay for them). The
+  /// reference is valid until the next step.
+  const std::vector<solver::LineSnapshot>& lineResults();
+  /// The line ends' results at the current state (solver::LineResultDetail::Ends: positions, end forces and
+  /// end tensions; nothing inside the lines), formed at the first call after a step: a host's per-step
+  /// reading of fairlead tensions. The whole results when they are formed already. Valid until the next
+  /// step.
+  const std::vector<solver::LineSnapshot>& lineEnds();
   /// Position and velocity of a coupled point at the current time [m], [m/s].
   Vec3 pointPosition(int point) const;
   Vec3 pointVelocity(int point) const;
@@ -88,7 +95,12 @@ class CoupledRun {
   std::unique_ptr<Simulation> m_simulation;
   std::unique_ptr<time::DynamicAnalysis> m_dynamics;
   std::vector<double> m_forces;
-  std::vector<solver::LineSnapshot> m_lines;
+  VecX m_supportForce;                        ///< Simulation::supportForce at the current state [N]
+  bool m_dynamicResults = false;              ///< the current state is a dynamic one (results with inertia)
+  std::vector<solver::LineSnapshot> m_lines;  ///< lineResults(), when m_linesCurrent
+  std::vector<solver::LineSnapshot> m_endResults;  ///< lineEnds(), when m_endsCurrent
+  bool m_linesCurrent = false;
+  bool m_endsCurrent = false;
 };
 
 }  // namespace tangle::analysis

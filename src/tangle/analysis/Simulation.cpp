@@ -323,6 +323,21 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
 }
 
 std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
+  std::vector<solver::LineSnapshot> lines;
+  lineResults(supportForce(dynamic), dynamic, lines);
+  return lines;
+}
+
+void Simulation::lineResults(const VecX& supportForce, bool dynamic, std::vector<solver::LineSnapshot>& out,
+                             solver::LineResultDetail detail) {
+  // Statics: the exact end forces of the discrete model (the dynamics keep the extrapolated ones, which
+  // the range graphs compute at every step from the elements alone); they need the tensions along.
+  if (!dynamic) detail = solver::LineResultDetail::All;
+  solver::computeLineResults(*m_model, *m_assembler, m_state, &supportForce, out, detail);
+  if (!dynamic) setStaticEndForces(*this, out);
+}
+
+VecX Simulation::supportForce(bool dynamic) {
   solver::AssemblyRequest request;
   request.wantMatrix = false;
   request.dynamic = dynamic;
@@ -362,11 +377,7 @@ std::vector<solver::LineSnapshot> Simulation::snapshot(bool dynamic) {
   if (m_vessels) force -= m_vessels->endConnectionForces(m_state, m_state.time);
   // Ends at free points: likewise the ties' forces.
   if (m_junctions) force -= m_junctions->tieForces(m_state);
-  std::vector<solver::LineSnapshot> lines = solver::computeLineResults(*m_model, *m_assembler, m_state, force);
-  // Statics: the exact end forces of the discrete model (the dynamics keep the extrapolated ones, which
-  // the range graphs compute at every step from the elements alone).
-  if (!dynamic) setStaticEndForces(*this, lines);
-  return lines;
+  return force;
 }
 
 const std::vector<solver::LineSnapshot>& Simulation::sectionSnapshot() const {

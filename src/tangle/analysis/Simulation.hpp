@@ -49,6 +49,15 @@ class Simulation {
   solver::StaticResult solveStatics(bool progress = false);
   /// Results along every line at the current state.
   std::vector<solver::LineSnapshot> snapshot(bool dynamic = false);
+  /// The assembled out-of-balance force at the current state with the forces of whatever holds the line ends
+  /// left out [N], in the model's DOFs: at a held end node it is the support's reaction on the line. Only
+  /// the end nodes' entries are meant (elsewhere it may hold only part of the terms:
+  /// Assembler::assemblePart).
+  VecX supportForce(bool dynamic = false);
+  /// snapshot() from a supportForce() of the current state, into `out` (capacity kept). In statics the
+  /// results are always whole (`detail` All) and the end forces the discrete model's exact ones.
+  void lineResults(const VecX& supportForce, bool dynamic, std::vector<solver::LineSnapshot>& out,
+                   solver::LineResultDetail detail = solver::LineResultDetail::All);
   /// The same results without the support reactions (endForceA/B are zero): tensions, moments,
   /// curvatures and end tensions come from the elements alone, so no force assembly is needed. For
   /// per-step work such as range graphs, where a full assembly per step would be wasted. Neither are the

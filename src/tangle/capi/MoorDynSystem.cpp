@@ -482,7 +482,7 @@ void MoorDynSystem::requireInitialized() const {
 const MoorDynSystem::TangleLine& MoorDynSystem::tangleLine(const std::string& name) {
   requireInitialized();
   if (const auto it = m_tangleLines.find(name); it != m_tangleLines.end()) return it->second;
-  const std::vector<solver::LineSnapshot>& results = m_run->lineResults();
+  const std::vector<solver::LineSnapshot>& results = m_run->lineEnds();  // the names are in either
   const auto found = std::find_if(results.begin(), results.end(),
                                   [&name](const solver::LineSnapshot& s) { return s.name == name; });
   const int modelLine = m_run->simulation().model().lineIndex(name);
@@ -492,12 +492,12 @@ const MoorDynSystem::TangleLine& MoorDynSystem::tangleLine(const std::string& na
   return m_tangleLines[name] = TangleLine{static_cast<int>(found - results.begin()), modelLine};
 }
 
-MoorDynSystem::NodeRef MoorDynSystem::deckNode(int l, unsigned int i) {
+MoorDynSystem::NodeRef MoorDynSystem::deckNode(int l, unsigned int i, bool ends) {
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   if (i > static_cast<unsigned int>(map.segments))
     throw InvalidValue(fmt::format("line {} has nodes 0 to {}, not {}", deckLine(l).id, map.segments, i));
   const int offset = static_cast<int>(i);
-  const NodeRef n = tangleNode(map.tangleLine, map.firstNode + (map.reversed ? -offset : offset));
+  const NodeRef n = tangleNode(map.tangleLine, map.firstNode + (map.reversed ? -offset : offset), ends);
   if (n.node < 0 || n.node >= static_cast<int>(n.snapshot->position.size()))
     throw Error(fmt::format(
         "{}: node {} of line {} maps to node {} of tangle line '{}', which has {} (a bug in tangle)", m_path,
@@ -555,7 +555,7 @@ double MoorDynSystem::lineAxialStiffness(int l) const {
 }
 
 Vec3 MoorDynSystem::nodePosition(int l, unsigned int i) {
-  const NodeRef n = deckNode(l, i);
+  const NodeRef n = deckNode(l, i, true);
   return n.snapshot->position[static_cast<std::size_t>(n.node)];
 }
 
@@ -587,7 +587,7 @@ double MoorDynSystem::nodeCurvature(int l, unsigned int i) {
 double MoorDynSystem::endTension(int l, int end) {
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   const auto segments = static_cast<unsigned int>(map.segments);
-  const NodeRef n = deckNode(l, end == 0 ? 0u : segments);
+  const NodeRef n = deckNode(l, end == 0 ? 0u : segments, true);  // end tensions, or a junction's
   const solver::LineSnapshot& s = *n.snapshot;
   if (n.node == 0) return s.endTensionA;
   if (n.node == static_cast<int>(s.position.size()) - 1) return s.endTensionB;
@@ -626,15 +626,14 @@ int MoorDynSystem::pointType(int p) const {
 }
 
 Vec3 MoorDynSystem::endNodePosition(const std::pair<std::string, int>& end) {
-  const solver::LineSnapshot& s =
-      m_run->lineResults()[static_cast<std::size_t>(tangleLine(end.first).snapshot)];
+  const solver::LineSnapshot& s = m_run->lineEnds()[static_cast<std::size_t>(tangleLine(end.first).snapshot)];
   return end.second == 0 ? s.position.front() : s.position.back();
 }
 
-MoorDynSystem::NodeRef MoorDynSystem::tangleNode(const std::string& line, int node) {
+MoorDynSystem::NodeRef MoorDynSystem::tangleNode(const std::string& line, int node, bool ends) {
   const TangleLine& t = tangleLine(line);
   NodeRef n;
-  n.snapshot = &m_run->lineResults()[static_cast<std::size_t>(t.snapshot)];
+  n.snapshot = &(ends ? m_run->lineEnds() : m_run->lineResults())[static_cast<std::size_t>(t.snapshot)];
   n.modelLine = t.modelLine;
   n.node = node;
   return n;
@@ -664,7 +663,7 @@ Vec3 MoorDynSystem::mappedPosition(const io::MoorDynPointMap& map) {
   if (!map.ends.empty()) return endNodePosition(map.ends.front());
   if (!map.junctionLine.empty()) {
     const solver::LineSnapshot& s =
-        m_run->lineResults()[static_cast<std::size_t>(tangleLine(map.junctionLine).snapshot)];
+        m_run->lineEnds()[static_cast<std::size_t>(tangleLine(map.junctionLine).snapshot)];
     return s.position.at(static_cast<std::size_t>(map.junctionNode));
   }
   return map.position;  // a point no line is attached to
@@ -720,7 +719,7 @@ Vec3 MoorDynSystem::rodNodePosition(int r, unsigned int i) {
   }
   if (map.tangleLine.empty() || !initialized()) return rod.endA + along;
   const solver::LineSnapshot& s =
-      m_run->lineResults()[static_cast<std::size_t>(tangleLine(map.tangleLine).snapshot)];
+      m_run->lineEnds()[static_cast<std::size_t>(tangleLine(map.tangleLine).snapshot)];
   return s.position.at(i);
 }
 

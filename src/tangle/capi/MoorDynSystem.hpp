@@ -243,9 +243,10 @@ class MoorDynSystem {
   /// The tangle line named `name` (after initialize). @throws Error when the model has no such line
   const TangleLine& tangleLine(const std::string& name);
   /// Node `node` (from its end A) of the tangle line named `line` (after initialize).
-  NodeRef tangleNode(const std::string& line, int node);
+  /// `ends`: the snapshot may be CoupledRun::lineEnds() (positions, end forces and end tensions only).
+  NodeRef tangleNode(const std::string& line, int node, bool ends = false);
   /// Node i of deck line l. @throws InvalidValue for i above the line's segment count
-  NodeRef deckNode(int l, unsigned int i);
+  NodeRef deckNode(int l, unsigned int i, bool ends = false);
   /// The tension vector at `n` oriented from the tangle line's end A to its end B [N]; `l` is the deck line.
   Vec3 tangleTension(const NodeRef& n, int l);
   /// Tension of deck line l's own end segment at `n`, a junction with another deck line inside the tangle

@@ -89,6 +89,7 @@ void setWallTension(const model::Model& model, int l, LineSnapshot& s) {
 void computeLineResults(const model::Model& model, const Assembler& assembler, const model::State& state,
                         const VecX* fullForce, std::vector<LineSnapshot>& out, LineResultDetail detail) {
   const bool all = detail == LineResultDetail::All;
+  const bool endsOnly = detail == LineResultDetail::Ends;
   // Work space of the calling thread (the writer computes the range graphs at every step).
   thread_local std::vector<element::BeamSectionForces> beamForces;
   thread_local std::vector<double> tension;
@@ -117,8 +118,16 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
     count.assign(n, 0);
     ei.assign(n, 0.0);
     for (int i = 0; i < n; ++i) s.position[i] = state.position[line.firstNode + i];
+    if (endsOnly) {
+      // The end nodes' values of the loop below: an end node has one element.
+      s.tension.front() = tension[line.firstElement];
+      s.tension.back() = tension[line.firstElement + line.elementCount - 1];
+      s.hasBending = std::any_of(model.elements().begin() + line.firstElement,
+                                 model.elements().begin() + line.firstElement + line.elementCount,
+                                 [](const model::LineElement& el) { return el.isBeam(); });
+    }
     bool anyBeam = false;
-    for (int e = 0; e < line.elementCount; ++e) {
+    for (int e = 0; e < line.elementCount && !endsOnly; ++e) {
       const model::LineElement& el = model.elements()[line.firstElement + e];
       const double t = tension[line.firstElement + e];
       s.tension[e] += t;
@@ -154,8 +163,10 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const double angle = cosine > 0.0 ? std::atan(sine / cosine) : std::atan2(sine, cosine);
       return angle / (0.5 * (segmentLength[i - 1] + segmentLength[i]));
     };
-    s.hasBending = anyBeam;
-    if (!anyBeam) {
+    if (endsOnly) {
+      // Nothing along the line: the end results below.
+    } else if (!anyBeam) {
+      s.hasBending = false;
       // A cable line (bars only) has no bending moment, torque or rotation (all stay zero) and its
       // curvature is the polyline's: the same values as the general loop below, without its work per node
       // (the writer runs this function at every step for the range graphs: docs/performance.md).
@@ -167,6 +178,7 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       }
       for (int i = 1; i + 1 < n; ++i) s.curvature[i] = polylineCurvature(i);
     } else {
+      s.hasBending = true;
       for (int i = 0; i < n; ++i) {
         s.tension[i] /= count[i];
         s.bendingMomentVector[i] /= count[i];
@@ -254,6 +266,11 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       // mooring-batch heading 0 at 1.5 m/s), and the summary's line maximum left the end out.
       s.tension.front() = s.endTensionA;
       s.tension.back() = s.endTensionB;
+    }
+    if (endsOnly) {
+      s.internalPressure.clear();
+      s.wallTension.clear();
+      continue;
     }
     setWallTension(model, static_cast<int>(l), s);
     if (!all) continue;

@@ -87,6 +87,10 @@ void setWallTension(const model::Model& model, int line, LineSnapshot& s);
 enum class LineResultDetail {
   All,            ///< every field of LineSnapshot
   SectionForces,  ///< all but `rotation` (left zero) and the touchdown (-1, 0 nodes): the range graphs'
+  Ends,           ///< the line ends' results only: `position`, endForceA/B, endTensionForceA/B, endTensionA/B
+                  ///< and `tension` at the two end nodes; every other entry zero (tension inside, moments,
+                  ///< curvature, rotation), no touchdown (-1), no wall tension (empty). A coupled host's
+                  ///< per-step reading of its fairlead tensions (analysis::CoupledRun::lineEnds).
 };
 
 /// Computes the snapshot of every line. `fullForce` is the assembled out-of-balance force at `state`

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <vector>
 
 #include "support/ModelFactory.hpp"
@@ -54,6 +55,49 @@ TEST(LineResults, AFreeEndWithAMassKeepsTheElementsForce) {
   computeLineResults(sim.model(), sim.assembler(), stretched(sim), nullptr, out, LineResultDetail::SectionForces);
   // Not zeroed: the line holds what is attached at its end (the value itself is the extrapolation's).
   EXPECT_GT(out[0].endTensionB, 1e6);
+}
+
+/// LineResultDetail::Ends (a coupled host's per-step fairlead tensions) gives the line ends' results of a
+/// whole computation bit for bit: on the beam line above (with the mass: both ends carry force) and on a
+/// cable line of two types, stretched and moving, with the support force of an assembly.
+TEST(LineResults, EndsAloneAreTheWholeResultsEnds) {
+  for (const bool cable : {false, true}) {
+    model::ModelSpec spec = hanging(true);
+    if (cable) {
+      spec.lineTypes["pipe"] = test::cableType("pipe", 0.1, 20.0, 1.0e8);
+      spec.lineTypes["lmrp"] = test::cableType("lmrp", 0.2, 80.0, 4.0e8);
+    }
+    analysis::Simulation sim(spec);
+    model::State state = stretched(sim);
+    for (std::size_t i = 0; i < state.position.size(); ++i)
+      state.position[i].x() += 0.3 * static_cast<double>(i * i);  // bent
+    sim.state() = state;
+    const VecX force = sim.supportForce(true);
+    std::vector<LineSnapshot> all, ends;
+    sim.lineResults(force, true, all);
+    sim.lineResults(force, true, ends, LineResultDetail::Ends);
+    ASSERT_EQ(ends.size(), 1u);
+    const LineSnapshot& a = all[0];
+    const LineSnapshot& e = ends[0];
+    EXPECT_EQ(e.name, a.name);
+    EXPECT_EQ(e.position, a.position);
+    EXPECT_EQ(e.endForceA, a.endForceA);
+    EXPECT_EQ(e.endForceB, a.endForceB);
+    EXPECT_EQ(e.endTensionForceA, a.endTensionForceA);
+    EXPECT_EQ(e.endTensionForceB, a.endTensionForceB);
+    EXPECT_EQ(e.endTensionA, a.endTensionA);
+    EXPECT_EQ(e.endTensionB, a.endTensionB);
+    EXPECT_EQ(e.tension.front(), a.tension.front());
+    EXPECT_EQ(e.tension.back(), a.tension.back());
+    EXPECT_EQ(e.hasBending, a.hasBending);
+    EXPECT_EQ(e.hasBending, !cable);
+    EXPECT_GT(a.endTensionA, 1e4);
+    EXPECT_GT(std::abs(a.endTensionB), 1e3);
+    // Nothing inside the line.
+    EXPECT_EQ(e.tension[1], 0.0);
+    EXPECT_NE(a.tension[1], 0.0);
+    EXPECT_TRUE(e.wallTension.empty());
+  }
 }
 
 }  // namespace
