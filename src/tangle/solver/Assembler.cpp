@@ -688,17 +688,18 @@ std::vector<double> Assembler::elementTension(const model::State& state,
 }
 
 void Assembler::elementTension(const model::State& state, std::vector<double>& t,
-                               std::vector<element::BeamSectionForces>* beamForces) const {
+                               std::vector<element::BeamSectionForces>* beamForces,
+                               const std::vector<int>* only) const {
   const auto& elements = m_model->elements();
   t.resize(elements.size());
   if (beamForces) beamForces->resize(elements.size());
   const model::PartedElements& parted = m_model->parted();
-  for (std::size_t e = 0; e < elements.size(); ++e) {
+  forEachIndex(only, elements.size(), [&](std::size_t e) {
     const model::LineElement& el = elements[e];
     if (parted.parted(e, state.time)) {  // lines[].failure: no force of any kind
       t[e] = 0.0;
       if (beamForces) (*beamForces)[e] = element::BeamSectionForces{0.0, 0.0, Vec3::Zero(), Vec3::Zero()};
-      continue;
+      return;
     }
     if (const int visco = m_visco.index(e); visco >= 0 && m_visco.active(state)) {
       t[e] = m_visco.tension(visco, state, compressionFactor(el));
@@ -715,7 +716,7 @@ void Assembler::elementTension(const model::State& state, std::vector<double>& t
       t[e] = f.axialForce;
       if (beamForces) (*beamForces)[e] = f;
     }
-  }
+  });
 }
 
 }  // namespace tangle::solver

@@ -150,9 +150,11 @@ class Assembler {
                                      std::vector<element::BeamSectionForces>* beamForces = nullptr) const;
   /// As above, into `tension` (resized to the element count; no allocation once sized: the writer thread's
   /// range graphs take it at every step). `beamForces`, when given, is resized and its beam entries set;
-  /// its bar entries are left as they were.
+  /// its bar entries are left as they were. With `only`, just the elements it lists are computed (the
+  /// other entries are left as they were).
   void elementTension(const model::State& state, std::vector<double>& tension,
-                      std::vector<element::BeamSectionForces>* beamForces) const;
+                      std::vector<element::BeamSectionForces>* beamForces,
+                      const std::vector<int>* only = nullptr) const;
 
   /// Force scale [N] of the static and dynamic convergence tests, independent of the mesh: the largest over
   /// the lines of the line's submerged weight (absolute, each element), 10 % of its weight in air and the

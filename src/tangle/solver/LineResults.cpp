@@ -93,7 +93,16 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
   // Work space of the calling thread (the writer computes the range graphs at every step).
   thread_local std::vector<element::BeamSectionForces> beamForces;
   thread_local std::vector<double> tension;
-  assembler.elementTension(state, tension, &beamForces);
+  thread_local std::vector<int> endElements;  // Ends: the two elements at each end, all the results read
+  if (endsOnly) {
+    endElements.clear();
+    for (const model::Line& line : model.lines()) {
+      const int first = line.firstElement, last = line.firstElement + line.elementCount - 1;
+      for (const int e : {first, first + 1, last - 1, last})
+        if (e >= first && e <= last) endElements.push_back(e);
+    }
+  }
+  assembler.elementTension(state, tension, &beamForces, endsOnly ? &endElements : nullptr);
   const model::DofMap& dofs = model.dofs();
   const seabed::SeabedSurface& bed = model.seabedSurface();
   out.resize(model.lines().size());
