@@ -1754,6 +1754,17 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       "  time_step: {}                # tangle's implicit step (dtM = {} s is an explicit scheme's "
       "stability limit; a host's smaller step is used as given)",
       num(step), num(opt.timeStep)));
+  // The Newton tolerance of a model of cables only (no line type with EI, no moving rod, no free body):
+  // 1e-5 of each line's weight, between the 1e-4 docs/model-format.md recommends for cable moorings at dt
+  // 0.05 s and tangle's default 1e-6 (kept for beams and bodies, as for risers). A host may step at
+  // 0.002 s, where 1e-4's latitude on the tension range is as large as the coupling's own difference
+  // (docs/moordyn.md, OPTIONS).
+  const bool cablesOnly =
+      !anyVessel &&
+      std::none_of(rodEnds.movingRod.begin(), rodEnds.movingRod.end(), [](bool moving) { return moving; }) &&
+      std::none_of(deck.lines.begin(), deck.lines.end(),
+                   [&](const MoorDynLine& l) { return bendingOf(l.lineType) > 0.0; });
+  if (cablesOnly) line("  tolerance: 1.0e-5             # cables only (docs/moordyn.md, OPTIONS)");
   line("  ramp_time: 0                  # MoorDyn ramps nothing");
   line("  mass: lumped                  # as MoorDyn");
   line("");
