@@ -48,11 +48,18 @@ void NewtonIteration::setAllowed(double tolerance, const std::vector<double>& no
   const model::DofMap& dofs = model.dofs();
   const auto& eqDofs = dofs.equationDofs();
   const std::vector<double>& scale = m_assembler->nodeForceScale();
-  m_inverseAllowed.resize(dofs.equationCount());
-  m_allowedForce.resize(static_cast<std::size_t>(dofs.nodeCount()));
+  // A node whose allowance is the one it had keeps its inverses (the allowance is set at every step and
+  // is the tolerance's, not the round-off floor's, almost everywhere): no division.
+  if (m_inverseAllowed.size() != static_cast<Eigen::Index>(dofs.equationCount()) ||
+      m_allowedForce.size() != static_cast<std::size_t>(dofs.nodeCount())) {
+    m_inverseAllowed.setZero(dofs.equationCount());
+    m_allowedForce.assign(static_cast<std::size_t>(dofs.nodeCount()),
+                          std::numeric_limits<double>::quiet_NaN());
+  }
   for (int node = 0; node < dofs.nodeCount(); ++node) {
     const int first = dofs.firstDof(node);
     const double allowed = std::max(tolerance * scale[node], nodeFloor[node]);
+    if (allowed == m_allowedForce[static_cast<std::size_t>(node)]) continue;
     m_allowedForce[static_cast<std::size_t>(node)] = allowed;
     const double inverseForce = 1.0 / allowed;
     const double inverseMoment =
