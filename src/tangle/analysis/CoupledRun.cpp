@@ -228,7 +228,7 @@ const std::vector<solver::LineSnapshot>& CoupledRun::lineEnds() {
 void CoupledRun::refreshResults(bool dynamic) {
   // The line results are formed when asked for (lineResults, lineEnds); the forces on the host are the
   // support reactions at the coupled ends.
-  m_supportForce = m_simulation->supportForce(dynamic);
+  m_simulation->supportForce(dynamic, m_supportForce);
   m_dynamicResults = dynamic;
   m_linesCurrent = false;
   m_endsCurrent = false;

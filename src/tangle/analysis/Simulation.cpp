@@ -338,6 +338,12 @@ void Simulation::lineResults(const VecX& supportForce, bool dynamic, std::vector
 }
 
 VecX Simulation::supportForce(bool dynamic) {
+  VecX force;
+  supportForce(dynamic, force);
+  return force;
+}
+
+void Simulation::supportForce(bool dynamic, VecX& force) {
   solver::AssemblyRequest request;
   request.wantMatrix = false;
   request.dynamic = dynamic;
@@ -357,27 +363,25 @@ VecX Simulation::supportForce(bool dynamic) {
   }
   const bool ends =
       !m_contact && m_assembler->supportsParts() && m_assembler->selectPart(m_snapshotEnds, m_snapshotPart);
-  VecX force;
   if (ends) {
-    force = VecX::Zero(m_model->dofs().fullDofCount());
+    force.setZero(m_model->dofs().fullDofCount());
     m_assembler->assemblePart(m_state, request, m_snapshotPart, force);
   } else {
     m_assembler->assemble(m_state, request, force, nullptr);
   }
   if (dynamic) {
     // Inertia belongs in the support reactions of a moving line.
-    VecX inertia = VecX::Zero(force.size());
+    m_supportInertia.setZero(force.size());
     if (ends)
-      m_assembler->addPartMass(m_state, m_snapshotPart, m_state.acceleration, inertia);
+      m_assembler->addPartMass(m_state, m_snapshotPart, m_state.acceleration, m_supportInertia);
     else
-      m_assembler->addMass(m_state, 0.0, nullptr, &m_state.acceleration, &inertia);
-    force += inertia;
+      m_assembler->addMass(m_state, 0.0, nullptr, &m_state.acceleration, &m_supportInertia);
+    force += m_supportInertia;
   }
   // Ends tied to vessels: take the link forces out, so what remains at the end node is the line's pull.
   if (m_vessels) force -= m_vessels->endConnectionForces(m_state, m_state.time);
   // Ends at free points: likewise the ties' forces.
   if (m_junctions) force -= m_junctions->tieForces(m_state);
-  return force;
 }
 
 const std::vector<solver::LineSnapshot>& Simulation::sectionSnapshot() const {

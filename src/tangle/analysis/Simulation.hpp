@@ -54,6 +54,8 @@ class Simulation {
   /// the end nodes' entries are meant (elsewhere it may hold only part of the terms:
   /// Assembler::assemblePart).
   VecX supportForce(bool dynamic = false);
+  /// The same into `force` (its storage reused: a coupled host's every step).
+  void supportForce(bool dynamic, VecX& force);
   /// snapshot() from a supportForce() of the current state, into `out` (capacity kept). In statics the
   /// results are always whole (`detail` All) and the end forces the discrete model's exact ones.
   void lineResults(const VecX& supportForce, bool dynamic, std::vector<solver::LineSnapshot>& out,
@@ -100,6 +102,7 @@ class Simulation {
   mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;  // sectionSnapshot's buffer
   std::vector<int> m_snapshotEnds;      // the lines' end nodes (ascending; snapshot fills it once)
   solver::AssemblyPart m_snapshotPart;  // and the part assembled for them
+  VecX m_supportInertia;                // supportForce's work space: the inertia at the ends [N]
 };
 
 }  // namespace tangle::analysis
