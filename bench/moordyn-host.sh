@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # A coupled host against MoorDyn itself (issue 48): tests/capi/moordyn_host.c, a C99 program written against
 # MoorDyn2.h only, is compiled twice, once against tangle's libtangle_moordyn and once against a MoorDyn
-# library you provide (built from MoorDyn's public source, e.g. v2.7.1; this script does not fetch or build
-# it). Both run the same deck at the host's step, alternately, REPEATS times; the best CPU time (user + sys)
+# library you provide (built from MoorDyn's public source, e.g. v2.7.1, by bench/build-moordyn.sh; this script
+# does not fetch or build it). Both run the same deck at the host's step, alternately, REPEATS times; the best CPU time (user + sys)
 # of each is kept, with its wall time, and the fairlead tension range after HALF of the run is compared.
 #
 #   bench/moordyn-host.sh MOORDYN_INCLUDE_DIR MOORDYN_LIBRARY_DIR [DECK] [HOST_DT (0.01)] [DURATION (100)] [REPEATS (3)]
