@@ -65,6 +65,9 @@ struct Options {
   int waveMode = 0;        ///< WaveKin 2, 3 or 7: components from wave_frequencies/wave_elevation.txt
   double waveStep = 0.25;  ///< dtWave [s]: the resampling of wave_elevation.txt (WaveKin 3)
   std::string seafloorFile;           ///< SeafloorFile, resolved to a readable path; empty: flat
+  /// tangleTolerance: tangle's own option (MoorDyn warns of an unknown option and goes on): the dynamics'
+  /// Newton tolerance [-, of each line's weight]; unset: the converter's rule (convertMoorDynDeck).
+  std::optional<double> tolerance;
   std::map<std::string, int> lineOf;  ///< option (lower case) -> deck line, for comments
 };
 
@@ -90,7 +93,15 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
       else
         it->second += ", " + entry;
     };
-    if (name == "dtm" || name == "dt") {
+    if (name == "tangletolerance") {
+      opt.tolerance = value();
+      if (!(*opt.tolerance > 0.0 && *opt.tolerance <= 0.1))
+        throw InputError(
+            deck.file, o.sourceLine, o.name,
+            fmt::format("expected tangle's Newton tolerance in (0, 0.1] (a fraction of each line's "
+                        "weight, e.g. 1e-6), got {}",
+                        o.value));
+    } else if (name == "dtm" || name == "dt") {
       opt.timeStep = value();
       if (!(opt.timeStep > 0.0))
         throw InputError(deck.file, o.sourceLine, o.name, "expected a time step > 0");
@@ -1764,7 +1775,10 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       std::none_of(rodEnds.movingRod.begin(), rodEnds.movingRod.end(), [](bool moving) { return moving; }) &&
       std::none_of(deck.lines.begin(), deck.lines.end(),
                    [&](const MoorDynLine& l) { return bendingOf(l.lineType) > 0.0; });
-  if (cablesOnly) line("  tolerance: 1.0e-5             # cables only (docs/moordyn.md, OPTIONS)");
+  if (opt.tolerance)
+    line(fmt::format("  tolerance: {}             # the deck's tangleTolerance", num(*opt.tolerance)));
+  else if (cablesOnly)
+    line("  tolerance: 1.0e-5             # cables only (docs/moordyn.md, OPTIONS)");
   line("  ramp_time: 0                  # MoorDyn ramps nothing");
   line("  mass: lumped                  # as MoorDyn");
   line("");

@@ -169,6 +169,21 @@ TEST(MoorDynDeck, CablesOnlyTakeTheCableNewtonTolerance) {
                    defaultTolerance);
 }
 
+// tangle's own OPTIONS entry tangleTolerance (MoorDyn warns of an unknown option and goes on) sets the
+// tolerance for any deck; out of (0, 0.1] it is refused, naming the line.
+TEST(MoorDynDeck, TangleToleranceOptionSetsTheNewtonTolerance) {
+  const auto tolerance = [](const std::string& text) {
+    const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
+    return readModelString(c.yaml, "converted.yaml").dynamics.tolerance;
+  };
+  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1e-6 tangleTolerance\n")), 1e-6);
+  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 rope 1 2 320 40 -\n", "3e-5 tangleTolerance\n")), 3e-5);
+  // deck() with two points and one line: dtM on line 18, WtrDpth on 19, then this option.
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "0 tangleTolerance\n"), 20,
+                "tangle's Newton tolerance");
+  expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "0.5 tangleTolerance\n"), 20, "(0, 0.1]");
+}
+
 TEST(MoorDynDeck, JoinsLinesInSeriesAtFreePointsWhateverTheirDirection) {
   // Anchor 1 - line 1 - buoy 3 - line 2 (drawn from the vessel to the buoy) - vessel 2.
   const std::string points = kTwoPoints + "3     Free      -150   0     -60    100    2.0     1.5    0.8\n";
