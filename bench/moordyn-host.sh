@@ -10,7 +10,10 @@
 # MOORDYN_INCLUDE_DIR holds MoorDyn2.h (and what it includes), MOORDYN_LIBRARY_DIR libmoordyn.so. DECK
 # defaults to bench/moordyn/chain-1130m.txt (the mooring example's geometry as one chain; MoorDyn at RK4 with
 # dtM 0.002 s, its largest stable step: 0.003 s diverges). The fairlead moves 5 m / 10 s along x from t = 0.
-# tangle is the current tree's Release build (build/release, configured here if missing).
+# tangle is the current tree's Release build (build/release, configured here if missing). With OLD_TANGLE_LIB set
+# to the folder of an older commit's libtangle_moordyn.so (built side by side, e.g. from a git worktree:
+# `cmake -S old -B old/build -DCMAKE_BUILD_TYPE=Release && cmake --build old/build --target tangle_moordyn`),
+# that library's host runs in the same alternation and the ratio to it is printed too.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 md_include="$1"; md_lib="$2"
@@ -25,14 +28,22 @@ cc -O2 -std=c99 -o "$work/host_tangle" "$root/tests/capi/moordyn_host.c" -I"$roo
    -L"$root/build/release" -ltangle_moordyn -lm -Wl,-rpath,"$root/build/release"
 cc -O2 -std=c99 -o "$work/host_moordyn" "$root/tests/capi/moordyn_host.c" -I"$md_include" \
    -L"$md_lib" -lmoordyn -lm -Wl,-rpath,"$md_lib"
+programs="moordyn tangle"
+if [ -n "${OLD_TANGLE_LIB:-}" ]; then
+  # The same MoorDyn2.h API: the current tree's header serves the older library.
+  cc -O2 -std=c99 -o "$work/host_old" "$root/tests/capi/moordyn_host.c" -I"$root/include/tangle-moordyn" \
+     -L"$OLD_TANGLE_LIB" -ltangle_moordyn -lm -Wl,-rpath,"$OLD_TANGLE_LIB"
+  programs="moordyn old tangle"
+fi
 
-/usr/bin/python3 - "$work" "$deck" "$dt" "$duration" "$repeats" <<'PY'
+/usr/bin/python3 - "$work" "$deck" "$dt" "$duration" "$repeats" "$programs" <<'PY'
 import os, sys
 import numpy as np
 work, deck, dt, duration, repeats = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), int(sys.argv[5])
+programs = sys.argv[6].split()
 best = {}
 for _ in range(repeats):
-    for name in ("moordyn", "tangle"):
+    for name in programs:
         out = os.path.join(work, f"{name}.csv")
         pid = os.fork()
         if pid == 0:
@@ -53,9 +64,12 @@ for name in best:
     late = data[data[:, 0] >= duration / 2, 1]
     ranges[name] = late.max() - late.min()
 print(f"{'program':>8} {'CPU s':>7} {'wall s':>7} {'range kN':>9}")
-for name in ("moordyn", "tangle"):
-    print(f"{name:>8} {best[name][0]:7.2f} {best[name][1]:7.2f} {ranges[name] / 1e3:9.2f}")
+for name in programs:
+    print(f"{name:>8} {best[name][0]:7.3f} {best[name][1]:7.3f} {ranges[name] / 1e3:9.3f}")
 print(f"MoorDyn / tangle CPU: {best['moordyn'][0] / best['tangle'][0]:.2f}x; "
-      f"tangle's range {100 * (ranges['tangle'] / ranges['moordyn'] - 1):+.2f} % of MoorDyn's "
+      f"tangle's range {100 * (ranges['tangle'] / ranges['moordyn'] - 1):+.3f} % of MoorDyn's "
       f"(host step {dt} s, {duration:g} s, best of {repeats})")
+if "old" in best:
+    print(f"old / tangle CPU: {best['old'][0] / best['tangle'][0]:.2f}x; MoorDyn / old: "
+          f"{best['moordyn'][0] / best['old'][0]:.2f}x")
 PY
