@@ -2,8 +2,9 @@
 # A coupled host against MoorDyn itself (issue 48): tests/capi/moordyn_host.c, a C99 program written against
 # MoorDyn2.h only, is compiled twice, once against tangle's libtangle_moordyn and once against a MoorDyn
 # library you provide (built from MoorDyn's public source, e.g. v2.7.1, by bench/build-moordyn.sh; this script
-# does not fetch or build it). Both run the same deck at the host's step, alternately, REPEATS times; the best CPU time (user + sys)
-# of each is kept, with its wall time, and the fairlead tension range after HALF of the run is compared.
+# does not fetch or build it). Both run the same deck at the host's step, alternately, REPEATS times; the best
+# CPU time (user + sys) of each is kept, with its wall time, and the fairlead tension range after HALF of the
+# run is compared.
 #
 #   bench/moordyn-host.sh MOORDYN_INCLUDE_DIR MOORDYN_LIBRARY_DIR [DECK] [HOST_DT (0.01)] [DURATION (100)] [REPEATS (3)]
 #
@@ -24,15 +25,16 @@ work="$(mktemp -d)"; trap 'rm -rf "$work"' EXIT
 cp "$deck" "$work/deck.txt"; deck="$work/deck.txt"
 
 (cd "$root" && cmake --preset release >/dev/null && cmake --build --preset release -j 2 --target tangle_moordyn >/dev/null)
-cc -O2 -std=c99 -o "$work/host_tangle" "$root/tests/capi/moordyn_host.c" -I"$root/include/tangle-moordyn" \
-   -L"$root/build/release" -ltangle_moordyn -lm -Wl,-rpath,"$root/build/release"
-cc -O2 -std=c99 -o "$work/host_moordyn" "$root/tests/capi/moordyn_host.c" -I"$md_include" \
-   -L"$md_lib" -lmoordyn -lm -Wl,-rpath,"$md_lib"
+# The host compiled as host_NAME against INCLUDE_DIR's MoorDyn2.h and LIBRARY in LIBRARY_DIR.
+host() {  # NAME INCLUDE_DIR LIBRARY LIBRARY_DIR
+  cc -O2 -std=c99 -o "$work/host_$1" "$root/tests/capi/moordyn_host.c" -I"$2" -L"$4" -l"$3" -lm -Wl,-rpath,"$4"
+}
+host tangle "$root/include/tangle-moordyn" tangle_moordyn "$root/build/release"
+host moordyn "$md_include" moordyn "$md_lib"
 programs="moordyn tangle"
 if [ -n "${OLD_TANGLE_LIB:-}" ]; then
   # The same MoorDyn2.h API: the current tree's header serves the older library.
-  cc -O2 -std=c99 -o "$work/host_old" "$root/tests/capi/moordyn_host.c" -I"$root/include/tangle-moordyn" \
-     -L"$OLD_TANGLE_LIB" -ltangle_moordyn -lm -Wl,-rpath,"$OLD_TANGLE_LIB"
+  host old "$root/include/tangle-moordyn" tangle_moordyn "$OLD_TANGLE_LIB"
   programs="moordyn old tangle"
 fi
 

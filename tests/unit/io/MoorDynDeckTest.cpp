@@ -143,41 +143,41 @@ TEST(MoorDynDeck, ConvertsIntoTheModelMoorDynDescribes) {
   EXPECT_FALSE(c.lines[0].reversed);
 }
 
+/// The dynamics' Newton tolerance of deck `text` converted [-].
+double convertedTolerance(const std::string& text) {
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
+  return readModelString(c.yaml, "converted.yaml").dynamics.tolerance;
+}
+
 // The dynamics' Newton tolerance: 1e-5 of the lines' weight for a model of cables only (the deck's lines
 // without bending; docs/moordyn.md, OPTIONS), tangle's default 1e-6 with a beam line (EI that bends over
 // its segments) or a free body (a vessel).
 TEST(MoorDynDeck, CablesOnlyTakeTheCableNewtonTolerance) {
-  const auto tolerance = [](const std::string& text) {
-    const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
-    return readModelString(c.yaml, "converted.yaml").dynamics.tolerance;
-  };
   const double defaultTolerance = model::DynamicSpec{}.tolerance;
   ASSERT_DOUBLE_EQ(defaultTolerance, 1e-6);
   // A chain, and a rope whose EI (10 N m^2) bends over 0.8 m against its 32 m segments: cables.
-  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 chain 1 2 320 40 -\n")), 1e-5);
-  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 rope 1 2 320 10 -\n")), 1e-5);
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(kTwoPoints, "1 chain 1 2 320 40 -\n")), 1e-5);
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(kTwoPoints, "1 rope 1 2 320 10 -\n")), 1e-5);
   // The same rope on 8 m segments: bending over a tenth of them, a beam line.
-  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 rope 1 2 320 40 -\n")), defaultTolerance);
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(kTwoPoints, "1 rope 1 2 320 40 -\n")), defaultTolerance);
   // A hose that bends over (EI / w)^(1/3) = 12 m against its 8 m segments: a beam line.
   const std::string hose =
       "hose       0.3     100        1.0e9      -1.0        5e5  1.2   1.0   0.4    0.5\n";
-  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 hose 1 2 320 40 -\n", "", hose)), defaultTolerance);
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(kTwoPoints, "1 hose 1 2 320 40 -\n", "", hose)), defaultTolerance);
   // A free body: a vessel.
   const std::string points = kTwoPoints + "3 Body1 0 3 0 0 0 0 0\n";
-  EXPECT_DOUBLE_EQ(tolerance(deck(points, "1 chain 1 3 300 30 -\n2 chain 3 2 60 6 -\n", "",
-                                  bodies("1 Free 0 0 -50 0 0 0 2000 0 500 3 0.4 0.5\n"))),
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(points, "1 chain 1 3 300 30 -\n2 chain 3 2 60 6 -\n", "",
+                                           bodies("1 Free 0 0 -50 0 0 0 2000 0 500 3 0.4 0.5\n"))),
                    defaultTolerance);
 }
 
 // tangle's own OPTIONS entry tangleTolerance (MoorDyn warns of an unknown option and goes on) sets the
 // tolerance for any deck; out of (0, 0.1] it is refused, naming the line.
 TEST(MoorDynDeck, TangleToleranceOptionSetsTheNewtonTolerance) {
-  const auto tolerance = [](const std::string& text) {
-    const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
-    return readModelString(c.yaml, "converted.yaml").dynamics.tolerance;
-  };
-  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1e-6 tangleTolerance\n")), 1e-6);
-  EXPECT_DOUBLE_EQ(tolerance(deck(kTwoPoints, "1 rope 1 2 320 40 -\n", "3e-5 tangleTolerance\n")), 3e-5);
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1e-6 tangleTolerance\n")),
+                   1e-6);
+  EXPECT_DOUBLE_EQ(convertedTolerance(deck(kTwoPoints, "1 rope 1 2 320 40 -\n", "3e-5 tangleTolerance\n")),
+                   3e-5);
   // deck() with two points and one line: dtM on line 18, WtrDpth on 19, then this option.
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "0 tangleTolerance\n"), 20,
                 "tangle's Newton tolerance");
