@@ -45,6 +45,17 @@ class Bar {
     const Axial a = axial(x1, x2, compressionFactor);
     return a.force * a.direction;
   }
+  /// forceOnNode2's force N e [N] and the chord's direction e = (x2 - x1) / |x2 - x1| [-], bit for bit
+  /// (x2 - x1).normalized(): an axial damper on the same chord needs no square root of its own.
+  struct ForceAndDirection {
+    Vec3 force;
+    Vec3 direction;
+  };
+  ForceAndDirection forceAndDirectionOnNode2(const Vec3& x1, const Vec3& x2,
+                                             double compressionFactor = 1.0) const {
+    const Axial a = axial(x1, x2, compressionFactor);
+    return {a.force * a.direction, a.direction};
+  }
   /// Axial force N = EA (l - L0) / L0 [N] (or the curve's), positive in tension, negative in compression.
   /// @param compressionFactor as in compute()
   double axialForce(const Vec3& x1, const Vec3& x2, double compressionFactor = 1.0) const;

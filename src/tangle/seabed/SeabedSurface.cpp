@@ -229,10 +229,7 @@ SeabedPoint SeabedSurface::at(double x, double y) const {
   return p;
 }
 
-double SeabedSurface::gap(const Vec3& position, double radius) const {
-  // Flat: the arithmetic of the flat seabed before slopes, so that flat models keep their results bit for
-  // bit.
-  if (m_kind == Kind::Flat) return (position.z() - radius) + m_depth;
+double SeabedSurface::surfaceGap(const Vec3& position, double radius) const {
   const SeabedPoint s = at(position.x(), position.y());
   return (position.z() - s.height) * s.normal.z() - radius;
 }

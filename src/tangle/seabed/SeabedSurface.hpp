@@ -66,7 +66,12 @@ class SeabedSurface {
 
   /// Clearance [m] of a sphere of radius `radius` [m] centred at `position` [m] along the local normal
   /// (< 0: it penetrates the seabed). Flat: (p_z - r) + depth.
-  double gap(const Vec3& position, double radius) const;
+  double gap(const Vec3& position, double radius) const {
+    // Flat: the arithmetic of the flat seabed before slopes, so that flat models keep their results bit for
+    // bit; inline (every node of every assembly asks: an out-of-line call was 1.2 % of a coupled host's run).
+    if (m_kind == Kind::Flat) return (position.z() - radius) + m_depth;
+    return surfaceGap(position, radius);
+  }
   /// z [m] of the centre of a sphere of radius `radius` [m] at (x, y) that penetrates the seabed by
   /// `penetration` [m] along the normal: h + (radius - penetration) / n_z. Flat: (-depth + radius) -
   /// penetration.
@@ -91,6 +96,9 @@ class SeabedSurface {
   std::string describe() const;
 
  private:
+  /// gap() off a flat seabed.
+  double surfaceGap(const Vec3& position, double radius) const;
+
   Kind m_kind = Kind::Flat;
   double m_depth = 100.0;
   double m_slope = 0.0;

@@ -68,6 +68,10 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
       for (int k = 3; k < 6; ++k)
         m_nodeDiagonalMass[static_cast<std::size_t>(d + k)] = model.nodeRotationalInertia()[node];
   }
+  // The axial dampers' c / L0 per element [N s/m] (addElements).
+  m_axialDampingRate.reserve(model.elements().size());
+  for (const model::LineElement& el : model.elements())
+    m_axialDampingRate.push_back(el.type->axialDamping / el.restLength);
   // Submerged weight lumped on each node held in all three translations [N] (addSeabed).
   m_heldNodeWeight.assign(static_cast<std::size_t>(n), 0.0);
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
@@ -128,6 +132,56 @@ void Assembler::nodeRoundoffFloor(const model::State& state, std::vector<double>
   for (int n = 0; n < m_model->nodeCount(); ++n)
     if (m_model->lineOfNode(n) < 0) floor[n] = largest;
   for (const LoadContributor* c : m_contributors) c->raiseRoundoffFloor(state, floor);
+}
+
+bool Assembler::roundoffFloorNegligible(const model::State& state, double tolerance) const {
+  if (std::any_of(m_contributors.begin(), m_contributors.end(),
+                  [](const LoadContributor* c) { return c->raisesRoundoffFloor(); }))
+    return false;
+  if (!(tolerance == m_negligibleFor)) {
+    // An element's floor is max(a (x + l), b (x + l), resolution) with x its nodes' largest coordinate
+    // (nodeRoundoffFloor): below a node's allowance tolerance * scale for every x up to
+    // (tolerance * scale / max(a, b)) - l when the resolution is below it. A node on no line takes the
+    // largest floor of all (bounded by the largest a, b, l and resolution).
+    const int n = m_model->nodeCount();
+    std::vector<double> slope(static_cast<std::size_t>(n), 0.0), length(static_cast<std::size_t>(n), 0.0),
+        resolution(static_cast<std::size_t>(n), 0.0);
+    double slopeAll = 0.0, lengthAll = 0.0, resolutionAll = 0.0;
+    const auto& elements = m_model->elements();
+    for (std::size_t e = 0; e < elements.size(); ++e) {
+      const RoundoffConstants& c = m_roundoff[e];
+      const double a = std::max(c.axialPerLength, c.bendingPerLengthSquared);
+      for (const int node : {elements[e].node1, elements[e].node2}) {
+        const auto k = static_cast<std::size_t>(node);
+        slope[k] = std::max(slope[k], a);
+        length[k] = std::max(length[k], c.length);
+        resolution[k] = std::max(resolution[k], c.resolution);
+      }
+      slopeAll = std::max(slopeAll, a);
+      lengthAll = std::max(lengthAll, c.length);
+      resolutionAll = std::max(resolutionAll, c.resolution);
+    }
+    double reach = std::numeric_limits<double>::infinity();
+    for (int node = 0; node < n; ++node) {
+      const auto k = static_cast<std::size_t>(node);
+      const bool onLine = m_model->lineOfNode(node) >= 0;
+      // Half the allowance: the factor 2 covers the rounding of this bound.
+      const double allowance = 0.5 * tolerance * m_nodeForceScale[k];
+      const double a = onLine ? slope[k] : slopeAll, l = onLine ? length[k] : lengthAll;
+      const double r = onLine ? resolution[k] : resolutionAll;
+      if (!(r < allowance)) {
+        reach = -std::numeric_limits<double>::infinity();
+        break;
+      }
+      if (a > 0.0) reach = std::min(reach, allowance / a - l);
+    }
+    m_negligibleFor = tolerance;
+    m_negligibleReach = reach;
+  }
+  double largest = 0.0;
+  for (int node = 0; node < m_model->nodeCount(); ++node)
+    largest = std::max(largest, state.position[node].cwiseAbs().maxCoeff());
+  return largest < m_negligibleReach;
 }
 
 void Assembler::beginStatics(const model::State& state) {
@@ -278,12 +332,22 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
     if (visco >= 0 && m_visco.active(state)) {
       addViscoelasticBar(state, el, visco, d1, d2, beta, request, force, matrix);
     } else if (el.bar && !matrix && beta == 0.0) {
-      // The force alone (Bar::forceOnNode2: the same arithmetic as compute's, inline).
-      const Vec3 f2 =
+      // The force alone (Bar::forceOnNode2: the same arithmetic as compute's, inline), and an axial damper's
+      // on the bar's own direction (addAxialDamping's arithmetic: its chord.normalized() is that direction,
+      // bit for bit, without a second square root and division per element).
+      const element::Bar::ForceAndDirection bar =
           barOf(e, barCopy)
-              .forceOnNode2(state.position[el.node1], state.position[el.node2], compressionFactor(el));
-      force.segment<3>(d1) -= f2;
-      force.segment<3>(d2) += f2;
+              .forceAndDirectionOnNode2(state.position[el.node1], state.position[el.node2],
+                                        compressionFactor(el));
+      force.segment<3>(d1) -= bar.force;
+      force.segment<3>(d2) += bar.force;
+      if (request.dynamic && el.type->axialDamping > 0.0) {
+        const double nd = m_axialDampingRate[e] *
+                          bar.direction.dot(state.velocity.segment<3>(d2) - state.velocity.segment<3>(d1));
+        force.segment<3>(d1) -= nd * bar.direction;
+        force.segment<3>(d2) += nd * bar.direction;
+      }
+      return;
     } else if (el.bar) {
       Vec6 f;
       Mat6 k;
@@ -345,7 +409,7 @@ void Assembler::addAxialDamping(const model::State& state, const model::LineElem
   // acting along the chord e (as OrcaFlex's axial damping and MoorDyn's internal damping).
   const Vec3 chord = state.position[el.node2] - state.position[el.node1];
   const Vec3 e = chord.normalized();
-  const double c = el.type->axialDamping / el.restLength;
+  const double c = el.type->axialDamping / el.restLength;  // m_axialDampingRate's
   const double nd = c * e.dot(state.velocity.segment<3>(d2) - state.velocity.segment<3>(d1));
   force.segment<3>(d1) -= nd * e;
   force.segment<3>(d2) += nd * e;

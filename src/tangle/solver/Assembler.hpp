@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -169,6 +170,11 @@ class Assembler {
   /// the global roundoffFloor for nodes on no element. Per node, so that a stiff line's round-off does not
   /// become the tolerance of a light one.
   void nodeRoundoffFloor(const model::State& state, std::vector<double>& floor) const;
+  /// True when no node's round-off floor at `state` (nodeRoundoffFloor) can reach `tolerance` [-] times its
+  /// force scale (nodeForceScale), so that the dynamic convergence test allows every node the tolerance's
+  /// out-of-balance and the floors need not be formed: a bound from the largest coordinate of any node (the
+  /// floors grow with |x|), with a factor 2 to spare. False when a contributor raises floors.
+  bool roundoffFloorNegligible(const model::State& state, double tolerance) const;
   /// Round-off floor [N] of the out-of-balance force at `state`: an element's force is known only to
   /// about EA eps |x| / L (the strain is a difference of coordinates of magnitude |x|), its moments to
   /// EI eps |x| / L^2; a residual cannot be driven below a few times the largest of these.
@@ -229,6 +235,8 @@ class Assembler {
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
   std::vector<double> m_heldNodeWeight;  // submerged weight lumped on each node held in x, y, z [N] (else 0)
+  std::vector<double>
+      m_axialDampingRate;  // each element's axial damping over its rest length, c / L0 [N s/m]
   // Per full DOF, the node's own diagonal mass term of addOwnMass's node loop: its lumped mass [kg] at a
   // translation (0 with consistent mass, whose translations the element loop adds), its rotational
   // inertia [kg m^2] at a rotation (0 at DOFs the node does not have).
@@ -242,6 +250,10 @@ class Assembler {
     double resolution;               // [N]
   };
   std::vector<RoundoffConstants> m_roundoff;
+  // roundoffFloorNegligible's bound, for the tolerance m_negligibleFor: the coordinate [m] below which every
+  // node's floor is under half its allowance (-inf: never).
+  mutable double m_negligibleFor = std::numeric_limits<double>::quiet_NaN();
+  mutable double m_negligibleReach = -std::numeric_limits<double>::infinity();
   // Seabed friction in statics: committed anchor (x, y) per node (NaN: none) and the trial anchors of the
   // last assembly; positions (x, y) at the last commit, anchors of nodes that touch down later.
   std::vector<Vec2> m_anchor;

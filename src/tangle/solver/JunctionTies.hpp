@@ -27,6 +27,7 @@ class JunctionTies final : public LoadContributor {
   bool markLoadedNodes(std::vector<char>& mark) const override;
   /// The ties' round-off (16 eps k |x|) at the tied nodes and their carriers.
   void raiseRoundoffFloor(const model::State& state, std::vector<double>& floor) const override;
+  bool raisesRoundoffFloor() const override { return true; }
 
   /// The ties' contribution to the out-of-balance force (full DOF vector): subtracting it from F leaves at
   /// each line end at a point the force of the line on the point.

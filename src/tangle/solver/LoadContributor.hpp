@@ -128,6 +128,8 @@ class LoadContributor {
   /// act on, 16 eps k |x| as an element's (Assembler::nodeRoundoffFloor): a penalty link 100 times as stiff
   /// as a line's end element leaves 100 times its round-off in the out-of-balance force there.
   virtual void raiseRoundoffFloor(const model::State& /*state*/, std::vector<double>& /*floor*/) const {}
+  /// True if raiseRoundoffFloor raises any floor (Assembler::roundoffFloorNegligible then does not apply).
+  virtual bool raisesRoundoffFloor() const { return false; }
   /// Statics starts (or restarts, or reverts to its last converged increment) from `state`: the reference
   /// for rejectState until the next commitIncrement (a contributor that tracks crossings compares with it).
   virtual void beginStatic(const model::State& /*state*/) {}

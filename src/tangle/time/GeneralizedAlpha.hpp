@@ -108,6 +108,7 @@ class GeneralizedAlpha {
   std::vector<model::PrescribedNode> m_prescribed;
   AlphaParameters m_params;
   std::vector<double> m_nodeFloor;     // round-off floor of each node this step [N]
+  bool m_floorZero = false;            // m_nodeFloor is all zero (Assembler::roundoffFloorNegligible)
   std::vector<int> m_constrainedDofs;  // full DOFs without an equation
   solver::NewtonIteration m_newton;    // the iteration matrix, its refresh, blocks and parts
   SeabedPredictor m_seabedPredictor;   // the predictor's correction on the seabed (dynamics.solver.predictor)

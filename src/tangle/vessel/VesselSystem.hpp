@@ -40,6 +40,7 @@ class VesselSystem final : public solver::LoadContributor {
   bool markLoadedNodes(std::vector<char>& mark) const override;
   /// The links' round-off (16 eps k |x|) at the line ends on free vessels and at the vessels' nodes.
   void raiseRoundoffFloor(const model::State& state, std::vector<double>& floor) const override;
+  bool raisesRoundoffFloor() const override { return true; }
 
   /// Held nodes that move: prescribed vessels and the line ends on fixed/prescribed vessels (RAO motion).
   std::vector<model::PrescribedNode> prescribedNodes() const;

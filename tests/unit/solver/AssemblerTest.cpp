@@ -1,7 +1,8 @@
 // Unit tests of the assembler's inertia and damping terms: consistent and lumped mass carry the same
 // total mass (rigid translation), axial damping opposes the stretching rate with its exact derivative,
-// attachment drag opposes the relative velocity, and the waterplane stiffness of an element through the
-// surface is the derivative of its buoyancy.
+// attachment drag opposes the relative velocity, the waterplane stiffness of an element through the
+// surface is the derivative of its buoyancy, a damped bar's force is the same with and without the matrix,
+// and the round-off floors' shortcut holds only where the floors are below the allowances.
 
 #include <gtest/gtest.h>
 
@@ -73,6 +74,60 @@ TEST(Assembler, AxialDampingOpposesStretchingRate) {
   VecX force2;
   sim.assembler().assemble(s, request, force2, nullptr);
   EXPECT_NEAR((force2[dofs.firstDof(2)] - force[dofs.firstDof(2)]) / h, 1.0e3, 1e-3);
+}
+
+TEST(Assembler, DampedBarsGiveTheSameForceWithAndWithoutTheMatrix) {
+  // A bar's force and its axial damper's are computed on one chord direction in an assembly without a matrix
+  // (Assembler::addElements) and apart, with their tangents, in one with a matrix: the out-of-balance must be
+  // the same bit for bit (the convergence test and the parts' assembly rely on it). Nodes moved and given
+  // velocities in every direction, so that each chord turns and stretches.
+  analysis::Simulation sim(twoBarLine(true, 1.0e4));
+  model::State& s = sim.state();
+  const model::DofMap& dofs = sim.model().dofs();
+  for (int node = 0; node < sim.model().nodeCount(); ++node) {
+    s.position[static_cast<std::size_t>(node)] += Vec3(0.013 * node, -0.021 * node * node, 0.007);
+    for (int k = 0; k < 3; ++k) s.velocity[dofs.firstDof(node) + k] = 0.1 * (k + 1) - 0.07 * node;
+  }
+  solver::AssemblyRequest request;
+  request.dynamic = true;
+  request.kf = 1.0;
+  request.cf = 200.0;
+  request.wantMatrix = false;
+  VecX alone, withMatrix;
+  sim.assembler().assemble(s, request, alone, nullptr);
+  solver::SystemMatrix matrix(dofs);
+  request.wantMatrix = true;
+  sim.assembler().assemble(s, request, withMatrix, &matrix);
+  ASSERT_EQ(alone.size(), withMatrix.size());
+  for (Eigen::Index i = 0; i < alone.size(); ++i) EXPECT_EQ(alone[i], withMatrix[i]) << "DOF " << i;
+  EXPECT_GT(alone.cwiseAbs().maxCoeff(), 1.0);  // the damper and the stretched bars do load the nodes
+}
+
+TEST(Assembler, RoundoffFloorNegligibleOnlyWhereEveryFloorIsBelowItsAllowance) {
+  // roundoffFloorNegligible stands for nodeRoundoffFloor in the dynamic convergence test: where it says
+  // so, every node's floor must lie below tolerance * its force scale (then max(allowance, floor) is the
+  // allowance); where the floors reach the allowance (a tolerance at round-off, or coordinates of 1e12 m),
+  // it must not.
+  analysis::Simulation sim(twoBarLine(true, 0.0));
+  const solver::Assembler& assembler = sim.assembler();
+  std::vector<double> floor;
+  assembler.nodeRoundoffFloor(sim.state(), floor);
+  const std::vector<double>& scale = assembler.nodeForceScale();
+  ASSERT_TRUE(assembler.roundoffFloorNegligible(sim.state(), 1e-6));
+  for (std::size_t n = 0; n < floor.size(); ++n) EXPECT_LT(floor[n], 1e-6 * scale[n]) << "node " << n;
+  // At a tolerance of 1e-16 the floors (16 EA eps |x| / L: about 1e-6 N here) exceed the allowance.
+  bool above = false;
+  for (std::size_t n = 0; n < floor.size(); ++n) above = above || floor[n] >= 1e-16 * scale[n];
+  ASSERT_TRUE(above);
+  EXPECT_FALSE(assembler.roundoffFloorNegligible(sim.state(), 1e-16));
+  // The same tolerance with the line moved 1e12 m away: the floors grow with |x|.
+  model::State far = sim.state();
+  for (Vec3& x : far.position) x.x() += 1e12;
+  assembler.nodeRoundoffFloor(far, floor);
+  above = false;
+  for (std::size_t n = 0; n < floor.size(); ++n) above = above || floor[n] >= 1e-6 * scale[n];
+  ASSERT_TRUE(above);
+  EXPECT_FALSE(assembler.roundoffFloorNegligible(far, 1e-6));
 }
 
 TEST(Assembler, AttachmentDragOpposesRelativeVelocity) {
