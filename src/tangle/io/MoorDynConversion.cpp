@@ -68,6 +68,8 @@ struct Options {
   /// tangleTolerance: tangle's own option (MoorDyn warns of an unknown option and goes on): the dynamics'
   /// Newton tolerance [-, of each line's weight]; unset: the converter's rule (convertMoorDynDeck).
   std::optional<double> tolerance;
+  /// tangleTimeStep: tangle's own option: the dynamics' implicit step [s]; unset: max(dtM, 0.01 s).
+  std::optional<double> tangleStep;
   std::map<std::string, int> lineOf;  ///< option (lower case) -> deck line, for comments
 };
 
@@ -101,6 +103,13 @@ Options readOptions(const MoorDynDeck& deck, std::vector<std::string>& notes) {
             fmt::format("expected tangle's Newton tolerance in (0, 0.1] (a fraction of each line's "
                         "weight, e.g. 1e-6), got {}",
                         o.value));
+    } else if (name == "tangletimestep") {
+      opt.tangleStep = value();
+      if (!(*opt.tangleStep > 0.0 && *opt.tangleStep <= 1.0))
+        throw InputError(deck.file, o.sourceLine, o.name,
+                         fmt::format("expected tangle's implicit time step in (0, 1] s (e.g. 0.025: a host "
+                                     "coupled at 0.025 s then takes one step per call), got {}",
+                                     o.value));
     } else if (name == "dtm" || name == "dt") {
       opt.timeStep = value();
       if (!(opt.timeStep > 0.0))
@@ -1752,8 +1761,9 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   }
 
   // Dynamics: MoorDyn has no duration of its own (the host decides): a standalone run is the statics, the
-  // initial conditions. The step is tangle's own (implicit), never below 0.01 s for dtM's explicit limit.
-  const double step = std::max(opt.timeStep, 0.01);
+  // initial conditions. The step is tangle's own (implicit), never below 0.01 s for dtM's explicit limit, or
+  // the deck's tangleTimeStep.
+  const double step = opt.tangleStep ? *opt.tangleStep : std::max(opt.timeStep, 0.01);
   line("dynamics:");
   line(
       "  duration: 0                   # MoorDyn decks have no duration (the host program sets it): statics "
@@ -1761,10 +1771,14 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   line(
       "                                # give a duration and a motion of the coupled ends to run dynamics "
       "here");
-  line(fmt::format(
-      "  time_step: {}                # tangle's implicit step (dtM = {} s is an explicit scheme's "
-      "stability limit; a host's smaller step is used as given)",
-      num(step), num(opt.timeStep)));
+  if (opt.tangleStep)
+    line(fmt::format("  time_step: {}                # the deck's tangleTimeStep (dtM = {} s)", num(step),
+                     num(opt.timeStep)));
+  else
+    line(fmt::format(
+        "  time_step: {}                # tangle's implicit step (dtM = {} s is an explicit scheme's "
+        "stability limit; a host's smaller step is used as given)",
+        num(step), num(opt.timeStep)));
   // The Newton tolerance of a model of cables only (no line type with EI, no moving rod, no free body):
   // 1e-5 of each line's weight, between the 1e-4 docs/model-format.md recommends for cable moorings at dt
   // 0.05 s and tangle's default 1e-6 (kept for beams and bodies, as for risers). A host may step at

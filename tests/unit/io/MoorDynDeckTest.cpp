@@ -184,6 +184,23 @@ TEST(MoorDynDeck, TangleToleranceOptionSetsTheNewtonTolerance) {
   expectRefused(deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "0.5 tangleTolerance\n"), 20, "(0, 0.1]");
 }
 
+// The dynamics' implicit step: max(dtM, 0.01 s) (docs/moordyn.md, OPTIONS: dtM is an explicit scheme's
+// stability limit), or the deck's own tangleTimeStep (a host coupled at 0.025 s then takes one step per call,
+// not three of 0.0083 s).
+TEST(MoorDynDeck, TangleTimeStepOptionSetsTheImplicitStep) {
+  const auto convertedStep = [](const std::string& text) {
+    const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
+    return readModelString(c.yaml, "converted.yaml").dynamics.timeStep;
+  };
+  const std::string line = "1 chain 1 2 320 40 -\n";
+  EXPECT_DOUBLE_EQ(convertedStep(deck(kTwoPoints, line)), 0.01);  // dtM 0.001 s
+  EXPECT_DOUBLE_EQ(convertedStep(deck(kTwoPoints, line, "0.025 tangleTimeStep\n")), 0.025);
+  EXPECT_DOUBLE_EQ(convertedStep(deck(kTwoPoints, line, "0.004 tangleTimeStep\n")), 0.004);
+  // deck() with two points and one line: dtM on line 18, WtrDpth on 19, then this option.
+  expectRefused(deck(kTwoPoints, line, "0 tangleTimeStep\n"), 20, "tangle's implicit time step");
+  expectRefused(deck(kTwoPoints, line, "2 tangleTimeStep\n"), 20, "(0, 1] s");
+}
+
 TEST(MoorDynDeck, JoinsLinesInSeriesAtFreePointsWhateverTheirDirection) {
   // Anchor 1 - line 1 - buoy 3 - line 2 (drawn from the vessel to the buoy) - vessel 2.
   const std::string points = kTwoPoints + "3     Free      -150   0     -60    100    2.0     1.5    0.8\n";
