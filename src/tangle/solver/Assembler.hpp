@@ -235,8 +235,7 @@ class Assembler {
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
   std::vector<double> m_heldNodeWeight;  // submerged weight lumped on each node held in x, y, z [N] (else 0)
-  std::vector<double>
-      m_axialDampingRate;  // each element's axial damping over its rest length, c / L0 [N s/m]
+  std::vector<double> m_axialDampingRate;  // each element's axial damping c over its L0 [N s/m]
   // Per full DOF, the node's own diagonal mass term of addOwnMass's node loop: its lumped mass [kg] at a
   // translation (0 with consistent mass, whose translations the element loop adds), its rotational
   // inertia [kg m^2] at a rotation (0 at DOFs the node does not have).
