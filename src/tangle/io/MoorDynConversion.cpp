@@ -1771,14 +1771,11 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   line(
       "                                # give a duration and a motion of the coupled ends to run dynamics "
       "here");
-  if (opt.tangleStep)
-    line(fmt::format("  time_step: {}                # the deck's tangleTimeStep (dtM = {} s)", num(step),
-                     num(opt.timeStep)));
-  else
-    line(fmt::format(
-        "  time_step: {}                # tangle's implicit step (dtM = {} s is an explicit scheme's "
-        "stability limit; a host's smaller step is used as given)",
-        num(step), num(opt.timeStep)));
+  line(fmt::format("  time_step: {}                # {}", num(step),
+                   opt.tangleStep ? fmt::format("the deck's tangleTimeStep (dtM = {} s)", num(opt.timeStep))
+                                  : fmt::format("tangle's implicit step (dtM = {} s is an explicit scheme's "
+                                                "stability limit; a host's smaller step is used as given)",
+                                                num(opt.timeStep))));
   // The Newton tolerance of a model of cables only (no line type with EI, no moving rod, no free body):
   // 1e-5 of each line's weight, between the 1e-4 docs/model-format.md recommends for cable moorings at dt
   // 0.05 s and tangle's default 1e-6 (kept for beams and bodies, as for risers). A host may step at

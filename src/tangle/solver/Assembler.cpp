@@ -333,20 +333,16 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       addViscoelasticBar(state, el, visco, d1, d2, beta, request, force, matrix);
     } else if (el.bar && !matrix && beta == 0.0) {
       // The force alone (Bar::forceOnNode2: the same arithmetic as compute's, inline), and an axial damper's
-      // on the bar's own direction (addAxialDamping's arithmetic: its chord.normalized() is that direction,
-      // bit for bit, without a second square root and division per element).
+      // on the bar's own direction (bit for bit the chord.normalized() the other paths give addAxialDamping,
+      // without a second square root and division per element).
       const element::Bar::ForceAndDirection bar =
           barOf(e, barCopy)
               .forceAndDirectionOnNode2(state.position[el.node1], state.position[el.node2],
                                         compressionFactor(el));
       force.segment<3>(d1) -= bar.force;
       force.segment<3>(d2) += bar.force;
-      if (request.dynamic && el.type->axialDamping > 0.0) {
-        const double nd = m_axialDampingRate[e] *
-                          bar.direction.dot(state.velocity.segment<3>(d2) - state.velocity.segment<3>(d1));
-        force.segment<3>(d1) -= nd * bar.direction;
-        force.segment<3>(d2) += nd * bar.direction;
-      }
+      if (request.dynamic && el.type->axialDamping > 0.0)
+        addAxialDamping(state, e, bar.direction, d1, d2, request, force, nullptr);
       return;
     } else if (el.bar) {
       Vec6 f;
@@ -371,7 +367,8 @@ void Assembler::addElements(const model::State& state, const AssemblyRequest& re
       scatterElement(map, f, k, state, beta, request, force, matrix);
     }
     if (request.dynamic && el.type->axialDamping > 0.0)
-      addAxialDamping(state, el, d1, d2, request, force, matrix);
+      addAxialDamping(state, e, (state.position[el.node2] - state.position[el.node1]).normalized(), d1, d2,
+                      request, force, matrix);
   });
 }
 
@@ -403,13 +400,11 @@ void Assembler::addViscoelasticBar(const model::State& state, const model::LineE
   }
 }
 
-void Assembler::addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
+void Assembler::addAxialDamping(const model::State& state, std::size_t element, const Vec3& e, int d1, int d2,
                                 const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const {
   // Structural axial damping: N_d = c * strain rate = c e.(v2 - v1) / L0 (c = LineType::axialDamping [N s]),
   // acting along the chord e (as OrcaFlex's axial damping and MoorDyn's internal damping).
-  const Vec3 chord = state.position[el.node2] - state.position[el.node1];
-  const Vec3 e = chord.normalized();
-  const double c = el.type->axialDamping / el.restLength;  // m_axialDampingRate's
+  const double c = m_axialDampingRate[element];
   const double nd = c * e.dot(state.velocity.segment<3>(d2) - state.velocity.segment<3>(d1));
   force.segment<3>(d1) -= nd * e;
   force.segment<3>(d2) += nd * e;

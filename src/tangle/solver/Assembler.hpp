@@ -201,7 +201,9 @@ class Assembler {
   void addWeight(const model::State& state, const AssemblyRequest& request, VecX& force,
                  const std::vector<int>* elements = nullptr, const std::vector<int>* attachments = nullptr,
                  SystemMatrix* matrix = nullptr);
-  void addAxialDamping(const model::State& state, const model::LineElement& el, int d1, int d2,
+  /// Element `element`'s axial damper along its chord direction e [-] (the caller's: the bar's own, or the
+  /// chord normalised), between the nodes whose first DOFs are d1 and d2.
+  void addAxialDamping(const model::State& state, std::size_t element, const Vec3& e, int d1, int d2,
                        const AssemblyRequest& request, VecX& force, SystemMatrix* matrix) const;
   /// A viscoelastic rope's bar in the dynamics (ViscoelasticElements k): its axial force from the law, the
   /// tangent kf (dN/d eps / L0 e e^T + N / l (I - e e^T)) + cf dN/d eps' / L0 e e^T, Rayleigh damping as a

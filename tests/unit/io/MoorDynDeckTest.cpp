@@ -143,11 +143,13 @@ TEST(MoorDynDeck, ConvertsIntoTheModelMoorDynDescribes) {
   EXPECT_FALSE(c.lines[0].reversed);
 }
 
-/// The dynamics' Newton tolerance of deck `text` converted [-].
-double convertedTolerance(const std::string& text) {
+/// The dynamics settings of deck `text` converted.
+model::DynamicSpec convertedDynamics(const std::string& text) {
   const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
-  return readModelString(c.yaml, "converted.yaml").dynamics.tolerance;
+  return readModelString(c.yaml, "converted.yaml").dynamics;
 }
+/// The dynamics' Newton tolerance of deck `text` converted [-].
+double convertedTolerance(const std::string& text) { return convertedDynamics(text).tolerance; }
 
 // The dynamics' Newton tolerance: 1e-5 of the lines' weight for a model of cables only (the deck's lines
 // without bending; docs/moordyn.md, OPTIONS), tangle's default 1e-6 with a beam line (EI that bends over
@@ -188,10 +190,7 @@ TEST(MoorDynDeck, TangleToleranceOptionSetsTheNewtonTolerance) {
 // stability limit), or the deck's own tangleTimeStep (a host coupled at 0.025 s then takes one step per call,
 // not three of 0.0083 s).
 TEST(MoorDynDeck, TangleTimeStepOptionSetsTheImplicitStep) {
-  const auto convertedStep = [](const std::string& text) {
-    const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(text, "deck.txt"));
-    return readModelString(c.yaml, "converted.yaml").dynamics.timeStep;
-  };
+  const auto convertedStep = [](const std::string& text) { return convertedDynamics(text).timeStep; };
   const std::string line = "1 chain 1 2 320 40 -\n";
   EXPECT_DOUBLE_EQ(convertedStep(deck(kTwoPoints, line)), 0.01);  // dtM 0.001 s
   EXPECT_DOUBLE_EQ(convertedStep(deck(kTwoPoints, line, "0.025 tangleTimeStep\n")), 0.025);
