@@ -75,7 +75,11 @@ TEST_P(HeadOn, ConservesMomentumAndRestoresESquaredOfTheKineticEnergy) {
       c.distributed ? model::ContactFormulation::Distributed : model::ContactFormulation::Point;
   spec.contact.stiffness = c.stiffness;
   spec.dynamics.enabled = true;
-  spec.dynamics.duration = 0.05;  // touch at 2.5 ms, impact < 3 ms, then 45 ms of free flight
+  // Touch at 2.5 ms; the rigid bars' impact < 3 ms; the slowest case, three-element bars on the distributed
+  // formulation's soft crossing at e = 0.5, is in contact until 45.1 ms (unloading along (1 - a) = 0.4 of
+  // the law, 42.6 ms against 34.2 ms at e = 1) and its event closes, 5 % of the radii apart, at 55.8 ms
+  // (a run of 50 ms ended it open: a known failure until 2026-12-02).
+  spec.dynamics.duration = 0.08;
   spec.dynamics.timeStep = 1e-3;
   spec.dynamics.minTimeStep = 1e-9;
   spec.dynamics.outputInterval = spec.dynamics.duration;
@@ -171,22 +175,22 @@ INSTANTIATE_TEST_SUITE_P(FlexibleBars, HeadOn,
                          caseName);
 
 // The distributed formulation (issue 43; restitution by hysteresis, docs/theory.md 9.11): three-element
-// bars at 1e6 N/m, e = 1: KE ratio +1.2e-4.
+// bars at 1e6 N/m, e = 1: KE ratio +1.2e-4; e = 0.5: +1e-5 (a known failure while the run ended before its
+// event closed).
 INSTANTIATE_TEST_SUITE_P(Distributed, HeadOn,
-                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 3, 1e6, true}), caseName);
+                         ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 3, 1e6, true},
+                                           Case{0.5, model::ImpactModel::Penalty, 3, 1e6, true}),
+                         caseName);
 
 // Known failures (run by ctest as expected to fail, validation.distributed_head_on_expected_fail):
-// - one-element (rigid) bars at the automatic stiffness: the impact step limit judges the patch at first
-//   touch with the point stiffness, 1.2 mm of rigid-impact depth against p0 = 2 mm, so it is not limited;
-//   the steps grow 1.25-fold through the impact: KE ratio +9.8 % at e = 1, 0.2972 for 0.25 at e = 0.5
-//   (+18.9 %). Judged with the patch's own stiffness: +0.35 % and +6.6 %, but a random sweep blew up
-//   (DistributedContact::impactStepLimit);
-// - three-element bars at e = 0.5: KE ratio right (+1e-5) but the event is still open at the end of the
-//   50 ms run.
+// one-element (rigid) bars at the automatic stiffness: the impact step limit judges the patch at first
+// touch with the point stiffness, 1.2 mm of rigid-impact depth against p0 = 2 mm, so it is not limited;
+// the steps grow 1.25-fold through the impact: KE ratio +9.8 % at e = 1, 0.2972 for 0.25 at e = 0.5
+// (+18.9 %). Judged with the patch's own stiffness: +0.35 % and +6.6 %, but a random sweep blew up
+// (DistributedContact::impactStepLimit).
 INSTANTIATE_TEST_SUITE_P(DistributedKnownFailures, HeadOn,
                          ::testing::Values(Case{1.0, model::ImpactModel::Penalty, 1, 0.0, true},
-                                           Case{0.5, model::ImpactModel::Penalty, 1, 0.0, true},
-                                           Case{0.5, model::ImpactModel::Penalty, 3, 1e6, true}),
+                                           Case{0.5, model::ImpactModel::Penalty, 1, 0.0, true}),
                          caseName);
 
 // End-on impact: a bar falling end first onto the side of a heavy line (a free line end hitting another
