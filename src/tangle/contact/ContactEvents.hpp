@@ -50,6 +50,9 @@ struct ContactSpot {
   Vec3 position = Vec3::Zero();     ///< point on line A's centreline [m]
   Vec3 normal = Vec3::UnitZ();      ///< from B to A
   double force = 0.0;               ///< normal force [N] (a Gauss point: force per length x length)
+  /// Friction force on line A [N] (a Gauss point's: per length x length; 0 for the point formulation's
+  /// spots): its part along the patch's mean normal takes part in stopping the approach (impact phase).
+  Vec3 friction = Vec3::Zero();
   double length = 0.0;              ///< contact length it stands for [m] (0 for a point contact)
   /// Weight of the spot's relative normal velocity in its patch's [N]: the law's elastic force, without the
   /// restitution's rate factor (distributed), which would lean the mean towards the approaching spots; < 0:
@@ -125,6 +128,7 @@ struct ContactEvent {
   double radii = 0.0, minRadius = 0.0, reach = 0.0;  ///< [m]
   double lastAMin = 0.0, lastAMax = 0.0, lastBMin = 0.0, lastBMax = 0.0;  ///< extent at the last contact [m]
   double lastForce = 0.0;          ///< [N]
+  double lastPhaseForce = 0.0;     ///< normal force plus friction along the mean normal [N] (impact phase)
   double lastContactTime = 0.0;    ///< last time with contact force [s]
   Vec3 normalStart = Vec3::UnitZ();
   Vec3 startVelocityA = Vec3::Zero(), startVelocityB = Vec3::Zero();

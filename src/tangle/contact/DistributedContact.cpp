@@ -1102,6 +1102,7 @@ std::vector<ContactSpot> DistributedContact::spots(const model::State& state, do
     spot.length = smp.length;
     spot.forcePerLength = smp.lineForce;
     spot.force = smp.lineForce * smp.length;
+    spot.friction = (swapped ? -smp.length : smp.length) * smp.friction;  // on the lower-index line
     spot.velocityWeight = smp.spring * smp.length;
     // Approach speed before the step (trapezoidal change over the step, as the point formulation).
     const double accelerationRate =

@@ -122,5 +122,48 @@ TEST(ContactEvents, ImpulseModelJumpGivesTheCompressionWork) {
   EXPECT_NEAR(ev.phaseWork, 0.5 * m * v0 * v0, 1e-3 * 0.5 * m * v0 * v0);
 }
 
+// Friction where a patch's normals spread (docs/theory.md 9.10): two Gauss spots of one patch with normals
+// tilted +-theta about z in the xz-plane, each with its friction tangent to its own normal and resisting
+// the approach; lines A and B close along z as two rigid bodies of reduced mass m on a spring k (as the
+// first test), the spring's force k x along z carried as a share (1 - beta) by the normal forces and beta by
+// the friction's z components. Per spot the relative normal velocity is c w (c = cos theta, w the relative
+// velocity along z), so the tracker sees the approach c v0, and (closed forms, from integral k x dt = m v0
+// and integral k x (-w) dt = 1/2 m v0^2):
+//   Eq. 5: integral (sum F_i + f . z) dt / (c v0) = m ((1 - beta) / c^2 + beta / c),
+//   work mass: 2 integral sum F_i (-c w) dt / (c v0)^2 = m (1 - beta) / c^2 (the normal law's work only).
+// Without friction's part the Eq. 5 mass would be m (1 - beta) / c^2: 30 % low here. Tolerances as the
+// first test's.
+TEST(ContactEvents, FrictionAlongTheMeanNormalIsPartOfTheImpulseNotOfTheWork) {
+  const double m = 2.0, k = 8e4, v0 = 1.5, w = std::sqrt(k / m), tc = 0.5 * kPi / w, dt = tc / 1000.0;
+  const double theta = 10.0 * kPi / 180.0, c = std::cos(theta), sn = std::sin(theta), beta = 0.3;
+  ContactEventTracker tracker(0.05, 0.2);
+  const auto farApart = [](int, int, double, double, double, double) { return 1.0; };
+  const int steps = static_cast<int>(std::round(tc / dt));
+  for (int i = 1; i <= steps; ++i) {
+    const double t = i * dt;
+    const double spring = k * v0 / w * std::sin(w * t);  // k x along z [N]
+    const double closing = -v0 * std::cos(w * t);        // w [m/s]
+    std::vector<ContactSpot> spots;
+    for (const double side : {1.0, -1.0}) {
+      ContactSpot s = spot(0.5 * (1.0 - beta) * spring / c, closing, c * v0, 0.1, 100.0);
+      s.normal = Vec3(side * sn, 0.0, c);
+      s.length = 0.1;  // a Gauss spot
+      s.velocityWeight = s.force;
+      const double friction = 0.5 * beta * spring / sn;  // |f| whose z component is beta k x / 2
+      s.friction = friction * Vec3(-side * c, 0.0, sn);  // tangent to the spot's normal, resisting A's fall
+      spots.push_back(s);
+    }
+    tracker.update(t, dt, true, spots, farApart);
+  }
+  tracker.update((steps + 1) * dt, dt, true, {}, farApart);
+  tracker.finish((steps + 1) * dt);
+  ASSERT_EQ(tracker.events().size(), 1u);
+  const ContactEvent& e = tracker.events().front();
+  EXPECT_NEAR(e.impactVelocity, c * v0, 1e-12);
+  const double eq5 = m * ((1.0 - beta) / (c * c) + beta / c), work = m * (1.0 - beta) / (c * c);
+  EXPECT_NEAR(e.eq5Mass, eq5, 3e-3 * eq5);
+  EXPECT_NEAR(e.workMass, work, 3e-3 * work);
+}
+
 }  // namespace
 }  // namespace tangle::contact
