@@ -29,6 +29,25 @@ struct Patch {
   const ContactSpot* strongest = nullptr;
 };
 
+/// One open event's sums over the patches that continue it at this state.
+struct StepSums {
+  double force = 0.0;       // normal force [N]
+  double phaseForce = 0.0;  // normal force plus friction along the patches' mean normals [N] (impact phase)
+  double power = 0.0;       // work rate against the relative normal motion [W]
+  double momentum = 0.0;    // force x relative normal velocity [N m/s]
+  double jump = 0.0;        // impulse-model jumps' impulse [N s]
+  double jumpWork = 0.0;    // their compression work [J]
+  StepSums& operator+=(const StepSums& o) {
+    force += o.force;
+    phaseForce += o.phaseForce;
+    power += o.power;
+    momentum += o.momentum;
+    jump += o.jump;
+    jumpWork += o.jumpWork;
+    return *this;
+  }
+};
+
 bool overlaps(double lo, double hi, double from, double to) { return hi >= from && lo <= to; }
 
 /// Folds event `from` into `into` (two open events of a pair that one patch now joins: one contact).
@@ -95,8 +114,11 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
   }
   for (Patch& p : patches) {
     double strongest = -1.0, velocityWeight = 0.0;
+    Vec3 meanNormal = Vec3::Zero(), friction = Vec3::Zero();  // force-weighted normal, total friction on A
     for (const ContactSpot* s : p.spots) {
       p.force += s->force;
+      meanNormal += s->force * s->normal;
+      friction += s->friction;
       p.length += s->length;
       p.peakPerLength = std::max(p.peakPerLength, s->forcePerLength);
       p.arcA += s->force * s->arcA;
@@ -141,20 +163,13 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     // without friction, below one element's reduced mass (0.800 kg); with it 0.8145 kg. The work estimate
     // stays the normal law's (what the contact itself took up, the local energy of a dent check, 9.10):
     // the work friction does goes into sliding, not into the contact.
-    Vec3 meanNormal = Vec3::Zero(), friction = Vec3::Zero();
-    for (const ContactSpot* s : p.spots) {
-      meanNormal += s->force * s->normal;
-      friction += s->friction;
-    }
     const double meanNorm = meanNormal.norm();
     if (meanNorm > 0.0) p.frictionAlongNormal = friction.dot(meanNormal) / meanNorm;
     p.position /= p.force;
   }
 
   // Match patches to open events; the forces of several patches of one event add up.
-  std::vector<double> eventForce(m_open.size(), 0.0), eventPhaseForce(m_open.size(), 0.0),
-      eventPower(m_open.size(), 0.0), eventMomentum(m_open.size(), 0.0), eventJump(m_open.size(), 0.0),
-      eventJumpWork(m_open.size(), 0.0);
+  std::vector<StepSums> sums(m_open.size());
   std::vector<bool> continued(m_open.size(), false);
   std::vector<int> absorbedInto(m_open.size(), -1);  // an event folded into another (below)
   m_patches.clear();
@@ -220,12 +235,7 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.massLowerBound = s.elementPairMass;
       e.massUpperBound = s.linePairMass;
       m_open.push_back(std::move(e));
-      eventForce.push_back(0.0);
-      eventPhaseForce.push_back(0.0);
-      eventPower.push_back(0.0);
-      eventMomentum.push_back(0.0);
-      eventJump.push_back(0.0);
-      eventJumpWork.push_back(0.0);
+      sums.emplace_back();
       continued.push_back(false);
       absorbedInto.push_back(-1);
       match = static_cast<int>(m_open.size()) - 1;
@@ -245,12 +255,9 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.lastBMin = std::min(e.lastBMin, p.bMin);
       e.lastBMax = std::max(e.lastBMax, p.bMax);
     }
-    eventForce[match] += p.force;
-    eventPhaseForce[match] += p.force + p.frictionAlongNormal;
-    eventPower[match] += p.power;
-    eventMomentum[match] += p.force * p.relativeVelocity;
-    eventJump[match] += p.jumpImpulse;
-    eventJumpWork[match] += p.jumpWork;
+    sums[match] += StepSums{p.force,       p.force + p.frictionAlongNormal,
+                            p.power,       p.force * p.relativeVelocity,
+                            p.jumpImpulse, p.jumpWork};
     e.arcAMin = std::min(e.arcAMin, p.aMin);
     e.arcAMax = std::max(e.arcAMax, p.aMax);
     e.arcBMin = std::min(e.arcBMin, p.bMin);
@@ -270,31 +277,22 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     std::size_t root = static_cast<std::size_t>(absorbedInto[k]);
     while (absorbedInto[root] >= 0) root = static_cast<std::size_t>(absorbedInto[root]);
     mergeEvent(m_open[root], m_open[k]);
-    eventForce[root] += eventForce[k];
-    eventPhaseForce[root] += eventPhaseForce[k];
-    eventPower[root] += eventPower[k];
-    eventMomentum[root] += eventMomentum[k];
-    eventJump[root] += eventJump[k];
-    eventJumpWork[root] += eventJumpWork[k];
+    sums[root] += sums[k];
     continued[root] = continued[root] || continued[k];
   }
   for (std::size_t k = m_open.size(); k-- > 0;) {
     if (absorbedInto[k] < 0) continue;
     const auto at = static_cast<std::ptrdiff_t>(k);
     m_open.erase(m_open.begin() + at);
-    eventForce.erase(eventForce.begin() + at);
-    eventPhaseForce.erase(eventPhaseForce.begin() + at);
-    eventPower.erase(eventPower.begin() + at);
-    eventMomentum.erase(eventMomentum.begin() + at);
-    eventJump.erase(eventJump.begin() + at);
-    eventJumpWork.erase(eventJumpWork.begin() + at);
+    sums.erase(sums.begin() + at);
     continued.erase(continued.begin() + at);
   }
   for (std::size_t k = 0; k < m_open.size(); ++k) {
     if (!continued[k]) continue;
     ContactEvent& e = m_open[k];
-    e.impulse += 0.5 * (e.lastForce + eventForce[k]) * dt;
-    const double u = eventMomentum[k] / eventForce[k];  // force-weighted relative normal velocity
+    const StepSums& step = sums[k];
+    e.impulse += 0.5 * (e.lastForce + step.force) * dt;
+    const double u = step.momentum / step.force;  // force-weighted relative normal velocity
     // The impact phase ends where the relative normal velocity reverses: within this step at the fraction
     // theta (u linear in time between the commits), and only that part of the step's impulse and work is
     // the phase's. (The whole step's, before: the distributed law's force drops from (1 + a) f to f at
@@ -303,18 +301,18 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
     const double previous = e.lastRelativeVelocity;
     // (Not in a step with a velocity jump of the impulse model: the jump is the reversal, whole.)
     const double theta =
-        e.phaseOpen && u >= 0.0 && previous < 0.0 && eventJump[k] == 0.0 ? -previous / (u - previous) : 1.0;
+        e.phaseOpen && u >= 0.0 && previous < 0.0 && step.jump == 0.0 ? -previous / (u - previous) : 1.0;
     if (e.phaseOpen) {
-      const double force = e.lastPhaseForce + theta * (eventPhaseForce[k] - e.lastPhaseForce);
-      const double power = e.lastPower + theta * (eventPower[k] - e.lastPower);
-      e.phaseImpulse += 0.5 * (e.lastPhaseForce + force) * theta * dt + eventJump[k];
-      e.phaseWork += 0.5 * (e.lastPower + power) * theta * dt + eventJumpWork[k];
+      const double force = e.lastPhaseForce + theta * (step.phaseForce - e.lastPhaseForce);
+      const double power = e.lastPower + theta * (step.power - e.lastPower);
+      e.phaseImpulse += 0.5 * (e.lastPhaseForce + force) * theta * dt + step.jump;
+      e.phaseWork += 0.5 * (e.lastPower + power) * theta * dt + step.jumpWork;
     }
-    e.lastForce = eventForce[k];
-    e.lastPhaseForce = eventPhaseForce[k];
-    e.lastPower = eventPower[k];
+    e.lastForce = step.force;
+    e.lastPhaseForce = step.phaseForce;
+    e.lastPower = step.power;
     e.lastRelativeVelocity = u;
-    e.peakForce = std::max(e.peakForce, eventForce[k]);
+    e.peakForce = std::max(e.peakForce, step.force);
     e.endTime = time;
     e.lastContactTime = time;
     if (!dynamic) e.sustained = true;

@@ -35,20 +35,25 @@ ContactSpot spot(double f, double u, double approach, double lower, double upper
   return s;
 }
 
-/// Feeds the history f(t), u(t) on [0, duration] in steps dt, then closes the event as separated.
-ContactEvent run(const std::function<double(double)>& force, const std::function<double(double)>& velocity,
-                 double v0, double duration, double dt, double lower = 0.1, double upper = 100.0) {
+/// Feeds the committed spots spotsAt(t) on [0, duration] in steps dt, then closes the event as separated.
+ContactEvent runSpots(const std::function<std::vector<ContactSpot>(double)>& spotsAt, double duration,
+                      double dt) {
   ContactEventTracker tracker(0.05, 0.2);
   const auto farApart = [](int, int, double, double, double, double) { return 1.0; };
   const int steps = static_cast<int>(std::round(duration / dt));
-  for (int i = 1; i <= steps; ++i) {
-    const double t = i * dt;
-    tracker.update(t, dt, true, {spot(force(t), velocity(t), v0, lower, upper)}, farApart);
-  }
+  for (int i = 1; i <= steps; ++i) tracker.update(i * dt, dt, true, spotsAt(i * dt), farApart);
   tracker.update((steps + 1) * dt, dt, true, {}, farApart);  // no contact: the surfaces have parted
   tracker.finish((steps + 1) * dt);
   EXPECT_EQ(tracker.events().size(), 1u);
   return tracker.events().front();
+}
+
+/// Feeds the history f(t), u(t) on [0, duration] in steps dt, then closes the event as separated.
+ContactEvent run(const std::function<double(double)>& force, const std::function<double(double)>& velocity,
+                 double v0, double duration, double dt, double lower = 0.1, double upper = 100.0) {
+  return runSpots(
+      [&](double t) { return std::vector<ContactSpot>{spot(force(t), velocity(t), v0, lower, upper)}; },
+      duration, dt);
 }
 
 // Two rigid bodies of reduced mass m on a contact spring k: x = (v0 / w) sin(w t), F = k x, u = -v0 cos(w t)
@@ -136,29 +141,24 @@ TEST(ContactEvents, ImpulseModelJumpGivesTheCompressionWork) {
 TEST(ContactEvents, FrictionAlongTheMeanNormalIsPartOfTheImpulseNotOfTheWork) {
   const double m = 2.0, k = 8e4, v0 = 1.5, w = std::sqrt(k / m), tc = 0.5 * kPi / w, dt = tc / 1000.0;
   const double theta = 10.0 * kPi / 180.0, c = std::cos(theta), sn = std::sin(theta), beta = 0.3;
-  ContactEventTracker tracker(0.05, 0.2);
-  const auto farApart = [](int, int, double, double, double, double) { return 1.0; };
-  const int steps = static_cast<int>(std::round(tc / dt));
-  for (int i = 1; i <= steps; ++i) {
-    const double t = i * dt;
-    const double spring = k * v0 / w * std::sin(w * t);  // k x along z [N]
-    const double closing = -v0 * std::cos(w * t);        // w [m/s]
-    std::vector<ContactSpot> spots;
-    for (const double side : {1.0, -1.0}) {
-      ContactSpot s = spot(0.5 * (1.0 - beta) * spring / c, closing, c * v0, 0.1, 100.0);
-      s.normal = Vec3(side * sn, 0.0, c);
-      s.length = 0.1;  // a Gauss spot
-      s.velocityWeight = s.force;
-      const double friction = 0.5 * beta * spring / sn;  // |f| whose z component is beta k x / 2
-      s.friction = friction * Vec3(-side * c, 0.0, sn);  // tangent to the spot's normal, resisting A's fall
-      spots.push_back(s);
-    }
-    tracker.update(t, dt, true, spots, farApart);
-  }
-  tracker.update((steps + 1) * dt, dt, true, {}, farApart);
-  tracker.finish((steps + 1) * dt);
-  ASSERT_EQ(tracker.events().size(), 1u);
-  const ContactEvent& e = tracker.events().front();
+  const ContactEvent e = runSpots(
+      [&](double t) {
+        const double spring = k * v0 / w * std::sin(w * t);  // k x along z [N]
+        const double closing = -v0 * std::cos(w * t);        // w [m/s]
+        std::vector<ContactSpot> spots;
+        for (const double side : {1.0, -1.0}) {
+          ContactSpot s = spot(0.5 * (1.0 - beta) * spring / c, closing, c * v0, 0.1, 100.0);
+          s.normal = Vec3(side * sn, 0.0, c);
+          s.length = 0.1;  // a Gauss spot
+          s.velocityWeight = s.force;
+          const double friction = 0.5 * beta * spring / sn;  // |f| whose z component is beta k x / 2
+          s.friction =
+              friction * Vec3(-side * c, 0.0, sn);  // tangent to the spot's normal, resisting A's fall
+          spots.push_back(s);
+        }
+        return spots;
+      },
+      tc, dt);
   EXPECT_NEAR(e.impactVelocity, c * v0, 1e-12);
   const double eq5 = m * ((1.0 - beta) / (c * c) + beta / c), work = m * (1.0 - beta) / (c * c);
   EXPECT_NEAR(e.eq5Mass, eq5, 3e-3 * eq5);

@@ -69,20 +69,29 @@ std::vector<StringSample> stringSamples(const contact::LineContact& contact) {
 void restingString(bool distributed, bool dynamic = false) {
   constexpr double kMass = 100.0, kEA = 1e8, kH = 2e4, kSpan = 20.0, kH0 = 0.5, kZ = 20.0, kFriction = 0.3;
   const double q = kMass * kStandardGravity;
+  // The free span's point (x, z) from its vertex at unstretched arc S, horizontal tension H.
+  const auto spanPoint = [&](double tension, double arc) {
+    const double u = q * arc / tension;
+    return std::array<double, 2>{tension / q * std::asinh(u) + tension * arc / kEA,
+                                 tension / q * (std::sqrt(1.0 + u * u) - 1.0) + q * arc * arc / (2.0 * kEA)};
+  };
   // Free span of a string with horizontal tension H dropping by `drop`: (S_f, s).
   const auto freeSpan = [&](double tension, double drop) {
-    const auto zOf = [&](double arc) {
-      const double u = q * arc / tension;
-      return tension / q * (std::sqrt(1.0 + u * u) - 1.0) + q * arc * arc / (2.0 * kEA);
-    };
     double lo = 0.0, hi = 10.0;
-    for (int i = 0; i < 200; ++i) (zOf(0.5 * (lo + hi)) < drop ? lo : hi) = 0.5 * (lo + hi);
+    for (int i = 0; i < 200; ++i) (spanPoint(tension, 0.5 * (lo + hi))[1] < drop ? lo : hi) = 0.5 * (lo + hi);
     const double arc = 0.5 * (lo + hi);
-    return std::array<double, 2>{arc, tension / q * std::asinh(q * arc / tension) + tension * arc / kEA};
+    return std::array<double, 2>{arc, spanPoint(tension, arc)[0]};
   };
   const auto lengthFor = [&](double tension, double drop) {
     const auto [arc, span] = freeSpan(tension, drop);
     return 2.0 * arc + (kSpan - 2.0 * span) / (1.0 + tension / kEA);
+  };
+  // The tension at which the string of unstretched length `length` rests with its free spans dropping by
+  // `drop` (the length needed falls with the tension).
+  const auto restingTension = [&](double length, double drop) {
+    double lo = 0.5 * kH, hi = 2.0 * kH;
+    for (int i = 0; i < 200; ++i) (lengthFor(0.5 * (lo + hi), drop) > length ? lo : hi) = 0.5 * (lo + hi);
+    return 0.5 * (lo + hi);
   };
   const double length0 = lengthFor(kH, kH0);
   const double restZ = kZ + 0.15;  // A's centreline where it rests on B (radii 0.05 + 0.1)
@@ -122,23 +131,14 @@ void restingString(bool distributed, bool dynamic = false) {
   // step of the dynamics and an axial wave along the string at up to 10 m/s).
   const model::Line& a = sim.model().lines()[0];
   constexpr double kLift = 0.005;
-  double hLo0 = 0.5 * kH, hHi0 = 2.0 * kH;  // the tension at which length0 rests 5 mm higher
-  for (int i = 0; i < 200; ++i)
-    (lengthFor(0.5 * (hLo0 + hHi0), kH0 - kLift) > length0 ? hLo0 : hHi0) = 0.5 * (hLo0 + hHi0);
-  const double startTension = 0.5 * (hLo0 + hHi0);
+  const double startTension = restingTension(length0, kH0 - kLift);
   const auto [startArc, startSpan] = freeSpan(startTension, kH0 - kLift);
-  const auto spanPoint = [&](double arc) {  // x, z of the free span at unstretched arc from its vertex
-    const double u = q * arc / startTension;
-    return std::array<double, 2>{
-        startTension / q * std::asinh(u) + startTension * arc / kEA,
-        startTension / q * (std::sqrt(1.0 + u * u) - 1.0) + q * arc * arc / (2.0 * kEA)};
-  };
   for (int i = 1; i < a.nodeCount - 1; ++i) {  // the pinned ends stay where they are
     const double sigma = length0 * i / (a.nodeCount - 1);  // unstretched arc from the left pin
     const double fromEnd = std::min(sigma, length0 - sigma), side = sigma < 0.5 * length0 ? -1.0 : 1.0;
     Vec3& x = sim.state().position[a.firstNode + i];
     if (fromEnd < startArc) {
-      const auto [dx, dz] = spanPoint(startArc - fromEnd);
+      const auto [dx, dz] = spanPoint(startTension, startArc - fromEnd);
       x.x() = side * (0.5 * kSpan - startSpan + dx);
       x.z() = restZ + kLift + dz;
     } else {
@@ -175,10 +175,7 @@ void restingString(bool distributed, bool dynamic = false) {
   for (const StringSample& smp : stringSamples(*sim.contact()))
     if (smp.lineForce > 0.0 && std::abs(smp.arc - 0.5 * a.length) < 3.0) penetration -= smp.gap, count += 1.0;
   penetration /= std::max(count, 1.0);
-  double hLo = 0.5 * kH, hHi = 2.0 * kH;  // the length needed falls with the tension
-  for (int i = 0; i < 200; ++i)
-    (lengthFor(0.5 * (hLo + hHi), kH0 + penetration) > length0 ? hLo : hHi) = 0.5 * (hLo + hHi);
-  const double tension = 0.5 * (hLo + hHi);
+  const double tension = restingTension(length0, kH0 + penetration);
   const double freeArc = freeSpan(tension, kH0 + penetration)[0];
   const auto lines = sim.snapshot(false);
   if (!dynamic) {
