@@ -25,6 +25,9 @@ WakeInterference::WakeInterference(const model::Model& model, const CurrentProfi
     p.dragCoefficient = w.upstreamDragCoefficient;
     const model::Line& up = model.lines()[static_cast<std::size_t>(p.upstream)];
     const model::Line& down = model.lines()[static_cast<std::size_t>(p.downstream)];
+    for (int e = 0; e < up.elementCount; ++e)
+      p.blendLength = std::max(
+          p.blendLength, model.elements()[static_cast<std::size_t>(up.firstElement + e)].type->outerDiameter);
     // First guess: the upstream element at the same fraction of the line.
     p.guess.resize(static_cast<std::size_t>(down.elementCount));
     for (int e = 0; e < down.elementCount; ++e)
@@ -142,19 +145,67 @@ ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair,
   if (x <= 0.0) return o;
   const Vec3 across = d - x * ex - d.dot(t) * t;
   const double y = across.norm();
-  const section::LineType& upType = *elements[static_cast<std::size_t>(j)].type;
-  const double cd = pair.dragCoefficient > 0.0 ? pair.dragCoefficient : upType.dragNormal;
+  const auto [upDiameter, cd] = upstreamSection(state, pair, j, s);
   const double downDiameter = el.type->outerDiameter;
-  const WakeValue w = wakeAt(pair.coefficients, x, y, cd, upType.outerDiameter, downDiameter);
-  if (w.deficit <= 0.0) return o;
-  o.deficit = w.deficit;
+  const WakeValue w = wakeAt(pair.coefficients, x, y, cd, upDiameter, downDiameter);
+  // The wake starts at the upstream cylinder's rear surface: between its centre (x = 0) and x = D / 2 the
+  // deficit and lift rise from zero by a smoothstep, f = r^2 (3 - 2 r) with r = 2 x / D. Cut off at x = 0
+  // instead, a point passing level with the upstream centre (beside it, or with the lines crossing) saw
+  // the drag jump by the whole deficit (Huse: 0.6 U on the axis at x = 0+), a force step that stopped the
+  // dynamics at steps of 1e-5 s (Newton flipping between the two sides). Beyond x = D / 2 (every point
+  // in contact or farther) nothing changes.
+  const double r = std::min(1.0, 2.0 * x / upDiameter);
+  const double onset = r * r * (3.0 - 2.0 * r);
+  const double deficit = onset * w.deficit;
+  if (deficit <= 0.0) return o;
+  o.deficit = deficit;
   o.upstreamLine = pair.upstream;
-  o.velocityChange = -w.deficit * speed * ex;
+  o.velocityChange = -deficit * speed * ex;
   if (w.liftCoefficient != 0.0 && y > 0.0) {
-    const Vec3 lift = 0.5 * rho * w.liftCoefficient * downDiameter * speed * speed * (across / y);
+    const Vec3 lift = 0.5 * rho * onset * w.liftCoefficient * downDiameter * speed * speed * (across / y);
     o.liftPerLength = lift - lift.dot(td) * td;
   }
   return o;
+}
+
+std::pair<double, double> WakeInterference::upstreamSection(const model::State& state, const Pair& pair,
+                                                            int j, double s) const {
+  const auto& elements = m_model->elements();
+  const model::Line& up = m_model->lines()[static_cast<std::size_t>(pair.upstream)];
+  const int first = up.firstElement, last = up.firstElement + up.elementCount - 1;
+  auto chord = [&](int i) {
+    const model::LineElement& u = elements[static_cast<std::size_t>(i)];
+    return (state.position[u.node2] - state.position[u.node1]).norm();
+  };
+  const section::LineType& own = *elements[static_cast<std::size_t>(j)].type;
+  const double ownCd = pair.dragCoefficient > 0.0 ? pair.dragCoefficient : own.dragNormal;
+  double length = 0.0, diameter = 0.0, dragArea = 0.0;  // [m], [m^2], [m^2]
+  bool uniform = true;  // every element within reach has j's D and C_d (then those, exactly)
+  auto add = [&](int i, double covered) {
+    const section::LineType& type = *elements[static_cast<std::size_t>(i)].type;
+    const double cd = pair.dragCoefficient > 0.0 ? pair.dragCoefficient : type.dragNormal;
+    uniform = uniform && type.outerDiameter == own.outerDiameter && cd == ownCd;
+    length += covered;
+    diameter += covered * type.outerDiameter;
+    dragArea += covered * cd * type.outerDiameter;
+  };
+  // Element j from q backwards and forwards, then its neighbours until blendLength is covered each way.
+  const double h = pair.blendLength;
+  const double lj = chord(j);
+  double back = std::min(h, s * lj), ahead = std::min(h, (1.0 - s) * lj);
+  add(j, back + ahead);
+  for (int i = j - 1; i >= first && back < h; --i) {
+    const double c = std::min(chord(i), h - back);
+    add(i, c);
+    back += c;
+  }
+  for (int i = j + 1; i <= last && ahead < h; ++i) {
+    const double c = std::min(chord(i), h - ahead);
+    add(i, c);
+    ahead += c;
+  }
+  if (uniform || !(length > 0.0)) return {own.outerDiameter, ownCd};
+  return {diameter / length, dragArea / diameter};
 }
 
 }  // namespace tangle::hydro
