@@ -153,6 +153,33 @@ DistributedContact::DistributedContact(const model::Model& model, const model::C
   m_lineAxialStiffness.assign(model.lines().size(), kInf);
   for (const model::LineElement& el : model.elements())
     m_lineAxialStiffness[el.line] = std::min(m_lineAxialStiffness[el.line], el.type->axialStiffness);
+  const auto& elements = model.elements();
+  m_shoulders.resize(elements.size());
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    Shoulder& sh = m_shoulders[e];
+    const double r = m_radius[e];
+    sh.startRadius = sh.endRadius = sh.largest = r;
+    const double length = std::max(elements[e].restLength, 1e-12);
+    auto taper = [&](std::size_t neighbour, double& atNode, double& extent) {
+      const double other = m_radius[neighbour];
+      if (other == r) return;
+      atNode = 0.5 * (r + other);
+      extent = std::min(0.5, 0.5 * std::abs(other - r) / length);
+      sh.largest = std::max(sh.largest, atNode);
+    };
+    if (e > 0 && elements[e - 1].line == elements[e].line) taper(e - 1, sh.startRadius, sh.startLength);
+    if (e + 1 < elements.size() && elements[e + 1].line == elements[e].line)
+      taper(e + 1, sh.endRadius, sh.endLength);
+  }
+}
+
+double DistributedContact::radiusAt(int element, double t) const {
+  const Shoulder& sh = m_shoulders[static_cast<std::size_t>(element)];
+  const double r = m_radius[static_cast<std::size_t>(element)];
+  t = std::clamp(t, 0.0, 1.0);
+  if (t < sh.startLength) return sh.startRadius + (r - sh.startRadius) * t / sh.startLength;
+  if (1.0 - t < sh.endLength) return sh.endRadius + (r - sh.endRadius) * (1.0 - t) / sh.endLength;
+  return r;
 }
 
 double DistributedContact::bentness(const model::State& state, int element, double radii) const {
@@ -326,7 +353,10 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   const model::LineElement& eb = elements[master];
   const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
   const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
-  const double radii = m_radius[slave] + m_radius[master];
+  // The largest sum of the radii on the two pieces, for the bounds below; the gap uses the radii at its
+  // points.
+  const double radii = m_shoulders[static_cast<std::size_t>(slave)].largest +
+                       m_shoulders[static_cast<std::size_t>(master)].largest;
   const geometry::SegmentDistanceResult chords = geometry::segmentDistance(a0, a1, b0, b1);
   // Each piece of the C1 centreline (xi, t in [0, 1], the ranges the gap is measured on) lies within its
   // chordDeviationBound of its chord: pieces whose chords are farther apart than the radii and both bounds
@@ -339,7 +369,8 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   // t in [0, 1]: the gap is measured to the master's piece on its exact range (project).
   double tGuess = closest.t;
   const auto gap = [&](double xi) {
-    return projectPoint(state, slave, xi, master, tGuess, false).distance - radii;
+    const Projection p = projectPoint(state, slave, xi, master, tGuess, false);
+    return p.distance - (radiusAt(slave, xi) + radiusAt(master, p.t));
   };
   // Points of the slave with their gaps on the master's exact range (the root brackets below need the
   // true value there). The joint minimisation above runs over the extended search ranges: where it ends
@@ -404,7 +435,7 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
     const Projection p = projectPoint(state, slave, xi, master, tGuess, true);
     const Vec3 u = p.pointA - p.pointB;
     const double slope = p.distance > 0.0 ? u.dot(p.tangentA) / p.distance : 0.0;
-    return std::pair<double, double>{p.distance - radii, slope};
+    return std::pair<double, double>{p.distance - (radiusAt(slave, xi) + radiusAt(master, p.t)), slope};
   };
   // The root of gap between x0 (gap >= 0) and x1 (gap < 0), bracketed: Newton's step from the last point
   // where it stays inside the bracket and shrinks the step at least by half, else the bracket's middle
@@ -518,7 +549,7 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
     }
   }
   if (bestMaster < 0) return;
-  const double radii = m_radius[slave] + m_radius[bestMaster];
+  const double radii = radiusAt(slave, xi) + radiusAt(bestMaster, best.t);
   const double gap = best.distance - radii;
   if (gap >= 0.0 || best.distance <= 0.0) return;
   ContactSample smp;

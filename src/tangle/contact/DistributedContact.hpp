@@ -241,6 +241,9 @@ class DistributedContact {
   /// and addSample, called by findSamples only): computed once per element and search, into m_chordBound,
   /// which findSamples resets (a master element's bound was computed again for every Gauss point before).
   double chordBound(const model::State& state, int element) const;
+  /// Contact radius of element e at parameter t of its piece [m]: its own, except in a conical shoulder
+  /// where its line changes section (m_shoulders).
+  double radiusAt(int element, double t) const;
   void addSample(const model::State& state, int slave, double xi, double weight,
                  const std::vector<int>& masters, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
@@ -280,6 +283,20 @@ class DistributedContact {
   const model::Model* m_model;
   model::ContactSpec m_spec;
   std::vector<double> m_radius;
+  /// Where a line changes section (a lazy wave's buoyancy: radius 0.175 -> 0.45 m) the radius runs
+  /// linearly between the two over |r1 - r2| of arc centred on the node (a 45 degree taper, as a buoyancy
+  /// module's end), in the elements' parameters: without it a Gauss point whose projection crossed the
+  /// node saw the sum of the radii, and the gap, jump by the difference, a force step no time step
+  /// resolves (two lazy waves relaxing into contact stopped at steps of 1e-5 s). The normal stays the
+  /// centrelines' (the taper's slope is left out of the force's direction).
+  struct Shoulder {
+    double startRadius = 0.0;  ///< radius at node1: the mean of the two sections' [m]
+    double startLength = 0.0;  ///< extent of the taper in the element from node1, in its parameter [-]
+    double endRadius = 0.0;    ///< radius at node2 [m]
+    double endLength = 0.0;    ///< extent from node2 [-]
+    double largest = 0.0;      ///< largest radius on the element's piece [m]
+  };
+  std::vector<Shoulder> m_shoulders;
   double m_hysteresis;                       // a of HystereticRestitution, from contact.restitution [-]
   std::vector<double> m_lineAxialStiffness;  ///< smallest EA per line [N]
   std::vector<ContactSample> m_samples;

@@ -131,5 +131,50 @@ TEST(DistributedContact, NoForceWhileTheSurfacesAreApart) {
   EXPECT_EQ(forceOnA(t), 0.0);
 }
 
+TEST(DistributedContact, ForceIsContinuousWhereTheOtherLineChangesSection) {
+  // Line B (along x) changes from radius 0.05 m to 0.1 m at its middle node, x = 0; line A (radius 0.05 m)
+  // crosses it at right angles at x = x0, its axis zA = 0.135 m above B's: 0.035 m clear of the thin
+  // section, 0.015 m into the thick one. Both types have the same mass and stiffness, so one contact law
+  // acts throughout. Source: the geometry of the taper (DistributedContact.hpp, m_shoulders): B's radius
+  // runs linearly from 0.05 to 0.1 m over x in [-0.025, 0.025]. A point of B at x touches A when
+  // r_B(x) + 0.05 > sqrt(zA^2 + (x - x0)^2): on the thick part within w = sqrt(0.15^2 - zA^2) = 0.0654 m of
+  // x0, so contact begins at x0 = 0.025 - w = -0.0404 m (the taper's points reach less far) and from
+  // x0 = 0.025 + w = 0.0904 m on A meets only the thick part: the force it has in the middle of an element
+  // further on (x0 = 1.25 m; the footprint within one element, as for x0 <= 0.4346 m). In between the force
+  // grows continuously (B's radius under A only grows as A moves on); without the taper it jumped by the
+  // thick part's share where a projection crossed the node. Steps: at most 1/10 of the full force per 0.5 mm
+  // of travel (the rise is spread over 131 mm, 262 steps).
+  const double zA = 0.135;
+  const double reach = std::sqrt(0.15 * 0.15 - zA * zA);
+  auto spec = [&](double x0) {
+    model::ModelSpec s = twoLinesSpec(Vec3(0, 1, 0), zA);
+    s.lineTypes["thick"] = test::cableType("thick", 0.2, 20.0, 1e8);
+    s.lines[0].endA.position.x() = x0;
+    s.lines[0].endB.position.x() = x0;
+    s.lines[1].sections = {{"c", 3.0, 6}, {"thick", 3.0, 6}};
+    return s;
+  };
+  TwoLines thick(spec(1.25));
+  const double full = forceOnA(thick);
+  ASSERT_GT(full, 0.0);
+  double last = 0.0;
+  for (int i = 0; i <= 320; ++i) {
+    const double x0 = -0.06 + 0.16 * i / 320.0;
+    TwoLines t(spec(x0));
+    const double force = forceOnA(t);
+    if (x0 < 0.025 - reach - 1e-4) {
+      EXPECT_EQ(force, 0.0) << "at x0 = " << x0;
+    } else if (x0 > 0.025 - reach + 1e-4) {
+      EXPECT_GT(force, 0.0) << "at x0 = " << x0;
+    }
+    if (x0 > 0.025 + reach + 1e-4) {
+      EXPECT_NEAR(force, full, 1e-6 * full) << "at x0 = " << x0;
+    }
+    EXPECT_GE(force, last - 1e-9 * full) << "at x0 = " << x0;
+    EXPECT_LT(force - last, 0.1 * full) << "at x0 = " << x0;
+    last = force;
+  }
+}
+
 }  // namespace
 }  // namespace tangle::contact
