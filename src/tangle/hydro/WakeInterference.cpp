@@ -93,6 +93,45 @@ Mat3 WakeInterference::liftGradient(const model::State& state, int element, doub
   return lift;
 }
 
+Mat3 WakeInterference::velocityChangeGradient(const model::State& state, int element, double rho) {
+  Mat3 gradient = Mat3::Zero();
+  const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
+  const Vec3& p1 = state.position[el.node1];
+  const Vec3& p2 = state.position[el.node2];
+  const Vec3 p = 0.5 * (p1 + p2);
+  const Vec3 td = (p2 - p1).normalized();
+  const double h = 1e-4 * std::max(el.type->outerDiameter, 1e-3);  // as liftGradient
+  // The acting wake: of the pairs with this element downstream, the largest deficit at the midpoint.
+  Pair* acting = nullptr;
+  int k = -1;
+  ElementWake centre;
+  for (Pair& pair : m_pairs) {
+    const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
+    if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
+    const ElementWake here = wakeAtPoint(state, pair, element - down.firstElement, p, td, rho);
+    if (here.deficit > centre.deficit) {
+      centre = here;
+      acting = &pair;
+      k = element - down.firstElement;
+    }
+  }
+  if (acting == nullptr) return gradient;
+  for (int c = 0; c < 3; ++c) {
+    const Vec3 step = h * Vec3::Unit(c);
+    const ElementWake plus = wakeAtPoint(state, *acting, k, p + step, td, rho);
+    const ElementWake minus = wakeAtPoint(state, *acting, k, p - step, td, rho);
+    const bool inPlus = plus.deficit > 0.0 && plus.upstreamLine == centre.upstreamLine;
+    const bool inMinus = minus.deficit > 0.0 && minus.upstreamLine == centre.upstreamLine;
+    if (inPlus && inMinus)
+      gradient.col(c) = (plus.velocityChange - minus.velocityChange) / (2.0 * h);
+    else if (inPlus)
+      gradient.col(c) = (plus.velocityChange - centre.velocityChange) / h;
+    else if (inMinus)
+      gradient.col(c) = (centre.velocityChange - minus.velocityChange) / h;
+  }
+  return gradient;
+}
+
 ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p,
                                           const Vec3& td, double rho) const {
   ElementWake o;

@@ -29,8 +29,9 @@
 /// The wake comes from the steady current only and follows the upstream line as it is at the assembled
 /// state (in dynamics its instantaneous position; no convection delay). The tangent includes the
 /// derivative of the lift with respect to the downstream element's position (liftGradient(), used by
-/// HydroLoads); the drag's dependence on it through the deficit and every dependence on the upstream
-/// line's position (a coupling block between the lines) are left out.
+/// HydroLoads); the drag's dependence on it through the deficit only when asked for
+/// (velocityChangeGradient, AssemblyRequest::wakeDragStiffness); every dependence on the upstream line's
+/// position (a coupling block between the lines) is left out.
 
 #include <utility>
 #include <vector>
@@ -69,6 +70,12 @@ class WakeInterference {
   /// zero where no Blevins wake acts. For the tangent: the Blevins lift stiffness is of the order of a
   /// tensioned riser's own lateral stiffness (a fixed-point iteration without it converges slowly).
   Mat3 liftGradient(const model::State& state, int element, double rho);
+  /// Derivative of the change of the current at downstream element `element`'s midpoint
+  /// (ElementWake::velocityChange, [m/s]) with respect to that midpoint [1/s], of the acting wake (the
+  /// largest deficit), by the same differences as liftGradient; zero where no wake acts. For the tangent of
+  /// the statics' arc-length continuation (AssemblyRequest::wakeDragStiffness): the drag a line loses as it
+  /// closes in behind another is the negative stiffness of the wake-induced collapse (docs/theory.md 12.2).
+  Mat3 velocityChangeGradient(const model::State& state, int element, double rho);
 
  private:
   struct Pair {

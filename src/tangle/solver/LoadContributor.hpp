@@ -32,6 +32,11 @@ struct AssemblyRequest {
   /// Statics: include the drag's follower stiffness (its dependence on the element directions, Morison.hpp)
   /// in H. It makes H non-symmetric: the caller must solve with a general (LU) factorisation.
   bool dragStiffness = false;
+  /// Statics: include the drag's dependence on a downstream element's position through its wake's deficit
+  /// (HydroLoads, WakeInterference::velocityChangeGradient) in H. Non-symmetric, as dragStiffness; asked
+  /// for by the arc-length continuation past the wake-induced collapse (StaticSolver), where the path's
+  /// corrections converge only with it.
+  bool wakeDragStiffness = false;
   /// Statics: multiplies the current's velocity (and its wake's) at the lines and their attachments [-]; the
   /// current continuation (StaticSolver) ramps the drag, which goes with its square, from still water.
   /// Vessels' current loads are not scaled. Ignored in dynamics.

@@ -12,6 +12,8 @@
 #include "tangle/core/Error.hpp"
 #include "tangle/core/Interrupt.hpp"
 #include "tangle/geometry/Rotation.hpp"
+#include "tangle/solver/ArcLengthContinuation.hpp"
+#include "tangle/solver/IncrementLimits.hpp"
 #include "tangle/solver/LinearSolver.hpp"
 #include "tangle/solver/ResidualNorm.hpp"
 #include "tangle/solver/StartShapeRepair.hpp"
@@ -26,14 +28,6 @@ constexpr double kLineMomentLever = 1.0;
 constexpr double kMaxShift = 1e4;
 /// Restarts from a perturbed shape when bar elements end in compression.
 constexpr int kMaxPerturbedRestarts = 2;
-/// Largest rise of a bar's strain in one Newton iteration [-] (a trust region in cable strain). Near a
-/// touchdown point the linearised step of a slack catenary stretches chain links by hundreds of percent
-/// and pushes nodes metres into the seabed (seen: 6 m bars stretched to 22 m, nodes 17 m below the seabed
-/// in the slack 800 m span mooring in cross current); from there Newton and the pseudo-transient
-/// continuation crawl. Ten times a working strain of chain or wire (~1e-3) costs a taut line nothing and
-/// a slack bar may first straighten freely (its strain counts from max(strain, 0)).
-constexpr double kMaxStrainStep = 0.01;
-
 bool debugTangent() {
   static const bool on = std::getenv("TANGLE_DEBUG_TANGENT") != nullptr;
   return on;
@@ -187,6 +181,9 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     if (result.currentSteps > 0)
       result.message += fmt::format(", from the equilibrium in still water with the current ramped in {} steps",
                                     result.currentSteps);
+    if (result.arcLengthSteps > 0)
+      result.message +=
+          fmt::format(" ({} of them in arc length past a fold of the path)", result.arcLengthSteps);
   } else {
     if (result.message.empty()) result.message = diagnose(trial, result, "");
     state = start;
@@ -423,6 +420,62 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
       m_assembler->beginStatics(still);  // back to the anchors of the last converged increment
     }
   }
+  if (reached < 1.0 && budget > 0 && reached > 0.0) {
+    // Stalled: a fold of the equilibrium path (a line in another's wake whose drag falls as it closes in
+    // collapses onto it, theory 12.2), or Newton failing on a tangent without that negative stiffness. Follow
+    // the path in arc length, round a fold if there is one; at full current, Newton.
+    if (m_progress) m_progress->stage("statics: the current continued in arc length past a fold of the path");
+    ArcLengthContinuation::Settings settings;
+    settings.tolerance = tolerance;
+    settings.target = 1.0;
+    settings.firstIncrement = std::max(increment * 64.0, 1e-3);
+    settings.debug = debugOutput();
+    // With the wake's drag in the tangent: on the path, where the lines close in, the corrections converge
+    // only with the negative stiffness it holds.
+    const bool wakes = !model.spec().wakes.empty();
+    settings.nonSymmetricTangent = wakes;
+    auto finish = [&](model::State& trial) {
+      m_currentFactor = 1.0;
+      m_wakeDragStiffness = wakes;
+      NewtonOutcome last = newton(trial, noOffset, time, std::min(perSolve, std::max(budget, 0)), tolerance,
+                                  NewtonMode::Plain);
+      m_wakeDragStiffness = false;
+      budget -= last.iterations;
+      result.iterations += last.iterations;
+      result.residual = last.residual;
+      result.worstNode = last.worstNode;
+      if (last.converged && !inadmissible(trial).empty()) last.converged = false;
+      if (last.converged) result.roundoffLimited = last.roundoff;
+      if (debugOutput())
+        std::cerr << fmt::format("  arc length: Newton at the full current {} in {} iterations\n",
+                                 last.converged ? "converged" : last.failure, last.iterations);
+      return last.converged;
+    };
+    ArcLengthContinuation arc(
+        *m_assembler, settings,
+        [wakes](double lambda, AssemblyRequest& request) {
+          request.currentFactor = std::copysign(std::sqrt(std::abs(lambda)), lambda);
+          request.wakeDragStiffness = wakes;
+        },
+        finish);
+    m_assembler->beginStatics(still);
+    // Its own share of what is left, so that the later stages (the homotopy, the caller's coarser mesh)
+    // keep theirs when the path cannot be followed.
+    int arcBudget = std::min(budget, 10 * perSolve);
+    const int arcStart = arcBudget;
+    const ArcLengthContinuation::Outcome arcOutcome = arc.run(still, reached, arcBudget);
+    budget -= arcStart - arcBudget;
+    result.iterations += arcOutcome.iterations;
+    steps += arcOutcome.steps;
+    if (arcOutcome.reached) {
+      reached = 1.0;
+      result.arcLengthSteps = arcOutcome.steps;
+    } else {
+      result.residual = arcOutcome.residual;
+      result.worstNode = arcOutcome.worstNode;
+      if (debugOutput()) std::cerr << "  arc length failed: " << arcOutcome.failure << "\n";
+    }
+  }
   m_progressFraction = 1.0;
   if (reached < 1.0) return false;
   state = still;
@@ -465,17 +518,10 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   const int neq = dofs.equationCount();
   const auto& eqDofs = dofs.equationDofs();
   double lref = 1.0;
-  double minElement = 1e30;
   for (const auto& line : model.lines()) lref = std::max(lref, line.length);
-  for (const auto& el : model.elements()) minElement = std::min(minElement, el.restLength);
-  if (model.elements().empty()) minElement = lref;
-  // Largest nodal translation [m] and rotation [rad] per iteration (a trust region in displacement):
-  // keeps Newton from jumping across the solution on slack lines, where the tangent is nearly singular.
-  double maxElement = 0.0;
-  for (const auto& el : model.elements()) maxElement = std::max(maxElement, el.restLength);
-  const double maxTranslation =
-      std::max(std::min(0.05 * lref, std::max(10.0, 5.0 * maxElement)), 2.0 * minElement);
-  const double maxRotation = 0.5;
+  // Largest nodal translation [m] and rotation [rad] per iteration (a trust region in displacement).
+  const double maxTranslation = translationCap(model);
+  const double maxRotation = kRotationCap;
   const double floor = m_assembler->roundoffFloor(state);
   if (debugOutput())
     std::cerr << fmt::format("   round-off floor {:.3g} N, tolerance {:.3g} N\n", floor, tolerance);
@@ -485,12 +531,13 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   request.dynamic = false;
   // In a current, when asked for: the drag's follower stiffness (theory 6.4) in the tangent, solved by LU.
   request.dragStiffness = m_dragStiffness && hasCurrent(model);
+  request.wakeDragStiffness = m_wakeDragStiffness;
   request.currentFactor = m_currentFactor;
   SystemMatrix matrix(dofs);
   SparseMatrix kAccepted;
   SparseMatrix k;
   LinearSolver solver;
-  solver.setNonSymmetric(request.dragStiffness);
+  solver.setNonSymmetric(request.dragStiffness || request.wakeDragStiffness);
   VecX force;
   VecX r(neq), rTrial(neq);
   m_assembler->beginStep();
@@ -615,19 +662,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     // now, 0) that the linearised step proposes, in units of the allowed one.
     bool capped = false;
     {
-      double worst = 0.0;
-      const auto& elements = model.elements();
-      for (std::size_t e = 0; e < elements.size(); ++e) {
-        const model::LineElement& el = elements[e];
-        if (!el.bar) continue;
-        const int d1 = dofs.firstDof(el.node1), d2 = dofs.firstDof(el.node2);
-        const Vec3 a = state.position[el.node1], b = state.position[el.node2];
-        const Vec3 da(full[d1], full[d1 + 1], full[d1 + 2]), db(full[d2], full[d2 + 1], full[d2 + 2]);
-        const double l0 = m_assembler->restLengthOf(e);
-        const double now = std::max((b - a).norm() / l0 - 1.0, 0.0);
-        const double next = (b + db - a - da).norm() / l0 - 1.0;
-        worst = std::max(worst, (next - now) / kMaxStrainStep);
-      }
+      const double worst = strainStepRatio(model, *m_assembler, state, full);
       if (worst > 1.0) {
         full /= worst;
         scale /= worst;

@@ -40,6 +40,7 @@ struct StaticResult {
   int worstNode = -1;            ///< global node with the largest out-of-balance force
   int continuationSteps = 0;     ///< load steps of the continuation from the start shape (0: Newton at full load)
   int currentSteps = 0;  ///< steps of the current continuation from still water (0: not used; StaticSolver)
+  int arcLengthSteps = 0;  ///< of those, steps in arc length past a fold of the path (ArcLengthContinuation)
   std::string message;           ///< human-readable summary (on failure: where, how large, what to change)
   std::vector<std::string> warnings;  ///< e.g. bar elements left in compression
 };
@@ -116,6 +117,7 @@ class StaticSolver {
   model::StaticSpec m_settings;
   double m_forceScale = 1.0;
   bool m_dragStiffness = false;
+  bool m_wakeDragStiffness = false;  // AssemblyRequest::wakeDragStiffness of newton() (the arc length's end)
   core::ConsoleProgress* m_progress = nullptr;  // setProgress
   std::string m_progressStage;
   int m_progressIterations = 0;     // Newton iterations of this solve so far (for the progress lines)

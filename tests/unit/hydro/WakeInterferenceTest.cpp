@@ -17,9 +17,11 @@
 
 #include "support/ModelFactory.hpp"
 #include "tangle/hydro/CurrentProfile.hpp"
+#include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/hydro/WakeInterference.hpp"
 #include "tangle/hydro/WakeModel.hpp"
 #include "tangle/model/Model.hpp"
+#include "tangle/solver/SystemMatrix.hpp"
 
 namespace tangle::hydro {
 namespace {
@@ -115,6 +117,68 @@ TEST(WakeInterference, PassesAChangeOfTheUpstreamSectionContinuously) {
     }
     last = deficit;
   }
+}
+
+/// The tandem with a downstream line of two 0.5 m elements whose middle node is free, in a uniform current.
+model::ModelSpec tandemWithFreeNode(const Vec3& middle) {
+  model::ModelSpec spec = tandem();
+  spec.environment.current = {{0.0, 1.0, 0.0}, {-200.0, 1.0, 0.0}};
+  spec.lines[1] = test::simpleLine("down", "thin", 1.0, 2, model::EndKind::Fixed, middle - Vec3(0, 0, 0.5),
+                                   model::EndKind::Fixed, middle + Vec3(0, 0, 0.5));
+  return spec;
+}
+
+/// The largest difference between the hydrodynamic tangent's block of the free node and central differences
+/// of its hydrodynamic force, relative to the block's largest entry, with the wake's drag in the tangent or
+/// not.
+double wakeTangentError(bool wakeDragStiffness) {
+  const Vec3 middle(3.0, 0.12, -115.0);  // behind the thin section, off the wake's centre line
+  const model::Model model(tandemWithFreeNode(middle));
+  HydroLoads hydro(model);
+  solver::AssemblyRequest request;
+  request.dynamic = false;
+  request.dragStiffness = true;  // the drag turning with the elements (here cancelling between the two)
+  request.wakeDragStiffness = wakeDragStiffness;
+  request.currentFactor = 0.8;  // as in the statics' continuation
+  const model::DofMap& dofs = model.dofs();
+  model::State state = model.initialState();
+  const int node = model.lines()[1].firstNode + 1;
+  state.position[node] = middle;  // (the start shape of a line exactly as long as its span)
+  solver::SystemMatrix matrix(dofs);
+  VecX force = VecX::Zero(dofs.fullDofCount());
+  hydro.addForces(state, request, force, &matrix);
+  SparseMatrix k;
+  matrix.build(k);
+  const auto& eqDofs = dofs.equationDofs();
+  std::vector<int> eq(3, -1);
+  for (std::size_t i = 0; i < eqDofs.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (eqDofs[i] == dofs.firstDof(node) + c) eq[static_cast<std::size_t>(c)] = static_cast<int>(i);
+  const Mat3 block = Mat3(k.toDense().block(eq[0], eq[0], 3, 3));
+  // Central differences of the out-of-balance force; h = 1e-5 m against a wake 0.2 m wide (truncation
+  // ~1e-9 relative) and forces of ~100 N (round-off ~1e-16 x 100 / 1e-5 = 1e-9 N/m).
+  const double h = 1e-5;
+  Mat3 difference;
+  for (int c = 0; c < 3; ++c) {
+    VecX plus = VecX::Zero(dofs.fullDofCount()), minus = VecX::Zero(dofs.fullDofCount());
+    model::State s = state;
+    s.position[node][c] += h;
+    hydro.addForces(s, request, plus, nullptr);
+    s.position[node][c] -= 2.0 * h;
+    hydro.addForces(s, request, minus, nullptr);
+    difference.col(c) = (plus - minus).segment<3>(dofs.firstDof(node)) / (2.0 * h);
+  }
+  return (block - difference).cwiseAbs().maxCoeff() / difference.cwiseAbs().maxCoeff();
+}
+
+TEST(WakeInterference, DragThroughTheDeficitMakesTheTangentConsistent) {
+  // Source: the definition of the tangent, d(out-of-balance)/d(position), against central differences
+  // (tolerance 1e-6: both differences' errors are ~1e-9, see wakeTangentError). With
+  // AssemblyRequest::wakeDragStiffness the drag's change through the deficit (WakeInterference::
+  // velocityChangeGradient, HydroLoads) is in the tangent; without it the block misses it - the negative
+  // stiffness of the wake-induced collapse (docs/theory.md 12.2) - by more than a tenth.
+  EXPECT_LT(wakeTangentError(true), 1e-6);
+  EXPECT_GT(wakeTangentError(false), 0.1);
 }
 
 }  // namespace
