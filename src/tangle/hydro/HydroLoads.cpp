@@ -255,13 +255,22 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
         // d(force_i)/du = C_i (the drag's damping, as d/du = -d/dv), and u on the midpoint (x1 + x2) / 2 by
         // the wake's gradient times the continuation's factor: d(force_i)/d(x_j) = C_i W / 2. Subtracted.
         // Added (zero where no wake acts) for every downstream element, so the entries keep their order.
-        const Mat3 w = m_wake->velocityChangeGradient(state, static_cast<int>(e), rho);
+        const WakeGradient w = m_wake->velocityChangeGradient(state, static_cast<int>(e), rho);
         Mat3 k1 = Mat3::Zero(), k2 = Mat3::Zero();
-        if (!w.isZero(0.0)) {
+        if (!w.midpoint.isZero(0.0)) {
           const MorisonElementLoad drag =
               morisonElementLoad(x1, x2, v1, v2, fluid, coefficients, wet, true, false);
-          k1 = -0.5 * request.currentFactor * drag.damping1 * w;
-          k2 = -0.5 * request.currentFactor * drag.damping2 * w;
+          k1 = -0.5 * request.currentFactor * drag.damping1 * w.midpoint;
+          k2 = -0.5 * request.currentFactor * drag.damping2 * w.midpoint;
+          // The coupling to the upstream element's nodes (WakeGradient): C_i W_up, W_up = -(1 - s) W, -s W.
+          if (w.upstreamNode1 >= 0) {
+            const int u1 = dofs.firstDof(w.upstreamNode1), u2 = dofs.firstDof(w.upstreamNode2);
+            const double f = -request.currentFactor;
+            matrix->add3x3(d1, u1, f * drag.damping1 * w.upstream1, request.kf);
+            matrix->add3x3(d1, u2, f * drag.damping1 * w.upstream2, request.kf);
+            matrix->add3x3(d2, u1, f * drag.damping2 * w.upstream1, request.kf);
+            matrix->add3x3(d2, u2, f * drag.damping2 * w.upstream2, request.kf);
+          }
         }
         matrix->add3x3(d1, d1, k1, request.kf);
         matrix->add3x3(d1, d2, k1, request.kf);

@@ -93,8 +93,9 @@ Mat3 WakeInterference::liftGradient(const model::State& state, int element, doub
   return lift;
 }
 
-Mat3 WakeInterference::velocityChangeGradient(const model::State& state, int element, double rho) {
-  Mat3 gradient = Mat3::Zero();
+WakeGradient WakeInterference::velocityChangeGradient(const model::State& state, int element, double rho) {
+  WakeGradient result;
+  Mat3& gradient = result.midpoint;
   const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
   const Vec3& p1 = state.position[el.node1];
   const Vec3& p2 = state.position[el.node2];
@@ -115,7 +116,7 @@ Mat3 WakeInterference::velocityChangeGradient(const model::State& state, int ele
       k = element - down.firstElement;
     }
   }
-  if (acting == nullptr) return gradient;
+  if (acting == nullptr) return result;
   for (int c = 0; c < 3; ++c) {
     const Vec3 step = h * Vec3::Unit(c);
     const ElementWake plus = wakeAtPoint(state, *acting, k, p + step, td, rho);
@@ -129,7 +130,18 @@ Mat3 WakeInterference::velocityChangeGradient(const model::State& state, int ele
     else if (inMinus)
       gradient.col(c) = (centre.velocityChange - minus.velocityChange) / h;
   }
-  return gradient;
+  // The upstream element's nodes: the wake moves with it (the midpoint's position relative to it, at the
+  // same current, is what counts), so a translation of both by x changes the velocity as the midpoint's by
+  // -x would (the current's change with depth at the midpoint is not the upstream's: left out).
+  if (centre.upstreamElement >= 0) {
+    const model::LineElement& u = m_model->elements()[static_cast<std::size_t>(centre.upstreamElement)];
+    const double s = centre.upstreamParameter;
+    result.upstreamNode1 = u.node1;
+    result.upstreamNode2 = u.node2;
+    result.upstream1 = -(1.0 - s) * gradient;
+    result.upstream2 = -s * gradient;
+  }
+  return result;
 }
 
 ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p,
@@ -199,6 +211,8 @@ ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair,
   if (deficit <= 0.0) return o;
   o.deficit = deficit;
   o.upstreamLine = pair.upstream;
+  o.upstreamElement = j;
+  o.upstreamParameter = s;
   o.velocityChange = -deficit * speed * ex;
   if (w.liftCoefficient != 0.0 && y > 0.0) {
     const Vec3 lift = 0.5 * rho * onset * w.liftCoefficient * downDiameter * speed * speed * (across / y);

@@ -30,8 +30,8 @@
 /// state (in dynamics its instantaneous position; no convection delay). The tangent includes the
 /// derivative of the lift with respect to the downstream element's position (liftGradient(), used by
 /// HydroLoads); the drag's dependence on it through the deficit only when asked for
-/// (velocityChangeGradient, AssemblyRequest::wakeDragStiffness); every dependence on the upstream line's
-/// position (a coupling block between the lines) is left out.
+/// (velocityChangeGradient, AssemblyRequest::wakeDragStiffness), with its dependence on the upstream
+/// element's nodes (a coupling block between the lines; the lift's is left out).
 
 #include <utility>
 #include <vector>
@@ -50,6 +50,18 @@ struct ElementWake {
   Vec3 liftPerLength = Vec3::Zero();   ///< Blevins lift per unit length, normal to the element [N/m]
   double deficit = 0.0;                ///< u / U [-] of the acting wake
   int upstreamLine = -1;               ///< index of the line whose wake acts (-1: none)
+  int upstreamElement = -1;            ///< the upstream element the midpoint projects onto
+  double upstreamParameter = 0.0;      ///< where along it [-] (0 at its node1)
+};
+
+/// Derivatives of ElementWake::velocityChange at a downstream element's midpoint [1/s].
+struct WakeGradient {
+  Mat3 midpoint = Mat3::Zero();  ///< with respect to the midpoint
+  /// With respect to the upstream element's two nodes (-1: none). The wake depends on the midpoint's
+  /// position relative to the upstream element, so translating both moves it by -midpoint; split as the
+  /// projection's weights (1 - s, s), which leaves out the upstream element's turning.
+  int upstreamNode1 = -1, upstreamNode2 = -1;
+  Mat3 upstream1 = Mat3::Zero(), upstream2 = Mat3::Zero();
 };
 
 class WakeInterference {
@@ -75,7 +87,7 @@ class WakeInterference {
   /// largest deficit), by the same differences as liftGradient; zero where no wake acts. For the tangent of
   /// the statics' arc-length continuation (AssemblyRequest::wakeDragStiffness): the drag a line loses as it
   /// closes in behind another is the negative stiffness of the wake-induced collapse (docs/theory.md 12.2).
-  Mat3 velocityChangeGradient(const model::State& state, int element, double rho);
+  WakeGradient velocityChangeGradient(const model::State& state, int element, double rho);
 
  private:
   struct Pair {

@@ -181,5 +181,62 @@ TEST(WakeInterference, DragThroughTheDeficitMakesTheTangentConsistent) {
   EXPECT_GT(wakeTangentError(false), 0.1);
 }
 
+TEST(WakeInterference, TheWakeMovesWithTheUpstreamLine) {
+  // Source: the definition of the tangent against central differences, for the coupling blocks between the
+  // downstream line's free node and the upstream line's nodes (WakeGradient, docs/theory.md 12.2). The wake
+  // depends on the downstream point's position relative to the upstream line, so translating the whole
+  // upstream line by x changes the downstream force as translating the point by -x: the sum of the coupling
+  // blocks over the upstream nodes against the central difference of that translation, 1e-6 (as the free
+  // node's own block: both differences' errors ~1e-9, uniform current). Each node's block alone splits it by
+  // the projection's weights and leaves out the upstream element's turning (not checked here).
+  const Vec3 middle(3.0, 0.12, -115.0);
+  const model::Model model(tandemWithFreeNode(middle));
+  HydroLoads hydro(model);
+  solver::AssemblyRequest request;
+  request.dynamic = false;
+  request.dragStiffness = true;
+  request.wakeDragStiffness = true;
+  request.currentFactor = 0.8;
+  const model::DofMap& dofs = model.dofs();
+  model::State state = model.initialState();
+  const int node = model.lines()[1].firstNode + 1;
+  state.position[node] = middle;
+  solver::SystemMatrix matrix(dofs);
+  VecX force = VecX::Zero(dofs.fullDofCount());
+  hydro.addForces(state, request, force, &matrix);
+  SparseMatrix k;
+  matrix.build(k);
+  const Eigen::MatrixXd dense = k.toDense();
+  const model::Line& up = model.lines()[0];
+  Mat3 sum = Mat3::Zero();
+  for (int n = up.firstNode; n <= up.lastNode(); ++n)
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        const int row = dofs.equation(dofs.firstDof(node) + r), col = dofs.equation(dofs.firstDof(n) + c);
+        if (row >= 0 && col >= 0) sum(r, c) += dense(row, col);
+      }
+  const double h = 1e-5;
+  Mat3 difference;
+  for (int c = 0; c < 3; ++c) {
+    VecX plus = VecX::Zero(dofs.fullDofCount()), minus = VecX::Zero(dofs.fullDofCount());
+    model::State s = state;
+    for (int n = up.firstNode; n <= up.lastNode(); ++n) s.position[n][c] += h;
+    hydro.addForces(s, request, plus, nullptr);
+    for (int n = up.firstNode; n <= up.lastNode(); ++n) s.position[n][c] -= 2.0 * h;
+    hydro.addForces(s, request, minus, nullptr);
+    difference.col(c) = (plus - minus).segment<3>(dofs.firstDof(node)) / (2.0 * h);
+  }
+  ASSERT_GT(difference.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_LT((sum - difference).cwiseAbs().maxCoeff() / difference.cwiseAbs().maxCoeff(), 1e-6);
+  // Without the coupling the tangent says the wake stays where it is when the upstream line moves: the
+  // translation's effect is of the order of the node's own stiffness (here more than a tenth of it).
+  double own = 0.0;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      own = std::max(own, std::abs(dense(dofs.equation(dofs.firstDof(node) + r),
+                                         dofs.equation(dofs.firstDof(node) + c))));
+  EXPECT_GT(difference.cwiseAbs().maxCoeff(), 0.1 * own);
+}
+
 }  // namespace
 }  // namespace tangle::hydro
