@@ -61,6 +61,7 @@
 /// at p = D^2 / (8 (rA + rB)) ((rA + rB) / 8 for equal radii): a crossing is as stiff as a point contact of
 /// stiffness k within the linear range of the law; a parallel contact of length L is k L / D stiff.
 
+#include <array>
 #include <map>
 #include <string>
 #include <utility>
@@ -108,6 +109,9 @@ struct ContactSample {
   Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d (slip + tau rate), symmetric part [N/m^2]
   double arcA = 0.0, arcB = 0.0;        ///< arc lengths of the two points [m]
   double radii = 0.0;                   ///< sum of the contact radii [m]
+  /// The master's radius slope dr_B/dt and curvature d2r_B/dt2 at t [m] (non-zero only in a shoulder where
+  /// line B changes section): the gap is d - r_A(xi) - r_B(t) with t the projection, free.
+  double radiusSlope = 0.0, radiusCurvature = 0.0;
 };
 
 /// The distributed contact (see the file comment). Owned by LineContact, which keeps the candidates, the
@@ -232,6 +236,9 @@ class DistributedContact {
   struct Interval {
     double lo = 0.0, hi = 0.0;
     std::vector<double> cuts;
+    /// Cuts at ridges between two dips, each with its weight in [0, 1] (contactIntervals): the interval is
+    /// integrated with and without each, the sums blended by the weights.
+    std::vector<std::pair<double, double>> ridges;
   };
   /// The intervals of slave element e whose centreline lies within the radii of master element f's, one
   /// per dip of the gap, in increasing xi; false if none.
@@ -241,9 +248,11 @@ class DistributedContact {
   /// and addSample, called by findSamples only): computed once per element and search, into m_chordBound,
   /// which findSamples resets (a master element's bound was computed again for every Gauss point before).
   double chordBound(const model::State& state, int element) const;
-  /// Contact radius of element e at parameter t of its piece [m]: its own, except in a conical shoulder
-  /// where its line changes section (m_shoulders).
+  /// Contact radius of element e at parameter t of its piece [m]: its own, except in a shoulder where its
+  /// line changes section (m_shoulders).
   double radiusAt(int element, double t) const;
+  /// The radius and its first two derivatives in the piece's parameter, (r, dr/dt, d2r/dt2) [m].
+  std::array<double, 3> radiusProfile(int element, double t) const;
   void addSample(const model::State& state, int slave, double xi, double weight,
                  const std::vector<int>& masters, const std::vector<Vec3>& reference);
   double nodeMass(int node) const;
@@ -284,11 +293,12 @@ class DistributedContact {
   model::ContactSpec m_spec;
   std::vector<double> m_radius;
   /// Where a line changes section (a lazy wave's buoyancy: radius 0.175 -> 0.45 m) the radius runs
-  /// linearly between the two over |r1 - r2| of arc centred on the node (a 45 degree taper, as a buoyancy
-  /// module's end), in the elements' parameters: without it a Gauss point whose projection crossed the
-  /// node saw the sum of the radii, and the gap, jump by the difference, a force step no time step
-  /// resolves (two lazy waves relaxing into contact stopped at steps of 1e-5 s). The normal stays the
-  /// centrelines' (the taper's slope is left out of the force's direction).
+  /// between the two over |r1 - r2| of arc centred on the node along a smoothstep (C1: a shoulder of
+  /// 56 degrees at the node, as a buoyancy module's end), in the elements' parameters: without it a Gauss
+  /// point whose projection crossed the node saw the sum of the radii, and the gap, jump by the
+  /// difference, a force step no time step resolves (two lazy waves relaxing into contact stopped at steps
+  /// of 1e-5 s). The master's slope dr/dt enters the gap's gradient, so the force and its tangent are
+  /// those of the law's potential (addForces).
   struct Shoulder {
     double startRadius = 0.0;  ///< radius at node1: the mean of the two sections' [m]
     double startLength = 0.0;  ///< extent of the taper in the element from node1, in its parameter [-]

@@ -66,6 +66,9 @@ struct TangentCase {
   double depth;              // largest penetration [m]
   bool beams = false;        // steel beams (smooth centreline, SmoothCentreline.hpp) instead of cables
   bool distributed = false;  // contact.formulation: distributed (DistributedContact.hpp)
+  /// Line B thick (radius 0.1 m) from its middle node on, A raised by 0.04 m and crossing there: the contact
+  /// lies on B's shoulder, whose radius slope enters the gap's gradient (DistributedContact.hpp).
+  bool shoulder = false;
 };
 
 class ContactTangent : public ::testing::TestWithParam<TangentCase> {};
@@ -79,10 +82,17 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
       tc.beams ? test::solidRodType("c", 0.1, 2.1e11, 7850.0) : test::cableType("c", 0.1, 20.0, 1e8);
   const double ang = degToRad(tc.angleDeg);
   const Vec3 dir(std::cos(ang), std::sin(ang), 0.0);
+  const double lift = tc.shoulder ? 0.04 : 0.0;
+  const Vec3 offset(tc.shoulder ? 0.003 : 0.13, 0.0, 0.0);
   spec.lines = {test::simpleLine("a", "c", 6.0, 12, model::EndKind::Pinned, Vec3(0, 0, 0.1) - 3.0 * dir,
                                  model::EndKind::Pinned, Vec3(0, 0, 0.1) + 3.0 * dir),
                 test::simpleLine("b", "c", 6.0, 12, model::EndKind::Pinned, Vec3(-3, 0, 0),
                                  model::EndKind::Pinned, Vec3(3, 0, 0))};
+  if (tc.shoulder) {
+    spec.lineTypes["thick"] = tc.beams ? test::solidRodType("thick", 0.2, 2.1e11, 7850.0)
+                                       : test::cableType("thick", 0.2, 20.0, 1e8);
+    spec.lines[1].sections = {{"c", 3.0, 6}, {"thick", 3.0, 6}};
+  }
   spec.contact.enabled = true;
   spec.contact.excludeConnections = false;  // the pinned ends are close to each other on purpose
   spec.contact.formulation =
@@ -95,8 +105,7 @@ TEST_P(ContactTangent, StiffnessMatrixMatchesFiniteDifferencesOfTheForce) {
   for (int i = 0; i < a.nodeCount; ++i) {
     const double s = -3.0 + 6.0 * i / (a.nodeCount - 1);
     state.position[a.firstNode + i] =
-        s * dir + Vec3(0.13, 0, 0) +
-        Vec3(0, 0.02 * std::sin(s), 0.1 - tc.depth * (1 - s * s / 9.0) + 1e-4 * i);
+        s * dir + offset + Vec3(0, 0.02 * std::sin(s), 0.1 + lift - tc.depth * (1 - s * s / 9.0) + 1e-4 * i);
   }
   const model::DofMap& dofs = m.dofs();
   auto forceAt = [&](const model::State& st, solver::SystemMatrix* matrix) {
@@ -175,6 +184,23 @@ INSTANTIATE_TEST_SUITE_P(
     [](const ::testing::TestParamInfo<TangentCase>& p) {
       return (p.param.beams ? "beams_deg" : "deg") + std::to_string(static_cast<int>(p.param.angleDeg));
     });
+
+// Known failure, run by ctest as expected to fail (unit.contact_tangent_shoulder_expected_fail,
+// tests/CMakeLists.txt): the tangent where the contact lies on a shoulder of line B (a section change,
+// DistributedContact.hpp). Measured 2026-12-03, largest difference against the central differences over
+// the largest entry: 1.5 % (cables, 90 deg), 6.7 % (25 deg), 1.5 % (beams, 90 deg), against 1e-4. With each
+// piece's quadrature on 16 sub-pieces: the 90 deg cases pass and 25 deg is 0.12 %: the four Gauss points per
+// piece do not integrate the shoulder (the pieces are not cut where the master's projection passes its
+// shoulder's ends), and r_B' Hess t is left out of the tangent. Without the radius's slope in the gap's
+// gradient (before 2026-12-03) 25 deg was 6.5 % with 16 sub-pieces.
+INSTANTIATE_TEST_SUITE_P(ShoulderKnownFailures, ContactTangent,
+                         ::testing::Values(TangentCase{90.0, 0.005, false, true, true},
+                                           TangentCase{25.0, 0.005, false, true, true},
+                                           TangentCase{90.0, 0.005, true, true, true}),
+                         [](const ::testing::TestParamInfo<TangentCase>& p) {
+                           return (p.param.beams ? "beams_deg" : "deg") +
+                                  std::to_string(static_cast<int>(p.param.angleDeg)) + "_shoulder";
+                         });
 
 }  // namespace
 }  // namespace tangle

@@ -135,17 +135,25 @@ TEST(DistributedContact, ForceIsContinuousWhereTheOtherLineChangesSection) {
   // Line B (along x) changes from radius 0.05 m to 0.1 m at its middle node, x = 0; line A (radius 0.05 m)
   // crosses it at right angles at x = x0, its axis zA = 0.135 m above B's: 0.035 m clear of the thin
   // section, 0.015 m into the thick one. Both types have the same mass and stiffness, so one contact law
-  // acts throughout. Source: the geometry of the taper (DistributedContact.hpp, m_shoulders): B's radius
-  // runs linearly from 0.05 to 0.1 m over x in [-0.025, 0.025]. A point of B at x touches A when
-  // r_B(x) + 0.05 > sqrt(zA^2 + (x - x0)^2): on the thick part within w = sqrt(0.15^2 - zA^2) = 0.0654 m of
-  // x0, so contact begins at x0 = 0.025 - w = -0.0404 m (the taper's points reach less far) and from
-  // x0 = 0.025 + w = 0.0904 m on A meets only the thick part: the force it has in the middle of an element
-  // further on (x0 = 1.25 m; the footprint within one element, as for x0 <= 0.4346 m). In between the force
-  // grows continuously (B's radius under A only grows as A moves on); without the taper it jumped by the
-  // thick part's share where a projection crossed the node. Steps: at most 1/10 of the full force per 0.5 mm
-  // of travel (the rise is spread over 131 mm, 262 steps).
+  // acts throughout. Source: the geometry of the shoulder (DistributedContact.hpp, m_shoulders): B's radius
+  // runs from 0.05 to 0.1 m over x in [-0.025, 0.025] along the smootherstep S(u) = u^3 (10 - 15 u + 6 u^2),
+  // u = (x + 0.025) / 0.05. A point of B at x touches A when r_B(x) + 0.05 > sqrt(zA^2 + (x - x0)^2), i.e.
+  // |x - x0| < w(x) = sqrt((r_B(x) + 0.05)^2 - zA^2): contact begins at x0 = min over x of x - w(x), found
+  // below on a 1 um grid (-0.0448 m, on the shoulder's upper part at x = 0.018 m; on the thick part alone
+  // 0.025 - 0.0654 = -0.0404 m), and from x0 = 0.025 + w = 0.0904 m on A meets only the thick part: the force
+  // it has in the middle of an element further on (x0 = 1.25 m; the footprint within one element, as for
+  // x0 <= 0.4346 m). In between the force grows continuously (B's radius under A only grows as A moves on);
+  // without the shoulder it jumped by the thick part's share where a projection crossed the node. Steps: at
+  // most 1/10 of the full force per 0.5 mm of travel (the rise is spread over 135 mm, 270 steps).
   const double zA = 0.135;
   const double reach = std::sqrt(0.15 * 0.15 - zA * zA);
+  double onset = 0.025 - reach;
+  for (int i = 0; i <= 50000; ++i) {
+    const double x = -0.025 + 1e-6 * i, u = (x + 0.025) / 0.05;
+    const double rB = 0.05 + 0.05 * u * u * u * (10.0 + u * (6.0 * u - 15.0));
+    const double w2 = (rB + 0.05) * (rB + 0.05) - zA * zA;
+    if (w2 > 0.0) onset = std::min(onset, x - std::sqrt(w2));
+  }
   auto spec = [&](double x0) {
     model::ModelSpec s = twoLinesSpec(Vec3(0, 1, 0), zA);
     s.lineTypes["thick"] = test::cableType("thick", 0.2, 20.0, 1e8);
@@ -162,9 +170,9 @@ TEST(DistributedContact, ForceIsContinuousWhereTheOtherLineChangesSection) {
     const double x0 = -0.06 + 0.16 * i / 320.0;
     TwoLines t(spec(x0));
     const double force = forceOnA(t);
-    if (x0 < 0.025 - reach - 1e-4) {
+    if (x0 < onset - 1e-4) {
       EXPECT_EQ(force, 0.0) << "at x0 = " << x0;
-    } else if (x0 > 0.025 - reach + 1e-4) {
+    } else if (x0 > onset + 1e-4) {
       EXPECT_GT(force, 0.0) << "at x0 = " << x0;
     }
     if (x0 > 0.025 + reach + 1e-4) {
