@@ -179,9 +179,9 @@ DistributedContact::DistributedContact(const model::Model& model, const model::C
 double DistributedContact::radiusAt(int element, double t) const { return radiusProfile(element, t)[0]; }
 
 std::array<double, 3> DistributedContact::radiusProfile(int element, double t) const {
-  // In a shoulder the radius follows the smoothstep S(u) = u^2 (3 - 2 u) of the whole taper, u from 0 at
-  // its far end in the neighbour to 1/2 at the node and 1 where this element's own radius is reached: C1
-  // along the line (a linear taper's kinks at its two ends were steps of the force's slope).
+  // In a shoulder the radius follows the smootherstep S(u) = u^3 (10 - 15 u + 6 u^2) of the whole taper, u
+  // from 0 at its far end in the neighbour to 1/2 at the node and 1 where this element's own radius is
+  // reached: C2 along the line (a linear taper's kinks at its two ends were steps of the force's slope).
   const Shoulder& sh = m_shoulders[static_cast<std::size_t>(element)];
   const double r = m_radius[static_cast<std::size_t>(element)];
   t = std::clamp(t, 0.0, 1.0);
@@ -452,21 +452,25 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   // continuously; a run that took both dips on one piece integrated two humps with four points, and the
   // force jumped by that rule's error when a sample on the ridge came into contact (two lazy waves lying
   // along each other 10-100 um deep: 9 N, and Newton cycled at 2-5 N against a tolerance of 1 N). The cut
-  // is weighted by how deep the ridge lies (ridgeWeight, below): a contact along a length has shallow
+  // is weighted by how deep the ridge lies (the weights below): a contact along a length has shallow
   // ridges of the mesh's scale everywhere, whose tops move far for small changes (two risers side by side,
   // cut at every ridge a tenth of the dips' depth high: 157 Newton iterations instead of 34; a taut string
   // settled on a support stalled at 2 N against 0.018 N).
+  // The shallower of the deepest gaps on either side of point k within its run in contact (the sorted points
+  // before `count`) [m]: the dip depth a ridge at k is measured against.
+  const auto shallowerDip = [&points](std::size_t k, std::size_t count) {
+    double leftDip = 0.0, rightDip = 0.0;
+    for (std::size_t m = k; m-- > 0 && points[m].g < 0.0;) leftDip = std::min(leftDip, points[m].g);
+    for (std::size_t m = k + 1; m < count && points[m].g < 0.0; ++m)
+      rightDip = std::min(rightDip, points[m].g);
+    return std::max(leftDip, rightDip);
+  };
   const std::size_t refined = points.size();
   for (std::size_t i = 1; i + 1 < refined; ++i) {
     const double g = points[i].g, left = points[i - 1].g, right = points[i + 1].g;
     if (!(g < 0.0 && left < 0.0 && right < 0.0) || g < left || g < right) continue;
-    // The deepest sampled points on either side within the run in contact: a ridge deeper than
-    // kRidgeDepths[1] of the shallower gets no cut (weights below).
-    double leftDip = left, rightDip = right;
-    for (std::size_t m = i; m-- > 0 && points[m].g < 0.0;) leftDip = std::min(leftDip, points[m].g);
-    for (std::size_t m = i + 1; m < refined && points[m].g < 0.0; ++m)
-      rightDip = std::min(rightDip, points[m].g);
-    if (g <= kRidgeDepths[1] * std::max(leftDip, rightDip)) continue;
+    // A ridge deeper than kRidgeDepths[1] of the shallower dip gets no cut (weights below).
+    if (g <= kRidgeDepths[1] * shallowerDip(i, refined)) continue;
     const auto negated = [&](double xi) { return -gap(xi); };
     const auto [xi, top] =
         brentMinimum(negated, points[i - 1].xi, points[i + 1].xi, points[i].xi, -g, kMinimumTolerance, 40);
@@ -545,10 +549,7 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
     // comes in continuously.
     for (std::size_t k = i + 1; k < last; ++k) {
       if (!points[k].ridge) continue;
-      double leftDip = 0.0, rightDip = 0.0;
-      for (std::size_t m = i; m < k; ++m) leftDip = std::min(leftDip, points[m].g);
-      for (std::size_t m = k + 1; m <= last; ++m) rightDip = std::min(rightDip, points[m].g);
-      const double ratio = points[k].g / std::max(leftDip, rightDip);  // ridge depth / shallower dip's
+      const double ratio = points[k].g / shallowerDip(k, points.size());  // ridge depth / shallower dip's
       const double x = std::clamp((kRidgeDepths[1] - ratio) / (kRidgeDepths[1] - kRidgeDepths[0]), 0.0, 1.0);
       const double weight = x * x * (3.0 - 2.0 * x);
       if (weight >= 1.0)
@@ -745,11 +746,12 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
                   [](const auto& x, const auto& y) { return x.second > y.second; });
         ridges.resize(3);
       }
+      std::vector<double> fixedEnds{iv.lo, iv.hi};
+      for (const double c : iv.cuts)
+        if (c > iv.lo && c < iv.hi) fixedEnds.push_back(c);
       for (unsigned mask = 0; mask < (1u << ridges.size()); ++mask) {
         double share = 1.0;
-        std::vector<double> ends{iv.lo, iv.hi};
-        for (const double c : iv.cuts)
-          if (c > iv.lo && c < iv.hi) ends.push_back(c);
+        std::vector<double> ends = fixedEnds;
         for (std::size_t r = 0; r < ridges.size(); ++r) {
           const bool cut = (mask >> r) & 1u;
           share *= cut ? ridges[r].second : 1.0 - ridges[r].second;

@@ -293,8 +293,8 @@ class DistributedContact {
   model::ContactSpec m_spec;
   std::vector<double> m_radius;
   /// Where a line changes section (a lazy wave's buoyancy: radius 0.175 -> 0.45 m) the radius runs
-  /// between the two over |r1 - r2| of arc centred on the node along a smoothstep (C1: a shoulder of
-  /// 56 degrees at the node, as a buoyancy module's end), in the elements' parameters: without it a Gauss
+  /// between the two over |r1 - r2| of arc centred on the node along a smootherstep (C2: a shoulder of
+  /// 62 degrees at the node, as a buoyancy module's end), in the elements' parameters: without it a Gauss
   /// point whose projection crossed the node saw the sum of the radii, and the gap, jump by the
   /// difference, a force step no time step resolves (two lazy waves relaxing into contact stopped at steps
   /// of 1e-5 s). The master's slope dr/dt enters the gap's gradient, so the force and its tangent are

@@ -73,29 +73,34 @@ Mat3 WakeInterference::liftGradient(const model::State& state, int element, doub
     const int k = element - down.firstElement;
     const ElementWake centre = wakeAtPoint(state, pair, k, p, td, rho);
     if (centre.deficit <= 0.0) continue;
-    for (int c = 0; c < 3; ++c) {
-      const Vec3 step = h * Vec3::Unit(c);
-      const ElementWake plus = wakeAtPoint(state, pair, k, p + step, td, rho);
-      const ElementWake minus = wakeAtPoint(state, pair, k, p - step, td, rho);
-      // The wake ends abruptly (level with the upstream centre, beyond the upstream line's ends): a
-      // difference across that edge is not a derivative; take the one-sided one on the wake's side.
-      const bool inPlus = plus.deficit > 0.0 && plus.upstreamLine == centre.upstreamLine;
-      const bool inMinus = minus.deficit > 0.0 && minus.upstreamLine == centre.upstreamLine;
-      if (inPlus && inMinus) {
-        lift.col(c) += (plus.liftPerLength - minus.liftPerLength) / (2.0 * h);
-      } else if (inPlus) {
-        lift.col(c) += (plus.liftPerLength - centre.liftPerLength) / h;
-      } else if (inMinus) {
-        lift.col(c) += (centre.liftPerLength - minus.liftPerLength) / h;
-      }
-    }
+    lift += difference(state, pair, k, p, td, rho, h, centre, &ElementWake::liftPerLength);
   }
   return lift;
 }
 
+Mat3 WakeInterference::difference(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
+                                  double rho, double h, const ElementWake& centre, Vec3 ElementWake::*field) {
+  Mat3 gradient = Mat3::Zero();
+  for (int c = 0; c < 3; ++c) {
+    const Vec3 step = h * Vec3::Unit(c);
+    const ElementWake plus = wakeAtPoint(state, pair, k, p + step, td, rho);
+    const ElementWake minus = wakeAtPoint(state, pair, k, p - step, td, rho);
+    // The wake ends abruptly (level with the upstream centre, beyond the upstream line's ends): a
+    // difference across that edge is not a derivative; take the one-sided one on the wake's side.
+    const bool inPlus = plus.deficit > 0.0 && plus.upstreamLine == centre.upstreamLine;
+    const bool inMinus = minus.deficit > 0.0 && minus.upstreamLine == centre.upstreamLine;
+    if (inPlus && inMinus)
+      gradient.col(c) = (plus.*field - minus.*field) / (2.0 * h);
+    else if (inPlus)
+      gradient.col(c) = (plus.*field - centre.*field) / h;
+    else if (inMinus)
+      gradient.col(c) = (centre.*field - minus.*field) / h;
+  }
+  return gradient;
+}
+
 WakeGradient WakeInterference::velocityChangeGradient(const model::State& state, int element, double rho) {
   WakeGradient result;
-  Mat3& gradient = result.midpoint;
   const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
   const Vec3& p1 = state.position[el.node1];
   const Vec3& p2 = state.position[el.node2];
@@ -117,19 +122,7 @@ WakeGradient WakeInterference::velocityChangeGradient(const model::State& state,
     }
   }
   if (acting == nullptr) return result;
-  for (int c = 0; c < 3; ++c) {
-    const Vec3 step = h * Vec3::Unit(c);
-    const ElementWake plus = wakeAtPoint(state, *acting, k, p + step, td, rho);
-    const ElementWake minus = wakeAtPoint(state, *acting, k, p - step, td, rho);
-    const bool inPlus = plus.deficit > 0.0 && plus.upstreamLine == centre.upstreamLine;
-    const bool inMinus = minus.deficit > 0.0 && minus.upstreamLine == centre.upstreamLine;
-    if (inPlus && inMinus)
-      gradient.col(c) = (plus.velocityChange - minus.velocityChange) / (2.0 * h);
-    else if (inPlus)
-      gradient.col(c) = (plus.velocityChange - centre.velocityChange) / h;
-    else if (inMinus)
-      gradient.col(c) = (centre.velocityChange - minus.velocityChange) / h;
-  }
+  result.midpoint = difference(state, *acting, k, p, td, rho, h, centre, &ElementWake::velocityChange);
   // The upstream element's nodes: the wake moves with it (the midpoint's position relative to it, at the
   // same current, is what counts), so a translation of both by x changes the velocity as the midpoint's by
   // -x would (the current's change with depth at the midpoint is not the upstream's: left out).
@@ -138,8 +131,8 @@ WakeGradient WakeInterference::velocityChangeGradient(const model::State& state,
     const double s = centre.upstreamParameter;
     result.upstreamNode1 = u.node1;
     result.upstreamNode2 = u.node2;
-    result.upstream1 = -(1.0 - s) * gradient;
-    result.upstream2 = -s * gradient;
+    result.upstream1 = -(1.0 - s) * result.midpoint;
+    result.upstream2 = -s * result.midpoint;
   }
   return result;
 }

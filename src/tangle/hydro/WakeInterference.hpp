@@ -99,6 +99,11 @@ class WakeInterference {
     std::vector<int> guess;        ///< per downstream element: upstream element found last time
   };
   /// The wake of pair's upstream line at point p of the pair's downstream element k (tangent td).
+  /// Central differences [per m] of `field` of pair's wake at downstream element k's point p with respect
+  /// to p, steps of h [m]; one-sided where a step leaves the wake of `centre` (the wake at p), zero where
+  /// both do.
+  Mat3 difference(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td, double rho,
+                  double h, const ElementWake& centre, Vec3 ElementWake::*field);
   ElementWake wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
                           double rho) const;
   /// The upstream line's mean diameter [m] and drag coefficient [-] (mean of C_d D over mean D) within

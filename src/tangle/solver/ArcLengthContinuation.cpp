@@ -15,8 +15,6 @@
 namespace tangle::solver {
 
 namespace {
-/// Lever [m] of the moments in the convergence test (as StaticSolver).
-constexpr double kMomentLever = 1.0;
 /// Hyperplane residual accepted at convergence, relative to the arc length [-].
 constexpr double kConstraintTolerance = 1e-6;
 /// Corrections without a new smallest out-of-balance force before an arc step is cut.
@@ -168,7 +166,7 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
         break;
       }
       if (!evaluate(trial, trialLambda, r, drdl, &matrix, why)) break;
-      out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kMomentLever);
+      out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kStaticMomentLever);
       const double g = tq.dot(acc) + psi2 * tl * accLambda - ds;
       if (out.residual <= m_settings.tolerance && std::abs(g) <= kConstraintTolerance * ds) {
         if (!m_assembler->updateActiveSet()) {

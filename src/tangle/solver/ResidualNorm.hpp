@@ -14,6 +14,11 @@ enum class ResidualIndexing {
   Equations   ///< one entry per equation
 };
 
+/// Lever [m] that turns a nodal moment residual of a line node into a force for the statics' convergence
+/// test (StaticSolver, ArcLengthContinuation): a fixed length, not the element length, so that the test does
+/// not tighten as the mesh is refined.
+inline constexpr double kStaticMomentLever = 1.0;
+
 /// Largest |residual| over the free DOFs [N] (moments divided by the node's moment scale); NaN if any entry
 /// is NaN. `worstNode` (optional) receives the node where it occurs. `lineMomentLever` [m], when > 0,
 /// replaces the moment scale of line nodes (statics compares moments over a fixed lever, so that the test

@@ -21,9 +21,6 @@
 namespace tangle::solver {
 
 namespace {
-/// Lever [m] that turns a nodal moment residual of a line node into a force for the convergence test.
-/// A fixed length (not the element length) so that the test does not tighten as the mesh is refined.
-constexpr double kLineMomentLever = 1.0;
 /// Largest Levenberg-Marquardt factor before a Newton solve gives up [-].
 constexpr double kMaxShift = 1e4;
 /// Restarts from a perturbed shape when bar elements end in compression.
@@ -550,7 +547,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   gatherResidual(force, offset, r);
   matrix.build(kAccepted);
 
-  out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
+  out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kStaticMomentLever);
   if (debugOutput() && out.worstNode >= 0)
     std::cerr << fmt::format("   start |r| {:.4e} N at {}\n", out.residual,
                              model.describeNode(out.worstNode));
@@ -589,7 +586,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
       m_assembler->assemble(state, request, force, &matrix);
       gatherResidual(force, offset, r);
       matrix.build(kAccepted);
-      out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
+      out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kStaticMomentLever);
       stalled = 0;
       continue;
     }
@@ -721,7 +718,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     state = std::move(trial);
     r = rTrial;
     matrix.build(kAccepted);
-    out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kLineMomentLever);
+    out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kStaticMomentLever);
     stalled = out.residual > 0.5 * previous ? stalled + 1 : 0;
     if (plain) {
       // A shift raised because the matrix could not be factorised is relaxed again (pure Newton).
