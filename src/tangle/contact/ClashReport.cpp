@@ -89,19 +89,25 @@ void ClashReport::write(const fs::path& dir) const {
          "energy_mass_basis,effective_mass_1_kg,effective_mass_2_kg,max_penetration_m,open,impact_phase_end_"
          "s,"
          "impact_phase_end,impact_phase_impulse_Ns,eq5_mass_kg,absorbed_energy_J,work_mass_kg,"
-         "event_eq5_mass_kg,mass_lower_bound_kg,mass_upper_bound_kg,energy_warning\n";
+         "event_eq5_mass_kg,mass_lower_bound_kg,mass_upper_bound_kg,energy_warning,mesh_mass_kg,mesh_energy_"
+         "J,"
+         "mesh_mass_basis,continuum_mass_kg,continuum_energy_J,continuum_length_1_m,continuum_length_2_m,"
+         "continuum_duration_s,continuum_peak_force_N,continuum_note\n";
     for (std::size_t i = 0; i < events.size(); ++i) {
       const ContactEvent& e = events[i];
       f << fmt::format(
           "{},{},{},{},{:.6f},{:.6f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.6e},"
           "{:.6e},{:.4f},{:.6e},{:.6e},{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{},{:.6f},{},{:.6e},{:.6e},"
-          "{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},\"{}\"\n",
+          "{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},\"{}\",{:.6e},{:.6e},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.6e},"
+          "{:.6e},\"{}\"\n",
           i, lines[e.lineA].name, lines[e.lineB].name, e.kind(), e.startTime, e.endTime, e.positionStart.x(),
           e.positionStart.y(), e.positionStart.z(), e.arcAStart, e.arcBStart, e.arcAMin, e.arcAMax, e.arcBMin,
           e.arcBMax, e.peakForce, e.peakForcePerLength, e.maxContactLength, e.impulse, e.impactVelocity,
           e.impactEnergy, e.energyMass, e.energyMassBasis, e.effectiveMassA, e.effectiveMassB,
           e.maxPenetration, e.open ? "true" : "false", e.phaseEndTime, e.phaseEnd, e.phaseImpulse, e.eq5Mass,
-          e.phaseWork, e.workMass, e.eventEq5Mass, e.massLowerBound, e.massUpperBound, e.energyWarning);
+          e.phaseWork, e.workMass, e.eventEq5Mass, e.massLowerBound, e.massUpperBound, e.energyWarning,
+          e.meshMass, e.meshEnergy, e.meshMassBasis, e.continuumMass, e.continuumEnergy, e.continuumLengthA,
+          e.continuumLengthB, e.continuumDuration, e.continuumPeakForce, e.continuumNote);
     }
     file.close();
   }

@@ -89,7 +89,7 @@ std::string ContactEvent::kind() const {
 }
 
 void ContactEventTracker::update(double time, double dt, bool dynamic, const std::vector<ContactSpot>& spots,
-                                 const GapFunction& gapIn) {
+                                 const GapFunction& gapIn, const ContinuumFunction& continuum) {
   // Patches per line pair: spots sorted along line A, split where consecutive spots are farther apart
   // than the reach along A or B.
   std::map<std::pair<int, int>, std::vector<const ContactSpot*>> byPair;
@@ -234,6 +234,13 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       e.lastRelativeVelocity = -e.impactVelocity;
       e.massLowerBound = s.elementPairMass;
       e.massUpperBound = s.linePairMass;
+      e.continuumMass = e.continuumEnergy = e.continuumLengthA = e.continuumLengthB = std::nan("");
+      e.continuumDuration = e.continuumPeakForce = std::nan("");
+      e.continuumNote = "not an impact";
+      if (e.impact) {
+        e.continuumNote = "not estimated";
+        if (continuum) continuum(e);
+      }
       m_open.push_back(std::move(e));
       sums.emplace_back();
       continued.push_back(false);
@@ -354,42 +361,60 @@ void ContactEventTracker::endPhase(ContactEvent& e, double time, double u, const
 }
 
 void ContactEventTracker::measureImpact(ContactEvent& e) {
-  // Impact phase: Eq. 5 where the phase changed the relative normal velocity measurably, the work
-  // estimate where it did not (a graze), the lumped FE pair mass where neither has anything to measure.
+  // What the mesh engaged over the impact phase: Eq. 5 where the phase changed the relative normal
+  // velocity measurably, the work estimate where it did not (a graze), the lumped FE pair mass where
+  // neither has anything to measure.
   const double v0 = e.impactVelocity;
   e.eq5Mass = v0 > 0.0 && e.phaseVelocityChange > 0.05 * v0 && e.phaseImpulse > 0.0
                   ? e.phaseImpulse / e.phaseVelocityChange
                   : std::nan("");
   e.workMass = v0 > 0.0 && e.phaseWork > 0.0 ? 2.0 * e.phaseWork / (v0 * v0) : std::nan("");
   if (std::isfinite(e.eq5Mass)) {
-    e.energyMass = e.eq5Mass;
-    e.energyMassBasis = "eq5";
+    e.meshMass = e.eq5Mass;
+    e.meshMassBasis = "eq5";
   } else if (std::isfinite(e.workMass)) {
-    e.energyMass = e.workMass;
-    e.energyMassBasis = "work";
+    e.meshMass = e.workMass;
+    e.meshMassBasis = "work";
   } else {
-    e.energyMass = std::isfinite(e.pairMass) ? e.pairMass : 0.0;
-    e.energyMassBasis = "lumped";
+    e.meshMass = std::isfinite(e.pairMass) ? e.pairMass : 0.0;
+    e.meshMassBasis = "lumped";
   }
+  e.meshEnergy = 0.5 * e.meshMass * v0 * v0;
+  // The impact energy: the mesh-free estimate where it holds (a point contact on lines whose waves do not
+  // reach an end within the impact: what a long line engages is set by its impedance, not by its
+  // elements), the mesh's otherwise.
+  const bool continuum = e.continuumNote.empty() && std::isfinite(e.continuumMass) && e.continuumMass > 0.0;
+  e.energyMass = continuum ? e.continuumMass : e.meshMass;
+  e.energyMassBasis = continuum ? "continuum" : e.meshMassBasis;
   e.impactEnergy = 0.5 * e.energyMass * v0 * v0;
-  if (e.impact) {
-    if (std::isfinite(e.eq5Mass) && std::isfinite(e.workMass) &&
-        (e.eq5Mass > kEnergyAgreement * e.workMass || e.workMass > kEnergyAgreement * e.eq5Mass))
+  e.energyWarning.clear();
+  if (!e.impact) return;
+  if (continuum) {
+    // The mesh's two estimates and its one-element bound describe what the elements engaged, which the
+    // continuum estimate replaces; only the bound of the whole lines applies.
+    if (e.massUpperBound > 0.0 && e.energyMass > e.massUpperBound * (1.0 + 1e-9))
       e.energyWarning = fmt::format(
-          "the impact energy by Eq. 5 ({:.4g} J) and the work absorbed in the impact "
-          "phase ({:.4g} J) differ by more than a factor {:g}",
-          e.impactEnergy, e.phaseWork, kEnergyAgreement);
-    else if (e.massUpperBound > 0.0 && e.energyMass > e.massUpperBound * (1.0 + 1e-9))
-      e.energyWarning = fmt::format(
-          "the impact's effective mass {:.4g} kg exceeds the two whole lines' reduced "
+          "the impact's participating mass {:.4g} kg exceeds the two whole lines' reduced "
           "mass with added mass ({:.4g} kg)",
           e.energyMass, e.massUpperBound);
-    else if (e.energyMass < e.massLowerBound * (1.0 - 1e-9))
-      e.energyWarning = fmt::format(
-          "the impact's effective mass {:.4g} kg is below the reduced mass of one "
-          "element of each line ({:.4g} kg)",
-          e.energyMass, e.massLowerBound);
+    return;
   }
+  if (std::isfinite(e.eq5Mass) && std::isfinite(e.workMass) &&
+      (e.eq5Mass > kEnergyAgreement * e.workMass || e.workMass > kEnergyAgreement * e.eq5Mass))
+    e.energyWarning = fmt::format(
+        "the impact energy by Eq. 5 ({:.4g} J) and the work absorbed in the impact "
+        "phase ({:.4g} J) differ by more than a factor {:g}",
+        e.impactEnergy, e.phaseWork, kEnergyAgreement);
+  else if (e.massUpperBound > 0.0 && e.energyMass > e.massUpperBound * (1.0 + 1e-9))
+    e.energyWarning = fmt::format(
+        "the impact's effective mass {:.4g} kg exceeds the two whole lines' reduced "
+        "mass with added mass ({:.4g} kg)",
+        e.energyMass, e.massUpperBound);
+  else if (e.energyMass < e.massLowerBound * (1.0 - 1e-9))
+    e.energyWarning = fmt::format(
+        "the impact's effective mass {:.4g} kg is below the reduced mass of one "
+        "element of each line ({:.4g} kg)",
+        e.energyMass, e.massLowerBound);
 }
 
 void ContactEventTracker::close(std::size_t openIndex, double time, double closingImpulse,

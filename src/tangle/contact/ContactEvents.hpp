@@ -17,7 +17,10 @@
 /// - An event is an impact when its first approach speed v0 exceeds `contact.impact_velocity_threshold`
 ///   in a dynamic run; it is sustained when it lasts longer than kSustainedDurations contact durations
 ///   pi sqrt(m / k) (or is a static contact). The clash statistics are over impacts only.
-/// - Impact energy (docs/theory.md 9.10): the paper's Eq. 5 taken over the impact phase only, from first
+/// - Impact energy (docs/theory.md 9.10): where the contact is a point on lines long enough for the
+///   impact not to see their ends, the mesh-free estimate from the lines' point impedance
+///   (ContinuumImpactMass.hpp: what the impact engages does not depend on the elements); elsewhere the
+///   paper's Eq. 5 taken over the impact phase only, from first
 ///   contact until the relative normal velocity has reversed (the surfaces stop approaching), the event
 ///   turned sustained, or it ended: m_eq5 = impulse of the phase / change of the relative normal
 ///   velocity over it, energy 1/2 m_eq5 v0^2. Beside it an independent estimate from energy, the work
@@ -92,9 +95,24 @@ struct ContactEvent {
   double impactVelocity = 0.0;     ///< relative normal approach speed at first contact [m/s]
   double impactEnergy = 0.0;       ///< 1/2 energyMass impactVelocity^2 [J]
   double energyMass = 0.0;         ///< mass used for the impact energy [kg]
+  /// "continuum" (the lines' point impedance, where it holds: continuumNote empty), else the mesh's:
   /// "eq5" (impact phase), "work" (2 W / v0^2 where the phase changed the velocity by less than 5 % of
   /// v0), "lumped" (FE pair mass at the point: no work either).
   std::string energyMassBasis;
+  /// What the simulated impact engaged on its mesh (basis meshMassBasis: eq5, work or lumped) [kg] and the
+  /// energy 1/2 meshMass v0^2 [J]: the impact energy where the continuum estimate does not hold.
+  double meshMass = 0.0, meshEnergy = 0.0;
+  std::string meshMassBasis;
+  // The mesh-free estimate (ContinuumImpactMass.hpp, docs/theory.md 9.10), from the state at first contact.
+  double continuumMass = 0.0;       ///< reduced participating mass of the pair [kg] (NaN: none)
+  double continuumEnergy = 0.0;     ///< 1/2 continuumMass v0^2 [J] (NaN: none)
+  double continuumLengthA = 0.0;    ///< length of line A whose mass takes part [m] (NaN: none)
+  double continuumLengthB = 0.0;    ///< [m]
+  double continuumDuration = 0.0;   ///< the impact's half period pi / omega [s]
+  double continuumPeakForce = 0.0;  ///< peak force of the estimate [N]
+  /// Empty where the estimate holds (the impact energy is then the continuum's), else why it does not (a
+  /// slack line, a contact along a length, waves that reach an end, support, lump or section change).
+  std::string continuumNote;
   // Impact phase (see the file comment).
   double phaseEndTime = 0.0;         ///< end of the impact phase [s]
   std::string phaseEnd;              ///< "reversed", "separated", "sustained", "run end", or "no approach" (no impact phase)
@@ -161,8 +179,12 @@ class ContactEventTracker {
   /// Smallest surface gap [m] between lines A and B over the arc ranges [a0, a1] on A and [b0, b1] on B.
   using GapFunction = std::function<double(int lineA, int lineB, double a0, double a1, double b0, double b1)>;
 
+  /// Fills an impact's continuum estimate (ContactEvent::continuum*) when it opens.
+  using ContinuumFunction = std::function<void(ContactEvent&)>;
+
   /// Updates the events with the spots of a committed state at `time` reached with step dt (0 in statics).
-  void update(double time, double dt, bool dynamic, const std::vector<ContactSpot>& spots, const GapFunction& gapIn);
+  void update(double time, double dt, bool dynamic, const std::vector<ContactSpot>& spots,
+              const GapFunction& gapIn, const ContinuumFunction& continuum = {});
   /// Closes the open events at the end of the run.
   void finish(double time);
   /// Closed events in the order they closed (after finish(): all of them, by start time).

@@ -129,6 +129,8 @@ class DistributedContact {
   double pointStiffness(int lineA, int lineB) const;
   /// The law between two elements.
   BarrierPenalty law(int elementA, int elementB) const;
+  /// a of the restitution by hysteresis [-] (loading along (1 + a) f).
+  double hysteresis() const { return m_hysteresis; }
   /// Smoothing speed v_s [m/s] of the restitution between two elements (0: none, both held):
   /// 0.1 omega p0, with omega = sqrt(k / m) of the pair's point stiffness k (pointStiffness) against the
   /// reduced mass m of the reference contact length 20 (rA + rB) (kReferenceLengthFactor), and p0 the law's

@@ -893,10 +893,12 @@ void LineContact::commitStep(model::State& state, double dt) {
     spot.linePairMass = pairMassBound(m_lineMassWithAdded[smp.lineA], m_lineMassWithAdded[smp.lineB]);
     spots.push_back(spot);
   }
-  m_eventTracker.update(state.time, dt, dynamic, spots,
-                        [&](int a, int b, double a0, double a1, double b0, double b1) {
-                          return gapBetween(state, a, b, a0, a1, b0, b1);
-                        });
+  m_eventTracker.update(
+      state.time, dt, dynamic, spots,
+      [&](int a, int b, double a0, double a1, double b0, double b1) {
+        return gapBetween(state, a, b, a0, a1, b0, b1);
+      },
+      [&](ContactEvent& e) { estimateContinuum(state, e); });
 }
 
 double LineContact::gapBetween(const model::State& state, int lineA, int lineB, double a0, double a1,
@@ -1073,10 +1075,12 @@ void LineContact::commitDistributed(const model::State& state, double dt) {
     spot.elementPairMass = reducedMass(elementMass(ea), elementMass(eb));
     spot.linePairMass = pairMassBound(m_lineMassWithAdded[spot.lineA], m_lineMassWithAdded[spot.lineB]);
   }
-  m_eventTracker.update(state.time, dt, dynamic, spots,
-                        [&](int a, int b, double a0, double a1, double b0, double b1) {
-                          return gapBetween(state, a, b, a0, a1, b0, b1);
-                        });
+  m_eventTracker.update(
+      state.time, dt, dynamic, spots,
+      [&](int a, int b, double a0, double a1, double b0, double b1) {
+        return gapBetween(state, a, b, a0, a1, b0, b1);
+      },
+      [&](ContactEvent& e) { estimateContinuum(state, e); });
 }
 
 }  // namespace tangle::contact

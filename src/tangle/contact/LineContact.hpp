@@ -247,6 +247,9 @@ class LineContact final : public solver::LoadContributor {
   const model::ContactSpec& spec() const { return m_spec; }
 
  private:
+  /// Fills the mesh-free estimate of the impact `e` opening at `state` (ContactEvent::continuum*;
+  /// ImpactContinuum.cpp).
+  void estimateContinuum(const model::State& state, ContactEvent& e) const;
   /// Finds the contact points at `state`; `trial` (Newton iterations) lets new contacts join the active set.
   void findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial);
   /// Broad-phase margin [m] at a state: the largest radius plus what a node can move in 4 nominal steps.

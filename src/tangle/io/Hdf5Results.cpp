@@ -296,8 +296,14 @@ void Hdf5Results::writeContactEvents(const std::vector<contact::ContactEvent>& e
   m_file->writeArray(g + "/position", where, {n, 3}, "m", "where it began (on line 1)");
   column("impact_velocity", "m/s", "relative normal approach speed at first contact",
          [](const auto& e) { return e.impactVelocity; });
-  column("impact_energy", "J", "1/2 m v^2 with the energy mass (Eq. 5 over the impact phase)",
+  column("impact_energy", "J",
+         "1/2 m v^2 with the energy mass (the lines' point impedance where it holds, else Eq. 5 over the "
+         "impact phase)",
          [](const auto& e) { return e.impactEnergy; });
+  column("mesh_energy", "J", "1/2 m v^2 with the mass the mesh engaged (Eq. 5 over the impact phase)",
+         [](const auto& e) { return e.meshEnergy; });
+  column("continuum_energy", "J", "1/2 m v^2 with the lines' continuum participating mass (NaN: none)",
+         [](const auto& e) { return e.continuumEnergy; });
   column("energy_mass", "kg", "mass of the impact energy", [](const auto& e) { return e.energyMass; });
   column("absorbed_energy", "J", "work of the contact force against the approach over the impact phase",
          [](const auto& e) { return e.phaseWork; });

@@ -441,6 +441,14 @@ py::dict PySimulation::dynamics(const py::object& progress) {
       d["mass_lower_bound_kg"] = e.massLowerBound;
       d["mass_upper_bound_kg"] = e.massUpperBound;
       d["energy_warning"] = e.energyWarning;
+      d["mesh_mass_kg"] = e.meshMass;
+      d["mesh_energy_J"] = e.meshEnergy;
+      d["mesh_mass_basis"] = e.meshMassBasis;
+      d["continuum_mass_kg"] = e.continuumMass;
+      d["continuum_energy_J"] = e.continuumEnergy;
+      d["continuum_length_1_m"] = e.continuumLengthA;
+      d["continuum_length_2_m"] = e.continuumLengthB;
+      d["continuum_note"] = e.continuumNote;
       d["impact"] = e.impact;
       d["sustained"] = e.sustained;
       d["open"] = e.open;
