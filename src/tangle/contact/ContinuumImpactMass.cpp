@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "tangle/contact/ReducedMass.hpp"
+
 namespace tangle::contact {
 
 namespace {
@@ -66,9 +68,6 @@ ContinuumImpact continuumImpact(const LineAtPoint& a, const LineAtPoint& b, cons
                                 double approachSpeed) {
   ContinuumImpact r;
   if (!(approachSpeed > 0.0) || (a.held && b.held)) return r;
-  const auto pair = [](double ma, double mb) {
-    return std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
-  };
   // The law's force F and work W = integral F dp on a geometric grid of penetrations from 0.1 nm to 1 m
   // (4 % steps; F linear within a step: exact for a linear law, ~1e-4 relative for a curved one): the
   // deepest penetration of an impact is where W reaches the approach's kinetic energy.
@@ -96,7 +95,7 @@ ContinuumImpact continuumImpact(const LineAtPoint& a, const LineAtPoint& b, cons
   double omega = 100.0, pStar = 0.0, fStar = 0.0, m = 0.0;
   bool converged = false;
   for (int iteration = 0; iteration < 300 && !converged; ++iteration) {
-    m = pair(participatingMass(a, omega), participatingMass(b, omega));
+    m = reducedMass(participatingMass(a, omega), participatingMass(b, omega));
     if (!(m > 0.0) || !std::isfinite(m)) return r;
     if (!deepest(0.5 * m * approachSpeed * approachSpeed, pStar, fStar)) return r;
     const double next = std::sqrt(fStar / (m * pStar));
@@ -109,7 +108,7 @@ ContinuumImpact continuumImpact(const LineAtPoint& a, const LineAtPoint& b, cons
   r.duration = kPi / omega;
   r.massA = participatingMass(a, omega);
   r.massB = participatingMass(b, omega);
-  r.pairMass = pair(r.massA, r.massB);
+  r.pairMass = reducedMass(r.massA, r.massB);
   r.lengthA = a.massPerLength > 0.0 ? r.massA / a.massPerLength : 0.0;
   r.lengthB = b.massPerLength > 0.0 ? r.massB / b.massPerLength : 0.0;
   deepest(0.5 * r.pairMass * approachSpeed * approachSpeed, r.penetration, r.peakForce);

@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "tangle/contact/ContactKinematics.hpp"
+#include "tangle/contact/ReducedMass.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 
 namespace tangle::contact {
@@ -139,11 +140,6 @@ std::pair<int, int> linePair(const ContactSample& smp) {
   return {std::min(smp.lineA, smp.lineB), std::max(smp.lineA, smp.lineB)};
 }
 
-double reducedMass(double a, double b) {
-  if (std::isinf(a)) return b;
-  if (std::isinf(b)) return a;
-  return a + b > 0.0 ? a * b / (a + b) : 0.0;
-}
 }  // namespace
 
 DistributedContact::DistributedContact(const model::Model& model, const model::ContactSpec& spec,

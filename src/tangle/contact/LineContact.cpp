@@ -11,6 +11,7 @@
 
 #include "tangle/contact/ContactKinematics.hpp"
 #include "tangle/contact/ContactLaw.hpp"
+#include "tangle/contact/ReducedMass.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 
 namespace tangle::contact {
@@ -35,12 +36,6 @@ constexpr double kEq5UpdateFraction = 0.0005;
 /// another) times the lumped one; larger quotients come from steady loads, not inertia (commitStep).
 constexpr double kDashpotMassGrowth = 10.0;
 constexpr double kPi = 3.141592653589793;
-/// Reduced mass m_a m_b / (m_a + m_b) [kg]; an immovable side (+inf) leaves the other.
-double reducedMass(double a, double b) {
-  if (std::isinf(a)) return b;
-  if (std::isinf(b)) return a;
-  return a + b > 0.0 ? a * b / (a + b) : 0.0;
-}
 /// Upper bound of the mass an impact between two lines engages [kg]: the reduced mass of two free lines,
 /// unbounded (+inf) when either is held (LineContact's constructor).
 double pairMassBound(double a, double b) {
@@ -627,7 +622,7 @@ double LineContact::limitStep(const model::State& state) {
       const double ma = lumpedMass(a.element, d.s), mb = lumpedMass(b.element, d.t);
       // The lumped pair mass and the point stiffness (distributed: a crossing's stiffness at the law's
       // reference penetration, DistributedContact::pointStiffness).
-      const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
+      const double m = reducedMass(ma, mb);
       const double k =
           m_distributed ? m_distributed->pointStiffness(a.line, b.line) : stiffness(a.line, b.line);
       if (std::isfinite(m) && touchSpeed * std::sqrt(m / k) > 1e-3 * std::min(a.radius, b.radius)) {

@@ -15,6 +15,7 @@
 #include "tangle/contact/ContactKinematics.hpp"
 #include "tangle/contact/ContactLaw.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/contact/ReducedMass.hpp"
 
 namespace tangle::contact {
 
@@ -49,7 +50,7 @@ double LineContact::lineDamping(int eA, int eB) const {
     return x.type->totalMassPerLength();
   };
   const double ma = massPerLength(eA, la), mb = massPerLength(eB, lb);
-  const double m = std::isinf(ma) ? mb : std::isinf(mb) ? ma : ma * mb / (ma + mb);
+  const double m = reducedMass(ma, mb);
   if (!std::isfinite(m) || m <= 0.0) return 0.0;
   return 2.0 * m_zeta * std::sqrt(lineStiffness(eA, eB) * m);
 }
