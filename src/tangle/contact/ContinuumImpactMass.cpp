@@ -64,6 +64,19 @@ double crossingForce(const std::function<double(double)>& perLength, double radi
   return 2.0 / sine * sum * h / 3.0;
 }
 
+double regularisedCrossingWork(double stiffness, double depth, double radii, double sine, double p) {
+  if (!(p > 0.0) || !(radii > 0.0) || !(sine > 0.0) || !(depth > 0.0)) return 0.0;
+  // With u = p - q: the regularised part integral_{max(0, p - p0)}^{p} (p - u)^2 sqrt(u) du and the linear
+  // part integral_0^{p - p0} (p - p0 / 2 - u) sqrt(u) du.
+  const double beyond = std::max(0.0, p - depth);
+  const auto g = [p](double u) {
+    return std::sqrt(u) * u * (2.0 / 3.0 * p * p - 0.8 * p * u + 2.0 / 7.0 * u * u);
+  };
+  const double regularised = 0.5 / depth * (g(p) - g(beyond));
+  const double linear = std::sqrt(beyond) * beyond * (2.0 / 3.0 * (p - 0.5 * depth) - 0.4 * beyond);
+  return 2.0 * std::sqrt(2.0 * radii) / sine * stiffness * (regularised + linear);
+}
+
 ContinuumImpact continuumImpact(const LineAtPoint& a, const LineAtPoint& b, const PenetrationForce& force,
                                 double approachSpeed) {
   ContinuumImpact r;

@@ -63,6 +63,15 @@ using PenetrationForce = std::function<double(double)>;
 /// F = (2 / sine) integral_0^sqrt(2 radii p) perLength(p - w^2 / (2 radii)) dw (Simpson, 48 intervals).
 double crossingForce(const std::function<double(double)>& perLength, double radii, double sine, double p);
 
+/// Work [J] of a crossing's force from first touch to penetration p [m] (the integral of crossingForce)
+/// when the law per length is the regularised penalty f = k q^2 / (2 p0) below p0 and k (q - p0 / 2)
+/// beyond (BarrierPenalty's barrier left out: it only adds work past p1 = 25 p0). With q = p - w^2 / (2 R)
+/// along the crossing, F(p) = (sqrt(2 R) / sine) integral_0^p f(q) / sqrt(p - q) dq, and exchanging the
+/// order of the two integrals W(p) = (2 sqrt(2 R) / sine) integral_0^p f(q) sqrt(p - q) dq, which is closed:
+/// (16 / 105) (k / sine) sqrt(2 R) p^(7/2) / p0 below p0. stiffness k [N/m per m], depth p0 [m], radii R
+/// [m], sine > 0.
+double regularisedCrossingWork(double stiffness, double depth, double radii, double sine, double p);
+
 /// The impact of two lines solved for its frequency (see the file comment).
 struct ContinuumImpact {
   bool defined = false;      ///< false: a slack line (Z = 0), both held, or no approach

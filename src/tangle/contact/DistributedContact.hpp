@@ -109,6 +109,7 @@ struct ContactSample {
   Mat3 frictionTangent = Mat3::Zero();  ///< d friction / d (slip + tau rate), symmetric part [N/m^2]
   double arcA = 0.0, arcB = 0.0;        ///< arc lengths of the two points [m]
   double radii = 0.0;                   ///< sum of the contact radii [m]
+  double sine = 1.0;                    ///< |t_A x t_B| of the unit centreline tangents at the two points [-]
   /// The master's radius slope dr_B/dt and curvature d2r_B/dt2 at t [m] (non-zero only in a shoulder where
   /// line B changes section): the gap is d - r_A(xi) - r_B(t) with t the projection, free.
   double radiusSlope = 0.0, radiusCurvature = 0.0;
@@ -195,8 +196,9 @@ class DistributedContact {
   Vec3 pairForce(int lineA, int lineB) const;
   /// Keeps the samples found at a converged state (the last findSamples): their slip for friction from
   /// there on (the elastic stick, at most the slip distance: file comment), and where they touch for
-  /// crossedSinceCommit.
-  void commitSamples();
+  /// crossedSinceCommit; and the crossings struck hard (impactStepLimit). dt: the step just taken [s] (0 in
+  /// statics).
+  void commitSamples(double dt = 0.0);
   /// True when a sample pressed at the last commitSamples.
   bool pressing() const { return !m_pairAcceleration.empty(); }
   /// Forgets what was committed (a new analysis).
@@ -282,6 +284,35 @@ class DistributedContact {
   /// Per pair of lines (lower index first): the largest |relative normal acceleration| of its Gauss points in
   /// contact at the last converged state [m/s^2] (commitSamples; the restitution's smoothing).
   std::map<std::pair<int, int>, double> m_pairAcceleration;
+  /// The normal motion of a pair of lines where it presses, from the current samples (impactStepLimit).
+  struct PairMotion {
+    double stiffness = 0.0;      ///< sum of the Gauss points' slopes x lengths [N/m]
+    double mass = 0.0;           ///< lumped pair mass at the deepest point [kg]
+    double patchMass = 0.0;      ///< the largest of its patches' masses (patchMass) [kg]
+    double speed = 0.0;          ///< largest |d gap / dt| [m/s]
+    double slowest = 0.0;        ///< smallest |d gap / dt| [m/s]
+    double acceleration = 0.0;   ///< largest |relative normal acceleration| [m/s^2]
+    double rateSpeed = 0.0;      ///< largest restitution smoothing speed v_s [m/s]
+    double deepest = 0.0;        ///< smallest surface gap [m] (< 0)
+    double deepestRate = 0.0;    ///< d gap / dt there [m/s] (< 0 approaching)
+    double scale = 0.0;          ///< the law's p0 there [m]
+    double lineStiffness = 0.0;  ///< the law's k there [N/m per m]
+    double sine = 1.0;           ///< the crossing's sine there [-]
+    double radii = 0.0;          ///< sum of the contact radii there [m]
+    double limit = 0.0;          ///< the law's pmax there [m]
+  };
+  std::map<std::pair<int, int>, PairMotion> pairMotions() const;
+  /// Whether a pair's approach carries its crossing a further p0 deeper (impactStepLimit).
+  bool crossingApproach(const PairMotion& motion) const;
+  /// The time a crossing struck now takes to load and unload at e = 1 [s] (impactStepLimit).
+  double crossingLoadingTime(const PairMotion& motion) const;
+  /// A pair whose crossing was struck (crossingApproach at a commit) stays an impact (commitSamples) until
+  /// it lets go, turns to separate, or three times the impact's estimated duration has passed.
+  struct StruckCrossing {
+    double remaining = 0.0;  ///< time left [s]
+    double step = 0.0;       ///< the step that resolves it: its time at e = 1 over kImpactSteps [s]
+  };
+  std::map<std::pair<int, int>, StruckCrossing> m_struck;
   double m_stepScale = 0.0;  ///< setStepScale [s]
   /// A Gauss point in contact at the last commit: its piece of each line and the normal from B to A.
   struct CommittedContact {

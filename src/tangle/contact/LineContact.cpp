@@ -1058,7 +1058,7 @@ void LineContact::commitDistributed(const model::State& state, double dt) {
   const bool dynamic = dt > 0.0;
   if (m_reference.size() != state.position.size()) m_reference = state.position;
   m_distributed->findSamples(state, m_search, dynamic, false, m_reference);
-  m_distributed->commitSamples();
+  m_distributed->commitSamples(dynamic ? dt : 0.0);
   m_reference = state.position;
   std::vector<ContactSpot> spots = m_distributed->spots(state, dt, dynamic);
   for (ContactSpot& spot : spots) {
