@@ -27,6 +27,7 @@ constexpr double kGaussW[kPoints] = {0.3478548451374538, 0.6521451548625461, 0.6
                                      0.3478548451374538};
 /// Steps per impact duration (as the point formulation's LineContact::limitStep).
 constexpr double kImpactSteps = 40.0;
+constexpr double kPi = 3.141592653589793;
 /// Restitution's smoothing speed v_s as a fraction of omega p0 (restitutionSpeed) [-].
 constexpr double kRestitutionSpeedFraction = 0.1;
 /// ... widened by this fraction of the sliding speed (finishSamples) [-].
@@ -909,7 +910,7 @@ void DistributedContact::commitSamples(double dt) {
         // Three times the whole impact: unloading at e < 1 is slower, by 1 / e on a linear law, so the
         // impact lasts about (1 + 1 / e) / 2 times its time at e = 1 (e taken at least 1/4).
         const double loading = crossingLoadingTime(motion);
-        const double restitution = std::max(0.25, std::sqrt((1.0 - m_hysteresis) / (1.0 + m_hysteresis)));
+        const double restitution = std::max(0.25, m_spec.restitution);
         struck[key] = {1.5 * (1.0 + 1.0 / restitution) * loading, loading / kImpactSteps};
       }
     }
@@ -1192,7 +1193,7 @@ double DistributedContact::crossingLoadingTime(const PairMotion& m) const {
       (work(mid) < target ? lo : hi) = mid;
     }
   }
-  return 3.141592653589793 * (hi - depth) / speed;
+  return kPi * (hi - depth) / speed;
 }
 
 double DistributedContact::impactStepLimit() const {
