@@ -40,10 +40,9 @@ void LineContact::estimateContinuum(const model::State& state, ContactEvent& e) 
                              ->sectionForces(x1, state.triad[static_cast<std::size_t>(el.node1)], x2,
                                              state.triad[static_cast<std::size_t>(el.node2)])
                              .axialForce;
-    const double d = el.type->outerDiameter;
     const bool submerged = 0.5 * (x1.z() + x2.z()) < 0.0;
-    p.massPerLength = el.type->totalMassPerLength() +
-                      (submerged ? el.type->addedMassNormal * rho * 0.25 * kPi * d * d : 0.0);
+    p.massPerLength =
+        el.type->totalMassPerLength() + (submerged ? el.type->normalAddedMassPerLength(rho) : 0.0);
     p.bendingStiffness = el.type->bendingStiffness;
     p.held = held(el.node1) && held(el.node2);
     return p;

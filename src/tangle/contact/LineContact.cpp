@@ -35,7 +35,6 @@ constexpr double kEq5UpdateFraction = 0.0005;
 /// masses measured in the validation cases are 1.5 (three-element bars) to 4.4 (a flexible landing on
 /// another) times the lumped one; larger quotients come from steady loads, not inertia (commitStep).
 constexpr double kDashpotMassGrowth = 10.0;
-constexpr double kPi = 3.141592653589793;
 /// Upper bound of the mass an impact between two lines engages [kg]: the reduced mass of two free lines,
 /// unbounded (+inf) when either is held (LineContact's constructor).
 double pairMassBound(double a, double b) {
@@ -71,8 +70,7 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
           std::min(m_lineStiffness[l], kAutoStiffnessFactor * el.type->axialStiffness / el.restLength);
       // Normal added mass Can rho pi/4 D^2 per unit length over the whole line, submerged or not: the
       // upper bound of the mass an impact can engage (ContactEvents.hpp).
-      const double d = el.type->outerDiameter;
-      m_lineMassWithAdded[l] += el.type->addedMassNormal * rho * 0.25 * kPi * d * d * el.restLength;
+      m_lineMassWithAdded[l] += el.type->normalAddedMassPerLength(rho) * el.restLength;
     }
     for (int n = line.firstNode; n <= line.lastNode(); ++n) m_lineMassWithAdded[l] += model.nodeMass()[n];
   }

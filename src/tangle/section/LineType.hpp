@@ -89,6 +89,11 @@ struct LineType {
   double internalArea() const { return 0.7853981633974483 * internalDiameter * internalDiameter; }
   /// Mass of the contents per unit length rho_c A_i [kg/m].
   double contentsMassPerLength() const { return contentsDensity * internalArea(); }
+  /// Normal added mass per unit length Ca_n rho pi/4 D^2 [kg/m] in a fluid of density rho [kg/m^3], on the
+  /// outer diameter (as Morison's inertia term, hydro/Morison.cpp).
+  double normalAddedMassPerLength(double rho) const {
+    return addedMassNormal * rho * 0.25 * 3.141592653589793 * outerDiameter * outerDiameter;
+  }
   /// Mass per unit length that weighs and moves: the structure's and its contents' [kg/m] (the contents move
   /// with the pipe, axially and transversely: no flow is modelled).
   double totalMassPerLength() const { return massPerLength + contentsMassPerLength(); }
