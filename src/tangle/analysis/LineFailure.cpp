@@ -58,7 +58,7 @@ double LineFailure::tensionThreshold(const model::FailureSpec& failure, std::siz
                                        : failure.tension;
 }
 
-double LineFailure::limitStep(const model::State& state) {
+double LineFailure::limitStep(const model::State& state, double /*step*/) {
   double limit = std::numeric_limits<double>::infinity();
   if (m_justParted) {
     // The step after a break starts small (kRestartFraction of the time step) and regrows twofold per step:

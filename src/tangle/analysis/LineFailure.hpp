@@ -58,7 +58,7 @@ class LineFailure : public solver::LoadContributor {
                      solver::SystemMatrix*) override {}
   /// The time left to the next time trigger [s] (+inf if none is pending); right after a break, a 64th of the
   /// time step (the step then regrows twofold per step).
-  double limitStep(const model::State& state) override;
+  double limitStep(const model::State& state, double step) override;
   /// Checks the triggers at the accepted state of a dynamic step (dt > 0) and parts the lines whose trigger
   /// is reached.
   void commitStep(model::State& state, double dt) override;

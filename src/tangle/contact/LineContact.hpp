@@ -182,7 +182,8 @@ class LineContact final : public solver::LoadContributor {
 
   /// Largest step [s] from this state so that no approaching pair closes by more than a fifth of its
   /// contact radii (no tunnelling) and every active impact is resolved in at least 40 steps (kImpactSteps).
-  double limitStep(const model::State& state) override;
+  /// Pairs that cannot close to touching within twice `step` are not measured (beyondReach).
+  double limitStep(const model::State& state, double step) override;
   /// 1.25 with the distributed formulation while a pair presses or is within the smaller contact radius of
   /// touching (the last limitStep), else the default 2. Its contacts switch the step limit on and off every
   /// few steps as a line rattles on another; steps that doubled after each release and were cut eightfold
@@ -254,6 +255,11 @@ class LineContact final : public solver::LoadContributor {
   void findContacts(const model::State& state, bool dynamic, bool refreshBroadPhase, bool trial);
   /// Broad-phase margin [m] at a state: the largest radius plus what a node can move in 4 nominal steps.
   double broadPhaseMargin(const model::State& state, bool dynamic) const;
+  /// Whether two elements' curves cannot close to touching within 2 `step` [s] (limitStep), from their
+  /// chords' gap `chordGap` [m] (the chords' distance less the radii) and bounds of the curves' straying and
+  /// speeds; false where they may come within `engaged` [m] (the smaller radius) or the curves are not kept.
+  bool beyondReach(const model::State& state, int elementA, int elementB, double chordGap, double engaged,
+                   double step) const;
   /// Rebuilds the proxies and the candidate pairs with the current margin.
   void refreshCandidates(const model::State& state) { m_search.refresh(state, m_margin); }
   void applyImpulse(model::State& state, const ContactPoint& c, double impulse) const;

@@ -74,6 +74,18 @@ double chordDeviationBound(const ElementCurve& c, const std::vector<Vec3>& x) {
   return 4.0 / 27.0 * ((m1 - d).norm() + (m2 - d).norm());
 }
 
+double searchRangeDeviationBound(const ElementCurve& c, const std::vector<Vec3>& x) {
+  if (!c.smooth) return 0.0;
+  return chordDeviationBound(c, x) + kParameterOverlap * (x[c.node[2]] - x[c.node[1]]).norm();
+}
+
+double centrelineWeightBound(const ElementCurve& c) {
+  if (!c.smooth) return 1.0;
+  return 1.0 + 4.0 / 27.0 *
+                   (std::abs(c.a0) + std::abs(c.a1) + std::abs(c.a2) + std::abs(c.b1) + std::abs(c.b2) +
+                    std::abs(c.b3));
+}
+
 CentrelineStencil centrelineStencil(const model::Model& model, int element, double s, bool smoothCables) {
   return centrelineStencil(elementCurve(model, element, smoothCables), s);
 }

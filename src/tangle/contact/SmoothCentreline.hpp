@@ -129,6 +129,15 @@ inline Vec3 centrelinePoint(const ElementCurve& c, double s, const std::vector<V
 /// (0 for a chord). A cheap test that two pieces cannot touch: their chords farther apart than the radii
 /// plus both bounds.
 double chordDeviationBound(const ElementCurve& curve, const std::vector<Vec3>& position);
+/// Largest distance [m] of the piece from its chord over its whole search range (centrelineDistance: [0, 1]
+/// widened by kParameterOverlap at interior nodes): chordDeviationBound, which holds there too (|h10|, |h11|
+/// <= 4/27 on [-0.05, 1.05]), plus the chord's line past its ends, kParameterOverlap |x2 - x1| (0 on a
+/// chord, searched on [0, 1]). Two pieces' curves are no closer than their chords less both bounds.
+double searchRangeDeviationBound(const ElementCurve& curve, const std::vector<Vec3>& position);
+/// Bound of sum_k |N_k(s)| [-] over the piece's search range: a value interpolated on the curve (a velocity)
+/// is at most this times the largest of its four nodes' values. h00 + h01 = 1 with both >= 0 there, and
+/// |h10|, |h11| <= 4/27: 1 + 4/27 (|a0| + |a1| + |a2| + |b1| + |b2| + |b3|) (1 on a chord).
+double centrelineWeightBound(const ElementCurve& curve);
 
 /// Stencil of the smooth centreline (the chord's linear interpolation for a cable) on `element` at parameter
 /// s (s may lie a little outside [0, 1]: the cubic is extrapolated).

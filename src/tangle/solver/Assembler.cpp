@@ -226,9 +226,9 @@ std::string Assembler::rejectState(const model::State& state) {
   return {};
 }
 
-double Assembler::limitStep(const model::State& state) {
+double Assembler::limitStep(const model::State& state, double step) {
   double limit = std::numeric_limits<double>::infinity();
-  for (LoadContributor* c : m_contributors) limit = std::min(limit, c->limitStep(state));
+  for (LoadContributor* c : m_contributors) limit = std::min(limit, c->limitStep(state, step));
   return limit;
 }
 

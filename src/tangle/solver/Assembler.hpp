@@ -45,7 +45,7 @@ class Assembler {
   /// Forwards LoadContributor::rejectState: the first contributor's reason, empty if none.
   std::string rejectState(const model::State& state);
   /// The smallest LoadContributor::limitStep [s] (+inf if none limits).
-  double limitStep(const model::State& state);
+  double limitStep(const model::State& state, double step);
   /// The smallest LoadContributor::maxStepGrowth [-] (2 if none is stricter).
   double maxStepGrowth() const;
   /// Forwards LoadContributor::rejectStep: the first contributor's reason, empty if none.

@@ -144,8 +144,12 @@ class LoadContributor {
   /// Statics: a load increment has converged at `state`; commit path-dependent data (trial -> committed).
   virtual void commitIncrement(const model::State& /*state*/) {}
   /// Dynamics: the largest time step [s] this contributor allows from `state` (e.g. so that an impact is
-  /// resolved in enough steps); +inf for no limit.
-  virtual double limitStep(const model::State& /*state*/) { return std::numeric_limits<double>::infinity(); }
+  /// resolved in enough steps); +inf for no limit. `step` [s] is the longest step that can be taken from
+  /// `state`: the answer is only compared with it, so any value >= step says "no limit" (a contributor may
+  /// skip what cannot limit a step that long).
+  virtual double limitStep(const model::State& /*state*/, double /*step*/) {
+    return std::numeric_limits<double>::infinity();
+  }
   /// Dynamics: the largest ratio [-] of a time step to the one before it that this contributor allows (the
   /// step controller's default is 2; DynamicAnalysis), asked after limitStep at the same state.
   virtual double maxStepGrowth() const { return 2.0; }

@@ -126,7 +126,11 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
       return false;
     }
     double h = std::min(dt, end - state.time);
-    if (m_stepControl) h = std::min(h, std::max(m_settings.minTimeStep, m_assembler->limitStep(state)));
+    // The limits are asked about the longest step that can follow (the growth below is at most twofold):
+    // whatever they answer at or above it changes nothing (Assembler::maxStepGrowth <= 2).
+    if (m_stepControl)
+      h = std::min(
+          h, std::max(m_settings.minTimeStep, m_assembler->limitStep(state, std::min(h, 2.0 * lastStep))));
     // The largest ratio of a step to the one before it: 2, or less where a contributor asks (the distributed
     // contact in contact, LineContact::maxStepGrowth; asked after limitStep, which sees the state).
     h = std::min(h, (m_stepControl ? m_assembler->maxStepGrowth() : 2.0) * lastStep);

@@ -352,7 +352,7 @@ double HullContact::bodiesMass(const model::State& state, const Pair& pair, cons
   return flexibility > 0.0 ? 1.0 / flexibility : kInf;
 }
 
-double HullContact::limitStep(const model::State& state) {
+double HullContact::limitStep(const model::State& state, double /*step*/) {
   // Per pair: in contact (the points touching) or closing on it within three of the last steps.
   std::vector<int> touching(m_pairs.size(), 0);
   std::vector<char> near(m_pairs.size(), 0);

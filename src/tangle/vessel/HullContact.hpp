@@ -59,7 +59,7 @@ class HullContact final : public solver::LoadContributor {
   /// the nodes of elements within 2 m of a hull at the last whole assembly, and the hulls' vessel nodes).
   bool supportsParts() const override { return true; }
   bool markLoadedNodes(std::vector<char>& mark) const override;
-  double limitStep(const model::State& state) override;
+  double limitStep(const model::State& state, double step) override;
   void commitStep(model::State& state, double dt) override;
   void finish(double time) override;
 
