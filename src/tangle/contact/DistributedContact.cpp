@@ -11,6 +11,7 @@
 #include "tangle/contact/ContactKinematics.hpp"
 #include "tangle/contact/ContinuumImpactMass.hpp"
 #include "tangle/contact/ReducedMass.hpp"
+#include "tangle/core/Units.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 
 namespace tangle::contact {
@@ -27,7 +28,6 @@ constexpr double kGaussW[kPoints] = {0.3478548451374538, 0.6521451548625461, 0.6
                                      0.3478548451374538};
 /// Steps per impact duration (as the point formulation's LineContact::limitStep).
 constexpr double kImpactSteps = 40.0;
-constexpr double kPi = 3.141592653589793;
 /// Restitution's smoothing speed v_s as a fraction of omega p0 (restitutionSpeed) [-].
 constexpr double kRestitutionSpeedFraction = 0.1;
 /// ... widened by this fraction of the sliding speed (finishSamples) [-].
@@ -374,9 +374,7 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   // Each piece of the C1 centreline (below): first with the gap between the chords' bounding boxes, which
   // the chords' distance is at least (most candidate pairs end here, without the distance).
   const double reach = radii + chordBound(state, slave) + chordBound(state, master);
-  const Vec3 boxGap =
-      (b0.cwiseMin(b1) - a0.cwiseMax(a1)).cwiseMax(a0.cwiseMin(a1) - b0.cwiseMax(b1)).cwiseMax(0.0);
-  if (boxGap.squaredNorm() >= reach * reach) return false;
+  if (geometry::segmentBoxGap(a0, a1, b0, b1) >= reach) return false;
   const geometry::SegmentDistanceResult chords = geometry::segmentDistance(a0, a1, b0, b1);
   // Each piece of the C1 centreline (xi, t in [0, 1], the ranges the gap is measured on) lies within its
   // chordDeviationBound of its chord: pieces whose chords are farther apart than the radii and both bounds
@@ -1063,15 +1061,12 @@ double DistributedContact::limitIncrement(const model::State& state, const std::
     // separation u keeps u . u0 >= D0 (D0 - m) > 0 (the points a - b of two segments form a convex set, u0
     // its point nearest the origin, so q . u0 >= D0^2 for each of its points q, and u lies within m of one).
     // D0 is at least the gap between the chords' bounding boxes; half of each bound for round-off.
-    {
-      const Vec3 &a0 = state.position[ea.node1], &a1 = state.position[ea.node2];
-      const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
-      const Vec3 boxGap =
-          (b0.cwiseMin(b1) - a0.cwiseMax(a1)).cwiseMax(a0.cwiseMin(a1) - b0.cwiseMax(b1)).cwiseMax(0.0);
-      const double reach = alpha * (std::max(move[ea.node1].norm(), move[ea.node2].norm()) +
-                                    std::max(move[eb.node1].norm(), move[eb.node2].norm()));
-      if (reach < 0.5 * boxGap.norm() && reach <= 0.5 * kClosingFraction * radii) continue;
-    }
+    const double reach = alpha * (std::max(move[ea.node1].norm(), move[ea.node2].norm()) +
+                                  std::max(move[eb.node1].norm(), move[eb.node2].norm()));
+    if (reach <= 0.5 * kClosingFraction * radii &&
+        reach < 0.5 * geometry::segmentBoxGap(state.position[ea.node1], state.position[ea.node2],
+                                              state.position[eb.node1], state.position[eb.node2]))
+      continue;
     const geometry::SegmentDistanceResult before =
         geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
                                   state.position[eb.node1], state.position[eb.node2]);

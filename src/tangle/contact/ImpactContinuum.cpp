@@ -11,11 +11,11 @@
 #include "tangle/contact/ContinuumImpactMass.hpp"
 #include "tangle/contact/DistributedContact.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/core/Units.hpp"
 
 namespace tangle::contact {
 
 namespace {
-constexpr double kPi = 3.141592653589793;
 /// Largest patch half-length of a point impact as a fraction of the shorter participating length [-]: the
 /// impedance is that of a point force; a crossing's patch spreads the force over +-u*, which leaves the
 /// point's answer unchanged while u* is small beside the length whose mass takes part.
@@ -89,7 +89,7 @@ void LineContact::estimateContinuum(const model::State& state, ContactEvent& e) 
     e.continuumNote = fmt::format(
         "a contact along a length, not a point: crossing at {:.3g} deg, patch half-length {:.3g} m against "
         "a participating length of {:.3g} m",
-        std::asin(std::min(1.0, sine)) * 180.0 / kPi, patch, shorter);
+        radToDeg(std::asin(std::min(1.0, sine))), patch, shorter);
     return;
   }
   // An infinite line: its waves must not meet an end, a support, a lump or a change of section within the

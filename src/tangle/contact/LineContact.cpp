@@ -1010,8 +1010,8 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
     for (int j = 0; j < lb.elementCount; ++j) {
       if (j % kBlock == 0) {
         const std::size_t k = static_cast<std::size_t>(j / kBlock);
-        const Vec3 gapBlock = (lo - blockHi[k]).cwiseMax(blockLo[k] - hi).cwiseMax(0.0);
-        if (gapBlock.norm() - ra - blockRadius[k] > std::min({best[0], m_spec.clearanceMargin, seed})) {
+        if (geometry::boxGap(lo, hi, blockLo[k], blockHi[k]) - ra - blockRadius[k] >
+            std::min({best[0], m_spec.clearanceMargin, seed})) {
           j += kBlock - 1;
           continue;
         }
@@ -1022,8 +1022,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
       const Vec3& b1 = state.position[eb.node2];
       const double rb = m_radius[lb.firstElement + j];
       // Box distance lower bound: skip pairs that cannot beat the best (or the margin).
-      const Vec3 gapBox = (lo - b0.cwiseMax(b1)).cwiseMax(b0.cwiseMin(b1) - hi).cwiseMax(0.0);
-      const double bound = gapBox.norm() - ra - rb;
+      const double bound = geometry::boxGap(lo, hi, b0.cwiseMin(b1), b0.cwiseMax(b1)) - ra - rb;
       if (bound > std::min({best[0], m_spec.clearanceMargin, seed})) continue;
       const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
       const double gap = d.distance - ra - rb;

@@ -87,4 +87,14 @@ struct SegmentDistanceResult {
 /// Reference: D. Eberly, "Distance Between Two Line Segments in 3D", Geometric Tools (2005).
 SegmentDistanceResult segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
 
+/// Gap [m] between two axis-aligned boxes [loA, hiA] and [loB, hiB] (0 where they overlap): a lower bound of
+/// the distance between anything inside them, far cheaper than segmentDistance, for culling.
+inline double boxGap(const Vec3& loA, const Vec3& hiA, const Vec3& loB, const Vec3& hiB) {
+  return (loB - hiA).cwiseMax(loA - hiB).cwiseMax(0.0).norm();
+}
+/// boxGap of the bounding boxes of segments p0 p1 and q0 q1 [m]: at most segmentDistance.
+inline double segmentBoxGap(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
+  return boxGap(p0.cwiseMin(p1), p0.cwiseMax(p1), q0.cwiseMin(q1), q0.cwiseMax(q1));
+}
+
 }  // namespace tangle::geometry
