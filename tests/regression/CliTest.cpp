@@ -232,6 +232,51 @@ TEST(Cli, StaticRunWritesResults) {
   EXPECT_EQ(rows, 201);  // 200 elements
 }
 
+// A mooring chain laid across a pipeline on the seabed: the program's start shapes pass through each other
+// and the later line (the chain) is laid over the earlier one before statics; the log says which, where and
+// how to choose otherwise, and the static chain rests on the pipeline (SeabedCrossingTest has the physics).
+TEST(Cli, CrossedStartShapesAreLaidOverAndTheLogSaysSo) {
+  const fs::path dir = modelFolder("tangle_cli_crossing", R"(title: chain across a pipeline
+environment:
+  water_depth: 100
+  seabed: {normal_stiffness: 1.0e5, friction_coefficient: 0.5}
+line_types:
+  - {name: chain76, outer_diameter: 0.1368, mass_per_length: 114.9, axial_stiffness: 4.93e8}
+  - {name: pipe16, outer_diameter: 0.4064, mass_per_length: 250, axial_stiffness: 6.0e9, bending_stiffness: 1.2e8, torsional_stiffness: 9.0e7}
+lines:
+  - name: pipeline
+    end_a: {type: anchored, position: [0, -150, -100]}
+    end_b: {type: anchored, position: [0, 150, -100]}
+    sections: [{type: pipe16, length: 300, elements: 60}]
+  - name: chain
+    end_a: {type: anchored, position: [-250, 0, -100]}
+    end_b: {type: pinned, position: [250, 0, -10]}
+    sections: [{type: chain76, length: 560, elements: 112}]
+contact: {}
+)");
+  const fs::path out = dir / "out";
+  const Outcome o =
+      runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --statics-only --no-plots");
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("start shapes: line 'chain' laid over line 'pipeline' at 249.99 m along 'chain'"),
+            std::string::npos)
+      << o.output;
+  EXPECT_NE(o.output.find("list them the other way round or give lines[chain].start_shape"),
+            std::string::npos)
+      << o.output;
+  // The chain's node at the crossing (arc 250 m, x = 0) lies above the pipeline's top (z = -100 + 0.41 m).
+  std::ifstream csv(out / "statics" / "chain.csv");
+  std::string row;
+  std::getline(csv, row);
+  double crossingZ = -1e9;
+  while (std::getline(csv, row)) {
+    double arc = 0.0, x = 0.0, y = 0.0, z = 0.0;
+    ASSERT_EQ(std::sscanf(row.c_str(), "%lf,%lf,%lf,%lf", &arc, &x, &y, &z), 4) << row;
+    if (std::abs(arc - 250.0) < 1e-6) crossingZ = z;
+  }
+  EXPECT_GT(crossingZ, -100.0 + 0.4064);
+}
+
 // Issue 45: a transient run (examples/drilling-riser-drift: the DP unit drifts 85 m, the mooring line's
 // tension mean moves between the halves of its record) says once that it has no storm extremes, and why,
 // and lists the largest values seen, instead of a reason per line end, vessel and pair; the storm's files

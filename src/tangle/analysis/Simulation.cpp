@@ -46,7 +46,10 @@ Simulation::Simulation(model::ModelSpec spec)
     m_failure = std::make_unique<LineFailure>(*m_model, *m_assembler, m_contact.get());
     m_assembler->addContributor(m_failure.get());
   }
-  if (m_contact) checkStartShapes();
+  if (m_contact) {
+    checkStartShapes();
+    m_startPositions = m_state.position;  // solveStatics lays crossed start shapes if still these
+  }
 }
 
 void Simulation::checkStartShapes() const {
@@ -103,6 +106,14 @@ solver::StaticResult Simulation::solveStatics(bool progress) {
       if (own) sim->m_staticsProgress = nullptr;
     }
   } release{this, ownProgress.has_value()};
+  // The program's start shapes that pass through each other, laid one over the other, unless the caller
+  // has replaced the start state (a test, a script): then its state is the caller's.
+  if (!m_startPositions.empty()) {
+    if (m_state.position == m_startPositions)
+      m_startShapeLifts = contact::liftCrossedStartShapes(*m_model, *m_contact, m_state);
+    m_startPositions.clear();
+    m_startPositions.shrink_to_fit();
+  }
   if (m_model->spec().statics.skip) {
     // statics.method: none. The seabed's friction anchors and the contributors start from this shape as they
     // would from an equilibrium.

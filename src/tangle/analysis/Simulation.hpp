@@ -8,6 +8,7 @@
 
 #include "tangle/analysis/LineFailure.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/contact/StartShapeCrossings.hpp"
 #include "tangle/core/ConsoleProgress.hpp"
 #include "tangle/hydro/HydroLoads.hpp"
 #include "tangle/model/Model.hpp"
@@ -41,6 +42,10 @@ class Simulation {
   const LineFailure* lineFailure() const { return m_failure.get(); }
   /// The current state (initial shape, static equilibrium after solveStatics, then the dynamic state).
   model::State& state() { return m_state; }
+  /// The program's start shapes that passed through each other and were laid one over the other
+  /// (contact::liftCrossedStartShapes) by the first solveStatics, for the run log. That solve lays them only
+  /// when the state is still the initial one (a caller that set its own start state keeps it).
+  const std::vector<contact::StartShapeLift>& startShapeLifts() const { return m_startShapeLifts; }
 
   /// Static equilibrium from the initial shape; when the Newton solve fails, from the shape reached by
   /// dynamic relaxation (time::DynamicRelaxation; not for models with line contact or free vessels).
@@ -97,6 +102,8 @@ class Simulation {
   std::unique_ptr<vessel::HullContact> m_hullContact;
   std::unique_ptr<LineFailure> m_failure;
   model::State m_state;
+  std::vector<contact::StartShapeLift> m_startShapeLifts;
+  std::vector<Vec3> m_startPositions;  // the initial positions until the first solveStatics (with contact)
   core::ConsoleProgress* m_staticsProgress = nullptr;  // progress lines of the statics under way (solveStatics)
   bool m_coarseFallback = true;  ///< false in the coarse model of solveFromCoarserMesh (no recursion)
   mutable std::vector<solver::LineSnapshot> m_sectionSnapshot;  // sectionSnapshot's buffer

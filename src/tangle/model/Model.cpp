@@ -506,29 +506,34 @@ State Model::initialState() const {
                            seabed::Seabed::restingPenetration(w, env.seabed.normalStiffness));
     }
 
-    // Triads: first one from the initial tangent, then parallel transport along the line so that
-    // the initial shape carries no twist (Bishop frame).
-    auto tangentAt = [&](int i) {
-      const int a = line.firstNode + std::max(i - 1, 0);
-      const int b = line.firstNode + std::min(i + 1, line.nodeCount - 1);
-      Vec3 t = s.position[b] - s.position[a];
-      if (t.norm() < 1e-12) t = Vec3::UnitX();
-      return Vec3(t.normalized());
-    };
-    Vec3 prev = tangentAt(0);
-    Mat3 q = geometry::frameFromTangent(prev, Vec3::UnitZ());
-    for (int i = 0; i < line.nodeCount; ++i) {
-      const Vec3 t = tangentAt(i);
-      q = geometry::rotationBetween(prev, t) * q;
-      s.triad[line.firstNode + i] = q;
-      prev = t;
-    }
+    setLineTriads(l, s);
   }
   for (int v = 0; v < static_cast<int>(m_vesselNode.size()); ++v) {
     s.position[m_vesselNode[v]] = m_spec->vessels[v].position;
     s.triad[m_vesselNode[v]] = vesselRotation(v);
   }
   return s;
+}
+
+void Model::setLineTriads(int lineIndex, State& s) const {
+  const Line& line = m_lines.at(static_cast<std::size_t>(lineIndex));
+  // Triads: first one from the initial tangent, then parallel transport along the line so that
+  // the initial shape carries no twist (Bishop frame).
+  auto tangentAt = [&](int i) {
+    const int a = line.firstNode + std::max(i - 1, 0);
+    const int b = line.firstNode + std::min(i + 1, line.nodeCount - 1);
+    Vec3 t = s.position[b] - s.position[a];
+    if (t.norm() < 1e-12) t = Vec3::UnitX();
+    return Vec3(t.normalized());
+  };
+  Vec3 prev = tangentAt(0);
+  Mat3 q = geometry::frameFromTangent(prev, Vec3::UnitZ());
+  for (int i = 0; i < line.nodeCount; ++i) {
+    const Vec3 t = tangentAt(i);
+    q = geometry::rotationBetween(prev, t) * q;
+    s.triad[line.firstNode + i] = q;
+    prev = t;
+  }
 }
 
 double Model::lineMass(int lineIndex) const {

@@ -134,6 +134,9 @@ class Model {
 
   /// The initial state: catenary/straight shapes, triads by parallel transport, zero velocity.
   State initialState() const;
+  /// Sets the triads of a line's nodes in `state` from its node positions: the first from the tangent
+  /// there, the others by parallel transport along the line (a Bishop frame: no twist).
+  void setLineTriads(int line, State& state) const;
 
   /// Total structural mass [kg] and submerged weight [N] (if fully submerged) of a line.
   double lineMass(int line) const;

@@ -23,6 +23,7 @@
 #include "tangle/analysis/SeabedImpacts.hpp"
 #include "tangle/contact/ClashReport.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
+#include "tangle/contact/StartShapeCrossings.hpp"
 #include "tangle/contact/StaticContactReport.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/core/JsonWriter.hpp"
@@ -294,6 +295,7 @@ bool RunOutputs::writeStatics() {
     for (const analysis::LineBreak& b : failure->breaks()) log.info(b.description + "\n");
 
   const solver::StaticResult result = sim.solveStatics(m_options.progress);
+  for (const contact::StartShapeLift& lift : sim.startShapeLifts()) log.info(lift.describe(m) + "\n");
   for (const std::string& w : result.warnings) log.warning("warning: " + w + "\n");
   m_static = sim.snapshot();
   const std::vector<solver::LineSnapshot>& lines = m_static;
