@@ -13,6 +13,7 @@
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/core/JsonWriter.hpp"
 #include "tangle/core/OutputFile.hpp"
+#include "tangle/geometry/SegmentDistance.hpp"
 
 namespace tangle::contact {
 
@@ -488,6 +489,163 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
 
 void ClearanceEnvelope::recordStatic(const model::State& state) {
   for (Side& s : m_sides) s.staticClearance = nodeClearance(state, s.line, s.other);
+  for (std::size_t p = 0; p < m_pairs.size(); ++p) {
+    const double nodes = minimum(p, false).clearance;
+    const double bulge = bulgeBound(state, p);
+    const Crossing c = onCurves(state, p, crossingSearch(state, p, nodes + bulge, {}, false), bulge);
+    if (c.segmentA >= 0 && c.clearance < nodes) recordCrossing(state, p, c, false);
+  }
+}
+
+ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State& state, std::size_t pair,
+                                                              double searched, const CrossingWindow& window,
+                                                              bool inside) const {
+  const Side& sideA = m_sides[2 * pair];
+  const model::Line& a = m_model->lines()[static_cast<std::size_t>(sideA.line)];
+  const model::Line& b = m_model->lines()[static_cast<std::size_t>(sideA.other)];
+  const auto& elements = m_model->elements();
+  const SegmentRule rule = segmentRule(state, sideA.line, sideA.other);
+  const int segmentsA = a.nodeCount - 1, segmentsB = b.nodeCount - 1;
+  Crossing best;
+  best.clearance = searched;
+  // Segment i of a against segment j of b (the window decides which pairs are in this search).
+  const auto measure = [&](int i, int j) {
+    const bool near =
+        std::abs(i - window.segmentA) <= kCrossingWindow && std::abs(j - window.segmentB) <= kCrossingWindow;
+    if (window.segmentA >= 0 && near != inside) return;
+    const int ea = a.firstElement + i, eb = b.firstElement + j;
+    const double ra = 0.5 * elements[static_cast<std::size_t>(ea)].type->contactDiameter;
+    const double rb = 0.5 * elements[static_cast<std::size_t>(eb)].type->contactDiameter;
+    const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
+    const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
+    if (!(geometry::segmentBoxGap(a0, a1, b0, b1) - ra - rb < best.clearance)) return;
+    if (rule.parted->parted(static_cast<std::size_t>(ea), state.time) ||
+        rule.parted->parted(static_cast<std::size_t>(eb), state.time))
+      return;
+    if (!rule.everyPair && !m_exclusions->elementPairAllowed(ea, eb)) return;
+    const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
+    const double clearance = d.distance - ra - rb;
+    if (clearance < best.clearance) best = {clearance, i, j, d.s, d.t};
+  };
+  if (inside && window.segmentA >= 0) {  // the window alone
+    for (int i = std::max(window.segmentA - kCrossingWindow, 0);
+         i <= std::min(window.segmentA + kCrossingWindow, segmentsA - 1); ++i)
+      for (int j = std::max(window.segmentB - kCrossingWindow, 0);
+           j <= std::min(window.segmentB + kCrossingWindow, segmentsB - 1); ++j)
+        measure(i, j);
+    return best;
+  }
+  // Boxes of blocks of kBlock segments on each line, grown by their largest contact radius: two blocks
+  // whose boxes are at least the best clearance so far apart hold no pair of segments below it (the box gap
+  // is a lower bound of the distance of any two points in them).
+  constexpr int kBlock = 8;
+  struct Block {
+    Vec3 lo, hi;
+  };
+  const auto blocksOf = [&](const model::Line& line, int segments) {
+    std::vector<Block> blocks(static_cast<std::size_t>((segments + kBlock - 1) / kBlock));
+    for (std::size_t k = 0; k < blocks.size(); ++k) {
+      const int first = static_cast<int>(k) * kBlock, last = std::min(first + kBlock, segments);
+      Vec3 lo = state.position[line.firstNode + first], hi = lo;
+      double radius = 0.0;
+      for (int j = first; j < last; ++j) {
+        lo = lo.cwiseMin(state.position[line.firstNode + j + 1]);
+        hi = hi.cwiseMax(state.position[line.firstNode + j + 1]);
+        radius = std::max(
+            radius, 0.5 * elements[static_cast<std::size_t>(line.firstElement + j)].type->contactDiameter);
+      }
+      blocks[k] = {lo.array() - radius, hi.array() + radius};
+    }
+    return blocks;
+  };
+  if (segmentsA <= 0 || segmentsB <= 0) return best;
+  const std::vector<Block> blocksA = blocksOf(a, segmentsA), blocksB = blocksOf(b, segmentsB);
+  for (std::size_t ka = 0; ka < blocksA.size(); ++ka)
+    for (std::size_t kb = 0; kb < blocksB.size(); ++kb) {
+      const Vec3 apart =
+          (blocksA[ka].lo - blocksB[kb].hi).cwiseMax(blocksB[kb].lo - blocksA[ka].hi).cwiseMax(0.0);
+      if (!(apart.norm() < best.clearance)) continue;
+      const int firstA = static_cast<int>(ka) * kBlock, lastA = std::min(firstA + kBlock, segmentsA);
+      const int firstB = static_cast<int>(kb) * kBlock, lastB = std::min(firstB + kBlock, segmentsB);
+      for (int i = firstA; i < lastA; ++i)
+        for (int j = firstB; j < lastB; ++j) measure(i, j);
+    }
+  return best;
+}
+
+ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& state, std::size_t pair,
+                                                        const Crossing& c, double bulge) const {
+  const Side& sideA = m_sides[2 * pair];
+  const model::Line& a = m_model->lines()[static_cast<std::size_t>(sideA.line)];
+  const model::Line& b = m_model->lines()[static_cast<std::size_t>(sideA.other)];
+  const bool smoothCables = m_model->spec().contact.smoothCables();
+  if (c.segmentA < 0 || !(c.clearance < bulge)) return c;
+  const bool curveA = hasSmoothCentreline(*m_model, a.firstElement + c.segmentA, smoothCables);
+  const bool curveB = hasSmoothCentreline(*m_model, b.firstElement + c.segmentB, smoothCables);
+  if (!curveA && !curveB) return c;
+  // The curves the contact measures (SmoothCentreline.hpp) near the nearest chords: their joint minimum on
+  // the chords' elements and their neighbours (a wire kinked over a riser at a node: 42 mm into it on the
+  // chords, 6 mm on the curves, the contact's). A line on chords stays there (its parameter held at the
+  // chords' closest point).
+  const auto& elements = m_model->elements();
+  const SegmentRule rule = segmentRule(state, sideA.line, sideA.other);
+  Crossing best = c;
+  best.clearance = kInf;
+  for (int i = std::max(c.segmentA - 1, 0); i <= std::min(c.segmentA + 1, a.nodeCount - 2); ++i)
+    for (int j = std::max(c.segmentB - 1, 0); j <= std::min(c.segmentB + 1, b.nodeCount - 2); ++j) {
+      const int ea = a.firstElement + i, eb = b.firstElement + j;
+      if (rule.parted->parted(static_cast<std::size_t>(ea), state.time) ||
+          rule.parted->parted(static_cast<std::size_t>(eb), state.time) ||
+          (!rule.everyPair && !m_exclusions->elementPairAllowed(ea, eb)))
+        continue;
+      const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
+      const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
+      const geometry::SegmentDistanceResult chords = geometry::segmentDistance(a0, a1, b0, b1);
+      const CentrelineDistance d = centrelineDistance(*m_model, state.position, ea, eb, chords.s, chords.t,
+                                                      !curveA, !curveB, smoothCables);
+      const double clearance = d.distance -
+                               0.5 * elements[static_cast<std::size_t>(ea)].type->contactDiameter -
+                               0.5 * elements[static_cast<std::size_t>(eb)].type->contactDiameter;
+      if (clearance < best.clearance)
+        best = {clearance, i, j, std::clamp(d.s, 0.0, 1.0), std::clamp(d.t, 0.0, 1.0)};
+    }
+  return std::isfinite(best.clearance) ? best : c;
+}
+
+double ClearanceEnvelope::bulgeBound(const model::State& state, std::size_t pair) const {
+  // How far a curve lies off its chord at most (chordDeviationBound: from the element's nodes and its
+  // neighbours'), the largest of each line's elements measured on one, both lines together.
+  const bool smoothCables = m_model->spec().contact.smoothCables();
+  if (m_curves.empty()) m_curves = elementCurves(*m_model, smoothCables);
+  double bound = 0.0;
+  for (const int l : {m_sides[2 * pair].line, m_sides[2 * pair].other}) {
+    const model::Line& line = m_model->lines()[static_cast<std::size_t>(l)];
+    double largest = 0.0;
+    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
+      if (hasSmoothCentreline(*m_model, e, smoothCables))
+        largest =
+            std::max(largest, chordDeviationBound(m_curves[static_cast<std::size_t>(e)], state.position));
+    bound += largest;
+  }
+  return bound;
+}
+
+void ClearanceEnvelope::recordCrossing(const model::State& state, std::size_t pair, const Crossing& c,
+                                       bool dynamic) {
+  // The node of each line nearest the closest points.
+  Side& sideA = m_sides[2 * pair];
+  Side& sideB = m_sides[2 * pair + 1];
+  const std::size_t nodeA = static_cast<std::size_t>(c.segmentA + (c.s > 0.5 ? 1 : 0));
+  const std::size_t nodeB = static_cast<std::size_t>(c.segmentB + (c.t > 0.5 ? 1 : 0));
+  for (const auto& [side, node] : {std::pair<Side*, std::size_t>{&sideA, nodeA}, {&sideB, nodeB}}) {
+    if (!dynamic) {
+      side->staticClearance[node] = std::min(side->staticClearance[node], c.clearance);
+    } else if (c.clearance < side->dynamicClearance[node]) {
+      side->dynamicClearance[node] = c.clearance;
+      side->timeOfMinimum[node] = state.time;
+    }
+  }
+  if (dynamic) m_pairMinimum[pair] = std::min(m_pairMinimum[pair], c.clearance);
 }
 
 void ClearanceEnvelope::record(const model::State& state) {
@@ -579,6 +737,51 @@ void ClearanceEnvelope::record(const model::State& state) {
       }
       newValue(i, c[i]);
     }
+  }
+  // The crossing pass (file comment), where the pair's chords may have come nearer than its minimum: its
+  // last bound less how far both lines have moved since.
+  // A whole search looks up to a slack above the minimum (a tenth of it, plus the two lines' largest contact
+  // radii), and apart from the window of kCrossingWindow segments either side of the nearest pair, so that
+  // while the lines have moved less than those bounds' room since, the pair is let off, or only its window
+  // is searched (a whole search at every step, up to the minimum alone, was 3.6 % of drift-into-spread's run:
+  // two lines in contact are at their minimum at every step).
+  if (m_crossings.size() != m_pairs.size()) {
+    m_crossings.assign(m_pairs.size(), CrossingBounds{});
+    for (std::size_t p = 0; p < m_pairs.size(); ++p) {
+      for (const int l : {m_sides[2 * p].line, m_sides[2 * p].other}) {
+        const model::Line& line = lines[static_cast<std::size_t>(l)];
+        double r = 0.0;
+        for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
+          r = std::max(r, 0.5 * m_model->elements()[static_cast<std::size_t>(e)].type->contactDiameter);
+        m_crossings[p].slack += r;
+      }
+    }
+  }
+  for (std::size_t p = 0; p < m_pairs.size(); ++p) {
+    CrossingBounds& k = m_crossings[p];
+    const double travel = m_travel[static_cast<std::size_t>(m_sides[2 * p].line)] +
+                          m_travel[static_cast<std::size_t>(m_sides[2 * p].other)];
+    // The chords' bounds less how far the lines have moved since, and less how far their curves may lie
+    // off them [m].
+    const double room = travel - k.travel + k.bulge;
+    const double minimum = m_pairMinimum[p];
+    if (k.bound - room >= minimum) continue;
+    if (k.window.segmentA >= 0 && k.outside - room >= minimum) {
+      const Crossing c =
+          onCurves(state, p, crossingSearch(state, p, minimum + k.bulge, k.window, true), k.bulge);
+      if (c.segmentA >= 0 && c.clearance < minimum) recordCrossing(state, p, c, true);
+      continue;
+    }
+    k.bulge = bulgeBound(state, p);
+    const double searched = minimum + 0.1 * std::max(minimum, 0.0) + k.slack + k.bulge;
+    const Crossing nearest = crossingSearch(state, p, searched, {}, false);
+    k.travel = travel;
+    k.bound = nearest.clearance;
+    k.window = {nearest.segmentA, nearest.segmentB};
+    k.outside =
+        nearest.segmentA >= 0 ? crossingSearch(state, p, searched, k.window, false).clearance : searched;
+    const Crossing c = onCurves(state, p, nearest, k.bulge);
+    if (c.segmentA >= 0 && c.clearance < minimum) recordCrossing(state, p, c, true);
   }
 }
 
