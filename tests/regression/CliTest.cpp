@@ -277,6 +277,34 @@ contact: {}
   EXPECT_GT(crossingZ, -100.0 + 0.4064);
 }
 
+// The no-collision check of two pipes crossing 0.3 m apart between nodes of both (9 elements of 11.1 m
+// each, the crossing mid-element): the terminal's FAIL against a required 0.5 m (the nodes alone read 5.3 m
+// and passed before the crossing pass, ClearanceEnvelope.hpp).
+TEST(Cli, ClearanceCheckFailsTwoLinesCrossingBetweenNodes) {
+  const fs::path dir = modelFolder("tangle_cli_crossing_clearance", R"(title: two pipes crossing mid-element
+environment:
+  water_depth: 200
+line_types:
+  - {name: pipe, outer_diameter: 0.3, mass_per_length: 50, axial_stiffness: 1.0e9, bending_stiffness: 1.0e6, torsional_stiffness: 1.0e6}
+lines:
+  - name: a
+    end_a: {type: fixed, position: [-50, 0, -50]}
+    end_b: {type: fixed, position: [50, 0, -50]}
+    sections: [{type: pipe, length: 100, elements: 9}]
+  - name: b
+    end_a: {type: fixed, position: [0, -50, -49.4]}
+    end_b: {type: fixed, position: [0, 50, -49.4]}
+    sections: [{type: pipe, length: 100, elements: 9}]
+contact: {}
+clearance: {required: 0.5}
+)");
+  const fs::path out = dir / "out";
+  const Outcome o =
+      runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --statics-only --no-plots");
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("a / b: static min 0.300 m: FAIL"), std::string::npos) << o.output;
+}
+
 // Issue 45: a transient run (examples/drilling-riser-drift: the DP unit drifts 85 m, the mooring line's
 // tension mean moves between the halves of its record) says once that it has no storm extremes, and why,
 // and lists the largest values seen, instead of a reason per line end, vessel and pair; the storm's files
