@@ -14,6 +14,7 @@
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/LineContact.hpp"
+#include "tangle/contact/StartShapeCrossings.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/io/HtmlReport.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -49,6 +50,12 @@ int runCheck(const CheckOptions& options) {
   const model::Model& m = sim.model();
   fmt::print("{}", results::modelSummary(m));
   std::cerr << results::warningText(m.spec());
+  // The start shapes a run would lay one over the other before its statics (on a copy: check solves nothing).
+  if (const contact::LineContact* contact = sim.contact()) {
+    model::State start = sim.state();
+    for (const contact::StartShapeLift& lift : contact::liftCrossedStartShapes(m, *contact, start))
+      fmt::print("{}\n", lift.describe(m));
+  }
   const auto [report, refusal] = memoryCheck(sim, options.modelPath, options.memoryAvailableMb);
   fmt::print("{}", report);
   if (!refusal.empty()) {
