@@ -181,11 +181,6 @@ lines:
 dynamics: {duration: 1230, time_step: 0.1, ramp_time: 30, output_interval: 1.0}
 output: {vtk: false}
 )");
-  // `check` says so before any run.
-  const Outcome check = runCli("check " + (dir / "model.yaml").string());
-  ASSERT_EQ(check.code, 0) << check.output;
-  EXPECT_NE(check.output.find("start shapes: line 'chain' laid over line 'pipeline'"), std::string::npos)
-      << check.output;
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report");
@@ -259,6 +254,11 @@ lines:
     sections: [{type: chain76, length: 560, elements: 112}]
 contact: {}
 )");
+  // `check` says so before any run.
+  const Outcome check = runCli("check " + (dir / "model.yaml").string());
+  ASSERT_EQ(check.code, 0) << check.output;
+  EXPECT_NE(check.output.find("start shapes: line 'chain' laid over line 'pipeline'"), std::string::npos)
+      << check.output;
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --statics-only --no-plots");
