@@ -117,9 +117,14 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
 ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model), m_required(model.spec().clearance.required) {
-  std::vector<double> radius;
-  for (const model::LineElement& el : model.elements()) radius.push_back(0.5 * el.type->contactDiameter);
-  m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, std::move(radius));
+  for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
+  for (const model::Line& line : model.lines()) {
+    double r = 0.0;
+    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
+      r = std::max(r, m_radius[static_cast<std::size_t>(e)]);
+    m_lineRadius.push_back(r);
+  }
+  m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
   std::set<std::array<int, 2>> pairs;
   auto add = [&](int a, int b) {
     if (a < 0 || b < 0 || a == b) return;
@@ -503,7 +508,6 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
   const Side& sideA = m_sides[2 * pair];
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(sideA.line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(sideA.other)];
-  const auto& elements = m_model->elements();
   const SegmentRule rule = segmentRule(state, sideA.line, sideA.other);
   const int segmentsA = a.nodeCount - 1, segmentsB = b.nodeCount - 1;
   Crossing best;
@@ -514,8 +518,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
         std::abs(i - window.segmentA) <= kCrossingWindow && std::abs(j - window.segmentB) <= kCrossingWindow;
     if (window.segmentA >= 0 && near != inside) return;
     const int ea = a.firstElement + i, eb = b.firstElement + j;
-    const double ra = 0.5 * elements[static_cast<std::size_t>(ea)].type->contactDiameter;
-    const double rb = 0.5 * elements[static_cast<std::size_t>(eb)].type->contactDiameter;
+    const double ra = m_radius[static_cast<std::size_t>(ea)], rb = m_radius[static_cast<std::size_t>(eb)];
     const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
     const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
     if (!(geometry::segmentBoxGap(a0, a1, b0, b1) - ra - rb < best.clearance)) return;
@@ -551,8 +554,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
       for (int j = first; j < last; ++j) {
         lo = lo.cwiseMin(state.position[line.firstNode + j + 1]);
         hi = hi.cwiseMax(state.position[line.firstNode + j + 1]);
-        radius = std::max(
-            radius, 0.5 * elements[static_cast<std::size_t>(line.firstElement + j)].type->contactDiameter);
+        radius = std::max(radius, m_radius[static_cast<std::size_t>(line.firstElement + j)]);
       }
       blocks[k] = {lo.array() - radius, hi.array() + radius};
     }
@@ -587,7 +589,6 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
   // the chords' elements and their neighbours (a wire kinked over a riser at a node: 42 mm into it on the
   // chords, 6 mm on the curves, the contact's). A line on chords stays there (its parameter held at the
   // chords' closest point).
-  const auto& elements = m_model->elements();
   const SegmentRule rule = segmentRule(state, sideA.line, sideA.other);
   Crossing best = c;
   best.clearance = kInf;
@@ -603,9 +604,8 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
       const geometry::SegmentDistanceResult chords = geometry::segmentDistance(a0, a1, b0, b1);
       const CentrelineDistance d = centrelineDistance(*m_model, state.position, ea, eb, chords.s, chords.t,
                                                       !curveA, !curveB, smoothCables);
-      const double clearance = d.distance -
-                               0.5 * elements[static_cast<std::size_t>(ea)].type->contactDiameter -
-                               0.5 * elements[static_cast<std::size_t>(eb)].type->contactDiameter;
+      const double clearance =
+          d.distance - m_radius[static_cast<std::size_t>(ea)] - m_radius[static_cast<std::size_t>(eb)];
       if (clearance < best.clearance)
         best = {clearance, i, j, std::clamp(d.s, 0.0, 1.0), std::clamp(d.t, 0.0, 1.0)};
     }
@@ -748,13 +748,8 @@ void ClearanceEnvelope::record(const model::State& state) {
   if (m_crossings.size() != m_pairs.size()) {
     m_crossings.assign(m_pairs.size(), CrossingBounds{});
     for (std::size_t p = 0; p < m_pairs.size(); ++p) {
-      for (const int l : {m_sides[2 * p].line, m_sides[2 * p].other}) {
-        const model::Line& line = lines[static_cast<std::size_t>(l)];
-        double r = 0.0;
-        for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
-          r = std::max(r, 0.5 * m_model->elements()[static_cast<std::size_t>(e)].type->contactDiameter);
-        m_crossings[p].slack += r;
-      }
+      for (const int l : {m_sides[2 * p].line, m_sides[2 * p].other})
+        m_crossings[p].slack += m_lineRadius[static_cast<std::size_t>(l)];
     }
   }
   for (std::size_t p = 0; p < m_pairs.size(); ++p) {
