@@ -661,7 +661,7 @@ def plot_results(results_dir: str | Path, out_dir: str | Path | None = None, err
         stems = {line.get("file_stem") for line in summary.get("lines", []) if isinstance(line, dict)}
         tables = [p for p in sorted(statics_dir.glob("*.csv"))
                   if not (stems - {None} and p.stem not in stems)
-                  and not (not stems - {None} and p.stem in ("contact_points", "contact_pairs"))]
+                  and not (not stems - {None} and p.stem in ("contact_points", "contact_zones", "contact_pairs"))]
         # A model of many lines: a figure per line for the first MAX_LINE_FIGURES (in name order), and a note;
         # thousands of figures took longer than the run (2000 lines: more than 10 minutes).
         if len(tables) > MAX_LINE_FIGURES:

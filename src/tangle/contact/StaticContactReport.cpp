@@ -9,23 +9,69 @@
 
 namespace tangle::contact {
 
+std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample> samples,
+                                                 const std::vector<double>& joinDistance) {
+  std::stable_sort(samples.begin(), samples.end(),
+                   [](const StaticContactSample& a, const StaticContactSample& b) {
+                     if (a.line1 != b.line1) return a.line1 < b.line1;
+                     if (a.line2 != b.line2) return a.line2 < b.line2;
+                     return a.arc1 < b.arc1;
+                   });
+  std::vector<StaticContactZone> zones;
+  double lastArc = 0.0;
+  for (const StaticContactSample& s : samples) {
+    const bool sameZone = !zones.empty() && zones.back().line1 == s.line1 && zones.back().line2 == s.line2 &&
+                          s.arc1 - lastArc <= joinDistance[static_cast<std::size_t>(s.line1)];
+    if (!sameZone) {
+      StaticContactZone z;
+      z.line1 = s.line1;
+      z.line2 = s.line2;
+      z.arc1From = z.arc1To = s.arc1;
+      z.arc2From = z.arc2To = s.arc2;
+      zones.push_back(z);
+    }
+    StaticContactZone& z = zones.back();
+    z.force += s.force;
+    z.centre += s.normal * s.position;  // divided by the zone's normal force below
+    z.normal += s.normal;
+    z.length += s.length;
+    z.peakPerLength = std::max(z.peakPerLength, s.perLength);
+    z.arc1From = std::min(z.arc1From, s.arc1);
+    z.arc1To = std::max(z.arc1To, s.arc1);
+    z.arc2From = std::min(z.arc2From, s.arc2);
+    z.arc2To = std::max(z.arc2To, s.arc2);
+    if (s.length > 0.0)
+      ++z.samples;
+    else
+      ++z.points;
+    lastArc = s.arc1;
+  }
+  for (StaticContactZone& z : zones)
+    if (z.normal > 0.0) z.centre /= z.normal;
+  return zones;
+}
+
 std::string writeStaticContact(const std::filesystem::path& dir, const model::Model& model, const LineContact& contact,
                                const model::State& state) {
   const auto& lines = model.lines();
   const auto& elements = model.elements();
   std::filesystem::create_directories(dir / "statics");
-  struct PairTotal {
-    Vec3 force = Vec3::Zero();  // total contact force on line 1 (normal and friction) [N]
-    double normal = 0.0, length = 0.0, peakPerLength = 0.0;
-    double a0 = 1e300, a1 = -1e300, b0 = 1e300, b1 = -1e300;
-    int points = 0, samples = 0;
-  };
-  std::map<std::pair<int, int>, PairTotal> pairs;
-  auto extend = [](PairTotal& t, double arcA, double arcB) {
-    t.a0 = std::min(t.a0, arcA);
-    t.a1 = std::max(t.a1, arcA);
-    t.b0 = std::min(t.b0, arcB);
-    t.b1 = std::max(t.b1, arcB);
+  std::vector<StaticContactSample> samples;
+  // A sample with its pair in ascending order (the force is the one on the lower line index).
+  const auto add = [&](int lineA, int lineB, double arcA, double arcB, const Vec3& position,
+                       const Vec3& forceOnA, double normal, double length, double perLength) {
+    StaticContactSample s;
+    const bool swapped = lineA > lineB;
+    s.line1 = swapped ? lineB : lineA;
+    s.line2 = swapped ? lineA : lineB;
+    s.arc1 = swapped ? arcB : arcA;
+    s.arc2 = swapped ? arcA : arcB;
+    s.position = position;
+    s.force = swapped ? Vec3(-forceOnA) : forceOnA;
+    s.normal = normal;
+    s.length = length;
+    s.perLength = perLength;
+    samples.push_back(s);
   };
   core::OutputFile file(dir / "statics" / "contact_points.csv");
   std::ostream& f = file.stream();
@@ -33,26 +79,18 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
        "length_m,gap_m\n";
   for (const ContactPoint& c : contact.contacts()) {
     if (c.normalForce <= 0.0) continue;
-    PairTotal& t = pairs[{c.lineA, c.lineB}];
-    t.force += c.normalForce * c.normal + c.frictionForce;
-    t.normal += c.normalForce;
-    ++t.points;
-    extend(t, c.arcA, c.arcB);
+    add(c.lineA, c.lineB, c.arcA, c.arcB, c.pointA, c.normalForce * c.normal + c.frictionForce, c.normalForce,
+        0.0, 0.0);
     f << fmt::format("{},{},point,{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f},{:.6e},,,{:.4e}\n",
                      lines[c.lineA].name, lines[c.lineB].name, c.arcA, c.arcB, c.pointA.x(), c.pointA.y(), c.pointA.z(),
                      c.normal.x(), c.normal.y(), c.normal.z(), c.normalForce, c.gap);
   }
   for (const LineSample& s : contact.lineSamples()) {
     if (s.lineForce <= 0.0) continue;
-    PairTotal& t = pairs[{s.lineA, s.lineB}];
-    t.force += s.lineForce * s.length * s.normal;
-    t.normal += s.lineForce * s.length;
-    t.length += s.length;
-    t.peakPerLength = std::max(t.peakPerLength, s.lineForce);
-    ++t.samples;
-    extend(t, s.arcA, s.arcB);
     const model::LineElement& ea = elements[s.elementA];
     const Vec3 x = (1.0 - s.xi) * state.position[ea.node1] + s.xi * state.position[ea.node2];
+    add(s.lineA, s.lineB, s.arcA, s.arcB, x, s.lineForce * s.length * s.normal, s.lineForce * s.length,
+        s.length, s.lineForce);
     f << fmt::format("{},{},length,{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.5f},{:.4e}\n",
                      lines[s.lineA].name, lines[s.lineB].name, s.arcA, s.arcB, x.x(), x.y(), x.z(), s.normal.x(),
                      s.normal.y(), s.normal.z(), s.lineForce * s.length, s.lineForce, s.length, s.gap);
@@ -65,41 +103,115 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
       const bool swapped = s.lineA > s.lineB;
       const int first = swapped ? s.lineB : s.lineA, second = swapped ? s.lineA : s.lineB;
       const double arc1 = swapped ? s.arcB : s.arcA, arc2 = swapped ? s.arcA : s.arcB;
-      const Vec3 onFirst = (swapped ? -1.0 : 1.0) * s.length * (s.lineForce * s.normal + s.friction);
       const Vec3 normal = swapped ? Vec3(-s.normal) : s.normal;
-      PairTotal& t = pairs[{first, second}];
-      t.force += onFirst;
-      t.normal += s.lineForce * s.length;
-      t.length += s.length;
-      t.peakPerLength = std::max(t.peakPerLength, s.lineForce);
-      ++t.samples;
-      extend(t, arc1, arc2);
       const Vec3 x = s.curve.pointA;
+      add(s.lineA, s.lineB, s.arcA, s.arcB, x, s.length * (s.lineForce * s.normal + s.friction),
+          s.lineForce * s.length, s.length, s.lineForce);
       f << fmt::format("{},{},length,{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.5f},{:.5f},{:.5f},{:.6e},{:.6e},{:.5f},{:.4e}\n",
                        lines[first].name, lines[second].name, arc1, arc2, x.x(), x.y(), x.z(), normal.x(),
                        normal.y(), normal.z(), s.lineForce * s.length, s.lineForce, s.length, s.gap);
     }
   }
-  for (const FrictionPatch& p : contact.frictionPatches()) {
-    auto it = pairs.find({p.lineA, p.lineB});
-    if (it != pairs.end()) it->second.force += p.force;
-  }
   file.close();
+  // Zones joined across gaps of up to two of line 1's longest elements (the samples of neighbouring
+  // elements, and Gauss points of an element whose middle is clear, belong to one place).
+  std::vector<double> joinDistance;
+  for (const model::Line& line : lines) {
+    double longest = 0.0;
+    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
+      longest = std::max(longest, elements[static_cast<std::size_t>(e)].restLength);
+    joinDistance.push_back(2.0 * longest);
+  }
+  std::vector<StaticContactZone> zones = groupContactZones(std::move(samples), joinDistance);
+  // Friction of the line-to-line patches (not in the samples' forces): to the zone of its pair nearest
+  // the patch's element on line A.
+  for (const FrictionPatch& p : contact.frictionPatches()) {
+    const model::LineElement& el = elements[static_cast<std::size_t>(p.elementA)];
+    const model::Line& line = lines[static_cast<std::size_t>(p.lineA)];
+    const double arc = 0.5 * (line.arcLength[static_cast<std::size_t>(el.node1 - line.firstNode)] +
+                              line.arcLength[static_cast<std::size_t>(el.node2 - line.firstNode)]);
+    const bool swapped = p.lineA > p.lineB;
+    StaticContactZone* nearest = nullptr;
+    double distance = 0.0;
+    for (StaticContactZone& z : zones) {
+      if (z.line1 != std::min(p.lineA, p.lineB) || z.line2 != std::max(p.lineA, p.lineB)) continue;
+      const double from = swapped ? z.arc2From : z.arc1From, to = swapped ? z.arc2To : z.arc1To;
+      const double d = std::max({from - arc, arc - to, 0.0});
+      if (!nearest || d < distance) {
+        nearest = &z;
+        distance = d;
+      }
+    }
+    if (nearest) nearest->force += swapped ? Vec3(-p.force) : p.force;
+  }
 
+  core::OutputFile zoneFile(dir / "statics" / "contact_zones.csv");
+  std::ostream& zf = zoneFile.stream();
+  zf << "line_1,line_2,zone,normal_force_N,force_on_1_x_N,force_on_1_y_N,force_on_1_z_N,contact_length_m,"
+        "peak_force_per_length_N_per_m,arc_1_from_m,arc_1_to_m,arc_2_from_m,arc_2_to_m,x_m,y_m,z_m,points,"
+        "length_samples\n";
   core::OutputFile pairFile(dir / "statics" / "contact_pairs.csv");
   std::ostream& g = pairFile.stream();
   g << "line_1,line_2,normal_force_N,force_on_1_x_N,force_on_1_y_N,force_on_1_z_N,contact_length_m,"
-       "peak_force_per_length_N_per_m,arc_1_from_m,arc_1_to_m,arc_2_from_m,arc_2_to_m,points,length_samples\n";
+       "peak_force_per_length_N_per_m,arc_1_from_m,arc_1_to_m,arc_2_from_m,arc_2_to_m,points,length_samples,"
+       "zones\n";
   std::string text;
-  for (const auto& [key, t] : pairs) {
-    g << fmt::format("{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{},{}\n",
-                     lines[key.first].name, lines[key.second].name, t.normal, t.force.x(), t.force.y(), t.force.z(),
-                     t.length, t.peakPerLength, t.a0, t.a1, t.b0, t.b1, t.points, t.samples);
-    text += fmt::format("  contact '{}' / '{}': {:.2f} kN", lines[key.first].name, lines[key.second].name, t.normal / 1000.0);
-    if (t.length > 0.0) text += fmt::format(" over {:.2f} m (up to {:.3g} kN/m)", t.length, t.peakPerLength / 1000.0);
-    text += fmt::format(", arc {:.2f}-{:.2f} m on '{}', {:.2f}-{:.2f} m on '{}'\n", t.a0, t.a1, lines[key.first].name,
-                        t.b0, t.b1, lines[key.second].name);
+  const auto describe = [](const StaticContactZone& z) {
+    std::string s = fmt::format("{:.2f} kN", z.normal / 1000.0);
+    if (z.length > 0.0)
+      s += fmt::format(" over {:.2f} m (up to {:.3g} kN/m)", z.length, z.peakPerLength / 1000.0);
+    return s;
+  };
+  for (std::size_t first = 0; first < zones.size();) {
+    std::size_t last = first;
+    while (last + 1 < zones.size() && zones[last + 1].line1 == zones[first].line1 &&
+           zones[last + 1].line2 == zones[first].line2)
+      ++last;
+    const std::string& name1 = lines[static_cast<std::size_t>(zones[first].line1)].name;
+    const std::string& name2 = lines[static_cast<std::size_t>(zones[first].line2)].name;
+    // The pair: sums and extremes over its zones.
+    StaticContactZone pair = zones[first];
+    for (std::size_t k = first + 1; k <= last; ++k) {
+      const StaticContactZone& z = zones[k];
+      pair.force += z.force;
+      pair.normal += z.normal;
+      pair.length += z.length;
+      pair.peakPerLength = std::max(pair.peakPerLength, z.peakPerLength);
+      pair.arc1From = std::min(pair.arc1From, z.arc1From);
+      pair.arc1To = std::max(pair.arc1To, z.arc1To);
+      pair.arc2From = std::min(pair.arc2From, z.arc2From);
+      pair.arc2To = std::max(pair.arc2To, z.arc2To);
+      pair.points += z.points;
+      pair.samples += z.samples;
+    }
+    g << fmt::format("{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{}\n",
+                     name1, name2, pair.normal, pair.force.x(), pair.force.y(), pair.force.z(), pair.length,
+                     pair.peakPerLength, pair.arc1From, pair.arc1To, pair.arc2From, pair.arc2To, pair.points,
+                     pair.samples, last - first + 1);
+    const auto where = [&](const StaticContactZone& z) {
+      return fmt::format("at z = {:.1f} m, arc {:.2f}-{:.2f} m on '{}', {:.2f}-{:.2f} m on '{}'",
+                         z.centre.z(), z.arc1From, z.arc1To, name1, z.arc2From, z.arc2To, name2);
+    };
+    if (last == first) {
+      text += fmt::format("  contact '{}' / '{}': {}, {}\n", name1, name2, describe(pair), where(pair));
+    } else {
+      text += fmt::format("  contact '{}' / '{}': {} in {} places:\n", name1, name2, describe(pair),
+                          last - first + 1);
+      for (std::size_t k = first; k <= last; ++k)
+        text += fmt::format("    {}, {}\n", describe(zones[k]), where(zones[k]));
+    }
+    for (std::size_t k = first; k <= last; ++k) {
+      const StaticContactZone& z = zones[k];
+      zf << fmt::format(
+          "{},{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},"
+          "{:.4f},{},{}\n",
+          name1, name2, k - first + 1, z.normal, z.force.x(), z.force.y(), z.force.z(), z.length,
+          z.peakPerLength, z.arc1From, z.arc1To, z.arc2From, z.arc2To, z.centre.x(), z.centre.y(),
+          z.centre.z(), z.points, z.samples);
+    }
+    first = last + 1;
   }
+  zoneFile.close();
   pairFile.close();
   return text;
 }
