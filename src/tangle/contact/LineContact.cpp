@@ -1001,17 +1001,40 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
     blockHi[k] = j % kBlock == 0 ? hi : Vec3(blockHi[k].cwiseMax(hi));
     blockRadius[k] = std::max(blockRadius[k], m_radius[lb.firstElement + j]);
   }
+  // And line A's elements in blocks too: at the start of each, the blocks of B whose boxes are beyond the
+  // threshold from its box (then from each of its elements' boxes, and the threshold only falls) are marked
+  // and skipped for all its elements at once. Element by element each block of B cost a box test per element
+  // of A: 5 000 per pair of 200-element lines, a tenth of the run of 12 lines apart with contact on all 66
+  // pairs (at each output time, ClashReport::recordClearance). The same pairs are measured in the same order.
+  std::vector<char> blockFar(static_cast<std::size_t>(blocks), 0);
   for (int i = 0; i < la.elementCount; ++i) {
     const model::LineElement& ea = elements[la.firstElement + i];
     const Vec3& a0 = state.position[ea.node1];
     const Vec3& a1 = state.position[ea.node2];
     const Vec3 lo = a0.cwiseMin(a1), hi = a0.cwiseMax(a1);
     const double ra = m_radius[la.firstElement + i];
+    if (i % kBlock == 0) {
+      Vec3 blockALo = lo, blockAHi = hi;
+      double blockARadius = ra;
+      for (int m = i + 1; m < std::min(i + kBlock, la.elementCount); ++m) {
+        const model::LineElement& em = elements[la.firstElement + m];
+        blockALo = blockALo.cwiseMin(state.position[em.node1].cwiseMin(state.position[em.node2]));
+        blockAHi = blockAHi.cwiseMax(state.position[em.node1].cwiseMax(state.position[em.node2]));
+        blockARadius = std::max(blockARadius, m_radius[la.firstElement + m]);
+      }
+      const double threshold = std::min({best[0], m_spec.clearanceMargin, seed});
+      for (std::size_t k = 0; k < blockFar.size(); ++k)
+        blockFar[k] =
+            geometry::boxGap(blockALo, blockAHi, blockLo[k], blockHi[k]) - blockARadius - blockRadius[k] >
+                    threshold
+                ? 1
+                : 0;
+    }
     for (int j = 0; j < lb.elementCount; ++j) {
       if (j % kBlock == 0) {
         const std::size_t k = static_cast<std::size_t>(j / kBlock);
-        if (geometry::boxGap(lo, hi, blockLo[k], blockHi[k]) - ra - blockRadius[k] >
-            std::min({best[0], m_spec.clearanceMargin, seed})) {
+        if (blockFar[k] || geometry::boxGap(lo, hi, blockLo[k], blockHi[k]) - ra - blockRadius[k] >
+                               std::min({best[0], m_spec.clearanceMargin, seed})) {
           j += kBlock - 1;
           continue;
         }
