@@ -9,6 +9,23 @@
 
 namespace tangle::contact {
 
+namespace {
+/// Adds `from` to `into`: the sums (forces, length, counts) and the extremes (peak per length, arc ranges).
+/// The centre is left to the caller (a weighted mean).
+void addZone(StaticContactZone& into, const StaticContactZone& from) {
+  into.force += from.force;
+  into.normal += from.normal;
+  into.length += from.length;
+  into.peakPerLength = std::max(into.peakPerLength, from.peakPerLength);
+  into.arc1From = std::min(into.arc1From, from.arc1From);
+  into.arc1To = std::max(into.arc1To, from.arc1To);
+  into.arc2From = std::min(into.arc2From, from.arc2From);
+  into.arc2To = std::max(into.arc2To, from.arc2To);
+  into.points += from.points;
+  into.samples += from.samples;
+}
+}  // namespace
+
 std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample> samples,
                                                  const std::vector<double>& joinDistance) {
   std::stable_sort(samples.begin(), samples.end(),
@@ -20,30 +37,26 @@ std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample
   std::vector<StaticContactZone> zones;
   double lastArc = 0.0;
   for (const StaticContactSample& s : samples) {
+    // The sample as a zone of its own; its centre the normal force times the position (divided below).
+    StaticContactZone one;
+    one.line1 = s.line1;
+    one.line2 = s.line2;
+    one.force = s.force;
+    one.normal = s.normal;
+    one.length = s.length;
+    one.peakPerLength = s.perLength;
+    one.arc1From = one.arc1To = s.arc1;
+    one.arc2From = one.arc2To = s.arc2;
+    one.centre = s.normal * s.position;
+    (s.length > 0.0 ? one.samples : one.points) = 1;
     const bool sameZone = !zones.empty() && zones.back().line1 == s.line1 && zones.back().line2 == s.line2 &&
                           s.arc1 - lastArc <= joinDistance[static_cast<std::size_t>(s.line1)];
-    if (!sameZone) {
-      StaticContactZone z;
-      z.line1 = s.line1;
-      z.line2 = s.line2;
-      z.arc1From = z.arc1To = s.arc1;
-      z.arc2From = z.arc2To = s.arc2;
-      zones.push_back(z);
+    if (sameZone) {
+      addZone(zones.back(), one);
+      zones.back().centre += one.centre;
+    } else {
+      zones.push_back(one);
     }
-    StaticContactZone& z = zones.back();
-    z.force += s.force;
-    z.centre += s.normal * s.position;  // divided by the zone's normal force below
-    z.normal += s.normal;
-    z.length += s.length;
-    z.peakPerLength = std::max(z.peakPerLength, s.perLength);
-    z.arc1From = std::min(z.arc1From, s.arc1);
-    z.arc1To = std::max(z.arc1To, s.arc1);
-    z.arc2From = std::min(z.arc2From, s.arc2);
-    z.arc2To = std::max(z.arc2To, s.arc2);
-    if (s.length > 0.0)
-      ++z.samples;
-    else
-      ++z.points;
     lastArc = s.arc1;
   }
   for (StaticContactZone& z : zones)
@@ -171,19 +184,7 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
     const std::string& name2 = lines[static_cast<std::size_t>(zones[first].line2)].name;
     // The pair: sums and extremes over its zones.
     StaticContactZone pair = zones[first];
-    for (std::size_t k = first + 1; k <= last; ++k) {
-      const StaticContactZone& z = zones[k];
-      pair.force += z.force;
-      pair.normal += z.normal;
-      pair.length += z.length;
-      pair.peakPerLength = std::max(pair.peakPerLength, z.peakPerLength);
-      pair.arc1From = std::min(pair.arc1From, z.arc1From);
-      pair.arc1To = std::max(pair.arc1To, z.arc1To);
-      pair.arc2From = std::min(pair.arc2From, z.arc2From);
-      pair.arc2To = std::max(pair.arc2To, z.arc2To);
-      pair.points += z.points;
-      pair.samples += z.samples;
-    }
+    for (std::size_t k = first + 1; k <= last; ++k) addZone(pair, zones[k]);
     g << fmt::format("{},{},{:.6e},{:.6e},{:.6e},{:.6e},{:.4f},{:.6e},{:.4f},{:.4f},{:.4f},{:.4f},{},{},{}\n",
                      name1, name2, pair.normal, pair.force.x(), pair.force.y(), pair.force.z(), pair.length,
                      pair.peakPerLength, pair.arc1From, pair.arc1To, pair.arc2From, pair.arc2To, pair.points,
