@@ -1,7 +1,9 @@
 #include "tangle/contact/StaticContactReport.hpp"
 
-#include <algorithm>
 #include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <utility>
 
@@ -34,9 +36,33 @@ std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample
                      if (a.line2 != b.line2) return a.line2 < b.line2;
                      return a.arc1 < b.arc1;
                    });
+  // Two samples of a pair are of one place when they are within the join distances along both lines; a
+  // place is a chain of such links (union-find, each root the place's first sample along line 1). Along line
+  // 1 alone, a line wrapped round another (touching it at one arc of line 1 from two arcs of line 2) was one
+  // place.
+  const std::size_t n = samples.size();
+  std::vector<std::size_t> root(n);
+  for (std::size_t i = 0; i < n; ++i) root[i] = i;
+  const auto find = [&](std::size_t i) {
+    while (root[i] != i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const StaticContactSample& a = samples[i];
+    const double join1 = joinDistance[static_cast<std::size_t>(a.line1)];
+    const double join2 = joinDistance[static_cast<std::size_t>(a.line2)];
+    for (std::size_t j = i + 1; j < n; ++j) {
+      const StaticContactSample& b = samples[j];
+      if (b.line1 != a.line1 || b.line2 != a.line2 || b.arc1 - a.arc1 > join1) break;
+      if (std::abs(b.arc2 - a.arc2) > join2) continue;
+      const std::size_t ra = find(i), rb = find(j);
+      if (ra != rb) root[std::max(ra, rb)] = std::min(ra, rb);
+    }
+  }
   std::vector<StaticContactZone> zones;
-  double lastArc = 0.0;
-  for (const StaticContactSample& s : samples) {
+  std::vector<int> zoneOf(n, -1);  // per root sample: its zone
+  for (std::size_t i = 0; i < n; ++i) {
+    const StaticContactSample& s = samples[i];
     // The sample as a zone of its own; its centre the normal force times the position (divided below).
     StaticContactZone one;
     one.line1 = s.line1;
@@ -49,15 +75,14 @@ std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample
     one.arc2From = one.arc2To = s.arc2;
     one.centre = s.normal * s.position;
     (s.length > 0.0 ? one.samples : one.points) = 1;
-    const bool sameZone = !zones.empty() && zones.back().line1 == s.line1 && zones.back().line2 == s.line2 &&
-                          s.arc1 - lastArc <= joinDistance[static_cast<std::size_t>(s.line1)];
-    if (sameZone) {
-      addZone(zones.back(), one);
-      zones.back().centre += one.centre;
+    int& zone = zoneOf[find(i)];
+    if (zone >= 0) {
+      addZone(zones[static_cast<std::size_t>(zone)], one);
+      zones[static_cast<std::size_t>(zone)].centre += one.centre;
     } else {
+      zone = static_cast<int>(zones.size());
       zones.push_back(one);
     }
-    lastArc = s.arc1;
   }
   for (StaticContactZone& z : zones)
     if (z.normal > 0.0) z.centre /= z.normal;
@@ -143,13 +168,25 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
     const model::Line& line = lines[static_cast<std::size_t>(p.lineA)];
     const double arc = 0.5 * (line.arcLength[static_cast<std::size_t>(el.node1 - line.firstNode)] +
                               line.arcLength[static_cast<std::size_t>(el.node2 - line.firstNode)]);
+    // And of its element on line B (a wrap: two places at the same arcs of one line).
+    const model::Line& lineB = lines[static_cast<std::size_t>(p.lineB)];
+    const auto arcOnB = [&](int node) {
+      return lineB.arcLength[static_cast<std::size_t>(node - lineB.firstNode)];
+    };
+    const bool onB = p.nodeB[0] >= lineB.firstNode && p.nodeB[0] <= lineB.lastNode() &&
+                     p.nodeB[1] >= lineB.firstNode && p.nodeB[1] <= lineB.lastNode();
+    const double arcB = onB ? 0.5 * (arcOnB(p.nodeB[0]) + arcOnB(p.nodeB[1])) : 0.0;
     const bool swapped = p.lineA > p.lineB;
     StaticContactZone* nearest = nullptr;
     double distance = 0.0;
     for (StaticContactZone& z : zones) {
       if (z.line1 != std::min(p.lineA, p.lineB) || z.line2 != std::max(p.lineA, p.lineB)) continue;
       const double from = swapped ? z.arc2From : z.arc1From, to = swapped ? z.arc2To : z.arc1To;
-      const double d = std::max({from - arc, arc - to, 0.0});
+      double d = std::max({from - arc, arc - to, 0.0});
+      if (onB) {
+        const double fromB = swapped ? z.arc1From : z.arc2From, toB = swapped ? z.arc1To : z.arc2To;
+        d = std::max({d, fromB - arcB, arcB - toB});
+      }
       if (!nearest || d < distance) {
         nearest = &z;
         distance = d;

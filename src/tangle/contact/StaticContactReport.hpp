@@ -26,8 +26,8 @@ struct StaticContactSample {
   double perLength = 0.0;         ///< normal force per unit length [N/m] (0: a point contact)
 };
 
-/// A place where two lines touch: the samples of one pair whose arc lengths on line 1 follow one another
-/// without a gap longer than that line's join distance.
+/// A place where two lines touch: the samples of one pair linked one to the next within each line's join
+/// distance along line 1 and along line 2.
 struct StaticContactZone {
   int line1 = 0, line2 = 0;
   Vec3 force = Vec3::Zero();   ///< total contact force on line 1 [N]
@@ -39,15 +39,17 @@ struct StaticContactZone {
   int points = 0, samples = 0;  ///< contact points and length samples in it
 };
 
-/// Groups samples into zones, per pair (ascending) and along line 1 (ascending arc): a sample more than
-/// joinDistance[line1] [m] along line 1 from the previous one of its pair starts a new zone.
+/// Groups samples into zones, per pair (ascending), in the order of their first sample along line 1: two
+/// samples of a pair within joinDistance[line1] [m] along line 1 and joinDistance[line2] [m] along line 2 are
+/// of one zone, and so is a chain of such links (a line wrapped round another, touching one arc of it from
+/// two arcs of its own, is two places). Each zone sums its samples in ascending arc along line 1.
 std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample> samples,
                                                  const std::vector<double>& joinDistance);
 
 /// Writes `<dir>/statics/contact_points.csv`, `<dir>/statics/contact_zones.csv` and
 /// `<dir>/statics/contact_pairs.csv` for the state the contact was last committed at (after
 /// Simulation::solveStatics) and returns a terminal summary (empty when no lines touch). Zones are
-/// joined across gaps of up to two of line 1's longest elements.
+/// joined across gaps of up to two of each line's longest elements along it.
 std::string writeStaticContact(const std::filesystem::path& dir, const model::Model& model, const LineContact& contact,
                                const model::State& state);
 

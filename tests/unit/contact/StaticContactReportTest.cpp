@@ -99,6 +99,41 @@ TEST(ContactZones, PairsAreKeptApartAndAPointContactCountsAsAPoint) {
   EXPECT_EQ(zones[2].samples, 2);
 }
 
+TEST(ContactZones, AWrapTouchingOneArcOfLineOneFromTwoArcsOfLineTwoIsTwoPlaces) {
+  // Line 1 (a rope) passes line 0 (a post) twice at the same height: samples at arcs 10-11 m of the post
+  // from arcs 20-21 m and 80-80.5 m of the rope, interleaved along the post; joined across 2 m on each line.
+  const std::vector<StaticContactSample> samples = {
+      lengthSample(0, 1, 10.0, 20.0, -5.0, 1000.0, 0.5), lengthSample(0, 1, 10.2, 80.0, -5.0, 3000.0, 0.5),
+      lengthSample(0, 1, 10.5, 20.5, -5.0, 1000.0, 0.5), lengthSample(0, 1, 10.7, 80.5, -5.0, 3000.0, 0.5),
+      lengthSample(0, 1, 11.0, 21.0, -5.0, 1000.0, 0.5)};
+  const std::vector<StaticContactZone> zones = groupContactZones(samples, {2.0, 2.0});
+  ASSERT_EQ(zones.size(), 2u);
+  // In the order of their first sample along line 0: the pass at 20-21 m of the rope first.
+  EXPECT_DOUBLE_EQ(zones[0].normal, 3 * 500.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc1From, 10.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc1To, 11.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc2From, 20.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc2To, 21.0);
+  EXPECT_EQ(zones[0].samples, 3);
+  EXPECT_DOUBLE_EQ(zones[1].normal, 2 * 1500.0);
+  EXPECT_DOUBLE_EQ(zones[1].arc1From, 10.2);
+  EXPECT_DOUBLE_EQ(zones[1].arc1To, 10.7);
+  EXPECT_DOUBLE_EQ(zones[1].arc2From, 80.0);
+  EXPECT_DOUBLE_EQ(zones[1].arc2To, 80.5);
+  EXPECT_EQ(zones[1].samples, 2);
+}
+
+TEST(ContactZones, TheJoinAlongLineTwoHoldsAtItsBoundAndAChainIsOnePlace) {
+  // Along line 0 the samples follow 1 m apart; along line 1 they step 3 m: joined with 3 m on line 1 (at the
+  // bound), split with 2.99 m. A chain: no two ends of it within the join, still one place.
+  const std::vector<StaticContactSample> samples = {
+      lengthSample(0, 1, 0.0, 0.0, -1.0, 100.0, 1.0), lengthSample(0, 1, 1.0, 3.0, -1.0, 100.0, 1.0),
+      lengthSample(0, 1, 2.0, 6.0, -1.0, 100.0, 1.0), lengthSample(0, 1, 3.0, 9.0, -1.0, 100.0, 1.0)};
+  EXPECT_EQ(groupContactZones(samples, {1.0, 3.0}).size(), 1u);
+  EXPECT_EQ(groupContactZones(samples, {1.0, 2.99}).size(), 4u);
+  EXPECT_EQ(groupContactZones(samples, {0.99, 3.0}).size(), 4u);
+}
+
 TEST(ContactZones, NoSamplesNoZones) { EXPECT_TRUE(groupContactZones({}, {1.0}).empty()); }
 
 }  // namespace
