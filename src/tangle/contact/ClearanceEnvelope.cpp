@@ -118,12 +118,6 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model), m_required(model.spec().clearance.required) {
   for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
-  for (const model::Line& line : model.lines()) {
-    double r = 0.0;
-    for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
-      r = std::max(r, m_radius[static_cast<std::size_t>(e)]);
-    m_lineRadius.push_back(r);
-  }
   m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
   std::set<std::array<int, 2>> pairs;
   auto add = [&](int a, int b) {
@@ -749,7 +743,7 @@ void ClearanceEnvelope::record(const model::State& state) {
     m_crossings.assign(m_pairs.size(), CrossingBounds{});
     for (std::size_t p = 0; p < m_pairs.size(); ++p) {
       for (const int l : {m_sides[2 * p].line, m_sides[2 * p].other})
-        m_crossings[p].slack += m_lineRadius[static_cast<std::size_t>(l)];
+        m_crossings[p].slack += m_model->lines()[static_cast<std::size_t>(l)].contactRadius;
     }
   }
   for (std::size_t p = 0; p < m_pairs.size(); ++p) {

@@ -144,9 +144,9 @@ class ClearanceEnvelope {
   mutable Workspace m_work;
 
   const model::Model* m_model;
-  /// Each element's contact radius (half its line type's contact diameter) [m], and each line's largest.
+  /// Each element's contact radius (half its line type's contact diameter) [m] (each line's largest:
+  /// model::Line::contactRadius).
   std::vector<double> m_radius;
-  std::vector<double> m_lineRadius;
   /// The contact's rules of which element pairs may touch (its exclusions and shared connections), for the
   /// pairs the envelope skips.
   std::unique_ptr<ContactCandidates> m_exclusions;

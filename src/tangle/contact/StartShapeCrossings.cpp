@@ -48,14 +48,6 @@ double distanceToLine(const model::Line& line, const model::State& state, const 
   return best;
 }
 
-/// Largest contact radius of a line's sections [m].
-double largestRadius(const model::Model& model, const model::Line& line) {
-  double r = 0.0;
-  for (int e = line.firstElement; e < line.firstElement + line.elementCount; ++e)
-    r = std::max(r, 0.5 * model.elements()[static_cast<std::size_t>(e)].type->contactDiameter);
-  return r;
-}
-
 /// The direction in which the upper line is moved off the lower one at a crossing (file comment).
 Vec3 liftDirection(const Vec3& lowerTangent, const Vec3& upperTangent, const Vec3& lowerPoint,
                    const Vec3& upperPoint) {
@@ -110,7 +102,7 @@ std::vector<StartShapeLift> liftCrossedStartShapes(const model::Model& model, co
     const model::Line& lower = lines[static_cast<std::size_t>(a)];
     const model::Line& upper = lines[static_cast<std::size_t>(b)];
     if (!lower.spec->startShape.empty() || !upper.spec->startShape.empty()) continue;
-    const double radii = largestRadius(model, lower) + largestRadius(model, upper);
+    const double radii = lower.contactRadius + upper.contactRadius;
     double previousOverlap = std::numeric_limits<double>::infinity();
     for (int attempt = 0; attempt < kMaxLiftsPerPair; ++attempt) {
       const std::array<double, 3> c = contact.clearance(state, a, b);

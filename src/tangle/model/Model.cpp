@@ -302,6 +302,8 @@ void Model::buildLine(int lineIndex) {
                                 : ls.contents.referenceZ;
   line.arcLength = arc;
   line.length = arc.back();
+  for (const LineElement& el : elements)
+    line.contactRadius = std::max(line.contactRadius, 0.5 * el.type->contactDiameter);
   for (auto& el : elements) m_elements.push_back(std::move(el));
 
   for (const AttachmentSpec& a : ls.attachments) {
@@ -439,9 +441,7 @@ State Model::initialState() const {
     }
     // An end resting on the seabed sits one contact radius above it; the analytic shape then uses the
     // level of that end as its seabed, so the grounded part starts where it rests (not squashed).
-    double radius = 0.0;
-    for (const SectionSpec& sec : line.spec->sections)
-      radius = std::max(radius, 0.5 * m_spec->lineTypes.at(sec.lineType).contactDiameter);
+    const double radius = line.contactRadius;
     // On a seabed that is not flat the analytic shape's flat seabed is at the deeper of the seabed under the
     // two ends (or the level of an end resting on it), never above an end; the nodes it lays are then placed
     // on the seabed's own surface below.

@@ -68,6 +68,8 @@ struct Line {
   int elementCount = 0;
   std::vector<double> arcLength;  ///< unstretched arc length of each node from end A [m]
   double length = 0.0;            ///< total unstretched length [m]
+  /// Largest contact radius of its elements: half the largest contact diameter of its line types [m].
+  double contactRadius = 0.0;
   /// A section of it is a pipe (its line type has an internal_diameter): its results give the internal
   /// pressure and the wall tension.
   bool pipe = false;
