@@ -116,7 +116,9 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
 
 ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
-    : m_model(&model), m_required(model.spec().clearance.required) {
+    : m_model(&model),
+      m_required(model.spec().clearance.required),
+      m_margin(model.spec().contact.clearanceMargin) {
   for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
   m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
   std::set<std::array<int, 2>> pairs;
@@ -695,8 +697,8 @@ void ClearanceEnvelope::record(const model::State& state) {
         continue;
       }
       const Vec3& x = state.position[a.firstNode + static_cast<int>(i)];
-      const double envelope = s.dynamicClearance[i];
-      const double above = envelope - pairMinimum[side / 2];
+      const double envelope = std::min(s.dynamicClearance[i], m_margin);
+      const double above = envelope - std::min(pairMinimum[side / 2], m_margin);
       const double tolerance = std::isfinite(above) ? kEnvelopeTolerance * std::max(above, 0.0) : 0.0;
       // Skipped when the bound now, c0 - |x - x0| - travel since, is not below envelope - tolerance: when
       // |x - x0| <= room, tested on squares (no root per node). c0 = +inf: no segment may touch the node.
@@ -711,15 +713,18 @@ void ClearanceEnvelope::record(const model::State& state) {
     // Nothing to search: nothing changes (a sixth of drift-into-spread's 326 000 side calls).
     if (tried.empty()) continue;
     const auto newValue = [&](std::size_t i, double clearance) {
-      if (clearance < s.dynamicClearance[i]) {
+      if (clearance < s.dynamicClearance[i] && clearance <= m_margin) {
         s.dynamicClearance[i] = clearance;
         s.timeOfMinimum[i] = state.time;
         m_pairMinimum[side / 2] = std::min(m_pairMinimum[side / 2], clearance);
       }
     };
     const Certificate certificate{&s, &others};
+    std::vector<double>& below = m_work.below;  // what a node's clearance must be below to be a new minimum
+    below.resize(s.dynamicClearance.size());
+    for (std::size_t i = 0; i < below.size(); ++i) below[i] = std::min(s.dynamicClearance[i], m_margin);
     const std::vector<double> c =
-        search(state, s.line, s.other, &s.dynamicClearance, &skip, &lower, &travel, &certificate);
+        search(state, s.line, s.other, &below, &skip, &lower, &travel, &certificate);
     for (const int node : tried) {  // the others: +inf and -inf, nothing to keep
       const std::size_t i = static_cast<std::size_t>(node);
       if (std::isfinite(lower[i])) {  // searched (its exact clearance), or settled by the spheres
@@ -753,7 +758,7 @@ void ClearanceEnvelope::record(const model::State& state) {
     // The chords' bounds less how far the lines have moved since, and less how far their curves may lie
     // off them [m].
     const double room = travel - k.travel + k.bulge;
-    const double minimum = m_pairMinimum[p];
+    const double minimum = std::min(m_pairMinimum[p], m_margin);
     if (k.bound - room >= minimum) continue;
     if (k.window.segmentA >= 0 && k.outside - room >= minimum) {
       const Crossing c =
@@ -817,6 +822,9 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   j.beginObject();
   j.field("standard", "DNV-RP-F203 (2009) no-collision criterion: minimum clearance >= required");
   j.field("required_clearance_m", m_required);
+  // The dynamic envelope is kept up to this clearance (contact.clearance_margin); a node or pair never within
+  // it has min_clearance_m null (+inf in envelope.csv).
+  j.field("clearance_margin_m", m_margin);
   j.key("pairs");
   j.beginArray();
   for (std::size_t p = 0; p < m_pairs.size(); ++p) {
@@ -879,8 +887,11 @@ std::string ClearanceEnvelope::terminalSummary() const {
                      lines[static_cast<std::size_t>(m_sides[2 * p + 1].line)].name, st.clearance);
     if (m_dynamic) {
       const Minimum dy = minimum(p, true);
-      s += fmt::format(", dynamic min {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'", dy.clearance, dy.time,
-                       dy.arcLength, lines[static_cast<std::size_t>(dy.line)].name);
+      if (std::isfinite(dy.clearance))
+        s += fmt::format(", dynamic min {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'", dy.clearance, dy.time,
+                         dy.arcLength, lines[static_cast<std::size_t>(dy.line)].name);
+      else
+        s += fmt::format(", dynamically never within the {:.3g} m clearance margin", m_margin);
     }
     s += overall >= m_required ? ": PASS\n" : ": FAIL\n";
   }

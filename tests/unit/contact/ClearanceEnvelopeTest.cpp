@@ -163,8 +163,10 @@ model::ModelSpec twoLinesOneWithAThickEnd() {
 /// the brute-force minimum of every node over the same states, and of the chords (the crossing pass). The
 /// contract (ClearanceEnvelope.hpp): the pair's minimum is the exact smaller of the nodes' and the chords'
 /// minima, with its time; a node is never below its exact minimum unless the crossing pass gave it a
-/// crossing's clearance (then not below the chords' minimum), and above it by at most 1e-3 (e - P).
-/// Returns how many nodes end above their exact minimum (the tolerance used).
+/// crossing's clearance (then not below the chords' minimum), and above it by at most 1e-3 (min(e, M) -
+/// min(P, M)), M the clearance margin (contact.clearance_margin); a node whose exact minimum is above M has
+/// +inf, and one below M by more than its tolerance a finite value. Returns how many nodes end above their
+/// exact minimum (the tolerance used).
 int checkEnvelope(const model::Model& m, int steps, const std::function<void(int, model::State&)>& move) {
   model::State s = m.initialState();
   ClearanceEnvelope envelope(m, {{0, 1}});
@@ -196,6 +198,8 @@ int checkEnvelope(const model::Model& m, int steps, const std::function<void(int
   for (const auto& e : exact) nodes = std::min(nodes, *std::min_element(e.begin(), e.end()));
   const double pairMinimum = std::min(nodes, chords);
   double recordedMinimum = std::numeric_limits<double>::infinity();
+  const double margin = m.spec().contact.clearanceMargin;  // [m]
+  const double inf = std::numeric_limits<double>::infinity();
   int above = 0;
   for (int side = 0; side < 2; ++side) {
     const ClearanceEnvelope::Side& got = envelope.sides()[static_cast<std::size_t>(side)];
@@ -203,8 +207,14 @@ int checkEnvelope(const model::Model& m, int steps, const std::function<void(int
     for (std::size_t i = 0; i < e.size(); ++i) {
       const double d = got.dynamicClearance[i];
       recordedMinimum = std::min(recordedMinimum, d);
+      const double tolerance = 1e-3 * (std::min(d, margin) - std::min(pairMinimum, margin));  // [m]
+      if (d == inf) {
+        EXPECT_GT(e[i], margin - tolerance - 1e-12) << "side " << side << ", node " << i;
+        continue;
+      }
+      EXPECT_LE(d, margin) << "side " << side << ", node " << i;
       EXPECT_GE(d, std::min(e[i], chords)) << "side " << side << ", node " << i;
-      EXPECT_LE(d - e[i], 1e-3 * (d - pairMinimum) + 1e-12) << "side " << side << ", node " << i;
+      EXPECT_LE(d - e[i], tolerance + 1e-12) << "side " << side << ", node " << i;
       if (d == pairMinimum) {
         EXPECT_EQ(got.timeOfMinimum[i],
                   nodes <= chords ? when[static_cast<std::size_t>(side)][i] : chordsWhen)
@@ -243,6 +253,63 @@ TEST(ClearanceEnvelope, RecordKeepsThePairMinimumExactAndEveryNodeWithinItsToler
   });
   EXPECT_GT(above, 5);  // the tolerance is used (the nodes far from the crossing)
   RecordProperty("nodes_above_their_exact_minimum", above);
+}
+
+/// Lines in a V: `a` along x, `b` leaving it at 22 degrees, so that a's nodes lie 3-59 m from b and b's
+/// 3-63 m from a; both sway by 0.3 m.
+int checkVee(double margin) {
+  model::ModelSpec spec;
+  spec.sourceFile = "clearance margin (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["thin"] = test::cableType("thin", 0.1, 10.0, 1e8);
+  spec.lines = {test::simpleLine("a", "thin", 150.0, 75, model::EndKind::Pinned, Vec3(0, 0, -50),
+                                 model::EndKind::Pinned, Vec3(150, 0, -50)),
+                test::simpleLine("b", "thin", 160.0, 80, model::EndKind::Pinned, Vec3(0, 3, -50),
+                                 model::EndKind::Pinned, Vec3(148.3, 62.9, -50))};
+  spec.contact.clearanceMargin = margin;
+  const model::Model m(std::move(spec));
+  const model::State start = m.initialState();
+  return checkEnvelope(m, 400, [&](int step, model::State& s) {
+    const double t = 0.05 * step;
+    s.time = t;
+    for (const model::Line& line : m.lines())
+      for (int i = 0; i < line.nodeCount; ++i)
+        s.position[line.firstNode + i] = start.position[line.firstNode + i] +
+                                         Vec3(0.0, 0.3 * std::sin(0.8 * t + 0.05 * i + line.firstNode),
+                                              0.3 * std::cos(0.6 * t + 0.03 * i));
+  });
+}
+
+TEST(ClearanceEnvelope, NodesNeverWithinTheClearanceMarginKeepNoDynamicMinimum) {
+  // At the default 50 m margin the nodes beyond it have +inf, the others and the pair's minimum their values
+  // (checkEnvelope); at 1000 m every node has its value. Both within the same tolerance.
+  checkVee(50.0);
+  checkVee(1000.0);
+  const auto count = [](double margin) {
+    model::ModelSpec spec;
+    spec.sourceFile = "clearance margin (test)";
+    spec.environment.waterDepth = 100.0;
+    spec.lineTypes["thin"] = test::cableType("thin", 0.1, 10.0, 1e8);
+    spec.lines = {test::simpleLine("a", "thin", 150.0, 75, model::EndKind::Pinned, Vec3(0, 0, -50),
+                                   model::EndKind::Pinned, Vec3(150, 0, -50)),
+                  test::simpleLine("b", "thin", 160.0, 80, model::EndKind::Pinned, Vec3(0, 3, -50),
+                                   model::EndKind::Pinned, Vec3(148.3, 62.9, -50))};
+    spec.contact.clearanceMargin = margin;
+    const model::Model m(std::move(spec));
+    ClearanceEnvelope envelope(m, {{0, 1}});
+    envelope.record(m.initialState());
+    int finite = 0;
+    for (const ClearanceEnvelope::Side& side : envelope.sides())
+      for (const double d : side.dynamicClearance) finite += std::isfinite(d) ? 1 : 0;
+    return finite;
+  };
+  // a's node at x lies 3 cos(22 deg) + x sin(22 deg) from b's axis, within 50 m up to x = 126 m (64 of its 76
+  // nodes), and b's node at u along it 3 + u sin(22 deg) from a's, up to u = 125 m (63 of its 81).
+  const int within50 = count(50.0), within1000 = count(1000.0);
+  EXPECT_EQ(within1000, 76 + 81);
+  EXPECT_LT(within50, within1000);
+  EXPECT_GT(within50, 100);
+  RecordProperty("nodes_within_50_m", within50);
 }
 
 TEST(ClearanceEnvelope, RecordStaysExactWhileTheNearestSegmentsSlideAlong) {
