@@ -118,7 +118,7 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model),
       m_required(model.spec().clearance.required),
-      m_margin(model.spec().contact.clearanceMargin) {
+      m_margin(std::max(model.spec().contact.clearanceMargin, model.spec().clearance.required)) {
   for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
   m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
   std::set<std::array<int, 2>> pairs;
