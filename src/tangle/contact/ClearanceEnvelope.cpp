@@ -118,7 +118,8 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model),
       m_required(model.spec().clearance.required),
-      m_margin(std::max(model.spec().contact.clearanceMargin, model.spec().clearance.required)) {
+      m_margin(std::max(model.spec().clearance.margin.value_or(model.spec().contact.clearanceMargin),
+                        model.spec().clearance.required)) {
   for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
   m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
   std::set<std::array<int, 2>> pairs;
@@ -822,8 +823,8 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   j.beginObject();
   j.field("standard", "DNV-RP-F203 (2009) no-collision criterion: minimum clearance >= required");
   j.field("required_clearance_m", m_required);
-  // The dynamic envelope is kept up to this clearance (contact.clearance_margin); a node or pair never within
-  // it has min_clearance_m null (+inf in envelope.csv).
+  // The dynamic envelope is kept up to this clearance (clearance.margin or contact.clearance_margin); a node
+  // or pair never within it has min_clearance_m null (+inf in envelope.csv).
   j.field("clearance_margin_m", m_margin);
   j.key("pairs");
   j.beginArray();

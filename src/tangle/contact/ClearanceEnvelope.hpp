@@ -21,12 +21,12 @@
 /// everywhere, and the envelope along each line is the clearance of the node or of the half elements beside
 /// it (on chords there: a beam's curve between nodes may lie a chord deviation closer). Written to
 /// clearance/envelope.csv and clearance/summary.json; a few lines for the terminal.
-/// The dynamic envelope is kept up to the clearance margin (contact.clearance_margin, 50 m by default, as the
-/// clash report's clearances): a node whose clearance stays above it all the run has +inf there (and a pair
-/// whose every node does, a dynamic minimum of +inf: "never within the margin"). A no-collision check asks
-/// for clearances of metres; the exact values hundreds of metres out were most of the envelope's cost (12
-/// lines moored round a point with contact on all 66 pairs: 10.6 of its 11.9 million node searches were of
-/// nodes 30 m or more from the other line).
+/// The dynamic envelope is kept up to the clearance margin (clearance.margin, else contact.clearance_margin,
+/// 50 m by default, as the clash report's clearances; never below clearance.required): a node whose clearance
+/// stays above it all the run has +inf there (and a pair whose every node does, a dynamic minimum of +inf:
+/// "never within the margin"). A no-collision check asks for clearances of metres; the exact values hundreds
+/// of metres out were most of the envelope's cost (12 lines moored round a point with contact on all 66
+/// pairs: 10.6 of its 11.9 million node searches were of nodes 30 m or more from the other line).
 
 #include <array>
 #include <filesystem>
@@ -96,6 +96,8 @@ class ClearanceEnvelope {
     /// below its envelope by more than the tolerance since record() last tested it [m] (-inf: test it).
     std::vector<double> wake;
   };
+  /// The clearance up to which the dynamic minima are kept [m] (m_margin).
+  double margin() const { return m_margin; }
   const std::vector<Side>& sides() const { return m_sides; }  ///< two per pair (A to B, B to A)
 
  private:
@@ -162,8 +164,9 @@ class ClearanceEnvelope {
   std::vector<Side> m_sides;
   bool m_dynamic = false;
   double m_required = 0.0;
-  double m_margin =
-      0.0;  ///< the dynamic envelope is kept up to this clearance (contact.clearance_margin) [m]
+  /// The dynamic envelope is kept up to this clearance [m]: clearance.margin, else contact.clearance_margin,
+  /// or clearance.required when larger (a node is never passed without being measured).
+  double m_margin = 0.0;
   /// Per (line, other): the segment of `other` nearest to each node of `line` at the last call (a first
   /// guess that lets nodeClearance skip most of `other`; a cache, not part of the result).
   mutable std::map<std::array<int, 2>, std::vector<int>> m_hint;

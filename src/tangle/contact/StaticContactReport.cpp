@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include "tangle/core/OutputFile.hpp"
@@ -163,19 +164,19 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
   std::vector<StaticContactZone> zones = groupContactZones(std::move(samples), joinDistance);
   // Friction of the line-to-line patches (not in the samples' forces): to the zone of its pair nearest
   // the patch's element on line A.
+  // Arc length at the middle of nodes n1-n2 of `line` [m]; nullopt when they are not both on it.
+  const auto middleArc = [&](int lineIndex, int n1, int n2) -> std::optional<double> {
+    const model::Line& line = lines[static_cast<std::size_t>(lineIndex)];
+    const auto on = [&](int n) { return n >= line.firstNode && n <= line.lastNode(); };
+    if (!on(n1) || !on(n2)) return std::nullopt;
+    return 0.5 * (line.arcLength[static_cast<std::size_t>(n1 - line.firstNode)] +
+                  line.arcLength[static_cast<std::size_t>(n2 - line.firstNode)]);
+  };
   for (const FrictionPatch& p : contact.frictionPatches()) {
     const model::LineElement& el = elements[static_cast<std::size_t>(p.elementA)];
-    const model::Line& line = lines[static_cast<std::size_t>(p.lineA)];
-    const double arc = 0.5 * (line.arcLength[static_cast<std::size_t>(el.node1 - line.firstNode)] +
-                              line.arcLength[static_cast<std::size_t>(el.node2 - line.firstNode)]);
+    const double arc = middleArc(p.lineA, el.node1, el.node2).value_or(0.0);
     // And of its element on line B (a wrap: two places at the same arcs of one line).
-    const model::Line& lineB = lines[static_cast<std::size_t>(p.lineB)];
-    const auto arcOnB = [&](int node) {
-      return lineB.arcLength[static_cast<std::size_t>(node - lineB.firstNode)];
-    };
-    const bool onB = p.nodeB[0] >= lineB.firstNode && p.nodeB[0] <= lineB.lastNode() &&
-                     p.nodeB[1] >= lineB.firstNode && p.nodeB[1] <= lineB.lastNode();
-    const double arcB = onB ? 0.5 * (arcOnB(p.nodeB[0]) + arcOnB(p.nodeB[1])) : 0.0;
+    const std::optional<double> arcOnB = middleArc(p.lineB, p.nodeB[0], p.nodeB[1]);
     const bool swapped = p.lineA > p.lineB;
     StaticContactZone* nearest = nullptr;
     double distance = 0.0;
@@ -183,9 +184,9 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
       if (z.line1 != std::min(p.lineA, p.lineB) || z.line2 != std::max(p.lineA, p.lineB)) continue;
       const double from = swapped ? z.arc2From : z.arc1From, to = swapped ? z.arc2To : z.arc1To;
       double d = std::max({from - arc, arc - to, 0.0});
-      if (onB) {
+      if (arcOnB) {
         const double fromB = swapped ? z.arc1From : z.arc2From, toB = swapped ? z.arc1To : z.arc2To;
-        d = std::max({d, fromB - arcB, arcB - toB});
+        d = std::max({d, fromB - *arcOnB, *arcOnB - toB});
       }
       if (!nearest || d < distance) {
         nearest = &z;

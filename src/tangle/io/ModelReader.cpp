@@ -1816,9 +1816,12 @@ void readWakes(const Value& v, ModelSpec& spec) {
 
 /// clearance: {required [m], pairs: [[a, b], ...]}.
 void readClearance(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"required", "pairs"});
+  const Map m(v, {"required", "pairs", "margin"});
   spec.clearance.required =
       m.number("required", 0.0, nonNegative().withHint("required surface-to-surface clearance [m] (DNV-RP-F203)"));
+  if (m.find("margin"))
+    spec.clearance.margin =
+        m.number("margin", positive().withHint("the dynamic minima are kept up to this clearance [m]"));
   if (const std::optional<Value> pairs = m.find("pairs")) {
     for (const Value& item : pairs->items(1)) {
       const std::vector<Value> names = item.items(2);
@@ -2053,7 +2056,8 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"hull_contact", false,
                   "a map of hull contact settings {stiffness, line_stiffness, restitution, ...}",
                   readHullContact},
-    TopLevelBlock{"clearance", false, "a map {required, pairs} (DNV-RP-F203 clearance check)", readClearance},
+    TopLevelBlock{"clearance", false, "a map {required, pairs, margin} (DNV-RP-F203 clearance check)",
+                  readClearance},
     TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}",
                   readWakes},
     TopLevelBlock{"output", false, "a map of output settings", readOutput},

@@ -459,6 +459,9 @@ struct WakeSpec {
 struct ClearanceSpec {
   double required = 0.0;  ///< required surface-to-surface clearance [m]
   std::vector<std::pair<std::string, std::string>> pairs;  ///< line pairs checked (empty: see ClearanceEnvelope)
+  /// The dynamic minima are kept up to this clearance [m]; unset: contact.clearance_margin. The envelope
+  /// uses the larger of it and `required` (ClearanceEnvelope).
+  std::optional<double> margin;
 };
 
 /// Contact of lines and hulls with hulls (hull_contact; vessel::HullContact): one law for all of it, the

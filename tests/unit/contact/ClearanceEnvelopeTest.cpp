@@ -164,7 +164,7 @@ model::ModelSpec twoLinesOneWithAThickEnd() {
 /// contract (ClearanceEnvelope.hpp): the pair's minimum is the exact smaller of the nodes' and the chords'
 /// minima, with its time; a node is never below its exact minimum unless the crossing pass gave it a
 /// crossing's clearance (then not below the chords' minimum), and above it by at most 1e-3 (min(e, M) -
-/// min(P, M)), M the clearance margin (contact.clearance_margin); a node whose exact minimum is above M has
+/// min(P, M)), M the clearance margin (ClearanceEnvelope::margin); a node whose exact minimum is above M has
 /// +inf, and one below M by more than its tolerance a finite value. Returns how many nodes end above their
 /// exact minimum (the tolerance used).
 int checkEnvelope(const model::Model& m, int steps, const std::function<void(int, model::State&)>& move) {
@@ -198,7 +198,7 @@ int checkEnvelope(const model::Model& m, int steps, const std::function<void(int
   for (const auto& e : exact) nodes = std::min(nodes, *std::min_element(e.begin(), e.end()));
   const double pairMinimum = std::min(nodes, chords);
   double recordedMinimum = std::numeric_limits<double>::infinity();
-  const double margin = m.spec().contact.clearanceMargin;  // [m]
+  const double margin = envelope.margin();  // [m]
   const double inf = std::numeric_limits<double>::infinity();
   int above = 0;
   for (int side = 0; side < 2; ++side) {
@@ -256,8 +256,9 @@ TEST(ClearanceEnvelope, RecordKeepsThePairMinimumExactAndEveryNodeWithinItsToler
 }
 
 /// Lines in a V: `a` along x, `b` leaving it at 22 degrees, so that a's nodes lie 3-59 m from b and b's
-/// 3-63 m from a; both sway by 0.3 m.
-int checkVee(double margin) {
+/// 3-63 m from a. a's node at x lies 3 cos(22 deg) + x sin(22 deg) from b's axis, b's node at u along it
+/// 3 + u sin(22 deg) from a's.
+model::ModelSpec veeSpec(double contactMargin) {
   model::ModelSpec spec;
   spec.sourceFile = "clearance margin (test)";
   spec.environment.waterDepth = 100.0;
@@ -266,7 +267,12 @@ int checkVee(double margin) {
                                  model::EndKind::Pinned, Vec3(150, 0, -50)),
                 test::simpleLine("b", "thin", 160.0, 80, model::EndKind::Pinned, Vec3(0, 3, -50),
                                  model::EndKind::Pinned, Vec3(148.3, 62.9, -50))};
-  spec.contact.clearanceMargin = margin;
+  spec.contact.clearanceMargin = contactMargin;
+  return spec;
+}
+
+/// The V of veeSpec, both lines swaying by 0.3 m, checked by checkEnvelope.
+int checkVee(model::ModelSpec spec) {
   const model::Model m(std::move(spec));
   const model::State start = m.initialState();
   return checkEnvelope(m, 400, [&](int step, model::State& s) {
@@ -280,36 +286,49 @@ int checkVee(double margin) {
   });
 }
 
+/// How many nodes of the V at rest have a finite dynamic minimum (within the envelope's margin), and that
+/// margin [m].
+std::pair<int, double> finiteVeeNodes(model::ModelSpec spec) {
+  const model::Model m(std::move(spec));
+  ClearanceEnvelope envelope(m, {{0, 1}});
+  envelope.record(m.initialState());
+  int finite = 0;
+  for (const ClearanceEnvelope::Side& side : envelope.sides())
+    for (const double d : side.dynamicClearance) finite += std::isfinite(d) ? 1 : 0;
+  return {finite, envelope.margin()};
+}
+
 TEST(ClearanceEnvelope, NodesNeverWithinTheClearanceMarginKeepNoDynamicMinimum) {
   // At the default 50 m margin the nodes beyond it have +inf, the others and the pair's minimum their values
   // (checkEnvelope); at 1000 m every node has its value. Both within the same tolerance.
-  checkVee(50.0);
-  checkVee(1000.0);
-  const auto count = [](double margin) {
-    model::ModelSpec spec;
-    spec.sourceFile = "clearance margin (test)";
-    spec.environment.waterDepth = 100.0;
-    spec.lineTypes["thin"] = test::cableType("thin", 0.1, 10.0, 1e8);
-    spec.lines = {test::simpleLine("a", "thin", 150.0, 75, model::EndKind::Pinned, Vec3(0, 0, -50),
-                                   model::EndKind::Pinned, Vec3(150, 0, -50)),
-                  test::simpleLine("b", "thin", 160.0, 80, model::EndKind::Pinned, Vec3(0, 3, -50),
-                                   model::EndKind::Pinned, Vec3(148.3, 62.9, -50))};
-    spec.contact.clearanceMargin = margin;
-    const model::Model m(std::move(spec));
-    ClearanceEnvelope envelope(m, {{0, 1}});
-    envelope.record(m.initialState());
-    int finite = 0;
-    for (const ClearanceEnvelope::Side& side : envelope.sides())
-      for (const double d : side.dynamicClearance) finite += std::isfinite(d) ? 1 : 0;
-    return finite;
-  };
-  // a's node at x lies 3 cos(22 deg) + x sin(22 deg) from b's axis, within 50 m up to x = 126 m (64 of its 76
-  // nodes), and b's node at u along it 3 + u sin(22 deg) from a's, up to u = 125 m (63 of its 81).
-  const int within50 = count(50.0), within1000 = count(1000.0);
+  checkVee(veeSpec(50.0));
+  checkVee(veeSpec(1000.0));
+  // Within 50 m: a's nodes up to x = 126 m (64 of its 76 nodes), b's up to u = 125 m (63 of its 81).
+  const int within50 = finiteVeeNodes(veeSpec(50.0)).first;
+  const int within1000 = finiteVeeNodes(veeSpec(1000.0)).first;
   EXPECT_EQ(within1000, 76 + 81);
-  EXPECT_LT(within50, within1000);
-  EXPECT_GT(within50, 100);
+  EXPECT_EQ(within50, 64 + 63);
   RecordProperty("nodes_within_50_m", within50);
+}
+
+TEST(ClearanceEnvelope, MarginIsTheClearanceBlocksAndNeverBelowTheRequiredClearance) {
+  // clearance.margin overrides contact.clearance_margin for the envelope; a required clearance above the
+  // margin widens it (a node within the requirement is always measured: otherwise the check would pass nodes
+  // it never looked at). Within 20 m: a's nodes up to x = (20 - 2.78) / sin(22 deg) = 46.0 m (24 nodes, 2 m
+  // apart), b's up to u = 17 / sin(22 deg) = 45.4 m (23 nodes).
+  model::ModelSpec ownMargin = veeSpec(50.0);
+  ownMargin.clearance.margin = 20.0;
+  const auto [ownCount, ownMarginUsed] = finiteVeeNodes(ownMargin);
+  EXPECT_EQ(ownMarginUsed, 20.0);
+  EXPECT_EQ(ownCount, 24 + 23);
+  checkVee(ownMargin);
+
+  model::ModelSpec required = veeSpec(5.0);
+  required.clearance.required = 20.0;
+  const auto [requiredCount, requiredMarginUsed] = finiteVeeNodes(required);
+  EXPECT_EQ(requiredMarginUsed, 20.0);
+  EXPECT_EQ(requiredCount, 24 + 23);
+  checkVee(required);
 }
 
 TEST(ClearanceEnvelope, RecordStaysExactWhileTheNearestSegmentsSlideAlong) {

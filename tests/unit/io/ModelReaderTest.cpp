@@ -1489,10 +1489,13 @@ lines:
 }
 
 TEST(ModelReader, ReadsWakePairsListsGroupsAndCoefficients) {
-  const ModelSpec spec = readModelString(wakeModel(R"(wake_interference:
+  const ModelSpec spec =
+      readModelString(wakeModel(R"(wake_interference:
   - {upstream: a, downstream: [b, c], model: blevins, coefficients: {a1: 1.2, a3: -8}, upstream_drag_coefficient: 1.1}
   - {lines: [b, c]}
-)", "clearance: {required: 1.5, pairs: [[a, b]]}\n"), kSource);
+)",
+                                "clearance: {required: 1.5, pairs: [[a, b]], margin: 20}\n"),
+                      kSource);
   ASSERT_EQ(spec.wakes.size(), 4u);  // a->b, a->c, b->c, c->b
   EXPECT_EQ(spec.wakes[0].upstream, "a");
   EXPECT_EQ(spec.wakes[1].downstream, "c");
@@ -1507,6 +1510,8 @@ TEST(ModelReader, ReadsWakePairsListsGroupsAndCoefficients) {
   EXPECT_EQ(spec.clearance.required, 1.5);
   ASSERT_EQ(spec.clearance.pairs.size(), 1u);
   EXPECT_EQ(spec.clearance.pairs[0].second, "b");
+  EXPECT_EQ(spec.clearance.margin, 20.0);
+  EXPECT_FALSE(readModelString(wakeModel("", "clearance: {required: 1.5}\n"), kSource).clearance.margin);
 }
 
 TEST(ModelReader, RejectsBadWakeAndClearanceInput) {
@@ -1524,6 +1529,7 @@ TEST(ModelReader, RejectsBadWakeAndClearanceInput) {
   expectInputError(wakeModel("wake_interference:\n  - {upstream: a, downstream: b, coefficients: {a1: 2}}\n"),
                    "a1: 2", "wake_interference[0].coefficients.a1", "");
   expectInputError(wakeModel("", "clearance: {required: -1}\n"), "required: -1", "clearance.required", ">= 0");
+  expectInputError(wakeModel("", "clearance: {margin: 0}\n"), "margin: 0", "clearance.margin", "> 0");
   expectInputError(wakeModel("", "clearance: {pairs: [[a, q]]}\n"), "pairs: [[a, q]]", "clearance.pairs[0][1]",
                    "unknown line 'q'");
 }
