@@ -59,8 +59,9 @@ ClashReport::ClashReport(const model::Model& model, const LineContact& contact,
     : m_model(&model), m_contact(&contact), m_pairs(std::move(pairs)) {}
 
 void ClashReport::recordClearance(const model::State& state) {
+  const std::vector<std::array<double, 3>> clearances = m_contact->clearances(state, m_pairs);
   for (int p = 0; p < static_cast<int>(m_pairs.size()); ++p) {
-    const auto c = m_contact->clearance(state, m_pairs[p][0], m_pairs[p][1]);
+    const std::array<double, 3>& c = clearances[static_cast<std::size_t>(p)];
     m_samples.push_back({state.time, p, c[0], c[1], c[2]});
     ForceSample f{state.time, p, 0.0, 0.0, 0.0, 0};
     for (const ContactPatch& patch : m_contact->patches()) {

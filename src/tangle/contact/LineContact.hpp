@@ -245,9 +245,27 @@ class LineContact final : public solver::LoadContributor {
   /// the gap between the surfaces (negative in contact; beams near contact on their smooth centrelines, as
   /// contact measures them); +inf when farther than the clearance margin.
   std::array<double, 3> clearance(const model::State& state, int lineA, int lineB) const;
+  /// clearance() of each pair at one state (the clash report at each output time), the same values as pair
+  /// by pair: each line's boxes for the culling made once for all its pairs.
+  std::vector<std::array<double, 3>> clearances(const model::State& state,
+                                                const std::vector<std::array<int, 2>>& pairs) const;
   const model::ContactSpec& spec() const { return m_spec; }
 
  private:
+  /// A line's elements in blocks of kClearanceBlock, and the blocks in groups of kClearanceBlock: their
+  /// bounding boxes and largest contact radii [m] (clearance()'s culling: a group of B beyond the threshold
+  /// from a block of A leaves out its blocks at once, a block of A with every block of B beyond it its
+  /// elements).
+  static constexpr int kClearanceBlock = 8;
+  struct ClearanceBlocks {
+    std::vector<Vec3> lo, hi;
+    std::vector<double> radius;
+    std::vector<Vec3> groupLo, groupHi;
+    std::vector<double> groupRadius;
+  };
+  ClearanceBlocks clearanceBlocks(const model::State& state, int line) const;
+  std::array<double, 3> clearance(const model::State& state, int lineA, int lineB, const ClearanceBlocks& blocksA,
+                                  const ClearanceBlocks& blocksB) const;
   /// Fills the mesh-free estimate of the impact `e` opening at `state` (ContactEvent::continuum*;
   /// ImpactContinuum.cpp).
   void estimateContinuum(const model::State& state, ContactEvent& e) const;
@@ -357,6 +375,7 @@ class LineContact final : public solver::LoadContributor {
   /// Per (lineA, lineB): the elements of the nearest chord pair at the last clearance() call (a first
   /// bound that culls most pairs; a cache, not part of the result).
   mutable std::map<std::pair<int, int>, std::pair<int, int>> m_clearanceHint;
+  mutable std::vector<char> m_clearanceFar;  ///< clearance()'s marks of B's blocks (work space)
   std::unique_ptr<DistributedContact> m_distributed;  // contact.formulation: distributed
   bool m_lastDynamic = false;                         // the last assembly was a dynamic one
   std::vector<Vec3> m_move;                           // limitIncrement's nodal moves [m] (work space)
