@@ -31,6 +31,12 @@ void addZone(StaticContactZone& into, const StaticContactZone& from) {
 
 std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample> samples,
                                                  const std::vector<double>& joinDistance) {
+  // A self-contact's samples with the lower arc first (the header's comment).
+  for (StaticContactSample& s : samples) {
+    if (s.line1 != s.line2 || !(s.arc1 > s.arc2)) continue;
+    std::swap(s.arc1, s.arc2);
+    s.force = -s.force;
+  }
   std::stable_sort(samples.begin(), samples.end(),
                    [](const StaticContactSample& a, const StaticContactSample& b) {
                      if (a.line1 != b.line1) return a.line1 < b.line1;
@@ -177,7 +183,8 @@ std::string writeStaticContact(const std::filesystem::path& dir, const model::Mo
     const double arc = middleArc(p.lineA, el.node1, el.node2).value_or(0.0);
     // And of its element on line B (a wrap: two places at the same arcs of one line).
     const std::optional<double> arcOnB = middleArc(p.lineB, p.nodeB[0], p.nodeB[1]);
-    const bool swapped = p.lineA > p.lineB;
+    // (A self-contact's zones have the lower arc first: groupContactZones.)
+    const bool swapped = p.lineA > p.lineB || (p.lineA == p.lineB && arcOnB && arc > *arcOnB);
     StaticContactZone* nearest = nullptr;
     double distance = 0.0;
     for (StaticContactZone& z : zones) {

@@ -42,7 +42,10 @@ struct StaticContactZone {
 /// Groups samples into zones, per pair (ascending), in the order of their first sample along line 1: two
 /// samples of a pair within joinDistance[line1] [m] along line 1 and joinDistance[line2] [m] along line 2 are
 /// of one zone, and so is a chain of such links (a line wrapped round another, touching one arc of it from
-/// two arcs of its own, is two places). Each zone sums its samples in ascending arc along line 1.
+/// two arcs of its own, is two places). Each zone sums its samples in ascending arc along line 1. A line
+/// touching itself (line1 == line2) is one pair of arcs whichever pass a sample comes from: a sample with
+/// arc1 > arc2 is taken with its arcs exchanged and its force negated (the force on the lower arc's side), so
+/// that the two passes of one place are one zone.
 std::vector<StaticContactZone> groupContactZones(std::vector<StaticContactSample> samples,
                                                  const std::vector<double>& joinDistance);
 

@@ -134,6 +134,26 @@ TEST(ContactZones, TheJoinAlongLineTwoHoldsAtItsBoundAndAChainIsOnePlace) {
   EXPECT_EQ(groupContactZones(samples, {0.99, 3.0}).size(), 4u);
 }
 
+TEST(ContactZones, ALineTouchingItselfIsOnePlaceWhicheverPassASampleComesFrom) {
+  // A hose looped over itself: its arcs 10-11 m lie on its arcs 50-51 m. The pass along 10-11 m gives samples
+  // (10, 50) with the force on the 10 m side (up), the pass along 50-51 m samples (50, 10) with the force on
+  // the 50 m side (down). One place, arcs 10-11 against 50-51 m, force on the 10 m side: both passes' up.
+  std::vector<StaticContactSample> samples = {lengthSample(2, 2, 10.0, 50.0, -5.0, 1000.0, 0.5),
+                                              lengthSample(2, 2, 50.0, 10.0, -5.0, 1000.0, 0.5),
+                                              lengthSample(2, 2, 11.0, 51.0, -5.0, 1000.0, 0.5),
+                                              lengthSample(2, 2, 51.0, 11.0, -5.0, 1000.0, 0.5)};
+  for (std::size_t k = 0; k < samples.size(); ++k) samples[k].force = Vec3(0.0, 0.0, k % 2 == 0 ? 500.0 : -500.0);
+  const std::vector<StaticContactZone> zones = groupContactZones(samples, {2.0, 2.0, 2.0});
+  ASSERT_EQ(zones.size(), 1u);
+  EXPECT_DOUBLE_EQ(zones[0].normal, 4 * 500.0);
+  EXPECT_DOUBLE_EQ(zones[0].force.z(), 4 * 500.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc1From, 10.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc1To, 11.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc2From, 50.0);
+  EXPECT_DOUBLE_EQ(zones[0].arc2To, 51.0);
+  EXPECT_EQ(zones[0].samples, 4);
+}
+
 TEST(ContactZones, NoSamplesNoZones) { EXPECT_TRUE(groupContactZones({}, {1.0}).empty()); }
 
 }  // namespace
