@@ -376,9 +376,17 @@ std::size_t SkylineLdlt::analyzePattern(const SparseMatrix& k) {
   return m_values.size() + static_cast<std::size_t>(m_n);
 }
 
-double SkylineLdlt::pivotThreshold(const std::vector<double>& diagonal) {
+void SkylineLdlt::setBlockLargest(int block) {
+  m_blockLargest.resize(static_cast<std::size_t>(blockCount()), 0.0);
   double largest = 0.0;
-  for (const double d : diagonal) largest = std::max(largest, std::abs(d));
+  for (int i = blockStart(block); i < blockStart(block + 1); ++i)
+    largest = std::max(largest, std::abs(m_originalDiagonal[static_cast<std::size_t>(i)]));
+  m_blockLargest[static_cast<std::size_t>(block)] = largest;
+}
+
+double SkylineLdlt::blockPivotThreshold() const {
+  double largest = 0.0;
+  for (const double d : m_blockLargest) largest = std::max(largest, d);
   return 1e-14 * largest;
 }
 
@@ -387,8 +395,9 @@ bool SkylineLdlt::factorize(const SparseMatrix& k) {
   if (m_bandWidth > 0) return m_factorized = factorizeBand(k);
   scatterValues(k, m_map, m_values, m_diagonal);
   m_originalDiagonal = m_diagonal;
+  for (int block = 0; block < blockCount(); ++block) setBlockLargest(block);
   m_inverseDiagonal.resize(m_n);
-  return m_factorized = factorizeEnvelopeRows(0, m_n, pivotThreshold(m_diagonal));
+  return m_factorized = factorizeEnvelopeRows(0, m_n, blockPivotThreshold());
 }
 
 bool SkylineLdlt::factorizeEnvelopeRows(int begin, int end, double tiny) {
@@ -444,8 +453,9 @@ bool SkylineLdlt::factorizeBlocks(const SparseMatrix& k, const std::vector<int>&
       std::copy(m_band.begin() + lo, m_band.begin() + hi, m_original.begin() + lo);
     }
     std::copy(m_originalDiagonal.begin() + b0, m_originalDiagonal.begin() + b1, m_diagonal.begin() + b0);
+    setBlockLargest(block);
   }
-  const double tiny = pivotThreshold(m_originalDiagonal);
+  const double tiny = blockPivotThreshold();
   for (const int block : blocks) {
     const bool ok = band ? withBandWidth(m_bandWidth,
                                          [&](auto width) {
@@ -464,9 +474,10 @@ bool SkylineLdlt::factorizeBand(const SparseMatrix& k) {
   // long block is factorised from both ends at once (twisted, see twistedSubstitutions): two independent
   // chains of rows, as the substitutions.
   scatterValues(k, m_bandMap, m_band, m_diagonal);
-  const double tiny = pivotThreshold(m_diagonal);
   m_original = m_band;  // K itself: the bottom-up rows read it, and a failed twist starts again from it
   m_originalDiagonal = m_diagonal;
+  for (int block = 0; block < blockCount(); ++block) setBlockLargest(block);
+  const double tiny = blockPivotThreshold();
   m_inverseDiagonal.resize(m_n);
   return withBandWidth(m_bandWidth,
                        [&](auto width) { return factorizeBandBlocks<decltype(width)::value>(tiny); });
@@ -536,7 +547,8 @@ bool SkylineLdlt::factorizeBandRows(const SparseMatrix& k, int block, int begin,
       const int r = inner[p];
       if (r >= begin && r < last) scatterValue(m_bandMap, p, a[p], m_original, m_originalDiagonal);
     }
-  const double tiny = pivotThreshold(m_originalDiagonal);
+  setBlockLargest(block);
+  const double tiny = blockPivotThreshold();
   double* band = m_band.data();
   double* diagonal = m_diagonal.data();
   double* inverse = m_inverseDiagonal.data();
