@@ -318,17 +318,14 @@ TEST(ClearanceEnvelope, MarginIsTheClearanceBlocksAndNeverBelowTheRequiredCleara
   // apart), b's up to u = 17 / sin(22 deg) = 45.4 m (23 nodes).
   model::ModelSpec ownMargin = veeSpec(50.0);
   ownMargin.clearance.margin = 20.0;
-  const auto [ownCount, ownMarginUsed] = finiteVeeNodes(ownMargin);
-  EXPECT_EQ(ownMarginUsed, 20.0);
-  EXPECT_EQ(ownCount, 24 + 23);
-  checkVee(ownMargin);
-
   model::ModelSpec required = veeSpec(5.0);
   required.clearance.required = 20.0;
-  const auto [requiredCount, requiredMarginUsed] = finiteVeeNodes(required);
-  EXPECT_EQ(requiredMarginUsed, 20.0);
-  EXPECT_EQ(requiredCount, 24 + 23);
-  checkVee(required);
+  for (const model::ModelSpec& spec : {ownMargin, required}) {
+    const auto [count, marginUsed] = finiteVeeNodes(spec);
+    EXPECT_EQ(marginUsed, 20.0);
+    EXPECT_EQ(count, 24 + 23);
+    checkVee(spec);
+  }
 }
 
 TEST(ClearanceEnvelope, RecordStaysExactWhileTheNearestSegmentsSlideAlong) {
