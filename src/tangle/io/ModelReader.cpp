@@ -1820,7 +1820,8 @@ void readClearance(const Value& v, ModelSpec& spec) {
   spec.clearance.required =
       m.number("required", 0.0, nonNegative().withHint("required surface-to-surface clearance [m] (DNV-RP-F203)"));
   if (const std::optional<Value> margin = m.find("margin"))
-    spec.clearance.margin = margin->number(positive().withHint("the dynamic minima are kept up to this clearance [m]"));
+    spec.clearance.margin =
+        margin->number(positive().withHint("the dynamic minima are kept up to this clearance [m]"));
   if (const std::optional<Value> pairs = m.find("pairs")) {
     for (const Value& item : pairs->items(1)) {
       const std::vector<Value> names = item.items(2);
