@@ -7,10 +7,11 @@ Run through ctest (it sets TANGLE_CLI), or by hand:
 Tolerances: the time series are stored in single precision (7 significant digits) and the CSV files print
 7 significant digits (%.6e): they agree to a few units of the 7th digit (rtol 1e-6 plus float32 rounding,
 2e-7 relative). Statics and range graphs are stored in double precision: equal to the CSV's rounding.
-The XDMF is checked twice: by parsing it (every HDF5 reference exists with the declared dimensions and
-every frame equals the time series at its output time) and by opening it in ParaView (Debian's
-python3-paraview, which replaces python3-vtk9, whose VTK has no XDMF reader: pvpython, with the "XDMF
-Reader" and the "Xdmf3 Reader S"): the number of frames, the points and the tension range of a frame
+The XDMF files (results.xdmf for ParaView's XDMF 3 readers, results.xdmf2 for its XDMF 2 reader) are checked
+twice: by parsing them (every HDF5 reference exists with the declared dimensions and every frame equals the
+time series at its output time) and by opening them in ParaView (Debian's python3-paraview, which replaces
+python3-vtk9, whose VTK has no XDMF reader: pvpython, with the "XDMF Reader" on results.xdmf2 and the
+"Xdmf3 Reader S" and "T" on results.xdmf): the number of frames, the points and the tension range of a frame
 against results.h5.
 """
 
@@ -108,33 +109,56 @@ def test_values_equal_the_csv_files(mooring: Path) -> None:
         np.testing.assert_allclose(s["position"][:, 2], st[:, col["z_m"]], atol=1e-6)
 
 
-def test_xdmf_references_exist_with_their_dimensions(mooring: Path) -> None:
-    root = ET.parse(mooring / "results.xdmf").getroot()
+def xdmf_items(path: Path) -> tuple[list[ET.Element], list[tuple[str, tuple[int, ...], tuple[int, ...], tuple[int, ...]]]]:
+    """The frames (temporal grid's children) of an XDMF file and its HDF references: (dataset, dimensions of
+    the item, start of the part read, dimensions of the dataset). results.xdmf reads a row of a frame series
+    as XDMF 3 does ("file:/path|start:stride:count:dims"), results.xdmf2 by HyperSlab items (XDMF 2)."""
+    root = ET.parse(path).getroot()
     temporal = root.find("Domain/Grid")
     assert temporal.get("CollectionType") == "Temporal"
-    frames = temporal.findall("Grid")
+    refs = []
+    for item in root.iter("DataItem"):
+        if item.get("ItemType") == "HyperSlab":
+            slab, data = item.findall("DataItem")
+            numbers = [int(v) for v in slab.text.split()]
+            rank = len(numbers) // 3
+            assert numbers[rank:2 * rank] == [1] * rank  # stride
+            file, dataset = data.text.strip().split(":")
+            assert file == "results.h5"
+            refs.append((dataset, tuple(int(d) for d in item.get("Dimensions").split()), tuple(numbers[:rank]),
+                         tuple(int(d) for d in data.get("Dimensions").split())))
+        elif item.get("Format") == "HDF" and item.text and "|" in item.text:
+            target, slab = item.text.strip().split("|")
+            file, dataset = target.split(":")
+            assert file == "results.h5"
+            start, stride, count, dims = ([int(v) for v in part.split()] for part in slab.split(":"))
+            assert stride == [1] * len(start) and count == [1] + [int(d) for d in item.get("Dimensions").split()]
+            refs.append((dataset, tuple(count[1:]), tuple(start), tuple(dims)))
+    return temporal.findall("Grid"), refs
+
+
+@pytest.mark.parametrize("name", ["results.xdmf", "results.xdmf2"])
+def test_xdmf_references_exist_with_their_dimensions(mooring: Path, name: str) -> None:
+    frames, refs = xdmf_items(mooring / name)
     times = [float(g.find("Time").get("Value")) for g in frames]
     assert times == sorted(times) and times[0] == 0.0 and times[-1] == pytest.approx(12.0)
     assert len(frames) == 13  # output.vtk_interval 1 s
-    checked = 0
+    assert len(refs) == 13 * 5  # position, tension, bending moment, curvature, torque per frame
     with h5py.File(mooring / "results.h5", "r") as f:
-        for item in root.iter("DataItem"):
-            if item.get("Format") != "HDF":
-                continue
-            file, path = item.text.strip().split(":")
-            assert file == "results.h5"
-            dims = tuple(int(d) for d in item.get("Dimensions").split())
-            assert f[path].shape == dims, path
-            checked += 1
-        # Each frame holds the lines at its output time: equal to the time series row of that time.
+        np.testing.assert_allclose(f["xdmf/frame_time"][...], times, atol=1e-9)
+        for dataset, item_dims, start, dims in refs:
+            assert f[dataset].shape == dims, dataset
+            assert dims[1:] == item_dims and start[1:] == (0,) * len(item_dims) and start[0] < dims[0]
+        # Each frame is the lines at its output time: equal to the time series row of that time.
         time = f["dynamics/time"][...]
         series = f["dynamics/lines/mooring1"]
-        for frame, t in zip(frames, times):
+        for frame, t in enumerate(times):
             (k,) = np.flatnonzero(np.abs(time - t) < 1e-9)
-            g = f[f"xdmf/mooring1/t{k}"]
-            np.testing.assert_array_equal(g["position"][...], series["position"][k])
-            np.testing.assert_array_equal(g["effective_tension"][...], series["effective_tension"][k])
-    assert checked > 13 * 5
+            g = f["xdmf/mooring1/frames"]
+            for field in ("position", "effective_tension", "bending_moment", "curvature", "torque"):
+                np.testing.assert_array_equal(g[field][frame], series[field][k])
+        # The topology is a whole dataset in both files.
+        assert f["xdmf/mooring1/segments"].shape == (200, 2)
 
 
 def test_hdf5_only_run_with_contact_and_clearance(tmp_path: Path) -> None:
@@ -159,9 +183,11 @@ def test_hdf5_only_run_with_contact_and_clearance(tmp_path: Path) -> None:
 
 PARAVIEW_CHECK = """
 import json, sys
-from paraview.simple import XDMFReader, Xdmf3ReaderS
+from paraview.simple import XDMFReader, Xdmf3ReaderS, Xdmf3ReaderT
 out = {}
-for name, make in (("xdmf2", lambda p: XDMFReader(FileNames=[p])), ("xdmf3", lambda p: Xdmf3ReaderS(FileName=[p]))):
+for name, make in (("xdmf2", lambda d: XDMFReader(FileNames=[d + "/results.xdmf2"])),
+                   ("xdmf3s", lambda d: Xdmf3ReaderS(FileName=[d + "/results.xdmf"])),
+                   ("xdmf3t", lambda d: Xdmf3ReaderT(FileName=[d + "/results.xdmf"]))):
     reader = make(sys.argv[1])
     times = list(reader.TimestepValues)
     reader.UpdatePipeline(float(sys.argv[2]))
@@ -176,7 +202,7 @@ print("RESULT" + json.dumps(out))
 def test_xdmf_opens_in_paraview(mooring: Path, tmp_path: Path) -> None:
     script = tmp_path / "check.py"
     script.write_text(PARAVIEW_CHECK)
-    r = subprocess.run(["pvpython", "--force-offscreen-rendering", str(script), str(mooring / "results.xdmf"), "5"],
+    r = subprocess.run(["pvpython", "--force-offscreen-rendering", str(script), str(mooring.resolve()), "5"],
                        capture_output=True, text=True, timeout=300)
     assert r.returncode == 0, r.stderr[-2000:]
     import json

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 
@@ -18,6 +19,24 @@ namespace fs = std::filesystem;
 namespace {
 
 /// Series of one line, in this order in Hdf5Results::m_lineSeries.
+/// The fields of a ParaView frame (writeFrame, results.xdmf), in the order of Hdf5Results::m_frameSeries.
+struct FrameField {
+  const char* name;
+  bool vector;  ///< [node, 3], else [node]
+  const char* units;
+  const char* description;
+};
+constexpr std::array<FrameField, 5> kFrameFieldSpecs{{
+    {"position", true, "m", "node positions at each frame [frame, node, xyz]"},
+    {"effective_tension", false, "N", "effective tension at each frame [frame, node]"},
+    {"bending_moment", false, "N m", "bending moment magnitude at each frame [frame, node]"},
+    {"curvature", false, "1/m", "curvature at each frame [frame, node]"},
+    {"torque", false, "N m", "torque at each frame [frame, node]"},
+}};
+/// Frames per chunk of the frame series: at the default output.vtk_interval of 1 s, what a run that stops
+/// abruptly (a crash) may lose of them.
+constexpr int kFrameChunkRows = 8;
+
 enum LineSeries {
   kPosition,
   kTension,
@@ -177,6 +196,23 @@ void Hdf5Results::beginDynamics(const std::vector<solver::LineSnapshot>& initial
                                              "force the line exerts on what holds each end [time, end, xyz]");
     m_lineSeries.push_back(std::move(series));
   }
+  // The ParaView frames (writeFrame): one series per line and field, a row every output.vtk_interval.
+  m_frameTime = m_file->createSeries("/xdmf/frame_time", {}, "s", "time of each ParaView frame [frame]",
+                                     kFrameChunkRows, false);
+  for (std::size_t l = 0; l < initial.size(); ++l) {
+    const std::string g = "/xdmf/" + m_stems[l] + "/frames";
+    const std::uint64_t n = m_nodes[l];
+    m_file->createGroup(g);
+    std::array<int, kFrameFields> series{};
+    for (std::size_t f = 0; f < kFrameFields; ++f) {
+      const FrameField& field = kFrameFieldSpecs[f];
+      series[f] = m_file->createSeries(
+          g + "/" + field.name,
+          field.vector ? std::vector<std::uint64_t>{n, 3} : std::vector<std::uint64_t>{n}, field.units,
+          field.description, kFrameChunkRows);
+    }
+    m_frameSeries.push_back(series);
+  }
   for (const auto& v : m_model->vessels()) {
     const std::string g = "/dynamics/vessels/" + v.name;
     m_file->createGroup(g);
@@ -216,21 +252,20 @@ void Hdf5Results::record(double time, const std::vector<solver::LineSnapshot>& l
 }
 
 void Hdf5Results::writeFrame(const std::vector<solver::LineSnapshot>& lines) {
-  // ParaView's XDMF 3 readers do not read HyperSlab data items (they skip the array: no points), so the
-  // frames ParaView shows are stored as plain datasets, single precision as the time series.
+  // A row of each line's frame series (single precision, as the time series), whatever time histories the
+  // model asks for: the XDMF files point into them by hyperslabs. (Stored as five plain datasets per line
+  // and frame, their creation in the file took 10 % of the CPU of a 12-line run: docs/performance.md.)
   const std::size_t k = m_times.size() - 1;
   m_frames.push_back(k);
-  for (std::size_t l = 0; l < lines.size(); ++l) {
+  m_file->append(m_frameTime, &m_times[k]);
+  for (std::size_t l = 0; l < lines.size() && l < m_frameSeries.size(); ++l) {
     const solver::LineSnapshot& s = lines[l];
-    const std::string g = fmt::format("/xdmf/{}/t{}", m_stems[l], k);
-    const std::uint64_t n = m_nodes[l];
-    m_file->createGroup(g);
-    m_file->setAttribute(g, "time_s", m_times[k]);
-    m_file->writeArray(g + "/position", flatten(s.position), {n, 3}, "m", "node position", true);
-    m_file->writeArray(g + "/effective_tension", s.tension, {n}, "N", "effective tension", true);
-    m_file->writeArray(g + "/bending_moment", s.bendingMoment, {n}, "N m", "bending moment magnitude", true);
-    m_file->writeArray(g + "/curvature", s.curvature, {n}, "1/m", "curvature", true);
-    m_file->writeArray(g + "/torque", s.torque, {n}, "N m", "torque", true);
+    const std::array<int, kFrameFields>& series = m_frameSeries[l];
+    m_file->append(series[0], flatten(s.position).data());
+    m_file->append(series[1], s.tension.data());
+    m_file->append(series[2], s.bendingMoment.data());
+    m_file->append(series[3], s.curvature.data());
+    m_file->append(series[4], s.torque.data());
   }
 }
 
@@ -392,59 +427,84 @@ void Hdf5Results::close() {
 }
 
 void Hdf5Results::writeXdmf() const {
-  // XDMF 3 (xdmf.org): a temporal collection of spatial collections, one polyline grid per line. Its data
-  // items are whole datasets: the statics, or the frames written every output.vtk_interval (writeFrame).
-  // Read by ParaView's "XDMF Reader" and "Xdmf3 Reader S/T" alike (hyperslabs of the time series were not:
-  // the Xdmf3 readers skipped them and showed no points).
+  // XDMF (xdmf.org): a temporal collection of spatial collections, one polyline grid per line. Two files,
+  // as ParaView's two reader families read a part of a dataset in two syntaxes and each skips the other's
+  // (measured with ParaView 5.11: the XDMF 3 readers showed no points for a HyperSlab item, the XDMF 2
+  // reader could not open a path with a hyperslab after '|'): results.xdmf for "Xdmf3 Reader S/T" (the
+  // HDF path followed by "|start:stride:count:dimensions" of the frame series), results.xdmf2 for "XDMF
+  // Reader" (HyperSlab data items; the .xdmf2 extension selects that reader). The statics are whole
+  // datasets in both.
   const bool dynamic = m_time >= 0 && !m_frames.empty();
   if (!dynamic && !m_hasStatics) return;
-  std::string x = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n";
-  const auto grid = [&](const std::function<std::string(std::size_t)>& group, int precision) {
-    std::string out;
-    for (std::size_t l = 0; l < m_stems.size(); ++l) {
-      const std::uint64_t n = m_nodes[l];
-      const auto item = [&](const std::string& name, std::uint64_t width) {
+  const std::uint64_t frames = m_frames.size();
+  for (const bool xdmf3 : {true, false}) {
+    std::string x = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n";
+    // The grids of every line: `item(l, field, width)` the data item of a field of line l.
+    const auto grids = [&](const std::function<std::string(std::size_t, const char*, std::uint64_t)>& item) {
+      std::string out;
+      for (std::size_t l = 0; l < m_stems.size(); ++l) {
+        const std::uint64_t n = m_nodes[l];
+        out += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", m_stems[l]);
+        out += fmt::format(
+            "     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">"
+            "<DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"HDF\">results.h5:/xdmf/{}/segments"
+            "</DataItem></Topology>\n",
+            n - 1, n - 1, m_stems[l]);
+        out += "     <Geometry GeometryType=\"XYZ\">" + item(l, "position", 3) + "</Geometry>\n";
+        for (const char* f : {"effective_tension", "bending_moment", "curvature", "torque"})
+          out += fmt::format(
+              "     <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">{}</Attribute>\n", f,
+              item(l, f, 1));
+        out += "    </Grid>\n";
+      }
+      return out;
+    };
+    if (dynamic) {
+      x += "  <Grid Name=\"lines\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      for (std::uint64_t frame = 0; frame < frames; ++frame) {
+        x += fmt::format(
+            "   <Grid Name=\"t{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time "
+            "Value=\"{:.9g}\"/>\n",
+            m_frames[frame], m_times[m_frames[frame]]);
+        x += grids([&](std::size_t l, const char* field, std::uint64_t width) {
+          // Row `frame` of the series [frame, node(, xyz)]: start, stride, count, the series' dimensions.
+          const std::uint64_t n = m_nodes[l];
+          const std::string path = fmt::format("results.h5:/xdmf/{}/frames/{}", m_stems[l], field);
+          const std::string dims = width > 1 ? fmt::format("{} {}", n, width) : fmt::format("{}", n);
+          const std::string all = fmt::format("{} {}", frames, dims);
+          const std::string zeros = width > 1 ? " 0 0" : " 0", ones = width > 1 ? " 1 1" : " 1";
+          if (xdmf3)
+            return fmt::format(
+                "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">"
+                "{}|{}{}:1{}:1 {}:{}</DataItem>",
+                dims, path, frame, zeros, ones, dims, all);
+          return fmt::format(
+              "<DataItem ItemType=\"HyperSlab\" Dimensions=\"{}\" Type=\"HyperSlab\">"
+              "<DataItem Dimensions=\"3 {}\" Format=\"XML\">{}{} 1{} 1 {}</DataItem>"
+              "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">{}</DataItem>"
+              "</DataItem>",
+              dims, width > 1 ? 3 : 2, frame, zeros, ones, dims, all, path);
+        });
+        x += "   </Grid>\n";
+      }
+      x += "  </Grid>\n";
+    } else {
+      x += "  <Grid Name=\"statics\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
+      x += grids([&](std::size_t l, const char* field, std::uint64_t width) {
+        const std::uint64_t n = m_nodes[l];
         const std::string dims = width > 1 ? fmt::format("{} {}", n, width) : fmt::format("{}", n);
         return fmt::format(
-            "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"{}\" Format=\"HDF\">"
+            "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
             "results.h5:{}/{}</DataItem>",
-            dims, precision, group(l), name);
-      };
-      out += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", m_stems[l]);
-      out += fmt::format(
-          "     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">"
-          "<DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"HDF\">results.h5:/xdmf/{}/segments"
-          "</DataItem></Topology>\n",
-          n - 1, n - 1, m_stems[l]);
-      out += "     <Geometry GeometryType=\"XYZ\">" + item("position", 3) + "</Geometry>\n";
-      for (const char* f : {"effective_tension", "bending_moment", "curvature", "torque"})
-        out += fmt::format(
-            "     <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">{}</Attribute>\n", f,
-            item(f, 1));
-      out += "    </Grid>\n";
+            dims, linePath("/statics", m_stems[l]), field);
+      });
+      x += "  </Grid>\n";
     }
-    return out;
-  };
-  if (dynamic) {
-    x += "  <Grid Name=\"lines\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (const std::size_t k : m_frames) {
-      x += fmt::format(
-          "   <Grid Name=\"t{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time "
-          "Value=\"{:.9g}\"/>\n",
-          k, m_times[k]);
-      x += grid([&](std::size_t l) { return fmt::format("/xdmf/{}/t{}", m_stems[l], k); }, 4);
-      x += "   </Grid>\n";
-    }
-    x += "  </Grid>\n";
-  } else {
-    x += "  <Grid Name=\"statics\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
-    x += grid([&](std::size_t l) { return linePath("/statics", m_stems[l]); }, 8);
-    x += "  </Grid>\n";
+    x += " </Domain>\n</Xdmf>\n";
+    core::OutputFile out(m_dir / (xdmf3 ? "results.xdmf" : "results.xdmf2"));
+    out.write(x);
+    out.close();
   }
-  x += " </Domain>\n</Xdmf>\n";
-  core::OutputFile out(m_dir / "results.xdmf");
-  out.write(x);
-  out.close();
 }
 
 }  // namespace tangle::io

@@ -1,8 +1,9 @@
 #pragma once
 /// @file Hdf5Results.hpp
-/// One HDF5 file per run, `results.h5`, with an XDMF file beside it (`results.xdmf`) that lets ParaView
-/// open the lines' motion and fields. Layout (docs/results-hdf5.md; every dataset has `units` and
-/// `description` attributes, series are chunked along time and deflate + shuffle compressed):
+/// One HDF5 file per run, `results.h5`, with XDMF files beside it (`results.xdmf` for ParaView's XDMF 3
+/// readers, `results.xdmf2` for its XDMF 2 reader) that let ParaView open the lines' motion and fields.
+/// Layout (docs/results-hdf5.md; every dataset has `units` and `description` attributes, series are
+/// chunked along time and deflate + shuffle compressed):
 ///
 ///     /                       attrs: tangle_version, title, model_file, model_text (the model as run)
 ///     /statics/lines/<line>/  arc_length, position [node, xyz], effective_tension, bending_moment,
@@ -20,12 +21,14 @@
 ///     /fatigue/<line>/        arc_length, damage_run, damage_per_year, life_years, cycles, largest_range,
 ///                             worst_point [node]
 ///     /xdmf/<line>/segments   [element, 2] node indices (the XDMF polyline topology)
-///     /xdmf/<line>/t<k>/      position, effective_tension, bending_moment, curvature, torque at output k,
-///                             every output.vtk_interval (the frames results.xdmf shows in ParaView)
+///     /xdmf/<line>/frames/    position [frame, node, xyz], effective_tension, bending_moment, curvature,
+///                             torque [frame, node], a row every output.vtk_interval (the frames
+///                             results.xdmf and results.xdmf2 show in ParaView); /xdmf/frame_time [frame]
 ///
 /// Rows are written a chunk at a time and the file is flushed at every chunk, so a run that stops midway
 /// (or crashes) keeps everything up to the last chunk; a run that fails with an error keeps all of it.
 
+#include <array>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -73,7 +76,7 @@ class Hdf5Results {
 
  private:
   void writeXdmf() const;
-  /// The lines at output time m_times.back() as plain datasets /xdmf/<line>/t<k>/... for the XDMF.
+  /// The lines at output time m_times.back() as a row of each line's frame series for the XDMF files.
   void writeFrame(const std::vector<solver::LineSnapshot>& lines);
 
   std::filesystem::path m_dir;
@@ -87,6 +90,10 @@ class Hdf5Results {
   std::vector<int> m_vesselSeries;             ///< per vessel: its motion series
   std::vector<double> m_times;
   std::vector<std::size_t> m_frames;  ///< output indices written as XDMF frames (every output.vtk_interval)
+  /// Number of fields of a frame: position, effective tension, bending moment, curvature, torque.
+  static constexpr std::size_t kFrameFields = 5;
+  std::vector<std::array<int, kFrameFields>> m_frameSeries;  ///< per line: its frame series (writeFrame)
+  int m_frameTime = -1;                                      ///< the frames' times [frame]
   double m_nextFrame = 0.0;           ///< s, time of the next XDMF frame
 };
 
