@@ -438,7 +438,15 @@ void Hdf5Results::writeXdmf() const {
   if (!dynamic && !m_hasStatics) return;
   const std::uint64_t frames = m_frames.size();
   for (const bool xdmf3 : {true, false}) {
-    std::string x = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n";
+    // Which reader, in the file itself: ParaView offers every XDMF reader for either file.
+    std::string x = "<?xml version=\"1.0\" ?>\n";
+    x += xdmf3 ? "<!-- tangle: open with ParaView's \"Xdmf3 Reader S\" or \"Xdmf3 Reader T\"; for its \"XDMF "
+                 "Reader\" "
+                 "open results.xdmf2 (docs/results-hdf5.md) -->\n"
+               : "<!-- tangle: open with ParaView's \"XDMF Reader\"; for its \"Xdmf3 Reader S\" or \"Xdmf3 "
+                 "Reader T\" "
+                 "open results.xdmf (docs/results-hdf5.md) -->\n";
+    x += "<Xdmf Version=\"3.0\">\n <Domain>\n";
     // The grids of every line: `item(l, field, width)` the data item of a field of line l.
     const auto grids = [&](const std::function<std::string(std::size_t, const char*, std::uint64_t)>& item) {
       std::string out;
