@@ -7,10 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "TestPaths.hpp"
+#include "support/ContactChecks.hpp"
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/core/Units.hpp"
@@ -285,6 +287,65 @@ TEST(AssemblyPart, EveryPartAllowedNextToAContactIsExact) {
   EXPECT_GT(allowed, 10);
   RecordProperty("refused", refused);
   RecordProperty("allowed", allowed);
+}
+
+TEST(AssemblyPart, OutputSnapshotWithContactTakesTheEndsAloneAndEqualsAWholeAssembly) {
+  // Two taut wires crossing at mid-span, the upper one laid on the lower (its start shape lifted off it,
+  // then its weight pressing at the crossing: about 100 N in statics), their ends 50 m from the crossing,
+  // moving and accelerating: the output snapshot assembles the four line ends as a part (the contact loads
+  // nodes far from them), and its support reactions are a whole assembly's (plus M a in dynamics) at the
+  // ends, bit for bit.
+  analysis::Simulation sim(io::readModelString(R"(
+environment: {water_depth: 100}
+line_types:
+  - {name: wire, outer_diameter: 0.2, mass_per_length: 40, axial_stiffness: 5.0e8}
+lines:
+  - name: a
+    end_a: {type: pinned, position: [-50, 0, -50]}
+    end_b: {type: pinned, position: [50, 0, -50]}
+    sections: [{type: wire, length: 99.9, elements: 20}]
+  - name: b
+    end_a: {type: pinned, position: [0, -50, -49.81]}
+    end_b: {type: pinned, position: [0, 50, -49.81]}
+    sections: [{type: wire, length: 99.9, elements: 20}]
+contact: {restitution: 0.5}
+)",
+                                               "crossing wires (test)"));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  const model::DofMap& dofs = sim.model().dofs();
+  for (Eigen::Index i = 0; i < sim.state().velocity.size(); ++i) {
+    sim.state().velocity[i] = 0.01 * std::sin(0.7 * static_cast<double>(i));
+    sim.state().acceleration[i] = 0.1 * std::cos(1.3 * static_cast<double>(i));
+  }
+  for (const bool dynamic : {false, true}) {
+    solver::AssemblyRequest request;
+    request.time = sim.state().time;
+    request.dynamic = dynamic;
+    request.wantMatrix = false;
+    VecX whole, inertia = VecX::Zero(dofs.fullDofCount());
+    sim.assembler().assemble(sim.state(), request, whole, nullptr);  // the contact's candidates now
+    if (dynamic) sim.assembler().addMass(sim.state(), 0.0, nullptr, &sim.state().acceleration, &inertia);
+    whole += inertia;
+    std::vector<int> ends;
+    for (const model::Line& line : sim.model().lines())
+      ends.insert(ends.end(), {line.firstNode, line.lastNode()});
+    solver::AssemblyPart part;
+    ASSERT_TRUE(sim.assembler().selectPart(ends, part)) << "the part path is the one under test";
+    // The contact acts at the whole assembly (its force, whichever formulation).
+    EXPECT_GT(test::pressedContact(*sim.contact(), 0, 1).normalForce, 10.0);
+    const std::vector<solver::LineSnapshot> lines = sim.snapshot(dynamic);
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const model::Line& line = sim.model().lines()[l];
+      const Vec3 a = -whole.segment<3>(dofs.firstDof(line.firstNode));
+      const Vec3 b = -whole.segment<3>(dofs.firstDof(line.lastNode()));
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(lines[l].endForceA[k], a[k])
+            << line.name << " end A, component " << k << ", dynamic " << dynamic;
+        EXPECT_EQ(lines[l].endForceB[k], b[k])
+            << line.name << " end B, component " << k << ", dynamic " << dynamic;
+      }
+    }
+  }
 }
 
 }  // namespace
