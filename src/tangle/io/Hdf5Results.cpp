@@ -18,7 +18,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Series of one line, in this order in Hdf5Results::m_lineSeries.
 /// The fields of a ParaView frame (writeFrame, results.xdmf), in the order of Hdf5Results::m_frameSeries.
 struct FrameField {
   const char* name;
@@ -37,6 +36,7 @@ constexpr std::array<FrameField, 5> kFrameFieldSpecs{{
 /// abruptly (a crash) may lose of them.
 constexpr int kFrameChunkRows = 8;
 
+/// Series of one line, in this order in Hdf5Results::m_lineSeries.
 enum LineSeries {
   kPosition,
   kTension,
@@ -254,7 +254,7 @@ void Hdf5Results::record(double time, const std::vector<solver::LineSnapshot>& l
 void Hdf5Results::writeFrame(const std::vector<solver::LineSnapshot>& lines) {
   // A row of each line's frame series (single precision, as the time series), whatever time histories the
   // model asks for: the XDMF files point into them by hyperslabs. (Stored as five plain datasets per line
-  // and frame, their creation in the file took 10 % of the CPU of a 12-line run: docs/performance.md.)
+  // and frame, their creation in the file took 13 % of the CPU of a 12-line run: docs/performance.md.)
   const std::size_t k = m_times.size() - 1;
   m_frames.push_back(k);
   m_file->append(m_frameTime, &m_times[k]);
@@ -440,12 +440,11 @@ void Hdf5Results::writeXdmf() const {
   for (const bool xdmf3 : {true, false}) {
     // Which reader, in the file itself: ParaView offers every XDMF reader for either file.
     std::string x = "<?xml version=\"1.0\" ?>\n";
-    x += xdmf3 ? "<!-- tangle: open with ParaView's \"Xdmf3 Reader S\" or \"Xdmf3 Reader T\"; for its \"XDMF "
-                 "Reader\" "
-                 "open results.xdmf2 (docs/results-hdf5.md) -->\n"
-               : "<!-- tangle: open with ParaView's \"XDMF Reader\"; for its \"Xdmf3 Reader S\" or \"Xdmf3 "
-                 "Reader T\" "
-                 "open results.xdmf (docs/results-hdf5.md) -->\n";
+    const char* xdmf3Readers = "\"Xdmf3 Reader S\" or \"Xdmf3 Reader T\"";
+    const char* xdmf2Reader = "\"XDMF Reader\"";
+    x += fmt::format("<!-- tangle: open with ParaView's {}; for its {} open {} (docs/results-hdf5.md) -->\n",
+                     xdmf3 ? xdmf3Readers : xdmf2Reader, xdmf3 ? xdmf2Reader : xdmf3Readers,
+                     xdmf3 ? "results.xdmf2" : "results.xdmf");
     x += "<Xdmf Version=\"3.0\">\n <Domain>\n";
     // The grids of every line: `item(l, field, width)` the data item of a field of line l.
     const auto grids = [&](const std::function<std::string(std::size_t, const char*, std::uint64_t)>& item) {
