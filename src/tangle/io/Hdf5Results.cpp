@@ -446,26 +446,33 @@ void Hdf5Results::writeXdmf() const {
                      xdmf3 ? xdmf3Readers : xdmf2Reader, xdmf3 ? xdmf2Reader : xdmf3Readers,
                      xdmf3 ? "results.xdmf2" : "results.xdmf");
     x += "<Xdmf Version=\"3.0\">\n <Domain>\n";
-    // The grids of every line: `item(l, field, width)` the data item of a field of line l.
-    const auto grids = [&](const std::function<std::string(std::size_t, const char*, std::uint64_t)>& item) {
-      std::string out;
-      for (std::size_t l = 0; l < m_stems.size(); ++l) {
-        const std::uint64_t n = m_nodes[l];
-        out += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", m_stems[l]);
-        out += fmt::format(
-            "     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">"
-            "<DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"HDF\">results.h5:/xdmf/{}/segments"
-            "</DataItem></Topology>\n",
-            n - 1, n - 1, m_stems[l]);
-        out += "     <Geometry GeometryType=\"XYZ\">" + item(l, "position", 3) + "</Geometry>\n";
-        for (const char* f : {"effective_tension", "bending_moment", "curvature", "torque"})
-          out += fmt::format(
-              "     <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">{}</Attribute>\n", f,
-              item(l, f, 1));
-        out += "    </Grid>\n";
-      }
-      return out;
-    };
+    // The grids of every line: `item(l, field, dims, vector)` the data item of a field of line l, whose
+    // values have dimensions `dims` ("n 3" for a vector per node, else "n").
+    const auto grids =
+        [&](const std::function<std::string(std::size_t, const char*, const std::string&, bool)>& item) {
+          std::string out;
+          for (std::size_t l = 0; l < m_stems.size(); ++l) {
+            const std::uint64_t n = m_nodes[l];
+            const auto fieldItem = [&](const FrameField& f) {
+              return item(l, f.name, f.vector ? fmt::format("{} 3", n) : fmt::format("{}", n), f.vector);
+            };
+            out += fmt::format("    <Grid Name=\"{}\" GridType=\"Uniform\">\n", m_stems[l]);
+            out += fmt::format(
+                "     <Topology TopologyType=\"Polyline\" NodesPerElement=\"2\" NumberOfElements=\"{}\">"
+                "<DataItem Dimensions=\"{} 2\" NumberType=\"Int\" Format=\"HDF\">results.h5:/xdmf/{}/segments"
+                "</DataItem></Topology>\n",
+                n - 1, n - 1, m_stems[l]);
+            // The frame fields (kFrameFieldSpecs): the position as the geometry, the others as node
+            // attributes.
+            out += "     <Geometry GeometryType=\"XYZ\">" + fieldItem(kFrameFieldSpecs[0]) + "</Geometry>\n";
+            for (std::size_t f = 1; f < kFrameFieldSpecs.size(); ++f)
+              out += fmt::format(
+                  "     <Attribute Name=\"{}\" AttributeType=\"Scalar\" Center=\"Node\">{}</Attribute>\n",
+                  kFrameFieldSpecs[f].name, fieldItem(kFrameFieldSpecs[f]));
+            out += "    </Grid>\n";
+          }
+          return out;
+        };
     if (dynamic) {
       x += "  <Grid Name=\"lines\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
       for (std::uint64_t frame = 0; frame < frames; ++frame) {
@@ -473,13 +480,11 @@ void Hdf5Results::writeXdmf() const {
             "   <Grid Name=\"t{}\" GridType=\"Collection\" CollectionType=\"Spatial\">\n    <Time "
             "Value=\"{:.9g}\"/>\n",
             m_frames[frame], m_times[m_frames[frame]]);
-        x += grids([&](std::size_t l, const char* field, std::uint64_t width) {
+        x += grids([&](std::size_t l, const char* field, const std::string& dims, bool vector) {
           // Row `frame` of the series [frame, node(, xyz)]: start, stride, count, the series' dimensions.
-          const std::uint64_t n = m_nodes[l];
           const std::string path = fmt::format("results.h5:/xdmf/{}/frames/{}", m_stems[l], field);
-          const std::string dims = width > 1 ? fmt::format("{} {}", n, width) : fmt::format("{}", n);
           const std::string all = fmt::format("{} {}", frames, dims);
-          const std::string zeros = width > 1 ? " 0 0" : " 0", ones = width > 1 ? " 1 1" : " 1";
+          const std::string zeros = vector ? " 0 0" : " 0", ones = vector ? " 1 1" : " 1";
           if (xdmf3)
             return fmt::format(
                 "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">"
@@ -490,16 +495,14 @@ void Hdf5Results::writeXdmf() const {
               "<DataItem Dimensions=\"3 {}\" Format=\"XML\">{}{} 1{} 1 {}</DataItem>"
               "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"4\" Format=\"HDF\">{}</DataItem>"
               "</DataItem>",
-              dims, width > 1 ? 3 : 2, frame, zeros, ones, dims, all, path);
+              dims, vector ? 3 : 2, frame, zeros, ones, dims, all, path);
         });
         x += "   </Grid>\n";
       }
       x += "  </Grid>\n";
     } else {
       x += "  <Grid Name=\"statics\" GridType=\"Collection\" CollectionType=\"Spatial\">\n";
-      x += grids([&](std::size_t l, const char* field, std::uint64_t width) {
-        const std::uint64_t n = m_nodes[l];
-        const std::string dims = width > 1 ? fmt::format("{} {}", n, width) : fmt::format("{}", n);
+      x += grids([&](std::size_t l, const char* field, const std::string& dims, bool) {
         return fmt::format(
             "<DataItem Dimensions=\"{}\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">"
             "results.h5:{}/{}</DataItem>",
