@@ -6,6 +6,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/ForEachIndex.hpp"
+#include "tangle/core/PendingSum.hpp"
 #include "tangle/core/Ramp.hpp"
 #include "tangle/hydro/AiryWave.hpp"
 #include "tangle/hydro/ComponentSea.hpp"
@@ -345,7 +346,8 @@ void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const V
   if (!out) return;
   // The inertia force of every assembly (the matrix of few): a loop of its own, without the matrix's
   // branches (docs/performance.md).
-  double* f = out->data();
+  // (Each node's sum held in registers while its elements add to it: PendingSum.)
+  PendingSum<3> f(out->data());
   const double* a = acceleration->data();
   forEachIndex(list, elements.size(), [&](std::size_t e) {
     const AddedMass& ma = m_addedMass[e];
@@ -353,9 +355,8 @@ void HydroLoads::addElementMass(double mf, solver::SystemMatrix* matrix, const V
     const double dm = ma.axial - ma.normal;
     for (const int d : {dofs.firstDof(elements[e].node1), dofs.firstDof(elements[e].node2)}) {
       const double c = dm * (t.x() * a[d] + t.y() * a[d + 1] + t.z() * a[d + 2]);
-      f[d] += ma.normal * a[d] + c * t.x();
-      f[d + 1] += ma.normal * a[d + 1] + c * t.y();
-      f[d + 2] += ma.normal * a[d + 2] + c * t.z();
+      f.add(d, std::array<double, 3>{ma.normal * a[d] + c * t.x(), ma.normal * a[d + 1] + c * t.y(),
+                                     ma.normal * a[d + 2] + c * t.z()});
     }
   });
 }

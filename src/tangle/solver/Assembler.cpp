@@ -6,6 +6,7 @@
 
 #include "tangle/core/Error.hpp"
 #include "tangle/core/ForEachIndex.hpp"
+#include "tangle/core/PendingSum.hpp"
 #include "tangle/seabed/Seabed.hpp"
 
 namespace tangle::solver {
@@ -424,14 +425,17 @@ void Assembler::addWeight(const model::State& state, const AssemblyRequest& requ
   const auto& env = m_model->environment();
   const double g = env.gravity;
   const double rho = env.waterDensity;
+  // The vertical entries added with the last one held in a register (PendingSum: the chain through memory
+  // from one element's second node to the next one's first was most of this loop).
+  PendingSum<1> vertical(force.data());
   forEachIndex(elements, m_model->elements().size(), [&](std::size_t e) {
     const model::LineElement& el = m_model->elements()[e];
     const double frac = submergedFraction(state.position[el.node1].z(), state.position[el.node2].z());
     // Out-of-balance force: F = f_int - f_ext, and the external load is -weight/2 * z at each node.
     const double half = (m_halfWeight[e] - m_halfBuoyancy[e] * frac) * request.loadFactor;
     const int z1 = dofs.firstDof(el.node1) + 2, z2 = dofs.firstDof(el.node2) + 2;
-    force[z1] += half;
-    force[z2] += half;
+    vertical.add(z1, half);
+    vertical.add(z2, half);
     if (matrix && frac > 0.0 && frac < 1.0) {
       // An element through the surface: its buoyancy changes with the heights of its nodes, the waterplane
       // stiffness of a float (without it in H the vertical position of a surface-piercing buoy is held by
@@ -447,6 +451,7 @@ void Assembler::addWeight(const model::State& state, const AssemblyRequest& requ
       matrix->add(z2, z2, -k * d2);
     }
   });
+  vertical.flush();
   forEachIndex(attachments, m_model->attachments().size(), [&](std::size_t i) {
     const model::NodeAttachment& a = m_model->attachments()[i];
     const double submerged = state.position[a.node].z() < 0.0 ? 1.0 : 0.0;
@@ -674,15 +679,25 @@ bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
   part.writtenNodes.clear();
   for (std::size_t n = nodeLo; n < nodeHi; ++n)
     if (m_nodeMark[n] != 0) part.writtenNodes.push_back(static_cast<int>(n));
-  // Contributors left out of parts: none of their nodes may be in the part. Their marks change only with a
-  // whole assembly (line contact's candidates), so they are gathered once after each.
+  return partUsable(part);
+}
+
+const std::vector<char>& Assembler::loadedNodes() {
+  // The marks change only with a whole assembly (line contact's candidates), so they are gathered once
+  // after each.
   if (!m_loadedMarkValid) {
     m_anyLoadedMark = false;
-    m_loadedMark.assign(nodeCount, 0);
+    m_loadedMark.assign(static_cast<std::size_t>(m_model->nodeCount()), 0);
     for (const LoadContributor* c : m_contributors)
       m_anyLoadedMark = c->markLoadedNodes(m_loadedMark) || m_anyLoadedMark;
     m_loadedMarkValid = true;
   }
+  return m_loadedMark;
+}
+
+bool Assembler::partUsable(const AssemblyPart& part) {
+  // Contributors left out of parts: none of their nodes may be in the part.
+  loadedNodes();
   if (m_anyLoadedMark)
     for (const int n : part.nodes)
       if (m_loadedMark[static_cast<std::size_t>(n)]) return false;

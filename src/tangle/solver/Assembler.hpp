@@ -85,6 +85,19 @@ class Assembler {
   /// (part unusable: assemble the whole model) when it holds a node a contributor marks as loaded
   /// (LoadContributor::markLoadedNodes).
   bool selectPart(const std::vector<int>& moved, AssemblyPart& part);
+  /// Whether a part selectPart made is usable now: no contributor marks one of its nodes as loaded. (Its
+  /// nodes, elements and attachments depend on the moved nodes alone; the marks change with each whole
+  /// assembly: a caller that assembles the same part again and again asks this instead of selecting it anew.)
+  bool partUsable(const AssemblyPart& part);
+  /// Per node, 1 where a contributor left out of parts loads it or reads its state (LoadContributor::
+  /// markLoadedNodes: near a line contact, the ends tied to a vessel or a free point), as of the last whole
+  /// assembly; else 0.
+  const std::vector<char>& loadedNodes();
+  /// Whether loadedNodes() marks any node.
+  bool anyLoadedNode() {
+    loadedNodes();
+    return m_anyLoadedMark;
+  }
   /// Sets the entries of `force` (full DOFs) at part.nodes to what assemble(state, request, force, nullptr)
   /// would give them, bit for bit (the same terms summed in the same order); the other entries are kept.
   /// Correct when `force` holds a full assembly at a state that differs from `state` only at nodes whose

@@ -123,6 +123,15 @@ class GeneralizedAlpha {
   bool m_debug = false;  // TANGLE_DEBUG_DYNAMICS set: print every Newton iteration on stderr
   model::DynamicSolverSpec m_choice;  // dynamics.solver: the path every step tries first
   double m_lastStep = 0.0;       // the last converged step [s]
+  // The predictor's history: the accelerations at the starts of the last two converged steps, a_{n-1} and
+  // a_{n-2} [m/s^2], how many steps converged since initialize() and the length of the step before the last
+  // [s] (a_{n-2} to a_{n-1}).
+  VecX m_previousAcceleration, m_olderAcceleration;
+  // Per full DOF, 1 for the translations of nodes without rotations (the DOFs the predictor may extrapolate),
+  // and that less this step's loaded nodes.
+  VecX m_cableTranslation, m_extrapolated;
+  int m_previousSteps = 0;
+  double m_stepBefore = 0.0;
   bool m_frozen = false;         // freezeEnvironment was called
   double m_frozenTime = 0.0;     // [s]
 };

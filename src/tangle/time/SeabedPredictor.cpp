@@ -47,6 +47,11 @@ void SeabedPredictor::updateMass(const model::State& start) {
   m_massAge = kMassAge;
 }
 
+bool SeabedPredictor::resolves(const model::State& start, double dt) {
+  if (m_massAge <= 0 || m_massAlong.size() != m_assembler->model().dofs().fullDofCount()) updateMass(start);
+  return m_largestOmegaSquared * dt * dt < 1.0;
+}
+
 int SeabedPredictor::correct(const model::State& start, const PredictorCoefficients& c, double dt,
                              const std::vector<double>& allowed, VecX& dq) {
   const model::Model& model = m_assembler->model();

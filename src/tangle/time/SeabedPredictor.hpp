@@ -59,6 +59,10 @@ class SeabedPredictor {
   /// of it is left as predicted. @return the number of nodes corrected.
   int correct(const model::State& start, const PredictorCoefficients& coefficients, double dt,
               const std::vector<double>& allowed, VecX& dq);
+  /// Whether a step of dt [s] resolves the oscillation on the seabed spring of every cable node free in its
+  /// translations (omega dt < 1, omega^2 = k L / m; true when there is none), with the masses of `start` (the
+  /// same ones correct() uses: call it first, for the same `start`).
+  bool resolves(const model::State& start, double dt);
 
  private:
   /// Sets the mass along the seabed normal of every cable node free in its translations at `start` and the
