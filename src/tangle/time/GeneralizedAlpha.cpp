@@ -229,16 +229,15 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
     //   (|a_n - 2 a_{n-1} + a_{n-2}| >= |a_n - a_{n-1}|), i.e. the acceleration does not change smoothly
     //   there, and in part where it would have missed by more than half as much (examples/units-collide,
     //   against the constant acceleration: 25 % more evaluations without the test);
-    // - beam nodes (rotations): a steel riser's touchdown took 10 % more (examples/scr-fatigue), as it did
-    // with
+    // - beam nodes (rotations): a steel riser's touchdown took 10 % more (examples/scr-fatigue), as with
     //   SeabedPredictor's correction;
     // - nodes near a line contact, or tied to a vessel or a free point (Assembler::loadedNodes): an impact is
     //   no smooth motion, and a predictor carried past it can start Newton on another branch of the contact
     //   problem (RandomSweepTest: a sweep that gained 19 % of its launch energy, another that stopped).
     if (m_previousSteps >= 2 && mode.seabedPredictor && sameStep(dt, m_stepBefore) &&
         m_seabedPredictor.resolves(start, dt)) {
-      // The DOFs extrapolated, as weights 1 (a flat loop the compiler vectorises: node by node, this was 4 %
-      // of a coupled host's run): free cable nodes' translations, less the loaded nodes now.
+      // The DOFs extrapolated, as weights 1 (one flat loop over the DOFs: node by node, the loop was 4 % of a
+      // coupled host's run): free cable nodes' translations, less the loaded nodes now.
       if (m_cableTranslation.size() != nfull) {
         m_cableTranslation.setZero(nfull);
         for (int node = 0; node < dofs.nodeCount(); ++node)
