@@ -514,7 +514,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
   m_forceOld = m_force;
   m_olderAcceleration.swap(m_previousAcceleration);
   m_previousAcceleration = start.acceleration;
-  ++m_previousSteps;
+  m_previousSteps = std::min(m_previousSteps + 1, 2);  // two are all the predictor reads
   m_stepBefore = m_lastStep;
   m_lastStep = dt;
   m_newton.planRefresh(outcome.iterations, outcome.partIterations, m_frozen);

@@ -124,8 +124,8 @@ class GeneralizedAlpha {
   model::DynamicSolverSpec m_choice;  // dynamics.solver: the path every step tries first
   double m_lastStep = 0.0;       // the last converged step [s]
   // The predictor's history: the accelerations at the starts of the last two converged steps, a_{n-1} and
-  // a_{n-2} [m/s^2], how many steps converged since initialize() and the length of the step before the last
-  // [s] (a_{n-2} to a_{n-1}).
+  // a_{n-2} [m/s^2], how many steps converged since initialize() (up to 2) and the length of the step before
+  // the last [s] (a_{n-2} to a_{n-1}).
   VecX m_previousAcceleration, m_olderAcceleration;
   // Per full DOF, 1 for the translations of nodes without rotations (the DOFs the predictor may extrapolate),
   // and that less this step's loaded nodes.

@@ -38,18 +38,29 @@
 namespace tangle {
 namespace {
 
-constexpr double kLargeStep = 0.05;  // [s]
+constexpr double kLargeStep = 0.05;      // [s]: the seabed correction acts
+constexpr double kResolvingStep = 0.01;  // [s]: the acceleration is extrapolated
+
+/// The mooring example for 30 s at step dt [s] and test::kComparisonTolerance, the default predictor against
+/// the constant acceleration: the fairlead tension at every step within 5e-5 of its range.
+void expectSameResponseAsConstantAcceleration(double dt) {
+  const test::FairleadRun plain = test::runMooringExample(30.0, test::extrapolatedPredictor(), {}, dt);
+  const test::FairleadRun predicted = test::runMooringExample(30.0, {}, {}, dt);
+  ASSERT_TRUE(plain.result.completed) << plain.result.message;
+  ASSERT_TRUE(predicted.result.completed) << predicted.result.message;
+  const double range = test::rangeAfter(plain, 0, 20.0);
+  const double worst = test::expectSameFairleadResponse(plain, predicted, 0, 5e-5 * range);
+  ::testing::Test::RecordProperty("largest_tension_difference_N", std::to_string(worst));
+  ::testing::Test::RecordProperty("range_N", std::to_string(range));
+}
+
+/// Residual evaluations per step of a run [-].
+double evaluationsPerStep(const time::DynamicResult& r) {
+  return static_cast<double>(r.newtonIterations) / r.steps;
+}
 
 TEST(SeabedPredictorTest, MooringLineSameResponseWithinTheConvergenceTolerance) {
-  const test::FairleadRun plain =
-      test::runMooringExample(30.0, test::extrapolatedPredictor(), {}, kLargeStep);
-  const test::FairleadRun seabed = test::runMooringExample(30.0, {}, {}, kLargeStep);
-  ASSERT_TRUE(plain.result.completed) << plain.result.message;
-  ASSERT_TRUE(seabed.result.completed) << seabed.result.message;
-  const double range = test::rangeAfter(plain, 0, 20.0);
-  const double worst = test::expectSameFairleadResponse(plain, seabed, 0, 5e-5 * range);
-  RecordProperty("largest_tension_difference_N", std::to_string(worst));
-  RecordProperty("range_N", std::to_string(range));
+  expectSameResponseAsConstantAcceleration(kLargeStep);
 }
 
 TEST(SeabedPredictorTest, FewerResidualEvaluationsAtLargeSteps) {
@@ -60,25 +71,15 @@ TEST(SeabedPredictorTest, FewerResidualEvaluationsAtLargeSteps) {
   ASSERT_TRUE(plain.result.completed) << plain.result.message;
   ASSERT_TRUE(seabed.result.completed) << seabed.result.message;
   ASSERT_EQ(plain.result.steps, seabed.result.steps);
-  const double perStepPlain = static_cast<double>(plain.result.newtonIterations) / plain.result.steps;
-  const double perStepSeabed = static_cast<double>(seabed.result.newtonIterations) / seabed.result.steps;
+  const double perStepPlain = evaluationsPerStep(plain.result);
+  const double perStepSeabed = evaluationsPerStep(seabed.result);
   EXPECT_LT(perStepSeabed, 0.95 * perStepPlain);
   RecordProperty("evaluations_per_step_extrapolated", std::to_string(perStepPlain));
   RecordProperty("evaluations_per_step_seabed", std::to_string(perStepSeabed));
 }
 
-constexpr double kResolvingStep = 0.01;  // [s]
-
 TEST(SeabedPredictorTest, ExtrapolatedAccelerationSameResponseWithinTheConvergenceTolerance) {
-  const test::FairleadRun plain =
-      test::runMooringExample(30.0, test::extrapolatedPredictor(), {}, kResolvingStep);
-  const test::FairleadRun linear = test::runMooringExample(30.0, {}, {}, kResolvingStep);
-  ASSERT_TRUE(plain.result.completed) << plain.result.message;
-  ASSERT_TRUE(linear.result.completed) << linear.result.message;
-  const double range = test::rangeAfter(plain, 0, 20.0);
-  const double worst = test::expectSameFairleadResponse(plain, linear, 0, 5e-5 * range);
-  RecordProperty("largest_tension_difference_N", std::to_string(worst));
-  RecordProperty("range_N", std::to_string(range));
+  expectSameResponseAsConstantAcceleration(kResolvingStep);
 }
 
 /// The benchmark chain deck converted, its fairlead (the coupled point: a pinned end at the origin's x, y)
@@ -114,8 +115,8 @@ TEST(SeabedPredictorTest, ExtrapolatedAccelerationFewerResidualEvaluationsAtSmal
   ASSERT_TRUE(plain.completed) << plain.message;
   ASSERT_TRUE(linear.completed) << linear.message;
   ASSERT_EQ(plain.steps, linear.steps);
-  const double perStepPlain = static_cast<double>(plain.newtonIterations) / plain.steps;
-  const double perStepLinear = static_cast<double>(linear.newtonIterations) / linear.steps;
+  const double perStepPlain = evaluationsPerStep(plain);
+  const double perStepLinear = evaluationsPerStep(linear);
   EXPECT_LT(perStepLinear, 0.9 * perStepPlain);
   RecordProperty("evaluations_per_step_extrapolated", std::to_string(perStepPlain));
   RecordProperty("evaluations_per_step_linear", std::to_string(perStepLinear));
