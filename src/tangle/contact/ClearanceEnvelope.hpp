@@ -202,6 +202,9 @@ class ClearanceEnvelope {
   double bulgeBound(const model::State& state, std::size_t pair) const;
   /// Every element's curve data (elementCurves), for bulgeBound (made at its first call).
   mutable std::vector<ElementCurve> m_curves;
+  /// bulgeBound's largest deviation per line at the state of this record() or recordStatic() [m] (NaN: not
+  /// yet; empty: none).
+  mutable std::vector<double> m_lineBulge;
   /// Gives a crossing's clearance to the node of each line nearest its closest point (statics:
   /// staticClearance; dynamics: a new minimum of dynamicClearance with the time, and of the pair's minimum).
   void recordCrossing(const model::State& state, std::size_t pair, const Crossing& c, bool dynamic);

@@ -128,6 +128,10 @@ class DistributedContact {
   /// The point stiffness k between two lines [N/m]: contact.stiffness or the automatic one (file comment);
   /// a crossing's stiffness at the penetration D^2 / (8 (rA + rB)) (file comment).
   double pointStiffness(int lineA, int lineB) const;
+  /// What the constructor stores for pointStiffness, nodeMass and massPerLength.
+  double computePointStiffness(int lineA, int lineB) const;
+  double computeNodeMass(int node) const;
+  double computeMassPerLength(int element) const;
   /// The law between two elements.
   BarrierPenalty law(int elementA, int elementB) const;
   /// a of the restitution by hysteresis [-] (loading along (1 + a) f).
@@ -153,7 +157,8 @@ class DistributedContact {
   const std::vector<ElementCurve>& curves() const { return m_curves; }
   /// A step, load increment or retry starts: the passes' shares are decided again at the next findSamples.
   void beginStep() {
-    m_bent.clear();
+    for (const int e : m_bentElements) m_bent[static_cast<std::size_t>(e)] = kNotBent;
+    m_bentElements.clear();
     m_found.valid = false;
   }
 
@@ -259,9 +264,10 @@ class DistributedContact {
   std::array<double, 3> radiusProfile(int element, double t) const;
   void addSample(const model::State& state, int slave, double xi, double weight,
                  const std::vector<int>& masters, const std::vector<Vec3>& reference);
-  double nodeMass(int node) const;
+  /// Lumped mass of a node [kg] (+inf if it is held).
+  double nodeMass(int node) const { return m_nodeMass[static_cast<std::size_t>(node)]; }
   /// Mass per unit length of an element's line [kg/m] (+inf if both its nodes are held).
-  double massPerLength(int element) const;
+  double massPerLength(int element) const { return m_massPerLength[static_cast<std::size_t>(element)]; }
   /// The dashpots per contact patch, the normal forces and the friction of the samples just found.
   void finishSamples(bool dashpot);
   /// Instantaneous effective mass of a centreline point with lumped node masses [kg].
@@ -342,9 +348,18 @@ class DistributedContact {
   std::vector<Shoulder> m_shoulders;
   double m_hysteresis;                       // a of HystereticRestitution, from contact.restitution [-]
   std::vector<double> m_lineAxialStiffness;  ///< smallest EA per line [N]
+  // Constants of the model, made once by the constructor (every sample asked them again: with their map
+  // and element look-ups 0.25 G instructions of drilling-riser-drift's run).
+  std::vector<double> m_pointStiffness;  ///< pointStiffness per pair of lines, row-major [N/m]
+  std::vector<double> m_nodeMass;        ///< nodeMass per node [kg]
+  std::vector<double> m_massPerLength;   ///< massPerLength per element [kg/m]
   std::vector<ContactSample> m_samples;
-  /// Bentness per element, held through a step (beginStep clears it).
-  std::map<int, double> m_bent;
+  /// Bentness per element, held through a step (beginStep clears it): kNotBent where not asked yet, and the
+  /// elements asked (a vector and not a map: three look-ups per Gauss point, 0.1 G instructions of
+  /// drilling-riser-drift's run in the map).
+  static constexpr double kNotBent = -1.0;
+  std::vector<double> m_bent;
+  std::vector<int> m_bentElements;
   std::vector<ElementCurve> m_curves;  ///< every element's C1 centreline data (SmoothCentreline.hpp)
   mutable std::vector<double> m_chordBound;  ///< chordBound per element [m] (NaN: not yet in this search)
   /// What the last findSamples was asked (its samples are kept while nothing else changed): a step's
