@@ -719,6 +719,7 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
   if (search.candidates().empty()) {
     // No pair is near: no samples, whatever the state (the lines apart: no copies of the state kept).
     m_samples.clear();
+    ++m_samplesVersion;
     m_found.valid = false;
     return;
   }
@@ -732,6 +733,7 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
     return;
   m_found.valid = false;
   m_samples.clear();
+  ++m_samplesVersion;
   const auto& elements = m_model->elements();
   m_chordBound.assign(elements.size(), std::numeric_limits<double>::quiet_NaN());
   // Per (slave element, master line): the master's candidate elements and the slave's contact intervals.
@@ -822,6 +824,7 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
 }
 
 void DistributedContact::finishSamples(bool dashpot) {
+  ++m_samplesVersion;  // the forces change
   // Restitution by hysteresis (HystereticRestitution, ContactLaw.hpp): the spring's force times
   // psi(dp/dt) = 1 + a tanh(v / v_s), v_s per pair of elements (restitutionSpeed). (A clipped dashpot of
   // damping ratio zeta(e) per patch, before: its force at first touch is c v0, and at e = 0 (zeta 100) two
@@ -1166,8 +1169,11 @@ std::string DistributedContact::crossedSinceCommit(const model::State& state) co
   return {};
 }
 
-std::map<std::pair<int, int>, DistributedContact::PairMotion> DistributedContact::pairMotions() const {
-  std::map<std::pair<int, int>, PairMotion> motions;
+const std::map<std::pair<int, int>, DistributedContact::PairMotion>& DistributedContact::pairMotions() const {
+  if (m_motionsVersion == m_samplesVersion) return m_motions;
+  m_motionsVersion = m_samplesVersion;
+  std::map<std::pair<int, int>, PairMotion>& motions = m_motions;
+  motions.clear();
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
     const auto [it, fresh] = motions.try_emplace(linePair(smp));

@@ -62,6 +62,7 @@
 /// stiffness k within the linear range of the law; a parallel contact of length L is k L / D stiff.
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
@@ -307,7 +308,13 @@ class DistributedContact {
     double radii = 0.0;          ///< sum of the contact radii there [m]
     double limit = 0.0;          ///< the law's pmax there [m]
   };
-  std::map<std::pair<int, int>, PairMotion> pairMotions() const;
+  /// Of the samples as they are (kept while m_samplesVersion is unchanged: the commit and the next step's
+  /// limit ask about the same samples; 0.1 G instructions of drilling-riser-drift's run made twice).
+  const std::map<std::pair<int, int>, PairMotion>& pairMotions() const;
+  /// Counts the changes of m_samples (findSamples's new search, finishSamples) [-].
+  std::uint64_t m_samplesVersion = 0;
+  mutable std::uint64_t m_motionsVersion = ~std::uint64_t{0};  ///< the samples' version of m_motions
+  mutable std::map<std::pair<int, int>, PairMotion> m_motions;
   /// Whether a pair's approach carries its crossing a further p0 deeper (impactStepLimit).
   bool crossingApproach(const PairMotion& motion) const;
   /// The time a crossing struck now takes to load and unload at e = 1 [s] (impactStepLimit).
