@@ -33,15 +33,20 @@ constexpr double kWakeMargin = 1e-9;
 struct ChordClearance {
   double clearance = kInf, low = kInf;
 };
+/// x less its nearest point on the chord of segment j of line b [m], and that point's parameter s in [0, 1].
+Vec3 chordOffset(const std::vector<Vec3>& position, const model::Line& b, int j, const Vec3& x, double& s) {
+  const Vec3& p = position[b.firstNode + j];
+  const Vec3 axis = position[b.firstNode + j + 1] - p;
+  const double l2 = axis.squaredNorm();
+  s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
+  return x - (p + s * axis);
+}
 ChordClearance chordClearance(const std::vector<Vec3>& position, const std::vector<double>& diameter,
                               const model::Line& b, int j, const Vec3& x) {
   const int m1 = b.firstNode + j, m2 = m1 + 1;
-  const Vec3& p = position[m1];
-  const Vec3 axis = position[m2] - p;
-  const double l2 = axis.squaredNorm();
-  const double s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
+  double s = 0.0;
+  const double distance = chordOffset(position, b, j, x, s).norm();
   const double radius = 0.5 * (s < 0.5 ? diameter[m1] : diameter[m2]);
-  const double distance = (x - (p + s * axis)).norm();
   return {distance - radius, distance - 0.5 * std::max(diameter[m1], diameter[m2])};
 }
 }  // namespace
@@ -65,6 +70,14 @@ struct ClearanceEnvelope::SegmentRule {
   }
   bool assessed(int i, int j) const {
     return !parted->parted(static_cast<std::size_t>(b->firstElement + j), time) && allowed(i, j);
+  }
+  /// Whether segment i of line a and segment j of line b are measured against each other (the crossing
+  /// pass): neither parted, and the element pair not excluded.
+  bool segmentsAssessed(const ContactCandidates& rules, int i, int j) const {
+    const int ea = a->firstElement + i, eb = b->firstElement + j;
+    return !parted->parted(static_cast<std::size_t>(ea), time) &&
+           !parted->parted(static_cast<std::size_t>(eb), time) &&
+           (everyPair || rules.elementPairAllowed(ea, eb));
   }
 };
 
@@ -268,11 +281,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
     // elements: 0.67 G instructions for the static envelope).
     hint.assign(static_cast<std::size_t>(a.nodeCount), 0);
     const auto chordDistance2 = [&](const Vec3& x, int j) {
-      const Vec3& p = state.position[b.firstNode + j];
-      const Vec3 axis = state.position[b.firstNode + j + 1] - p;
-      const double l2 = axis.squaredNorm();
-      const double u = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
-      return (x - (p + u * axis)).squaredNorm();
+      double s = 0.0;
+      return chordOffset(state.position, b, j, x, s).squaredNorm();
     };
     for (int i = 0; i < a.nodeCount; ++i) {
       const Vec3& x = state.position[a.firstNode + i];
@@ -558,10 +568,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
     const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
     const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
     if (!(geometry::segmentBoxGap(a0, a1, b0, b1) - ra - rb < best.clearance)) return;
-    if (rule.parted->parted(static_cast<std::size_t>(ea), state.time) ||
-        rule.parted->parted(static_cast<std::size_t>(eb), state.time))
-      return;
-    if (!rule.everyPair && !m_exclusions->elementPairAllowed(ea, eb)) return;
+    if (!rule.segmentsAssessed(*m_exclusions, i, j)) return;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
     const double clearance = d.distance - ra - rb;
     if (clearance < best.clearance) best = {clearance, i, j, d.s, d.t};
@@ -657,11 +664,8 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
   double threshold = kInf;  // the best clearance on the curves known [m]
   for (int i = firstA; i <= lastA; ++i)
     for (int j = firstB; j <= lastB; ++j) {
+      if (!rule.segmentsAssessed(*m_exclusions, i, j)) continue;
       const int ea = a.firstElement + i, eb = b.firstElement + j;
-      if (rule.parted->parted(static_cast<std::size_t>(ea), state.time) ||
-          rule.parted->parted(static_cast<std::size_t>(eb), state.time) ||
-          (!rule.everyPair && !m_exclusions->elementPairAllowed(ea, eb)))
-        continue;
       Candidate& k = slot(i, j);
       k.measured = true;
       const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];

@@ -334,29 +334,13 @@ CentrelineDistance DistributedContact::project(const model::State& state, int sl
 
 double DistributedContact::nearestParameter(const model::State& state, const Vec3& x, int master,
                                             double t0) const {
-  // The piece in the power basis, c(t) = q0 + q1 t + q2 t^2 + q3 t^3 [m], made once per call from the
-  // Hermite form of centrelineWeights (h00 = 1 - 3t^2 + 2t^3, h01 = 3t^2 - 2t^3, h10 = t - 2t^2 + t^3,
-  // h11 = t^3 - t^2 on the nodes x1, x2 and the node tangents m1 = a0 x0 + a1 x1 + a2 x2,
-  // m2 = b1 x1 + b2 x2 + b3 x3; a chord: q0 = x1, q1 = x2 - x1): each Newton iteration is then a Horner
-  // evaluation of the point and its two derivatives (30 multiply-adds instead of three weight arrays and
-  // three sums over the four nodes: 1.42 G instructions of drilling-riser-drift's run went here, 600 per
+  // The piece in the power basis (centrelinePowerBasis), made once per call: each Newton iteration is then a
+  // Horner evaluation of the point and its two derivatives (30 multiply-adds instead of three weight arrays
+  // and three sums over the four nodes: 1.42 G instructions of drilling-riser-drift's run went here, 600 per
   // call). The iterate differs from the weights' by round-off; the stop (a move below 1e-13) is the same.
   const ElementCurve& curve = m_curves[static_cast<std::size_t>(master)];
   const Vec3& x1 = state.position[curve.node[1]];
-  const Vec3& x2 = state.position[curve.node[2]];
-  Vec3 q1, q2, q3;
-  if (curve.smooth) {
-    const Vec3 m1 = curve.a0 * state.position[curve.node[0]] + curve.a1 * x1 + curve.a2 * x2;
-    const Vec3 m2 = curve.b1 * x1 + curve.b2 * x2 + curve.b3 * state.position[curve.node[3]];
-    const Vec3 rise = x2 - x1;
-    q1 = m1;
-    q2 = 3.0 * rise - 2.0 * m1 - m2;
-    q3 = m1 + m2 - 2.0 * rise;
-  } else {
-    q1 = x2 - x1;
-    q2.setZero();
-    q3.setZero();
-  }
+  const auto [q1, q2, q3] = centrelinePowerBasis(curve, state.position);
   // x relative to the piece's first node: the point's offset is then O(element) and not O(coordinates).
   const Vec3 offset = x - x1;
   double t = std::clamp(t0, 0.0, 1.0);

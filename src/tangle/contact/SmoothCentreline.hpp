@@ -96,6 +96,25 @@ inline std::array<double, 4> centrelineCurvatureWeights(const ElementCurve& c, d
   return {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
 }
 
+/// A piece in the power basis about its first node x1: c(s) = x1 + q1 s + q2 s^2 + q3 s^3 [m], from the
+/// Hermite form of centrelineWeights (h00 = 1 - 3s^2 + 2s^3, h01 = 3s^2 - 2s^3, h10 = s - 2s^2 + s^3,
+/// h11 = s^3 - s^2 on the nodes x1, x2 and the node tangents m1 = a0 x0 + a1 x1 + a2 x2,
+/// m2 = b1 x1 + b2 x2 + b3 x3; a chord: q1 = x2 - x1, q2 = q3 = 0). The same curve as the weights' up to
+/// round-off; for a search that evaluates one piece many times (a Horner evaluation of the point and its
+/// derivatives instead of three weight arrays and sums over the four nodes).
+struct CentrelinePowerBasis {
+  Vec3 q1, q2, q3;  ///< [m]
+};
+inline CentrelinePowerBasis centrelinePowerBasis(const ElementCurve& c, const std::vector<Vec3>& x) {
+  const Vec3& x1 = x[c.node[1]];
+  const Vec3& x2 = x[c.node[2]];
+  if (!c.smooth) return {x2 - x1, Vec3::Zero(), Vec3::Zero()};
+  const Vec3 m1 = c.a0 * x[c.node[0]] + c.a1 * x1 + c.a2 * x2;
+  const Vec3 m2 = c.b1 * x1 + c.b2 * x2 + c.b3 * x[c.node[3]];
+  const Vec3 rise = x2 - x1;
+  return {m1, 3.0 * rise - 2.0 * m1 - m2, m1 + m2 - 2.0 * rise};
+}
+
 /// sum_k w_k x_k over a piece's four nodes [m], in CentrelineStencil's order of operations (the same bits).
 inline Vec3 combineNodes(const std::array<int, 4>& node, const std::array<double, 4>& w,
                          const std::vector<Vec3>& x) {
