@@ -1,10 +1,12 @@
 #include "tangle/contact/ClashReport.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <limits>
 
 #include "tangle/core/Error.hpp"
@@ -116,31 +118,51 @@ void ClashReport::write(const fs::path& dir) const {
     core::OutputFile file(out / "event_paths.csv");
     std::ostream& f = file.stream();
     f << "event,time_s,arc_1_m,arc_2_m\n";
+    std::string rows;  // as clearance.csv's
     for (std::size_t i = 0; i < events.size(); ++i)
-      for (const auto& p : events[i].path) f << fmt::format("{},{:.6f},{:.4f},{:.4f}\n", i, p[0], p[1], p[2]);
+      for (const auto& p : events[i].path) {
+        fmt::format_to(std::back_inserter(rows), FMT_COMPILE("{},{:.6f},{:.4f},{:.4f}\n"), i, p[0], p[1],
+                       p[2]);
+        file.writeRows(rows);
+      }
+    file.writeRows(rows, true);
     file.close();
   }
   {
     core::OutputFile file(out / "clearance.csv");
     std::ostream& f = file.stream();
     f << "time_s,pair,min_clearance_m,arc_1_m,arc_2_m\n";
+    // Rows formatted into one buffer by compiled formats, the pair names made once: a row per pair and
+    // output time (12 lines, 66 pairs, 30 s: 40 000 rows, 0.2 G instructions as a string and a stream
+    // write per row).
+    std::vector<std::string> pairName;
+    for (const auto& [a, b] : m_pairs) pairName.push_back(lines[a].name + "-" + lines[b].name);
+    std::string rows;
     for (const ClearanceSample& s : m_samples) {
-      const std::string pair = lines[m_pairs[s.pair][0]].name + "-" + lines[m_pairs[s.pair][1]].name;
+      const std::string& pair = pairName[static_cast<std::size_t>(s.pair)];
       if (std::isfinite(s.clearance)) {
-        f << fmt::format("{:.6f},{},{:.6e},{:.4f},{:.4f}\n", s.time, pair, s.clearance, s.arcA, s.arcB);
+        fmt::format_to(std::back_inserter(rows), FMT_COMPILE("{:.6f},{},{:.6e},{:.4f},{:.4f}\n"), s.time,
+                       pair, s.clearance, s.arcA, s.arcB);
       } else {
-        f << fmt::format("{:.6f},{},inf,,\n", s.time, pair);
+        fmt::format_to(std::back_inserter(rows), FMT_COMPILE("{:.6f},{},inf,,\n"), s.time, pair);
       }
+      file.writeRows(rows);
     }
+    file.writeRows(rows, true);
     file.close();
   }
   {
     core::OutputFile file(out / "forces.csv");
     std::ostream& f = file.stream();
     f << "time_s,pair,total_force_N,peak_force_per_length_N_per_m,contact_length_m,patches\n";
-    for (const ForceSample& s : m_forces)
-      f << fmt::format("{:.6f},{}-{},{:.6e},{:.6e},{:.4f},{}\n", s.time, lines[m_pairs[s.pair][0]].name,
-                       lines[m_pairs[s.pair][1]].name, s.force, s.peakPerLength, s.length, s.patches);
+    std::string rows;  // as clearance.csv's
+    for (const ForceSample& s : m_forces) {
+      fmt::format_to(std::back_inserter(rows), FMT_COMPILE("{:.6f},{}-{},{:.6e},{:.6e},{:.4f},{}\n"), s.time,
+                     lines[m_pairs[s.pair][0]].name, lines[m_pairs[s.pair][1]].name, s.force, s.peakPerLength,
+                     s.length, s.patches);
+      file.writeRows(rows);
+    }
+    file.writeRows(rows, true);
     file.close();
   }
   core::OutputFile summary(out / "summary.json");

@@ -43,6 +43,12 @@ void OutputFile::write(std::string_view text) {
   check();
 }
 
+void OutputFile::writeRows(std::string& rows, bool last) {
+  if (!last && rows.size() < (std::size_t{1} << 20)) return;
+  write(rows);
+  rows.clear();
+}
+
 void OutputFile::flush() {
   if (!m_open) return;
   errno = 0;

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <string_view>
 
 namespace tangle::core {
@@ -24,6 +25,10 @@ class OutputFile {
   void write(std::string_view text);
   /// The underlying stream (for writers that take an std::ostream); errors show at flush()/close().
   std::ostream& stream() { return m_out; }
+  /// Appends `rows` and empties it once it holds a megabyte or more, or always with `last`: for writers that
+  /// format a table row by row into one string (a string and a stream write per row cost more than the
+  /// formatting of short rows). @throws OutputError when the stream has failed.
+  void writeRows(std::string& rows, bool last = false);
   /// Pushes buffered text to the file. @throws OutputError on failure.
   void flush();
   /// Flushes and closes; idempotent. @throws OutputError on failure.

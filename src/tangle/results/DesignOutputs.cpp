@@ -1,9 +1,11 @@
 #include "tangle/results/DesignOutputs.hpp"
 
+#include <fmt/compile.h>
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "tangle/analysis/ExtremeStatistics.hpp"
@@ -280,13 +282,17 @@ std::string writeClashDamage(const fs::path& dir, const model::Model& model,
       "line,from_m,to_m,impacts,impacts_above_{:g}_J,energy_J,largest_energy_J,largest_velocity_m_s\n",
       energyThreshold));
   std::string text;
+  std::string rows;  // a row per bin of every line, by compiled formats (OutputFile::writeRows)
   for (const analysis::LineClashDamage& d : damage) {
     const std::string& name = model.lines()[static_cast<std::size_t>(d.line)].name;
+    const std::string field = core::csvField(name);
     const analysis::ClashDamageBin* worst = nullptr;
     int above = 0;
     for (const analysis::ClashDamageBin& b : d.bins) {
-      out.write(fmt::format("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n", core::csvField(name), b.from,
-                            b.to, b.impacts, b.impactsAbove, b.energy, b.largestEnergy, b.largestVelocity));
+      fmt::format_to(std::back_inserter(rows), FMT_COMPILE("{},{:.4f},{:.4f},{},{},{:.6e},{:.6e},{:.6e}\n"),
+                     field, b.from, b.to, b.impacts, b.impactsAbove, b.energy, b.largestEnergy,
+                     b.largestVelocity);
+      out.writeRows(rows);
       if (b.impacts > 0 && (!worst || b.energy > worst->energy)) worst = &b;
       above += b.impactsAbove;
     }
@@ -296,6 +302,7 @@ std::string writeClashDamage(const fs::path& dir, const model::Model& model,
           "m\n",
           name, d.impacts(), above, energyThreshold, worst->energy, worst->impacts, worst->from, worst->to);
   }
+  out.writeRows(rows, true);
   out.close();
   return text.empty() ? std::string() : "clash damage (contact/clash_damage.csv):\n" + text;
 }
