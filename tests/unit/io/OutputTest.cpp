@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -48,6 +50,45 @@ TEST(OutputFile, MissingFolderThrowsNamingTheFile) {
     FAIL() << "no OutputError";
   } catch (const OutputError& e) {
     EXPECT_NE(std::string(e.what()).find(p.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(OutputFile, RowsAreKeptUntilAMegabyteAndAllWrittenAtTheEnd) {
+  // writeRows holds the rows below 1 MiB (nothing written: the file stays empty) and writes them, in order,
+  // once they reach it and at the last call; a full disk still throws (the check of write()).
+  const fs::path dir = freshDir("rows");
+  const fs::path p = dir / "rows.csv";
+  core::OutputFile f(p);
+  std::string rows, expected;
+  const std::string row = "0.000000,line1-line2,1.234560e+01,10.0000,20.0000\n";  // 50 bytes
+  rows += row;
+  expected += row;
+  f.writeRows(rows);
+  f.flush();
+  EXPECT_EQ(rows, row);
+  EXPECT_EQ(fs::file_size(p), 0u);
+  for (int i = 0; i < 30000; ++i) {  // 1.5 MB
+    rows += row;
+    expected += row;
+    f.writeRows(rows);
+  }
+  EXPECT_LT(rows.size(), std::size_t{1} << 20);
+  f.writeRows(rows, true);
+  EXPECT_TRUE(rows.empty());
+  f.close();
+  std::ifstream in(p, std::ios::binary);
+  const std::string written((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(written, expected);
+  fs::remove_all(dir);
+  if (fs::exists("/dev/full")) {
+    core::OutputFile full("/dev/full");
+    std::string big(std::size_t{1} << 21, 'x');
+    EXPECT_THROW(
+        {
+          full.writeRows(big);
+          full.close();
+        },
+        OutputError);
   }
 }
 
