@@ -116,8 +116,7 @@ void ClashReport::write(const fs::path& dir) const {
   }
   {
     core::OutputFile file(out / "event_paths.csv");
-    std::ostream& f = file.stream();
-    f << "event,time_s,arc_1_m,arc_2_m\n";
+    file.write("event,time_s,arc_1_m,arc_2_m\n");
     std::string rows;  // as clearance.csv's
     for (std::size_t i = 0; i < events.size(); ++i)
       for (const auto& p : events[i].path) {
@@ -130,8 +129,7 @@ void ClashReport::write(const fs::path& dir) const {
   }
   {
     core::OutputFile file(out / "clearance.csv");
-    std::ostream& f = file.stream();
-    f << "time_s,pair,min_clearance_m,arc_1_m,arc_2_m\n";
+    file.write("time_s,pair,min_clearance_m,arc_1_m,arc_2_m\n");
     // Rows formatted into one buffer by compiled formats, the pair names made once: a row per pair and
     // output time (12 lines, 66 pairs, 30 s: 40 000 rows, 0.2 G instructions as a string and a stream
     // write per row).
@@ -153,8 +151,7 @@ void ClashReport::write(const fs::path& dir) const {
   }
   {
     core::OutputFile file(out / "forces.csv");
-    std::ostream& f = file.stream();
-    f << "time_s,pair,total_force_N,peak_force_per_length_N_per_m,contact_length_m,patches\n";
+    file.write("time_s,pair,total_force_N,peak_force_per_length_N_per_m,contact_length_m,patches\n");
     std::string rows;  // as clearance.csv's
     for (const ForceSample& s : m_forces) {
       fmt::format_to(std::back_inserter(rows), FMT_COMPILE("{:.6f},{}-{},{:.6e},{:.6e},{:.4f},{}\n"), s.time,

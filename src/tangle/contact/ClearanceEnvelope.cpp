@@ -75,11 +75,11 @@ struct ClearanceEnvelope::SegmentRule {
   }
   /// Whether segment i of line a and segment j of line b are measured against each other (the crossing
   /// pass): neither parted, and the element pair not excluded.
-  bool segmentsAssessed(const ContactCandidates& rules, int i, int j) const {
+  bool segmentsAssessed(int i, int j) const {
     const int ea = a->firstElement + i, eb = b->firstElement + j;
     return !parted->parted(static_cast<std::size_t>(ea), time) &&
            !parted->parted(static_cast<std::size_t>(eb), time) &&
-           (everyPair || rules.elementPairAllowed(ea, eb));
+           (everyPair || exclusions->elementPairAllowed(ea, eb));
   }
 };
 
@@ -570,7 +570,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
     const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
     const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
     if (!(geometry::segmentBoxGap(a0, a1, b0, b1) - ra - rb < best.clearance)) return;
-    if (!rule.segmentsAssessed(*m_exclusions, i, j)) return;
+    if (!rule.segmentsAssessed(i, j)) return;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
     const double clearance = d.distance - ra - rb;
     if (clearance < best.clearance) best = {clearance, i, j, d.s, d.t};
@@ -666,7 +666,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
   double threshold = kInf;  // the best clearance on the curves known [m]
   for (int i = firstA; i <= lastA; ++i)
     for (int j = firstB; j <= lastB; ++j) {
-      if (!rule.segmentsAssessed(*m_exclusions, i, j)) continue;
+      if (!rule.segmentsAssessed(i, j)) continue;
       const int ea = a.firstElement + i, eb = b.firstElement + j;
       Candidate& k = slot(i, j);
       k.measured = true;
@@ -904,8 +904,7 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   const auto& lines = m_model->lines();
   {
     core::OutputFile file(out / "envelope.csv");
-    std::ostream& f = file.stream();
-    f << "line,other_line,arc_length_m,static_clearance_m,min_clearance_m,time_of_min_s\n";
+    file.write("line,other_line,arc_length_m,static_clearance_m,min_clearance_m,time_of_min_s\n");
     // One buffer of rows by compiled formats (a row per node and side: 26 500 for 12 lines and 66 pairs,
     // 0.11 G instructions as a string and a stream write per row).
     std::string rows;

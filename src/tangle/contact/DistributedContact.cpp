@@ -912,13 +912,9 @@ Vec3 DistributedContact::committedSlip(int lineA, int lineB, double arcA, double
 
 void DistributedContact::commitSamples(double dt) {
   m_found.valid = false;  // the committed slip and contacts enter the next samples
-  // The pairs' largest relative normal acceleration where they press (finishSamples).
+  // The pairs' largest relative normal acceleration where they press (finishSamples): pairMotions'.
   m_pairAcceleration.clear();
-  for (const ContactSample& smp : m_samples) {
-    if (smp.lineForce <= 0.0) continue;
-    double& a = m_pairAcceleration[linePair(smp)];
-    a = std::max(a, std::abs(smp.gapAcceleration));
-  }
+  for (const auto& [key, motion] : pairMotions()) m_pairAcceleration[key] = motion.acceleration;
   // The struck crossings (impactStepLimit): a new one when its approach is significant; one that lets go,
   // turns to separate or outlives three times its estimated duration is judged afresh. (Held through the
   // rebound as well, until it turned to approach again, the rigid bars' e = 0.5 came to +1.8 % instead of
