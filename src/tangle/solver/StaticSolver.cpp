@@ -342,7 +342,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
       lastFailure = step.failure;
       increment *= 0.25;
       if (increment < 1e-5) break;
-      m_assembler->beginStatics(state);  // back to the anchors of the last converged increment
+      m_assembler->beginStatics(state);  // from the last converged state, re-laid (theory 7.1)
     }
   }
   m_progressFraction = 1.0;
@@ -414,7 +414,7 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     } else {
       increment *= 0.5;
       if (increment < 1e-4) break;
-      m_assembler->beginStatics(still);  // back to the anchors of the last converged increment
+      m_assembler->beginStatics(still);  // from the last converged state, re-laid (theory 7.1)
     }
   }
   if (reached < 1.0 && budget > 0 && reached > 0.0) {
