@@ -249,7 +249,7 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
               ? ""
               : fmt::format(": {} at {}", why, out.worstNode >= 0 ? model.describeNode(out.worstNode) : "-"));
     if (!converged) {
-      m_assembler->beginStatics(state);  // back to the last point on the path
+      m_assembler->beginStatics(state);  // from the last point on the path, re-laid (theory 7.1)
       ds *= 0.25;
       if (ds < dsMin) {
         out.failure = fmt::format("arc length continuation stalled at lambda {:.4f} ({})", lambda, why);
