@@ -132,10 +132,14 @@ solver::StaticResult Simulation::solveStatics(bool progress) {
   solver::StaticResult result = solver.solve(m_state);
   // Fallbacks, cheapest first: in a current, the tangent with the drag's follower stiffness (theory 6.4);
   // the same model on a coarser mesh; dynamic relaxation.
-  if (!result.converged && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model))
+  // None when the loading path has no equilibrium (a free laid line sliding as a whole): each of them
+  // leaves the path and the friction's history on it.
+  const bool fallbacks = !result.converged && !result.noEquilibrium;
+  if (fallbacks && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model))
     solveWithDragStiffness(start, result);
-  if (!result.converged && !core::interruptRequested() && m_coarseFallback) solveFromCoarserMesh(result);
-  if (!result.converged && !core::interruptRequested()) relaxThenSolve(result);
+  if (fallbacks && !result.converged && !core::interruptRequested() && m_coarseFallback)
+    solveFromCoarserMesh(result);
+  if (fallbacks && !result.converged && !core::interruptRequested()) relaxThenSolve(result);
   if (!result.converged && core::interruptRequested())
     result.message =
         "static analysis interrupted by the user (Ctrl-C or SIGTERM) before it converged; where it "

@@ -198,6 +198,46 @@ void Assembler::beginStatics(const model::State& state) {
   for (LoadContributor* c : m_contributors) c->beginStatic(state);
 }
 
+int Assembler::lineSlidingAsAWhole(const model::State& state) const {
+  const auto& env = m_model->environment();
+  if (env.seabed.frictionCoefficient <= 0.0) return -1;
+  const seabed::Seabed bed(env.seabed, m_model->sharedSeabedSurface());
+  const seabed::SeabedSurface& surface = m_model->seabedSurface();
+  const auto& trib = m_model->tributaryLength();
+  const auto& diameter = m_model->nodeContactDiameter();
+  const model::DofMap& dofs = m_model->dofs();
+  const auto& lines = m_model->lines();
+  for (std::size_t l = 0; l < lines.size(); ++l) {
+    const model::Line& line = lines[l];
+    if (line.spec->endA.kind != model::EndKind::Free || line.spec->endB.kind != model::EndKind::Free)
+      continue;
+    // The resultant of the friction on the line against the sum of its nodes' caps mu N: the line is free,
+    // so the resultant balances every other load on it; at the sum of the caps the friction of every node
+    // is at its cap and points the same way, and no larger load in that direction can be held.
+    Vec3 resultant = Vec3::Zero();
+    double capacity = 0.0;
+    bool laid = line.nodeCount > 0;
+    for (int n = line.firstNode; laid && n <= line.lastNode(); ++n) {
+      const int d = dofs.firstDof(n);
+      const Vec3& x = state.position[n];
+      laid = dofs.equation(d) >= 0 && dofs.equation(d + 1) >= 0 && dofs.equation(d + 2) >= 0 &&
+             bed.penetration(x, 0.5 * diameter[n]) > 0.0;
+      if (!laid) break;
+      const seabed::SeabedNodeReaction r = bed.reaction(x, Vec3::Zero(), trib[n], 0.5 * diameter[n], false);
+      const Vec2 anchor = !std::isnan(m_anchor[n].x())        ? m_anchor[n]
+                          : !std::isnan(m_committedXY[n].x()) ? m_committedXY[n]
+                                                              : surface.footprint(x);
+      resultant += bed.staticFriction(x, anchor, r.normalForce, r.normalStiffness, trib[n], Vec3::Zero(), 0.0,
+                                      r.normal)
+                       .force;
+      capacity += env.seabed.frictionCoefficient * r.normalForce;
+    }
+    // 99 %: the continuation's converged increments approach the capacity from below and stop short of it.
+    if (laid && capacity > 0.0 && resultant.norm() >= 0.99 * capacity) return static_cast<int>(l);
+  }
+  return -1;
+}
+
 void Assembler::commitStep(model::State& state, double dt) {
   // The anchors of the elastic seabed friction at the accepted state become the committed ones; a
   // rejected step never gets here, so its trial anchors are dropped. They are evaluated here, at that

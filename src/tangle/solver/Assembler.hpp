@@ -39,6 +39,11 @@ class Assembler {
   /// Statics starts (or restarts, or reverts) from `state`: seabed friction anchors are set at the as-laid
   /// positions of the nodes on the seabed in `state`; forwards LoadContributor::beginStatic.
   void beginStatics(const model::State& state);
+  /// Statics: the index of a line that lies wholly on the seabed with both ends free and whose seabed
+  /// friction (against the committed anchors: call it after commitIncrement) at `state` has a resultant of
+  /// at least 99 % of the sum of its nodes' caps mu N, -1 if none. Such a line is about to slide as a whole:
+  /// under a larger load along the same path it has no static equilibrium.
+  int lineSlidingAsAWhole(const model::State& state) const;
   /// A statics load increment converged at `state`: commits the friction anchors (the trial ones of the
   /// last assembly) and forwards LoadContributor::commitIncrement.
   void commitIncrement(const model::State& state);

@@ -60,7 +60,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
 
   model::State trial = start;
   bool ok = solveFrom(trial, time, result, budget);
-  if (!ok) {
+  if (!ok && !result.noEquilibrium) {
     // A line held at one end and free at the other that is far more flexible than its weight (a heavy
     // rope or slender pipe clamped horizontally, w L^3 / EI in the thousands) cannot be reached from the
     // given straight shape: its first Newton step is the linear deflection (kilometres) and every
@@ -80,7 +80,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       }
     }
   }
-  if (!ok && budget > 0) {
+  if (!ok && budget > 0 && !result.noEquilibrium) {
     // Continuation in the cable law: solve with cables that resist compression like tension (a regular
     // tangent even where the start shape leaves them slack), then take that stiffness away in decades
     // down to the real, compression-free cable, each stage starting from the last equilibrium.
@@ -108,7 +108,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       result.iterations = stage.iterations;
     }
   }
-  if (!ok && budget > 0) {
+  if (!ok && budget > 0 && !result.noEquilibrium) {
     // Last resort: the continuation again, with slack suspended cable elements starting taut.
     model::State taut = start;
     StaticResult stage = result;
@@ -237,6 +237,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   if (budget > 0 && m_currentFactor == 1.0 && hasCurrent(model)) {
     if (currentContinuation(state, time, result, budget, tautStart)) return true;
     state = start;
+    if (result.noEquilibrium) return false;
     m_assembler->beginStatics(start);
   }
   if (budget > 0 && continuation(state, start, time, result, budget, tautStart, failure)) return true;
@@ -380,6 +381,7 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
   double reached = 0.0;  // fraction of the drag (of the current's speed squared) in equilibrium
   double increment = 0.25;
   int steps = 0;
+  int slidingLine = -1;  // Assembler::lineSlidingAsAWhole at `still`, as committed
   while (reached < 1.0 && budget > 0) {
     const double target = std::min(1.0, reached + increment);
     m_currentFactor = std::sqrt(target);
@@ -407,14 +409,37 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     if (step.converged) {
       still = trial;
       m_assembler->commitIncrement(still);
+      slidingLine = m_assembler->lineSlidingAsAWhole(still);  // against the anchors just committed
       reached = target;
       result.roundoffLimited = step.roundoff;
       ++steps;
       increment = std::min(1.0, increment * (step.iterations <= 6 ? 2.0 : 1.0));
     } else {
       increment *= 0.5;
-      if (increment < 1e-4) break;
+      // A free laid line at its friction capacity slides as a whole: no smaller increment helps (below).
+      if (increment < 1e-4 || slidingLine >= 0) break;
       m_assembler->beginStatics(still);  // from the last converged state, re-laid (theory 7.1)
+    }
+  }
+  if (reached > 0.0 && reached < 1.0) {
+    // Stalled with a free line on the seabed held by friction at its capacity
+    // (Assembler::lineSlidingAsAWhole): more current moves it as a whole, and no path (arc length round a
+    // fold, or the fallbacks, which leave the path and lay the anchors afresh) reaches an equilibrium of this
+    // loading (theory 7.1).
+    if (const int line = slidingLine; line >= 0) {
+      result.noEquilibrium = true;
+      result.message = fmt::format(
+          "static analysis found no equilibrium: line '{}' lies on the seabed with both ends free and slides "
+          "as "
+          "a whole at {:.4f} of the current's drag, where the seabed friction reaches its capacity mu N at "
+          "every node (environment.seabed.friction_coefficient {}); under the full current the drag on the "
+          "laid line exceeds its friction capacity and it has no static equilibrium. What to change: hold or "
+          "anchor an end of the line, or check the current and the friction coefficient",
+          model.lines()[static_cast<std::size_t>(line)].name, reached,
+          model.environment().seabed.frictionCoefficient);
+      if (debugOutput()) std::cerr << "  " << result.message << "\n";
+      m_progressFraction = 1.0;
+      return false;
     }
   }
   if (reached < 1.0 && budget > 0 && reached > 0.0) {

@@ -42,6 +42,10 @@ struct StaticResult {
   int currentSteps = 0;  ///< steps of the current continuation from still water (0: not used; StaticSolver)
   int arcLengthSteps = 0;  ///< of those, steps in arc length past a fold of the path (ArcLengthContinuation)
   std::string message;           ///< human-readable summary (on failure: where, how large, what to change)
+  /// Set when the loading path itself has no equilibrium beyond loadFraction (a free line on the seabed
+  /// slides as a whole): the fallbacks, which leave the path (a coarse mesh, dynamic relaxation), are not
+  /// tried. Its reason is in `message`.
+  bool noEquilibrium = false;
   std::vector<std::string> warnings;  ///< e.g. bar elements left in compression
 };
 

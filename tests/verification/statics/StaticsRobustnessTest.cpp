@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <regex>
 #include <string>
 
 #include "TestPaths.hpp"
@@ -286,7 +287,42 @@ TEST(SeabedFrictionStatics, LaidLineHoldsBelowMuWAndSlidesAbove) {
     Solved s = solveYaml(laidLineYaml(1.1 * critical, mu));
     EXPECT_FALSE(s.result.converged) << "a laid line under q = 1.21 mu w has no static equilibrium";
     EXPECT_NE(s.result.message.find("friction capacity"), std::string::npos) << s.result.message;
+    // Where: the current's continuation holds the line up to its friction capacity, drag fraction
+    // 1 / 1.21, and stops within 1 % of it (StaticSolver: a free laid line whose friction's resultant
+    // reaches 99 % of mu w L slides as a whole).
+    std::smatch at;
+    ASSERT_TRUE(std::regex_search(s.result.message, at, std::regex("slides as a whole at ([0-9.]+)")))
+        << s.result.message;
+    const double fraction = std::stod(at[1].str());
+    EXPECT_GE(fraction, 0.99 / 1.21 - 1e-4);
+    EXPECT_LE(fraction, 1.0 / 1.21 + 1e-4);
   }
+}
+
+TEST(SeabedFrictionStatics, LaidLineAnchoredAtOneEndTurnsUntilItsDragMeetsItsFriction) {
+  // The laid line above at 1.1 times its critical current, anchored at end A: it cannot slide away, it turns
+  // about its anchor. Quasi-statically it stops where the normal drag q cos^2(theta) equals the friction
+  // capacity mu w: cos^2(theta) = 1 / 1.21, theta = acos(1 / 1.1) = 24.62 deg from its laid direction
+  // (hand check of the limit state; the axial drag, Cd_axial 0.008 on pi D, loads only the anchor). 0.5 deg:
+  // the discrete line's slack chords (about 0.2 % short of their length) carry that much less drag, and the
+  // elastic friction's slip (mu w / k_s = 35 um) is negligible. Statics reaches it through the fallbacks
+  // (the re-lay of the anchors after a failed increment acts as a slip step: docs/theory.md 7.1).
+  const double mu = 0.3;
+  const double d = 0.1, rho = 1025.0;
+  const double w = (20.0 - rho * M_PI / 4.0 * d * d) * 9.80665;
+  const double critical = std::sqrt(mu * w / (0.5 * rho * 1.2 * d));
+  std::string yaml = laidLineYaml(1.1 * critical, mu);
+  const std::string freeA = "end_a: {type: free,";
+  ASSERT_NE(yaml.find(freeA), std::string::npos);
+  yaml.replace(yaml.find(freeA), freeA.size(), "end_a: {type: anchored,");
+  Solved s = solveYaml(yaml);
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  const auto& p = s.lines[0].position;
+  const Vec3 chord = p.back() - p.front();
+  const double theta = std::atan2(chord.y(), chord.x()) * 180.0 / M_PI;
+  EXPECT_NEAR(theta, std::acos(1.0 / 1.1) * 180.0 / M_PI, 0.5);
+  // Straight: every node within 0.1 m of the chord from the anchor.
+  for (const Vec3& x : p) EXPECT_LT((x - p.front()).cross(chord.normalized()).norm(), 0.1);
 }
 
 // ---------------------------------------------------------------------------------------------------
