@@ -429,12 +429,11 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     if (const int line = slidingLine; line >= 0) {
       result.noEquilibrium = true;
       result.message = fmt::format(
-          "static analysis found no equilibrium: line '{}' lies on the seabed with both ends free and slides "
-          "as "
-          "a whole at {:.4f} of the current's drag, where the seabed friction reaches its capacity mu N at "
-          "every node (environment.seabed.friction_coefficient {}); under the full current the drag on the "
-          "laid line exceeds its friction capacity and it has no static equilibrium. What to change: hold or "
-          "anchor an end of the line, or check the current and the friction coefficient",
+          "static analysis found no equilibrium: line '{}' lies on the seabed with both ends free and "
+          "slides as a whole at {:.4f} of the current's drag, where the seabed friction reaches its capacity "
+          "mu N at every node (environment.seabed.friction_coefficient {}); under the full current the drag "
+          "on the laid line exceeds its friction capacity and it has no static equilibrium. What to change: "
+          "hold or anchor an end of the line, or check the current and the friction coefficient",
           model.lines()[static_cast<std::size_t>(line)].name, reached,
           model.environment().seabed.frictionCoefficient);
       if (debugOutput()) std::cerr << "  " << result.message << "\n";

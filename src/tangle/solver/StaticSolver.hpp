@@ -42,9 +42,9 @@ struct StaticResult {
   int currentSteps = 0;  ///< steps of the current continuation from still water (0: not used; StaticSolver)
   int arcLengthSteps = 0;  ///< of those, steps in arc length past a fold of the path (ArcLengthContinuation)
   std::string message;           ///< human-readable summary (on failure: where, how large, what to change)
-  /// Set when the loading path itself has no equilibrium beyond loadFraction (a free line on the seabed
-  /// slides as a whole): the fallbacks, which leave the path (a coarse mesh, dynamic relaxation), are not
-  /// tried. Its reason is in `message`.
+  /// Set when the loading path itself has no equilibrium beyond the point it stopped at (a free line on the
+  /// seabed slides as a whole at the fraction of the current's drag that `message` gives): the fallbacks,
+  /// which leave the path (a coarse mesh, dynamic relaxation), are not tried.
   bool noEquilibrium = false;
   std::vector<std::string> warnings;  ///< e.g. bar elements left in compression
 };
