@@ -421,25 +421,23 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
       m_assembler->beginStatics(still);  // from the last converged state, re-laid (theory 7.1)
     }
   }
-  if (reached > 0.0 && reached < 1.0) {
+  if (reached < 1.0 && slidingLine >= 0) {
     // Stalled with a free line on the seabed held by friction at its capacity
     // (Assembler::lineSlidingAsAWhole): more current moves it as a whole, and no path (arc length round a
     // fold, or the fallbacks, which leave the path and lay the anchors afresh) reaches an equilibrium of this
     // loading (theory 7.1).
-    if (const int line = slidingLine; line >= 0) {
-      result.noEquilibrium = true;
-      result.message = fmt::format(
-          "static analysis found no equilibrium: line '{}' lies on the seabed with both ends free and "
-          "slides as a whole at {:.4f} of the current's drag, where the seabed friction reaches its capacity "
-          "mu N at every node (environment.seabed.friction_coefficient {}); under the full current the drag "
-          "on the laid line exceeds its friction capacity and it has no static equilibrium. What to change: "
-          "hold or anchor an end of the line, or check the current and the friction coefficient",
-          model.lines()[static_cast<std::size_t>(line)].name, reached,
-          model.environment().seabed.frictionCoefficient);
-      if (debugOutput()) std::cerr << "  " << result.message << "\n";
-      m_progressFraction = 1.0;
-      return false;
-    }
+    result.noEquilibrium = true;
+    result.message = fmt::format(
+        "static analysis found no equilibrium: line '{}' lies on the seabed with both ends free and "
+        "slides as a whole at {:.4f} of the current's drag, where the seabed friction reaches its capacity "
+        "mu N at every node (environment.seabed.friction_coefficient {}); under the full current the drag "
+        "on the laid line exceeds its friction capacity and it has no static equilibrium. What to change: "
+        "hold or anchor an end of the line, or check the current and the friction coefficient",
+        model.lines()[static_cast<std::size_t>(slidingLine)].name, reached,
+        model.environment().seabed.frictionCoefficient);
+    if (debugOutput()) std::cerr << "  " << result.message << "\n";
+    m_progressFraction = 1.0;
+    return false;
   }
   if (reached < 1.0 && budget > 0 && reached > 0.0) {
     // Stalled: a fold of the equilibrium path (a line in another's wake whose drag falls as it closes in
