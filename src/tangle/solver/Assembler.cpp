@@ -202,7 +202,6 @@ int Assembler::lineSlidingAsAWhole(const model::State& state) const {
   const auto& env = m_model->environment();
   if (env.seabed.frictionCoefficient <= 0.0) return -1;
   const seabed::Seabed bed(env.seabed, m_model->sharedSeabedSurface());
-  const seabed::SeabedSurface& surface = m_model->seabedSurface();
   const auto& trib = m_model->tributaryLength();
   const auto& diameter = m_model->nodeContactDiameter();
   const model::DofMap& dofs = m_model->dofs();
@@ -224,9 +223,7 @@ int Assembler::lineSlidingAsAWhole(const model::State& state) const {
              bed.penetration(x, 0.5 * diameter[n]) > 0.0;
       if (!laid) break;
       const seabed::SeabedNodeReaction r = bed.reaction(x, Vec3::Zero(), trib[n], 0.5 * diameter[n], false);
-      const Vec2 anchor = !std::isnan(m_anchor[n].x())        ? m_anchor[n]
-                          : !std::isnan(m_committedXY[n].x()) ? m_committedXY[n]
-                                                              : surface.footprint(x);
+      const Vec2 anchor = frictionAnchor(n, x);
       resultant += bed.staticFriction(x, anchor, r.normalForce, r.normalStiffness, trib[n], Vec3::Zero(), 0.0,
                                       r.normal)
                        .force;
@@ -545,11 +542,7 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     }
     seabed::SeabedNodeReaction r = bed.reaction(state.position[n], v, trib[n], 0.5 * diameter[n], request.dynamic);
     if (staticFriction) {
-      // The as-laid anchor, or for a node that touched down since the last commit its position then.
-      const Vec2 anchor = !std::isnan(m_anchor[n].x()) ? m_anchor[n]
-                          : !std::isnan(m_committedXY[n].x())
-                              ? m_committedXY[n]
-                              : m_model->seabedSurface().footprint(state.position[n]);
+      const Vec2 anchor = frictionAnchor(n, state.position[n]);
       // Dynamics: a dashpot beside the stick spring, critical for the node's own mass on it (theory 7.5):
       // undamped, the held laid chain rang on its stick springs (0.26 s period for a chain) and every
       // stick-slip switch fed it.

@@ -206,6 +206,15 @@ class Assembler {
  private:
   /// Makes the trial friction anchors of the last assembly the committed ones.
   void commitAnchors(const model::State& state);
+  /// The seabed friction's anchor (x, y) [m] of `node` at `position` [m]: its committed (as-laid) anchor,
+  /// else for a node that touched down since the last commit its position then, else its footprint now.
+  /// (Inline: addSeabed asks at every grounded node of every assembly.)
+  Vec2 frictionAnchor(int node, const Vec3& position) const {
+    const auto n = static_cast<std::size_t>(node);
+    if (!std::isnan(m_anchor[n].x())) return m_anchor[n];
+    if (!std::isnan(m_committedXY[n].x())) return m_committedXY[n];
+    return m_model->seabedSurface().footprint(position);
+  }
   // Every term of F (of M a) in a fixed order, of the whole model or (with `part`) of a part: assemble and
   // assemblePart (addMass and addPartMass) share it.
   void addAll(const model::State& state, const AssemblyRequest& request, VecX& force, SystemMatrix* matrix,

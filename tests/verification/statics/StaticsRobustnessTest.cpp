@@ -270,17 +270,24 @@ lines:
                      fmt::arg("mu", mu), fmt::arg("u", speed));
 }
 
+/// The laid line's normal drag coefficient times 1/2 rho D [kg/m^2]: q = kLaidLineDragFactor U^2 [N/m].
+constexpr double kLaidLineDragFactor = 0.5 * 1025.0 * 1.2 * 0.1;
+
+/// The current speed [m/s] at which the laid line's normal drag equals its friction cap: 1/2 rho Cd D U^2 =
+/// mu w, w its submerged weight per unit length (20 kg/m less the displaced water of D = 0.1 m).
+double laidLineCriticalSpeed(double mu) {
+  const double w = (20.0 - 1025.0 * M_PI / 4.0 * 0.1 * 0.1) * 9.80665;  // [N/m]
+  return std::sqrt(mu * w / kLaidLineDragFactor);
+}
+
 TEST(SeabedFrictionStatics, LaidLineHoldsBelowMuWAndSlidesAbove) {
   const double mu = 0.3;
-  const double d = 0.1, rho = 1025.0;
-  const double w = (20.0 - rho * M_PI / 4.0 * d * d) * 9.80665;  // submerged weight [N/m]
-  // Current speed at which the drag equals the friction cap: 1/2 rho Cd D U^2 = mu w.
-  const double critical = std::sqrt(mu * w / (0.5 * rho * 1.2 * d));
+  const double critical = laidLineCriticalSpeed(mu);
   {
     Solved s = solveYaml(laidLineYaml(0.9 * critical, mu));
     ASSERT_TRUE(s.result.converged) << s.result.message;
     // Held by the friction springs (shear stiffness = normal stiffness 1e6 N/m/m): displacement q / k.
-    const double q = 0.5 * rho * 1.2 * d * std::pow(0.9 * critical, 2);
+    const double q = kLaidLineDragFactor * std::pow(0.9 * critical, 2);
     for (const Vec3& p : s.lines[0].position) EXPECT_NEAR(p.y(), q / 1.0e6, 0.05 * q / 1.0e6);
   }
   {
@@ -307,11 +314,7 @@ TEST(SeabedFrictionStatics, LaidLineAnchoredAtOneEndTurnsUntilItsDragMeetsItsFri
   // the discrete line's slack chords (about 0.2 % short of their length) carry that much less drag, and the
   // elastic friction's slip (mu w / k_s = 35 um) is negligible. Statics reaches it through the fallbacks
   // (the re-lay of the anchors after a failed increment acts as a slip step: docs/theory.md 7.1).
-  const double mu = 0.3;
-  const double d = 0.1, rho = 1025.0;
-  const double w = (20.0 - rho * M_PI / 4.0 * d * d) * 9.80665;
-  const double critical = std::sqrt(mu * w / (0.5 * rho * 1.2 * d));
-  std::string yaml = laidLineYaml(1.1 * critical, mu);
+  std::string yaml = laidLineYaml(1.1 * laidLineCriticalSpeed(0.3), 0.3);
   const std::string freeA = "end_a: {type: free,";
   ASSERT_NE(yaml.find(freeA), std::string::npos);
   yaml.replace(yaml.find(freeA), freeA.size(), "end_a: {type: anchored,");
