@@ -60,10 +60,12 @@ inline model::DynamicSolverSpec extrapolatedPredictor() {
 /// kComparisonTolerance. With azimuths [deg], its line is copied around a point instead: fairleads on a 20 m
 /// circle, anchors 1000 m further out, each fairlead moved as the example's (5 m / 10 s along x). `solver`:
 /// the Newton path (dynamics.solver; the default: the fast path). `timeStep` [s] (0: the example's 0.01 s)
-/// and `tolerance` [-] replace the example's step and the comparison tolerance.
+/// and `tolerance` [-] replace the example's step and the comparison tolerance. With `errorTolerance` > 0 the
+/// steps follow the local error estimate (dynamics.error_tolerance, up to 0.05 s), and the tension is
+/// recorded at the output times of every 0.1 s, which every run lands on.
 inline FairleadRun runMooringExample(double duration, const model::DynamicSolverSpec& solver = {},
                                      const std::vector<double>& azimuthsDeg = {}, double timeStep = 0.0,
-                                     double tolerance = kComparisonTolerance) {
+                                     double tolerance = kComparisonTolerance, double errorTolerance = 0.0) {
   model::ModelSpec spec = io::readModelFile(std::string(kExamplesDir) + "/mooring-dynamics/model.yaml");
   if (!azimuthsDeg.empty()) {
     const model::LineSpec base = spec.lines.at(0);
@@ -83,6 +85,11 @@ inline FairleadRun runMooringExample(double duration, const model::DynamicSolver
   if (timeStep > 0.0) spec.dynamics.timeStep = timeStep;
   spec.dynamics.tolerance = tolerance;
   spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
+  if (errorTolerance > 0.0) {
+    spec.dynamics.errorTolerance = errorTolerance;
+    spec.dynamics.maxTimeStep = 0.05;
+    spec.dynamics.outputInterval = 0.1;
+  }
   spec.output.vtk = false;
   spec.output.plots = false;
   const std::size_t lines = spec.lines.size();

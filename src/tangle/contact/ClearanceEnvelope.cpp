@@ -15,6 +15,7 @@
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/core/JsonWriter.hpp"
 #include "tangle/core/OutputFile.hpp"
+#include "tangle/core/PointArrays.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 
 namespace tangle::contact {
@@ -756,7 +757,7 @@ void ClearanceEnvelope::record(const model::State& state) {
       m_travel[l] += std::sqrt(largest);
     }
   }
-  m_lastPosition = state.position;
+  core::copyPoints(state.position, m_lastPosition);
   std::vector<char>& skip = m_work.skip;
   std::vector<double>& lower = m_work.lower;
   std::vector<double>& others = m_work.others;

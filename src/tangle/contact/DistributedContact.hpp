@@ -254,6 +254,18 @@ class DistributedContact {
   /// per dip of the gap, in increasing xi; false if none.
   bool contactIntervals(const model::State& state, int slave, int master,
                         std::vector<Interval>& intervals) const;
+  /// A candidate pair's pass (findSamples): the slave element, the master's line and element.
+  struct PatchVisit {
+    int slave, line, master;
+  };
+  /// findSamples' work space, kept from call to call.
+  struct FindWork {
+    std::vector<PatchVisit> visits;
+    std::vector<int> masters;
+    std::vector<Interval> intervals, found, merged;
+    std::vector<std::pair<double, double>> ridges;
+    std::vector<double> fixedEnds, ends;
+  };
   /// chordDeviationBound of an element's piece at the state findSamples is searching [m] (contactIntervals
   /// and addSample, called by findSamples only): computed once per element and search, into m_chordBound,
   /// which findSamples resets (a master element's bound was computed again for every Gauss point before).
@@ -381,6 +393,7 @@ class DistributedContact {
     std::vector<CandidatePair> candidates;
   };
   FoundAt m_found;
+  FindWork m_work;
   /// How bent an element's C1 piece is on the scale of the contact distance R [m], in [0, 1]: 0 where its
   /// largest kappa R <= 1/4, 1 where >= 1/2 (a fold or a wrap), a smoothstep between.
   double bentness(const model::State& state, int element, double radii) const;

@@ -347,6 +347,10 @@ struct DynamicSolverSpec {
   /// the change of their seabed reaction within the step, time::SeabedPredictor) or `extrapolated` (not
   /// corrected).
   bool seabedPredictor = true;
+  /// step_change: `rescale` (after a converged step, a kept matrix made for another step length is made for
+  /// the new one from the mass matrix kept with it and factorised again, without an assembly,
+  /// solver::NewtonIteration::startAttempt) or `refresh` (assembled and factorised again).
+  bool stepChangeRescale = true;
 
   /// One key of `dynamics.solver`: its name, the names of its two values and the member it sets. The reader,
   /// the run log and summary.json all name the choices from this table.
@@ -356,13 +360,14 @@ struct DynamicSolverSpec {
     const char* whenFalse;
     bool DynamicSolverSpec::*member;
   };
-  /// The five keys, in the order of docs/model-format.md.
-  static constexpr std::array<Choice, 5> kChoices{{
+  /// The six keys, in the order of docs/model-format.md.
+  static constexpr std::array<Choice, 6> kChoices{{
       {"newton", "modified", "full", &DynamicSolverSpec::modifiedNewton},
       {"assembly", "parts", "whole", &DynamicSolverSpec::partIterations},
       {"refresh", "blocks", "whole", &DynamicSolverSpec::blockRefresh},
       {"matrix_refresh", "renewal", "when_slow", &DynamicSolverSpec::renewalRule},
       {"predictor", "seabed", "extrapolated", &DynamicSolverSpec::seabedPredictor},
+      {"step_change", "rescale", "refresh", &DynamicSolverSpec::stepChangeRescale},
   }};
   /// The name of the value chosen for `choice`.
   const char* valueOf(const Choice& choice) const { return this->*choice.member ? choice.whenTrue : choice.whenFalse; }

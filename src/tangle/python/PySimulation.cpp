@@ -270,6 +270,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   out["newton_iterations_on_parts"] = result.partIterations;
   out["matrix_refreshes"] = result.matrixRefreshes;
   out["block_refreshes"] = result.blockRefreshes;
+  out["matrix_step_length_changes"] = result.matrixStepLengthChanges;
   out["fallback_steps"] = result.fallbackSteps;
   out["converged_blocks_left_out"] = result.blocksLeft;
   out["wall_time_s"] = result.wallSeconds;

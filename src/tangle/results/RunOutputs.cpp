@@ -81,6 +81,7 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
   j.field("converged_blocks_left_out", static_cast<double>(r.blocksLeft));
   j.field("matrix_refreshes", static_cast<double>(r.matrixRefreshes));
   j.field("block_refreshes", static_cast<double>(r.blockRefreshes));
+  j.field("matrix_step_length_changes", static_cast<double>(r.matrixStepLengthChanges));
   j.field("fallback_steps", static_cast<double>(r.fallbackSteps));
   {
     const model::DynamicSolverSpec& c = m.spec().dynamics.solver;

@@ -107,6 +107,14 @@ bool LinearSolver::factorizeRows(const SparseMatrix& k, int block, int begin, in
   return samePatternAsBanded(k) && m_skyline.factorizeRows(k, block, begin, end);
 }
 
+void LinearSolver::solveLdltInPlace(VecX& x) const {
+  if (m_ldlt.matrixL().nestedExpression().nonZeros() > 0) m_ldlt.matrixL().solveInPlace(x);
+  const VecX& d = m_ldlt.vectorD();
+  if (d.size() > 0)
+    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = (1.0 / d[i]) * x[i];  // D^-1 as a diagonal product
+  if (m_ldlt.matrixL().nestedExpression().nonZeros() > 0) m_ldlt.matrixU().solveInPlace(x);
+}
+
 VecX LinearSolver::solve(const VecX& b) const {
   VecX x = b;
   solveInPlace(x);
@@ -117,12 +125,20 @@ void LinearSolver::solveInPlace(VecX& b) const {
   switch (m_method) {
     case Method::Banded: m_skyline.solveInPlace(b); return;
     case Method::Ldlt:
-      // x = P^-1 (LDL^T)^-1 P b, as SimplicialLDLT's own solve with its ordering.
+      // x = P^-1 (LDL^T)^-1 P b, as SimplicialLDLT's own solve with its ordering, step by step in a kept
+      // vector (SimplicialLDLT::_solve_impl's operations in its order: the same bits; the two temporaries
+      // of the expression were allocated and copied at every solve, 0.1 G instructions of
+      // drilling-riser-drift's run).
       if (m_ldltP.size() > 0) {
-        const VecX permuted = m_ldltP * b;
-        b = m_ldltPinv * m_ldlt.solve(permuted);
+        VecX& w = m_ldltWork;
+        w.resize(b.size());
+        const int* p = m_ldltP.indices().data();
+        for (Eigen::Index i = 0; i < b.size(); ++i) w[p[i]] = b[i];
+        solveLdltInPlace(w);
+        const int* pinv = m_ldltPinv.indices().data();
+        for (Eigen::Index i = 0; i < b.size(); ++i) b[pinv[i]] = w[i];
       } else {
-        b = m_ldlt.solve(b);
+        solveLdltInPlace(b);
       }
       return;
     case Method::Lu: b = m_lu.solve(b); return;

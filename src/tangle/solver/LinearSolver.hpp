@@ -87,10 +87,13 @@ class LinearSolver {
   /// in the same entry order, as Eigen's own permutation of K at every factorisation (twistedBy, 0.26 G of
   /// drilling-riser-drift's 53 G instructions), so the same factor to the bit.
   void analyzeLdlt(const SparseMatrix& k);
+  /// x = (L D L^T)^-1 x with m_ldlt's factors (its ordering applied by the caller).
+  void solveLdltInPlace(VecX& x) const;
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Upper, Eigen::NaturalOrdering<int>> m_ldlt;
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> m_ldltP, m_ldltPinv;
   SparseMatrix m_permuted;            // upper triangle of P K P^T
   std::vector<int> m_permutedSource;  // per stored entry of m_permuted: the index of its value in K's
+  mutable VecX m_ldltWork;            // P b and the solution before P^-1 (solveInPlace)
   Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> m_lu;
   bool m_analysed = false;      // pattern recorded (and the envelope analysed when allowed)
   bool m_ldltAnalysed = false;  // Eigen's symbolic analysis done for the recorded pattern

@@ -39,7 +39,10 @@ namespace {
 bool sameStep(double a, double b) { return std::abs(a - b) <= 1e-9 * std::abs(b); }
 
 NewtonIteration::NewtonIteration(Assembler& assembler, bool debug)
-    : m_assembler(&assembler), m_debug(debug), m_matrix(assembler.model().dofs()) {}
+    : m_assembler(&assembler),
+      m_debug(debug),
+      m_matrix(assembler.model().dofs()),
+      m_massAssembly(assembler.model().dofs()) {}
 
 void NewtonIteration::setAllowed(double tolerance, const std::vector<double>& nodeFloor) {
   // Per node (its equations are consecutive, DofMap::firstEquation): two divisions for a beam node, one
@@ -69,9 +72,15 @@ void NewtonIteration::setAllowed(double tolerance, const std::vector<double>& no
   }
 }
 
-void NewtonIteration::startAttempt(double dt, const model::DynamicSolverSpec& mode) {
+void NewtonIteration::startAttempt(double dt, const model::DynamicSolverSpec& mode, double massFactor) {
   m_mode = mode;
   m_work = MatrixWork{};
+  // Only after a converged step: a retry of a failed step (cut, or on a plainer path) gets a fresh matrix.
+  const bool afterConvergedStep = m_afterConvergedStep;
+  m_afterConvergedStep = false;
+  if (m_factorValid && !m_refreshDue && !sameStep(dt, m_factorStep) && afterConvergedStep && m_massKept &&
+      mode.modifiedNewton && mode.stepChangeRescale && !changeStepLength(dt, massFactor))
+    m_factorValid = false;
   m_haveFactor = m_factorValid && sameStep(dt, m_factorStep) && !m_refreshDue;
   m_previousRatio = std::numeric_limits<double>::infinity();
   m_previousBlockRatio.clear();  // no block is slow at the first iteration
@@ -118,12 +127,69 @@ bool NewtonIteration::factorize(double dt) {
   m_matrix.build(m_k);
   m_kDiagonal = m_k.diagonal();
   m_factorValid = false;
+  m_massKept = false;  // of another matrix (keepMass follows where the next steps may use it)
   if (!m_solver.factorize(m_k)) return false;
   m_factorValid = true;
   m_factorStep = dt;
   m_haveFactor = true;
   m_work.refreshed = true;
   ++m_work.refreshes;
+  return true;
+}
+
+void NewtonIteration::keepMass(const model::State& state, double massFactor) {
+  m_massKept = false;
+  m_massAssembly.clear();
+  m_assembler->addMass(state, 1.0, &m_massAssembly, nullptr, nullptr);
+  m_massAssembly.build(m_mass);
+  // Where each entry of M lies in the kept matrix, which holds it (the same mass calls were summed into it).
+  // Checked against the last positions first: the patterns rarely change.
+  const int* outer = m_k.outerIndexPtr();
+  const int* inner = m_k.innerIndexPtr();
+  const bool samePositions = [&] {
+    if (static_cast<Eigen::Index>(m_massPosition.size()) != m_mass.nonZeros()) return false;
+    std::size_t i = 0;
+    for (Eigen::Index col = 0; col < m_mass.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(m_mass, col); it; ++it, ++i) {
+        const Eigen::Index p = m_massPosition[i];
+        if (p < outer[col] || p >= outer[col + 1] || inner[p] != it.row()) return false;
+      }
+    return true;
+  }();
+  if (!samePositions) {
+    m_massPosition.clear();
+    for (Eigen::Index col = 0; col < m_mass.outerSize(); ++col)
+      for (SparseMatrix::InnerIterator it(m_mass, col); it; ++it) {
+        const int* begin = inner + outer[col];
+        const int* end = inner + outer[col + 1];
+        const int* at = std::lower_bound(begin, end, static_cast<int>(it.row()));
+        if (at == end || *at != it.row()) return;  // not in the kept matrix: no change of step length
+        m_massPosition.push_back(at - inner);
+      }
+  }
+  m_factorMassFactor = massFactor;
+  m_massKept = true;
+}
+
+bool NewtonIteration::changeStepLength(double dt, double massFactor) {
+  // K_eff = kf K + cf C + mf M: the mass term made for the new step. The damping term cf C keeps the old
+  // step's cf (cf ~ 1/dt against mf ~ 1/dt^2: at the impact steps of a contact, 1e-4 to 1e-2 s, the mass term
+  // is 10^2 to 10^4 times the hydrodynamic and contact damping); it is a kept matrix, already of an earlier
+  // state, and the convergence rule refreshes it when it no longer serves (afterResidual).
+  const double change = massFactor - m_factorMassFactor;
+  double* k = m_k.valuePtr();
+  const double* m = m_mass.valuePtr();
+  for (std::size_t i = 0; i < m_massPosition.size(); ++i) k[m_massPosition[i]] += change * m[i];
+  m_kDiagonal = m_k.diagonal();
+  m_factorValid = false;
+  m_massKept = false;
+  if (!m_solver.factorize(m_k)) return false;
+  m_factorValid = true;
+  m_massKept = true;
+  m_factorStep = dt;
+  m_factorMassFactor = massFactor;
+  ++m_work.stepLengthChanges;
+  if (m_debug) std::cerr << fmt::format("    kept matrix made for a step of {:.3e} s\n", dt);
   return true;
 }
 
@@ -392,6 +458,7 @@ void NewtonIteration::solveCorrection(const VecX& r) {
 }
 
 void NewtonIteration::planRefresh(int iterations, int partIterations, bool relaxation) {
+  m_afterConvergedStep = !relaxation;
   // A kept matrix ages: the elements turn and the seabed contact of touchdown nodes changes, and each
   // correction removes less of the out-of-balance (the mooring example: 2.16 residual evaluations per
   // step with a matrix made at every step's predictor, 3.6 with one kept as long as it converges 4x per

@@ -38,7 +38,8 @@ struct MatrixWork {
   int refreshes = 0;       ///< iteration matrices assembled and factorised whole
   int blockRefreshes = 0;  ///< independent blocks (or stretches of one) assembled and factorised on their own
   int blocksLeft = 0;      ///< converged independent blocks not solved at a correction (solveCorrection)
-  bool refreshed = false;  ///< a whole matrix was factorised in this attempt
+  int stepLengthChanges = 0;  ///< kept matrices made for another step length from the kept mass matrix
+  bool refreshed = false;     ///< a whole matrix was factorised in this attempt
 };
 
 /// Newton iteration with a kept (modified Newton) or fresh (full Newton) iteration matrix; see the file
@@ -54,9 +55,16 @@ class NewtonIteration {
   void setAllowed(double tolerance, const std::vector<double>& nodeFloor);
   /// The out-of-balance force each node is allowed this step (setAllowed's) [N].
   const std::vector<double>& allowedForce() const { return m_allowedForce; }
-  /// Starts an attempt at a step of dt [s] on the Newton path `mode`: the kept factorisation is used when it
-  /// was made for this step length and no refresh is due.
-  void startAttempt(double dt, const model::DynamicSolverSpec& mode);
+  /// Starts an attempt at a step of dt [s] on the Newton path `mode`, whose iteration matrix holds the mass
+  /// matrix times `massFactor` [1/s^2]: the kept factorisation is used when it was made for this step length
+  /// and no refresh is due. Right after a converged step, a kept matrix of another step length is made for
+  /// this one from the mass matrix kept with it (keepMass): K + (massFactor - its massFactor) M, factorised
+  /// again without an assembly (a step length that changes at every step, as the contact's impact steps
+  /// do, refreshed the whole matrix at each: 374 of drilling-riser-drift's 733 refreshes).
+  void startAttempt(double dt, const model::DynamicSolverSpec& mode, double massFactor);
+  /// After a whole matrix was factorised at `state` for the mass factor `massFactor` [1/s^2]: keeps the mass
+  /// matrix M alone (Assembler::addMass at a mass factor of 1) for startAttempt's change of step length.
+  void keepMass(const model::State& state, double massFactor);
   const model::DynamicSolverSpec& mode() const { return m_mode; }
   /// True when this iteration assembles and factorises a new matrix (none kept, or full Newton).
   bool wantsMatrix() const { return !m_haveFactor || !m_mode.modifiedNewton; }
@@ -155,6 +163,16 @@ class NewtonIteration {
   double m_recentEvaluations = 0.0;        // smoothed evaluations of the latest steps
   bool m_refreshDue = false;               // the next step refreshes the matrix
   double m_factorStep = 0.0;               // the time step that factorisation was made for [s]
+  // The mass matrix kept with it (keepMass), for a change of step length (startAttempt).
+  bool m_afterConvergedStep = false;  // the last attempt converged (planRefresh) and none started since
+  bool m_massKept = false;            // m_mass and m_massPosition are of the kept matrix
+  double m_factorMassFactor = 0.0;    // the mass factor the kept matrix holds [1/s^2]
+  SystemMatrix m_massAssembly;        // M's assembly (replayed from one refresh to the next)
+  SparseMatrix m_mass;                // M over the equations [kg, kg m^2]
+  std::vector<Eigen::Index> m_massPosition;  // per stored entry of m_mass: its index in m_k's values
+  /// Makes the kept matrix that of a step of dt [s] with mass factor `massFactor` (startAttempt); false
+  /// (the factorisation dropped) when it cannot be factorised.
+  bool changeStepLength(double dt, double massFactor);
 };
 
 /// True when two step lengths [s] are the same step: equal but for round-off (a step cut to land on an

@@ -158,6 +158,7 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
     result.blocksLeft += o.blocksLeft;
     result.matrixRefreshes += o.refreshes;
     result.blockRefreshes += o.blockRefreshes;
+    result.matrixStepLengthChanges += o.stepLengthChanges;
     if (o.fallback > 0) ++result.fallbackSteps;
     bool rejected = false;
     std::string rejection;

@@ -182,6 +182,7 @@ StepOutcome GeneralizedAlpha::step(model::State& state, double dt) {
     retry.blocksLeft += outcome.blocksLeft;
     retry.refreshes += outcome.refreshes;
     retry.blockRefreshes += outcome.blockRefreshes;
+    retry.stepLengthChanges += outcome.stepLengthChanges;
     retry.fallback = level;
     outcome = retry;
     if (outcome.converged) break;
@@ -350,7 +351,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, when the step size changed, or when keeping
   // it has come to cost more iterations than a refresh (solver::NewtonIteration).
-  m_newton.startAttempt(dt, mode);
+  m_newton.startAttempt(dt, mode, mf);
   const solver::AssemblyPart& part = m_newton.part();
   bool haveResidual = false;
   for (int it = 0; it < m_settings.maxIterations; ++it) {
@@ -477,6 +478,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
       outcome.failure = "the iteration matrix is singular";
       break;
     }
+    if (refresh && mode.modifiedNewton) m_newton.keepMass(state, mf);
     m_newton.solveCorrection(r);
     VecX& delta = m_newton.correction();
     if (m_debug) {
@@ -505,6 +507,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
   const solver::MatrixWork& work = m_newton.work();
   outcome.refreshes = work.refreshes;
   outcome.blockRefreshes = work.blockRefreshes;
+  outcome.stepLengthChanges = work.stepLengthChanges;
   outcome.blocksLeft = work.blocksLeft;
   if (!outcome.converged) {
     state = start;
