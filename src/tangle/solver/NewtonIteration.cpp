@@ -72,14 +72,15 @@ void NewtonIteration::setAllowed(double tolerance, const std::vector<double>& no
   }
 }
 
-void NewtonIteration::startAttempt(double dt, const model::DynamicSolverSpec& mode, double massFactor) {
+void NewtonIteration::startAttempt(const model::State& start, double dt, const model::DynamicSolverSpec& mode,
+                                   double massFactor) {
   m_mode = mode;
   m_work = MatrixWork{};
   // Only after a converged step: a retry of a failed step (cut, or on a plainer path) gets a fresh matrix.
   const bool afterConvergedStep = m_afterConvergedStep;
   m_afterConvergedStep = false;
-  if (m_factorValid && !m_refreshDue && !sameStep(dt, m_factorStep) && afterConvergedStep && m_massKept &&
-      mode.modifiedNewton && mode.stepChangeRescale && !changeStepLength(dt, massFactor))
+  if (m_factorValid && !m_refreshDue && !sameStep(dt, m_factorStep) && afterConvergedStep &&
+      mode.modifiedNewton && mode.stepChangeRescale && !changeStepLength(start, dt, massFactor))
     m_factorValid = false;
   m_haveFactor = m_factorValid && sameStep(dt, m_factorStep) && !m_refreshDue;
   m_previousRatio = std::numeric_limits<double>::infinity();
@@ -123,22 +124,28 @@ bool NewtonIteration::afterResidual(const model::State& state, const AssemblyReq
   return true;
 }
 
-bool NewtonIteration::factorize(double dt) {
+bool NewtonIteration::factorize(double dt, double massFactor) {
   m_matrix.build(m_k);
   m_kDiagonal = m_k.diagonal();
   m_factorValid = false;
-  m_massKept = false;  // of another matrix (keepMass follows where the next steps may use it)
   if (!m_solver.factorize(m_k)) return false;
   m_factorValid = true;
   m_factorStep = dt;
+  m_factorMassFactor = massFactor;
   m_haveFactor = true;
   m_work.refreshed = true;
   ++m_work.refreshes;
   return true;
 }
 
-void NewtonIteration::keepMass(const model::State& state, double massFactor) {
-  m_massKept = false;
+bool NewtonIteration::changeStepLength(const model::State& state, double dt, double massFactor) {
+  // K_eff = kf K + cf C + mf M: the mass term made for the new step, with M at the step's start (the kept
+  // matrix's own M is of the state it was made at; M changes with the lines' directions through the added
+  // mass, slowly against the steps between). The damping term cf C keeps the old step's cf (cf ~ 1/dt against
+  // mf ~ 1/dt^2: at the impact steps of a contact, 1e-5 to 1e-2 s, the mass term is 10^2 to 10^4 times the
+  // hydrodynamic and contact damping); it is a kept matrix, already of an earlier state, and the convergence
+  // rule refreshes it when it no longer serves (afterResidual). M is assembled here only, not at every
+  // refresh: kept with each refresh it cost a mooring line 1.4 % of its run, most of them never used.
   m_massAssembly.clear();
   m_assembler->addMass(state, 1.0, &m_massAssembly, nullptr, nullptr);
   m_massAssembly.build(m_mass);
@@ -163,29 +170,21 @@ void NewtonIteration::keepMass(const model::State& state, double massFactor) {
         const int* begin = inner + outer[col];
         const int* end = inner + outer[col + 1];
         const int* at = std::lower_bound(begin, end, static_cast<int>(it.row()));
-        if (at == end || *at != it.row()) return;  // not in the kept matrix: no change of step length
+        if (at == end || *at != it.row()) {
+          m_massPosition.clear();
+          return false;  // not in the kept matrix: a whole refresh
+        }
         m_massPosition.push_back(at - inner);
       }
   }
-  m_factorMassFactor = massFactor;
-  m_massKept = true;
-}
-
-bool NewtonIteration::changeStepLength(double dt, double massFactor) {
-  // K_eff = kf K + cf C + mf M: the mass term made for the new step. The damping term cf C keeps the old
-  // step's cf (cf ~ 1/dt against mf ~ 1/dt^2: at the impact steps of a contact, 1e-4 to 1e-2 s, the mass term
-  // is 10^2 to 10^4 times the hydrodynamic and contact damping); it is a kept matrix, already of an earlier
-  // state, and the convergence rule refreshes it when it no longer serves (afterResidual).
   const double change = massFactor - m_factorMassFactor;
   double* k = m_k.valuePtr();
   const double* m = m_mass.valuePtr();
   for (std::size_t i = 0; i < m_massPosition.size(); ++i) k[m_massPosition[i]] += change * m[i];
   m_kDiagonal = m_k.diagonal();
   m_factorValid = false;
-  m_massKept = false;
   if (!m_solver.factorize(m_k)) return false;
   m_factorValid = true;
-  m_massKept = true;
   m_factorStep = dt;
   m_factorMassFactor = massFactor;
   ++m_work.stepLengthChanges;

@@ -55,16 +55,15 @@ class NewtonIteration {
   void setAllowed(double tolerance, const std::vector<double>& nodeFloor);
   /// The out-of-balance force each node is allowed this step (setAllowed's) [N].
   const std::vector<double>& allowedForce() const { return m_allowedForce; }
-  /// Starts an attempt at a step of dt [s] on the Newton path `mode`, whose iteration matrix holds the mass
-  /// matrix times `massFactor` [1/s^2]: the kept factorisation is used when it was made for this step length
-  /// and no refresh is due. Right after a converged step, a kept matrix of another step length is made for
-  /// this one from the mass matrix kept with it (keepMass): K + (massFactor - its massFactor) M, factorised
-  /// again without an assembly (a step length that changes at every step, as the contact's impact steps
-  /// do, refreshed the whole matrix at each: 374 of drilling-riser-drift's 733 refreshes).
-  void startAttempt(double dt, const model::DynamicSolverSpec& mode, double massFactor);
-  /// After a whole matrix was factorised at `state` for the mass factor `massFactor` [1/s^2]: keeps the mass
-  /// matrix M alone (Assembler::addMass at a mass factor of 1) for startAttempt's change of step length.
-  void keepMass(const model::State& state, double massFactor);
+  /// Starts an attempt at a step of dt [s] from `start` on the Newton path `mode`, whose iteration matrix
+  /// holds the mass matrix times `massFactor` [1/s^2]: the kept factorisation is used when it was made for
+  /// this step length and no refresh is due. Right after a converged step, a kept matrix of another step
+  /// length is made for this one as K_kept + (massFactor - its mass factor) M, M the mass matrix at `start`
+  /// alone (Assembler::addMass at a factor of 1), and factorised again without the rest of an assembly (a
+  /// step length that changes at every step, as the contact's impact steps do, refreshed the whole matrix at
+  /// each: 374 of drilling-riser-drift's 733 refreshes).
+  void startAttempt(const model::State& start, double dt, const model::DynamicSolverSpec& mode,
+                    double massFactor);
   const model::DynamicSolverSpec& mode() const { return m_mode; }
   /// True when this iteration assembles and factorises a new matrix (none kept, or full Newton).
   bool wantsMatrix() const { return !m_haveFactor || !m_mode.modifiedNewton; }
@@ -90,8 +89,9 @@ class NewtonIteration {
   /// then true). `matrixAssembled`: this iteration assembled a whole matrix.
   bool afterResidual(const model::State& state, const AssemblyRequest& request, double mf, const VecX& r,
                      double ratio, bool matrixAssembled);
-  /// Factorises the matrix assembled at this iteration for a step of dt [s]; false if it is singular.
-  bool factorize(double dt);
+  /// Factorises the matrix assembled at this iteration for a step of dt [s], its mass matrix times
+  /// `massFactor` [1/s^2]; false if it is singular.
+  bool factorize(double dt, double massFactor);
   /// Sets correction() to the Newton correction for the out-of-balance r with the kept factorisation, in the
   /// blocks that have not converged (all of it when it is one block, or without part iterations).
   void solveCorrection(const VecX& r);
@@ -163,16 +163,16 @@ class NewtonIteration {
   double m_recentEvaluations = 0.0;        // smoothed evaluations of the latest steps
   bool m_refreshDue = false;               // the next step refreshes the matrix
   double m_factorStep = 0.0;               // the time step that factorisation was made for [s]
-  // The mass matrix kept with it (keepMass), for a change of step length (startAttempt).
+  // A change of step length (startAttempt).
   bool m_afterConvergedStep = false;  // the last attempt converged (planRefresh) and none started since
-  bool m_massKept = false;            // m_mass and m_massPosition are of the kept matrix
   double m_factorMassFactor = 0.0;    // the mass factor the kept matrix holds [1/s^2]
-  SystemMatrix m_massAssembly;        // M's assembly (replayed from one refresh to the next)
+  SystemMatrix m_massAssembly;        // M's assembly (replayed from one change to the next)
   SparseMatrix m_mass;                // M over the equations [kg, kg m^2]
   std::vector<Eigen::Index> m_massPosition;  // per stored entry of m_mass: its index in m_k's values
-  /// Makes the kept matrix that of a step of dt [s] with mass factor `massFactor` (startAttempt); false
-  /// (the factorisation dropped) when it cannot be factorised.
-  bool changeStepLength(double dt, double massFactor);
+  /// Makes the kept matrix that of a step of dt [s] with mass factor `massFactor`, M taken at `state`
+  /// (startAttempt); false (the factorisation dropped) when M has an entry outside the kept matrix's pattern
+  /// or the matrix cannot be factorised.
+  bool changeStepLength(const model::State& state, double dt, double massFactor);
 };
 
 /// True when two step lengths [s] are the same step: equal but for round-off (a step cut to land on an

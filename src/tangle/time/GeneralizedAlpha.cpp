@@ -351,7 +351,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
   // Modified Newton: the factorised iteration matrix is kept while the residual falls fast (by 4x or
   // more per iteration) and refreshed when convergence slows, when the step size changed, or when keeping
   // it has come to cost more iterations than a refresh (solver::NewtonIteration).
-  m_newton.startAttempt(dt, mode, mf);
+  m_newton.startAttempt(start, dt, mode, mf);
   const solver::AssemblyPart& part = m_newton.part();
   bool haveResidual = false;
   for (int it = 0; it < m_settings.maxIterations; ++it) {
@@ -474,11 +474,10 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
       --it;
       continue;
     }
-    if (refresh && !m_newton.factorize(dt)) {
+    if (refresh && !m_newton.factorize(dt, mf)) {
       outcome.failure = "the iteration matrix is singular";
       break;
     }
-    if (refresh && mode.modifiedNewton) m_newton.keepMass(state, mf);
     m_newton.solveCorrection(r);
     VecX& delta = m_newton.correction();
     if (m_debug) {
