@@ -348,7 +348,7 @@ struct DynamicSolverSpec {
   /// corrected).
   bool seabedPredictor = true;
   /// step_change: `rescale` (after a converged step, a kept matrix made for another step length is made for
-  /// the new one from the mass matrix kept with it and factorised again, without an assembly,
+  /// the new one with the mass matrix at the step's start and factorised again, without an assembly,
   /// solver::NewtonIteration::startAttempt) or `refresh` (assembled and factorised again).
   bool stepChangeRescale = true;
 

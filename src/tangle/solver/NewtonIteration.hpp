@@ -38,7 +38,7 @@ struct MatrixWork {
   int refreshes = 0;       ///< iteration matrices assembled and factorised whole
   int blockRefreshes = 0;  ///< independent blocks (or stretches of one) assembled and factorised on their own
   int blocksLeft = 0;      ///< converged independent blocks not solved at a correction (solveCorrection)
-  int stepLengthChanges = 0;  ///< kept matrices made for another step length from the kept mass matrix
+  int stepLengthChanges = 0;  ///< kept matrices made for another step length with the mass matrix alone
   bool refreshed = false;     ///< a whole matrix was factorised in this attempt
 };
 

@@ -28,7 +28,7 @@ struct DynamicResult {
   long blocksLeft = 0;       ///< converged independent blocks left out of a Newton correction (8.2)
   long matrixRefreshes = 0;  ///< iteration matrices assembled and factorised (modified Newton, 8.2)
   long blockRefreshes = 0;   ///< independent blocks of it (lines) assembled and factorised on their own
-  /// Kept matrices made for a new step length from the kept mass matrix, without an assembly (8.2).
+  /// Kept matrices made for a new step length with the mass matrix alone, without an assembly (8.2).
   long matrixStepLengthChanges = 0;
   /// Steps the chosen Newton path (dynamics.solver) did not converge and a fallback did (a whole refresh,
   /// then full Newton: GeneralizedAlpha::step), steps cut after every fallback failed included.

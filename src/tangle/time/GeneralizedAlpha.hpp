@@ -50,7 +50,7 @@ struct StepOutcome {
   int blocksLeft = 0;      ///< converged independent blocks not solved at a correction (solveCorrection)
   int refreshes = 0;       ///< iteration matrices assembled and factorised in this step
   int blockRefreshes = 0;  ///< independent blocks of the kept matrix assembled and factorised on their own
-  /// Kept matrices made for a new step length from the kept mass matrix and factorised, without an assembly
+  /// Kept matrices made for a new step length with the mass matrix alone and factorised, without an assembly
   /// (solver::NewtonIteration::startAttempt).
   int stepLengthChanges = 0;
   double residual = 0.0;  ///< last max out-of-balance force [N] of a failed step (0 for a converged one)

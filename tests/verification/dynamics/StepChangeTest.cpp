@@ -1,4 +1,4 @@
-// Dynamic verification of the kept matrix made for a new step length from the kept mass matrix
+// Dynamic verification of the kept matrix made for a new step length with the mass matrix alone
 // (dynamics.solver.step_change: rescale, NewtonIteration::startAttempt; theory manual 8.2).
 //
 // Like every choice of dynamics.solver it changes which matrix the modified Newton iterations use, not the
