@@ -106,6 +106,15 @@ inline FairleadRun runMooringExample(double duration, const model::DynamicSolver
   return run;
 }
 
+/// Records a run's solver counts as properties of the running test, suffixed by `run`: iterations_<run>,
+/// refreshes_<run> and step_length_changes_<run> (the dynamics summary's newton_iterations, matrix_refreshes
+/// and matrix_step_length_changes).
+inline void recordSolverCounts(const std::string& run, const time::DynamicResult& r) {
+  ::testing::Test::RecordProperty("iterations_" + run, std::to_string(r.newtonIterations));
+  ::testing::Test::RecordProperty("refreshes_" + run, std::to_string(r.matrixRefreshes));
+  ::testing::Test::RecordProperty("step_length_changes_" + run, std::to_string(r.matrixStepLengthChanges));
+}
+
 /// Range (max - min) of a line's fairlead tension from time `start` on [N].
 inline double rangeAfter(const FairleadRun& r, std::size_t line, double start) {
   double lo = 1e300, hi = -1e300;

@@ -108,11 +108,12 @@ bool LinearSolver::factorizeRows(const SparseMatrix& k, int block, int begin, in
 }
 
 void LinearSolver::solveLdltInPlace(VecX& x) const {
-  if (m_ldlt.matrixL().nestedExpression().nonZeros() > 0) m_ldlt.matrixL().solveInPlace(x);
+  const bool offDiagonal = m_ldlt.matrixL().nestedExpression().nonZeros() > 0;
+  if (offDiagonal) m_ldlt.matrixL().solveInPlace(x);
   const VecX& d = m_ldlt.vectorD();
   if (d.size() > 0)
     for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = (1.0 / d[i]) * x[i];  // D^-1 as a diagonal product
-  if (m_ldlt.matrixL().nestedExpression().nonZeros() > 0) m_ldlt.matrixU().solveInPlace(x);
+  if (offDiagonal) m_ldlt.matrixU().solveInPlace(x);
 }
 
 VecX LinearSolver::solve(const VecX& b) const {

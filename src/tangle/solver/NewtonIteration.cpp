@@ -126,15 +126,20 @@ bool NewtonIteration::afterResidual(const model::State& state, const AssemblyReq
 
 bool NewtonIteration::factorize(double dt, double massFactor) {
   m_matrix.build(m_k);
+  if (!factorizeKept(dt, massFactor)) return false;
+  m_haveFactor = true;
+  m_work.refreshed = true;
+  ++m_work.refreshes;
+  return true;
+}
+
+bool NewtonIteration::factorizeKept(double dt, double massFactor) {
   m_kDiagonal = m_k.diagonal();
   m_factorValid = false;
   if (!m_solver.factorize(m_k)) return false;
   m_factorValid = true;
   m_factorStep = dt;
   m_factorMassFactor = massFactor;
-  m_haveFactor = true;
-  m_work.refreshed = true;
-  ++m_work.refreshes;
   return true;
 }
 
@@ -149,44 +154,22 @@ bool NewtonIteration::changeStepLength(const model::State& state, double dt, dou
   m_massAssembly.clear();
   m_assembler->addMass(state, 1.0, &m_massAssembly, nullptr, nullptr);
   m_massAssembly.build(m_mass);
-  // Where each entry of M lies in the kept matrix, which holds it (the same mass calls were summed into it).
-  // Checked against the last positions first: the patterns rarely change.
+  // Each entry of M added where it lies in the kept matrix, which holds it (the same mass calls were summed
+  // into it), found in its column's sorted rows as SystemMatrix::build finds a call's entry.
   const int* outer = m_k.outerIndexPtr();
   const int* inner = m_k.innerIndexPtr();
-  const bool samePositions = [&] {
-    if (static_cast<Eigen::Index>(m_massPosition.size()) != m_mass.nonZeros()) return false;
-    std::size_t i = 0;
-    for (Eigen::Index col = 0; col < m_mass.outerSize(); ++col)
-      for (SparseMatrix::InnerIterator it(m_mass, col); it; ++it, ++i) {
-        const Eigen::Index p = m_massPosition[i];
-        if (p < outer[col] || p >= outer[col + 1] || inner[p] != it.row()) return false;
-      }
-    return true;
-  }();
-  if (!samePositions) {
-    m_massPosition.clear();
-    for (Eigen::Index col = 0; col < m_mass.outerSize(); ++col)
-      for (SparseMatrix::InnerIterator it(m_mass, col); it; ++it) {
-        const int* begin = inner + outer[col];
-        const int* end = inner + outer[col + 1];
-        const int* at = std::lower_bound(begin, end, static_cast<int>(it.row()));
-        if (at == end || *at != it.row()) {
-          m_massPosition.clear();
-          return false;  // not in the kept matrix: a whole refresh
-        }
-        m_massPosition.push_back(at - inner);
-      }
-  }
-  const double change = massFactor - m_factorMassFactor;
   double* k = m_k.valuePtr();
-  const double* m = m_mass.valuePtr();
-  for (std::size_t i = 0; i < m_massPosition.size(); ++i) k[m_massPosition[i]] += change * m[i];
-  m_kDiagonal = m_k.diagonal();
-  m_factorValid = false;
-  if (!m_solver.factorize(m_k)) return false;
-  m_factorValid = true;
-  m_factorStep = dt;
-  m_factorMassFactor = massFactor;
+  const double change = massFactor - m_factorMassFactor;
+  for (Eigen::Index col = 0; col < m_mass.outerSize(); ++col)
+    for (SparseMatrix::InnerIterator it(m_mass, col); it; ++it) {
+      const int* end = inner + outer[col + 1];
+      const int* at = std::lower_bound(inner + outer[col], end, static_cast<int>(it.row()));
+      // Not in the kept matrix: a whole refresh (startAttempt drops the kept factorisation, and with it
+      // these partly changed values).
+      if (at == end || *at != it.row()) return false;
+      k[at - inner] += change * it.value();
+    }
+  if (!factorizeKept(dt, massFactor)) return false;
   ++m_work.stepLengthChanges;
   if (m_debug) std::cerr << fmt::format("    kept matrix made for a step of {:.3e} s\n", dt);
   return true;

@@ -168,7 +168,9 @@ class NewtonIteration {
   double m_factorMassFactor = 0.0;    // the mass factor the kept matrix holds [1/s^2]
   SystemMatrix m_massAssembly;        // M's assembly (replayed from one change to the next)
   SparseMatrix m_mass;                // M over the equations [kg, kg m^2]
-  std::vector<Eigen::Index> m_massPosition;  // per stored entry of m_mass: its index in m_k's values
+  /// Factorises m_k as the kept matrix of a step of dt [s] with mass factor `massFactor` [1/s^2]; false
+  /// (none kept) if it is singular.
+  bool factorizeKept(double dt, double massFactor);
   /// Makes the kept matrix that of a step of dt [s] with mass factor `massFactor`, M taken at `state`
   /// (startAttempt); false (the factorisation dropped) when M has an entry outside the kept matrix's pattern
   /// or the matrix cannot be factorised.

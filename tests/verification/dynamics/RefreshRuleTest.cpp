@@ -40,10 +40,8 @@ TEST(RefreshRuleTest, MooringLineFewerIterationsSameResponseWithinTheConvergence
   const double worst = test::expectSameFairleadResponse(kept, rule, 0, 5e-5 * range);
   RecordProperty("largest_tension_difference_N", std::to_string(worst));
   RecordProperty("range_difference", std::to_string(rangeAfter(rule, 0, 20.0) / range - 1.0));
-  RecordProperty("iterations_rule", std::to_string(rule.result.newtonIterations));
-  RecordProperty("iterations_kept", std::to_string(kept.result.newtonIterations));
-  RecordProperty("refreshes_rule", std::to_string(rule.result.matrixRefreshes));
-  RecordProperty("refreshes_kept", std::to_string(kept.result.matrixRefreshes));
+  test::recordSolverCounts("rule", rule.result);
+  test::recordSolverCounts("kept", kept.result);
 }
 
 }  // namespace

@@ -39,11 +39,8 @@ TEST(StepChangeTest, MooringLineWithErrorControlFewerRefreshesSameResponseWithin
   const double worst = test::expectSameFairleadResponse(assembled, rescaled, 0, 5e-5 * range);
   RecordProperty("largest_tension_difference_N", std::to_string(worst));
   RecordProperty("steps", std::to_string(rescaled.result.steps));
-  RecordProperty("refreshes_rescale", std::to_string(rescaled.result.matrixRefreshes));
-  RecordProperty("rescales", std::to_string(rescaled.result.matrixStepLengthChanges));
-  RecordProperty("refreshes_refresh", std::to_string(assembled.result.matrixRefreshes));
-  RecordProperty("iterations_rescale", std::to_string(rescaled.result.newtonIterations));
-  RecordProperty("iterations_refresh", std::to_string(assembled.result.newtonIterations));
+  test::recordSolverCounts("rescale", rescaled.result);
+  test::recordSolverCounts("refresh", assembled.result);
 }
 
 }  // namespace
