@@ -7,11 +7,14 @@
 /// Geometry, per downstream element midpoint p and upstream line:
 ///  - the upstream element whose axis p projects onto (parameter s in [0, 1]), found by walking along the
 ///    upstream line from the element found last time (a few steps per call once the lines have settled);
-///    p beyond either end of the upstream line sees no wake;
+///    p beyond either end of the upstream line projects onto that end, and its distance across the wake
+///    includes its overshoot along the line, so the wake fades past the end over its own width (C1; a cut
+///    at the end switched part of an element's drag on and off);
 ///  - the incident flow is the steady current at p's depth, its component normal to that upstream element,
 ///    U_n = U_c - (U_c . t) t, speed U = |U_n| and direction e_x = U_n / U;
 ///  - with d = p - q (q the projection of p on the upstream axis), x = d . e_x downstream and
-///    y = |d - x e_x - (d . t) t| across, both in the plane normal to the upstream element;
+///    y = |d - x e_x - (d . t) t| across, both in the plane normal to the upstream element (beyond an end
+///    y = |d - x e_x|);
 ///  - the upstream diameter D and drag coefficient C_d are the means of D and of C_d D over the upstream
 ///    line within `blendLength` of q (arc length, clipped at the line's ends), not the values of the one
 ///    element q lies on: where the upstream line changes section (a lazy wave's buoyancy: 0.35 -> 0.9 m)

@@ -22,6 +22,12 @@ constexpr int kPatience = 10;
 /// Corrections without a new smallest out-of-balance force after which they are damped (halved, quartered,
 /// ...).
 constexpr int kDampAfter = 3;
+/// Backtracking of a correction (see the corrector): from an iterate within this many tolerances, a
+/// correction whose out-of-balance force exceeds kBacktrackGrowth times the iterate's (or the tolerance) is
+/// halved, at most kBacktracks times.
+constexpr double kBacktrackBelow = 10.0;
+constexpr double kBacktrackGrowth = 2.0;
+constexpr int kBacktracks = 6;
 }  // namespace
 
 ArcLengthContinuation::ArcLengthContinuation(Assembler& assembler, Settings settings,
@@ -114,6 +120,24 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
     return std::max(s, 0.0);
   };
 
+  // The out-of-balance force alone at (state, lambda), for the backtracking; false where it cannot be
+  // evaluated.
+  VecX rTrial(neq);
+  auto residualAt = [&](const model::State& at, double atLambda, VecX& residual) {
+    AssemblyRequest request;
+    request.dynamic = false;
+    request.wantMatrix = false;
+    m_setParameter(atLambda, request);
+    VecX force;
+    try {
+      m_assembler->assemble(at, request, force, nullptr);
+    } catch (const Error&) {
+      return false;
+    }
+    for (int i = 0; i < neq; ++i) residual[i] = force[eqDofs[static_cast<std::size_t>(i)]];
+    return residual.allFinite();
+  };
+
   for (int step = 0; step < m_settings.maxSteps && budget > 0; ++step) {
     // Near the target: the predictor's point at lambda = target, then Newton there (the finisher).
     if (tl > 0.0 && lambda + ds * tl >= m_settings.target) {
@@ -168,6 +192,22 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
       if (!evaluate(trial, trialLambda, r, drdl, &matrix, why)) break;
       out.residual = residualNorm(model, r, ResidualIndexing::Equations, &out.worstNode, kStaticMomentLever);
       const double g = tq.dot(acc) + psi2 * tl * accLambda - ds;
+      if (m_settings.debug) {  // each correction: the out-of-balance force, where, and its components
+        std::cerr << fmt::format("     correction {} lambda {:.6f} |r| {:.4g} N at {}", corrections,
+                                 trialLambda, out.residual,
+                                 out.worstNode >= 0 ? model.describeNode(out.worstNode) : "-");
+        if (out.worstNode >= 0) {
+          const int first = dofs.firstDof(out.worstNode);
+          auto component = [&](int dof) {
+            const int e = dofs.equation(dof);
+            return e >= 0 ? r[e] : 0.0;
+          };
+          const Vec3& x = trial.position[out.worstNode];
+          std::cerr << fmt::format(" ({:.4f}, {:.4f}, {:.4f}) m: ({:.3g}, {:.3g}, {:.3g}) N", x.x(), x.y(),
+                                   x.z(), component(first), component(first + 1), component(first + 2));
+        }
+        std::cerr << '\n';
+      }
       if (out.residual <= m_settings.tolerance && std::abs(g) <= kConstraintTolerance * ds) {
         if (!m_assembler->updateActiveSet()) {
           converged = true;
@@ -227,6 +267,32 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
       if (strain > 1.0) {
         full /= strain;
         scale /= strain;
+      }
+      // From a nearly balanced iterate, a correction that raises the out-of-balance force many times over is
+      // cut back by halves (to the best of up to kBacktracks halvings): near a grazing contact or a fold the
+      // tangent lacks what the next millimetre brings (a patch about to touch, whose law starts with no
+      // stiffness), and the full correction drove a line into the other (two lazy waves in each other's wake
+      // at their first touch: 0.96 N -> 295 N, then a linear creep out that never came back within the
+      // tolerance), where a quarter of it stays clear and balanced.
+      if (out.residual <= kBacktrackBelow * m_settings.tolerance) {
+        const double allowed = kBacktrackGrowth * std::max(out.residual, m_settings.tolerance);
+        double bestNorm = std::numeric_limits<double>::infinity(), bestFactor = 1.0, factor = 1.0;
+        for (int halving = 0; halving <= kBacktracks; ++halving, factor *= 0.5) {
+          model::State candidate = trial;
+          candidate.applyIncrement(dofs, factor * full);
+          double norm = std::numeric_limits<double>::infinity();
+          if (residualAt(candidate, trialLambda + factor * scale * dLambda, rTrial))
+            norm = residualNorm(model, rTrial, ResidualIndexing::Equations, nullptr, kStaticMomentLever);
+          if (norm < bestNorm) {
+            bestNorm = norm;
+            bestFactor = factor;
+          }
+          if (norm <= allowed) break;
+        }
+        if (m_settings.debug && bestFactor < 1.0)
+          std::cerr << fmt::format("     correction cut back to {} of itself\n", bestFactor);
+        full *= bestFactor;
+        scale *= bestFactor;
       }
       trial.applyIncrement(dofs, full);
       trialLambda += scale * dLambda;

@@ -1,6 +1,7 @@
 /// @file WakeInterferenceTest.cpp
 /// The geometry of WakeInterference (WakeInterference.hpp) at single points: where the wake starts behind
-/// the upstream line and how it passes a change of the upstream line's section. The deficit formula itself
+/// the upstream line, how it passes a change of the upstream line's section and a kink of its axis, and how
+/// it fades past the line's end. The deficit formula itself
 /// is hydro::wakeAt, tested against hand values in WakeModelTest; the whole static analysis against a
 /// shooting solution in tests/validation/hydro/WakeInterferenceTest.cpp.
 ///
@@ -114,6 +115,69 @@ TEST(WakeInterference, PassesAChangeOfTheUpstreamSectionContinuously) {
     EXPECT_LE(deficit, std::max(below, above) + 1e-12) << "z = " << z;
     if (i > 0) {
       EXPECT_LT(std::abs(deficit - last), 0.01) << "z = " << z;
+    }
+    last = deficit;
+  }
+}
+
+// Huse's largest slope across the wake, u0 sqrt(2 k3 / e) / b (at y = b / sqrt(2 k3)), 3 m behind the thin
+// section (u0 = 0.229 U, b = 0.218 m): 0.75 U per m; behind the thick one (0.442 U, 0.509 m): 0.62 U per m.
+// A step of 1 mm moves a point by 1 mm relative to the wake, so a continuous wake changes by less than 1e-3
+// U per step; the tests below allow twice that.
+constexpr double kLargestStepPerMillimetre = 2e-3;
+
+TEST(WakeInterference, PassesAKinkOfTheUpstreamLineContinuouslyAndWithoutMemory) {
+  // Source: WakeInterference.hpp (the upstream axis: its chords with the tangent interpolated between the
+  // node tangents; a point projects where d = p - q is normal to that tangent). The upstream line is bent at
+  // its node at z = -115 m by 26.6 deg towards +y (each node above it moved by half its height above the
+  // kink). A point 3 m behind it and 0.1 m to -y, on the kink's outer side, moves from z = -115.5 to -114.5 m
+  // in 1 mm steps through the wedge outside the kink (0 < z + 115 < 0.05 m), where it is square to neither
+  // chord; it stays in the wake (a deficit above 0.02 U: 0.31 m off the centre line at the top, 1.4 b).
+  // Continuity: less than kLargestStepPerMillimetre per step. No memory: the same state gives the same
+  // deficit (1e-12) whether the walk along the upstream line came from below (sweeping up) or from above
+  // (sweeping down). Before, in the wedge the point took the node with the tangent of the element the walk
+  // came from: the two sweeps differed there, and the deficit jumped where the wedge began and ended.
+  Probe probe;
+  const model::Line& up = probe.model.lines()[0];
+  for (int n = up.firstNode; n <= up.lastNode(); ++n) {
+    Vec3& x = probe.state.position[n];
+    x.y() = std::max(0.0, 0.5 * (x.z() + 115.0));
+  }
+  constexpr int kSteps = 1000;
+  std::vector<double> rising(kSteps + 1);
+  double last = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i <= kSteps; ++i) {
+    rising[static_cast<std::size_t>(i)] = probe.deficitAt(Vec3(3.0, -0.1, -115.5 + 1e-3 * i));
+    if (i > 0) {
+      EXPECT_LT(std::abs(rising[static_cast<std::size_t>(i)] - last), kLargestStepPerMillimetre)
+          << "step " << i;
+    }
+    last = rising[static_cast<std::size_t>(i)];
+  }
+  EXPECT_GT(*std::min_element(rising.begin(), rising.end()), 0.02) << "the point left the wake";
+  for (int i = kSteps; i >= 0; --i)
+    EXPECT_NEAR(probe.deficitAt(Vec3(3.0, -0.1, -115.5 + 1e-3 * i)), rising[static_cast<std::size_t>(i)],
+                1e-12)
+        << "step " << i;
+}
+
+TEST(WakeInterference, FadesPastTheEndOfTheUpstreamLine) {
+  // Source: WakeInterference.hpp: a point beyond an end of the upstream line projects onto that end, and its
+  // distance across the wake includes its overshoot along the line, so it sees Huse's deficit at (x,
+  // sqrt(y^2 + overshoot^2)). Probed 3 m behind the line's top end (z = -100 m; thick section, D = 0.6 m,
+  // C_d = 1.5) and 0.1 m off the wake's centre line, from z = -101 to -98 m in 1 mm steps: below the end the
+  // section's wake, above it that wake at the combined distance (1e-12: the same formula), and no step
+  // larger than kLargestStepPerMillimetre. Before, the wake stopped at the end: a step of 0.43 U.
+  Probe probe;
+  const WakeCoefficients huse;
+  double last = std::numeric_limits<double>::quiet_NaN();
+  for (int i = 0; i <= 3000; ++i) {
+    const double z = -101.0 + 1e-3 * i;
+    const double deficit = probe.deficitAt(Vec3(3.0, 0.1, z));
+    const double across = std::hypot(0.1, std::max(0.0, z + 100.0));
+    EXPECT_NEAR(deficit, wakeAt(huse, 3.0, across, 1.5, 0.6, 0.2).deficit, 1e-12) << "z = " << z;
+    if (i > 0) {
+      EXPECT_LT(std::abs(deficit - last), kLargestStepPerMillimetre) << "z = " << z;
     }
     last = deficit;
   }
