@@ -273,7 +273,8 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
       // tangent lacks what the next millimetre brings (a patch about to touch, whose law starts with no
       // stiffness), and the full correction drove a line into the other (two lazy waves in each other's wake
       // at their first touch: 0.96 N -> 295 N, then a linear creep out that never came back within the
-      // tolerance), where a quarter of it stays clear and balanced.
+      // tolerance); cut back to 1/16 or 1/64 there, the next corrections converge. Each try is one assembly
+      // of the out-of-balance force, not counted in the corrections' budget.
       if (out.residual <= kBacktrackBelow * m_settings.tolerance) {
         const double allowed = kBacktrackGrowth * std::max(out.residual, m_settings.tolerance);
         double bestNorm = std::numeric_limits<double>::infinity(), bestFactor = 1.0, factor = 1.0;
