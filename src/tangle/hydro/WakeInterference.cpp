@@ -162,10 +162,8 @@ ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair,
     const double n = c.norm();
     return n > 0.0 ? Vec3(c / n) : Vec3::Zero();
   };
-  auto nodeTangent = [&](int before, int after) -> Vec3 {  // elements either side; -1 where none
-    Vec3 t = Vec3::Zero();
-    if (before >= 0) t += direction(before);
-    if (after >= 0) t += direction(after);
+  auto meanDirection = [](const Vec3& u, const Vec3& v) -> Vec3 {
+    const Vec3 t = u + v;
     const double n = t.norm();
     return n > 0.0 ? Vec3(t / n) : t;
   };
@@ -178,8 +176,9 @@ ElementWake WakeInterference::wakeAtPoint(const model::State& state, Pair& pair,
     const model::LineElement& u = elements[static_cast<std::size_t>(j)];
     a = state.position[u.node1];
     axis = state.position[u.node2] - a;
-    t1 = nodeTangent(j > firstUp ? j - 1 : -1, j);
-    t2 = nodeTangent(j, j < lastUp ? j + 1 : -1);
+    const Vec3 here = direction(j);
+    t1 = meanDirection(j > firstUp ? direction(j - 1) : Vec3::Zero(), here);
+    t2 = meanDirection(here, j < lastUp ? direction(j + 1) : Vec3::Zero());
     const Vec3 pa = p - a;
     const double g0 = pa.dot(t1), g1 = (pa - axis).dot(t2);
     int move = 0;

@@ -37,27 +37,27 @@ ArcLengthContinuation::ArcLengthContinuation(Assembler& assembler, Settings sett
       m_setParameter(std::move(setParameter)),
       m_finish(std::move(finish)) {}
 
+void ArcLengthContinuation::assembleResidual(const model::State& state, double lambda, VecX& r,
+                                             SystemMatrix* matrix) {
+  const auto& eqDofs = m_assembler->model().dofs().equationDofs();
+  AssemblyRequest request;
+  request.dynamic = false;
+  request.wantMatrix = matrix != nullptr;
+  m_setParameter(lambda, request);
+  VecX force;
+  m_assembler->assemble(state, request, force, matrix);
+  r.resize(static_cast<Eigen::Index>(eqDofs.size()));
+  for (Eigen::Index i = 0; i < r.size(); ++i) r[i] = force[eqDofs[static_cast<std::size_t>(i)]];
+}
+
 bool ArcLengthContinuation::evaluate(const model::State& state, double lambda, VecX& r, VecX& drdl,
                                      SystemMatrix* matrix, std::string& why) {
-  const auto& eqDofs = m_assembler->model().dofs().equationDofs();
-  const auto neq = static_cast<Eigen::Index>(eqDofs.size());
   // The second point half a unit away, towards 0.5 (inside the loads the path sees); the matrix assembly
   // last, so that the contributors' trial data are those of (state, lambda).
   const double other = lambda < 0.5 ? lambda + 0.5 : lambda - 0.5;
-  AssemblyRequest request;
-  request.dynamic = false;
-  VecX force;
-  r.resize(neq);
-  drdl.resize(neq);
   try {
-    request.wantMatrix = false;
-    m_setParameter(other, request);
-    m_assembler->assemble(state, request, force, nullptr);
-    for (Eigen::Index i = 0; i < neq; ++i) drdl[i] = force[eqDofs[static_cast<std::size_t>(i)]];
-    request.wantMatrix = matrix != nullptr;
-    m_setParameter(lambda, request);
-    m_assembler->assemble(state, request, force, matrix);
-    for (Eigen::Index i = 0; i < neq; ++i) r[i] = force[eqDofs[static_cast<std::size_t>(i)]];
+    assembleResidual(state, other, drdl, nullptr);
+    assembleResidual(state, lambda, r, matrix);
   } catch (const Error& e) {
     why = fmt::format("an element cannot be evaluated ({})", e.what());
     return false;
@@ -120,23 +120,7 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
     return std::max(s, 0.0);
   };
 
-  // The out-of-balance force alone at (state, lambda), for the backtracking; false where it cannot be
-  // evaluated.
-  VecX rTrial(neq);
-  auto residualAt = [&](const model::State& at, double atLambda, VecX& residual) {
-    AssemblyRequest request;
-    request.dynamic = false;
-    request.wantMatrix = false;
-    m_setParameter(atLambda, request);
-    VecX force;
-    try {
-      m_assembler->assemble(at, request, force, nullptr);
-    } catch (const Error&) {
-      return false;
-    }
-    for (int i = 0; i < neq; ++i) residual[i] = force[eqDofs[static_cast<std::size_t>(i)]];
-    return residual.allFinite();
-  };
+  VecX rTrial;  // the out-of-balance force of a backtracking's try
 
   for (int step = 0; step < m_settings.maxSteps && budget > 0; ++step) {
     // Near the target: the predictor's point at lambda = target, then Newton there (the finisher).
@@ -282,8 +266,13 @@ ArcLengthContinuation::Outcome ArcLengthContinuation::run(model::State& state, d
           model::State candidate = trial;
           candidate.applyIncrement(dofs, factor * full);
           double norm = std::numeric_limits<double>::infinity();
-          if (residualAt(candidate, trialLambda + factor * scale * dLambda, rTrial))
-            norm = residualNorm(model, rTrial, ResidualIndexing::Equations, nullptr, kStaticMomentLever);
+          try {
+            assembleResidual(candidate, trialLambda + factor * scale * dLambda, rTrial, nullptr);
+            if (rTrial.allFinite())
+              norm = residualNorm(model, rTrial, ResidualIndexing::Equations, nullptr, kStaticMomentLever);
+          } catch (const Error&) {
+            // an element cannot be evaluated at this try: a smaller one is tried
+          }
           if (norm < bestNorm) {
             bestNorm = norm;
             bestFactor = factor;

@@ -72,6 +72,9 @@ class ArcLengthContinuation {
   /// r (over the equations) and dr/dlambda at (state, lambda); with `matrix`, the tangent K too.
   bool evaluate(const model::State& state, double lambda, VecX& r, VecX& drdl, SystemMatrix* matrix,
                 std::string& why);
+  /// r (over the equations) at (state, lambda), with `matrix` the tangent K too; throws what the assembly
+  /// throws (an element that cannot be evaluated).
+  void assembleResidual(const model::State& state, double lambda, VecX& r, SystemMatrix* matrix);
 
   Assembler* m_assembler;
   Settings m_settings;
