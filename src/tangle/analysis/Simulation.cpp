@@ -135,6 +135,8 @@ solver::StaticResult Simulation::solveStatics(bool progress) {
   // None when the loading path has no equilibrium (a free laid line sliding as a whole): each of them
   // leaves the path and the friction's history on it.
   const bool fallbacks = !result.converged && !result.noEquilibrium;
+  if (fallbacks && solver::StaticSolver::debugOutput())
+    std::cerr << "  first attempt: " << result.message << "\n";
   if (fallbacks && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model))
     solveWithDragStiffness(start, result);
   if (fallbacks && !result.converged && !core::interruptRequested() && m_coarseFallback)

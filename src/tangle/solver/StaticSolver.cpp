@@ -21,6 +21,14 @@
 namespace tangle::solver {
 
 namespace {
+
+/// A load fraction for a message: three decimals, more when that would round a fraction short of 1 up to
+/// 1 (a continuation stalled at 0.99998 is not at the full load).
+std::string fractionText(double fraction) {
+  fraction = std::max(fraction, 0.0);
+  if (fraction >= 1.0 || fraction < 0.9995) return fmt::format("{:.3f}", fraction);
+  return fmt::format("{:.6f}", std::min(fraction, 0.999999));
+}
 /// Largest Levenberg-Marquardt factor before a Newton solve gives up [-].
 constexpr double kMaxShift = 1e4;
 /// Restarts from a perturbed shape when bar elements end in compression.
@@ -55,6 +63,12 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
   m_forceScale = m_assembler->forceScale();
   result.tolerance = m_settings.tolerance * m_forceScale;
   const model::State start = state;
+  m_stalls.clear();
+  m_pathContext.clear();
+  struct ClearContext {
+    std::string* context;
+    ~ClearContext() { context->clear(); }
+  } clearContext{&m_pathContext};
   // Iterations in all: max_iterations bounds each Newton solve; the whole continuation gets 20 times that.
   int budget = std::max(20 * m_settings.maxIterations, 200);
 
@@ -71,6 +85,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       if (debugOutput()) std::cerr << "  restart with the free lines hanging from their held ends\n";
       // Its own allowance: the attempt from the given shape may have used the whole budget.
       budget = std::max(budget, 5 * m_settings.maxIterations);
+      m_pathContext = "with the free lines hanging from their held ends";
       if (solveFrom(hanging, time, stage, budget)) {
         ok = true;
         trial = hanging;
@@ -88,11 +103,14 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     model::State linear = start;
     StaticResult stage = result;
     m_assembler->setSlackFactor(1.0);
+    m_pathContext = "with the cables resisting compression as tension";
     bool staged = solveFrom(linear, time, stage, budget);
     for (double f = 0.1; staged; f *= 0.1) {
       // Down to the cables' own law (the lower bound 0 leaves LineType::compressionFactor, 1e-6 by default).
       const bool last = f < 1e-6;
       m_assembler->setSlackFactor(last ? 0.0 : f);
+      m_pathContext = last ? "with the cables' own compression law, after the staged one"
+                           : fmt::format("with the cables resisting compression at {:.0e} of tension", f);
       staged = solveFrom(linear, time, stage, budget);
       if (debugOutput())
         std::cerr << fmt::format("  cable compression factor {:.0e}: {}\n", last ? 0.0 : f,
@@ -112,15 +130,18 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     // Last resort: the continuation again, with slack suspended cable elements starting taut.
     model::State taut = start;
     StaticResult stage = result;
+    m_pathContext = "with the slack suspended cable elements starting taut";
     if (solveFrom(taut, time, stage, budget, true)) {
       ok = true;
       trial = taut;
       result = stage;
     } else {
       result.iterations = stage.iterations;
-      result.message = stage.message;
+      result.noEquilibrium = stage.noEquilibrium;
+      if (stage.noEquilibrium) result.message = stage.message;
     }
   }
+  m_pathContext.clear();
   for (int restart = 0; ok && restart < kMaxPerturbedRestarts; ++restart) {
     const std::vector<int> slackElements = slackSuspendedBars(m_assembler->model(), trial);
     if (slackElements.empty()) break;
@@ -182,7 +203,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       result.message +=
           fmt::format(" ({} of them in arc length past a fold of the path)", result.arcLengthSteps);
   } else {
-    if (result.message.empty()) result.message = diagnose(trial, result, "");
+    if (result.message.empty()) result.message = diagnose(result);
     state = start;
   }
   return result;
@@ -225,6 +246,7 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   }
   if (debugOutput())
     std::cerr << "  full load failed (" << full.failure << "): continuation from the start shape\n";
+  noteStall("Newton at the full load", "", 0.0, full.residual, full.worstNode, start, full.failure);
 
   // 2. Continuation from lambda = 0 (the start shape) to 1 in the residual and in length:
   //    r(q; L(lambda)) - (1 - lambda) r(q0; L(0)) = 0, with L(lambda) = L0 + lambda (L - L0).
@@ -243,7 +265,6 @@ bool StaticSolver::solveFrom(model::State& state, double time, StaticResult& res
   if (budget > 0 && continuation(state, start, time, result, budget, tautStart, failure)) return true;
   if (debugOutput()) std::cerr << "  continuation failed (" << failure << ")\n";
   state = start;
-  result.message = diagnose(state, result, failure);
   return false;
 }
 
@@ -300,8 +321,9 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   try {
     m_assembler->assemble(start, request, force, nullptr);
   } catch (const Error& e) {
-    result.message =
-        diagnose(start, result, fmt::format("the starting shape cannot be evaluated ({})", e.what()));
+    failure = fmt::format("the starting shape cannot be evaluated ({})", e.what());
+    noteStall("the continuation from the start shape", "the load", 0.0, result.residual, result.worstNode,
+              start, failure);
     return false;
   }
   gatherResidual(force, noOffset, r0);
@@ -349,6 +371,8 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
   m_progressFraction = 1.0;
   if (reached >= 1.0) return true;
   failure = lastFailure;
+  noteStall("the continuation from the start shape", "the load", reached, result.residual, result.worstNode,
+            state, failure);
   return false;
 }
 
@@ -372,7 +396,9 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
   if (m_progress) m_progress->stage("statics: the model in still water first, then the current ramped");
   model::State still = state;
   StaticResult stage = result;
+  m_stillWaterPath = true;
   const bool calm = solveFrom(still, time, stage, budget, tautStart);
+  m_stillWaterPath = false;
   result.iterations = stage.iterations;
   if (debugOutput()) std::cerr << "  current continuation: still water " << (calm ? "ok" : "failed") << "\n";
   if (!calm) return false;
@@ -382,6 +408,7 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
   double increment = 0.25;
   int steps = 0;
   int slidingLine = -1;  // Assembler::lineSlidingAsAWhole at `still`, as committed
+  std::string lastFailure;
   while (reached < 1.0 && budget > 0) {
     const double target = std::min(1.0, reached + increment);
     m_currentFactor = std::sqrt(target);
@@ -415,6 +442,7 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
       ++steps;
       increment = std::min(1.0, increment * (step.iterations <= 6 ? 2.0 : 1.0));
     } else {
+      lastFailure = step.failure;
       increment *= 0.5;
       // A free laid line at its friction capacity slides as a whole: no smaller increment helps (below).
       if (increment < 1e-4 || slidingLine >= 0) break;
@@ -439,6 +467,8 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     m_progressFraction = 1.0;
     return false;
   }
+  std::string path = "the current ramped from still water";
+  double furthest = reached;
   if (reached < 1.0 && budget > 0 && reached > 0.0) {
     // Stalled: a fold of the equilibrium path (a line in another's wake whose drag falls as it closes in
     // collapses onto it, theory 12.2), or Newton failing on a tangent without that negative stiffness. Follow
@@ -492,11 +522,17 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     } else {
       result.residual = arcOutcome.residual;
       result.worstNode = arcOutcome.worstNode;
+      path += ", then followed in arc length";
+      furthest = std::max(reached, arcOutcome.lambda);
+      lastFailure = arcOutcome.failure;
       if (debugOutput()) std::cerr << "  arc length failed: " << arcOutcome.failure << "\n";
     }
   }
   m_progressFraction = 1.0;
-  if (reached < 1.0) return false;
+  if (reached < 1.0) {
+    noteStall(path, "the current's drag", furthest, result.residual, result.worstNode, still, lastFailure);
+    return false;
+  }
   state = still;
   result.loadFraction = 1.0;
   result.continuationSteps = stillSteps;
@@ -823,27 +859,78 @@ void StaticSolver::gatherResidual(const VecX& force, const VecX& offset, VecX& r
     r[static_cast<Eigen::Index>(i)] = force[eqDofs[i]] - offset[static_cast<Eigen::Index>(i)];
 }
 
-std::string StaticSolver::diagnose(const model::State& state, const StaticResult& result,
-                                   const std::string& why) const {
+void StaticSolver::noteStall(const std::string& path, const std::string& loading, double fraction,
+                             double residual, int worstNode, const model::State& state,
+                             const std::string& why) {
+  Stall stall;
+  stall.path = m_stillWaterPath ? path + " in still water" : path;
+  stall.context = m_pathContext;
+  stall.loading = loading;
+  stall.fraction = fraction;
+  stall.residual = residual;
+  stall.worstNode = worstNode;
+  if (worstNode >= 0 && worstNode < static_cast<int>(state.position.size()))
+    stall.position = state.position[worstNode];
+  stall.why = why;
+  if (debugOutput())
+    std::cerr << fmt::format("  stall: {}{} at {} of {} ({})\n", stall.path,
+                             stall.context.empty() ? "" : " (" + stall.context + ")", fractionText(fraction),
+                             loading.empty() ? "the load" : loading, why);
+  m_stalls.push_back(std::move(stall));
+}
+
+std::string StaticSolver::diagnose(const StaticResult& result) const {
+  if (m_stalls.empty()) {  // not reached (every failing path notes its stall); the position unknown
+    Stall unknown;
+    unknown.fraction = result.loadFraction;
+    unknown.residual = result.residual;
+    unknown.worstNode = result.worstNode;
+    unknown.position = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    return diagnose(unknown, result, "");
+  }
+  // The furthest path; of equal ones the first tried (the later stages of solve() repeat the paths with a
+  // changed model, and often stall at the same point).
+  std::size_t best = 0;
+  for (std::size_t i = 1; i < m_stalls.size(); ++i)
+    if (m_stalls[i].fraction > m_stalls[best].fraction) best = i;
+  // The other paths by their furthest reach in any stage, each named once, in the order tried.
+  std::vector<const Stall*> reach;
+  for (std::size_t i = 0; i < m_stalls.size(); ++i) {
+    if (i == best || m_stalls[i].path == m_stalls[best].path) continue;
+    auto it =
+        std::find_if(reach.begin(), reach.end(), [&](const Stall* r) { return r->path == m_stalls[i].path; });
+    if (it == reach.end())
+      reach.push_back(&m_stalls[i]);
+    else if (m_stalls[i].fraction > (*it)->fraction)
+      *it = &m_stalls[i];
+  }
+  std::string others;
+  for (const Stall* r : reach)
+    others += r->loading.empty() ? fmt::format("{}{} did not converge", others.empty() ? "" : "; ", r->path)
+                                 : fmt::format("{}{} reached {} of {}", others.empty() ? "" : "; ", r->path,
+                                               fractionText(r->fraction), r->loading);
+  return diagnose(m_stalls[best], result, others);
+}
+
+std::string StaticSolver::diagnose(const Stall& stall, const StaticResult& result,
+                                   const std::string& others) const {
   const model::Model& model = m_assembler->model();
   const auto& env = model.environment();
-  const int node = result.worstNode;
+  const int node = stall.worstNode;
   std::string where = node >= 0 ? model.describeNode(node) : std::string("an unknown node");
   std::string hint;
   if (node >= 0 && model.lineOfNode(node) >= 0) {
-    const bool onSeabed =
-        model.seabedSurface().gap(state.position[node], 0.5 * model.nodeContactDiameter()[node]) <= 1e-3;
+    const Vec3& x = stall.position;
+    const bool onSeabed = model.seabedSurface().gap(x, 0.5 * model.nodeContactDiameter()[node]) <= 1e-3;
     // On a slope steeper than the friction angle a laid line free to slide has no equilibrium.
-    const Vec3& x = state.position[node];
     const double slope = std::acos(std::clamp(model.seabedSurface().at(x.x(), x.y()).normal.z(), -1.0, 1.0));
     if (onSeabed && slope > std::atan(env.seabed.frictionCoefficient) + 1e-9)
       hint = fmt::format(
           "the node lies on the seabed where it slopes {:.1f} deg, steeper than the friction angle atan(mu) "
-          "= "
-          "{:.1f} deg (environment.seabed.friction_coefficient {}): a laid line that nothing holds up the "
-          "slope "
-          "slides down it and has no static equilibrium; anchor or hold the line, or check the slope and the "
-          "friction",
+          "= {:.1f} deg (environment.seabed.friction_coefficient {}): a laid line that nothing holds up the "
+          "slope slides down it and has no static equilibrium; anchor or hold the line, or check the slope "
+          "and "
+          "the friction",
           slope * 180.0 / std::numbers::pi,
           std::atan(env.seabed.frictionCoefficient) * 180.0 / std::numbers::pi,
           env.seabed.frictionCoefficient);
@@ -851,8 +938,7 @@ std::string StaticSolver::diagnose(const model::State& state, const StaticResult
       hint =
           env.seabed.frictionCoefficient <= 0.0
               ? "the node lies on a frictionless seabed in a current, which may have no static equilibrium: "
-                "set "
-                "environment.seabed.friction_coefficient (0.3 to 1.0 is typical)"
+                "set environment.seabed.friction_coefficient (0.3 to 1.0 is typical)"
               : "the node lies on the seabed in a current: if the drag on the laid line exceeds its friction "
                 "capacity mu w (environment.seabed.friction_coefficient) the line slides and has no static "
                 "equilibrium";
@@ -860,14 +946,23 @@ std::string StaticSolver::diagnose(const model::State& state, const StaticResult
   if (hint.empty())
     hint =
         "check the line lengths against the distances between their ends and the section properties; a "
-        "larger "
-        "statics.max_iterations or a mesh with fewer, longer elements near that node may help";
+        "larger statics.max_iterations or a mesh with fewer, longer elements near that node may help";
+  const std::string path = stall.context.empty() ? stall.path : stall.path + " (" + stall.context + ")";
+  std::string reached;
+  if (stall.path.empty())
+    reached = fmt::format("load fraction reached {}", fractionText(stall.fraction));
+  else if (stall.loading.empty())
+    reached = fmt::format("{} did not converge", path);
+  else
+    reached = fmt::format("the path that got furthest, {}, reached {} of {}", path,
+                          fractionText(stall.fraction), stall.loading);
   return fmt::format(
-      "static analysis did not converge{}: load fraction reached {:.3f}, {} iterations, largest "
-      "out-of-balance force "
-      "{:.4g} N at {} (tolerance {:.3g} N). What to change: {}",
-      why.empty() ? std::string() : fmt::format(" ({})", why), result.loadFraction, result.iterations,
-      result.residual, where, result.tolerance, hint);
+      "static analysis did not converge: {}{}, {} iterations in all, largest out-of-balance force {:.4g} N "
+      "at {} "
+      "(tolerance {:.3g} N){}. What to change: {}",
+      reached, stall.why.empty() ? std::string() : fmt::format(" ({})", stall.why), result.iterations,
+      stall.residual, where, result.tolerance,
+      others.empty() ? std::string() : fmt::format("; the other paths: {}", others), hint);
 }
 
 }  // namespace tangle::solver

@@ -109,8 +109,26 @@ class StaticSolver {
                                    double tolerance);
   /// r over the equations from the full-DOF force vector minus the homotopy offset.
   void gatherResidual(const VecX& force, const VecX& offset, VecX& r) const;
-  /// Failure message: where, how large, and what the user can change.
-  std::string diagnose(const model::State& state, const StaticResult& result, const std::string& why) const;
+  /// Where one path of the solve stopped short of its full load. The failure's message reports the path that
+  /// got furthest, not the last one tried: a lazy-wave pair whose current ramp stalled at 0.293 of the drag
+  /// near the downstream anchor was reported at the homotopy's 0.009, at the upstream line.
+  struct Stall {
+    std::string path;              ///< the path, as the message names it
+    std::string context;           ///< the stage of solve() it ran in (m_pathContext), empty for the first
+    std::string loading;           ///< what `fraction` is of ("the load", "the current's drag")
+    double fraction = -1.0;        ///< the fraction of `loading` in equilibrium [-]
+    double residual = 0.0;         ///< largest out-of-balance force where it stopped [N]
+    int worstNode = -1;            ///< where that force is (global node; -1: unknown)
+    Vec3 position = Vec3::Zero();  ///< that node's position then [m]
+    std::string why;               ///< the last failure's reason
+  };
+  /// Records a stall of `path` (m_pathContext appended) for the final diagnosis.
+  void noteStall(const std::string& path, const std::string& loading, double fraction, double residual,
+                 int worstNode, const model::State& state, const std::string& why);
+  /// Failure message: the furthest path's stall (where, how large), the others' reach, and what to change.
+  std::string diagnose(const StaticResult& result) const;
+  /// Failure message for one stall.
+  std::string diagnose(const Stall& stall, const StaticResult& result, const std::string& others) const;
 
   /// Debug (TANGLE_DEBUG_TANGENT): prints how far `tangent` times the Newton `step` is from central
   /// differences of the residual along it.
@@ -127,6 +145,9 @@ class StaticSolver {
   int m_progressIterations = 0;     // Newton iterations of this solve so far (for the progress lines)
   double m_progressFraction = 1.0;  // load fraction being solved for [-]
   double m_currentFactor = 1.0;     // AssemblyRequest::currentFactor of every assembly (currentContinuation)
+  std::vector<Stall> m_stalls;      // of this solve, in the order tried (noteStall)
+  std::string m_pathContext;        // the stage of solve() a path runs in, for its Stall::context
+  bool m_stillWaterPath = false;    // solving in still water first (currentContinuation), for Stall::path
 };
 
 }  // namespace tangle::solver
