@@ -42,6 +42,34 @@ constexpr double kNewtonRootStep = 1e-10;
 /// Tolerance on the parameter of a dip's deepest point [-] (contactIntervals): the depth found is then
 /// exact to about the centreline's curvature times 1e-18 m.
 constexpr double kMinimumTolerance = 1e-9;
+
+/// The root of f between a and b, where f(a) and f(b) have opposite signs, to round-off (the Illinois
+/// variant of regula falsi: superlinear, and the bracket always holds the root) [same unit as a, b].
+template <typename F>
+double signChange(const F& f, double a, double fa, double b, double fb) {
+  double x = a;
+  int kept = 0;  // which end stayed last time: -1 a, +1 b
+  for (int iteration = 0; iteration < 100; ++iteration) {
+    double next = (a * fb - b * fa) / (fb - fa);
+    if (!(next > std::min(a, b) && next < std::max(a, b))) next = 0.5 * (a + b);
+    if (std::abs(next - x) <= kRootTolerance * std::max(1.0, std::abs(x)) && iteration > 0) return next;
+    x = next;
+    const double fx = f(x);
+    if (fx == 0.0) return x;
+    if ((fx < 0.0) == (fb < 0.0)) {
+      b = x;
+      fb = fx;
+      if (kept == -1) fa *= 0.5;
+      kept = -1;
+    } else {
+      a = x;
+      fa = fx;
+      if (kept == 1) fb *= 0.5;
+      kept = 1;
+    }
+  }
+  return x;
+}
 /// Depths of a ridge between two dips, over the shallower dip's, at which its cut has full weight and none
 /// (contactIntervals) [-].
 constexpr double kRidgeDepths[2] = {0.02, 0.2};
@@ -568,12 +596,6 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
       else if (weight > 0.0)
         iv.ridges.emplace_back(points[k].xi, weight);
     }
-    // The slave's shoulder ends, where its radius's second derivative jumps (fixed in xi).
-    {
-      const Shoulder& sh = m_shoulders[static_cast<std::size_t>(slave)];
-      for (const double end : {sh.startLength, 1.0 - sh.endLength})
-        if (end > iv.lo && end < iv.hi && end > 0.0 && end < 1.0) iv.cuts.push_back(end);
-    }
     // The slave's ends are always sampled: a run that does not start at xi = 0 has a point out of contact
     // before it.
     iv.lo = i == 0 ? first.xi : root(points[i - 1].xi, points[i - 1].g, first.xi, first.g);
@@ -582,6 +604,33 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
     const double gl = i == 0 ? first.g : 0.0, gh = last + 1 == points.size() ? final.g : 0.0;
     i = last + 1;
     if (!(iv.hi > iv.lo)) continue;
+    // The shoulder ends (radiusProfile), where the radius's third derivative jumps: the slave's, fixed in xi,
+    // and the master's, where the projection of the slave's point passes them (each change of side between
+    // five points of the interval, refined to round-off: the cut moves smoothly with the nodes). Four Gauss
+    // points on a piece across a shoulder's end left the tangent 1.5 % off at a crossing (before 2026-12-06
+    // the slave's cuts were tested against the interval before its ends were set, and none was made).
+    {
+      const Shoulder& sh = m_shoulders[static_cast<std::size_t>(slave)];
+      for (const double end : {sh.startLength, 1.0 - sh.endLength})
+        if (end > iv.lo && end < iv.hi && end > 0.0 && end < 1.0) iv.cuts.push_back(end);
+      const Shoulder& shB = m_shoulders[static_cast<std::size_t>(master)];
+      for (const double end : {shB.startLength, 1.0 - shB.endLength}) {
+        if (!(end > 0.0 && end < 1.0)) continue;
+        const auto side = [&](double xi) {
+          return projectPoint(state, slave, xi, master, tGuess, false).t - end;
+        };
+        constexpr int kSpans = 4;
+        double x0 = iv.lo, h0 = side(x0);
+        for (int k = 1; k <= kSpans; ++k) {
+          const double x1 = k == kSpans ? iv.hi : iv.lo + (iv.hi - iv.lo) * k / kSpans;
+          const double h1 = side(x1);
+          if ((h0 < 0.0 && h1 > 0.0) || (h0 > 0.0 && h1 < 0.0))
+            iv.cuts.push_back(signChange(side, x0, h0, x1, h1));
+          x0 = x1;
+          h0 = h1;
+        }
+      }
+    }
     // Where the integrand is not smooth: where the penetration passes the law's regularisation depth and
     // the barrier's start (the law's second derivative jumps there). Gauss points on pieces between them
     // integrate smooth functions: the quadrature is then accurate, and so is its derivative, which the
@@ -978,6 +1027,51 @@ std::array<Vec3, 8> projectionGradient(const std::vector<Vec3>& position, const 
   return g;
 }
 
+/// Third s-derivatives of a smooth piece's weights [-] (constant on the cubic; zero on a chord): the
+/// derivative of centrelineCurvatureWeights.
+std::array<double, 4> centrelineThirdWeights(const ElementCurve& c) {
+  if (!c.smooth) return {0.0, 0.0, 0.0, 0.0};
+  return {6.0 * c.a0, 12.0 + 6.0 * (c.a1 + c.b1), -12.0 + 6.0 * (c.a2 + c.b2), 6.0 * c.b3};
+}
+
+/// Hessian of the projection's parameter t with respect to the eight slots' positions (projectionGradient's
+/// slots) [1/m^2], from differentiating F(x, t(x)) = 0 twice, F = V_t = -u . c_B':
+///     Hess t = -(F_xx + F_xt grad t^T + grad t F_xt^T + F_tt grad t grad t^T) / F_t,
+/// F_t = V_tt = c_B' . c_B' - u . c_B'', F_xx(i, j) = -(U_i P_j + P_i U_j) I, F_xt(j) = 2 P_j c_B' - U_j
+/// c_B''
+/// - Q_j u and F_tt = 3 c_B' . c_B'' - u . c_B''', with the slots' weights in u (U: N_k on A, -N_k on B), in
+/// c_B' (P: dN_k on B) and in c_B'' (Q: ddN_k on B). `third`: B's third-derivative weights.
+Eigen::Matrix<double, 24, 24> projectionHessian(const std::vector<Vec3>& position,
+                                                const CentrelineDistance& d,
+                                                const std::array<double, 4>& third,
+                                                const std::array<Vec3, 8>& gradT) {
+  Eigen::Matrix<double, 24, 24> h = Eigen::Matrix<double, 24, 24>::Zero();
+  const Vec3 u = d.pointA - d.pointB;
+  const Vec3 cb = d.b.tangent(position), cbb = d.b.secondDerivative(position);
+  Vec3 cbbb = Vec3::Zero();
+  for (int k = 0; k < 4; ++k) cbbb += third[k] * position[d.b.node[k]];
+  const double vtt = cb.squaredNorm() - u.dot(cbb);
+  if (!(vtt > 0.0)) return h;  // not a minimum (projectionGradient)
+  std::array<double, 8> weightU{}, weightP{}, weightQ{};
+  for (int k = 0; k < 4; ++k) {
+    weightU[k] = d.a.N[k];
+    weightU[4 + k] = -d.b.N[k];
+    weightP[4 + k] = d.b.dN[k];
+    weightQ[4 + k] = d.b.ddN[k];
+  }
+  std::array<Vec3, 8> fxt;
+  for (int j = 0; j < 8; ++j) fxt[j] = 2.0 * weightP[j] * cb - weightU[j] * cbb - weightQ[j] * u;
+  const double ftt = 3.0 * cb.dot(cbb) - u.dot(cbbb);
+  for (int i = 0; i < 8; ++i)
+    for (int j = 0; j < 8; ++j) {
+      Mat3 b = fxt[i] * gradT[j].transpose() + gradT[i] * fxt[j].transpose() +
+               ftt * gradT[i] * gradT[j].transpose();
+      b.diagonal().array() -= weightU[i] * weightP[j] + weightP[i] * weightU[j];
+      h.block<3, 3>(3 * i, 3 * j) = -b / vtt;
+    }
+  return h;
+}
+
 }  // namespace
 
 void DistributedContact::addForces(const model::State& state, const solver::AssemblyRequest& request,
@@ -1024,14 +1118,16 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
       block = request.kf * smp.length *
               (normalSlope * kin.gradient * kin.gradient.transpose() - smp.lineForce * kin.hessian);
     } else {
-      // Hess gap = Hess d - r_B'' grad t grad t^T - r_B' Hess t; the last is left out (of the order of
-      // f r_B' / L^2 per unit displacement, against f / d of Hess d).
+      // Hess gap = Hess d - r_B'' grad t grad t^T - r_B' Hess t (projectionHessian).
       Eigen::Matrix<double, 24, 1> gt, gradGap;
       for (int i = 0; i < 8; ++i) gt.segment<3>(3 * i) = gradT[i];
       gradGap = kin.gradient - smp.radiusSlope * gt;
+      const Eigen::Matrix<double, 24, 24> hessT =
+          projectionHessian(state.position, smp.curve,
+                            centrelineThirdWeights(m_curves[static_cast<std::size_t>(smp.elementB)]), gradT);
       block = request.kf * smp.length *
               (normalSlope * gradGap * gradGap.transpose() - smp.lineForce * kin.hessian +
-               smp.lineForce * smp.radiusCurvature * gt * gt.transpose());
+               smp.lineForce * (smp.radiusCurvature * gt * gt.transpose() + smp.radiusSlope * hessT));
     }
     Mat3 pointBlock = request.cf * smp.length * smp.damping * smp.normal * smp.normal.transpose();
     pointBlock += (request.kf + smp.slipDelay * request.cf) * smp.length * smp.frictionTangent;
