@@ -127,7 +127,9 @@ def check_data(run: Path, data: dict) -> None:
     # Contact events against contact/events.csv.
     with (run / "contact" / "events.csv").open(encoding="utf-8") as f:
         events = list(csv.DictReader(f))
-    assert len(events) == len(data["clash"]["events"]) >= 2, (len(events), len(data["clash"]["events"]))
+    # One sustained contact along the risers' tops from the statics on (until 2026-12-06 the tracker split
+    # off its top end as a second event at 8.95 s, ContactEvents.AContactWhoseMiddleLiftsOffStaysOneEvent).
+    assert len(events) == len(data["clash"]["events"]) >= 1, (len(events), len(data["clash"]["events"]))
     # Contact forces are drawn: some frame has a contact patch.
     assert any(f["k"] for f in frames)
 
@@ -144,9 +146,10 @@ def check_page(run: Path, data: dict, profile: Path) -> None:
         "moving the time slider did not show the last frame"
     assert math.isclose(status["checksumBack"], status["checksumFirst"], rel_tol=1e-12)
     assert status["clashRows"] == len(data["clash"]["events"]), status
-    # The last row (by event number) jumps to the output time at or just before its start.
+    # The last row (by event number) jumps to the output time at or just before its start, from the last
+    # frame, where the slider left the replay.
     start = status["eventStart"]
-    assert start > 1.0, start
+    assert status["frameAfterRowClick"] < status["frames"] - 1, status
     interval = data["decimation"]["output_interval"] * data["decimation"]["stride"]
     assert start - interval - 1e-9 <= status["frameTimeAfterRowClick"] <= start + 1e-9, status
     assert status["plots"] >= 4 and "c" in status["quantities"], status

@@ -12,9 +12,10 @@ ResponseStatistics::ResponseStatistics(const std::vector<solver::LineSnapshot>& 
   for (std::size_t l = 0; l < initial.size(); ++l) {
     const solver::LineSnapshot& s = initial[l];
     m_lines[l].tension.resize(s.tension.size());
-    const bool bending =
-        std::any_of(s.bendingMoment.begin(), s.bendingMoment.end(), [](double m) { return m != 0.0; });
-    if (bending) m_lines[l].moment.resize(s.bendingMoment.size());
+    // A line of beams, as every other result table decides (LineSnapshot::hasBending): not by a non-zero
+    // static moment somewhere, which a straight vertical riser in still water has nowhere, and whose
+    // dynamic moments then had no statistics.
+    if (s.hasBending) m_lines[l].moment.resize(s.bendingMoment.size());
   }
 }
 

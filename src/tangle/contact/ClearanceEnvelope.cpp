@@ -117,7 +117,8 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
   const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
   double smooth = kInf;
   for (int j = std::max(bestSegment - 1, 0); j <= std::min(bestSegment + 1, segments - 1); ++j) {
-    if (!rule.allowed(i, j)) continue;
+    // Not a parted neighbour (search's rule): its curve runs across the gap between the broken ends.
+    if (!rule.assessed(i, j)) continue;
     const Vec3 axis = state.position[b.firstNode + j + 1] - state.position[b.firstNode + j];
     const double l2 = axis.squaredNorm();
     const double t0 =

@@ -172,6 +172,17 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
   std::vector<StepSums> sums(m_open.size());
   std::vector<bool> continued(m_open.size(), false);
   std::vector<int> absorbedInto(m_open.size(), -1);  // an event folded into another (below)
+  // Each open event's extent at the last committed state, which every patch of this step is matched
+  // against: the events' own last extents are replaced by this step's as patches continue them. (Matched
+  // against those, the second patch of a contact whose middle had lifted off, [0, 10] and [90, 100] m of a
+  // contact over [0, 100] m, met the first patch's [0, 10] m and opened an event of its own: a new impact in
+  // the clash statistics.)
+  struct Extent {
+    double aMin, aMax, bMin, bMax;
+  };
+  std::vector<Extent> lastExtent;
+  lastExtent.reserve(m_open.size());
+  for (const ContactEvent& e : m_open) lastExtent.push_back({e.lastAMin, e.lastAMax, e.lastBMin, e.lastBMax});
   m_patches.clear();
   for (const Patch& p : patches) {
     const ContactSpot& s = *p.strongest;
@@ -180,8 +191,9 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       const ContactEvent& e = m_open[k];
       if (e.lineA != s.lineA || e.lineB != s.lineB) continue;
       const double r = std::max(e.reach, p.reach);
-      if (!overlaps(p.aMin, p.aMax, e.lastAMin - r, e.lastAMax + r) ||
-          !overlaps(p.bMin, p.bMax, e.lastBMin - r, e.lastBMax + r))
+      const Extent& last = lastExtent[k];
+      if (!overlaps(p.aMin, p.aMax, last.aMin - r, last.aMax + r) ||
+          !overlaps(p.bMin, p.bMax, last.bMin - r, last.bMax + r))
         continue;
       // The first open event it overlaps continues; any other it overlaps is the same contact, joined by
       // this patch, and is folded into it below. (Two risers closing side by side touched at first in
@@ -241,6 +253,7 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
         e.continuumNote = "not estimated";
         if (continuum) continuum(e);
       }
+      lastExtent.push_back({e.lastAMin, e.lastAMax, e.lastBMin, e.lastBMax});
       m_open.push_back(std::move(e));
       sums.emplace_back();
       continued.push_back(false);

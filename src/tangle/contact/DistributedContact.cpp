@@ -815,7 +815,8 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
       for (const auto& r : iv.ridges)
         if (r.first > iv.lo && r.first < iv.hi) ridges.push_back(r);
       // Two rules per partly weighted ridge (with its cut and without), blended: every combination, weighted
-      // by the product of its ridges' weights (at most three such ridges; more keep the deepest three).
+      // by the product of its ridges' weights (at most three such ridges; of more, the three of largest
+      // weight, the least deep: a ridge left out is not cut, which changes the blend by its weight).
       if (ridges.size() > 3) {
         std::sort(ridges.begin(), ridges.end(),
                   [](const auto& x, const auto& y) { return x.second > y.second; });

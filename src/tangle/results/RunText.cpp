@@ -176,10 +176,14 @@ BreakingLoadUse breakingLoadUse(const model::Model& m, std::size_t lineIndex, co
   const model::Line& line = m.lines()[lineIndex];
   for (int i = 0; i < line.nodeCount && i < static_cast<int>(nodeTension.size()); ++i) {
     double mbl = 0.0;
+    int weaker = -1;  // the element whose MBL it is: its line type is the one named
     for (const int e : {i - 1, i}) {
       if (e < 0 || e >= line.elementCount) continue;
       const double b = m.elements()[static_cast<std::size_t>(line.firstElement + e)].type->minimumBreakingLoad;
-      if (b > 0.0 && (mbl == 0.0 || b < mbl)) mbl = b;
+      if (b > 0.0 && (mbl == 0.0 || b < mbl)) {
+        mbl = b;
+        weaker = e;
+      }
     }
     if (mbl <= 0.0) continue;
     const double ratio = nodeTension[static_cast<std::size_t>(i)] / mbl;
@@ -188,8 +192,7 @@ BreakingLoadUse breakingLoadUse(const model::Model& m, std::size_t lineIndex, co
       use.arc = line.arcLength[static_cast<std::size_t>(i)];
       use.tension = nodeTension[static_cast<std::size_t>(i)];
       use.mbl = mbl;
-      const int e = std::min(i, line.elementCount - 1);
-      use.lineType = m.elements()[static_cast<std::size_t>(line.firstElement + e)].type->name;
+      use.lineType = m.elements()[static_cast<std::size_t>(line.firstElement + weaker)].type->name;
     }
   }
   return use;

@@ -138,7 +138,11 @@ void GeneralizedAlpha::moveNodes(model::State& state, const model::State& start,
     // Free directions only: prescribed ones keep what applyPrescribed set, fixed ones their start.
     for (int k = 0; k < 3; ++k)
       if (dofs.equation(d + k) >= 0) state.position[n][k] = start.position[n][k] + dq[d + k];
-    if (dofs.hasRotations(n) && dofs.equation(d + 3) >= 0) {
+    // A node with some rotations free turns by their increments (its fixed ones are zero in dq): a torsion
+    // lock fixes one rotation of a held beam end (Model::addLine), about x for a line along x, and until
+    // 2026-12-06 the test of that first rotation alone left such an end's triad behind on parts.
+    if (dofs.hasRotations(n) && !m_prescribedDof[d + 3] &&
+        (dofs.equation(d + 3) >= 0 || dofs.equation(d + 4) >= 0 || dofs.equation(d + 5) >= 0)) {
       const Vec3 dtheta = dq.segment<3>(d + 3);
       state.triad[n] =
           dtheta.squaredNorm() > 0.0 ? Mat3(geometry::expMap(dtheta) * start.triad[n]) : start.triad[n];

@@ -205,4 +205,24 @@ TEST(ExtremeCredibility, MeanShiftOfALinearTrendIsSqrtThree) {
 }
 
 }  // namespace
+// A line of beams whose static bending moment is zero everywhere (a straight vertical riser in still water)
+// gets moment statistics as every other result table does (LineSnapshot::hasBending); a cable line gets
+// none. Until 2026-12-06 the statistics asked for a non-zero static moment somewhere, and the riser's
+// dynamic moments had none (statistics.csv's moment columns empty, "a line without bending stiffness").
+TEST(ResponseStatistics, ABeamLineStraightAtRestStillHasMomentStatistics) {
+  solver::LineSnapshot riser, cable;
+  for (solver::LineSnapshot* s : {&riser, &cable}) {
+    s->tension.assign(5, 1.0e5);
+    s->bendingMoment.assign(5, 0.0);
+  }
+  riser.hasBending = true;
+  analysis::ResponseStatistics stats({riser, cable}, 0.0);
+  ASSERT_EQ(stats.lines().size(), 2u);
+  ASSERT_EQ(stats.lines()[0].moment.size(), 5u);
+  EXPECT_TRUE(stats.lines()[1].moment.empty());
+  riser.bendingMoment[2] = 2.5e3;  // the dynamics bends it
+  stats.accumulate({riser, cable}, 0.1);
+  EXPECT_EQ(stats.lines()[0].moment[2].maximum(), 2.5e3);
+}
+
 }  // namespace tangle::analysis

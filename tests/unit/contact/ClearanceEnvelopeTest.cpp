@@ -112,6 +112,32 @@ TEST(ClearanceEnvelope, NodeClearanceEqualsTheBruteForceMinimumWhateverTheFirstG
   }
 }
 
+// A node of line a over the gap a parted element of line b left (lines[].failure): its clearance is to what
+// is left of b, not to the parted element, whose curve still runs between the broken ends. Two beams of
+// 0.1 m crossing at right angles, b along x on 1 m elements with element 5 (x = 5 to 6 m) parted from the
+// start; a's middle node 0.15 m above x = 5.2 m. To the parted element the clearance is 0.15 - 0.1 =
+// 0.05 m; to the broken end at x = 5 m it is sqrt(0.2^2 + 0.15^2) - 0.1 = 0.15 m (to round-off: the smooth
+// check near the surface measures the element before the end on its curve, here straight). Until
+// 2026-12-06 that check measured the nearest segment's neighbours whether parted or not: 0.05 m.
+TEST(ClearanceEnvelope, ANodeOverAPartedElementIsMeasuredToWhatIsLeft) {
+  model::ModelSpec spec;
+  spec.sourceFile = "clearance (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["rod"] = test::solidRodType("rod", 0.1, 2.1e11, 7850.0);
+  spec.lines = {test::simpleLine("a", "rod", 10.0, 10, model::EndKind::Pinned, Vec3(5.2, -5, -59.85),
+                                 model::EndKind::Pinned, Vec3(5.2, 5, -59.85)),
+                test::simpleLine("b", "rod", 10.0, 10, model::EndKind::Pinned, Vec3(0, 0, -60),
+                                 model::EndKind::Pinned, Vec3(10, 0, -60))};
+  const model::Model m(spec);
+  m.parted().part(static_cast<std::size_t>(m.lines()[1].firstElement + 5),
+                  -std::numeric_limits<double>::infinity());
+  const model::State s = m.initialState();
+  const ClearanceEnvelope envelope(m, {{0, 1}});
+  const std::vector<double> clearance = envelope.nodeClearance(s, 0, 1);
+  ASSERT_EQ(clearance.size(), 11u);
+  EXPECT_NEAR(clearance[5], std::hypot(0.2, 0.15) - 0.1, 1e-6);
+}
+
 TEST(ClearanceEnvelope, ThresholdSkipsOnlyNodesThatCannotSetANewMinimum) {
   const model::Model m(twoLines());
   model::State s = m.initialState();

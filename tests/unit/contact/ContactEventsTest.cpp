@@ -165,5 +165,42 @@ TEST(ContactEvents, FrictionAlongTheMeanNormalIsPartOfTheImpulseNotOfTheWork) {
   EXPECT_NEAR(e.workMass, work, 3e-3 * work);
 }
 
+// One contact along a length whose middle lifts off: two lines touching along [0, 100] m (Gauss spots every
+// metre on 1 m elements; the reach, two elements plus the radii, is 2.1 m), then only along [0, 10] and
+// [90, 100] m, then apart. The rule (docs/theory.md 9.9): a patch continues the open
+// event whose extent at the last committed state, grown by the reach, it overlaps. Both patches of the
+// second state overlap the first state's [0, 100] m: one event throughout, one impact. (Until 2026-12-06
+// the second patch was matched against the extent the first had just written, [0, 10] m, and opened an
+// event of its own: two events, and a second impact had its ends been approaching. Had the middle touched
+// again, the patch over the whole length would have joined the two.)
+TEST(ContactEvents, AContactWhoseMiddleLiftsOffStaysOneEvent) {
+  const auto along = [](double from, double to, double approach) {
+    std::vector<ContactSpot> spots;
+    for (double arc = from; arc <= to + 1e-9; arc += 1.0) {
+      ContactSpot s = spot(100.0, approach > 0.0 ? -approach : 0.0, approach, 0.1, 100.0);
+      s.arcA = s.arcB = arc;
+      s.length = 1.0;
+      s.velocityWeight = s.force;
+      spots.push_back(s);
+    }
+    return spots;
+  };
+  ContactEventTracker tracker(0.05, 0.2);
+  const auto touching = [](int, int, double, double, double, double) { return 0.0; };
+  const auto farApart = [](int, int, double, double, double, double) { return 1.0; };
+  const double dt = 0.01;
+  tracker.update(1 * dt, dt, true, along(0.0, 100.0, 1.0), touching);  // first touch at 1 m/s
+  std::vector<ContactSpot> ends = along(0.0, 10.0, 0.0), far = along(90.0, 100.0, 0.0);
+  ends.insert(ends.end(), far.begin(), far.end());
+  tracker.update(2 * dt, dt, true, ends, touching);
+  tracker.update(3 * dt, dt, true, {}, farApart);
+  tracker.finish(3 * dt);
+  ASSERT_EQ(tracker.events().size(), 1u);
+  const ContactEvent& e = tracker.events().front();
+  EXPECT_TRUE(e.impact);
+  EXPECT_NEAR(e.arcAMin, 0.0, 1e-12);
+  EXPECT_NEAR(e.arcAMax, 100.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace tangle::contact

@@ -15,6 +15,7 @@
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/core/Error.hpp"
 #include "tangle/io/ModelReader.hpp"
+#include "tangle/model/Model.hpp"
 #include "tangle/results/RunText.hpp"
 
 namespace tangle {
@@ -66,6 +67,32 @@ TEST(BreakingLoad, TensionAboveTheMinimumBreakingLoadIsWarnedOfWhereItIs) {
   analysis::Simulation sim(io::readModelString(chainModel(""), "chain (test)"));
   ASSERT_TRUE(sim.solveStatics().converged);
   EXPECT_EQ(results::breakingLoadUse(sim.model(), 0, sim.snapshot()[0].tension).ratio, 0.0);
+}
+
+// Where two line types meet the node takes the smaller MBL of its two elements, and the warning names that
+// element's line type: a chain (MBL 50 N) from end A, then a wire (MBL 1000 N), with the largest tension, 100
+// N, at the node between them: 2 times the chain's MBL, named 'chain'. (Until 2026-12-06 the name was always
+// that of the element on the end-B side: 'wire', with the chain's MBL.)
+TEST(BreakingLoad, AtAJunctionTheWeakerLineTypeIsNamed) {
+  const model::Model m(io::readModelString(R"(
+environment: {water_depth: 100}
+line_types:
+  - {name: chain, outer_diameter: 0.137, mass_per_length: 115, axial_stiffness: 4.9e8, minimum_breaking_load: 50}
+  - {name: wire, outer_diameter: 0.09, mass_per_length: 40, axial_stiffness: 6.0e8, minimum_breaking_load: 1000}
+lines:
+  - name: leg
+    end_a: {type: anchored, position: [190, 0, -100]}
+    end_b: {type: pinned, position: [0, 0, -10]}
+    sections: [{type: chain, length: 100, elements: 10}, {type: wire, length: 100, elements: 10}]
+)",
+                                           "junction (test)"));
+  std::vector<double> tension(21, 1.0);
+  tension[10] = 100.0;  // the node between the sections
+  const results::BreakingLoadUse use = results::breakingLoadUse(m, 0, tension);
+  EXPECT_NEAR(use.ratio, 2.0, 1e-12);
+  EXPECT_NEAR(use.arc, 100.0, 1e-9);
+  EXPECT_EQ(use.mbl, 50.0);
+  EXPECT_EQ(use.lineType, "chain");
 }
 
 /// The strain warnings after the statics of `yaml`.
