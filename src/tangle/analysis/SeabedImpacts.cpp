@@ -133,6 +133,8 @@ void SeabedImpacts::commit(const model::State& state, double dt) {
         e.impact = e.impactVelocity > m_threshold;
         e.phaseOpen = e.impactVelocity > 0.0;
         e.eq5Mass = std::numeric_limits<double>::quiet_NaN();
+        // An impact's energy is not known until its phase measures the Eq. 5 mass (endPhase).
+        if (e.impact) e.impactEnergy = std::numeric_limits<double>::quiet_NaN();
         stillOpen.push_back(static_cast<int>(m_events.size()));
         m_events.push_back(e);
         event = &m_events.back();
@@ -190,7 +192,7 @@ void SeabedImpacts::write(const std::filesystem::path& dir) const {
         "\"{}\",{},{:.4f},{:.4f},{:.3f},{:.3f},{:.3f},{:.3f},{:.5f},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{}\n",
         name, e.impact ? "impact" : "contact", e.startTime, e.endTime, e.arcLength, e.position.x(),
         e.position.y(), e.position.z(), e.impactVelocity,
-        e.impact ? fmt::format("{:.6g}", e.impactEnergy) : std::string(),
+        e.impact && !std::isnan(e.impactEnergy) ? fmt::format("{:.6g}", e.impactEnergy) : std::string(),
         std::isnan(e.eq5Mass) ? std::string() : fmt::format("{:.6g}", e.eq5Mass), e.phaseEndTime, e.phaseWork,
         e.peakForce, e.impulse, e.open ? "yes" : "no"));
   }
@@ -200,8 +202,15 @@ void SeabedImpacts::write(const std::filesystem::path& dir) const {
 std::string SeabedImpacts::terminalSummary() const {
   const SeabedImpact* largest = nullptr;
   for (const SeabedImpact& e : m_events)
-    if (e.impact && (!largest || e.impactEnergy > largest->impactEnergy)) largest = &e;
+    if (e.impact && (!largest || e.impactEnergy > largest->impactEnergy || std::isnan(largest->impactEnergy)))
+      largest = &e;  // of those measured (an impact whose approach was not stopped has no energy)
   if (!largest) return fmt::format("seabed impacts: none above {} m/s\n", m_threshold);
+  if (std::isnan(largest->impactEnergy))
+    return fmt::format(
+        "seabed impacts: {} (dynamics/seabed_impacts.csv); no impact energy measured (no approach was "
+        "stopped "
+        "within its impact phase)\n",
+        impactCount());
   return fmt::format(
       "seabed impacts: {} (dynamics/seabed_impacts.csv); largest {:.4g} J: line '{}' at {:.1f} m, "
       "t = {:.2f} s, {:.3f} m/s, Eq. 5 mass {:.4g} kg\n",

@@ -43,7 +43,9 @@ struct SeabedImpact {
   double phaseVelocityChange = 0.0;       ///< of the force-weighted mean normal velocity [m/s]
   double phaseWork = 0.0;                 ///< work against the approach [J]
   double eq5Mass = 0.0;                   ///< phaseImpulse / phaseVelocityChange [kg] (NaN: not measurable)
-  double impactEnergy = 0.0;              ///< 1/2 eq5Mass v0^2 [J] (0 for a contact that is not an impact)
+  /// 1/2 eq5Mass v0^2 [J] (0 for a contact that is not an impact; NaN for an impact whose approach was not
+  /// stopped within its phase, e.g. at the end of the run: the Eq. 5 mass is not measurable)
+  double impactEnergy = 0.0;
   bool impact = false;                    ///< v0 above the threshold
   bool open = false;                      ///< still in contact at the end of the run
 

@@ -304,7 +304,9 @@ py::dict PySimulation::dynamics(const py::object& progress) {
     d["arc_length_m"] = e.arcLength;
     d["position_m"] = py::make_tuple(e.position.x(), e.position.y(), e.position.z());
     d["impact_velocity_m_s"] = e.impactVelocity;
-    d["impact_energy_J"] = e.impact ? py::object(py::float_(e.impactEnergy)) : py::object(py::none());
+    // None as the CSV's empty cell: not an impact, or an impact whose Eq. 5 mass was not measurable.
+    d["impact_energy_J"] = e.impact && !std::isnan(e.impactEnergy) ? py::object(py::float_(e.impactEnergy))
+                                                                   : py::object(py::none());
     d["eq5_mass_kg"] = std::isnan(e.eq5Mass) ? py::object(py::none()) : py::object(py::float_(e.eq5Mass));
     d["impact_phase_end_s"] = e.phaseEndTime;
     d["impact_phase_work_J"] = e.phaseWork;

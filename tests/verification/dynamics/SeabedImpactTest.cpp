@@ -85,5 +85,29 @@ TEST(SeabedImpact, PieceDroppedOnASlopeHasItsMassAndTheFallsEnergy) {
   EXPECT_NEAR(first.position.x(), 20.0, 0.2);
 }
 
+// An impact whose approach was not stopped within what was recorded (here the tracker is given only the
+// state in which the piece first touches, as when a run ends there): its Eq. 5 mass cannot be measured, and
+// neither can its energy. Until 2026-12-06 the energy stayed at 0 J, written as a zero-energy impact in
+// seabed_impacts.csv beside an empty mass; now both are empty (NaN), and the log says none was measured.
+TEST(SeabedImpact, AnImpactWhoseApproachWasNotStoppedHasNoEnergy) {
+  analysis::Simulation sim(io::readModelString(pieceAboveSlope(), "drop.yaml"));
+  analysis::SeabedImpacts impacts(sim.model(), 0.05);
+  impacts.start(sim.state());
+  const time::DynamicResult run = sim.runDynamics([](const model::State&, const VecX&) {}, false,
+                                                  [&](const model::State& s, double dt) {
+                                                    if (impacts.events().empty()) impacts.commit(s, dt);
+                                                  });
+  ASSERT_TRUE(run.completed) << run.message;
+  impacts.finish();
+  ASSERT_EQ(impacts.events().size(), 1u);
+  const analysis::SeabedImpact& first = impacts.events().front();
+  ASSERT_TRUE(first.impact);
+  EXPECT_TRUE(first.open);
+  EXPECT_TRUE(std::isnan(first.eq5Mass));
+  EXPECT_TRUE(std::isnan(first.impactEnergy));
+  EXPECT_NE(impacts.terminalSummary().find("no impact energy measured"), std::string::npos)
+      << impacts.terminalSummary();
+}
+
 }  // namespace
 }  // namespace tangle

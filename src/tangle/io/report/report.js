@@ -856,7 +856,7 @@
       ["kind", function (e) { return e.kind; }, true],
       ["start (s)", function (e) { return e.start; }], ["end (s)", function (e) { return e.end; }],
       ["peak force (kN)", function (e) { return e.peak / 1000; }], ["impulse (N s)", function (e) { return e.impulse; }],
-      ["impact speed (m/s)", function (e) { return e.speed; }], ["impact energy (J)", function (e) { return e.energy; }],
+      ["impact speed (m/s)", function (e) { return e.speed; }], ["impact energy (J)", function (e) { return e.energy === null ? "" : e.energy; }],
       ["arc A (m)", function (e) { return e.arcA; }], ["arc B (m)", function (e) { return e.arcB; }],
       ["x (m)", function (e) { return e.pos[0]; }], ["y (m)", function (e) { return e.pos[1]; }],
       ["z (m)", function (e) { return e.pos[2]; }]];
@@ -911,7 +911,7 @@
       ["peak force (kN)", function (e) { return e.peak / 1000; }], ["impulse (N s)", function (e) { return e.impulse; }],
       ["impact speed (m/s)", function (e) { return e.speed; }],
       ["rebound speed (m/s)", function (e) { return e.rebound === null ? "" : e.rebound; }],
-      ["impact energy (J)", function (e) { return e.energy; }],
+      ["impact energy (J)", function (e) { return e.energy === null ? "" : e.energy; }],
       ["mass (kg)", function (e) { return e.mass === null ? "" : e.mass; }],
       ["x (m)", function (e) { return e.pos[0]; }], ["y (m)", function (e) { return e.pos[1]; }],
       ["z (m)", function (e) { return e.pos[2]; }]];
