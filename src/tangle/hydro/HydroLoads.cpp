@@ -231,9 +231,11 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
     force.segment<3>(d1) -= forces.force1;
     force.segment<3>(d2) -= forces.force2;
     m_addedMass[e] = forces.addedMassPerNode;
+    // The wake's lift comes from the full steady current (WakeInterference): in statics it is scaled, as the
+    // drag, by the fraction of the current's drag being solved for, and so is its stiffness below.
+    const double liftFactor = request.dynamic ? 1.0 : request.currentFactor * request.currentFactor;
     if (m_wake && !m_elementWake[e].liftPerLength.isZero(0.0)) {
       // Wake lift (Blevins) on the wetted length, half on each node.
-      const double liftFactor = request.dynamic ? 1.0 : request.currentFactor * request.currentFactor;
       const Vec3 lift = 0.5 * wet * (x2 - x1).norm() * liftFactor * m_elementWake[e].liftPerLength;
       force.segment<3>(d1) -= lift;
       force.segment<3>(d2) -= lift;
@@ -246,7 +248,7 @@ void HydroLoads::addElementForces(const model::State& state, const solver::Assem
       // Newton 111-174 iterations instead of 6-7 on the test models.
       // Symmetric part only: the linear solver is a symmetric LDL^T (LinearSolver.hpp).
       const Mat3 dLift = m_wake->liftGradient(state, static_cast<int>(e), rho);
-      const Mat3 k = -0.25 * wet * (x2 - x1).norm() * 0.5 * (dLift + dLift.transpose());
+      const Mat3 k = -0.25 * wet * (x2 - x1).norm() * liftFactor * 0.5 * (dLift + dLift.transpose());
       matrix->add3x3(d1, d1, k, request.kf);
       matrix->add3x3(d1, d2, k, request.kf);
       matrix->add3x3(d2, d1, k, request.kf);

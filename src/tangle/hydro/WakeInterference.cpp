@@ -66,15 +66,24 @@ Mat3 WakeInterference::liftGradient(const model::State& state, int element, doub
   const Vec3 td = (p2 - p1).normalized();
   // Central differences with a step of 1e-4 of the diameter: the wake varies over its width (~D and more).
   const double h = 1e-4 * std::max(el.type->outerDiameter, 1e-3);
+  // The acting wake only (evaluate: of the pairs with this element downstream, the largest deficit at the
+  // midpoint), as velocityChangeGradient: the others' lift does not act. (Every Blevins pair's gradient was
+  // summed, also where a Huse pair's deficit acts, which has no lift.)
+  Pair* acting = nullptr;
+  int k = -1;
+  ElementWake centre;
   for (Pair& pair : m_pairs) {
-    if (pair.coefficients.kind != WakeKind::Blevins) continue;  // Huse's wake has no lift
     const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
     if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
-    const int k = element - down.firstElement;
-    const ElementWake centre = wakeAtPoint(state, pair, k, p, td, rho);
-    if (centre.deficit <= 0.0) continue;
-    lift += difference(state, pair, k, p, td, rho, h, centre, &ElementWake::liftPerLength);
+    const ElementWake here = wakeAtPoint(state, pair, element - down.firstElement, p, td, rho);
+    if (here.deficit > centre.deficit) {
+      centre = here;
+      acting = &pair;
+      k = element - down.firstElement;
+    }
   }
+  if (acting == nullptr || acting->coefficients.kind != WakeKind::Blevins) return lift;  // Huse: no lift
+  lift = difference(state, *acting, k, p, td, rho, h, centre, &ElementWake::liftPerLength);
   return lift;
 }
 

@@ -694,7 +694,7 @@ model::WaveSpec readWaves(const Value& v, double waterDepth) {
     w.significantHeight = m.number("significant_height", positiveUpTo(std::min(kMaxWaveHeight, 0.8 * waterDepth))
                                                              .withHint(required + "; at most 0.8 x water_depth"));
     w.peakPeriod = m.number("peak_period", positiveUpTo(kMaxWavePeriod).withHint(required));
-    w.gamma = m.number("gamma", d.gamma, closed(1.0, 20.0).withHint("1 gives a Pierson-Moskowitz spectrum"));
+    w.gamma = m.number("gamma", d.gamma, closed(1.0, 10.0).withHint("1 gives a Pierson-Moskowitz spectrum"));
     w.components = m.integer("components", d.components, atLeastUpTo(1.0, kMaxWaveComponents));
     const std::optional<Value> seed = m.find("seed");
     w.seed = seed ? static_cast<unsigned>(seed->integer64(closed(0.0, 4294967295.0))) : d.seed;

@@ -489,6 +489,14 @@ TEST(ModelReader, ReadsJonswapWaves) {
   EXPECT_DOUBLE_EQ(w.azimuth, degToRad(45.0));
 }
 
+// gamma beyond the JONSWAP sea's range [1, 10] (JonswapSea, theory 6.3) is refused by key. Until 2026-12-06
+// the reader took up to 20 and the run stopped later with "JonswapSea: gamma [-] must be in [1, 10]".
+TEST(ModelReader, JonswapGammaAboveTenIsRefusedByKey) {
+  expectEditError("    type: airy\n    height: 2.0\n    period: 10.0\n",
+                  "    type: jonswap\n    significant_height: 4.0\n    peak_period: 9\n    gamma: 15\n",
+                  "gamma:", "environment.waves.gamma", "1 gives a Pierson-Moskowitz spectrum");
+}
+
 TEST(ModelReader, JonswapDefaults) {
   const std::string yaml = edited(kBaseModel, "    type: airy\n    height: 2.0\n    period: 10.0\n",
                                   "    type: jonswap\n    significant_height: 4.0\n    peak_period: 9\n");
