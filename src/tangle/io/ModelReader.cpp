@@ -2010,9 +2010,18 @@ void readVessels(const Value& v, ModelSpec& spec) {
           "or displaced_volume for a submerged body",
           vs.name));
     if (const std::optional<Value> t = m.find("current_coefficients")) vs.currentCoefficients = readHeadingTable(*t);
-    if (const std::optional<Value> a = m.find("current_areas")) vs.currentAreas = a->vec3();
+    // Reference areas and the yaw lever [A_x, A_y, L], each >= 0 (refused here by key, not later by the
+    // loads).
+    const auto areas = [](const Value& a) {
+      const std::vector<double> values = a.numbers(3, "[A_x (m^2), A_y (m^2), L (m)]");
+      for (std::size_t i = 0; i < 3; ++i)
+        if (values[i] < 0.0)
+          a.fail(fmt::format("item {} is {}; expected areas and a lever >= 0", i, numberText(values[i])));
+      return Vec3(values[0], values[1], values[2]);
+    };
+    if (const std::optional<Value> a = m.find("current_areas")) vs.currentAreas = areas(*a);
     if (const std::optional<Value> t = m.find("wind_coefficients")) vs.windCoefficients = readHeadingTable(*t);
-    if (const std::optional<Value> a = m.find("wind_areas")) vs.windAreas = a->vec3();
+    if (const std::optional<Value> a = m.find("wind_areas")) vs.windAreas = areas(*a);
     if (const std::optional<Value> t = m.find("wave_drift")) vs.waveDrift = readHeadingTable(*t);
     if (const std::optional<Value> r = m.find("raos")) vs.raos = readRaos(*r);
     if (const std::optional<Value> motion = m.find("motion")) {

@@ -116,5 +116,25 @@ TEST(PinnedVessel, OnlyAFreeVesselCanBePinned) {
   }
 }
 
+// A free vessel's current and wind reference areas and yaw lever must be >= 0 (docs/model-format.md): a
+// negative one is refused by key when the model is read. (Until 2026-12-06 it was read, and refused only
+// when the loads were built, without the file, line or key.)
+TEST(VesselInput, NegativeCurrentOrWindAreasAreRefusedByKey) {
+  for (const std::string key : {"current_areas", "wind_areas"}) {
+    std::string model = pendulumModel(false);
+    model.replace(model.find("    displaced_volume: 0\n"), 24,
+                  "    displaced_volume: 0\n    " + key + ": [600, -600, 30]\n");
+    try {
+      io::readModelString(model, "areas (test)");
+      FAIL() << "a negative " << key << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.key(), "vessels[pivot]." + key) << e.what();
+      EXPECT_NE(std::string(e.what()).find("item 1 is -600; expected areas and a lever >= 0"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tangle
