@@ -678,9 +678,9 @@ model::WaveSpec readWaves(const Value& v, double waterDepth) {
     if (keys == &own) continue;
     for (const std::string& key : *keys)
       if (const std::optional<Value> foreign = m.find(key))
-        foreign->fail(
-            fmt::format("key '{}' does not apply to waves of type {}; their keys are: type, {}, azimuth", key,
-                        typeName, join(own)));
+        foreign->fail(fmt::format(
+            "key '{}' does not apply to waves of type {}; their keys are: type, {}, azimuth, stretching", key,
+            typeName, join(own)));
   }
 
   const std::string required = "required for waves of type " + typeName;

@@ -1073,28 +1073,32 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   line(fmt::format("  water_depth: {}          # WtrDpth{}", num(depth),
                    opt.lineOf.count("wtrdpth") ? fmt::format(" (deck line {})", opt.lineOf.at("wtrdpth"))
                                                : " (deepest point)"));
-  const auto optionComment = [&](const char* name, const char* fallback) {
-    const auto it = opt.lineOf.find(name);
-    return it != opt.lineOf.end() ? fmt::format("deck line {}", it->second)
-                                  : fmt::format("MoorDyn default {}", fallback);
+  // The deck line of an option under any of its names (readOptions takes `rho` for WtrDnsty, `gravity` for
+  // g, `kb` for kBot, `cb` for cBot), else MoorDyn's default.
+  const auto optionComment = [&](std::initializer_list<const char*> names, const char* fallback) {
+    for (const char* name : names)
+      if (const auto it = opt.lineOf.find(name); it != opt.lineOf.end())
+        return fmt::format("deck line {}", it->second);
+    return fmt::format("MoorDyn default {}", fallback);
   };
   line(fmt::format("  water_density: {}        # WtrDnsty ({})", num(opt.density),
-                   optionComment("wtrdnsty", "1025")));
-  line(fmt::format("  gravity: {}               # g ({})", num(opt.gravity), optionComment("g", "9.80665")));
+                   optionComment({"wtrdnsty", "rho"}, "1025")));
+  line(fmt::format("  gravity: {}               # g ({})", num(opt.gravity),
+                   optionComment({"g", "gravity"}, "9.80665")));
   line("  seabed:");
   line(fmt::format("    normal_stiffness: {}    # kBot {} Pa/m x diameter {} m ({})",
                    num(opt.seabedStiffness * width), num(opt.seabedStiffness), num(width),
-                   optionComment("kbot", "3e6")));
+                   optionComment({"kbot", "kb"}, "3e6")));
   line(fmt::format("    damping: {}             # cBot {} Pa s/m x diameter {} m ({})",
                    num(opt.seabedDamping * width), num(opt.seabedDamping), num(width),
-                   optionComment("cbot", "3e5")));
+                   optionComment({"cbot", "cb"}, "3e5")));
   line(fmt::format("    friction_coefficient: {}  # FrictionCoefficient ({})", num(opt.friction),
-                   optionComment("frictioncoefficient", "0")));
+                   optionComment({"frictioncoefficient"}, "0")));
   if (!opt.seafloorFile.empty())
     line(
         fmt::format("    bathymetry: {{file: {}, interpolation: bilinear}}  # SeafloorFile ({}; bilinear as "
                     "MoorDyn's interp2)",
-                    yamlQuoted(opt.seafloorFile), optionComment("seafloorfile", "")));
+                    yamlQuoted(opt.seafloorFile), optionComment({"seafloorfile"}, "")));
   if (opt.friction > 0.0 && widest == nullptr)
     notes.push_back("FrictionCoefficient: a deck without lines; the seabed friction is left out");
   if (opt.friction > 0.0 && widest != nullptr) {
@@ -1116,7 +1120,8 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
                       num(matching), num(opt.friction * opt.frictionDamping), num(kMaxFrictionVelocity)));
     line("    friction_model: viscous   # MoorDyn's saturated viscous friction");
     line(fmt::format("    friction_velocity: {}   # = segment weight {} N / FricDamp {} N s/m ({})",
-                     num(velocity), num(normal), num(opt.frictionDamping), optionComment("fricdamp", "200")));
+                     num(velocity), num(normal), num(opt.frictionDamping),
+                     optionComment({"fricdamp"}, "200")));
     notes.push_back(fmt::format(
         "seabed friction: MoorDyn's friction saturates at |v| = N / FricDamp with N each node's bottom "
         "force; tangle "

@@ -919,7 +919,7 @@ std::string StaticSolver::diagnose(const Stall& stall, const StaticResult& resul
   const int node = stall.worstNode;
   std::string where = node >= 0 ? model.describeNode(node) : std::string("an unknown node");
   std::string hint;
-  if (node >= 0 && model.lineOfNode(node) >= 0) {
+  if (node >= 0 && model.lineOfNode(node) >= 0 && stall.position.allFinite()) {
     const Vec3& x = stall.position;
     const bool onSeabed = model.seabedSurface().gap(x, 0.5 * model.nodeContactDiameter()[node]) <= 1e-3;
     // On a slope steeper than the friction angle a laid line free to slide has no equilibrium.

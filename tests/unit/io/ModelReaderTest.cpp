@@ -1146,6 +1146,9 @@ TEST(ModelReaderErrors, JonswapWithoutPeakPeriod) {
 TEST(ModelReaderErrors, WaveKeyOfAnotherWaveType) {
   expectEditError("    period: 10.0\n", "    period: 10.0\n    gamma: 3.3\n",
                   "gamma:", "environment.waves.gamma", "key 'gamma' does not apply to waves of type airy");
+  // The keys listed are every key waves of that type take (stretching applies to every type).
+  expectEditError("    period: 10.0\n", "    period: 10.0\n    gamma: 3.3\n",
+                  "gamma:", "environment.waves.gamma", "azimuth, stretching");
 }
 
 TEST(ModelReader, ReadsWaveComponents) {

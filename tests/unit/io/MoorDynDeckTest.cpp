@@ -154,6 +154,21 @@ double convertedTolerance(const std::string& text) { return convertedDynamics(te
 // The dynamics' Newton tolerance: 1e-5 of the lines' weight for a model of cables only (the deck's lines
 // without bending; docs/moordyn.md, OPTIONS), tangle's default 1e-6 with a beam line (EI that bends over
 // its segments) or a free body (a vessel).
+// The converted file's comments give the deck line of an option under any of the names MoorDyn takes:
+// `1000 rho` is WtrDnsty's (deck line 35), not MoorDyn's default. (Until 2026-12-06 only one name of each was
+// looked up, and the comment called the deck's value the default.)
+TEST(MoorDynDeck, OptionCommentsFindTheDeckLineUnderEitherName) {
+  const MoorDynConversion c = convertMoorDynDeck(parseMoorDynDeck(
+      deck(kTwoPoints, "1 chain 1 2 320 40 -\n", "1000 rho\n9.81 gravity\n3e6 kb\n2e5 cb\n"), "deck.txt"));
+  for (const char* option : {"WtrDnsty", "g", "kBot", "cBot"}) {
+    const std::size_t at = c.yaml.find(std::string("# ") + option + " ");
+    ASSERT_NE(at, std::string::npos) << option << "\n" << c.yaml;
+    const std::string comment = c.yaml.substr(at, c.yaml.find('\n', at) - at);
+    EXPECT_NE(comment.find("deck line"), std::string::npos) << comment;
+    EXPECT_EQ(comment.find("MoorDyn default"), std::string::npos) << comment;
+  }
+}
+
 TEST(MoorDynDeck, CablesOnlyTakeTheCableNewtonTolerance) {
   const double defaultTolerance = model::DynamicSpec{}.tolerance;
   ASSERT_DOUBLE_EQ(defaultTolerance, 1e-6);
