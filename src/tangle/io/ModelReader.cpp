@@ -19,6 +19,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <initializer_list>
 #include <limits>
 #include <map>
@@ -1870,8 +1871,13 @@ model::RaoTable readRaos(const Value& v) {
   for (const Value& p : periods.items(1)) t.period.push_back(p.number(positive()));
   const Value headings = m.get("headings", "a list of relative wave headings [deg], ascending in [0, 360)");
   for (const Value& h : headings.items(1)) t.heading.push_back(degToRad(h.number(Range{0.0, 360.0, false, true, {}})));
-  if (!std::is_sorted(t.period.begin(), t.period.end())) periods.fail("periods must be ascending");
-  if (!std::is_sorted(t.heading.begin(), t.heading.end())) headings.fail("headings must be ascending");
+  // Strictly: a repeated period or heading would have no row of its own ("missing the row" for a value
+  // that has one).
+  const auto strictlyAscending = [](const std::vector<double>& x) {
+    return std::adjacent_find(x.begin(), x.end(), std::greater_equal<>()) == x.end();
+  };
+  if (!strictlyAscending(t.period)) periods.fail("periods must be strictly ascending (each listed once)");
+  if (!strictlyAscending(t.heading)) headings.fail("headings must be strictly ascending (each listed once)");
   t.amplitude.assign(t.period.size(), std::vector<std::array<double, 6>>(t.heading.size()));
   t.phase = t.amplitude;
   std::vector<std::vector<bool>> seen(t.period.size(), std::vector<bool>(t.heading.size(), false));

@@ -136,5 +136,39 @@ TEST(VesselInput, NegativeCurrentOrWindAreasAreRefusedByKey) {
   }
 }
 
+// RAO periods and headings must be strictly ascending: a repeated period is refused as such, by key. (Until
+// 2026-12-06 a repeat passed the ascending test, and the table was refused later as "missing the row for
+// period 6 s", which it had.)
+TEST(VesselInput, RaoPeriodsListedTwiceAreRefusedAsNotStrictlyAscending) {
+  const std::string model = R"(
+environment: {water_depth: 100}
+line_types:
+  - {name: wire, outer_diameter: 0.08, mass_per_length: 30, axial_stiffness: 5.0e8}
+vessels:
+  - name: ship
+    mode: fixed
+    position: [0, 0, 0]
+    raos:
+      periods: [6, 6, 15]
+      headings: [0]
+      rows:
+        - [6, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
+        - [15, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
+lines:
+  - name: tether
+    end_a: {type: anchored, position: [10, 0, -100]}
+    end_b: {type: vessel, vessel: ship, position: [10, 0, -5]}
+    sections: [{type: wire, length: 94.9, elements: 10}]
+)";
+  try {
+    io::readModelString(model, "raos (test)");
+    FAIL() << "a repeated RAO period was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.key(), "vessels[ship].raos.periods") << e.what();
+    EXPECT_NE(std::string(e.what()).find("periods must be strictly ascending"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace tangle
