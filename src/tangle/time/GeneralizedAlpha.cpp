@@ -93,7 +93,7 @@ void GeneralizedAlpha::applyPrescribed(model::State& state, double t) const {
   }
 }
 
-void GeneralizedAlpha::initialize(model::State& state) {
+void GeneralizedAlpha::evaluateStartForce(model::State& state) {
   m_previousSteps = 0;
   applyPrescribed(state, environmentTime(state.time));
   solver::AssemblyRequest request;
@@ -103,6 +103,12 @@ void GeneralizedAlpha::initialize(model::State& state) {
   request.relaxation = m_frozen;
   request.wantMatrix = false;
   m_assembler->assemble(state, request, m_forceOld, nullptr);
+}
+
+void GeneralizedAlpha::restore(model::State& previous) { evaluateStartForce(previous); }
+
+void GeneralizedAlpha::initialize(model::State& state) {
+  evaluateStartForce(state);
   // Consistent initial acceleration of the free DOFs, M a0 = -(F0 + M_prescribed a_prescribed): zero
   // at a static equilibrium, but not when e.g. a DP unit held in statics is released at t = 0.
   const model::DofMap& dofs = m_assembler->model().dofs();

@@ -86,8 +86,12 @@ class GeneralizedAlpha {
   /// a statics method, keeps the general solver of statics.
   void setBandedSolver(bool allow) { m_newton.setBandedSolver(allow); }
   const AlphaParameters& parameters() const { return m_params; }
-  /// Undoes the last accepted step: `previous` is the state before it (F_n is re-evaluated there).
-  void restore(model::State& previous) { initialize(previous); }
+  /// Undoes the last accepted step: `previous` is the state before it, as that step was given it. F_n is
+  /// evaluated there again (the alpha_F weighting reads it); its velocity and acceleration are kept as they
+  /// are: a_n of generalized alpha is the method's own variable, not M^-1 (-F_n) (which would also leave
+  /// out the mass-proportional Rayleigh term), so a retry starts from the state the refused step started
+  /// from. The acceleration history of the predictor starts again.
+  void restore(model::State& previous);
   /// The state at the start of the last step() (bitwise the state it was given), until the next step() or
   /// restore(): what a caller that may refuse the step needs, without a copy of its own.
   model::State& stepStart() { return m_start; }
@@ -99,6 +103,8 @@ class GeneralizedAlpha {
   /// One attempt at a step on the Newton path `mode` (step() tries the fallbacks); the contract of step().
   StepOutcome attempt(model::State& state, double dt, const model::DynamicSolverSpec& mode);
   void applyPrescribed(model::State& state, double t) const;
+  /// F at `state` into m_forceOld, the prescribed DOFs set at its time; the predictor's history dropped.
+  void evaluateStartForce(model::State& state);
   /// Sets the moved nodes (NewtonIteration::movedNodes) of `state` from the step's start and increment dq:
   /// positions, triads, and the Newmark velocities and accelerations of their free DOFs; the other nodes keep
   /// theirs.
