@@ -1028,13 +1028,6 @@ std::array<Vec3, 8> projectionGradient(const std::vector<Vec3>& position, const 
   return g;
 }
 
-/// Third s-derivatives of a smooth piece's weights [-] (constant on the cubic; zero on a chord): the
-/// derivative of centrelineCurvatureWeights.
-std::array<double, 4> centrelineThirdWeights(const ElementCurve& c) {
-  if (!c.smooth) return {0.0, 0.0, 0.0, 0.0};
-  return {6.0 * c.a0, 12.0 + 6.0 * (c.a1 + c.b1), -12.0 + 6.0 * (c.a2 + c.b2), 6.0 * c.b3};
-}
-
 /// Hessian of the projection's parameter t with respect to the eight slots' positions (projectionGradient's
 /// slots) [1/m^2], from differentiating F(x, t(x)) = 0 twice, F = V_t = -u . c_B':
 ///     Hess t = -(F_xx + F_xt grad t^T + grad t F_xt^T + F_tt grad t grad t^T) / F_t,

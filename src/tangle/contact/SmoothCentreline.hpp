@@ -96,6 +96,13 @@ inline std::array<double, 4> centrelineCurvatureWeights(const ElementCurve& c, d
   return {e10 * c.a0, e00 + e10 * c.a1 + e11 * c.b1, e01 + e10 * c.a2 + e11 * c.b2, e11 * c.b3};
 }
 
+/// Their third s-derivatives [-] (constant on the cubic; zero on a chord): the derivative of
+/// centrelineCurvatureWeights.
+inline std::array<double, 4> centrelineThirdWeights(const ElementCurve& c) {
+  if (!c.smooth) return {0.0, 0.0, 0.0, 0.0};
+  return {6.0 * c.a0, 12.0 + 6.0 * (c.a1 + c.b1), -12.0 + 6.0 * (c.a2 + c.b2), 6.0 * c.b3};
+}
+
 /// A piece in the power basis about its first node x1: c(s) = x1 + q1 s + q2 s^2 + q3 s^3 [m], from the
 /// Hermite form of centrelineWeights (h00 = 1 - 3s^2 + 2s^3, h01 = 3s^2 - 2s^3, h10 = s - 2s^2 + s^3,
 /// h11 = s^3 - s^2 on the nodes x1, x2 and the node tangents m1 = a0 x0 + a1 x1 + a2 x2,

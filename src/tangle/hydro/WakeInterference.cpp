@@ -57,34 +57,37 @@ void WakeInterference::evaluate(const model::State& state, double rho, std::vect
   }
 }
 
-Mat3 WakeInterference::liftGradient(const model::State& state, int element, double rho) {
-  Mat3 lift = Mat3::Zero();
+WakeInterference::ActingWake WakeInterference::actingWake(const model::State& state, int element,
+                                                          double rho) {
+  ActingWake a;
   const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
   const Vec3& p1 = state.position[el.node1];
   const Vec3& p2 = state.position[el.node2];
-  const Vec3 p = 0.5 * (p1 + p2);
-  const Vec3 td = (p2 - p1).normalized();
-  // Central differences with a step of 1e-4 of the diameter: the wake varies over its width (~D and more).
-  const double h = 1e-4 * std::max(el.type->outerDiameter, 1e-3);
-  // The acting wake only (evaluate: of the pairs with this element downstream, the largest deficit at the
-  // midpoint), as velocityChangeGradient: the others' lift does not act. (Every Blevins pair's gradient was
-  // summed, also where a Huse pair's deficit acts, which has no lift.)
-  Pair* acting = nullptr;
-  int k = -1;
-  ElementWake centre;
+  a.midpoint = 0.5 * (p1 + p2);
+  a.tangent = (p2 - p1).normalized();
+  a.step = 1e-4 * std::max(el.type->outerDiameter, 1e-3);
   for (Pair& pair : m_pairs) {
     const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
     if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
-    const ElementWake here = wakeAtPoint(state, pair, element - down.firstElement, p, td, rho);
-    if (here.deficit > centre.deficit) {
-      centre = here;
-      acting = &pair;
-      k = element - down.firstElement;
+    const ElementWake here =
+        wakeAtPoint(state, pair, element - down.firstElement, a.midpoint, a.tangent, rho);
+    if (here.deficit > a.centre.deficit) {
+      a.centre = here;
+      a.pair = &pair;
+      a.k = element - down.firstElement;
     }
   }
-  if (acting == nullptr || acting->coefficients.kind != WakeKind::Blevins) return lift;  // Huse: no lift
-  lift = difference(state, *acting, k, p, td, rho, h, centre, &ElementWake::liftPerLength);
-  return lift;
+  return a;
+}
+
+Mat3 WakeInterference::liftGradient(const model::State& state, int element, double rho) {
+  // The acting wake only, as velocityChangeGradient: the others' lift does not act. (Every Blevins pair's
+  // gradient was summed, also where a Huse pair's deficit acts, which has no lift.)
+  const ActingWake a = actingWake(state, element, rho);
+  if (a.pair == nullptr || a.pair->coefficients.kind != WakeKind::Blevins)
+    return Mat3::Zero();  // Huse: no lift
+  return difference(state, *a.pair, a.k, a.midpoint, a.tangent, rho, a.step, a.centre,
+                    &ElementWake::liftPerLength);
 }
 
 Mat3 WakeInterference::difference(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
@@ -110,28 +113,11 @@ Mat3 WakeInterference::difference(const model::State& state, Pair& pair, int k, 
 
 WakeGradient WakeInterference::velocityChangeGradient(const model::State& state, int element, double rho) {
   WakeGradient result;
-  const model::LineElement& el = m_model->elements()[static_cast<std::size_t>(element)];
-  const Vec3& p1 = state.position[el.node1];
-  const Vec3& p2 = state.position[el.node2];
-  const Vec3 p = 0.5 * (p1 + p2);
-  const Vec3 td = (p2 - p1).normalized();
-  const double h = 1e-4 * std::max(el.type->outerDiameter, 1e-3);  // as liftGradient
-  // The acting wake: of the pairs with this element downstream, the largest deficit at the midpoint.
-  Pair* acting = nullptr;
-  int k = -1;
-  ElementWake centre;
-  for (Pair& pair : m_pairs) {
-    const model::Line& down = m_model->lines()[static_cast<std::size_t>(pair.downstream)];
-    if (element < down.firstElement || element >= down.firstElement + down.elementCount) continue;
-    const ElementWake here = wakeAtPoint(state, pair, element - down.firstElement, p, td, rho);
-    if (here.deficit > centre.deficit) {
-      centre = here;
-      acting = &pair;
-      k = element - down.firstElement;
-    }
-  }
-  if (acting == nullptr) return result;
-  result.midpoint = difference(state, *acting, k, p, td, rho, h, centre, &ElementWake::velocityChange);
+  const ActingWake a = actingWake(state, element, rho);
+  if (a.pair == nullptr) return result;
+  const ElementWake& centre = a.centre;
+  result.midpoint = difference(state, *a.pair, a.k, a.midpoint, a.tangent, rho, a.step, centre,
+                               &ElementWake::velocityChange);
   // The upstream element's nodes: the wake moves with it (the midpoint's position relative to it, at the
   // same current, is what counts), so a translation of both by x changes the velocity as the midpoint's by
   // -x would (the current's change with depth at the midpoint is not the upstream's: left out).

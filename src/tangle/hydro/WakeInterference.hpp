@@ -101,12 +101,23 @@ class WakeInterference {
     double blendLength = 0.0;      ///< half-length of the mean of the upstream D and C_d D: D_max [m]
     std::vector<int> guess;        ///< per downstream element: upstream element found last time
   };
-  /// The wake of pair's upstream line at point p of the pair's downstream element k (tangent td).
+  /// The wake acting at a downstream element's midpoint: of the pairs with the element downstream, the one
+  /// with the largest deficit there (evaluate()'s choice; `pair` null where none acts).
+  struct ActingWake {
+    Pair* pair = nullptr;
+    int k = -1;          ///< the element's index within the pair's downstream line
+    Vec3 midpoint;       ///< [m]
+    Vec3 tangent;        ///< unit chord [-]
+    double step = 0.0;   ///< finite-difference step h [m]: 1e-4 of the diameter (the wake varies over ~D)
+    ElementWake centre;  ///< the wake at the midpoint
+  };
+  ActingWake actingWake(const model::State& state, int element, double rho);
   /// Central differences [per m] of `field` of pair's wake at downstream element k's point p with respect
   /// to p, steps of h [m]; one-sided where a step leaves the wake of `centre` (the wake at p), zero where
   /// both do.
   Mat3 difference(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td, double rho,
                   double h, const ElementWake& centre, Vec3 ElementWake::*field);
+  /// The wake of pair's upstream line at point p of the pair's downstream element k (tangent td).
   ElementWake wakeAtPoint(const model::State& state, Pair& pair, int k, const Vec3& p, const Vec3& td,
                           double rho) const;
   /// The upstream line's mean diameter [m] and drag coefficient [-] (mean of C_d D over mean D) within
