@@ -37,6 +37,17 @@ bool debugTangent() {
   static const bool on = std::getenv("TANGLE_DEBUG_TANGENT") != nullptr;
   return on;
 }
+/// What a failed stage of solve() leaves in the result: its iterations, and where its path found that the
+/// loading has no equilibrium (a laid line sliding as a whole), that diagnosis, which stops the later stages
+/// and the caller's fallbacks (theory 7.1). (The hanging start and the cable-law stages dropped it, and the
+/// fallbacks went on to blame another line.)
+void keepFailedStage(StaticResult& result, const StaticResult& stage) {
+  result.iterations = stage.iterations;
+  if (stage.noEquilibrium) {
+    result.noEquilibrium = true;
+    result.message = stage.message;
+  }
+}
 }  // namespace
 
 bool StaticSolver::debugOutput() {
@@ -91,7 +102,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
         trial = hanging;
         result = stage;
       } else {
-        result.iterations = stage.iterations;
+        keepFailedStage(result, stage);
       }
     }
   }
@@ -123,7 +134,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       trial = linear;
       result = stage;
     } else {
-      result.iterations = stage.iterations;
+      keepFailedStage(result, stage);
     }
   }
   if (!ok && budget > 0 && !result.noEquilibrium) {
@@ -136,9 +147,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       trial = taut;
       result = stage;
     } else {
-      result.iterations = stage.iterations;
-      result.noEquilibrium = stage.noEquilibrium;
-      if (stage.noEquilibrium) result.message = stage.message;
+      keepFailedStage(result, stage);
     }
   }
   m_pathContext.clear();
@@ -156,9 +165,27 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
     if (solveFrom(again, time, second, budget)) {
       trial = again;
       result = second;
-    } else {
-      break;
+      continue;
     }
+    // The failed attempt laid the seabed anchors and the contact's references afresh at its own states
+    // (solveFrom, beginStatics): the equilibrium found before is solved again from itself, so that what is
+    // committed (the friction that holds it) is its own. (Kept as it was, the laid line of a current held by
+    // friction was returned with anchors of the failed attempt: 0.23 of its weight out of balance in the
+    // equilibrium audit, and the dynamics started by jumping.)
+    result.iterations = second.iterations;
+    model::State resolved = trial;
+    StaticResult third = result;
+    m_pathContext = "again from the equilibrium found, after a restart from a bulged shape failed";
+    budget = std::max(budget, m_settings.maxIterations);  // its own allowance: the restart may have used all
+    if (solveFrom(resolved, time, third, budget)) {
+      trial = resolved;
+      result = third;
+    } else {
+      ok = false;
+      keepFailedStage(result, third);
+    }
+    m_pathContext.clear();
+    break;
   }
   if (ok) {
     const std::vector<int> slackElements = slackSuspendedBars(m_assembler->model(), trial);
@@ -519,6 +546,8 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
     if (arcOutcome.reached) {
       reached = 1.0;
       result.arcLengthSteps = arcOutcome.steps;
+      // The closing Newton's equilibrium committed (seabed friction anchors, contact), as every other path's.
+      m_assembler->commitIncrement(still);
     } else {
       result.residual = arcOutcome.residual;
       result.worstNode = arcOutcome.worstNode;
@@ -616,6 +645,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
   double lastStep = std::numeric_limits<double>::infinity();
   double lastShift = 0.0;
   bool lastCapped = false;
+  bool assembledAtState = true;  // false while the last assembly was of a refused trial
   for (int it = 0; it < maxIterations; ++it) {
     if (core::interruptRequested()) {  // Ctrl-C / SIGTERM: stop now, not after every remaining stage
       out.failure = "interrupted by the user";
@@ -635,6 +665,18 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     const bool roundoff = stalled >= 2 && (out.residual <= floor ||
                                            (lastStep <= 1e-12 * lref && lastShift == 0.0 && !lastCapped));
     if (balanced || roundoff) {
+      // The contributors' trial data (seabed friction anchors, contact samples) are the last assembly's:
+      // after a refused trial, that was the trial's. Assembled again at the state returned, so that what the
+      // caller commits and the active set are the returned state's.
+      if (!assembledAtState) {
+        try {
+          m_assembler->assemble(state, request, force, &matrix);
+        } catch (const Error& e) {
+          out.failure = fmt::format("an element cannot be evaluated ({})", e.what());
+          return out;
+        }
+        assembledAtState = true;
+      }
       if (!m_assembler->updateActiveSet()) {
         out.converged = true;
         out.roundoff = !balanced;
@@ -706,16 +748,19 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     if (largestR > maxRotation) scale = std::min(scale, maxRotation / largestR);
     VecX full = VecX::Zero(dofs.fullDofCount());
     for (int i = 0; i < neq; ++i) full[eqDofs[i]] = scale * dq[i];
+    // A step shortened by a contributor (no line through another) or by the strain trust region below is
+    // no full Newton step: its length says nothing about convergence at the round-off floor.
+    bool capped = false;
     for (LoadContributor* c : m_assembler->contributors()) {
       const double limit = c->limitIncrement(state, full);
       if (limit < 1.0) {
         full *= std::max(limit, 0.0);
         scale *= std::max(limit, 0.0);
+        capped = true;
       }
     }
     // Trust region in cable strain (see kMaxStrainStep): the largest stretch of a bar beyond max(its strain
     // now, 0) that the linearised step proposes, in units of the allowed one.
-    bool capped = false;
     {
       const double worst = strainStepRatio(model, *m_assembler, state, full);
       if (worst > 1.0) {
@@ -762,6 +807,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
         plain || (merit ? evaluated && rTrial.allFinite() && rTrial.squaredNorm() < 100.0 * r.squaredNorm()
                         : theta < 1.0);
     if (!accept) {
+      assembledAtState = false;
       ++stalled;
       mu = std::max(1e-4, mu * 10.0);
       if (mu > kMaxShift) {
@@ -773,6 +819,7 @@ StaticSolver::NewtonOutcome StaticSolver::newton(model::State& state, const VecX
     }
     const double ratio = rTrial.norm() / std::max(r.norm(), 1e-300);
     const double previous = out.residual;
+    assembledAtState = evaluated;
     state = std::move(trial);
     r = rTrial;
     matrix.build(kAccepted);

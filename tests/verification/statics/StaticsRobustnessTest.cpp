@@ -857,5 +857,79 @@ INSTANTIATE_TEST_SUITE_P(Ratios, HeavyCantilever,
                          ::testing::Values(std::make_tuple(1e6, 200), std::make_tuple(1e7, 40),
                                            std::make_tuple(1e7, 200)));
 
+// A model whose statics reaches solve()'s later stages, for the two tests below: the heavy cantilever above
+// (EA Le^2 / EI = 1e7 on 200 elements), reached only from its hanging start, after `lines`.
+std::string withHeavyCantilever(const std::string& head, const std::string& lines) {
+  return head + R"(
+  - {name: rod, outer_diameter: 0.2, mass_per_length: 30, axial_stiffness: 1.0e10, bending_stiffness: 2.5}
+lines:)" +
+         lines + R"(
+  - name: cant
+    end_a: {type: fixed, position: [0, 200, 10]}
+    end_b: {type: free, position: [10.0, 200, 10]}
+    sections: [{type: rod, length: 10.0, elements: 200}]
+)";
+}
+
+// A laid line free at both ends in a current 1.1 times what its friction holds (SeabedFrictionStatics above:
+// it slides as a whole, no equilibrium) beside the heavy cantilever, which sends statics on to its hanging
+// start: the diagnosis of the sliding line must stop statics there as it does for the line alone (theory
+// 7.1: the later stages and the fallbacks leave the loading path and can reach a false equilibrium).
+// Until 2026-12-06 the hanging and the cable-law stages dropped it: the fallbacks ran (20 s) and the
+// message blamed the cantilever's node 2.
+TEST(SeabedFrictionStatics, ALineSlidingAsAWholeStopsStaticsFromEveryStage) {
+  const Solved s = solveYaml(withHeavyCantilever(R"(
+environment:
+  water_depth: 50
+  seabed: {normal_stiffness: 1.0e6, friction_coefficient: 0.3}
+  current: {speed: 0.831675728139457, azimuth: 90}
+line_types:
+  - {name: cable, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8, drag_normal: 1.2})",
+                                                 R"(
+  - name: laid
+    end_a: {type: free, position: [0, 0, -49.95]}
+    end_b: {type: free, position: [100, 0, -49.95]}
+    sections: [{type: cable, length: 100, elements: 20}]
+)"));
+  EXPECT_FALSE(s.result.converged);
+  EXPECT_TRUE(s.result.noEquilibrium) << s.result.message;
+  EXPECT_NE(s.result.message.find("line 'laid' lies on the seabed with both ends free and slides as a whole"),
+            std::string::npos)
+      << s.result.message;
+}
+
+// The same laid line at 0.9 of that current (held by its friction), a slack neutrally buoyant line that
+// sends statics on to its restart from a bulged shape, and the cantilever; statics.max_iterations 104 is
+// what leaves that restart without iterations, so that it fails. The equilibrium found before it is
+// returned, and what statics committed must be its own: in the equilibrium audit every line balances
+// (until 2026-12-06 the failed restart's fresh seabed anchors were left committed: line 'laid' out of
+// balance by 2705 N, the current's whole drag, 0.231 of its reference force, and the dynamics started by
+// jumping).
+TEST(SeabedFrictionStatics, AFailedRestartLeavesTheEquilibriumFoundWithItsOwnFriction) {
+  const Solved s = solveYaml(withHeavyCantilever(R"(
+environment:
+  water_depth: 50
+  seabed: {normal_stiffness: 1.0e6, friction_coefficient: 0.3}
+  current: [{z: 0, speed: 0, azimuth: 90}, {z: -45, speed: 0, azimuth: 90}, {z: -48, speed: 0.6804619593868284, azimuth: 90}, {z: -50, speed: 0.6804619593868284, azimuth: 90}]
+statics: {max_iterations: 104}
+line_types:
+  - {name: cable, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8, drag_normal: 1.2}
+  - {name: neutral, outer_diameter: 0.1, mass_per_length: 8.05033117482, axial_stiffness: 1.0e8, drag_normal: 1.2})",
+                                                 R"(
+  - name: laid
+    end_a: {type: free, position: [0, 0, -49.95]}
+    end_b: {type: free, position: [100, 0, -49.95]}
+    sections: [{type: cable, length: 100, elements: 20}]
+  - name: slack
+    end_a: {type: pinned, position: [0, 100, -20]}
+    end_b: {type: pinned, position: [50, 100, -20]}
+    sections: [{type: neutral, length: 60, elements: 12}]
+    start_shape: [[25, 100, -20]]
+)"));
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  const solver::EquilibriumAudit audit = analysis::auditStatics(*s.sim, s.lines);
+  EXPECT_TRUE(audit.warnings().empty()) << audit.worstRelativeResidual();
+}
+
 }  // namespace
 }  // namespace tangle
