@@ -23,6 +23,8 @@ class Bar {
       : Bar(axialStiffness, restLength) {
     m_curve = curve;
   }
+  /// The tension-strain curve, or null (linear EA).
+  const core::PiecewiseLinear* tensionStrainCurve() const { return m_curve; }
 
   /// Internal (elastic) nodal forces and their tangent. The axial law is linear in tension *and*
   /// compression (no slack cut-off here: a compressed bar pushes with N = EA (l - L0) / L0 < 0).

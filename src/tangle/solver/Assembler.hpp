@@ -248,7 +248,8 @@ class Assembler {
   /// (Inline: called for every bar of every assembly.)
   const element::Bar& barOf(std::size_t e, std::optional<element::Bar>& copy) const {
     if (m_restLength.empty() || std::isnan(m_restLength[e])) return *m_model->elements()[e].bar;
-    return copy.emplace(m_model->elements()[e].bar->axialStiffness(), m_restLength[e]);
+    const element::Bar& own = *m_model->elements()[e].bar;
+    return copy.emplace(own.axialStiffness(), m_restLength[e], own.tensionStrainCurve());
   }
   const element::CorotationalBeam& beamOf(std::size_t e, std::optional<element::CorotationalBeam>& copy) const;
   /// Fraction of EA a slack cable element keeps: its type's, raised to the statics continuation's bound.

@@ -9,6 +9,7 @@
 #include "support/ModelFactory.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/core/Units.hpp"
+#include "tangle/io/ModelReader.hpp"
 
 namespace tangle {
 namespace {
@@ -25,6 +26,40 @@ model::ModelSpec twoBarLine(bool lumped, double axialDamping) {
                                         model::EndKind::Free, Vec3(20, 0, 20)));
   spec.dynamics.lumpedMass = lumped;
   return spec;
+}
+
+// The statics length continuation (setRestLengths) gives elements other unstretched lengths: a fibre rope's
+// element keeps its tension-strain curve. (The copy was made with EA alone, the curve's largest slope, so
+// a rope whose start shape compressed an element reached its static equilibrium, at lambda = 1 of the
+// continuation, with a linear law there: 600 kN where the curve gives 300 kN at the strain 0.015 below.)
+TEST(Assembler, ContinuationLengthsKeepARopesTensionStrainCurve) {
+  analysis::Simulation sim(io::readModelString(R"(
+environment: {water_depth: 100}
+line_types:
+  - {name: rope, outer_diameter: 0.15, mass_per_length: 20, tension_strain: [[0.01, 1.0e5], [0.02, 5.0e5]]}
+lines:
+  - name: l
+    end_a: {type: pinned, position: [0, 0, 20]}
+    end_b: {type: pinned, position: [20.3, 0, 20]}
+    sections: [{type: rope, length: 20, elements: 2}]
+)",
+                                               "rope (test)"));
+  model::State& state = sim.state();
+  const model::Line& line = sim.model().lines()[0];
+  for (int i = 0; i < line.nodeCount; ++i)
+    state.position[line.firstNode + i] = Vec3(1.015 * line.arcLength[static_cast<std::size_t>(i)], 0, 20);
+  // Strain 0.015, halfway between the curve's points: 3e5 N.
+  for (double t : sim.assembler().elementTension(state)) EXPECT_NEAR(t, 3.0e5, 1e-6 * 3.0e5);
+  std::vector<double> lengths;
+  for (const model::LineElement& el : sim.model().elements()) lengths.push_back(el.restLength);
+  sim.assembler().setRestLengths(lengths);
+  for (double t : sim.assembler().elementTension(state)) EXPECT_NEAR(t, 3.0e5, 1e-6 * 3.0e5);
+  // And at a length of the continuation: rest lengths that make the strain 0.0125, 2e5 N on the curve (the
+  // linear copy gave 5e5 N).
+  for (double& l : lengths) l *= 1.015 / 1.0125;
+  sim.assembler().setRestLengths(lengths);
+  for (double t : sim.assembler().elementTension(state)) EXPECT_NEAR(t, 2.0e5, 1e-6 * 2.0e5);
+  sim.assembler().setRestLengths({});
 }
 
 TEST(Assembler, ConsistentAndLumpedMassCarryTheSameTotalMass) {
