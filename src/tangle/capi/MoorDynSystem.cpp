@@ -550,7 +550,7 @@ Vec3 MoorDynSystem::velocity(const NodeRef& n) {
 double MoorDynSystem::lineAxialStiffness(int l) const {
   const std::string& type = deckLine(l).lineType;
   for (const io::MoorDynLineType& t : m_coupling.deck.lineTypes)
-    if (t.name == type) return t.axialStiffness;
+    if (t.name == type) return t.moorDynStiffness;  // MoorDyn's own: a curve's secant to its last point
   throw Error(fmt::format("{}: line {} has the unknown line type '{}'", m_path, deckLine(l).id, type));
 }
 

@@ -990,7 +990,9 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
   }
 
   // Line types: one per deck type, or per deck line where a damping ratio (negative BA) gives each line's
-  // segments a different coefficient. MoorDyn (Line.cpp, setup): BA = -BA_in * (L/N) * sqrt(EA * w) [N s].
+  // segments a different coefficient. MoorDyn (Line.cpp, setup): BA = -BA_in * (L/N) * sqrt(EA * w) [N s],
+  // with a curve file's EA its secant to the last point (MoorDynLineType::moorDynStiffness; until
+  // 2026-12-06 the curve's largest slope: a stiffening rope's damping came out sqrt(slope / secant) high).
   struct TypeUse {
     std::string name;
     const MoorDynLineType* type;
@@ -1006,7 +1008,7 @@ MoorDynConversion convertMoorDynDeck(const MoorDynDeck& input) {
       if (dl.lineType != t.name) continue;
       const double damping = t.axialDamping >= 0.0 ? t.axialDamping
                                                    : -t.axialDamping * dl.length / dl.segments *
-                                                         std::sqrt(t.axialStiffness * t.massPerLength);
+                                                         std::sqrt(t.moorDynStiffness * t.massPerLength);
       auto same = std::find_if(uses.begin(), uses.end(), [&](const TypeUse& u) {
         return std::abs(u.damping - damping) <= 1e-12 * std::max(std::abs(damping), 1.0);
       });

@@ -369,6 +369,8 @@ class DeckParser {
         tensions.push_back(tension);
       }
     t.axialStiffness = core::PiecewiseLinear(strains, tensions).largestSlope();
+    if (t.tensionStrain.back().first > 0.0)
+      t.moorDynStiffness = t.tensionStrain.back().second / t.tensionStrain.back().first;
   }
 
   /// A curve file as MoorDyn's read_curve reads it: three header lines, then `strain tension` rows, both
@@ -539,6 +541,7 @@ class DeckParser {
     if (!(t.diameter > 0.0)) fail(n, key("Diam"), "expected a diameter > 0");
     if (!(t.massPerLength > 0.0)) fail(n, key("Mass/m"), "expected a mass per length > 0");
     if (!(t.axialStiffness > 0.0)) fail(n, key("EA"), "expected EA > 0");
+    if (!(t.moorDynStiffness > 0.0)) t.moorDynStiffness = t.axialStiffness;
     if (t.bendingStiffness < 0.0) fail(n, key("EI"), "expected EI >= 0");
     for (const auto& [value, column] : {std::pair{t.dragNormal, "Cd"}, std::pair{t.addedMassNormal, "Ca"},
                                         std::pair{t.dragAxial, "CdAx"}, std::pair{t.addedMassAxial, "CaAx"}})

@@ -29,6 +29,10 @@ struct MoorDynLineType {
   double diameter = 0.0;          ///< d [m]: drag, added mass, buoyancy (pi/4 d^2) and seabed contact width
   double massPerLength = 0.0;     ///< [kg/m]
   double axialStiffness = 0.0;    ///< EA [N] (with a curve: its largest slope)
+  /// The EA [N] MoorDyn itself keeps for the type: EA, or with a curve file the secant to its last point
+  /// (MoorDyn v2.7.1, Line.cpp, initialize: EA = stiffYs.back() / stiffXs.back()), which sets a damping
+  /// ratio's BA (negative BA) and MoorDyn_GetLineConstantEA.
+  double moorDynStiffness = 0.0;
   /// EA given as a curve file (MoorDyn's read_curve: three header lines, then `strain tension` rows): the
   /// points (strain [-], tension [N]); empty for a constant EA.
   std::vector<std::pair<double, double>> tensionStrain;

@@ -579,6 +579,9 @@ TEST(MoorDynDeck, AnEACurveFileBecomesATensionStrainCurve) {
   EXPECT_EQ(t.tensionStrain->x(), (std::vector<double>{0.0, 0.01, 0.02}));
   EXPECT_EQ(t.tensionStrain->y(), (std::vector<double>{0.0, 1.0e5, 3.0e5}));
   EXPECT_DOUBLE_EQ(t.axialStiffness, 2.0e7);
+  // BA = -1, a damping ratio: MoorDyn's BA = zeta (L/N) sqrt(EA w) with a curve's EA its secant to the last
+  // point, 3e5 / 0.02 = 1.5e7 N (MoorDyn v2.7.1, Line.cpp, initialize), not the largest slope 2e7 N.
+  EXPECT_NEAR(t.axialDamping, 1.0 * (320.0 / 40.0) * std::sqrt(1.5e7 * 20.0), 1e-6);
   // MoorDyn holds the last tension beyond the curve; tangle continues its slope: said in the notes.
   EXPECT_TRUE(std::any_of(c.notes.begin(), c.notes.end(), [](const std::string& n) {
     return n.find("MoorDyn holds the tension at") != std::string::npos;
