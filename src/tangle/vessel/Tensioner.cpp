@@ -22,8 +22,11 @@ TensionerForce tensionerForce(const model::TensionerSpec& spec, double stroke) {
   if (!std::isfinite(stroke)) throw Error("tensioner: the line-end stroke is not finite");
   const double half = 0.5 * spec.stroke;
   const double k = spec.stiffness;
-  if (stroke > half) return {spec.tension + k * half + spec.stopStiffness * (stroke - half), k + spec.stopStiffness};
-  if (stroke < -half) return {spec.tension - k * half + spec.stopStiffness * (stroke + half), k + spec.stopStiffness};
+  // Beyond a stop the gas spring is held at its stroke's end: the force grows with the stop alone.
+  if (stroke > half)
+    return {spec.tension + k * half + spec.stopStiffness * (stroke - half), spec.stopStiffness};
+  if (stroke < -half)
+    return {spec.tension - k * half + spec.stopStiffness * (stroke + half), spec.stopStiffness};
   return {spec.tension + k * stroke, k};
 }
 

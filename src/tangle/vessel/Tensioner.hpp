@@ -17,9 +17,10 @@ struct TensionerForce {
 /// (initial) position [m], positive down/out. With S the total stroke, T the nominal tension, k_g the
 /// gas-spring stiffness (spec.stiffness) and k the end-stop stiffness (spec.stopStiffness):
 ///   |s| <= S/2:  force = T + k_g s,                             stiffness = k_g
-///   s >  S/2:    force = T + k_g S/2 + k (s - S/2),             stiffness = k_g + k  (end stop: fully extended)
-///   s < -S/2:    force = T - k_g S/2 + k (s + S/2),             stiffness = k_g + k  (end stop: fully collapsed;
-///                                                                the stop pushes the end back, force may turn negative)
+///   s >  S/2:    force = T + k_g S/2 + k (s - S/2),             stiffness = k  (end stop: fully extended)
+///   s < -S/2:    force = T - k_g S/2 + k (s + S/2),             stiffness = k  (end stop: fully collapsed;
+///                                                                the stop pushes the end back, force may
+///                                                                turn negative)
 /// The law is continuous (piecewise linear). A hydro-pneumatic tensioner (e.g. API RP 16Q 2017, API RP 2RD
 /// 2013 riser tensioner systems) with its gas spring linearised about mid-stroke: k_g = n p A / V per
 /// cylinder (polytropic exponent n, pressure p, piston area A, gas volume V); k_g = 0 is the ideal

@@ -214,11 +214,17 @@ BodyLoad VesselLoads::loads(const Vec3& position, const Mat3& rotation, const Ve
     const Vec3 v = velocity.head<3>();
     addFlowLoad(out, m_currentCoefficients, m_currentScale, currentVelocity - v, r, true, true, ramp);
     addFlowLoad(out, m_windCoefficients, m_windScale, m_windVelocity - v, r, true, true, ramp);
-    const Vec3 waveDirection(std::cos(waveAzimuth), std::sin(waveAzimuth), 0.0);
-    const double a2 = waveAmplitude * waveAmplitude;
-    addFlowLoad(out, m_waveDrift, Vec3::Constant(a2), waveDirection, r, false, false, ramp);
+    addWaveDrift(out, r, waveAmplitude * waveAmplitude, waveAzimuth, ramp);
   }
   return out;
+}
+
+void VesselLoads::addWaveDrift(BodyLoad& out, const Mat3& rotation, double amplitudeSquared,
+                               double waveAzimuth, double ramp) const {
+  if (ramp == 0.0 || amplitudeSquared == 0.0) return;
+  const Vec3 waveDirection(std::cos(waveAzimuth), std::sin(waveAzimuth), 0.0);
+  addFlowLoad(out, m_waveDrift, Vec3::Constant(amplitudeSquared), waveDirection, rotation, false, false,
+              ramp);
 }
 
 Mat6 VesselLoads::massMatrix(const Mat3& rotation) const {

@@ -61,7 +61,8 @@ class VesselLoads {
   /// @param initialPosition reference point at the hydrostatic equilibrium [m] (heave restoring about z0)
   /// @param initialRotation orientation at the hydrostatic equilibrium [-] (roll/pitch restoring about it)
   /// @param currentVelocity current velocity at the surface, global [m/s] (only x, y are used)
-  /// @param waveAmplitude regular-wave amplitude H/2, or Hs/2 for an irregular sea [m] (mean drift only)
+  /// @param waveAmplitude regular-wave amplitude H/2 [m] (mean drift only; a sea of several components or
+  ///        directions: 0 here and addWaveDrift for each direction)
   /// @param waveAzimuth direction the waves travel towards, anticlockwise from global +x [rad]
   /// @param ramp factor in [0, 1] multiplying the environmental loads (current, wind, drift) and their
   ///        derivatives; hydrostatics and damping are never ramped
@@ -90,6 +91,15 @@ class VesselLoads {
   BodyLoad loads(const Vec3& position, const Mat3& rotation, const Vec6& velocity, const Vec3& initialPosition,
                  const Mat3& initialRotation, const Vec3& currentVelocity, double waveAmplitude, double waveAzimuth,
                  double ramp) const;
+
+  /// Adds the mean wave drift of the waves travelling towards `waveAzimuth` [rad] (anticlockwise from global
+  /// +x) to `out`: (F_x, F_y, M_z) = waveDrift(beta_w) A in vessel axes, beta_w = waveAzimuth - vessel yaw,
+  /// rotated to global (force [N], moment [N m]), with its derivative in the vessel's rotation; times `ramp`.
+  /// A = `amplitudeSquared` [m^2]: a^2 of a regular wave; of a sea of components of amplitudes a_i the sum of
+  /// a_i^2 over those travelling that way, and of a spectrum 2 m0 = Hs^2 / 8 (the mean of a sum of regular
+  /// waves' second-order forces: Faltinsen 1990, ch. 5, F = 2 int S(omega) D(omega) d omega).
+  void addWaveDrift(BodyLoad& out, const Mat3& rotation, double amplitudeSquared, double waveAzimuth,
+                    double ramp) const;
 
   /// 6x6 mass matrix [kg, kg m^2] in global axes: translational m I + R diag(A11, A22, A33) R^T, rotational
   /// R diag(I44 + A44, I55 + A55, I66 + A66) R^T, no translation-rotation coupling (no centre-of-gravity

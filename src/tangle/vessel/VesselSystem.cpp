@@ -38,15 +38,23 @@ VesselSystem::VesselSystem(const model::Model& model, const hydro::HydroLoads& h
     : m_model(&model), m_hydro(&hydro), m_rampTime(model.spec().dynamics.rampTime) {
   const model::EnvironmentSpec& env = model.environment();
   const model::WaveSpec& w = env.waves;
-  m_waveAzimuth = w.azimuth;
-  m_waveAmplitude = w.kind == model::WaveKind::Airy      ? 0.5 * w.height
-                    : w.kind == model::WaveKind::Jonswap ? 0.5 * w.significantHeight
-                                                         : 0.0;
-  if (w.kind == model::WaveKind::Components) {  // Hs / 2 = 2 sqrt(m0) of the components
-    double m0 = 0.0;
-    for (const auto& c : w.componentTable) m0 += 0.5 * c[1] * c[1];
-    m_waveAmplitude = 2.0 * std::sqrt(m0);
-  }
+  // The mean drift's amplitude squared per direction of travel (VesselLoads::addWaveDrift): a regular wave's
+  // a^2 = (H / 2)^2; a spectrum's 2 m0 = Hs^2 / 8; components' a_i^2, summed per direction. (Until
+  // 2026-12-06 an irregular sea had a = Hs / 2 = 2 sqrt(m0), twice the drift of the same sea made of regular
+  // waves, and every component took the block's azimuth.)
+  if (w.kind == model::WaveKind::Airy && w.height > 0.0)
+    m_drift.push_back({0.25 * w.height * w.height, w.azimuth});
+  else if (w.kind == model::WaveKind::Jonswap && w.significantHeight > 0.0)
+    m_drift.push_back({w.significantHeight * w.significantHeight / 8.0, w.azimuth});
+  else if (w.kind == model::WaveKind::Components)
+    for (const auto& c : w.componentTable) {
+      const auto same = std::find_if(m_drift.begin(), m_drift.end(),
+                                     [&](const DriftDirection& d) { return d.azimuth == c[3]; });
+      if (same != m_drift.end())
+        same->amplitudeSquared += c[1] * c[1];
+      else
+        m_drift.push_back({c[1] * c[1], c[3]});
+    }
   // Wave components for the RAO motion (phase sign: the waves use cos(k x - omega t + phase), the RAO
   // motion cos(omega t - k x + phase), so the component phase is the negated wave phase).
   std::vector<RaoMotion::Component> components;
@@ -289,8 +297,11 @@ BodyLoad VesselSystem::bodyLoad(const model::State& state, const VesselData& d,
   const Vec3 current =
       m_hydro->fluidAt(Vec3(state.position[d.node].x(), state.position[d.node].y(), 0.0), request.time, false)
           .velocity;
-  return d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0, d.rotation0,
-                        current, m_waveAmplitude, m_waveAzimuth, 1.0);
+  BodyLoad load = d.loads->loads(state.position[d.node], state.triad[d.node], velocity, d.position0,
+                                 d.rotation0, current, 0.0, 0.0, 1.0);
+  for (const DriftDirection& drift : m_drift)
+    d.loads->addWaveDrift(load, state.triad[d.node], drift.amplitudeSquared, drift.azimuth, 1.0);
+  return load;
 }
 
 void VesselSystem::raiseRoundoffFloor(const model::State& state, std::vector<double>& floor) const {

@@ -132,8 +132,13 @@ class VesselSystem final : public solver::LoadContributor {
   const hydro::HydroLoads* m_hydro;
   std::vector<VesselData> m_vessels;
   std::vector<Connection> m_connections;
-  double m_waveAmplitude = 0.0;  ///< H/2 (regular) or Hs/2 (irregular) for the drift force [m]
-  double m_waveAzimuth = 0.0;
+  /// The waves' mean drift per direction of travel: amplitude squared [m^2] (a^2 of a regular wave, 2 m0 of
+  /// a spectrum, the sum of a_i^2 of the components) and azimuth [rad] (VesselLoads::addWaveDrift).
+  struct DriftDirection {
+    double amplitudeSquared = 0.0;
+    double azimuth = 0.0;
+  };
+  std::vector<DriftDirection> m_drift;
   double m_rampTime = 0.0;
 };
 

@@ -35,9 +35,14 @@ TEST(Tensioner, GasSpringWithinStrokeContinuousAtTheStops) {
   // Within the stroke: T + k_g s (hand values).
   EXPECT_NEAR(tensionerForce(p, -2.0).force, 2.0e6 - 1.0e5, 1e-6);
   EXPECT_EQ(tensionerForce(p, 3.0).stiffness, 5.0e4);
-  // Beyond the lower stop (s = 5.1): T + k_g S/2 + k 0.1; stiffness k_g + k.
+  // Beyond the lower stop (s = 5.1): T + k_g S/2 + k 0.1; stiffness k, the force's slope (the gas spring is
+  // held at its stroke's end; until 2026-12-06 the stiffness was k_g + k, not the derivative of the force).
   EXPECT_NEAR(tensionerForce(p, 5.1).force, 2.0e6 + 2.5e5 + 1.0e6, 1e-6);
-  EXPECT_EQ(tensionerForce(p, 5.1).stiffness, 5.0e4 + 1.0e7);
+  EXPECT_EQ(tensionerForce(p, 5.1).stiffness, 1.0e7);
+  for (double s : {-7.0, 0.5, 6.0}) {
+    const double fd = (tensionerForce(p, s + 1e-3).force - tensionerForce(p, s - 1e-3).force) / 2e-3;
+    EXPECT_NEAR(fd, tensionerForce(p, s).stiffness, 1e-3) << "s = " << s;
+  }
   // Continuous at both stops (the jump over 2e-9 m is at most (k_g + k) 2e-9 plus rounding).
   for (double stop : {-5.0, 5.0})
     EXPECT_NEAR(tensionerForce(p, stop - 1e-9).force, tensionerForce(p, stop + 1e-9).force, 0.05);
