@@ -487,6 +487,11 @@ bool RunOutputs::runDynamics() {
     std::vector<Vec3> positions;  // nodeCount per step, step after step
     std::vector<Mat3> triads;     // likewise, with rotational DOFs only
     std::vector<std::vector<vessel::VesselSystem::TensionerReading>> tensioners;
+    // A viscoelastic rope's tension is an internal variable of the committed state, not a function of the
+    // positions: each step's (model::State::viscoelastic; empty without such ropes). Without it the ranges,
+    // extremes, statistics and fatigue took the ropes' static EA (polyester-taut-mooring: a fairlead range
+    // of 1.25-2.51 MN where the tension histories swing over 1.01-2.76 MN).
+    std::vector<model::State::Viscoelastic> viscoelastic;
     std::size_t size() const { return time.size(); }
     void clear() {
       time.clear();
@@ -494,6 +499,7 @@ bool RunOutputs::runDynamics() {
       positions.clear();
       triads.clear();
       tensioners.clear();
+      viscoelastic.clear();
     }
   };
   constexpr std::size_t kStepsPerJob = 32;
@@ -545,6 +551,7 @@ bool RunOutputs::runDynamics() {
         stepState.time = steps->time[k];
         stepState.position.assign(steps->positions.begin() + first, steps->positions.begin() + last);
         if (anyRotations) stepState.triad.assign(steps->triads.begin() + first, steps->triads.begin() + last);
+        if (!steps->viscoelastic.empty()) stepState.viscoelastic = std::move(steps->viscoelastic[k]);
         // Ranges need no support reactions (as Simulation::sectionSnapshot, from the copy).
         solver::computeLineResults(m, sim.assembler(), stepState, nullptr, stepSnapshot,
                                    solver::LineResultDetail::SectionForces);
@@ -634,6 +641,7 @@ bool RunOutputs::runDynamics() {
         if (energy) energy->step(s, dt);
         seabedImpacts.commit(s, dt);
         if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
+        if (!s.viscoelastic.tension.empty()) b.viscoelastic.push_back(s.viscoelastic);
         if (tensionerFile) {
           // Every step: a tensioner touching its stop between two output times must show.
           b.tensioners.push_back(vessels->tensionerReadings(s, s.time));
