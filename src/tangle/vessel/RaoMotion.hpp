@@ -65,8 +65,9 @@ class RaoMotion {
 
   /// Motion at time t [s] of the vessel whose reference point is at referencePoint [m] (only x, y are used,
   /// for the wave phase), multiplied by ramp [-]:
-  ///   q_j = ramp sum_i a_i |RAO_j(T_i, beta_i)| cos(theta_i + lag_j(T_i, beta_i)),
-  ///   dq_j/dt = ramp sum_i a_i omega_i |RAO_j| sin(theta_i + lag_j),  d2q_j/dt2 = -ramp sum_i omega_i^2 (...),
+  ///   q_j = ramp sum_i a_i |RAO_j(T_i, beta_i)| cos(theta_i - lag_j(T_i, beta_i)),
+  ///   dq_j/dt = -ramp sum_i a_i omega_i |RAO_j| sin(theta_i - lag_j),  d2q_j/dt2 = -ramp sum_i omega_i^2
+  ///   (...),
   /// per DOF j in vessel axes, then translations and rotation vectors rotated to global.
   Motion at(double t, const Vec3& referencePoint, double ramp) const;
 
