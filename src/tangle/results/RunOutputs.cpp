@@ -551,7 +551,8 @@ bool RunOutputs::runDynamics() {
         stepState.time = steps->time[k];
         stepState.position.assign(steps->positions.begin() + first, steps->positions.begin() + last);
         if (anyRotations) stepState.triad.assign(steps->triads.begin() + first, steps->triads.begin() + last);
-        if (!steps->viscoelastic.empty()) stepState.viscoelastic = std::move(steps->viscoelastic[k]);
+        if (steps->viscoelastic.size() == steps->size())
+          stepState.viscoelastic = std::move(steps->viscoelastic[k]);
         // Ranges need no support reactions (as Simulation::sectionSnapshot, from the copy).
         solver::computeLineResults(m, sim.assembler(), stepState, nullptr, stepSnapshot,
                                    solver::LineResultDetail::SectionForces);
@@ -641,7 +642,11 @@ bool RunOutputs::runDynamics() {
         if (energy) energy->step(s, dt);
         seabedImpacts.commit(s, dt);
         if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
-        if (!s.viscoelastic.tension.empty()) b.viscoelastic.push_back(s.viscoelastic);
+        // One per step of the batch once any step has them (the writer takes them only then).
+        if (!s.viscoelastic.tension.empty() || !b.viscoelastic.empty()) {
+          b.viscoelastic.resize(b.size() - 1);  // steps of this batch before the ropes' first commit: empty
+          b.viscoelastic.push_back(s.viscoelastic);
+        }
         if (tensionerFile) {
           // Every step: a tensioner touching its stop between two output times must show.
           b.tensioners.push_back(vessels->tensionerReadings(s, s.time));
