@@ -251,23 +251,32 @@ TEST(CrossCurrent, FrictionlessSeabedStreamsTheLaidLineDownstream) {
 // Seabed friction in statics against the hand check q < mu w holds, q > mu w slides.
 
 /// A 100 m line laid on the seabed along x, free at both ends, under a current at azimuth 90 deg (across
-/// it). Normal drag per unit length q = 1/2 rho Cd D U^2 against friction mu w per unit length.
-std::string laidLineYaml(double speed, double mu) {
+/// it). Normal drag per unit length q = 1/2 rho Cd D U^2 against friction mu w per unit length. `current`
+/// is the environment's current (a YAML flow value); `extraTypes` and `extraLines` are YAML list entries
+/// appended to line_types and lines; `extraTop` top-level blocks appended to the model.
+std::string laidLineModel(double mu, const std::string& current, const std::string& extraTypes = "",
+                          const std::string& extraLines = "", const std::string& extraTop = "") {
   return fmt::format(R"(
 environment:
   water_depth: 50
   seabed: {{normal_stiffness: 1.0e6, friction_coefficient: {mu}}}
-  current: {{speed: {u}, azimuth: 90}}
+  current: {current}
 line_types:
   - {{name: cable, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8, drag_normal: 1.2}}
-lines:
+{types}lines:
   - name: laid
     end_a: {{type: free, position: [0, 0, -49.95]}}
     end_b: {{type: free, position: [100, 0, -49.95]}}
     sections:
       - {{type: cable, length: 100, elements: 20}}
-)",
-                     fmt::arg("mu", mu), fmt::arg("u", speed));
+{lines}{top})",
+                     fmt::arg("mu", mu), fmt::arg("current", current), fmt::arg("types", extraTypes),
+                     fmt::arg("lines", extraLines), fmt::arg("top", extraTop));
+}
+
+/// The laid line under a uniform current of `speed` [m/s].
+std::string laidLineYaml(double speed, double mu) {
+  return laidLineModel(mu, fmt::format("{{speed: {}, azimuth: 90}}", speed));
 }
 
 /// The laid line's normal drag coefficient times 1/2 rho D [kg/m^2]: q = kLaidLineDragFactor U^2 [N/m].
@@ -857,18 +866,23 @@ INSTANTIATE_TEST_SUITE_P(Ratios, HeavyCantilever,
                          ::testing::Values(std::make_tuple(1e6, 200), std::make_tuple(1e7, 40),
                                            std::make_tuple(1e7, 200)));
 
-// A model whose statics reaches solve()'s later stages, for the two tests below: the heavy cantilever above
-// (EA Le^2 / EI = 1e7 on 200 elements), reached only from its hanging start, after `lines`.
-std::string withHeavyCantilever(const std::string& head, const std::string& lines) {
-  return head + R"(
-  - {name: rod, outer_diameter: 0.2, mass_per_length: 30, axial_stiffness: 1.0e10, bending_stiffness: 2.5}
-lines:)" +
-         lines + R"(
-  - name: cant
+// A model whose statics reaches solve()'s later stages, for the two tests below: the laid line above with
+// `current`, `extraTypes`, `extraLines` and `extraTop` (laidLineModel), beside the heavy cantilever above
+// (EA Le^2 / EI = 1e7 on 200 elements), which is reached only from its hanging start.
+std::string laidLineWithHeavyCantilever(const std::string& current, const std::string& extraTypes = "",
+                                        const std::string& extraLines = "",
+                                        const std::string& extraTop = "") {
+  return laidLineModel(
+      0.3, current,
+      extraTypes +
+          R"(  - {name: rod, outer_diameter: 0.2, mass_per_length: 30, axial_stiffness: 1.0e10, bending_stiffness: 2.5}
+)",
+      extraLines + R"(  - name: cant
     end_a: {type: fixed, position: [0, 200, 10]}
     end_b: {type: free, position: [10.0, 200, 10]}
     sections: [{type: rod, length: 10.0, elements: 200}]
-)";
+)",
+      extraTop);
 }
 
 // A laid line free at both ends in a current 1.1 times what its friction holds (SeabedFrictionStatics above:
@@ -878,19 +892,8 @@ lines:)" +
 // Until 2026-12-06 the hanging and the cable-law stages dropped it: the fallbacks ran (20 s) and the
 // message blamed the cantilever's node 2.
 TEST(SeabedFrictionStatics, ALineSlidingAsAWholeStopsStaticsFromEveryStage) {
-  const Solved s = solveYaml(withHeavyCantilever(R"(
-environment:
-  water_depth: 50
-  seabed: {normal_stiffness: 1.0e6, friction_coefficient: 0.3}
-  current: {speed: 0.831675728139457, azimuth: 90}
-line_types:
-  - {name: cable, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8, drag_normal: 1.2})",
-                                                 R"(
-  - name: laid
-    end_a: {type: free, position: [0, 0, -49.95]}
-    end_b: {type: free, position: [100, 0, -49.95]}
-    sections: [{type: cable, length: 100, elements: 20}]
-)"));
+  const double speed = 1.1 * laidLineCriticalSpeed(0.3);
+  const Solved s = solveYaml(laidLineWithHeavyCantilever(fmt::format("{{speed: {}, azimuth: 90}}", speed)));
   EXPECT_FALSE(s.result.converged);
   EXPECT_TRUE(s.result.noEquilibrium) << s.result.message;
   EXPECT_NE(s.result.message.find("line 'laid' lies on the seabed with both ends free and slides as a whole"),
@@ -898,34 +901,29 @@ line_types:
       << s.result.message;
 }
 
-// The same laid line at 0.9 of that current (held by its friction), a slack neutrally buoyant line that
-// sends statics on to its restart from a bulged shape, and the cantilever; statics.max_iterations 104 is
-// what leaves that restart without iterations, so that it fails. The equilibrium found before it is
-// returned, and what statics committed must be its own: in the equilibrium audit every line balances
-// (until 2026-12-06 the failed restart's fresh seabed anchors were left committed: line 'laid' out of
-// balance by 2705 N, the current's whole drag, 0.231 of its reference force, and the dynamics started by
+// The same laid line at 0.9 of that current (held by its friction; the current only below z = -45 m), a
+// slack neutrally buoyant line that sends statics on to its restart from a bulged shape, and the
+// cantilever; statics.max_iterations 104 is what leaves that restart without iterations, so that it fails
+// (checked with TANGLE_DEBUG_STATICS: "restart from a bulged shape" then "failed"). The equilibrium found
+// before it is returned, and what statics committed must be its own: in the equilibrium audit every line
+// balances (until 2026-12-06 the failed restart's fresh seabed anchors were left committed: line 'laid' out
+// of balance by 2705 N, the current's whole drag, 0.231 of its reference force, and the dynamics started by
 // jumping).
 TEST(SeabedFrictionStatics, AFailedRestartLeavesTheEquilibriumFoundWithItsOwnFriction) {
-  const Solved s = solveYaml(withHeavyCantilever(R"(
-environment:
-  water_depth: 50
-  seabed: {normal_stiffness: 1.0e6, friction_coefficient: 0.3}
-  current: [{z: 0, speed: 0, azimuth: 90}, {z: -45, speed: 0, azimuth: 90}, {z: -48, speed: 0.6804619593868284, azimuth: 90}, {z: -50, speed: 0.6804619593868284, azimuth: 90}]
-statics: {max_iterations: 104}
-line_types:
-  - {name: cable, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8, drag_normal: 1.2}
-  - {name: neutral, outer_diameter: 0.1, mass_per_length: 8.05033117482, axial_stiffness: 1.0e8, drag_normal: 1.2})",
-                                                 R"(
-  - name: laid
-    end_a: {type: free, position: [0, 0, -49.95]}
-    end_b: {type: free, position: [100, 0, -49.95]}
-    sections: [{type: cable, length: 100, elements: 20}]
-  - name: slack
+  const double speed = 0.9 * laidLineCriticalSpeed(0.3);
+  const Solved s = solveYaml(laidLineWithHeavyCantilever(
+      fmt::format("[{{z: 0, speed: 0, azimuth: 90}}, {{z: -45, speed: 0, azimuth: 90}}, "
+                  "{{z: -48, speed: {0}, azimuth: 90}}, {{z: -50, speed: {0}, azimuth: 90}}]",
+                  speed),
+      R"(  - {name: neutral, outer_diameter: 0.1, mass_per_length: 8.05033117482, axial_stiffness: 1.0e8, drag_normal: 1.2}
+)",
+      R"(  - name: slack
     end_a: {type: pinned, position: [0, 100, -20]}
     end_b: {type: pinned, position: [50, 100, -20]}
     sections: [{type: neutral, length: 60, elements: 12}]
     start_shape: [[25, 100, -20]]
-)"));
+)",
+      "statics: {max_iterations: 104}\n"));
   ASSERT_TRUE(s.result.converged) << s.result.message;
   const solver::EquilibriumAudit audit = analysis::auditStatics(*s.sim, s.lines);
   EXPECT_TRUE(audit.warnings().empty()) << audit.worstRelativeResidual();
