@@ -69,10 +69,12 @@ int DECLDIR MoorDyn_GetLineNodeSeabedForce(MoorDynLine l, unsigned int i, double
 int DECLDIR MoorDyn_GetLineNodeCurv(MoorDynLine l, unsigned int i, double* c);
 /* Not implemented (MOORDYN_NON_IMPLEMENTED). */
 int DECLDIR MoorDyn_GetLineNodeM(MoorDynLine l, unsigned int i, double m[3][3]);
-/* Effective tension at end B (the fairlead in MoorDyn's convention) [N]: the end tension tangle writes in
- * dynamics/end_forces.csv. */
+/* Tension at end B (the fairlead in MoorDyn's convention) [N]: as MoorDyn's, its top segment's tension, the
+ * norm of MoorDyn_GetLineNodeTen at node N. (tangle's end tension in dynamics/end_forces.csv is the force on
+ * the end, MoorDyn_GetLineNodeForce's there: it adds the end node's own loads.) */
 int DECLDIR MoorDyn_GetLineFairTen(MoorDynLine l, double* t);
-/* Largest effective tension over the line's nodes at the current state [N]. */
+/* Largest norm of MoorDyn_GetLineNodeTen over the nodes 0 to N - 1 at the current state [N] (MoorDyn's
+ * range: the top node left out). */
 int DECLDIR MoorDyn_GetLineMaxTen(MoorDynLine l, double* t);
 /* Not implemented: tangle writes ParaView files itself (`tangle run`) (MOORDYN_NON_IMPLEMENTED). */
 int DECLDIR MoorDyn_SaveLineVTK(MoorDynLine l, const char* filename);

@@ -23,13 +23,16 @@ int DECLDIR MoorDynStep(const double x[], const double xd[], double f[], double*
 /* Destroys the system. MOORDYN_INVALID_VALUE when there is none. */
 int DECLDIR MoorDynClose(void);
 
-/* External wave kinematics: not implemented. externalWaveKinInit returns 0 (no points); the other two do
- * nothing. Each prints a message. */
+/* External wave kinematics (a deck with option WaveKin 1): MoorDyn_ExternalWaveKinInit,
+ * MoorDyn_ExternalWaveKinGetCoordinates and MoorDyn_ExternalWaveKinSet on the system. externalWaveKinInit
+ * returns the number of points (0 when there is no system or on an error); the other two do nothing when
+ * there is no system. */
 int DECLDIR externalWaveKinInit(void);
 void DECLDIR getWaveKinCoordinates(double r_out[]);
 void DECLDIR setWaveKin(const double U_in[], const double Ud_in[], double t_in);
 
-/* Effective tension at end B of line l (1-based) [N]; -1 when there is no system or no such line. */
+/* MoorDyn_GetLineFairTen of line l (1-based): its top segment's tension [N]; -1 when there is no system or
+ * no such line. */
 double DECLDIR GetFairTen(int l);
 /* MoorDyn_GetFASTtens on the system (MOORDYN_MEM_ERROR when there is none, as MoorDyn). */
 int DECLDIR GetFASTtens(int* numLines, float FairHTen[], float FairVTen[], float AnchHTen[],

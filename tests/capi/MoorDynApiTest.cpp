@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -135,20 +136,40 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
   EXPECT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_INVALID_VALUE);  // once only
   EXPECT_EQ(MoorDyn_SetDt(system, 0.005), MOORDYN_NON_IMPLEMENTED);
 
-  // The fairlead end: node 41 at the coupled point, its tension the end tension.
-  double pos[3], ten[3], fairTen = 0.0, maxTen = 0.0;
+  // The fairlead end: node 41 at the coupled point. MoorDyn's tension there (Line::getNodeTen, and
+  // MoorDyn_GetLineFairTen its norm) is the top segment's, EA (l / l0 - 1) from its stretch, along the
+  // segment; its largest tension (MoorDyn_GetLineMaxTen) is over nodes 0 to N - 1, the top node left out.
+  double pos[3], below[3], ten[3], fairTen = 0.0, maxTen = 0.0, ea = 0.0;
   ASSERT_EQ(MoorDyn_GetLineNodePos(line, 41, pos), MOORDYN_SUCCESS);
   EXPECT_NEAR(norm(pos), 0.0, 1e-9);
   EXPECT_EQ(MoorDyn_GetLineNodePos(line, 42, pos), MOORDYN_INVALID_VALUE);
+  ASSERT_EQ(MoorDyn_GetLineNodePos(line, 40, below), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetLineConstantEA(line, &ea), MOORDYN_SUCCESS);
+  const double segment[3] = {pos[0] - below[0], pos[1] - below[1], pos[2] - below[2]};
   ASSERT_EQ(MoorDyn_GetLineFairTen(line, &fairTen), MOORDYN_SUCCESS);
   EXPECT_GT(fairTen, 1e5);
+  EXPECT_NEAR(fairTen, ea * (norm(segment) / 10.0 - 1.0), 1e-9 * fairTen);
   ASSERT_EQ(MoorDyn_GetLineNodeTen(line, 41, ten), MOORDYN_SUCCESS);
-  EXPECT_NEAR(norm(ten), fairTen, 1e-9 * fairTen);  // a chain: the end force is the end tension
+  EXPECT_NEAR(norm(ten), fairTen, 1e-9 * fairTen);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(ten[k], fairTen * segment[k] / norm(segment), 1e-9 * fairTen);
   EXPECT_LT(ten[0], 0.0);  // pointing from end A (anchor, x = 400) towards end B (x = 0)
   ASSERT_EQ(MoorDyn_GetLineMaxTen(line, &maxTen), MOORDYN_SUCCESS);
-  EXPECT_GE(maxTen, fairTen);
+  double ten40[3];
+  ASSERT_EQ(MoorDyn_GetLineNodeTen(line, 40, ten40), MOORDYN_SUCCESS);
+  EXPECT_NEAR(maxTen, norm(ten40), 1e-9 * maxTen);  // the chain's tension grows towards the fairlead
+  EXPECT_LT(maxTen, fairTen);
   ASSERT_EQ(MoorDyn_GetLineNodePos(line, 0, pos), MOORDYN_SUCCESS);
   EXPECT_NEAR(pos[0], 400.0, 1e-6);
+
+  // The force on the fairlead (MoorDyn_GetLineNodeForce at the top, MoorDyn's Fnet there) is the top
+  // segment's pull and the top node's own load: half a segment's submerged weight, (390 - rho pi / 4 d^2)
+  // g l0 / 2, in statics (no current).
+  double topForce[3];
+  ASSERT_EQ(MoorDyn_GetLineNodeForce(line, 41, topForce), MOORDYN_SUCCESS);
+  const double halfSegment = (390.0 - 1025.0 * 3.141592653589793 / 4.0 * 0.252 * 0.252) * 9.81 * 10.0 / 2.0;
+  EXPECT_NEAR(topForce[0], -ten[0], 1e-6 * fairTen);
+  EXPECT_NEAR(topForce[1], -ten[1], 1e-6 * fairTen);
+  EXPECT_NEAR(topForce[2], -ten[2] - halfSegment, 1e-3 * halfSegment);
 
   // FAST's customary tensions: the line pulls the fairlead down and towards the anchor; the anchor's
   // horizontal force is the fairlead's (no current, no friction, a grounded length at the anchor).
@@ -158,7 +179,8 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
   EXPECT_GT(fairH, 0.0f);
   EXPECT_LT(fairV, 0.0f);
   EXPECT_NEAR(anchH, fairH, 1e-3 * fairH);
-  EXPECT_NEAR(std::hypot(fairH, fairV), fairTen, 1e-5 * fairTen);  // float precision
+  EXPECT_NEAR(fairH, std::hypot(topForce[0], topForce[1]), 1e-5 * fairTen);  // float precision
+  EXPECT_NEAR(fairV, topForce[2], 1e-5 * fairTen);
   const int tooMany = 2;
   EXPECT_EQ(MoorDyn_GetFASTtens(system, &tooMany, &fairH, &fairV, &anchH, &anchV), MOORDYN_INVALID_VALUE);
 
@@ -208,8 +230,9 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
-// The jumper deck has WaveKin 1: the host gives the fluid kinematics at every line node (0 to 68) and at the
-// two points, in MoorDyn's order; a current across the line raises the top tension over still water.
+// The jumper deck has WaveKin 1: the host gives the fluid kinematics at every line node (0 to 68), at the
+// two points and at MoorDyn's ground body, in MoorDyn's order (Waves::kinematicsForAllNodes: lines, rods,
+// points, bodies); a current across the line raises the top tension over still water.
 TEST(MoorDynApi, ExternalWaveKinematicsReachTheLine) {
   const std::string jumper = std::string(tangle::test::kTestDataDir) + "/moordyn/lowe_langley_jumper.txt";
   MoorDyn system = MoorDyn_Create(jumper.c_str());
@@ -220,7 +243,7 @@ TEST(MoorDynApi, ExternalWaveKinematicsReachTheLine) {
   ASSERT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_SUCCESS);
   unsigned int n = 0;
   ASSERT_EQ(MoorDyn_ExternalWaveKinInit(system, &n), MOORDYN_SUCCESS);
-  ASSERT_EQ(n, 69u + 2u);
+  ASSERT_EQ(n, 69u + 2u + 1u);
   std::vector<double> r(3 * n);
   ASSERT_EQ(MoorDyn_ExternalWaveKinGetCoordinates(system, r.data()), MOORDYN_SUCCESS);
   MoorDynLine line = MoorDyn_GetLine(system, 1);
@@ -228,6 +251,7 @@ TEST(MoorDynApi, ExternalWaveKinematicsReachTheLine) {
   ASSERT_EQ(MoorDyn_GetLineNodePos(line, 30, node), MOORDYN_SUCCESS);
   for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(r[3 * 30 + k], node[k]);
   for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(r[3 * 70 + k], x[k]);  // the last point: the top
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(r[3 * 71 + k], 0.0);          // the ground body
   std::vector<double> u(3 * n, 0.0), a(3 * n, 0.0);
   // Still water given by the host: the jumper stays in its plane (no force across it on the top).
   ASSERT_EQ(MoorDyn_ExternalWaveKinSet(system, u.data(), a.data(), 0.0), MOORDYN_SUCCESS);
@@ -567,6 +591,227 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
   std::ofstream(pinned) << deck;
   EXPECT_EQ(MoorDyn_Create(pinned.c_str()), nullptr);
   std::filesystem::remove(pinned);
+}
+
+// The points on a Coupled body load it with their own mass, volume and drag, as MoorDyn's Body::doRHS sums
+// its points' Point::getNetForceAndMass (MoorDyn v2.7.1): coupled_body.txt with its point 3 (a line's end)
+// given 5000 kg, 2 m^3, CdA 1.5 m^2, Ca 1 and a point 5 at (5, 0, 0) on the body with no line (2000 kg, 0.5
+// m^3, CdA 1, Ca 0.5), against the deck as it is, both moved alike by the host. The lines see the same
+// motion, so the difference of the forces returned is the points' loads alone: (rho V - m) g upward, drag
+// 1/2 rho CdA |v| v against each point's velocity v = v_ref + w x r in still water, and -(m + rho V Ca) a
+// with a = a_ref + alpha x r + w x (w x r), the accelerations the change of the host's velocities over its
+// step (MoorDyn's MoorDyn::Step); the moment their arms' (MoorDyn leaves out the centripetal term's moment,
+// tangle does not). 1e-9 relative: the same sums. Until 2026-12-06 the points' loads were dropped, the
+// points' velocities read 0 and MoorDyn_GetBodyForce read 0 after MoorDyn_Init.
+TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
+  const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
+  std::ifstream in(dir + "coupled_body.txt");
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string row3 = "3     Body1       0.0     10.0     0.0     0      0       0      0";
+  const std::string row4 = "4     Body1       0.0    -10.0     0.0     0      0       0      0";
+  ASSERT_NE(deck.find(row3), std::string::npos);
+  ASSERT_NE(deck.find(row4), std::string::npos);
+  deck.replace(deck.find(row3), row3.size(),
+               "3     Body1       0.0     10.0     0.0     5000   2       1.5    1");
+  deck.insert(deck.find(row4) + row4.size(),
+              "\n5     Body1       5.0     0.0      0.0     2000   0.5     1.0    0.5");
+  const std::string loaded =
+      (std::filesystem::temp_directory_path() / "tangle-coupled-body-masses.txt").string();
+  std::ofstream(loaded) << deck;
+  MoorDyn plain = MoorDyn_Create((dir + "coupled_body.txt").c_str());
+  MoorDyn heavy = MoorDyn_Create(loaded.c_str());
+  std::filesystem::remove(loaded);
+  ASSERT_NE(plain, nullptr);
+  ASSERT_NE(heavy, nullptr);
+  using V = std::array<double, 3>;
+  const auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  const auto plus = [](V a, const V& b, double k = 1.0) {
+    for (int i = 0; i < 3; ++i) a[i] += k * b[i];
+    return a;
+  };
+  const double rho = 1025.0, g = 9.81;
+  struct Lump {
+    V offset;
+    double mass, volume, cda, ca;
+  };
+  const Lump lumps[2] = {{{0.0, 10.0, 0.0}, 5000.0, 2.0, 1.5, 1.0}, {{5.0, 0.0, 0.0}, 2000.0, 0.5, 1.0, 0.5}};
+  // The loads about the reference point of the lumps on a body in yaw c with velocity v, yaw rate w,
+  // acceleration a and yaw acceleration alpha (roll and pitch 0).
+  const auto loads = [&](double c, const V& v, double w, const V& a, double alpha) {
+    std::array<double, 6> out{};
+    for (const Lump& l : lumps) {
+      const V arm{std::cos(c) * l.offset[0] - std::sin(c) * l.offset[1],
+                  std::sin(c) * l.offset[0] + std::cos(c) * l.offset[1], l.offset[2]};
+      const V omega{0.0, 0.0, w};
+      const V velocity = plus(v, cross(omega, arm));
+      const V acceleration = plus(plus(a, cross(V{0.0, 0.0, alpha}, arm)), cross(omega, cross(omega, arm)));
+      const double speed = norm(velocity.data());
+      V force{0.0, 0.0, (rho * l.volume - l.mass) * g};
+      force = plus(force, velocity, -0.5 * rho * l.cda * speed);
+      force = plus(force, acceleration, -(l.mass + rho * l.volume * l.ca));
+      const V moment = cross(arm, force);
+      for (int i = 0; i < 3; ++i) out[i] += force[i], out[3 + i] += moment[i];
+    }
+    return out;
+  };
+  double r[6] = {0.0, 0.0, -5.0, 0.0, 0.0, 0.0}, rd[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  ASSERT_EQ(MoorDyn_Init(plain, r, rd), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_Init(heavy, r, rd), MOORDYN_SUCCESS);
+  // After MoorDyn_Init, at rest: the lines' forces and the lumps' weight and buoyancy.
+  double fPlain[6], fHeavy[6];
+  ASSERT_EQ(MoorDyn_GetBodyForce(MoorDyn_GetBody(plain, 1), fPlain), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetBodyForce(MoorDyn_GetBody(heavy, 1), fHeavy), MOORDYN_SUCCESS);
+  EXPECT_GT(norm(fPlain), 1e5);  // the chains' pull, not 0
+  std::array<double, 6> expected = loads(0.0, V{0, 0, 0}, 0.0, V{0, 0, 0}, 0.0);
+  for (int i = 0; i < 6; ++i) EXPECT_NEAR(fHeavy[i] - fPlain[i], expected[i], 1e-9 * norm(fPlain)) << i;
+  // Two host steps of 0.1 s: from rest to surge 1 m/s and yaw rate 0.1 rad/s, then to 1.5 m/s and 0.3 rad/s.
+  double t = 0.0, dt = 0.1, tHeavy = 0.0;
+  const double surge[2] = {1.0, 1.5}, yawRate[2] = {0.1, 0.3};
+  double previousSurge = 0.0, previousYawRate = 0.0;
+  for (int step = 0; step < 2; ++step) {
+    rd[0] = surge[step];
+    rd[5] = yawRate[step];
+    ASSERT_EQ(MoorDyn_Step(plain, r, rd, fPlain, &t, &dt), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_Step(heavy, r, rd, fHeavy, &tHeavy, &dt), MOORDYN_SUCCESS);
+    // The host's pose at the step's end (linear over it), its velocities and their change over the step.
+    const double yaw = r[5] + rd[5] * dt;
+    expected = loads(yaw, V{rd[0], 0.0, 0.0}, rd[5], V{(rd[0] - previousSurge) / dt, 0.0, 0.0},
+                     (rd[5] - previousYawRate) / dt);
+    for (int i = 0; i < 6; ++i)
+      EXPECT_NEAR(fHeavy[i] - fPlain[i], expected[i], 1e-9 * norm(fPlain)) << "step " << step << " " << i;
+    double reported[6];
+    ASSERT_EQ(MoorDyn_GetBodyForce(MoorDyn_GetBody(heavy, 1), reported), MOORDYN_SUCCESS);
+    for (int i = 0; i < 6; ++i) EXPECT_EQ(reported[i], fHeavy[i]);
+    // The points' velocities: v + w x r, the line's point and the free lump alike (MoorDyn's
+    // Body::setDependentStates).
+    for (int p : {3, 5}) {
+      const V& offset = lumps[p == 3 ? 0 : 1].offset;
+      const V arm{std::cos(yaw) * offset[0] - std::sin(yaw) * offset[1],
+                  std::sin(yaw) * offset[0] + std::cos(yaw) * offset[1], 0.0};
+      const V velocity = plus(V{rd[0], 0.0, 0.0}, cross(V{0.0, 0.0, rd[5]}, arm));
+      double v[3], x[3];
+      ASSERT_EQ(MoorDyn_GetPointVel(MoorDyn_GetPoint(heavy, static_cast<unsigned int>(p)), v),
+                MOORDYN_SUCCESS);
+      ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(heavy, static_cast<unsigned int>(p)), x),
+                MOORDYN_SUCCESS);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_NEAR(v[i], velocity[i], 1e-12) << "point " << p << " step " << step;
+        EXPECT_NEAR(x[i], r[i] + rd[i] * dt + arm[i], 1e-12) << "point " << p << " step " << step;
+      }
+    }
+    previousSurge = rd[0];
+    previousYawRate = rd[5];
+    for (int i = 0; i < 6; ++i) r[i] += rd[i] * dt;
+  }
+  EXPECT_EQ(MoorDyn_Close(plain), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDyn_Close(heavy), MOORDYN_SUCCESS);
+}
+
+// A point on a free body that no line holds is where the body puts it: MoorDyn's Body::setDependentStates,
+// reference point + R r with R = Rx Ry Rz of MoorDyn_GetBodyState's angles, velocity v + w x (R r).
+// BodiesAndRods.dat (a free body held by three nylon lines) with a point 11 at (5, 3, -2) on the body and no
+// line, at t = 0 and after 1 s of dynamics. Until 2026-12-06 its body-frame offset was returned as its
+// position.
+TEST(MoorDynApi, APointOnAFreeBodyWithoutALineMovesWithTheBody) {
+  std::ifstream in(std::string(tangle::test::kTestDataDir) + "/moordyn/BodiesAndRods.dat");
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string row = "10        Body1       0      0        0         0        0         0     0";
+  ASSERT_NE(deck.find(row), std::string::npos);
+  deck.insert(deck.find(row) + row.size(),
+              "\n11        Body1       5.0    3.0     -2.0       0        0         0     0");
+  const std::string path = (std::filesystem::temp_directory_path() / "tangle-free-body-point.dat").string();
+  std::ofstream(path) << deck;
+  MoorDyn system = MoorDyn_Create(path.c_str());
+  std::filesystem::remove(path);
+  ASSERT_NE(system, nullptr);
+  ASSERT_EQ(MoorDyn_Init(system, nullptr, nullptr), MOORDYN_SUCCESS);
+  double t = 0.0, dt = 0.05;
+  for (int step = 0; step <= 20; ++step) {
+    if (step > 0) {
+      ASSERT_EQ(MoorDyn_Step(system, nullptr, nullptr, nullptr, &t, &dt), MOORDYN_SUCCESS);
+    }
+    if (step != 0 && step != 20) continue;
+    double r[6], v[6], x[3], xd[3];
+    ASSERT_EQ(MoorDyn_GetBodyState(MoorDyn_GetBody(system, 1), r, v), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(system, 11), x), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetPointVel(MoorDyn_GetPoint(system, 11), xd), MOORDYN_SUCCESS);
+    const double ca = std::cos(r[3]), sa = std::sin(r[3]), cb = std::cos(r[4]), sb = std::sin(r[4]);
+    const double cc = std::cos(r[5]), sc = std::sin(r[5]);
+    // Rx(a) Ry(b) Rz(c), row by row.
+    const double rot[3][3] = {{cb * cc, -cb * sc, sb},
+                              {sa * sb * cc + ca * sc, -sa * sb * sc + ca * cc, -sa * cb},
+                              {-ca * sb * cc + sa * sc, ca * sb * sc + sa * cc, ca * cb}};
+    const double offset[3] = {5.0, 3.0, -2.0};
+    double arm[3];
+    for (int i = 0; i < 3; ++i)
+      arm[i] = rot[i][0] * offset[0] + rot[i][1] * offset[1] + rot[i][2] * offset[2];
+    const double wxa[3] = {v[4] * arm[2] - v[5] * arm[1], v[5] * arm[0] - v[3] * arm[2],
+                           v[3] * arm[1] - v[4] * arm[0]};
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_NEAR(x[i], r[i] + arm[i], 1e-9) << "t " << t << " " << i;
+      EXPECT_NEAR(xd[i], v[i] + wxa[i], 1e-9) << "t " << t << " " << i;
+    }
+  }
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
+// WaveKin 1 with a rod: MoorDyn's points for the host's kinematics are the lines' nodes, then the rods'
+// nodes, then the points, then the bodies with the ground body first (Waves::kinematicsForAllNodes):
+// RodHanging.txt (two 45-segment ropes holding a one-segment free rod) has 2 x 46 + 2 + 2 + 1 = 97. A flow
+// given across the rod at its two nodes alone reaches the rod (a tangle line): it swings with it. The old
+// API's functions are the same (MoorDyn.cpp forwards them). Until 2026-12-06 the rod's nodes were left out
+// (94 points) and the old API's functions did nothing.
+TEST(MoorDynApi, ExternalWaveKinematicsReachTheRods) {
+  std::ifstream in(std::string(tangle::test::kTestDataDir) + "/moordyn/RodHanging.txt");
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string options = "---------------------- OPTIONS";
+  ASSERT_NE(deck.find(options), std::string::npos);
+  const std::size_t next = deck.find('\n', deck.find(options));
+  deck.insert(next + 1, "1             WaveKin              external wave kinematics\n");
+  const std::string path = (std::filesystem::temp_directory_path() / "tangle-rod-wavekin.txt").string();
+  std::ofstream(path) << deck;
+  MoorDyn system = MoorDyn_Create(path.c_str());
+  ASSERT_NE(system, nullptr);
+  ASSERT_EQ(MoorDyn_Init(system, nullptr, nullptr), MOORDYN_SUCCESS);
+  unsigned int n = 0;
+  ASSERT_EQ(MoorDyn_ExternalWaveKinInit(system, &n), MOORDYN_SUCCESS);
+  ASSERT_EQ(n, 97u);
+  std::vector<double> r(3 * n);
+  ASSERT_EQ(MoorDyn_ExternalWaveKinGetCoordinates(system, r.data()), MOORDYN_SUCCESS);
+  MoorDynRod rod = MoorDyn_GetRod(system, 1);
+  double a[3], b[3];
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 0, a), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 1, b), MOORDYN_SUCCESS);
+  for (int k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(r[3 * 92 + k], a[k]);
+    EXPECT_DOUBLE_EQ(r[3 * 93 + k], b[k]);
+    EXPECT_EQ(r[3 * 96 + k], 0.0);  // the ground body
+  }
+  std::vector<double> u(3 * n, 0.0), ud(3 * n, 0.0);
+  u[3 * 92 + 1] = u[3 * 93 + 1] = 2.0;  // 2 m/s across the rod (along y) at its nodes only
+  ASSERT_EQ(MoorDyn_ExternalWaveKinSet(system, u.data(), ud.data(), 0.0), MOORDYN_SUCCESS);
+  double t = 0.0, dt = 0.05;
+  for (int s = 0; s < 20; ++s)
+    ASSERT_EQ(MoorDyn_Step(system, nullptr, nullptr, nullptr, &t, &dt), MOORDYN_SUCCESS);
+  double moved[3];
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 0, moved), MOORDYN_SUCCESS);
+  EXPECT_GT(moved[1] - a[1], 0.1) << "the rod does not drift with the flow at its nodes";  // 0.46 m
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+
+  // The old API on the same deck.
+  ASSERT_EQ(MoorDynInit(nullptr, nullptr, path.c_str()), MOORDYN_SUCCESS);
+  std::filesystem::remove(path);
+  ASSERT_EQ(externalWaveKinInit(), 97);
+  std::vector<double> old(3 * 97, -1.0);
+  getWaveKinCoordinates(old.data());
+  for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(old[3 * 92 + k], r[3 * 92 + k]);
+  setWaveKin(u.data(), ud.data(), 0.0);
+  double f[1];
+  t = 0.0;
+  for (int s = 0; s < 20; ++s) ASSERT_EQ(MoorDynStep(nullptr, nullptr, f, &t, &dt), MOORDYN_SUCCESS);
+  EXPECT_EQ(MoorDynClose(), MOORDYN_SUCCESS);
 }
 
 // A Coupled rod (6 DOFs: its end A and XYZ Euler angles turning the deck's axis, MoorDyn's Rod::COUPLED):

@@ -9,9 +9,10 @@
  * [m], [s]) and the others held. Each step is given the position at its start and the velocity
  * (x(t + DT) - x(t)) / DT, so that it ends exactly on the harmonic. MoorDyn_Init gets the velocity of the
  * first step (the point is already moving at t = 0), or zero when INIT_VELOCITY is 0 (default 1). Writes
- * time_s and the effective tension at end B of line 1 (MoorDyn_GetLineFairTen) [N], at t = 0 and after
- * every step, to OUT_CSV. Exits with 1 on any API error (the call is named on stderr), 2 on bad arguments.
- * C99. */
+ * time_s, the tension at end B of line 1 (MoorDyn_GetLineFairTen: its top segment's, as MoorDyn) [N] and
+ * the magnitude of the force there (MoorDyn_GetLineNodeForce at node N: the segment's pull and the top
+ * node's own loads, the force on the fairlead) [N], at t = 0 and after every step, to OUT_CSV. Exits with 1
+ * on any API error (the call is named on stderr), 2 on bad arguments. C99. */
 
 #include <math.h>
 #include <stdio.h>
@@ -46,7 +47,8 @@ int main(int argc, char** argv) {
   unsigned int dofs = 0, points = 0, p = 0;
   int firstCoupled = -1, status = 1;
   long steps = 0, k = 0;
-  double x0 = 0.0, t = 0.0, tension = 0.0;
+  double x0 = 0.0, t = 0.0, tension = 0.0, force[3] = {0.0, 0.0, 0.0};
+  unsigned int segments = 0;
 
   if (argc != 7 && argc != 8) {
     fprintf(stderr, "usage: moordyn_host DECK OUT_CSV AMPLITUDE PERIOD DURATION DT [INIT_VELOCITY]\n");
@@ -117,12 +119,15 @@ int main(int argc, char** argv) {
     fprintf(stderr, "moordyn_host: cannot write %s\n", argv[2]);
     goto cleanup;
   }
-  fprintf(out, "time_s,fairlead_tension_N\n");
+  fprintf(out, "time_s,fairlead_tension_N,fairlead_force_N\n");
+  if (failed(MoorDyn_GetLineN(line, &segments), "MoorDyn_GetLineN")) goto cleanup;
 
   if (initVelocity != 0.0) xd[firstCoupled] = amplitude * sin(2.0 * pi * dt / period) / dt;
   if (failed(MoorDyn_Init(system, x, xd), "MoorDyn_Init")) goto cleanup;
   if (failed(MoorDyn_GetLineFairTen(line, &tension), "MoorDyn_GetLineFairTen")) goto cleanup;
-  fprintf(out, "%.6f,%.9e\n", 0.0, tension);
+  if (failed(MoorDyn_GetLineNodeForce(line, segments, force), "MoorDyn_GetLineNodeForce")) goto cleanup;
+  fprintf(out, "%.6f,%.9e,%.9e\n", 0.0, tension,
+          sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]));
 
   steps = (long)floor(duration / dt + 0.5);
   for (k = 0; k < steps; ++k) {
@@ -136,7 +141,9 @@ int main(int argc, char** argv) {
     t = start;
     if (failed(MoorDyn_Step(system, x, xd, f, &t, &stepDt), "MoorDyn_Step")) goto cleanup;
     if (failed(MoorDyn_GetLineFairTen(line, &tension), "MoorDyn_GetLineFairTen")) goto cleanup;
-    fprintf(out, "%.6f,%.9e\n", t, tension);
+    if (failed(MoorDyn_GetLineNodeForce(line, segments, force), "MoorDyn_GetLineNodeForce")) goto cleanup;
+    fprintf(out, "%.6f,%.9e,%.9e\n", t, tension,
+            sqrt(force[0] * force[0] + force[1] * force[1] + force[2] * force[2]));
   }
   status = 0;
 

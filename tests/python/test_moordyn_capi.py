@@ -10,14 +10,17 @@ no ramp, for 30 s, twice:
 - by tests/capi/moordyn_host.c, a C99 host written against MoorDyn2.h only and linked against
   libtangle_moordyn: MoorDyn_Init, then MoorDyn_Step every dt with the position at the step start and the
   velocity of the chord to the next sample (MoorDyn's convention: the point moves at that constant velocity
-  through the step), the fairlead tension read with MoorDyn_GetLineFairTen;
+  through the step), the force on the fairlead read with MoorDyn_GetLineNodeForce at the top node (the
+  top segment's pull and the top node's own loads) and the fairlead tension with MoorDyn_GetLineFairTen
+  (MoorDyn's: the top segment's tension);
 - by `tangle run` of the deck converted with `tangle convert`, the fairlead end (the pinned end at the
-  origin) given the motion itself, the same time step and `ramp_time: 0`; the fairlead tension from
-  dynamics/end_forces.csv.
+  origin) given the motion itself, the same time step and `ramp_time: 0`; the fairlead end tension from
+  dynamics/end_forces.csv (signed: negative while the end element is compressed; its magnitude is that of
+  the force on the fairlead).
 
 1. Same kinematics, same answer: `tangle run` with the host's own motion (a linear `table` of the samples:
    piecewise-linear position, the velocity of the step that ends at each sample, zero acceleration, at rest
-   at t = 0 as the host is told with INIT_VELOCITY 0) gives the host's fairlead tension at every step within
+   at t = 0 as the host is told with INIT_VELOCITY 0) gives the host's fairlead force at every step within
    1e-5 of the tension range. The C API adds nothing and loses nothing. Both run the deck with
    `1e-8 tangleTolerance`: at the deck's own tolerance (1e-5 of the chain's 1.37 MN weight, 13.7 N per
    node, 2e-5 of the range) two runs whose motions differ by round-off may each stop at a different iterate
@@ -95,9 +98,9 @@ def work(tmp_path_factory) -> Path:
 
 
 def compare(work: Path, dt: float, motion: dict, init_velocity: int,
-            tight: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(times, C API tension, tangle run tension) at the common output times [s], [N], [N]; with `tight`, of
-    the deck converged to 1e-8."""
+            tight: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """(times, C API force on the fairlead, tangle run's fairlead end tension's magnitude, C API fairlead
+    tension) at the common output times [s], [N], [N], [N]; with `tight`, of the deck converged to 1e-8."""
     tag = f"{'table' if 'table' in motion else 'harmonic'}_{dt:g}{'_tight' if tight else ''}"
     host_csv = work / f"host_{tag}.csv"
     run(HOST, work / "tight.txt" if tight else DECK, host_csv, AMPLITUDE, PERIOD, DURATION, dt, init_velocity)
@@ -124,7 +127,8 @@ def compare(work: Path, dt: float, motion: dict, init_velocity: int,
     run_keys = np.rint(forces["time_s"] / dt).astype(int)
     common, hi, ri = np.intersect1d(host_keys, run_keys, return_indices=True)
     assert len(common) >= int(round(DURATION / dt)), f"only {len(common)} common output times"
-    return common * dt, host["fairlead_tension_N"][hi], forces[column][ri]
+    return (common * dt, host["fairlead_force_N"][hi], np.abs(forces[column][ri]),
+            host["fairlead_tension_N"][hi])
 
 
 def harmonic() -> dict:
@@ -153,7 +157,7 @@ def harmonic_coarse(work):
 
 
 def test_the_host_ran_the_whole_motion(same_kinematics):
-    t, capi, _ = same_kinematics
+    t, capi, _, _ = same_kinematics
     assert abs(t[-1] - DURATION) < 1e-9
     assert np.all(np.isfinite(capi))
     # The surge moves the fairlead 2 m towards and away from the anchor: the tension must swing.
@@ -162,7 +166,7 @@ def test_the_host_ran_the_whole_motion(same_kinematics):
 
 
 def test_with_the_hosts_kinematics_the_histories_are_the_same(same_kinematics):
-    t, capi, tangle = same_kinematics
+    t, capi, tangle, _ = same_kinematics
     scale = np.ptp(tangle[t >= SETTLED])
     worst = int(np.argmax(np.abs(capi - tangle)))
     assert np.all(np.abs(capi - tangle) <= 1e-5 * scale), (
@@ -170,7 +174,7 @@ def test_with_the_hosts_kinematics_the_histories_are_the_same(same_kinematics):
 
 
 def test_harmonic_tension_ranges_agree(harmonic_fine):
-    t, capi, tangle = harmonic_fine
+    t, capi, tangle, _ = harmonic_fine
     settled = t >= SETTLED
     range_capi, range_run = np.ptp(capi[settled]), np.ptp(tangle[settled])
     assert range_capi == pytest.approx(range_run, rel=1e-3), (
@@ -178,7 +182,7 @@ def test_harmonic_tension_ranges_agree(harmonic_fine):
 
 
 def test_harmonic_tension_histories_agree(harmonic_fine):
-    t, capi, tangle = harmonic_fine
+    t, capi, tangle, _ = harmonic_fine
     scale = np.ptp(tangle[t >= SETTLED])
     worst = int(np.argmax(np.abs(capi - tangle)))
     assert np.all(np.abs(capi - tangle) <= 5e-3 * scale), (
@@ -188,9 +192,10 @@ def test_harmonic_tension_histories_agree(harmonic_fine):
 
 def test_the_harmonic_difference_is_first_order_in_the_step(harmonic_coarse, harmonic_fine):
     def largest(histories):
-        t, capi, tangle = histories
+        t, capi, tangle, _ = histories
         settled = t >= SETTLED
         return np.max(np.abs(capi - tangle)[settled])
 
     order = math.log(largest(harmonic_coarse) / largest(harmonic_fine)) / math.log(COARSE_DT / FINE_DT)
     assert 0.8 <= order <= 1.2, f"observed order {order:.3f} of the C API's difference from the harmonic run"
+

@@ -25,6 +25,13 @@ void checkFinite(const double* values, int n, const char* name) {
     if (!std::isfinite(values[k])) throw InvalidValue(fmt::format("{}[{}] is {}", name, k, values[k]));
 }
 
+/// MoorDyn's body rotation from its XYZ Euler angles [rad]: R = Rx(a) Ry(b) Rz(c) (Misc.hpp, Euler2Quat).
+Mat3 eulerRotation(const Vec3& angles) {
+  return (Eigen::AngleAxisd(angles.x(), Vec3::UnitX()) * Eigen::AngleAxisd(angles.y(), Vec3::UnitY()) *
+          Eigen::AngleAxisd(angles.z(), Vec3::UnitZ()))
+      .toRotationMatrix();
+}
+
 }  // namespace
 
 MoorDynSystem::MoorDynSystem(const std::string& path)
@@ -80,14 +87,17 @@ MoorDynSystem::MoorDynSystem(const std::string& path)
       const int run = addRunPoint(fmt::format("body{}point{}", b.id, point.id), c.points[p].ends);
       h.runPoints.push_back(run);
       if (run >= 0) m_coupledIndex[p] = run;
+      // The point's own mass, volume and drag load the body (MoorDyn's Body::doRHS sums its points').
+      if (point.mass != 0.0 || point.volume != 0.0 || point.dragArea != 0.0)
+        h.pointLoads.push_back({point.mass, point.volume, point.dragArea, point.addedMass, point.position});
     }
-    if (b.mass != 0.0 || b.volume != 0.0)
+    if (b.mass != 0.0 || b.volume != 0.0 ||
+        std::any_of(b.dragArea.begin(), b.dragArea.end(), [](double a) { return a != 0.0; }))
       log(MOORDYN_WRN_LEVEL,
-          fmt::format(
-              "tangle (MoorDyn API): {}:{}: coupled body {}: the forces returned are those of the lines "
-              "on its points; its own weight, buoyancy, inertia and drag are the host's (MoorDyn adds "
-              "them)\n",
-              m_path, b.sourceLine, b.id));
+          fmt::format("tangle (MoorDyn API): {}:{}: coupled body {}: its own mass, volume, drag and added "
+                      "mass are not used (the host models them; MoorDyn v2.7.1's Body::setup sets them to "
+                      "zero for a coupled body too); its points' are\n",
+                      m_path, b.sourceLine, b.id));
     m_hostObjects.push_back(std::move(h));
   }
   for (std::size_t ri = 0; ri < m_coupling.deck.rods.size(); ++ri) {
@@ -160,6 +170,7 @@ void MoorDynSystem::initialize(const double* x, const double* xd) {
   m_run->initialize(position, velocity);
   m_tangleLines.clear();
   m_elementTension.clear();
+  updateHostForces();  // MoorDyn_GetBodyForce after MoorDyn_Init: the forces at the initial state
 }
 
 void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t, double dt) {
@@ -175,44 +186,73 @@ void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t
     hostToRun(x, xd, position, velocity, m_run->time(), dt);
     m_run->step(position, velocity, dt);
     m_elementTension.clear();
+    updateHostForces();
   }
-  // The objects' forces (and a rigid one's moment about its reference point, the sum over the line ends at
-  // its points), then the deck's coupled points' forces.
+  // The objects' forces, then the deck's coupled points' forces.
+  std::size_t ix = 0;
+  for (const HostObject& h : m_hostObjects) {
+    const int written = h.hostValues();
+    for (int i = 0; i < written; ++i) f[ix + static_cast<std::size_t>(i)] = h.force[i];
+    ix += static_cast<std::size_t>(written);
+  }
+  const std::vector<double>& forces = m_run->forces();
+  if (m_deckCoupledPoints > 0) std::copy(forces.begin(), forces.begin() + 3 * m_deckCoupledPoints, f + ix);
+  if (t != nullptr) *t = m_run->time();
+}
+
+void MoorDynSystem::updateHostForces() {
+  // A rigid object's force and moment about its reference point: the sum over the line ends at its points,
+  // and a body's points' own loads.
   const std::vector<double>& forces = m_run->forces();
   const auto runForce = [&](int run) {
     return Vec3(forces[3 * static_cast<std::size_t>(run)], forces[3 * static_cast<std::size_t>(run) + 1],
                 forces[3 * static_cast<std::size_t>(run) + 2]);
   };
-  std::size_t ix = 0;
+  const double time = m_run->time();
   for (HostObject& h : m_hostObjects) {
     h.force.setZero();
     if (h.pinned) {
       if (h.runPoint >= 0) h.force.head<3>() = runForce(h.runPoint);
-    } else {
-      for (std::size_t j = 0; j < h.runPoints.size(); ++j) {
-        if (h.runPoints[j] < 0) continue;
-        const Vec3 fp = runForce(h.runPoints[j]);
-        h.force.head<3>() += fp;
-        h.force.tail<3>() +=
-            (m_run->pointPosition(h.runPoints[j]) - hostReference(h, m_run->time())).cross(fp);
-      }
+      continue;
     }
-    const int written = h.hostValues();
-    for (int i = 0; i < written; ++i) f[ix + static_cast<std::size_t>(i)] = h.force[i];
-    ix += static_cast<std::size_t>(written);
+    const Vec3 reference = hostReference(h, time);
+    for (std::size_t j = 0; j < h.runPoints.size(); ++j) {
+      if (h.runPoints[j] < 0) continue;
+      const Vec3 fp = runForce(h.runPoints[j]);
+      h.force.head<3>() += fp;
+      h.force.tail<3>() += (m_run->pointPosition(h.runPoints[j]) - reference).cross(fp);
+    }
+    if (h.pointLoads.empty()) continue;
+    analysis::Simulation& sim = m_run->simulation();
+    const model::EnvironmentSpec& environment = sim.model().environment();
+    const Mat3 rotation = eulerRotation(Vec6(h.position + h.velocity * (time - h.time0)).tail<3>());
+    for (const RigidPoint& point : h.pointLoads) {
+      const Vec3 at = reference + rotation * point.offset;
+      h.force += rigidPointLoads(point, rotation, h.velocity.head<3>(), h.velocity.tail<3>(),
+                                 h.acceleration.head<3>(), h.acceleration.tail<3>(),
+                                 sim.hydro().fluidAt(at, time, true).velocity, environment.waterDensity,
+                                 environment.gravity);
+    }
   }
-  if (m_deckCoupledPoints > 0) std::copy(forces.begin(), forces.begin() + 3 * m_deckCoupledPoints, f + ix);
-  if (t != nullptr) *t = m_run->time();
 }
 
-namespace {
-/// MoorDyn's body rotation from its XYZ Euler angles [rad]: R = Rx(a) Ry(b) Rz(c) (Misc.hpp, Euler2Quat).
-Mat3 eulerRotation(const Vec3& angles) {
-  return (Eigen::AngleAxisd(angles.x(), Vec3::UnitX()) * Eigen::AngleAxisd(angles.y(), Vec3::UnitY()) *
-          Eigen::AngleAxisd(angles.z(), Vec3::UnitZ()))
-      .toRotationMatrix();
+Vec6 MoorDynSystem::rigidPointLoads(const RigidPoint& point, const Mat3& rotation, const Vec3& velocity,
+                                    const Vec3& angularVelocity, const Vec3& acceleration,
+                                    const Vec3& angularAcceleration, const Vec3& fluidVelocity,
+                                    double density, double gravity) {
+  const Vec3 arm = rotation * point.offset;
+  const Vec3 pointVelocity = velocity + angularVelocity.cross(arm);
+  const Vec3 pointAcceleration =
+      acceleration + angularAcceleration.cross(arm) + angularVelocity.cross(angularVelocity.cross(arm));
+  const Vec3 relative = fluidVelocity - pointVelocity;
+  const double inertia = point.mass + density * point.volume * point.addedMass;  // [kg]
+  const Vec3 force = Vec3(0.0, 0.0, (density * point.volume - point.mass) * gravity) +
+                     0.5 * density * point.dragArea * relative.norm() * relative -
+                     inertia * pointAcceleration;
+  Vec6 out;
+  out << force, arm.cross(force);
+  return out;
 }
-}  // namespace
 
 int MoorDynSystem::coupledDofCount() const {
   int n = 3 * m_deckCoupledPoints;
@@ -266,8 +306,11 @@ void MoorDynSystem::hostToRun(const double* x, const double* xd, std::vector<dou
   for (HostObject& c : m_hostObjects) {
     const int read = c.hostValues();
     for (int i = 0; i < read; ++i) {
+      const double v = xd[ix + static_cast<std::size_t>(i)];
+      // MoorDyn's MoorDyn::Step: the acceleration is the change of the host's velocity over its step.
+      c.acceleration[i] = dt > 0.0 ? (v - c.velocity[i]) / dt : 0.0;
       c.position[i] = x[ix + static_cast<std::size_t>(i)];
-      c.velocity[i] = xd[ix + static_cast<std::size_t>(i)];
+      c.velocity[i] = v;
     }
     ix += static_cast<std::size_t>(read);
     c.time0 = time0;
@@ -506,11 +549,9 @@ MoorDynSystem::NodeRef MoorDynSystem::deckNode(int l, unsigned int i, bool ends)
 }
 
 Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) {
+  // At an inner node of the deck line the chord through its neighbours; at the deck line's ends its end
+  // segment, with that segment's own tension (MoorDyn's Line::getNodeTen).
   const solver::LineSnapshot& s = *n.snapshot;
-  const int last = static_cast<int>(s.position.size()) - 1;
-  if (n.node == 0) return s.endTensionForceA;
-  if (n.node == last) return -s.endTensionForceB;
-  // An inner node of the tangle line: the chord through its neighbours on the deck line.
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
   const int low = std::min(map.firstNode, other);
@@ -521,13 +562,13 @@ Vec3 MoorDynSystem::tangleTension(const NodeRef& n, int l) {
   const double length = chord.norm();
   if (!(length > 0.0)) return Vec3::Zero();
   if (n.node != low && n.node != high) return s.tension[static_cast<std::size_t>(n.node)] * (chord / length);
-  return junctionTension(n, l) * (chord / length);
+  return segmentTension(n, l) * (chord / length);
 }
 
-double MoorDynSystem::junctionTension(const NodeRef& n, int l) {
-  // A junction of two deck lines (a free point inside the tangle line): the deck line's own end segment, with
-  // its own tension. The node's tension is the mean of the two segments, which differ by the point's load (a
-  // buoy's lift): the lines' forces on the point would not balance it.
+double MoorDynSystem::segmentTension(const NodeRef& n, int l) {
+  // The deck line's own end segment, with its own tension. At a junction of two deck lines (a free point
+  // inside the tangle line) the node's tension is the mean of the two segments, which differ by the point's
+  // load (a buoy's lift): the lines' forces on the point would not balance it.
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
   const int segment = n.node == std::min(map.firstNode, other) ? n.node : n.node - 1;
@@ -585,31 +626,36 @@ double MoorDynSystem::nodeCurvature(int l, unsigned int i) {
 }
 
 double MoorDynSystem::endTension(int l, int end) {
-  const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
-  const auto segments = static_cast<unsigned int>(map.segments);
-  const NodeRef n = deckNode(l, end == 0 ? 0u : segments, true);  // end tensions, or a junction's
-  const solver::LineSnapshot& s = *n.snapshot;
-  if (n.node == 0) return s.endTensionA;
-  if (n.node == static_cast<int>(s.position.size()) - 1) return s.endTensionB;
-  return junctionTension(n, l);  // a junction with another deck line inside the tangle line
+  const auto segments =
+      static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
+  return nodeTension(l, end == 0 ? 0u : segments).norm();
 }
 
 double MoorDynSystem::maxTension(int l) {
+  // MoorDyn_GetLineMaxTen: nodes 0 to N - 1 (MoorDyn2.cpp), the norm of each node's tension.
   const auto segments =
       static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
-  const NodeRef a = deckNode(l, 0);
-  const NodeRef b = deckNode(l, segments);
-  const std::vector<double>& tension = a.snapshot->tension;
-  const auto first = tension.begin() + std::min(a.node, b.node);
-  const auto last = tension.begin() + std::max(a.node, b.node) + 1;
-  return *std::max_element(first, last);
+  double largest = 0.0;
+  for (unsigned int i = 0; i < segments; ++i) largest = std::max(largest, nodeTension(l, i).norm());
+  return largest;
 }
 
 Vec3 MoorDynSystem::endForce(int l, int end) {
-  if (end == 0) return nodeTension(l, 0);
-  const auto segments =
-      static_cast<unsigned int>(m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
-  return -nodeTension(l, segments);
+  const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
+  const unsigned int i = end == 0 ? 0u : static_cast<unsigned int>(map.segments);
+  const NodeRef n = deckNode(l, i);
+  const solver::LineSnapshot& s = *n.snapshot;
+  // A tangle line's end: the force on its holder (oriented A to B of the tangle line, then of the deck line).
+  Vec3 tension;
+  if (n.node == 0) {
+    tension = s.endTensionForceA;
+  } else if (n.node == static_cast<int>(s.position.size()) - 1) {
+    tension = -s.endTensionForceB;
+  } else {
+    tension = tangleTension(n, l);  // a junction with another deck line: its end segment's tension
+  }
+  if (map.reversed) tension = -tension;
+  return end == 0 ? tension : Vec3(-tension);
 }
 
 int MoorDynSystem::pointType(int p) const {
@@ -648,14 +694,32 @@ Vec3 MoorDynSystem::endNodeVelocity(const std::pair<std::string, int>& end) {
 Vec3 MoorDynSystem::pointPosition(int p) {
   const io::MoorDynPointMap& map = pointMap(p);
   if (!initialized()) return map.position;
-  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
-  if (coupled >= 0) return m_run->pointPosition(coupled);
   Vec3 offset, position, velocity;
-  if (const HostObject* c = hostObjectOf(p, &offset)) {  // a point on a coupled body that no line holds
+  if (const HostObject* c = hostObjectOf(p, &offset)) {  // a point on a coupled body: where the host puts it
     hostObjectPoint(*c, offset, m_run->time(), position, velocity);
     return position;
   }
+  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
+  if (coupled >= 0) return m_run->pointPosition(coupled);
+  if (freeBodyPoint(p, position, velocity)) return position;
   return mappedPosition(map);
+}
+
+bool MoorDynSystem::freeBodyPoint(int p, Vec3& position, Vec3& velocity) {
+  const io::MoorDynPoint& point = m_coupling.deck.points[static_cast<std::size_t>(p)];
+  if (!initialized() || point.kind != io::MoorDynPointKind::Body || !pointMap(p).ends.empty()) return false;
+  const io::MoorDynBodyMap& body = m_coupling.conversion.bodies[static_cast<std::size_t>(point.body - 1)];
+  if (body.vessel.empty()) return false;
+  // The vessel's node: its reference point and the rotation Q from its axes at t = 0 (bodyState).
+  const model::Model& model = m_run->simulation().model();
+  const model::State& state = m_run->simulation().state();
+  const int node = model.vesselNode(model.vesselIndex(body.vessel));
+  const Vec3 arm = state.triad[static_cast<std::size_t>(node)] *
+                   Vec3(body.origin + body.rotation * point.position - body.reference);
+  const int dof = model.dofs().firstDof(node);
+  position = state.position[static_cast<std::size_t>(node)] + arm;
+  velocity = Vec3(state.velocity.segment<3>(dof)) + Vec3(state.velocity.segment<3>(dof + 3)).cross(arm);
+  return true;
 }
 
 Vec3 MoorDynSystem::mappedPosition(const io::MoorDynPointMap& map) {
@@ -671,14 +735,16 @@ Vec3 MoorDynSystem::mappedPosition(const io::MoorDynPointMap& map) {
 
 Vec3 MoorDynSystem::pointVelocity(int p) {
   const io::MoorDynPointMap& map = pointMap(p);
-  if (!initialized() || map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
-  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
-  if (coupled >= 0) return m_run->pointVelocity(coupled);
+  if (!initialized()) return Vec3::Zero();
   Vec3 offset, position, velocity;
-  if (const HostObject* c = hostObjectOf(p, &offset)) {
+  if (const HostObject* c = hostObjectOf(p, &offset)) {  // MoorDyn's Body::setDependentStates: v + w x r
     hostObjectPoint(*c, offset, m_run->time(), position, velocity);
     return velocity;
   }
+  const int coupled = m_coupledIndex[static_cast<std::size_t>(p)];
+  if (coupled >= 0) return m_run->pointVelocity(coupled);
+  if (freeBodyPoint(p, position, velocity)) return velocity;
+  if (map.kind == io::MoorDynPointKind::Fixed) return Vec3::Zero();
   return mappedVelocity(map);
 }
 
@@ -760,8 +826,11 @@ int MoorDynSystem::waveKinematicsPointCount() const {
     return name == "wavekin" && io::deckNumber(o.value) == 1.0;
   });
   if (!external) return 0;
-  int n = static_cast<int>(m_coupling.deck.points.size());
+  // MoorDyn's Waves::kinematicsForAllNodes: lines' nodes, rods' nodes, points, bodies (the ground body
+  // first).
+  int n = static_cast<int>(m_coupling.deck.points.size() + m_coupling.deck.bodies.size()) + 1;
   for (const io::MoorDynLine& l : m_coupling.deck.lines) n += l.segments + 1;
+  for (const io::MoorDynRod& r : m_coupling.deck.rods) n += r.segments + 1;
   return n;
 }
 
@@ -772,7 +841,15 @@ std::vector<double> MoorDynSystem::waveKinematicsPoints() {
   const auto put = [&r](const Vec3& x) { r.insert(r.end(), {x.x(), x.y(), x.z()}); };
   for (int l = 0; l < lineCount(); ++l)
     for (int i = 0; i <= deckLine(l).segments; ++i) put(nodePosition(l, static_cast<unsigned int>(i)));
+  for (int k = 0; k < rodCount(); ++k)
+    for (int i = 0; i <= deckRod(k).segments; ++i) put(rodNodePosition(k, static_cast<unsigned int>(i)));
   for (int p = 0; p < pointCount(); ++p) put(pointPosition(p));
+  put(Vec3::Zero());  // MoorDyn's ground body, at the origin
+  for (int b = 0; b < bodyCount(); ++b) {
+    Vec6 position, velocity;
+    bodyState(b, position, velocity);
+    put(position.head<3>());
+  }
   return r;
 }
 
@@ -791,15 +868,21 @@ void MoorDynSystem::setWaveKinematics(const double* U, const double* Ud) {
   std::vector<Vec3> velocity(nodes, Vec3::Zero()), acceleration(nodes, Vec3::Zero());
   std::vector<int> count(nodes, 0);
   int k = 0;
+  const auto add = [&](const NodeRef& ref) {
+    const auto global =
+        static_cast<std::size_t>(model.lines()[static_cast<std::size_t>(ref.modelLine)].firstNode + ref.node);
+    velocity[global] += Vec3(U[3 * k], U[3 * k + 1], U[3 * k + 2]);
+    acceleration[global] += Vec3(Ud[3 * k], Ud[3 * k + 1], Ud[3 * k + 2]);
+    ++count[global];
+  };
   for (int l = 0; l < lineCount(); ++l)
-    for (int i = 0; i <= deckLine(l).segments; ++i, ++k) {
-      const NodeRef ref = deckNode(l, static_cast<unsigned int>(i));
-      const auto global =
-          static_cast<std::size_t>(model.lines()[static_cast<std::size_t>(ref.modelLine)].firstNode + ref.node);
-      velocity[global] += Vec3(U[3 * k], U[3 * k + 1], U[3 * k + 2]);
-      acceleration[global] += Vec3(Ud[3 * k], Ud[3 * k + 1], Ud[3 * k + 2]);
-      ++count[global];
-    }
+    for (int i = 0; i <= deckLine(l).segments; ++i, ++k) add(deckNode(l, static_cast<unsigned int>(i)));
+  for (int r = 0; r < rodCount(); ++r) {
+    // A moving rod is a tangle line with the rod's nodes; a held or zero-length rod is not in the model.
+    const std::string& line = m_coupling.conversion.rods[static_cast<std::size_t>(r)].tangleLine;
+    for (int i = 0; i <= deckRod(r).segments; ++i, ++k)
+      if (!line.empty() && deckRod(r).segments > 0) add(tangleNode(line, i));
+  }
   for (std::size_t g = 0; g < nodes; ++g)
     if (count[g] > 1) {
       velocity[g] /= count[g];

@@ -147,8 +147,9 @@ class MoorDynSystem {
   /// angular velocity [rad/s], global axes. A free body's from its tangle vessel; a held one's where the deck
   /// puts it, at rest; before MoorDyn_Init the deck's.
   void bodyState(int b, Vec6& position, Vec6& velocity);
-  /// What MoorDyn_Step gave the host for a coupled body or rod at the last step: force [N] and moment [N m]
-  /// about its reference point (a pinned one's moment 0). @throws NotImplemented for others
+  /// What MoorDyn_Step gave the host for a coupled body or rod at the last step (after MoorDyn_Init, at the
+  /// initial state): force [N] and moment [N m] about its reference point (a pinned one's moment 0).
+  /// @throws NotImplemented for others
   Vec6 bodyForce(int b) const;
   Vec6 rodForce(int r) const;
   /// A free or pinned body's mass matrix about its reference point, global axes [kg, kg m, kg m^2]: tangle's
@@ -170,19 +171,22 @@ class MoorDynSystem {
   Vec3 nodeVelocity(int l, unsigned int i);
   /// At the deck line's ends: endForce(); at inner nodes: structural mass times acceleration [N].
   Vec3 nodeForce(int l, unsigned int i);
-  /// Tension vector from the deck line's end A towards its end B [N]: at a tangle line end the end tension
-  /// force (LineSnapshot::endTensionForceA/B, oriented A to B); elsewhere the node's effective tension along
-  /// the chord through the neighbouring nodes of the same deck line.
+  /// Tension vector from the deck line's end A towards its end B [N], as MoorDyn's Line::getNodeTen: at
+  /// the deck line's ends the tension of its end segment along that segment; elsewhere the node's effective
+  /// tension along the chord through the neighbouring nodes of the same deck line. (MoorDyn's includes the
+  /// segment's axial damping, tangle's is the elastic tension.)
   Vec3 nodeTension(int l, unsigned int i);
   /// LineSnapshot::curvature at the node [1/m].
   double nodeCurvature(int l, unsigned int i);
-  /// Effective tension at end `end` (0 A, 1 B) of the deck line [N]: LineSnapshot::endTensionA/B where the
-  /// deck line ends a tangle line, the tension of its own end segment at a junction of two deck lines.
+  /// Tension of the deck line's end segment at end `end` (0 A, 1 B) [N]: MoorDyn_GetLineFairTen's (end B),
+  /// the norm of nodeTension there. (The end tension itself, extrapolated to the end node, is tangle's
+  /// LineSnapshot::endTensionA/B in its own results; it differs by about half a segment's weight.)
   double endTension(int l, int end);
-  /// Largest effective tension over the deck line's nodes [N].
+  /// Largest norm of nodeTension over the deck line's nodes 0 to N - 1 [N] (MoorDyn_GetLineMaxTen's range).
   double maxTension(int l);
   /// Force the deck line exerts on what holds its end `end` (0 A, 1 B) [N], pointing from the end into the
-  /// line: nodeTension at end A, minus nodeTension at end B.
+  /// line: at a tangle line end the end tension force (LineSnapshot::endTensionForceA/B, the end segment's
+  /// tension and the end node's own loads), at a junction of two deck lines its end segment's tension.
   Vec3 endForce(int l, int end);
   /// @}
 
@@ -190,14 +194,16 @@ class MoorDynSystem {
   /// The points where the host gives the fluid kinematics, in MoorDyn's order (Waves.cpp,
   /// kinematicsForAllNodes): every node of every deck line (0 to N, in deck order), then every deck point.
   /// @{
-  /// Their number; 0 when the deck's WaveKin is not 1 (as MoorDyn).
+  /// Their number; 0 when the deck's WaveKin is not 1 (as MoorDyn): every node of every deck line, then
+  /// every node of every rod (0 to NumSegs), then every point, then MoorDyn's ground body and every body.
   int waveKinematicsPointCount() const;
   /// Their current positions [m], 3 values per point. @throws InvalidValue before initialize
   std::vector<double> waveKinematicsPoints();
   /// Fluid velocity U [m/s] and acceleration Ud [m/s^2] at those points (3 values per point each), used by
   /// the dynamics from the next step on (hydro::HydroLoads::setNodeKinematics: each element takes the mean
-  /// of its nodes; a node shared by two deck lines takes the mean of its values). The points' own values
-  /// are not used: attachments (free points' mass, buoyancy, drag) see the current only.
+  /// of its nodes; a node shared by two deck lines or a line and a rod takes the mean of its values). The
+  /// nodes of a moving rod (a tangle line) take theirs; the values at the points, the bodies and the nodes
+  /// of a held rod are not used: attachments, vessels and held rods see the current only.
   /// @throws InvalidValue before initialize, without WaveKin 1, for null or non-finite values
   void setWaveKinematics(const double* U, const double* Ud);
   /// @}
@@ -214,6 +220,26 @@ class MoorDynSystem {
   /// Coupled: CoupledRun::forces(); others: the sum of endForce() of the attached deck line ends [N].
   Vec3 pointForce(int p);
   /// @}
+
+  /// A point's own mass, volume and drag on a body the host moves rigidly (rigidPointLoads).
+  struct RigidPoint {
+    double mass = 0.0;           ///< m [kg]
+    double volume = 0.0;         ///< V [m^3]
+    double dragArea = 0.0;       ///< CdA [m^2]
+    double addedMass = 0.0;      ///< Ca [-]
+    Vec3 offset = Vec3::Zero();  ///< in the body's axes from its reference point [m]
+  };
+  /// The loads of `point` about the body's reference point [N, N m], global axes (MoorDyn's Point::doRHS and
+  /// getNetForceAndMass): weight and buoyancy (rho V - m) g, drag 1/2 rho CdA |u - v| (u - v) with u the
+  /// fluid velocity [m/s] at the point and v its velocity, and the inertia -(m + rho V Ca) a of its
+  /// acceleration a = a_ref + alpha x r + omega x (omega x r), r = rotation * offset. MoorDyn v2.7.1 leaves
+  /// the centripetal term's moment out; tangle takes the moment of the whole force. The body's reference
+  /// point moves with velocity [m/s] and acceleration [m/s^2], it turns at angularVelocity [rad/s] and
+  /// angularAcceleration [rad/s^2]; density [kg/m^3], gravity [m/s^2].
+  static Vec6 rigidPointLoads(const RigidPoint& point, const Mat3& rotation, const Vec3& velocity,
+                              const Vec3& angularVelocity, const Vec3& acceleration,
+                              const Vec3& angularAcceleration, const Vec3& fluidVelocity, double density,
+                              double gravity);
 
   /// @name Deck rods (index r = deck id - 1; node i from 0 at the rod's end A to NumSegs)
   /// @{
@@ -249,9 +275,8 @@ class MoorDynSystem {
   NodeRef deckNode(int l, unsigned int i, bool ends = false);
   /// The tension vector at `n` oriented from the tangle line's end A to its end B [N]; `l` is the deck line.
   Vec3 tangleTension(const NodeRef& n, int l);
-  /// Tension of deck line l's own end segment at `n`, a junction with another deck line inside the tangle
-  /// line [N].
-  double junctionTension(const NodeRef& n, int l);
+  /// Tension of deck line l's own end segment at `n`, one of its end nodes [N].
+  double segmentTension(const NodeRef& n, int l);
   Vec3 velocity(const NodeRef& n);
   /// Position / velocity of a tangle line end (name, 0 A / 1 B).
   Vec3 endNodePosition(const std::pair<std::string, int>& end);
@@ -281,6 +306,10 @@ class MoorDynSystem {
     Vec6 position = Vec6::Zero();  ///< the host's at time0 (pinned: the first three)
     Vec6 velocity =
         Vec6::Zero();           ///< and their rates [m/s, rad/s] (the angles' taken as the angular velocity)
+    /// Their second rates over the last step [m/s^2, rad/s^2]: the change of the host's velocities over
+    /// its dt (MoorDyn's MoorDyn::Step); 0 at initialize.
+    Vec6 acceleration = Vec6::Zero();
+    std::vector<RigidPoint> pointLoads;  ///< rigid body: its deck points with mass, volume or drag
     double time0 = 0.0;         ///< [s]
     Vec6 force = Vec6::Zero();  ///< what the host got at the last step: force [N], moment [N m] (pinned: 0)
     /// Values it reads from and writes to the host's arrays.
@@ -303,6 +332,12 @@ class MoorDynSystem {
                        Vec3& velocity) const;
   /// The rigid host object whose points include deck point p (its offset into *offset), or null.
   const HostObject* hostObjectOf(int p, Vec3* offset) const;
+  /// Every host object's force (HostObject::force) at the run's state: the coupled points' forces of the
+  /// run, and for a rigid body about its reference point with its points' own loads (rigidPointLoads).
+  void updateHostForces();
+  /// A point on a free body that no line holds: its position [m] and velocity [m/s] from the body's vessel.
+  /// False when p is not such a point (or before initialize).
+  bool freeBodyPoint(int p, Vec3& position, Vec3& velocity);
   /// The rigid host object that is rod r (a Coupled rod), or null.
   const HostObject* rigidRod(int r) const;
   /// The 6x6 mass of the model's nodes `nodes` under the rigid motions about `reference` [m]: M_ij = phi_i^T

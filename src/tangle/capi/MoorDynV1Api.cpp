@@ -72,19 +72,33 @@ int MoorDynClose(void) {
 }
 
 int externalWaveKinInit(void) {
-  capi::reportError(nullptr, "externalWaveKinInit",
-                    "not implemented by tangle: external wave kinematics (WaveKin 1); 0 points returned");
-  return 0;
+  // MoorDyn's MoorDyn.cpp: the system's count, 0 when there is no system or on an error.
+  MoorDyn system = current();
+  if (system == nullptr) {
+    reportNoSystem("externalWaveKinInit");
+    return 0;
+  }
+  unsigned int n = 0;
+  if (MoorDyn_ExternalWaveKinInit(system, &n) != MOORDYN_SUCCESS) return 0;
+  return static_cast<int>(n);
 }
 
-void getWaveKinCoordinates(double* /*r_out*/) {
-  capi::reportError(nullptr, "getWaveKinCoordinates",
-                    "not implemented by tangle: external wave kinematics (WaveKin 1); nothing written");
+void getWaveKinCoordinates(double* r_out) {
+  MoorDyn system = current();
+  if (system == nullptr) {
+    reportNoSystem("getWaveKinCoordinates");
+    return;
+  }
+  MoorDyn_ExternalWaveKinGetCoordinates(system, r_out);
 }
 
-void setWaveKin(const double* /*U_in*/, const double* /*Ud_in*/, double /*t_in*/) {
-  capi::reportError(nullptr, "setWaveKin",
-                    "not implemented by tangle: external wave kinematics (WaveKin 1); ignored");
+void setWaveKin(const double* U_in, const double* Ud_in, double t_in) {
+  MoorDyn system = current();
+  if (system == nullptr) {
+    reportNoSystem("setWaveKin");
+    return;
+  }
+  MoorDyn_ExternalWaveKinSet(system, U_in, Ud_in, t_in);
 }
 
 double GetFairTen(int l) {
