@@ -230,6 +230,45 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
+// A line of one segment (coupled_chain.txt's chain, 64 m from an anchor at (40, 0, -50) to the fairlead at
+// the origin: taut, 0.05 % stretched): the force on the fairlead (MoorDyn_GetLineNodeForce at the top,
+// MoorDyn's Fnet there) is the segment's pull and half its submerged weight, (390 - rho pi / 4 0.252^2) 9.81
+// x 64 / 2 = 108 kN, after MoorDyn_Init (the statics' exact end force) and after steps holding the fairlead
+// alike (1e-3 of that weight: the dynamics' end force is extrapolated, here with the element's own weight as
+// the slope). Until 2026-12-06 the steps dropped the weight (858 N against the statics' 116 kN on the
+// reviewer's deck).
+TEST(MoorDynApi, OneSegmentLineKeepsItsEndForceFromInitToStep) {
+  std::ifstream in(deckPath());
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string anchorRow = "1     Fixed       400.0   0.0     -50.0";
+  const std::string lineRow = "1    chain      1        2        410.0     41";
+  ASSERT_NE(deck.find(anchorRow), std::string::npos);
+  ASSERT_NE(deck.find(lineRow), std::string::npos);
+  deck.replace(deck.find(anchorRow), anchorRow.size(), "1     Fixed       40.0    0.0     -50.0");
+  deck.replace(deck.find(lineRow), lineRow.size(), "1    chain      1        2        64.0      1 ");
+  const std::string path = (std::filesystem::temp_directory_path() / "tangle-one-segment.txt").string();
+  std::ofstream(path) << deck;
+  MoorDyn system = MoorDyn_Create(path.c_str());
+  std::filesystem::remove(path);
+  ASSERT_NE(system, nullptr);
+  double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3], t = 0.0, dt = 0.05;
+  ASSERT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_SUCCESS);
+  MoorDynLine line = MoorDyn_GetLine(system, 1);
+  const double halfWeight = (390.0 - 1025.0 * 3.141592653589793 / 4.0 * 0.252 * 0.252) * 9.81 * 64.0 / 2.0;
+  for (int step = 0; step <= 5; ++step) {
+    if (step > 0) {
+      ASSERT_EQ(MoorDyn_Step(system, x, xd, f, &t, &dt), MOORDYN_SUCCESS);
+    }
+    double ten[3], force[3];
+    ASSERT_EQ(MoorDyn_GetLineNodeTen(line, 1, ten), MOORDYN_SUCCESS);
+    ASSERT_EQ(MoorDyn_GetLineNodeForce(line, 1, force), MOORDYN_SUCCESS);
+    EXPECT_GT(norm(ten), 1e5) << "step " << step;
+    EXPECT_NEAR(force[0], -ten[0], 1e-3 * halfWeight) << "step " << step;
+    EXPECT_NEAR(force[2], -ten[2] - halfWeight, 1e-3 * halfWeight) << "step " << step;
+  }
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
 // The jumper deck has WaveKin 1: the host gives the fluid kinematics at every line node (0 to 68), at the
 // two points and at MoorDyn's ground body, in MoorDyn's order (Waves::kinematicsForAllNodes: lines, rods,
 // points, bodies); a current across the line raises the top tension over still water.

@@ -36,13 +36,24 @@ bool hasAttachment(const model::Model& model, int node) {
 /// Force vector at an end point [N], pointing from node 1 to node 2 of the end element (into the line
 /// at end A, out of it at end B), extrapolated as documented in LineSnapshot::endTensionA.
 /// `end` is the end element, `inner` the one next to it (or nullptr); `endBeam`, `innerBeam` their beam
-/// section forces (nullptr for bars).
+/// section forces (nullptr for bars); `side` +1 at end A, -1 at end B.
 Vec3 endPointForce(const model::Model& model, const model::State& state, const model::LineElement& end,
                    double endTension, const element::BeamSectionForces* endBeam,
                    const model::LineElement* inner, double innerTension,
-                   const element::BeamSectionForces* innerBeam, int sharedNode) {
+                   const element::BeamSectionForces* innerBeam, int sharedNode, double side) {
   const Vec3 fEnd = elementForce(state, end, endTension, endBeam);
-  if (!inner || inner->type != end.type || hasAttachment(model, sharedNode)) return fEnd;
+  if (!inner) {
+    // The end element alone (a one-element line, or its neighbour parted): the force vector's slope along
+    // the line is its own distributed weight, dT/ds = -q (equilibrium of a length ds; s from end A), so
+    // the end point is half an element of weight beyond the mid-point: fEnd + side q l / 2, side +1 at end
+    // A, -1 at end B. Drag and inertia are left out. Submerged when its mid-point is below still water.
+    const model::EnvironmentSpec& env = model.environment();
+    const double mid = 0.5 * (state.position[end.node1].z() + state.position[end.node2].z());
+    const double weight = mid < 0.0 ? end.type->submergedWeight(env.waterDensity, env.gravity)
+                                    : end.type->totalMassPerLength() * env.gravity;  // [N/m]
+    return fEnd + Vec3(0.0, 0.0, -side * 0.5 * end.restLength * weight);
+  }
+  if (inner->type != end.type || hasAttachment(model, sharedNode)) return fEnd;
   const Vec3 fInner = elementForce(state, *inner, innerTension, innerBeam);
   // Mid-points are 0.5 (l_end + l_inner) apart; the end point is 0.5 l_end beyond the end mid-point.
   const double gap = 0.5 * (end.restLength + inner->restLength);
@@ -222,27 +233,27 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const auto beamOf = [&](int e) { return els[e].beam ? &beamForces[e] : nullptr; };
       s.endTensionForceA = endPointForce(model, state, els[first], tension[first], beamOf(first),
                                          twoA ? &els[first + 1] : nullptr, twoA ? tension[first + 1] : 0.0,
-                                         twoA ? beamOf(first + 1) : nullptr, line.firstNode + 1);
+                                         twoA ? beamOf(first + 1) : nullptr, line.firstNode + 1, 1.0);
       // End B: the element force points from node 1 to node 2, out of the line; the line pulls end B back.
       s.endTensionForceB = -endPointForce(model, state, els[last], tension[last], beamOf(last),
                                           twoB ? &els[last - 1] : nullptr, twoB ? tension[last - 1] : 0.0,
-                                          twoB ? beamOf(last - 1) : nullptr, line.lastNode() - 1);
+                                          twoB ? beamOf(last - 1) : nullptr, line.lastNode() - 1, -1.0);
       // A compressed end element (a line pushed on) gives a negative end tension.
       const double signA = s.tension.front() < 0.0 ? -1.0 : 1.0;
       const double signB = s.tension.back() < 0.0 ? -1.0 : 1.0;
       // The end tension is the axial quantity (effective tension): the same extrapolation without the
       // beams' shear. For a bar line the two are one vector.
       const bool beams = els[first].beam || els[last].beam;
-      const Vec3 axialA = !beams
-                              ? s.endTensionForceA
-                              : endPointForce(model, state, els[first], tension[first], nullptr,
-                                              twoA ? &els[first + 1] : nullptr,
-                                              twoA ? tension[first + 1] : 0.0, nullptr, line.firstNode + 1);
+      const Vec3 axialA =
+          !beams ? s.endTensionForceA
+                 : endPointForce(model, state, els[first], tension[first], nullptr,
+                                 twoA ? &els[first + 1] : nullptr, twoA ? tension[first + 1] : 0.0, nullptr,
+                                 line.firstNode + 1, 1.0);
       const Vec3 axialB = !beams
                               ? s.endTensionForceB
                               : endPointForce(model, state, els[last], tension[last], nullptr,
                                               twoB ? &els[last - 1] : nullptr, twoB ? tension[last - 1] : 0.0,
-                                              nullptr, line.lastNode() - 1);
+                                              nullptr, line.lastNode() - 1, -1.0);
       s.endTensionA = signA * axialA.norm();
       s.endTensionB = signB * axialB.norm();
       // A free end with nothing attached carries no force: the extrapolation from the elements would give

@@ -23,11 +23,13 @@ struct LineSnapshot {
   std::vector<double> torque;        ///< torsional moment about the line axis [N m] (0 for cables)
   std::vector<Vec3> rotation;        ///< orientation of the node triad as a rotation vector from the global
                                      ///< axes [deg] (zero for cable nodes, which carry no rotation)
-  /// End tension: the effective tension at the end point itself [N] (axial: beams' shear excluded), the one definition used by the
-  /// terminal, summary.json and end_forces.csv. The element force vectors (tension along each chord) are
-  /// taken at the element mid-points and extrapolated linearly in unstretched arc length to the end
-  /// node (exact for a uniform catenary, whose force vector is linear in arc length); the element next
-  /// to it is used only when no point load sits between the two (same line type, no attachment).
+  /// End tension: the effective tension at the end point itself [N] (axial: beams' shear excluded), the one
+  /// definition used by the terminal, summary.json and end_forces.csv. The element force vectors (tension
+  /// along each chord) are taken at the element mid-points and extrapolated linearly in unstretched arc
+  /// length to the end node (exact for a uniform catenary, whose force vector is linear in arc length); the
+  /// element next to it is used only when no point load sits between the two (same line type, no attachment).
+  /// An end element with no neighbour (a one-element line) takes its own distributed weight as the slope:
+  /// half an element of (submerged) weight beyond its mid-point.
   double endTensionA = 0.0;
   double endTensionB = 0.0;
   /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N],
