@@ -74,6 +74,17 @@ Vec3 nodeLoad(const model::Model& model, const LoadTerms& t, int node) {
   return f;
 }
 
+/// The part of the seabed's vertical reaction at a line's end node `node` that does not carry the line [N]
+/// (upward positive): what exceeds the line's own weight lumped on the node. The seabed first carries the
+/// line's own weight there; the rest holds up what is at the end (a clump at a free point) or pushes on a
+/// support held into the seabed (an anchor or a pinned end at seabed level), which is not the line's pull.
+double seabedBeyondLine(const model::Model& model, const LoadTerms& t, int node) {
+  const int d = model.dofs().firstDof(node);
+  const double reaction = -t.seabed[d + 2];                 // external, upward positive
+  const double ownWeight = std::max(t.weight[d + 2], 0.0);  // the line's weight on the node, downward
+  return reaction > ownWeight ? reaction - ownWeight : 0.0;
+}
+
 Vec3 sumOver(const model::DofMap& dofs, const VecX& force, int first, int last) {
   Vec3 sum = Vec3::Zero();
   for (int node = first; node <= last; ++node) sum -= force.segment<3>(dofs.firstDof(node));
@@ -122,8 +133,13 @@ void setStaticEndForces(Simulation& simulation, std::vector<solver::LineSnapshot
     const int lastElement = line.firstElement + line.elementCount - 1;
     // The end node's balance: support S, the line's loads on the node f, the end element's section force
     // (on node A: +T, it pulls the node into the line; on node B: -T). The line pulls its support with -S.
-    s.endTensionForceA = section(firstElement) + nodeLoad(model, terms, line.firstNode);
-    s.endTensionForceB = -section(lastElement) + nodeLoad(model, terms, line.lastNode());
+    // The seabed's reaction at the node beyond the line's own weight there is not the line's: it holds up
+    // what is at the end, or pushes on a support held into the seabed (seabedBeyondLine).
+    const auto beyond = [&](int node) { return Vec3(0.0, 0.0, seabedBeyondLine(model, terms, node)); };
+    s.endTensionForceA =
+        section(firstElement) + nodeLoad(model, terms, line.firstNode) - beyond(line.firstNode);
+    s.endTensionForceB =
+        -section(lastElement) + nodeLoad(model, terms, line.lastNode()) - beyond(line.lastNode());
     // The end tension is the axial part: along the line's tangent at a beam's end (its triad's first axis),
     // the whole force at a cable's (which carries no shear).
     const auto axial = [&](const Vec3& force, int node, int element, double towardsLine) {
@@ -155,7 +171,12 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
     solver::ForceBalance b;
     b.name = line.name;
     b.scale = simulation.assembler().nodeForceScale()[static_cast<std::size_t>(first)];
-    const Vec3 bed = sumOver(dofs, t.seabed, first, last);
+    // The seabed's reaction at the end nodes beyond the line's own weight is not the line's: the end forces
+    // leave it out (setStaticEndForces), and so does the line's balance.
+    const Vec3 bed =
+        sumOver(dofs, t.seabed, first, last) -
+        Vec3(0.0, 0.0,
+             seabedBeyondLine(model, t, first) + (last != first ? seabedBeyondLine(model, t, last) : 0.0));
     // What is attached at an end node is at the end (its pull is in the end force), not on the line.
     Vec3 attached = sumOver(dofs, t.attachments, first + 1, last - 1);
     const Vec3 endAttachmentDrag = -sumOver(dofs, t.endAttachmentDrag, first, first) -
@@ -183,8 +204,13 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
     // What is attached at the carrier node is at the point (external loads positive).
     const int d = dofs.firstDof(p.node);
     const Vec3 body = -t.attachments.segment<3>(d), drag = -t.endAttachmentDrag.segment<3>(d);
-    b.terms = {
-        {"weight and buoyancy", body}, {"drag", drag}, {"lines", endPulls(model, snapshot, p.endNodes)}};
+    // The seabed under the line ends at the point beyond their own weight holds up the point's body.
+    Vec3 bed = Vec3::Zero();
+    for (const int node : p.endNodes) bed.z() += seabedBeyondLine(model, t, node);
+    b.terms = {{"weight and buoyancy", body},
+               {"drag", drag},
+               {"seabed", bed},
+               {"lines", endPulls(model, snapshot, p.endNodes)}};
     closeBodyBalance(b, p.endNodes.size(), nodeBound);
     audit.points.push_back(std::move(b));
   }
@@ -202,6 +228,9 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
       b.terms = {{"body loads", r.body.head<3>()},
                  {"station keeping", r.hold.head<3>()},
                  {"lines", endPulls(model, snapshot, r.endNodes)}};
+      Vec3 bed = Vec3::Zero();  // the seabed under the line ends beyond their own weight (seabedBeyondLine)
+      for (const int node : r.endNodes) bed.z() += seabedBeyondLine(model, t, node);
+      if (bed.z() != 0.0) b.terms.push_back({"seabed", bed});
       if (simulation.hullContact())
         b.terms.push_back({"hull contact", -t.contact.segment<3>(dofs.firstDof(r.node))});
       closeBodyBalance(b, r.endNodes.size(), nodeBound);
