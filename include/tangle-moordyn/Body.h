@@ -40,7 +40,9 @@ int DECLDIR MoorDyn_GetBodyAngle(MoorDynBody b, double r[3]);
 int DECLDIR MoorDyn_GetBodyVel(MoorDynBody b, double rd[3]);
 /* Angular velocity, global axes [rad/s]. */
 int DECLDIR MoorDyn_GetBodyAngVel(MoorDynBody b, double rd[3]);
-/* Not implemented (MOORDYN_NON_IMPLEMENTED): the net force and moment on the body. */
+/* A coupled body's force [N] and moment [N m] about its reference point: what MoorDyn_Step returned for it
+ * (after MoorDyn_Init, at the initial state). Not implemented (MOORDYN_NON_IMPLEMENTED) for a free or fixed
+ * body. */
 int DECLDIR MoorDyn_GetBodyForce(MoorDynBody b, double f[6]);
 /* Not implemented (MOORDYN_NON_IMPLEMENTED): the body's mass matrix. */
 int DECLDIR MoorDyn_GetBodyM(MoorDynBody b, double m[6][6]);

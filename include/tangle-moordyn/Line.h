@@ -54,9 +54,10 @@ int DECLDIR MoorDyn_GetLineNodeVel(MoorDynLine l, unsigned int i, double vel[3])
  * its acceleration, the net force on it without the added mass (zero at rest; MoorDyn's includes the
  * added mass). */
 int DECLDIR MoorDyn_GetLineNodeForce(MoorDynLine l, unsigned int i, double f[3]);
-/* Tension vector at node i [N], pointing from end A towards end B along the line: the effective tension of
- * the node (the mean of its two segments; at the ends the end tension; at a free point joining two lines the
- * line's own end segment) along the line's direction there. */
+/* Tension vector at node i [N], pointing from end A towards end B along the line: at inner nodes the
+ * effective tension of the node (the mean of its two segments) along the line's direction there; at the
+ * line's two ends its end segment's tension along that segment (MoorDyn's Line::getNodeTen; MoorDyn's adds
+ * the segment's axial damping). */
 int DECLDIR MoorDyn_GetLineNodeTen(MoorDynLine l, unsigned int i, double t[3]);
 /* Not implemented: tangle does not split the node forces by source (MOORDYN_NON_IMPLEMENTED). */
 int DECLDIR MoorDyn_GetLineNodeBendStiff(MoorDynLine l, unsigned int i, double f[3]);

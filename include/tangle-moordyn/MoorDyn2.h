@@ -80,7 +80,11 @@ MoorDynWaves DECLDIR MoorDyn_GetWaves(MoorDyn system);
 /* NULL: tangle's seabed is flat (MoorDyn's 3D seafloor is not supported). */
 MoorDynSeafloor DECLDIR MoorDyn_GetSeafloor(MoorDyn system);
 
-/* External wave kinematics (MoorDyn's WaveKin = 1): not implemented, MOORDYN_NON_IMPLEMENTED. */
+/* External wave kinematics (a deck with option WaveKin 1; docs/moordyn.md): the points in MoorDyn's order
+ * (every line's nodes, every rod's nodes, every point, the ground body, every body), their positions, and
+ * the fluid velocity and acceleration there used from the next step on. Without WaveKin 1 there are no
+ * points (MoorDyn counts them whatever WaveKin is) and Set returns MOORDYN_INVALID_VALUE: kinematics the
+ * model would not use. */
 int DECLDIR MoorDyn_ExternalWaveKinInit(MoorDyn system, unsigned int* n);
 int DECLDIR MoorDyn_ExternalWaveKinGetN(MoorDyn system, unsigned int* n);
 int DECLDIR MoorDyn_ExternalWaveKinGetCoordinates(MoorDyn system, double* r);

@@ -796,6 +796,33 @@ TEST(MoorDynApi, APointOnAFreeBodyWithoutALineMovesWithTheBody) {
   EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
 }
 
+// A rod fixed to a fixed body is where the body puts it: BodiesAndRods.dat with its body made Fixed at
+// (10, 5, 0) rolled 30 deg: rod 1's end B, (0, 0, 15) in the body's axes, is at (10, 5, 0) + Rx(30 deg) (0,
+// 0, 15) = (10, -2.5, 12.990) before and after MoorDyn_Init (1e-9 m). Until 2026-12-06 its body-frame
+// coordinates were returned, and given to a WaveKin 1 host as its kinematics points.
+TEST(MoorDynApi, ARodOnAFixedBodyIsWhereTheBodyPutsIt) {
+  std::ifstream in(std::string(tangle::test::kTestDataDir) + "/moordyn/BodiesAndRods.dat");
+  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string row = "1       free      0     0      0     0       0      0";
+  ASSERT_NE(deck.find(row), std::string::npos);
+  deck.replace(deck.find(row), row.size(), "1       fixed     10    5      0     30      0      0");
+  const std::string path = (std::filesystem::temp_directory_path() / "tangle-fixed-body-rod.dat").string();
+  std::ofstream(path) << deck;
+  MoorDyn system = MoorDyn_Create(path.c_str());
+  std::filesystem::remove(path);
+  ASSERT_NE(system, nullptr);
+  const double roll = 30.0 * std::numbers::pi / 180.0;
+  const double expected[3] = {10.0, 5.0 - 15.0 * std::sin(roll), 15.0 * std::cos(roll)};
+  MoorDynRod rod = MoorDyn_GetRod(system, 1);
+  double b[3];
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 3, b), MOORDYN_SUCCESS);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(b[k], expected[k], 1e-9) << "before Init, " << k;
+  ASSERT_EQ(MoorDyn_Init(system, nullptr, nullptr), MOORDYN_SUCCESS);
+  ASSERT_EQ(MoorDyn_GetRodNodePos(rod, 3, b), MOORDYN_SUCCESS);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(b[k], expected[k], 1e-9) << "after Init, " << k;
+  EXPECT_EQ(MoorDyn_Close(system), MOORDYN_SUCCESS);
+}
+
 // WaveKin 1 with a rod: MoorDyn's points for the host's kinematics are the lines' nodes, then the rods'
 // nodes, then the points, then the bodies with the ground body first (Waves::kinematicsForAllNodes):
 // RodHanging.txt (two 45-segment ropes holding a one-segment free rod) has 2 x 46 + 2 + 2 + 1 = 97. A flow

@@ -76,8 +76,8 @@ Vec3 nodeLoad(const model::Model& model, const LoadTerms& t, int node) {
 
 /// The part of the seabed's vertical reaction at a line's end node `node` that does not carry the line [N]
 /// (upward positive): what exceeds the line's own weight lumped on the node. The seabed first carries the
-/// line's own weight there; the rest holds up what is at the end (a clump at a free point) or pushes on a
-/// support held into the seabed (an anchor or a pinned end at seabed level), which is not the line's pull.
+/// line's own weight there; the rest holds up what is at the end (a clump at a free point resting on the
+/// seabed), which is not the line's pull. (A node held in x, y and z has no seabed spring: theory 7.8.)
 double seabedBeyondLine(const model::Model& model, const LoadTerms& t, int node) {
   const int d = model.dofs().firstDof(node);
   const double reaction = -t.seabed[d + 2];                 // external, upward positive
@@ -209,8 +209,8 @@ solver::EquilibriumAudit auditStatics(Simulation& simulation, const std::vector<
     for (const int node : p.endNodes) bed.z() += seabedBeyondLine(model, t, node);
     b.terms = {{"weight and buoyancy", body},
                {"drag", drag},
-               {"seabed", bed},
-               {"lines", endPulls(model, snapshot, p.endNodes)}};
+               {"lines", endPulls(model, snapshot, p.endNodes)},
+               {"seabed", bed}};
     closeBodyBalance(b, p.endNodes.size(), nodeBound);
     audit.points.push_back(std::move(b));
   }

@@ -169,7 +169,6 @@ void MoorDynSystem::initialize(const double* x, const double* xd) {
   hostToRun(x, hostVelocity.data(), position, velocity, 0.0, 0.0);
   m_run->initialize(position, velocity);
   m_tangleLines.clear();
-  m_elementTension.clear();
   updateHostForces();  // MoorDyn_GetBodyForce after MoorDyn_Init: the forces at the initial state
 }
 
@@ -185,7 +184,6 @@ void MoorDynSystem::step(const double* x, const double* xd, double* f, double* t
     std::vector<double> position, velocity;
     hostToRun(x, xd, position, velocity, m_run->time(), dt);
     m_run->step(position, velocity, dt);
-    m_elementTension.clear();
     updateHostForces();
   }
   // The objects' forces, then the deck's coupled points' forces.
@@ -572,12 +570,12 @@ double MoorDynSystem::segmentTension(const NodeRef& n, int l) {
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   const int other = map.firstNode + (map.reversed ? -map.segments : map.segments);
   const int segment = n.node == std::min(map.firstNode, other) ? n.node : n.node - 1;
-  if (m_elementTension.empty()) {  // once per state: emptied by initialize and step
-    analysis::Simulation& sim = m_run->simulation();
-    sim.assembler().elementTension(sim.state(), m_elementTension, nullptr);
-  }
-  const model::Line& line = m_run->simulation().model().lines()[static_cast<std::size_t>(n.modelLine)];
-  return m_elementTension[static_cast<std::size_t>(line.firstElement + segment)];
+  // That element alone (a host reading its fairlead tension at every step asks for nothing more).
+  analysis::Simulation& sim = m_run->simulation();
+  const model::Line& line = sim.model().lines()[static_cast<std::size_t>(n.modelLine)];
+  m_oneElement.assign(1, line.firstElement + segment);
+  sim.assembler().elementTension(sim.state(), m_elementTension, nullptr, &m_oneElement);
+  return m_elementTension[static_cast<std::size_t>(m_oneElement.front())];
 }
 
 Vec3 MoorDynSystem::velocity(const NodeRef& n) {
@@ -615,7 +613,10 @@ Vec3 MoorDynSystem::nodeForce(int l, unsigned int i) {
 }
 
 Vec3 MoorDynSystem::nodeTension(int l, unsigned int i) {
-  const NodeRef n = deckNode(l, i);
+  // At the deck line's ends the line ends' results (positions) suffice: the end segment's own tension.
+  const bool end = i == 0 || i == static_cast<unsigned int>(
+                                      m_coupling.conversion.lines[static_cast<std::size_t>(l)].segments);
+  const NodeRef n = deckNode(l, i, end);
   const Vec3 t = tangleTension(n, l);
   return m_coupling.conversion.lines[static_cast<std::size_t>(l)].reversed ? Vec3(-t) : t;
 }
@@ -643,7 +644,7 @@ double MoorDynSystem::maxTension(int l) {
 Vec3 MoorDynSystem::endForce(int l, int end) {
   const io::MoorDynLineMap& map = m_coupling.conversion.lines[static_cast<std::size_t>(l)];
   const unsigned int i = end == 0 ? 0u : static_cast<unsigned int>(map.segments);
-  const NodeRef n = deckNode(l, i);
+  const NodeRef n = deckNode(l, i, true);  // the line ends' results suffice
   const solver::LineSnapshot& s = *n.snapshot;
   // A tangle line's end: the force on its holder (oriented A to B of the tangle line, then of the deck line).
   Vec3 tension;
@@ -783,7 +784,12 @@ Vec3 MoorDynSystem::rodNodePosition(int r, unsigned int i) {
     hostObjectPoint(*c, along, m_run->time(), position, velocity);
     return position;
   }
-  if (map.tangleLine.empty() || !initialized()) return rod.endA + along;
+  if (map.tangleLine.empty() || !initialized()) {
+    // Where the deck puts it: a rod on a body has its ends in the body's axes from its reference point.
+    if (rod.body == 0) return rod.endA + along;
+    const io::MoorDynBodyMap& body = m_coupling.conversion.bodies[static_cast<std::size_t>(rod.body - 1)];
+    return body.origin + body.rotation * Vec3(rod.endA + along);
+  }
   const solver::LineSnapshot& s =
       m_run->lineEnds()[static_cast<std::size_t>(tangleLine(map.tangleLine).snapshot)];
   return s.position.at(i);

@@ -192,18 +192,19 @@ class MoorDynSystem {
 
   /// @name External wave kinematics (MoorDyn_ExternalWaveKin*, for a deck with option WaveKin 1)
   /// The points where the host gives the fluid kinematics, in MoorDyn's order (Waves.cpp,
-  /// kinematicsForAllNodes): every node of every deck line (0 to N, in deck order), then every deck point.
+  /// kinematicsForAllNodes): every node of every deck line (0 to N, in deck order), every node of every rod
+  /// (0 to NumSegs), every deck point, then MoorDyn's ground body and every body.
   /// @{
-  /// Their number; 0 when the deck's WaveKin is not 1 (as MoorDyn): every node of every deck line, then
-  /// every node of every rod (0 to NumSegs), then every point, then MoorDyn's ground body and every body.
+  /// Their number; 0 when the deck's WaveKin is not 1 (MoorDyn counts them whatever WaveKin is: tangle
+  /// refuses kinematics its model would not use).
   int waveKinematicsPointCount() const;
   /// Their current positions [m], 3 values per point. @throws InvalidValue before initialize
   std::vector<double> waveKinematicsPoints();
   /// Fluid velocity U [m/s] and acceleration Ud [m/s^2] at those points (3 values per point each), used by
   /// the dynamics from the next step on (hydro::HydroLoads::setNodeKinematics: each element takes the mean
-  /// of its nodes; a node shared by two deck lines or a line and a rod takes the mean of its values). The
-  /// nodes of a moving rod (a tangle line) take theirs; the values at the points, the bodies and the nodes
-  /// of a held rod are not used: attachments, vessels and held rods see the current only.
+  /// of its nodes; a node shared by two deck lines, inside one tangle line, takes the mean of its values).
+  /// The nodes of a moving rod (a tangle line) take theirs; the values at the points, the bodies and the
+  /// nodes of a held rod are not used: attachments, vessels and held rods see the current only.
   /// @throws InvalidValue before initialize, without WaveKin 1, for null or non-finite values
   void setWaveKinematics(const double* U, const double* Ud);
   /// @}
@@ -288,7 +289,8 @@ class MoorDynSystem {
   std::string m_path;
   io::DeckCoupling m_coupling;
   std::unique_ptr<analysis::CoupledRun> m_run;
-  std::vector<double> m_elementTension;  ///< every element's tension at the current state [N]; empty: not yet
+  std::vector<double> m_elementTension;  ///< work space of segmentTension: element tensions [N]
+  std::vector<int> m_oneElement;         ///< the element segmentTension asks for
   std::vector<int> m_coupledIndex;  ///< per deck point, its index among the run's coupled points (-1: none)
   /// A body or rod the host moves, in MoorDyn's order of the coupled DOFs (coupled bodies, coupled rods, then
   /// the coupled points). Rigid (a Coupled body or rod, 6 DOFs: reference point [m] and XYZ Euler angles
