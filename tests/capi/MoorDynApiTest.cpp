@@ -634,7 +634,7 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
 
 // The points on a Coupled body load it with their own mass, volume and drag, as MoorDyn's Body::doRHS sums
 // its points' Point::getNetForceAndMass (MoorDyn v2.7.1): coupled_body.txt with its point 3 (a line's end)
-// given 5000 kg, 2 m^3, CdA 1.5 m^2, Ca 1 and a point 5 at (5, 0, 0) on the body with no line (2000 kg, 0.5
+// given 5000 kg, 2 m^3, CdA 1.5 m^2, Ca 1 and a point 5 at (5, 0, -2) on the body with no line (2000 kg, 0.5
 // m^3, CdA 1, Ca 0.5), against the deck as it is, both moved alike by the host. The lines see the same
 // motion, so the difference of the forces returned is the points' loads alone: (rho V - m) g upward, drag
 // 1/2 rho CdA |v| v against each point's velocity v = v_ref + w x r in still water, and -(m + rho V Ca) a
@@ -653,7 +653,7 @@ TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
   deck.replace(deck.find(row3), row3.size(),
                "3     Body1       0.0     10.0     0.0     5000   2       1.5    1");
   deck.insert(deck.find(row4) + row4.size(),
-              "\n5     Body1       5.0     0.0      0.0     2000   0.5     1.0    0.5");
+              "\n5     Body1       5.0     0.0      -2.0    2000   0.5     1.0    0.5");
   const std::string loaded =
       (std::filesystem::temp_directory_path() / "tangle-coupled-body-masses.txt").string();
   std::ofstream(loaded) << deck;
@@ -675,17 +675,28 @@ TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
     V offset;
     double mass, volume, cda, ca;
   };
-  const Lump lumps[2] = {{{0.0, 10.0, 0.0}, 5000.0, 2.0, 1.5, 1.0}, {{5.0, 0.0, 0.0}, 2000.0, 0.5, 1.0, 0.5}};
-  // The loads about the reference point of the lumps on a body in yaw c with velocity v, yaw rate w,
-  // acceleration a and yaw acceleration alpha (roll and pitch 0).
-  const auto loads = [&](double c, const V& v, double w, const V& a, double alpha) {
+  const Lump lumps[2] = {{{0.0, 10.0, 0.0}, 5000.0, 2.0, 1.5, 1.0},
+                         {{5.0, 0.0, -2.0}, 2000.0, 0.5, 1.0, 0.5}};
+  // The arm R offset of a lump on a body at MoorDyn's XYZ Euler angles: R = Rx(a) Ry(b) Rz(c).
+  const auto turned = [](const V& angles, const V& offset) {
+    const double ca = std::cos(angles[0]), sa = std::sin(angles[0]), cb = std::cos(angles[1]);
+    const double sb = std::sin(angles[1]), cc = std::cos(angles[2]), sc = std::sin(angles[2]);
+    const double rot[3][3] = {{cb * cc, -cb * sc, sb},
+                              {sa * sb * cc + ca * sc, -sa * sb * sc + ca * cc, -sa * cb},
+                              {-ca * sb * cc + sa * sc, ca * sb * sc + sa * cc, ca * cb}};
+    V arm{};
+    for (int i = 0; i < 3; ++i)
+      arm[i] = rot[i][0] * offset[0] + rot[i][1] * offset[1] + rot[i][2] * offset[2];
+    return arm;
+  };
+  // The loads about the reference point of the lumps on a body at `angles` with velocity v, angular velocity
+  // w (the angles' rates, as MoorDyn), acceleration a and angular acceleration alpha.
+  const auto loads = [&](const V& angles, const V& v, const V& w, const V& a, const V& alpha) {
     std::array<double, 6> out{};
     for (const Lump& l : lumps) {
-      const V arm{std::cos(c) * l.offset[0] - std::sin(c) * l.offset[1],
-                  std::sin(c) * l.offset[0] + std::cos(c) * l.offset[1], l.offset[2]};
-      const V omega{0.0, 0.0, w};
-      const V velocity = plus(v, cross(omega, arm));
-      const V acceleration = plus(plus(a, cross(V{0.0, 0.0, alpha}, arm)), cross(omega, cross(omega, arm)));
+      const V arm = turned(angles, l.offset);
+      const V velocity = plus(v, cross(w, arm));
+      const V acceleration = plus(plus(a, cross(alpha, arm)), cross(w, cross(w, arm)));
       const double speed = norm(velocity.data());
       V force{0.0, 0.0, (rho * l.volume - l.mass) * g};
       force = plus(force, velocity, -0.5 * rho * l.cda * speed);
@@ -703,21 +714,24 @@ TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
   ASSERT_EQ(MoorDyn_GetBodyForce(MoorDyn_GetBody(plain, 1), fPlain), MOORDYN_SUCCESS);
   ASSERT_EQ(MoorDyn_GetBodyForce(MoorDyn_GetBody(heavy, 1), fHeavy), MOORDYN_SUCCESS);
   EXPECT_GT(norm(fPlain), 1e5);  // the chains' pull, not 0
-  std::array<double, 6> expected = loads(0.0, V{0, 0, 0}, 0.0, V{0, 0, 0}, 0.0);
+  const V zero{0.0, 0.0, 0.0};
+  std::array<double, 6> expected = loads(zero, zero, zero, zero, zero);
   for (int i = 0; i < 6; ++i) EXPECT_NEAR(fHeavy[i] - fPlain[i], expected[i], 1e-9 * norm(fPlain)) << i;
-  // Two host steps of 0.1 s: from rest to surge 1 m/s and yaw rate 0.1 rad/s, then to 1.5 m/s and 0.3 rad/s.
+  // Two host steps of 0.1 s from rest, every DOF moving (roll and pitch rates too, so that the centripetal
+  // term is not along the arm).
   double t = 0.0, dt = 0.1, tHeavy = 0.0;
-  const double surge[2] = {1.0, 1.5}, yawRate[2] = {0.1, 0.3};
-  double previousSurge = 0.0, previousYawRate = 0.0;
+  const double rates[2][6] = {{1.0, 0.0, 0.2, 0.05, -0.03, 0.1}, {1.5, -0.4, 0.1, 0.12, 0.08, 0.3}};
+  double previous[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   for (int step = 0; step < 2; ++step) {
-    rd[0] = surge[step];
-    rd[5] = yawRate[step];
+    for (int i = 0; i < 6; ++i) rd[i] = rates[step][i];
     ASSERT_EQ(MoorDyn_Step(plain, r, rd, fPlain, &t, &dt), MOORDYN_SUCCESS);
     ASSERT_EQ(MoorDyn_Step(heavy, r, rd, fHeavy, &tHeavy, &dt), MOORDYN_SUCCESS);
     // The host's pose at the step's end (linear over it), its velocities and their change over the step.
-    const double yaw = r[5] + rd[5] * dt;
-    expected = loads(yaw, V{rd[0], 0.0, 0.0}, rd[5], V{(rd[0] - previousSurge) / dt, 0.0, 0.0},
-                     (rd[5] - previousYawRate) / dt);
+    const V angles{r[3] + rd[3] * dt, r[4] + rd[4] * dt, r[5] + rd[5] * dt};
+    const V v{rd[0], rd[1], rd[2]}, w{rd[3], rd[4], rd[5]};
+    const V a{(rd[0] - previous[0]) / dt, (rd[1] - previous[1]) / dt, (rd[2] - previous[2]) / dt};
+    const V alpha{(rd[3] - previous[3]) / dt, (rd[4] - previous[4]) / dt, (rd[5] - previous[5]) / dt};
+    expected = loads(angles, v, w, a, alpha);
     for (int i = 0; i < 6; ++i)
       EXPECT_NEAR(fHeavy[i] - fPlain[i], expected[i], 1e-9 * norm(fPlain)) << "step " << step << " " << i;
     double reported[6];
@@ -726,22 +740,19 @@ TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
     // The points' velocities: v + w x r, the line's point and the free lump alike (MoorDyn's
     // Body::setDependentStates).
     for (int p : {3, 5}) {
-      const V& offset = lumps[p == 3 ? 0 : 1].offset;
-      const V arm{std::cos(yaw) * offset[0] - std::sin(yaw) * offset[1],
-                  std::sin(yaw) * offset[0] + std::cos(yaw) * offset[1], 0.0};
-      const V velocity = plus(V{rd[0], 0.0, 0.0}, cross(V{0.0, 0.0, rd[5]}, arm));
-      double v[3], x[3];
-      ASSERT_EQ(MoorDyn_GetPointVel(MoorDyn_GetPoint(heavy, static_cast<unsigned int>(p)), v),
+      const V arm = turned(angles, lumps[p == 3 ? 0 : 1].offset);
+      const V velocity = plus(v, cross(w, arm));
+      double pv[3], x[3];
+      ASSERT_EQ(MoorDyn_GetPointVel(MoorDyn_GetPoint(heavy, static_cast<unsigned int>(p)), pv),
                 MOORDYN_SUCCESS);
       ASSERT_EQ(MoorDyn_GetPointPos(MoorDyn_GetPoint(heavy, static_cast<unsigned int>(p)), x),
                 MOORDYN_SUCCESS);
       for (int i = 0; i < 3; ++i) {
-        EXPECT_NEAR(v[i], velocity[i], 1e-12) << "point " << p << " step " << step;
+        EXPECT_NEAR(pv[i], velocity[i], 1e-12) << "point " << p << " step " << step;
         EXPECT_NEAR(x[i], r[i] + rd[i] * dt + arm[i], 1e-12) << "point " << p << " step " << step;
       }
     }
-    previousSurge = rd[0];
-    previousYawRate = rd[5];
+    for (int i = 0; i < 6; ++i) previous[i] = rd[i];
     for (int i = 0; i < 6; ++i) r[i] += rd[i] * dt;
   }
   EXPECT_EQ(MoorDyn_Close(plain), MOORDYN_SUCCESS);
