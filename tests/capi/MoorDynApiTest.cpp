@@ -26,6 +26,21 @@ std::string deckPath() { return std::string(tangle::test::kTestDataDir) + "/moor
 
 double norm(const double v[3]) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
 
+/// The text of the deck at `path`.
+std::string readDeck(const std::string& path) {
+  std::ifstream in(path);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+/// MoorDyn_Create on `deck` written to the temporary file `name`, removed after: NULL when refused.
+MoorDyn createFromText(const std::string& deck, const std::string& name) {
+  const std::string path = (std::filesystem::temp_directory_path() / name).string();
+  std::ofstream(path) << deck;
+  MoorDyn system = MoorDyn_Create(path.c_str());
+  std::filesystem::remove(path);
+  return system;
+}
+
 TEST(MoorDynApi, CreateReturnsNullForAMissingFile) {
   EXPECT_EQ(MoorDyn_Create("/nonexistent/tangle/deck.txt"), nullptr);
 }
@@ -238,18 +253,14 @@ TEST(MoorDynApi, AnswersAfterInitAndStep) {
 // the slope). Until 2026-12-06 the steps dropped the weight (858 N against the statics' 116 kN on the
 // reviewer's deck).
 TEST(MoorDynApi, OneSegmentLineKeepsItsEndForceFromInitToStep) {
-  std::ifstream in(deckPath());
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(deckPath());
   const std::string anchorRow = "1     Fixed       400.0   0.0     -50.0";
   const std::string lineRow = "1    chain      1        2        410.0     41";
   ASSERT_NE(deck.find(anchorRow), std::string::npos);
   ASSERT_NE(deck.find(lineRow), std::string::npos);
   deck.replace(deck.find(anchorRow), anchorRow.size(), "1     Fixed       40.0    0.0     -50.0");
   deck.replace(deck.find(lineRow), lineRow.size(), "1    chain      1        2        64.0      1 ");
-  const std::string path = (std::filesystem::temp_directory_path() / "tangle-one-segment.txt").string();
-  std::ofstream(path) << deck;
-  MoorDyn system = MoorDyn_Create(path.c_str());
-  std::filesystem::remove(path);
+  MoorDyn system = createFromText(deck, "tangle-one-segment.txt");
   ASSERT_NE(system, nullptr);
   double x[3] = {0, 0, 0}, xd[3] = {0, 0, 0}, f[3], t = 0.0, dt = 0.05;
   ASSERT_EQ(MoorDyn_Init(system, x, xd), MOORDYN_SUCCESS);
@@ -619,17 +630,12 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
   EXPECT_EQ(MoorDyn_Close(points), MOORDYN_SUCCESS);
   // A body whose host gives only its translation (CoupledPinned: its rotation solved) carries its mass at the
   // pin: one whose mass is off its reference point is refused by name.
-  std::ifstream in(dir + "coupled_body.txt");
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(dir + "coupled_body.txt");
   const std::string row = "1    Coupled     0.0    0.0    -5.0   0      0      0      0      0";
   ASSERT_NE(deck.find(row), std::string::npos);
   deck.replace(deck.find(row), row.size(),
                "1    CoupledPinned     0.0    0.0    -5.0   0      0      0      1000      1");
-  const std::string pinned =
-      (std::filesystem::temp_directory_path() / "tangle-coupled-pinned-body.txt").string();
-  std::ofstream(pinned) << deck;
-  EXPECT_EQ(MoorDyn_Create(pinned.c_str()), nullptr);
-  std::filesystem::remove(pinned);
+  EXPECT_EQ(createFromText(deck, "tangle-coupled-pinned-body.txt"), nullptr);
 }
 
 // The points on a Coupled body load it with their own mass, volume and drag, as MoorDyn's Body::doRHS sums
@@ -644,8 +650,7 @@ TEST(MoorDynApi, CoupledBodyMovesItsPointsAndReturnsTheirForceAndMoment) {
 // points' velocities read 0 and MoorDyn_GetBodyForce read 0 after MoorDyn_Init.
 TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
   const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
-  std::ifstream in(dir + "coupled_body.txt");
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(dir + "coupled_body.txt");
   const std::string row3 = "3     Body1       0.0     10.0     0.0     0      0       0      0";
   const std::string row4 = "4     Body1       0.0    -10.0     0.0     0      0       0      0";
   ASSERT_NE(deck.find(row3), std::string::npos);
@@ -654,12 +659,8 @@ TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
                "3     Body1       0.0     10.0     0.0     5000   2       1.5    1");
   deck.insert(deck.find(row4) + row4.size(),
               "\n5     Body1       5.0     0.0      -2.0    2000   0.5     1.0    0.5");
-  const std::string loaded =
-      (std::filesystem::temp_directory_path() / "tangle-coupled-body-masses.txt").string();
-  std::ofstream(loaded) << deck;
   MoorDyn plain = MoorDyn_Create((dir + "coupled_body.txt").c_str());
-  MoorDyn heavy = MoorDyn_Create(loaded.c_str());
-  std::filesystem::remove(loaded);
+  MoorDyn heavy = createFromText(deck, "tangle-coupled-body-masses.txt");
   ASSERT_NE(plain, nullptr);
   ASSERT_NE(heavy, nullptr);
   using V = std::array<double, 3>;
@@ -765,16 +766,12 @@ TEST(MoorDynApi, PointsOnACoupledBodyAddTheirWeightDragAndInertia) {
 // line, at t = 0 and after 1 s of dynamics. Until 2026-12-06 its body-frame offset was returned as its
 // position.
 TEST(MoorDynApi, APointOnAFreeBodyWithoutALineMovesWithTheBody) {
-  std::ifstream in(std::string(tangle::test::kTestDataDir) + "/moordyn/BodiesAndRods.dat");
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(std::string(tangle::test::kTestDataDir) + "/moordyn/BodiesAndRods.dat");
   const std::string row = "10        Body1       0      0        0         0        0         0     0";
   ASSERT_NE(deck.find(row), std::string::npos);
   deck.insert(deck.find(row) + row.size(),
               "\n11        Body1       5.0    3.0     -2.0       0        0         0     0");
-  const std::string path = (std::filesystem::temp_directory_path() / "tangle-free-body-point.dat").string();
-  std::ofstream(path) << deck;
-  MoorDyn system = MoorDyn_Create(path.c_str());
-  std::filesystem::remove(path);
+  MoorDyn system = createFromText(deck, "tangle-free-body-point.dat");
   ASSERT_NE(system, nullptr);
   ASSERT_EQ(MoorDyn_Init(system, nullptr, nullptr), MOORDYN_SUCCESS);
   double t = 0.0, dt = 0.05;
@@ -812,15 +809,11 @@ TEST(MoorDynApi, APointOnAFreeBodyWithoutALineMovesWithTheBody) {
 // 0, 15) = (10, -2.5, 12.990) before and after MoorDyn_Init (1e-9 m). Until 2026-12-06 its body-frame
 // coordinates were returned, and given to a WaveKin 1 host as its kinematics points.
 TEST(MoorDynApi, ARodOnAFixedBodyIsWhereTheBodyPutsIt) {
-  std::ifstream in(std::string(tangle::test::kTestDataDir) + "/moordyn/BodiesAndRods.dat");
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(std::string(tangle::test::kTestDataDir) + "/moordyn/BodiesAndRods.dat");
   const std::string row = "1       free      0     0      0     0       0      0";
   ASSERT_NE(deck.find(row), std::string::npos);
   deck.replace(deck.find(row), row.size(), "1       fixed     10    5      0     30      0      0");
-  const std::string path = (std::filesystem::temp_directory_path() / "tangle-fixed-body-rod.dat").string();
-  std::ofstream(path) << deck;
-  MoorDyn system = MoorDyn_Create(path.c_str());
-  std::filesystem::remove(path);
+  MoorDyn system = createFromText(deck, "tangle-fixed-body-rod.dat");
   ASSERT_NE(system, nullptr);
   const double roll = 30.0 * std::numbers::pi / 180.0;
   const double expected[3] = {10.0, 5.0 - 15.0 * std::sin(roll), 15.0 * std::cos(roll)};
@@ -841,8 +834,7 @@ TEST(MoorDynApi, ARodOnAFixedBodyIsWhereTheBodyPutsIt) {
 // API's functions are the same (MoorDyn.cpp forwards them). Until 2026-12-06 the rod's nodes were left out
 // (94 points) and the old API's functions did nothing.
 TEST(MoorDynApi, ExternalWaveKinematicsReachTheRods) {
-  std::ifstream in(std::string(tangle::test::kTestDataDir) + "/moordyn/RodHanging.txt");
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(std::string(tangle::test::kTestDataDir) + "/moordyn/RodHanging.txt");
   const std::string options = "---------------------- OPTIONS";
   ASSERT_NE(deck.find(options), std::string::npos);
   const std::size_t next = deck.find('\n', deck.find(options));
@@ -899,19 +891,14 @@ TEST(MoorDynApi, ExternalWaveKinematicsReachTheRods) {
 // body's); MoorDyn_GetRodForce returns what MoorDyn_Step did.
 TEST(MoorDynApi, CoupledRodMovesItsLinesEndsRigidlyAndReturnsTheirForceAndMoment) {
   const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
-  std::ifstream in(dir + "RodHanging.txt");
-  const std::string original((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string original = readDeck(dir + "RodHanging.txt");
   const auto edited = [&](const std::vector<std::pair<std::string, std::string>>& edits, const char* name) {
     std::string deck = original;
     for (const auto& [from, to] : edits) {
       EXPECT_NE(deck.find(from), std::string::npos) << from;
       if (deck.find(from) != std::string::npos) deck.replace(deck.find(from), from.size(), to);
     }
-    const std::string path = (std::filesystem::temp_directory_path() / name).string();
-    std::ofstream(path) << deck;
-    MoorDyn system = MoorDyn_Create(path.c_str());
-    std::filesystem::remove(path);
-    return system;
+    return createFromText(deck, name);
   };
   MoorDyn system = edited({{"1    rod       Free        -10", "1    rod       Coupled     -10"}},
                           "tangle-coupled-rod.txt");
@@ -1083,8 +1070,7 @@ TEST(MoorDynApi, PinnedBodySwingsAboutAtanOfItsAccelerationOverGravity) {
 // the same mean angle (MoorDyn's tolerance) and force; the angle from the rod's end nodes.
 TEST(MoorDynApi, PinnedRodSwingsAboutAtanOfItsAccelerationOverGravity) {
   const std::string dir = std::string(tangle::test::kTestDataDir) + "/moordyn/";
-  std::ifstream in(dir + "pinnedBody.txt");
-  std::string deck((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string deck = readDeck(dir + "pinnedBody.txt");
   const std::string bodyRow = "1     CoupledPinned    0.00    0.00  -5.00";
   const std::string rodRow = "1      Can     Body1         0     0     -5     0     0     -15     3";
   ASSERT_NE(deck.find(bodyRow), std::string::npos);
@@ -1092,10 +1078,7 @@ TEST(MoorDynApi, PinnedRodSwingsAboutAtanOfItsAccelerationOverGravity) {
   deck.erase(deck.find(bodyRow), deck.find('\n', deck.find(bodyRow)) + 1 - deck.find(bodyRow));
   deck.replace(deck.find(rodRow), rodRow.size(),
                "1      Can     CoupledPinned 0     0     -5     0     0     -15     3");
-  const std::string path = (std::filesystem::temp_directory_path() / "tangle-pinned-rod.txt").string();
-  std::ofstream(path) << deck;
-  MoorDyn system = MoorDyn_Create(path.c_str());
-  std::filesystem::remove(path);
+  MoorDyn system = createFromText(deck, "tangle-pinned-rod.txt");
   ASSERT_NE(system, nullptr);
   MoorDynRod rod = MoorDyn_GetRod(system, 1);
   ASSERT_NE(rod, nullptr);
