@@ -42,12 +42,13 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
                    const model::LineElement* inner, double innerTension,
                    const element::BeamSectionForces* innerBeam, int sharedNode, double side) {
   const Vec3 fEnd = elementForce(state, end, endTension, endBeam);
-  if (!inner) {
-    // The end element alone (a one-element line, or its neighbour parted): the force vector's slope along
-    // the line is its own distributed weight, dT/ds = -q (equilibrium of a length ds; s from end A), so
-    // the end point is half an element of weight beyond the mid-point: fEnd + side q l / 2, side +1 at end
-    // A, -1 at end B. Drag and inertia are left out. Submerged when its mid-point is below still water.
-    // An end node resting on the seabed has its lumped weight carried there (theory 7.8): no slope.
+  if (!inner || inner->type != end.type || hasAttachment(model, sharedNode)) {
+    // The end element alone (a one-element line, its neighbour parted, of another line type or beyond a point
+    // load): the force vector's slope along the line is its own distributed weight, dT/ds = -q (equilibrium
+    // of a length ds; s from end A), so the end point is half an element of weight beyond the mid-point:
+    // fEnd + side q l / 2, side +1 at end A, -1 at end B. Drag and inertia are left out. Submerged when its
+    // mid-point is below still water. An end node resting on the seabed has its lumped weight carried there
+    // (theory 7.8): no slope.
     const int endNode = side > 0.0 ? end.node1 : end.node2;
     const double radius = 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(endNode)];
     if (model.seabedSurface().gap(state.position[static_cast<std::size_t>(endNode)], radius) <= 1e-6)
@@ -58,7 +59,6 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
                                     : end.type->totalMassPerLength() * env.gravity;  // [N/m]
     return fEnd + Vec3(0.0, 0.0, -side * 0.5 * end.restLength * weight);
   }
-  if (inner->type != end.type || hasAttachment(model, sharedNode)) return fEnd;
   const Vec3 fInner = elementForce(state, *inner, innerTension, innerBeam);
   // Mid-points are 0.5 (l_end + l_inner) apart; the end point is 0.5 l_end beyond the end mid-point.
   const double gap = 0.5 * (end.restLength + inner->restLength);

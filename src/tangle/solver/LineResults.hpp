@@ -28,8 +28,9 @@ struct LineSnapshot {
   /// along each chord) are taken at the element mid-points and extrapolated linearly in unstretched arc
   /// length to the end node (exact for a uniform catenary, whose force vector is linear in arc length); the
   /// element next to it is used only when no point load sits between the two (same line type, no attachment).
-  /// An end element with no neighbour (a one-element line) takes its own distributed weight as the slope:
-  /// half an element of (submerged) weight beyond its mid-point.
+  /// An end element without such a neighbour (a one-element line or end section, an attachment at its inner
+  /// node) takes its own distributed weight as the slope: half an element of (submerged) weight beyond its
+  /// mid-point (none where the end node rests on the seabed); its drag and inertia are left out.
   double endTensionA = 0.0;
   double endTensionB = 0.0;
   /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N],

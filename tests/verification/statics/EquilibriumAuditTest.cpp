@@ -170,6 +170,50 @@ TEST(EquilibriumAudit, AClumpOnTheSeabedIsHeldByTheSeabedNotByItsLines) {
   }
 }
 
+// A hanging catenary whose end element cannot be extrapolated from its neighbour: (a) a one-element chain
+// section at each end of a wire (another line type next to it), (b) a uniform wire with a 2 t clump at the
+// first and last inner nodes (a point load between the two elements). The dynamics' end force (the
+// extrapolation, LineResults) must equal the static end force at the same state, the end element's force plus
+// its own half weight (theory 7.8; the force vector's slope along a line is its weight per length), to 1e-3
+// of that half weight (in statics the element's force vector is linear in arc length; what is left is the
+// static tolerance). Until 2026-12-06 the extrapolation took the end element's force alone: the end force off
+// by exactly the half weight (5.0 kN at the chain ends, end tensions 4.0-4.6 kN low; 1.57 kN next to a
+// clump).
+TEST(EquilibriumAudit, AnEndElementNextToAnotherTypeOrAPointLoadTakesItsOwnWeight) {
+  for (const bool clump : {false, true}) {
+    model::ModelSpec spec;
+    spec.sourceFile = clump ? "clumps next to the ends (test)" : "one-element end sections (test)";
+    spec.environment.waterDepth = 500.0;
+    spec.lineTypes["wire"] = test::cableType("wire", 0.1, 40.0, 8.0e8);
+    spec.lineTypes["chain"] = test::cableType("chain", 0.15, 120.0, 6.0e8);
+    model::LineSpec l =
+        test::simpleLine("hanging", "wire", clump ? 400.0 : 380.0, clump ? 40 : 38, model::EndKind::Pinned,
+                         Vec3(0, 0, -20), model::EndKind::Pinned, Vec3(300, 0, -120));
+    if (clump) {
+      l.attachments.push_back({10.0, 2000.0, 0.0, 0.0, 0.0});
+      l.attachments.push_back({390.0, 2000.0, 0.0, 0.0, 0.0});
+    } else {
+      l.sections.insert(l.sections.begin(), {"chain", 10.0, 1});
+      l.sections.push_back({"chain", 10.0, 1});
+    }
+    spec.lines.push_back(l);
+    analysis::Simulation sim(spec);
+    ASSERT_TRUE(sim.solveStatics().converged) << spec.sourceFile;
+    const auto lines = sim.snapshot();
+    std::vector<solver::LineSnapshot> extrapolated;
+    solver::computeLineResults(sim.model(), sim.assembler(), sim.state(), nullptr, extrapolated);
+    const model::EnvironmentSpec& env = sim.model().environment();
+    const section::LineType& end = spec.lineTypes.at(clump ? "wire" : "chain");
+    const double halfWeight = 0.5 * 10.0 * end.submergedWeight(env.waterDensity, env.gravity);
+    EXPECT_NEAR((lines[0].endTensionForceA - extrapolated[0].endTensionForceA).norm(), 0.0, 1e-3 * halfWeight)
+        << spec.sourceFile;
+    EXPECT_NEAR((lines[0].endTensionForceB - extrapolated[0].endTensionForceB).norm(), 0.0, 1e-3 * halfWeight)
+        << spec.sourceFile;
+    EXPECT_NEAR(lines[0].endTensionA, extrapolated[0].endTensionA, 1e-3 * halfWeight) << spec.sourceFile;
+    EXPECT_NEAR(lines[0].endTensionB, extrapolated[0].endTensionB, 1e-3 * halfWeight) << spec.sourceFile;
+    EXPECT_GT(lines[0].endTensionB, 5.0 * halfWeight) << spec.sourceFile;
+  }
+}
 TEST(EquilibriumAudit, AChainOnABargesHullBalancesBothBodies) {
   // A 70 m chain pinned 8 m above water at x = +-34 m lies across the top (z = +2 m) of a barge's box hull
   // (its start shape over the hull: the catenary would start through it, which the model refuses).
