@@ -213,7 +213,8 @@ void MoorDynSystem::updateHostForces() {
       if (h.runPoint >= 0) h.force.head<3>() = runForce(h.runPoint);
       continue;
     }
-    const Vec3 reference = hostReference(h, time);
+    const Vec6 pose = h.pose(time);
+    const Vec3 reference = pose.head<3>();
     for (std::size_t j = 0; j < h.runPoints.size(); ++j) {
       if (h.runPoints[j] < 0) continue;
       const Vec3 fp = runForce(h.runPoints[j]);
@@ -223,7 +224,7 @@ void MoorDynSystem::updateHostForces() {
     if (h.pointLoads.empty()) continue;
     analysis::Simulation& sim = m_run->simulation();
     const model::EnvironmentSpec& environment = sim.model().environment();
-    const Mat3 rotation = eulerRotation(Vec6(h.position + h.velocity * (time - h.time0)).tail<3>());
+    const Mat3 rotation = eulerRotation(pose.tail<3>());
     for (const RigidPoint& point : h.pointLoads) {
       const Vec3 at = reference + rotation * point.offset;
       h.force += rigidPointLoads(point, rotation, h.velocity.head<3>(), h.velocity.tail<3>(),
@@ -266,9 +267,8 @@ int MoorDynSystem::hostDofCount() const {
 
 void MoorDynSystem::hostObjectPoint(const HostObject& c, const Vec3& offset, double t, Vec3& position,
                                     Vec3& velocity) const {
-  // The host's 6-vector moves linearly over its step, its angles too (as MoorDyn's Body::updateFairlead); the
-  // angle rates are taken as the angular velocity (as MoorDyn's setDependentStates).
-  const Vec6 s = c.position + c.velocity * (t - c.time0);
+  // The angle rates are taken as the angular velocity (as MoorDyn's setDependentStates).
+  const Vec6 s = c.pose(t);
   const Vec3 arm = eulerRotation(s.tail<3>()) * offset;
   position = s.head<3>() + arm;
   velocity = c.velocity.head<3>() + c.velocity.tail<3>().cross(arm);
@@ -477,8 +477,7 @@ void MoorDynSystem::bodyState(int b, Vec6& position, Vec6& velocity) {
   for (const HostObject& c : m_hostObjects)
     if (c.body == b && !c.pinned) {
       // The host's motion (its angles as given: MoorDyn's XYZ Euler angles).
-      const double t = initialized() ? m_run->time() : c.time0;
-      position = c.position + c.velocity * (t - c.time0);
+      position = c.pose(initialized() ? m_run->time() : c.time0);
       velocity = c.velocity;
       return;
     }
@@ -487,19 +486,11 @@ void MoorDynSystem::bodyState(int b, Vec6& position, Vec6& velocity) {
   Mat3 rotation = map.rotation;
   velocity.setZero();
   if (!map.vessel.empty() && initialized()) {
-    // The vessel's node: its reference point p and the rotation Q from its axes at t = 0 (the global axes);
-    // the body's reference point is p + Q (origin0 - reference0), its axes Q R0.
-    const model::Model& model = m_run->simulation().model();
-    const model::State& state = m_run->simulation().state();
-    const int node = model.vesselNode(model.vesselIndex(map.vessel));
-    const Mat3& q = state.triad[static_cast<std::size_t>(node)];
-    const Vec3 arm = q * (map.origin - map.reference);
-    origin = state.position[static_cast<std::size_t>(node)] + arm;
-    rotation = q * map.rotation;
-    const int dof = model.dofs().firstDof(node);
-    const Vec3 omega = state.velocity.segment<3>(dof + 3);
-    velocity.head<3>() = state.velocity.segment<3>(dof) + omega.cross(arm);
-    velocity.tail<3>() = omega;
+    const VesselBodyFrame frame = vesselBodyFrame(map);
+    origin = frame.origin;
+    rotation = frame.rotation;
+    velocity.head<3>() = frame.velocityAt(origin);
+    velocity.tail<3>() = frame.angularVelocity;
   }
   // MoorDyn's XYZ Euler angles (Misc.hpp, Quat2Euler: canonical angles about x, y, z): R = Rx(a) Ry(b) Rz(c),
   // R(0, 2) = sin b, R(0, 0) = cos b cos c, R(0, 1) = -cos b sin c, R(1, 2) = -sin a cos b, R(2, 2) = cos a
@@ -711,16 +702,25 @@ bool MoorDynSystem::freeBodyPoint(int p, Vec3& position, Vec3& velocity) {
   if (!initialized() || point.kind != io::MoorDynPointKind::Body || !pointMap(p).ends.empty()) return false;
   const io::MoorDynBodyMap& body = m_coupling.conversion.bodies[static_cast<std::size_t>(point.body - 1)];
   if (body.vessel.empty()) return false;
-  // The vessel's node: its reference point and the rotation Q from its axes at t = 0 (bodyState).
+  const VesselBodyFrame frame = vesselBodyFrame(body);
+  position = frame.origin + frame.rotation * point.position;
+  velocity = frame.velocityAt(position);
+  return true;
+}
+
+MoorDynSystem::VesselBodyFrame MoorDynSystem::vesselBodyFrame(const io::MoorDynBodyMap& map) const {
   const model::Model& model = m_run->simulation().model();
   const model::State& state = m_run->simulation().state();
-  const int node = model.vesselNode(model.vesselIndex(body.vessel));
-  const Vec3 arm = state.triad[static_cast<std::size_t>(node)] *
-                   Vec3(body.origin + body.rotation * point.position - body.reference);
+  const int node = model.vesselNode(model.vesselIndex(map.vessel));
+  const Mat3& q = state.triad[static_cast<std::size_t>(node)];
   const int dof = model.dofs().firstDof(node);
-  position = state.position[static_cast<std::size_t>(node)] + arm;
-  velocity = Vec3(state.velocity.segment<3>(dof)) + Vec3(state.velocity.segment<3>(dof + 3)).cross(arm);
-  return true;
+  VesselBodyFrame frame;
+  frame.nodePosition = state.position[static_cast<std::size_t>(node)];
+  frame.nodeVelocity = state.velocity.segment<3>(dof);
+  frame.angularVelocity = state.velocity.segment<3>(dof + 3);
+  frame.origin = frame.nodePosition + q * (map.origin - map.reference);
+  frame.rotation = q * map.rotation;
+  return frame;
 }
 
 Vec3 MoorDynSystem::mappedPosition(const io::MoorDynPointMap& map) {

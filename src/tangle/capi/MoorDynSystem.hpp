@@ -318,6 +318,9 @@ class MoorDynSystem {
     int hostValues() const { return pinned ? 3 : 6; }
     /// DOFs MoorDyn_NCoupledDOF counts for it (MoorDyn v2.7.1: 6 for every body, pinned or not).
     int countedValues() const { return body >= 0 ? 6 : hostValues(); }
+    /// The host's 6-vector at time t [s]: reference point [m] and XYZ Euler angles [rad], linear over the
+    /// host's step, the angles too (as MoorDyn's Body::updateFairlead).
+    Vec6 pose(double t) const { return position + velocity * (t - time0); }
   };
   std::vector<HostObject> m_hostObjects;
   int m_deckCoupledPoints = 0;  ///< the deck's Coupled points
@@ -340,16 +343,23 @@ class MoorDynSystem {
   /// A point on a free body that no line holds: its position [m] and velocity [m/s] from the body's vessel.
   /// False when p is not such a point (or before initialize).
   bool freeBodyPoint(int p, Vec3& position, Vec3& velocity);
+  /// A free body's frame from its vessel's node (after initialize): the body's reference point [m] and axes
+  /// (body to global), the node's position [m], velocity [m/s] and angular velocity [rad/s]. The node is the
+  /// vessel's reference point p and Q its rotation from the axes at t = 0 (the global axes); the body's
+  /// reference point is p + Q (origin0 - reference0), its axes Q R0.
+  struct VesselBodyFrame {
+    Vec3 origin, nodePosition, nodeVelocity, angularVelocity;
+    Mat3 rotation;
+    /// Velocity [m/s] of the body's point at `x` [m] (global): v + w x (x - p).
+    Vec3 velocityAt(const Vec3& x) const { return nodeVelocity + angularVelocity.cross(x - nodePosition); }
+  };
+  VesselBodyFrame vesselBodyFrame(const io::MoorDynBodyMap& map) const;
   /// The rigid host object that is rod r (a Coupled rod), or null.
   const HostObject* rigidRod(int r) const;
   /// The 6x6 mass of the model's nodes `nodes` under the rigid motions about `reference` [m]: M_ij = phi_i^T
   /// M phi_j, phi_j the node accelerations of a unit rigid acceleration j (x, y, z, then rotations about
   /// them).
   Mat6 rigidMass(const std::vector<int>& nodes, const Vec3& reference);
-  /// A host object's reference point at time t [s] (the host's motion, linear over its step) [m].
-  static Vec3 hostReference(const HostObject& c, double t) {
-    return c.position.head<3>() + c.velocity.head<3>() * (t - c.time0);
-  }
   std::unordered_map<std::string, TangleLine> m_tangleLines;  ///< by name (filled after initialize)
   std::vector<std::unique_ptr<LineHandle>> m_lineHandles;
   std::vector<std::unique_ptr<PointHandle>> m_pointHandles;
