@@ -337,26 +337,44 @@ void Model::buildLine(int lineIndex) {
 
   constrainEnd(line.firstNode, ls.endA);
   constrainEnd(line.lastNode(), ls.endB);
-  // A beam line whose ends both leave rotations free (pinned, anchored or free ends) can twist as a
-  // rigid body about its own axis: a zero-stiffness mechanism. Restrain the rotation component along
-  // the global axis closest to the chord at a held end A (the "torsion lock" of 3D frame supports).
-  // A point end is pinned to its point: it twists as freely as an anchored end.
+  // A run of consecutive beam elements whose ends both leave rotations free (pinned, anchored, point or free
+  // line ends, or a cable section next to it, which carries no moment) can twist as a rigid body about its
+  // own axis: a zero-stiffness mechanism (a hose below a chain tether took 1 234 statics iterations and
+  // arc-length continuation past folds of the path with it; 6 without). Restrain the rotation component
+  // along the global axis closest to the line's chord at one node of the run (the "torsion lock" of 3D frame
+  // supports): a line end of the run held in translation if it has one, else the run's first node. A fixed
+  // end holds every rotation and a vessel's beam end has a torsion spring (VesselSystem), so a run reaching
+  // either is held already. The lock also holds the bending rotation's component along that axis at its
+  // node: nothing at a held end whose line leaves along the chord, a little elsewhere. A line held nowhere
+  // (both ends free) is not locked: every rigid motion of it is free in statics, and its inertia holds them
+  // in dynamics.
   const auto heldInTranslation = [](EndKind k) {
     return k == EndKind::Anchored || k == EndKind::Pinned || k == EndKind::Point;
   };
-  const int nodeA = line.firstNode;
-  if (m_dofs.hasRotations(nodeA) && ls.endA.kind != EndKind::Fixed && ls.endB.kind != EndKind::Fixed &&
-      ls.endA.kind != EndKind::Vessel && ls.endB.kind != EndKind::Vessel) {
-    const int lockNode = heldInTranslation(ls.endA.kind) ? nodeA
-                         : heldInTranslation(ls.endB.kind) && m_dofs.hasRotations(line.lastNode())
-                             ? line.lastNode()
-                             : -1;
-    if (lockNode >= 0) {
-      const Vec3 chord = (endPosition(ls.endB) - endPosition(ls.endA)).cwiseAbs();
-      int axis = 0;
-      chord.maxCoeff(&axis);
+  const auto holdsTwist = [](EndKind k) { return k == EndKind::Fixed || k == EndKind::Vessel; };
+  const Vec3 chord = (endPosition(ls.endB) - endPosition(ls.endA)).cwiseAbs();
+  int axis = 0;
+  chord.maxCoeff(&axis);
+  for (int e = 0; e < line.elementCount;) {
+    if (!m_elements[static_cast<std::size_t>(line.firstElement + e)].isBeam()) {
+      ++e;
+      continue;
+    }
+    int last = e;  // the run is elements [e, last]: nodes firstNode + e to firstNode + last + 1
+    while (last + 1 < line.elementCount &&
+           m_elements[static_cast<std::size_t>(line.firstElement + last + 1)].isBeam())
+      ++last;
+    const bool atA = e == 0, atB = last + 1 == line.elementCount;
+    // A line held nowhere (both ends free) has every rigid motion free in statics: no lock for twist alone.
+    const bool heldLine = heldInTranslation(ls.endA.kind) || heldInTranslation(ls.endB.kind) ||
+                          holdsTwist(ls.endA.kind) || holdsTwist(ls.endB.kind);
+    if (heldLine && !(atA && holdsTwist(ls.endA.kind)) && !(atB && holdsTwist(ls.endB.kind))) {
+      const int lockNode = atA && heldInTranslation(ls.endA.kind)   ? line.firstNode
+                           : atB && heldInTranslation(ls.endB.kind) ? line.lastNode()
+                                                                    : line.firstNode + e;
       m_dofs.constrain(m_dofs.firstDof(lockNode) + 3 + axis);
     }
+    e = last + 1;
   }
   m_lineIndex.emplace(line.name, static_cast<int>(m_lines.size()));  // the first of a name, as before
   m_lines.push_back(std::move(line));
