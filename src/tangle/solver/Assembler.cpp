@@ -75,12 +75,16 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
     m_axialDampingRate.push_back(el.type->axialDamping / el.restLength);
   // Submerged weight lumped on each node held in all three translations [N] (addSeabed).
   m_heldNodeWeight.assign(static_cast<std::size_t>(n), 0.0);
+  m_heldNodeShares.assign(static_cast<std::size_t>(n), {});
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const model::LineElement& el = model.elements()[e];
     for (const int node : {el.node1, el.node2}) {
       const int d = dofs.firstDof(node);
-      if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0)
+      if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) {
         m_heldNodeWeight[static_cast<std::size_t>(node)] += m_halfWeight[e] - m_halfBuoyancy[e];
+        m_heldNodeShares[static_cast<std::size_t>(node)].push_back(
+            {node == el.node1 ? el.node2 : el.node1, m_halfWeight[e] - m_halfBuoyancy[e]});
+      }
     }
   }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
@@ -515,11 +519,18 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     const int d = dofs.firstDof(n);
     // A node held in all three translations (an anchor) takes its support from the constraint: a seabed
     // spring there would only add a phantom vertical load to the anchor reaction. Resting on the seabed, the
-    // seabed carries its own weight (the line's, lumped on it), as it carries the laid nodes next to it:
-    // the anchor takes only the line's pull (theory 7.8). Only the reaction changes: the node is held.
+    // seabed carries its own weight (the line's, lumped on it) where the line lies on the seabed, as it
+    // carries the laid nodes next to it: each element's share whose other node rests on the seabed too. The
+    // anchor then takes only the line's pull (theory 7.8). A line rising from the anchor hangs from it: that
+    // element's share stays on the anchor (a tether's anchor read half an element of weight too little).
+    // Only the reaction changes: the node is held.
     if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) {
       if (m_heldNodeWeight[node] > 0.0 && bed.penetration(state.position[n], 0.5 * diameter[n]) > 0.0)
-        force[d + 2] -= m_heldNodeWeight[node] * request.loadFactor;
+        for (const HeldShare& share : m_heldNodeShares[node]) {
+          const auto other = static_cast<std::size_t>(share.other);
+          if (share.weight > 0.0 && bed.penetration(state.position[other], 0.5 * diameter[other]) > 0.0)
+            force[d + 2] -= share.weight * request.loadFactor;
+        }
       return;
     }
     // Clear of the seabed (most nodes): no reaction to evaluate (its result, force and two 3x3 blocks,

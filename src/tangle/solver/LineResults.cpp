@@ -47,12 +47,13 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
     // load): the force vector's slope along the line is its own distributed weight, dT/ds = -q (equilibrium
     // of a length ds; s from end A), so the end point is half an element of weight beyond the mid-point:
     // fEnd + side q l / 2, side +1 at end A, -1 at end B. Drag and inertia are left out. Submerged when its
-    // mid-point is below still water. An end node resting on the seabed has its lumped weight carried there
-    // (theory 7.8): no slope.
-    const int endNode = side > 0.0 ? end.node1 : end.node2;
-    const double radius = 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(endNode)];
-    if (model.seabedSurface().gap(state.position[static_cast<std::size_t>(endNode)], radius) <= 1e-6)
-      return fEnd;
+    // mid-point is below still water. An element lying on the seabed (both nodes resting on it) has its
+    // weight carried there (theory 7.8): no slope.
+    const auto resting = [&](int node) {
+      const double radius = 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(node)];
+      return model.seabedSurface().gap(state.position[static_cast<std::size_t>(node)], radius) <= 1e-6;
+    };
+    if (resting(end.node1) && resting(end.node2)) return fEnd;
     const model::EnvironmentSpec& env = model.environment();
     const double mid = 0.5 * (state.position[end.node1].z() + state.position[end.node2].z());
     const double weight = mid < 0.0 ? end.type->submergedWeight(env.waterDensity, env.gravity)
