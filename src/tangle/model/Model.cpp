@@ -339,15 +339,18 @@ void Model::buildLine(int lineIndex) {
   constrainEnd(line.lastNode(), ls.endB);
   // A run of consecutive beam elements whose ends both leave rotations free (pinned, anchored, point or free
   // line ends, or a cable section next to it, which carries no moment) can twist as a rigid body about its
-  // own axis: a zero-stiffness mechanism (a hose below a chain tether took 1 234 statics iterations and
-  // arc-length continuation past folds of the path with it; 6 without). Restrain the rotation component
-  // along the global axis closest to the line's chord at one node of the run (the "torsion lock" of 3D frame
-  // supports): a line end of the run held in translation if it has one, else the run's first node. A fixed
-  // end holds every rotation and a vessel's beam end has a torsion spring (VesselSystem), so a run reaching
-  // either is held already. The lock also holds the bending rotation's component along that axis at its
-  // node: nothing at a held end whose line leaves along the chord, a little elsewhere. A line held nowhere
-  // (both ends free) is not locked: every rigid motion of it is free in statics, and its inertia holds them
-  // in dynamics.
+  // own axis: a zero-stiffness mechanism (a buoyant hose above a chain tether in current took 2 611 statics
+  // iterations and arc-length continuation past folds of the path with it, 33 without; pinned 1 m short of
+  // taut it did not converge, 163 without). Restrain the rotation component along the global axis closest
+  // to the line's chord at one node of the run (the "torsion lock" of 3D frame supports): a line end of the
+  // run held in translation if it has one, else the run's first node. A fixed end holds every rotation and a
+  // vessel's beam end has a torsion spring (VesselSystem), so a run reaching either is held already (with a
+  // flex joint of zero stiffness too: not handled). The lock also holds the bending rotation's component
+  // along that axis at its node: nothing where the run leaves the node along the line's chord, but a run
+  // that lies across the chord (a beam section rising from a cable laid along it) keeps its twist nearly free
+  // and has that node's bending held: the axis should be the run's own, whose shape is not known here (not
+  // built). A line held nowhere (both ends free) is not locked: every rigid motion of it is free in statics,
+  // and its inertia holds them in dynamics.
   const auto heldInTranslation = [](EndKind k) {
     return k == EndKind::Anchored || k == EndKind::Pinned || k == EndKind::Point;
   };

@@ -175,10 +175,9 @@ TEST(EquilibriumAudit, AClumpOnTheSeabedIsHeldByTheSeabedNotByItsLines) {
 // first and last inner nodes (a point load between the two elements). The dynamics' end force (the
 // extrapolation, LineResults) must equal the static end force at the same state, the end element's force plus
 // its own half weight (theory 7.8; the force vector's slope along a line is its weight per length), to 1e-3
-// of that half weight (in statics the element's force vector is linear in arc length; what is left is the
-// static tolerance). Until 2026-12-06 the extrapolation took the end element's force alone: the end force off
-// by exactly the half weight (5.0 kN at the chain ends, end tensions 4.0-4.6 kN low; 1.57 kN next to a
-// clump).
+// of that half weight (both are that sum at the same state: what is left is round-off). Until 2026-12-06 the
+// extrapolation took the end element's force alone: the end force off by exactly the half weight (5.0 kN at
+// the chain ends, end tensions 4.0-4.6 kN low; 1.57 kN next to a clump).
 TEST(EquilibriumAudit, AnEndElementNextToAnotherTypeOrAPointLoadTakesItsOwnWeight) {
   for (const bool clump : {false, true}) {
     model::ModelSpec spec;

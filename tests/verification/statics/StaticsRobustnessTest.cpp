@@ -756,9 +756,11 @@ lines:
 // still-water tensions of the free case (end B: the buoy's net lift (1025 x 2.5 - 500) g; end A below), to
 // 1e-4 (the line hangs straight, only round-off of the static tolerance), and no moment at the chain-hose
 // junction (a cable carries none, so a lock that held the bending rotation there would show), below 1e-6 of
-// the hose's EI / element length. (The same line upside down, the chain's top on a vessel, had the hose's
-// twist locked at its anchor before, and takes 64, 119 and 2 659 iterations at three top positions, the last
-// 1 m short of taut, where the current's continuation stalls near drag fraction 0.43: not the twist.)
+// the hose's EI / element length (the line is vertical and the current of one azimuth: the junction bends
+// about a horizontal axis, not the locked z, so this holds whatever the lock; it checks the node is free).
+// (The same line upside down, the chain's top on a vessel, was not locked before either, the vessel end
+// skipped it; it is now locked at its anchor and takes 64, 119 and 2 659 iterations at three top positions,
+// the last 1 m short of taut, where the current's continuation stalls near drag fraction 0.43.)
 class TwistOfABeamSection : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TwistOfABeamSection, IsLockedWhereNoEndHoldsIt) {
