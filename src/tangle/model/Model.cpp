@@ -358,7 +358,9 @@ void Model::buildLine(int lineIndex) {
   const Vec3 chord = (endPosition(ls.endB) - endPosition(ls.endA)).cwiseAbs();
   int axis = 0;
   chord.maxCoeff(&axis);
-  for (int e = 0; e < line.elementCount;) {
+  const bool heldLine = heldInTranslation(ls.endA.kind) || heldInTranslation(ls.endB.kind) ||
+                        holdsTwist(ls.endA.kind) || holdsTwist(ls.endB.kind);
+  for (int e = 0; heldLine && e < line.elementCount;) {
     if (!m_elements[static_cast<std::size_t>(line.firstElement + e)].isBeam()) {
       ++e;
       continue;
@@ -368,10 +370,7 @@ void Model::buildLine(int lineIndex) {
            m_elements[static_cast<std::size_t>(line.firstElement + last + 1)].isBeam())
       ++last;
     const bool atA = e == 0, atB = last + 1 == line.elementCount;
-    // A line held nowhere (both ends free) has every rigid motion free in statics: no lock for twist alone.
-    const bool heldLine = heldInTranslation(ls.endA.kind) || heldInTranslation(ls.endB.kind) ||
-                          holdsTwist(ls.endA.kind) || holdsTwist(ls.endB.kind);
-    if (heldLine && !(atA && holdsTwist(ls.endA.kind)) && !(atB && holdsTwist(ls.endB.kind))) {
+    if (!(atA && holdsTwist(ls.endA.kind)) && !(atB && holdsTwist(ls.endB.kind))) {
       const int lockNode = atA && heldInTranslation(ls.endA.kind)   ? line.firstNode
                            : atB && heldInTranslation(ls.endB.kind) ? line.lastNode()
                                                                     : line.firstNode + e;

@@ -74,17 +74,14 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
   for (const model::LineElement& el : model.elements())
     m_axialDampingRate.push_back(el.type->axialDamping / el.restLength);
   // Submerged weight lumped on each node held in all three translations [N] (addSeabed).
-  m_heldNodeWeight.assign(static_cast<std::size_t>(n), 0.0);
   m_heldNodeShares.assign(static_cast<std::size_t>(n), {});
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const model::LineElement& el = model.elements()[e];
     for (const int node : {el.node1, el.node2}) {
       const int d = dofs.firstDof(node);
-      if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) {
-        m_heldNodeWeight[static_cast<std::size_t>(node)] += m_halfWeight[e] - m_halfBuoyancy[e];
+      if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0)
         m_heldNodeShares[static_cast<std::size_t>(node)].push_back(
             {node == el.node1 ? el.node2 : el.node1, m_halfWeight[e] - m_halfBuoyancy[e]});
-      }
     }
   }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
@@ -525,8 +522,9 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     // element's share stays on the anchor (a tether's anchor read half an element of weight too little).
     // Only the reaction changes: the node is held.
     if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) {
-      if (m_heldNodeWeight[node] > 0.0 && bed.penetration(state.position[n], 0.5 * diameter[n]) > 0.0)
-        for (const HeldShare& share : m_heldNodeShares[node]) {
+      const std::vector<HeldShare>& shares = m_heldNodeShares[node];
+      if (!shares.empty() && bed.penetration(state.position[n], 0.5 * diameter[n]) > 0.0)
+        for (const HeldShare& share : shares) {
           const auto other = static_cast<std::size_t>(share.other);
           if (share.weight > 0.0 && bed.penetration(state.position[other], 0.5 * diameter[other]) > 0.0)
             force[d + 2] -= share.weight * request.loadFactor;

@@ -264,13 +264,13 @@ class Assembler {
   std::vector<double> m_nodeForceScale;
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
-  std::vector<double> m_heldNodeWeight;  // submerged weight lumped on each node held in x, y, z [N] (else 0)
-  /// A held node's share of one element's submerged weight [N] and that element's other node.
+  /// A node held in x, y and z: its share of one element's submerged weight [N] and that element's other
+  /// node.
   struct HeldShare {
     int other = -1;
     double weight = 0.0;
   };
-  std::vector<std::vector<HeldShare>> m_heldNodeShares;  // per node held in x, y, z its elements' shares
+  std::vector<std::vector<HeldShare>> m_heldNodeShares;  // per node: its elements' shares if held (else none)
   std::vector<double> m_axialDampingRate;  // each element's axial damping c over its L0 [N s/m]
   // Per full DOF, the node's own diagonal mass term of addOwnMass's node loop: its lumped mass [kg] at a
   // translation (0 with consistent mass, whose translations the element loop adds), its rotational

@@ -265,15 +265,11 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       // A free end with nothing attached carries no force: the extrapolation from the elements would give
       // the end element's own section force (half its weight and inertia), which is not the physics (a
       // drilling riser's free end below a one-element LMRP read 620-648 kN where the statics give 0).
-      const auto bare = [&](int node) {
-        return std::none_of(model.attachments().begin(), model.attachments().end(),
-                            [&](const model::NodeAttachment& a) { return a.node == node; });
-      };
-      if (line.spec->endA.kind == model::EndKind::Free && bare(line.firstNode)) {
+      if (line.spec->endA.kind == model::EndKind::Free && !hasAttachment(model, line.firstNode)) {
         s.endTensionA = 0.0;
         s.endTensionForceA = Vec3::Zero();
       }
-      if (line.spec->endB.kind == model::EndKind::Free && bare(line.lastNode())) {
+      if (line.spec->endB.kind == model::EndKind::Free && !hasAttachment(model, line.lastNode())) {
         s.endTensionB = 0.0;
         s.endTensionForceB = Vec3::Zero();
       }
