@@ -992,8 +992,8 @@ std::string ClearanceEnvelope::terminalSummary() const {
     if (m_dynamic) {
       const Minimum dy = minimum(p, true);
       if (std::isfinite(dy.clearance))
-        s += fmt::format(", dynamic min {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'", dy.clearance, dy.time,
-                         dy.arcLength, lines[static_cast<std::size_t>(dy.line)].name);
+        s += fmt::format(", dynamic min (every step) {:.3f} m at t = {:.2f} s, {:.1f} m along '{}'",
+                         dy.clearance, dy.time, dy.arcLength, lines[static_cast<std::size_t>(dy.line)].name);
       else
         s += fmt::format(", dynamically never within the {:.3g} m clearance margin", m_margin);
     }

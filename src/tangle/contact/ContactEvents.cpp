@@ -66,6 +66,7 @@ void mergeEvent(ContactEvent& into, const ContactEvent& from) {
   into.lastPhaseForce += from.lastPhaseForce;
   into.lastPower += from.lastPower;
   into.peakForce = std::max(into.peakForce, from.peakForce);
+  into.phasePeakForce = std::max(into.phasePeakForce, from.phasePeakForce);
   into.peakForcePerLength = std::max(into.peakForcePerLength, from.peakForcePerLength);
   into.maxContactLength = std::max(into.maxContactLength, from.maxContactLength);
   into.maxPenetration = std::max(into.maxPenetration, from.maxPenetration);
@@ -327,6 +328,9 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       const double power = e.lastPower + theta * (step.power - e.lastPower);
       e.phaseImpulse += 0.5 * (e.lastPhaseForce + force) * theta * dt + step.jump;
       e.phaseWork += 0.5 * (e.lastPower + power) * theta * dt + step.jumpWork;
+      // The normal force at the phase's end within this step (linear, as the impulse's), else the step's.
+      e.phasePeakForce = std::max(
+          e.phasePeakForce, theta < 1.0 ? e.lastForce + theta * (step.force - e.lastForce) : step.force);
     }
     e.lastForce = step.force;
     e.lastPhaseForce = step.phaseForce;
@@ -400,6 +404,7 @@ void ContactEventTracker::measureImpact(ContactEvent& e) {
   e.energyMass = continuum ? e.continuumMass : e.meshMass;
   e.energyMassBasis = continuum ? "continuum" : e.meshMassBasis;
   e.impactEnergy = 0.5 * e.energyMass * v0 * v0;
+  e.impactPeakForce = !e.impact ? 0.0 : continuum ? e.continuumPeakForce : e.phasePeakForce;
   e.energyWarning.clear();
   if (!e.impact) return;
   if (continuum) {

@@ -88,9 +88,16 @@ struct ContactEvent {
   Vec3 positionStart = Vec3::Zero();      ///< where it began, on line 1 (force centroid) [m]
   double arcAMin = 0.0, arcAMax = 0.0, arcBMin = 0.0, arcBMax = 0.0;  ///< extent over the event [m]
   std::vector<std::array<double, 3>> path;  ///< (time, arcA, arcB) force centroids along the event
-  double peakForce = 0.0;          ///< largest total normal force of the patch [N]
+  double peakForce = 0.0;  ///< largest total normal force of the patch over the event, on the mesh [N]
   double peakForcePerLength = 0.0; ///< largest line-to-line force per unit length [N/m]
   double maxContactLength = 0.0;   ///< longest contact length [m]
+  /// The impact's peak force [N] on the impact energy's basis (energyMassBasis): the continuum estimate's
+  /// (continuumPeakForce) where the energy is the continuum's, else the mesh's over the impact phase
+  /// (phasePeakForce); 0 for an event that is not an impact. The peak force that goes with the impact
+  /// energy: on a mesh coarser than the length of line an impact engages, the simulated force is that of
+  /// the element's lumped mass on the contact law, as the mesh energy is (docs/theory.md 9.10).
+  double impactPeakForce = 0.0;
+  double phasePeakForce = 0.0;     ///< largest total normal force over the impact phase, on the mesh [N]
   double impulse = 0.0;            ///< integral of the total force over time [N s]
   double impactVelocity = 0.0;     ///< relative normal approach speed at first contact [m/s]
   double impactEnergy = 0.0;       ///< 1/2 energyMass impactVelocity^2 [J]

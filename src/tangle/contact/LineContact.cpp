@@ -97,6 +97,10 @@ double LineContact::stiffness(int a, int b) const {
   return m_spec.stiffness > 0.0 ? m_spec.stiffness : std::min(m_lineStiffness[a], m_lineStiffness[b]);
 }
 
+double LineContact::pairStiffness(int a, int b) const {
+  return m_distributed ? m_distributed->pointStiffness(a, b) : stiffness(a, b);
+}
+
 double LineContact::nodeTransverseMass(int node) const {
   const model::DofMap& dofs = m_model->dofs();
   if (dofs.equation(dofs.firstDof(node)) < 0) return kInf;  // held node: immovable

@@ -221,8 +221,13 @@ class LineContact final : public solver::LoadContributor {
     if (m_distributed) m_distributed->refreshCurves();
   }
 
-  /// Contact stiffness between two lines [N/m] (user value or automatic).
+  /// The point formulation's contact stiffness between two lines [N/m] (user value or automatic,
+  /// 0.1 EA / L of the softer line's shortest element).
   double stiffness(int lineA, int lineB) const;
+  /// The contact stiffness k of the formulation in use between two lines [N/m]: the point formulation's
+  /// spring (stiffness), or the distributed law's point stiffness (DistributedContact::pointStiffness: a
+  /// crossing's dF/dp at the penetration D^2 / (8 (rA + rB)), mesh-free). What contact/summary.json reports.
+  double pairStiffness(int lineA, int lineB) const;
   /// Damping ratio of the dashpot [-] for the requested restitution.
   double dampingRatio() const { return m_zeta; }
   /// Whether two lines may touch.

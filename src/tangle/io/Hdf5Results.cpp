@@ -345,6 +345,10 @@ void Hdf5Results::writeContactEvents(const std::vector<contact::ContactEvent>& e
   column("energy_warning", "-", "1: the two energy estimates or the mass bounds disagree",
          [](const auto& e) { return e.energyWarning.empty() ? 0.0 : 1.0; });
   column("peak_force", "N", "largest total contact force", [](const auto& e) { return e.peakForce; });
+  column("impact_peak_force", "N",
+         "the impact's peak force on the impact energy's basis (the continuum estimate's where the energy is "
+         "the continuum's, else the mesh's over the impact phase; 0: not an impact)",
+         [](const auto& e) { return e.impactPeakForce; });
   column("peak_force_per_length", "N/m", "largest contact force per unit length",
          [](const auto& e) { return e.peakForcePerLength; });
   column("impulse", "N s", "integral of the contact force", [](const auto& e) { return e.impulse; });
