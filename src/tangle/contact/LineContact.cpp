@@ -1029,9 +1029,14 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   // Element i of A and j of B are measured unless neighbours on one line or across an exclusion
   // (contact.exclude, exclusion_zones, a shared connection: lines at one fairlead or at one point touch there
   // by construction; the clearance is the contact's, which skips them too).
+  // Nor a parted element (lines[].failure): its nodes are the ends of two pieces, and the segment between
+  // them, hundreds of metres long once the pieces have fallen apart, is no line (the envelope's rule).
+  const model::PartedElements& parted = m_model->parted();
   const auto measured = [&](int i, int j) {
     return !(lineA == lineB && std::abs(i - j) <= 1) &&
-           m_search.elementPairAllowed(la.firstElement + i, lb.firstElement + j);
+           m_search.elementPairAllowed(la.firstElement + i, lb.firstElement + j) &&
+           !parted.parted(static_cast<std::size_t>(la.firstElement + i), state.time) &&
+           !parted.parted(static_cast<std::size_t>(lb.firstElement + j), state.time);
   };
   double seed = kInf;
   std::pair<int, int>& hint = m_clearanceHint[{lineA, lineB}];

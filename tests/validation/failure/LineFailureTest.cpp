@@ -355,3 +355,51 @@ dynamics: {{duration: {}, time_step: 0.001, output_interval: 0.005, ramp_time: 0
 
 }  // namespace
 }  // namespace tangle
+
+namespace tangle {
+namespace {
+
+// ---------------------------------------------------------------------------------------------------------
+// The clash report's clearance (contact/clearance.csv, the "min clearance at the output times") of a parted
+// line: a wire pinned 100 m apart, parted at end B before the statics (`failure: {time: 0}`), hangs straight
+// down from end A; a taut cable crosses the span 45 m below the pins, 50 m from the hanging wire. Reference:
+// the distance between the two straight lines less the radii, 50 - 0.048 - 0.05 m; tolerance 1 mm (the
+// cable's sag over its 40 m in the contact's slack: millimetres, and the hanging wire is vertical to
+// round-off). The parted element is no segment: its nodes, the hanging end 90 m down and the pin of end B,
+// are the ends of two pieces (the clearance envelope's and the contact's rule). Before 2026-12-06 the clash
+// report measured it as one and gave 0.23 m, where it passed the cable, while the envelope (every step) gave
+// the true 49.9 m: a snapped mooring leg falling past a riser reported its stub's phantom, 26.5 m at the
+// output times against 27.3 m every step.
+// ---------------------------------------------------------------------------------------------------------
+TEST(LineFailure, AClearanceSkipsTheSegmentAcrossAPartedElement) {
+  const std::string yaml = R"(title: a parted wire beside a taut cable
+environment: {water_depth: 300}
+line_types:
+  - {name: wire, outer_diameter: 0.096, mass_per_length: 38.0, axial_stiffness: 8.0e8}
+  - {name: cable, outer_diameter: 0.1, mass_per_length: 20.0, axial_stiffness: 8.0e8}
+lines:
+  - name: wire
+    end_a: {type: pinned, position: [-50, 0, -50]}
+    end_b: {type: pinned, position: [50, 0, -50]}
+    sections: [{type: wire, length: 100, elements: 10}]
+    failure: {time: 0, at: end_b}
+  - name: cable
+    end_a: {type: pinned, position: [0, -20, -95]}
+    end_b: {type: pinned, position: [0, 20, -95]}
+    sections: [{type: cable, length: 39.99, elements: 8}]
+contact: {}
+dynamics: {duration: 0}
+)";
+  analysis::Simulation sim(io::readModelString(yaml, "parted-clearance.yaml"));
+  ASSERT_TRUE(sim.solveStatics().converged);
+  const model::Line& wire = sim.model().lines().front();
+  const Vec3 hangingEnd = sim.state().position[static_cast<std::size_t>(wire.lastNode() - 1)];
+  ASSERT_NEAR(hangingEnd.x(), -50.0, 1e-6) << "the wire hangs straight down from end A";
+  ASSERT_LT(hangingEnd.z(), -130.0);
+  const std::vector<std::array<double, 3>> c = sim.contact()->clearances(sim.state(), {{0, 1}});
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_NEAR(c.front()[0], 50.0 - 0.048 - 0.05, 1e-3);
+}
+
+}  // namespace
+}  // namespace tangle
