@@ -261,13 +261,20 @@ std::string ClashReport::terminalSummary() const {
     double minClear = std::numeric_limits<double>::infinity();
     for (const ClearanceSample& c : m_samples)
       if (c.pair == p) minClear = std::min(minClear, c.clearance);
+    // The impacts' maxima only where there were impacts, the contact force only where there was contact.
+    const std::string impacts =
+        count > 0 ? fmt::format(
+                        "; max impact velocity {:.3f} m/s, max impact energy {:.4g} J, max impact "
+                        "force {:.4g} kN",
+                        vmax, emax, fimpact / 1000.0)
+                  : std::string();
+    const std::string force =
+        count + sustained + brief > 0 ? fmt::format(", max contact force {:.4g} kN", fmax / 1000.0) : "";
     s += fmt::format(
-        "  {} / {}: {} impact(s){}, {} sustained contact(s) without an impact, {} brief touch(es); max "
-        "impact "
-        "velocity {:.3f} m/s, max impact energy {:.4g} J, max impact force {:.4g} kN, max contact force "
-        "{:.4g} kN, min clearance at the output times {}\n",
+        "  {} / {}: {} impact(s){}, {} sustained contact(s) without an impact, {} brief touch(es){}{}; min "
+        "clearance at the output times {}\n",
         lines[a].name, lines[b].name, count, stayed > 0 ? fmt::format(" ({} then sustained)", stayed) : "",
-        sustained, brief, vmax, emax, fimpact / 1000.0, fmax / 1000.0,
+        sustained, brief, impacts, force,
         std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
   }
   for (const ContactEvent& e : m_contact->events())
