@@ -128,6 +128,16 @@ class Seabed {
     }
     return law;
   }
+  /// Fraction [0, 1] of a line's submerged weight `weightPerLength` [N/m] that the seabed carries under a
+  /// node at `position` [m] of contact radius `radius` [m]: the elastic normal reaction per unit length (no
+  /// dashpot) over the weight, capped at 1; 0 clear of the seabed or for a line that floats (w <= 0).
+  /// Continuous in the position, from 0 where the node just touches to 1 where it rests under its weight:
+  /// what a held node's share of an element's weight on the seabed goes by (theory 7.8).
+  double carriedFraction(const Vec3& position, double radius, double weightPerLength) const {
+    if (weightPerLength <= 0.0) return 0.0;
+    const double reaction = normalLaw(penetration(position, radius), 0.0, 1.0, false).force;
+    return std::min(1.0, reaction / weightPerLength);
+  }
   /// The seabed's unit normal under `position` [-] (e_z on a flat seabed).
   Vec3 normalAt(const Vec3& position) const;
 

@@ -81,7 +81,8 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
       const int d = dofs.firstDof(node);
       if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0)
         m_heldNodeShares[static_cast<std::size_t>(node)].push_back(
-            {node == el.node1 ? el.node2 : el.node1, m_halfWeight[e] - m_halfBuoyancy[e]});
+            {node == el.node1 ? el.node2 : el.node1, m_halfWeight[e] - m_halfBuoyancy[e],
+             2.0 * (m_halfWeight[e] - m_halfBuoyancy[e]) / el.restLength});
     }
   }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
@@ -520,14 +521,20 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
     // carries the laid nodes next to it: each element's share whose other node rests on the seabed too. The
     // anchor then takes only the line's pull (theory 7.8). A line rising from the anchor hangs from it: that
     // element's share stays on the anchor (a tether's anchor read half an element of weight too little).
+    // Between, the share the seabed carries is the fraction of the other node's weight the seabed carries
+    // (Seabed::carriedFraction): a node that only just touches holds nothing up, and the anchor's reaction
+    // changed by the whole share when it lifted off or landed (a step in a dynamic anchor tension history).
     // Only the reaction changes: the node is held.
     if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0) {
       const std::vector<HeldShare>& shares = m_heldNodeShares[node];
-      if (!shares.empty() && bed.penetration(state.position[n], 0.5 * diameter[n]) > 0.0)
+      if (!shares.empty() && request.loadFactor > 0.0 &&
+          bed.penetration(state.position[n], 0.5 * diameter[n]) > 0.0)
         for (const HeldShare& share : shares) {
+          if (share.weight <= 0.0) continue;
           const auto other = static_cast<std::size_t>(share.other);
-          if (share.weight > 0.0 && bed.penetration(state.position[other], 0.5 * diameter[other]) > 0.0)
-            force[d + 2] -= share.weight * request.loadFactor;
+          force[d + 2] -= share.weight * request.loadFactor *
+                          bed.carriedFraction(state.position[other], 0.5 * diameter[other],
+                                              share.weightPerLength * request.loadFactor);
         }
       return;
     }

@@ -264,11 +264,12 @@ class Assembler {
   std::vector<double> m_nodeForceScale;
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
-  /// A node held in x, y and z: its share of one element's submerged weight [N] and that element's other
-  /// node.
+  /// A node held in x, y and z: its share of one element's submerged weight [N], that element's submerged
+  /// weight per length [N/m] and its other node.
   struct HeldShare {
     int other = -1;
     double weight = 0.0;
+    double weightPerLength = 0.0;
   };
   std::vector<std::vector<HeldShare>> m_heldNodeShares;  // per node: its elements' shares if held (else none)
   std::vector<double> m_axialDampingRate;  // each element's axial damping c over its L0 [N s/m]

@@ -5,6 +5,7 @@
 
 #include "tangle/core/Units.hpp"
 #include "tangle/geometry/Rotation.hpp"
+#include "tangle/seabed/Seabed.hpp"
 
 namespace tangle::solver {
 
@@ -47,18 +48,23 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
     // load): the force vector's slope along the line is its own distributed weight, dT/ds = -q (equilibrium
     // of a length ds; s from end A), so the end point is half an element of weight beyond the mid-point:
     // fEnd + side q l / 2, side +1 at end A, -1 at end B. Drag and inertia are left out. Submerged when its
-    // mid-point is below still water. An element lying on the seabed (both nodes resting on it) has its
-    // weight carried there (theory 7.8): no slope.
-    const auto resting = [&](int node) {
-      const double radius = 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(node)];
-      return model.seabedSurface().gap(state.position[static_cast<std::size_t>(node)], radius) <= 1e-6;
-    };
-    if (resting(end.node1) && resting(end.node2)) return fEnd;
+    // mid-point is below still water. Where the line's end node rests on the seabed, the seabed carries the
+    // fraction of that weight it carries under the element's other node (theory 7.8, Assembler::addSeabed's
+    // rule for an anchor): none of the slope for an element lying on the seabed.
     const model::EnvironmentSpec& env = model.environment();
     const double mid = 0.5 * (state.position[end.node1].z() + state.position[end.node2].z());
     const double weight = mid < 0.0 ? end.type->submergedWeight(env.waterDensity, env.gravity)
                                     : end.type->totalMassPerLength() * env.gravity;  // [N/m]
-    return fEnd + Vec3(0.0, 0.0, -side * 0.5 * end.restLength * weight);
+    const int endNode = side > 0.0 ? end.node1 : end.node2, other = side > 0.0 ? end.node2 : end.node1;
+    const auto radius = [&](int node) {
+      return 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(node)];
+    };
+    const seabed::Seabed bed(env.seabed, model.sharedSeabedSurface());
+    const double carried =
+        bed.penetration(state.position[static_cast<std::size_t>(endNode)], radius(endNode)) > 0.0
+            ? bed.carriedFraction(state.position[static_cast<std::size_t>(other)], radius(other), weight)
+            : 0.0;
+    return fEnd + Vec3(0.0, 0.0, -side * 0.5 * end.restLength * weight * (1.0 - carried));
   }
   const Vec3 fInner = elementForce(state, *inner, innerTension, innerBeam);
   // Mid-points are 0.5 (l_end + l_inner) apart; the end point is 0.5 l_end beyond the end mid-point.

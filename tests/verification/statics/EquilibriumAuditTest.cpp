@@ -13,6 +13,7 @@
 // 4. A chain draped over a free barge's hull (vessels[].hull, issue 46): the hull contact is a term of the
 //    barge's balance, equal and opposite to the contact on the chain, and both close.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -213,6 +214,54 @@ TEST(EquilibriumAudit, AnEndElementNextToAnotherTypeOrAPointLoadTakesItsOwnWeigh
     EXPECT_GT(lines[0].endTensionB, 5.0 * halfWeight) << spec.sourceFile;
   }
 }
+// A chain anchored on the seabed (300 m, 10 m elements, 100 m deep), its fairlead moved away in steps of 5 cm
+// over the metre in which the line lifts off next to the anchor (the anchor's neighbour 8 mm into the seabed
+// at the first position, 10 cm clear at the last): the anchor's reaction (the statics' support reaction,
+// snapshot endTensionForceA) is a continuous function of the fairlead's position, and the dynamics'
+// extrapolation from the end elements (LineResults) agrees with it at every position (1e-3 of the share, as
+// above). The seabed carries the anchor's share of the first element's weight (4.3 kN) in the fraction it
+// carries the weight under the element's other node (Seabed::carriedFraction; theory 7.8): that node only
+// just touching holds nothing up, and the anchor's vertical force falls to minus the share as the node lifts
+// off, then rises with the line's pull. Before 2026-12-06 the share went whole at the node's first touch: the
+// anchor's vertical force stepped by it between two positions 5 cm apart (in dynamics, within one step).
+// Tolerance: a quarter of the share between neighbouring positions; the smooth change is at most 0.16 of it
+// per 5 cm here (measured below in the test's record).
+TEST(EquilibriumAudit, AnchorReactionIsContinuousAsTheLineLiftsOffNextToIt) {
+  double previous = std::nan(""), largestStep = 0.0, share = 0.0;
+  bool landedFirst = false, liftedLast = false;
+  for (int i = 0; i <= 20; ++i) {
+    const double fairlead = 281.0 + 0.05 * i;
+    model::ModelSpec spec;
+    spec.sourceFile = "chain lifting off next to its anchor (test)";
+    spec.environment.waterDepth = 100.0;
+    spec.lineTypes["chain"] = test::cableType("chain", 0.12, 100.0, 6.0e8);
+    spec.lines.push_back(test::simpleLine("chain", "chain", 300.0, 30, model::EndKind::Anchored,
+                                          Vec3(0, 0, -100), model::EndKind::Pinned, Vec3(fairlead, 0, -10)));
+    analysis::Simulation sim(spec);
+    ASSERT_TRUE(sim.solveStatics().converged) << fairlead;
+    const auto lines = sim.snapshot();
+    std::vector<solver::LineSnapshot> extrapolated;
+    solver::computeLineResults(sim.model(), sim.assembler(), sim.state(), nullptr, extrapolated);
+    const model::EnvironmentSpec& env = sim.model().environment();
+    share = 0.5 * 10.0 * spec.lineTypes.at("chain").submergedWeight(env.waterDensity, env.gravity);
+    EXPECT_NEAR((lines[0].endTensionForceA - extrapolated[0].endTensionForceA).norm(), 0.0, 1e-3 * share)
+        << "fairlead at x = " << fairlead;
+    const double vertical = lines[0].endTensionForceA.z();
+    if (std::isfinite(previous)) largestStep = std::max(largestStep, std::abs(vertical - previous));
+    previous = vertical;
+    // The anchor's neighbour: resting under its weight at the first position, clear at the last.
+    const int neighbour = sim.model().lines()[0].firstNode + 1;
+    const double gap =
+        sim.model().seabedSurface().gap(sim.state().position[static_cast<std::size_t>(neighbour)], 0.06);
+    if (i == 0) landedFirst = gap < -1e-3;
+    if (i == 20) liftedLast = gap > 1e-3;
+  }
+  ASSERT_TRUE(landedFirst && liftedLast) << "the sweep must take the anchor's neighbour off the seabed";
+  RecordProperty("largest_step_N", fmt::format("{:.4g}", largestStep));
+  RecordProperty("share_N", fmt::format("{:.4g}", share));
+  EXPECT_LT(largestStep, 0.25 * share);
+}
+
 TEST(EquilibriumAudit, AChainOnABargesHullBalancesBothBodies) {
   // A 70 m chain pinned 8 m above water at x = +-34 m lies across the top (z = +2 m) of a barge's box hull
   // (its start shape over the hull: the catenary would start through it, which the model refuses).
