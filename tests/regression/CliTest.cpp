@@ -504,6 +504,53 @@ dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
   EXPECT_LT(worstFairlead, 2e-4) << "the fairlead does not follow the vessel point";
 }
 
+// A vessel's offset is its total offset (DNV-OS-E301 Ch.2 Sec.2: mean, low- and wave-frequency combined): a
+// fixed vessel with a surge RAO of 0.7 m/m (lag 0) in a regular wave of 2 m along its axis (amplitude 1 m)
+// surges 0.7 m at the wave frequency about its model position, so its largest offset over the run is 0.7 m
+// (first order, RaoMotion.hpp; every step of 0.05 s samples the 10 s cycle within 0.012 % of its peak;
+// tolerance 0.1 %). Until 2026-12-06 the offset was the vessel node's, the low-frequency pose alone: 0.
+TEST(Cli, AVesselsOffsetIncludesItsWaveFrequencyMotion) {
+  const fs::path dir = modelFolder("tangle_cli_vessel_offset", R"(title: fixed vessel surging with the waves
+environment:
+  water_depth: 100
+  waves: {type: airy, height: 2.0, period: 10.0, azimuth: 0}
+line_types:
+  - {name: wire, outer_diameter: 0.08, mass_per_length: 30, axial_stiffness: 5.0e8}
+vessels:
+  - name: ship
+    mode: fixed
+    position: [0, 0, 0]
+    heading: 0
+    raos:
+      periods: [5, 15]
+      headings: [0, 180]
+      rows:
+        - [5, 0, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+        - [5, 180, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+        - [15, 0, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+        - [15, 180, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
+lines:
+  - name: tether
+    end_a: {type: anchored, position: [10, 0, -100]}
+    end_b: {type: vessel, vessel: ship, position: [10, 0, -5]}
+    sections: [{type: wire, length: 94.9, elements: 10}]
+dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
+)");
+  const fs::path out = dir / "out";
+  const Outcome o =
+      runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report -q");
+  ASSERT_EQ(o.code, 0) << o.output;
+  std::ifstream in(out / "dynamics" / "summary.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string summary = text.str();
+  const std::string key = "\"max_offset_m\":";
+  const std::size_t at = summary.find(key);
+  ASSERT_NE(at, std::string::npos) << summary;
+  const double offset = std::stod(summary.substr(at + key.size()));
+  EXPECT_NEAR(offset, 0.7, 0.001 * 0.7);
+}
+
 // Issue 9: the riser-interference example end to end: the wake closes the gap between the risers, the
 // clearance check writes its envelope (static and dynamic, every node of both risers) and a verdict.
 TEST(Cli, RiserInterferenceExampleWritesTheClearanceCheck) {

@@ -53,16 +53,32 @@ std::string readTextFile(const fs::path& p) {
 }
 
 /// Horizontal distance [m] of vessel `v`'s reference point at `state` from its position in the model.
-double horizontalOffset(const model::Model& m, const model::State& state, std::size_t v) {
-  const Vec3 d = state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] -
-                 m.spec().vessels[v].position;
+/// The total offset: the low-frequency pose (the vessel node) plus, where the vessel has RAOs in waves, the
+/// wave-frequency motion of its reference point (VesselSystem::waveFrequencyMotion, first order), as its line
+/// ends get it (the mean, low- and wave-frequency offsets of DNV-OS-E301 Ch.2 Sec.2 and API RP 2SK combined
+/// in the time domain). Until 2026-12-06 the wave-frequency part was left out: a prescribed unit swaying 2 m
+/// in a storm reported a largest offset of 0.00 m.
+double horizontalOffset(const model::Model& m, const model::State& state, std::size_t v,
+                        const vessel::VesselSystem* vessels) {
+  Vec3 d = state.position[static_cast<std::size_t>(m.vesselNode(static_cast<int>(v)))] -
+           m.spec().vessels[v].position;
+  if (vessels)
+    if (const auto wave = vessels->waveFrequencyMotion(static_cast<int>(v), state.time)) {
+      d.x() += (*wave)[0];
+      d.y() += (*wave)[1];
+    }
   return std::hypot(d.x(), d.y());
 }
 
-/// The largest horizontal offset [m] of each vessel so far, updated with `state`.
-void updateMaxOffsets(const model::Model& m, const model::State& state, std::vector<double>& maxOffset) {
-  for (std::size_t v = 0; v < maxOffset.size(); ++v)
-    maxOffset[v] = std::max(maxOffset[v], horizontalOffset(m, state, v));
+/// The horizontal offset [m] of each vessel at `state` (horizontalOffset) into `offset`, and the largest so
+/// far into `maxOffset`.
+void updateOffsets(const model::Model& m, const model::State& state, const vessel::VesselSystem* vessels,
+                   std::vector<double>& offset, std::vector<double>& maxOffset) {
+  offset.resize(maxOffset.size());
+  for (std::size_t v = 0; v < maxOffset.size(); ++v) {
+    offset[v] = horizontalOffset(m, state, v, vessels);
+    maxOffset[v] = std::max(maxOffset[v], offset[v]);
+  }
 }
 
 void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, const io::DynamicRecorder& rec,
@@ -430,8 +446,8 @@ bool RunOutputs::runDynamics() {
   recorder.setSeabed(analysis::RangeGraphs::seabedNodes(m));
   std::vector<double> vesselMotion(6 * m.vessels().size());
   // Largest horizontal offset of each vessel over every step, from the static position on [m].
-  std::vector<double> maxOffset(m.vessels().size(), 0.0);
-  updateMaxOffsets(m, sim.state(), maxOffset);
+  std::vector<double> maxOffset(m.vessels().size(), 0.0), offset;
+  updateOffsets(m, sim.state(), vessels, offset, maxOffset);
   std::unique_ptr<contact::ClashReport> clash;
   if (sim.contact()) clash = std::make_unique<contact::ClashReport>(m, *sim.contact(), m_assessedPairs);
   // Vessel motions: position of the reference point and rotation (roll, pitch, yaw as a rotation
@@ -635,10 +651,9 @@ bool RunOutputs::runDynamics() {
         b.time.push_back(s.time);
         b.dt.push_back(dt);
         b.positions.insert(b.positions.end(), s.position.begin(), s.position.end());
-        updateMaxOffsets(m, s, maxOffset);
+        updateOffsets(m, s, vessels, offset, maxOffset);
         if (s.time >= m.spec().dynamics.rampTime - 1e-9)
-          for (std::size_t v = 0; v < offsetPeaks.size(); ++v)
-            offsetPeaks[v].add(s.time, horizontalOffset(m, s, v));
+          for (std::size_t v = 0; v < offsetPeaks.size(); ++v) offsetPeaks[v].add(s.time, offset[v]);
         if (energy) energy->step(s, dt);
         seabedImpacts.commit(s, dt);
         if (anyRotations) b.triads.insert(b.triads.end(), s.triad.begin(), s.triad.end());
