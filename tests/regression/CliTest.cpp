@@ -325,7 +325,8 @@ TEST(Cli, TransientRunSaysSoOnceInsteadOfStormExtremes) {
             std::string::npos)
       << o.output;
   EXPECT_NE(o.output.find("  vessel 'drilling_unit': offset 85."), std::string::npos) << o.output;
-  EXPECT_NE(o.output.find("  lines 'mooring' / 'riser': smallest clearance at the output times -0.00"),
+  EXPECT_NE(o.output.find(
+                "  lines 'mooring' / 'riser': smallest clearance at the output times after the ramp -0.00"),
             std::string::npos)
       << o.output;
   EXPECT_EQ(o.output.find("no storm extreme"), std::string::npos) << o.output;

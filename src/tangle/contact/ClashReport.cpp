@@ -112,7 +112,9 @@ void ClashReport::write(const fs::path& dir) const {
           e.phaseWork, e.workMass, e.eventEq5Mass, e.massLowerBound, e.massUpperBound, e.energyWarning,
           e.meshMass, e.meshEnergy, e.meshMassBasis, e.continuumMass, e.continuumEnergy, e.continuumLengthA,
           e.continuumLengthB, e.continuumDuration, e.continuumPeakForce, e.continuumNote, e.impactPeakForce,
-          e.impact ? e.phasePeakForce : 0.0);
+          !e.impact       ? 0.0
+          : e.phaseJumped ? std::nan("")
+                          : e.phasePeakForce);
     }
     file.close();
   }
@@ -201,7 +203,7 @@ void ClashReport::write(const fs::path& dir) const {
       energy.push_back(e.impactEnergy);
       absorbed.push_back(e.phaseWork);
       force.push_back(e.peakForce);
-      impactForce.push_back(e.impactPeakForce);
+      if (std::isfinite(e.impactPeakForce)) impactForce.push_back(e.impactPeakForce);  // not a jump's
       if (!e.energyWarning.empty()) ++doubtful;
     }
     const ClearanceSample* worst = nullptr;
@@ -256,7 +258,7 @@ std::string ClashReport::terminalSummary() const {
       if (e.sustained) ++stayed;
       vmax = std::max(vmax, e.impactVelocity);
       emax = std::max(emax, e.impactEnergy);
-      fimpact = std::max(fimpact, e.impactPeakForce);
+      if (std::isfinite(e.impactPeakForce)) fimpact = std::max(fimpact, e.impactPeakForce);
     }
     double minClear = std::numeric_limits<double>::infinity();
     for (const ClearanceSample& c : m_samples)

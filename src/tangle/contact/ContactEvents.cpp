@@ -61,12 +61,13 @@ void mergeEvent(ContactEvent& into, const ContactEvent& from) {
   if (into.phaseOpen && from.phaseOpen) {
     into.phaseImpulse += from.phaseImpulse;
     into.phaseWork += from.phaseWork;
+    into.phasePeakForce = std::max(into.phasePeakForce, from.phasePeakForce);
+    into.phaseJumped = into.phaseJumped || from.phaseJumped;
   }
   into.lastForce += from.lastForce;
   into.lastPhaseForce += from.lastPhaseForce;
   into.lastPower += from.lastPower;
   into.peakForce = std::max(into.peakForce, from.peakForce);
-  into.phasePeakForce = std::max(into.phasePeakForce, from.phasePeakForce);
   into.peakForcePerLength = std::max(into.peakForcePerLength, from.peakForcePerLength);
   into.maxContactLength = std::max(into.maxContactLength, from.maxContactLength);
   into.maxPenetration = std::max(into.maxPenetration, from.maxPenetration);
@@ -331,6 +332,7 @@ void ContactEventTracker::update(double time, double dt, bool dynamic, const std
       // The normal force at the phase's end within this step (linear, as the impulse's), else the step's.
       e.phasePeakForce = std::max(
           e.phasePeakForce, theta < 1.0 ? e.lastForce + theta * (step.force - e.lastForce) : step.force);
+      e.phaseJumped = e.phaseJumped || step.jump != 0.0;
     }
     e.lastForce = step.force;
     e.lastPhaseForce = step.phaseForce;
@@ -404,7 +406,10 @@ void ContactEventTracker::measureImpact(ContactEvent& e) {
   e.energyMass = continuum ? e.continuumMass : e.meshMass;
   e.energyMassBasis = continuum ? "continuum" : e.meshMassBasis;
   e.impactEnergy = 0.5 * e.energyMass * v0 * v0;
-  e.impactPeakForce = !e.impact ? 0.0 : continuum ? e.continuumPeakForce : e.phasePeakForce;
+  e.impactPeakForce = !e.impact       ? 0.0
+                      : continuum     ? e.continuumPeakForce
+                      : e.phaseJumped ? std::nan("")
+                                      : e.phasePeakForce;
   e.energyWarning.clear();
   if (!e.impact) return;
   if (continuum) {

@@ -93,11 +93,14 @@ struct ContactEvent {
   double maxContactLength = 0.0;   ///< longest contact length [m]
   /// The impact's peak force [N] on the impact energy's basis (energyMassBasis): the continuum estimate's
   /// (continuumPeakForce) where the energy is the continuum's, else the mesh's over the impact phase
-  /// (phasePeakForce); 0 for an event that is not an impact. The peak force that goes with the impact
-  /// energy: on a mesh coarser than the length of line an impact engages, the simulated force is that of
-  /// the element's lumped mass on the contact law, as the mesh energy is (docs/theory.md 9.10).
+  /// (phasePeakForce); 0 for an event that is not an impact; NaN for an impact the impulse model resolved
+  /// by a velocity jump on the mesh's basis (no force: the jump is the impact). The peak force that goes
+  /// with the impact energy: on a mesh coarser than the length of line an impact engages, the simulated
+  /// force is that of the element's lumped mass on the contact law, as the mesh energy is (docs/theory.md
+  /// 9.10).
   double impactPeakForce = 0.0;
   double phasePeakForce = 0.0;     ///< largest total normal force over the impact phase, on the mesh [N]
+  bool phaseJumped = false;        ///< the impulse model's velocity jump acted within the impact phase
   double impulse = 0.0;            ///< integral of the total force over time [N s]
   double impactVelocity = 0.0;     ///< relative normal approach speed at first contact [m/s]
   double impactEnergy = 0.0;       ///< 1/2 energyMass impactVelocity^2 [J]

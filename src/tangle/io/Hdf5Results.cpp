@@ -347,8 +347,13 @@ void Hdf5Results::writeContactEvents(const std::vector<contact::ContactEvent>& e
   column("peak_force", "N", "largest total contact force", [](const auto& e) { return e.peakForce; });
   column("impact_peak_force", "N",
          "the impact's peak force on the impact energy's basis (the continuum estimate's where the energy is "
-         "the continuum's, else the mesh's over the impact phase; 0: not an impact)",
+         "the continuum's, else the mesh's over the impact phase; 0: not an impact; NaN: an impulse model's "
+         "velocity jump)",
          [](const auto& e) { return e.impactPeakForce; });
+  column("mesh_impact_peak_force", "N", "the mesh's largest contact force over the impact phase",
+         [](const auto& e) { return !e.impact       ? 0.0
+                                    : e.phaseJumped ? std::nan("")
+                                                    : e.phasePeakForce; });
   column("peak_force_per_length", "N/m", "largest contact force per unit length",
          [](const auto& e) { return e.peakForcePerLength; });
   column("impulse", "N s", "integral of the contact force", [](const auto& e) { return e.impulse; });

@@ -190,19 +190,21 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
       const bool beyondMargin = -e.maximum >= margin * (1.0 - 1e-12);
       anyCredible = anyCredible || e.credible();
       if (clearance[p].samples() > 0 && !beyondMargin)
-        largest += fmt::format("  lines '{}' / '{}': smallest clearance at the output times {:.3f} m\n", a, b,
-                               -e.maximum);
+        largest += fmt::format(
+            "  lines '{}' / '{}': smallest clearance at the output times after the ramp {:.3f} m\n", a, b,
+            -e.maximum);
       if (clearance[p].samples() > 0 && beyondMargin)
         text +=
             fmt::format("  lines '{}' / '{}': never within the clearance margin ({:g} m)\n", a, b, margin);
       else if (e.credible())
         text += fmt::format(
             "  lines '{}' / '{}': most probable minimum clearance {:.3f} m (Weibull), smallest at the "
-            "output times {:.3f} m\n",
+            "output times after the ramp {:.3f} m\n",
             a, b, -e.weibullMpm, -e.maximum);
       else if (clearance[p].samples() > 0)
-        text += fmt::format("  lines '{}' / '{}': smallest clearance at the output times {:.3f} m{}\n", a, b,
-                            -e.maximum, roughness(e));
+        text += fmt::format(
+            "  lines '{}' / '{}': smallest clearance at the output times after the ramp {:.3f} m{}\n", a, b,
+            -e.maximum, roughness(e));
     }
     out.close();
   }

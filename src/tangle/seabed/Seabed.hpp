@@ -128,15 +128,20 @@ class Seabed {
     }
     return law;
   }
-  /// Fraction [0, 1] of a line's submerged weight `weightPerLength` [N/m] that the seabed carries under a
-  /// node at `position` [m] of contact radius `radius` [m]: the elastic normal reaction per unit length (no
-  /// dashpot) over the weight, capped at 1; 0 clear of the seabed or for a line that floats (w <= 0).
-  /// Continuous in the position, from 0 where the node just touches to 1 where it rests under its weight:
-  /// what a held node's share of an element's weight on the seabed goes by (theory 7.8).
+  /// Fraction [0, 1] of a node's submerged line weight that the seabed carries under it: the node at
+  /// `position` [m] of contact radius `radius` [m], `weightPerLength` [N/m] its lumped submerged line weight
+  /// over its tributary length (the mean of its elements' weights per length). The elastic normal reaction
+  /// per unit length (no dashpot) over the weight's share across the surface, w n_z (on a slope the rest of
+  /// the weight is along it: friction or the line's tension), capped at 1; 0 clear of the seabed or for a
+  /// line that floats (w <= 0). Continuous in the position, from 0 where the node just touches to 1 where it
+  /// rests under its weight: what a held node's share of an element's weight on the seabed goes by
+  /// (theory 7.8).
   double carriedFraction(const Vec3& position, double radius, double weightPerLength) const {
     if (weightPerLength <= 0.0) return 0.0;
     const double reaction = normalLaw(penetration(position, radius), 0.0, 1.0, false).force;
-    return std::min(1.0, reaction / weightPerLength);
+    if (reaction <= 0.0) return 0.0;
+    const double across = weightPerLength * std::max(normalAt(position).z(), 1e-6);
+    return std::min(1.0, reaction / across);
   }
   /// The seabed's unit normal under `position` [-] (e_z on a flat seabed).
   Vec3 normalAt(const Vec3& position) const;

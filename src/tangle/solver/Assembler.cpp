@@ -74,15 +74,25 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
   for (const model::LineElement& el : model.elements())
     m_axialDampingRate.push_back(el.type->axialDamping / el.restLength);
   // Submerged weight lumped on each node held in all three translations [N] (addSeabed).
+  // With it, the other node's lumped submerged line weight over its tributary length [N/m]: what the seabed
+  // carries under that node when it rests (Seabed::carriedFraction).
+  std::vector<double> nodeLineWeight(static_cast<std::size_t>(n), 0.0);
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    const model::LineElement& el = model.elements()[e];
+    for (const int node : {el.node1, el.node2})
+      nodeLineWeight[static_cast<std::size_t>(node)] += m_halfWeight[e] - m_halfBuoyancy[e];
+  }
   m_heldNodeShares.assign(static_cast<std::size_t>(n), {});
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const model::LineElement& el = model.elements()[e];
     for (const int node : {el.node1, el.node2}) {
       const int d = dofs.firstDof(node);
+      const int other = node == el.node1 ? el.node2 : el.node1;
+      const double trib = model.tributaryLength()[static_cast<std::size_t>(other)];
       if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0)
         m_heldNodeShares[static_cast<std::size_t>(node)].push_back(
-            {node == el.node1 ? el.node2 : el.node1, m_halfWeight[e] - m_halfBuoyancy[e],
-             2.0 * (m_halfWeight[e] - m_halfBuoyancy[e]) / el.restLength});
+            {other, m_halfWeight[e] - m_halfBuoyancy[e],
+             trib > 0.0 ? nodeLineWeight[static_cast<std::size_t>(other)] / trib : 0.0});
     }
   }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));

@@ -264,8 +264,8 @@ class Assembler {
   std::vector<double> m_nodeForceScale;
   std::vector<double> m_halfWeight;    // half of each element's weight in air [N] (addWeight)
   std::vector<double> m_halfBuoyancy;  // half of its buoyancy fully submerged [N]
-  /// A node held in x, y and z: its share of one element's submerged weight [N], that element's submerged
-  /// weight per length [N/m] and its other node.
+  /// A node held in x, y and z: its share of one element's submerged weight [N], that element's other node
+  /// and the other node's lumped submerged line weight over its tributary length [N/m].
   struct HeldShare {
     int other = -1;
     double weight = 0.0;

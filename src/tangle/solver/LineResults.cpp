@@ -60,9 +60,18 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
       return 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(node)];
     };
     const seabed::Seabed bed(env.seabed, model.sharedSeabedSurface());
+    // The other node's lumped submerged line weight over its tributary length: this element's half and the
+    // inner one's (another line type, or beyond a point load), as Assembler's held-node share takes it.
+    const auto submerged = [&](const model::LineElement& el) {
+      return el.type->submergedWeight(env.waterDensity, env.gravity);
+    };
+    const double nodeWeight =
+        inner ? (end.restLength * submerged(end) + inner->restLength * submerged(*inner)) /
+                    (end.restLength + inner->restLength)
+              : submerged(end);
     const double carried =
         bed.penetration(state.position[static_cast<std::size_t>(endNode)], radius(endNode)) > 0.0
-            ? bed.carriedFraction(state.position[static_cast<std::size_t>(other)], radius(other), weight)
+            ? bed.carriedFraction(state.position[static_cast<std::size_t>(other)], radius(other), nodeWeight)
             : 0.0;
     return fEnd + Vec3(0.0, 0.0, -side * 0.5 * end.restLength * weight * (1.0 - carried));
   }
