@@ -439,14 +439,14 @@ TEST(Cli, ViscoelasticRopesRangeGraphCoversItsTensionHistories) {
   fs::remove_all(out);
 }
 
-// Issue 45: dynamics/vessels.csv gives, beside each vessel's low-frequency pose, the wave-frequency (RAO)
-// motion its line ends get. A fixed vessel with heave 0.5 m/m (lag 0) and pitch 2 deg/m (lag 90) in a
-// regular wave of 2 m (amplitude a = 1 m) along its axis: the _wf_z_ column's amplitude is 0.5 m and
-// _wf_ry_ 2 deg (first order, RaoMotion.hpp; sampled every 0.1 s, a tenth of a percent below the peak at
-// most), the low-frequency pose stays 0; and the fairlead, 10 m forward and 5 m down, moves as the vessel
-// point: z = z0 + wf_z - 10 m x wf_ry (small rotation about +y; rad), to the columns' printed digits.
-TEST(Cli, VesselsCsvGivesTheWaveFrequencyMotionTheFairleadsGet) {
-  const fs::path dir = modelFolder("tangle_cli_vessel_wf", R"(title: fixed vessel with RAOs
+/// A fixed vessel at the origin with the given RAO row values (surge ... yaw, amplitude and lag per DOF,
+/// every period and heading of its table alike) in a regular wave of 2 m and 10 s along its axis, holding
+/// a tether's top 10 m forward and 5 m down: the model of the wave-frequency motion tests below.
+std::string fixedVesselWithRaos(const std::string& title, const std::string& rowValues) {
+  std::string rows;
+  for (const char* at : {"5, 0", "5, 180", "15, 0", "15, 180"})
+    rows += "        - [" + std::string(at) + ", " + rowValues + "]\n";
+  return "title: " + title + R"(
 environment:
   water_depth: 100
   waves: {type: airy, height: 2.0, period: 10.0, azimuth: 0}
@@ -461,17 +461,26 @@ vessels:
       periods: [5, 15]
       headings: [0, 180]
       rows:
-        - [5, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
-        - [5, 180, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
-        - [15, 0, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
-        - [15, 180, 0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0]
-lines:
+)" + rows +
+         R"(lines:
   - name: tether
     end_a: {type: anchored, position: [10, 0, -100]}
     end_b: {type: vessel, vessel: ship, position: [10, 0, -5]}
     sections: [{type: wire, length: 94.9, elements: 10}]
 dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
-)");
+)";
+}
+
+// Issue 45: dynamics/vessels.csv gives, beside each vessel's low-frequency pose, the wave-frequency (RAO)
+// motion its line ends get. A fixed vessel with heave 0.5 m/m (lag 0) and pitch 2 deg/m (lag 90) in a
+// regular wave of 2 m (amplitude a = 1 m) along its axis: the _wf_z_ column's amplitude is 0.5 m and
+// _wf_ry_ 2 deg (first order, RaoMotion.hpp; sampled every 0.1 s, a tenth of a percent below the peak at
+// most), the low-frequency pose stays 0; and the fairlead, 10 m forward and 5 m down, moves as the vessel
+// point: z = z0 + wf_z - 10 m x wf_ry (small rotation about +y; rad), to the columns' printed digits.
+TEST(Cli, VesselsCsvGivesTheWaveFrequencyMotionTheFairleadsGet) {
+  const fs::path dir =
+      modelFolder("tangle_cli_vessel_wf",
+                  fixedVesselWithRaos("fixed vessel with RAOs", "0, 0, 0, 0, 0.5, 0, 0, 0, 2.0, 90, 0, 0"));
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report -q");
@@ -511,32 +520,9 @@ dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
 // (first order, RaoMotion.hpp; every step of 0.05 s samples the 10 s cycle within 0.012 % of its peak;
 // tolerance 0.1 %). Until 2026-12-06 the offset was the vessel node's, the low-frequency pose alone: 0.
 TEST(Cli, AVesselsOffsetIncludesItsWaveFrequencyMotion) {
-  const fs::path dir = modelFolder("tangle_cli_vessel_offset", R"(title: fixed vessel surging with the waves
-environment:
-  water_depth: 100
-  waves: {type: airy, height: 2.0, period: 10.0, azimuth: 0}
-line_types:
-  - {name: wire, outer_diameter: 0.08, mass_per_length: 30, axial_stiffness: 5.0e8}
-vessels:
-  - name: ship
-    mode: fixed
-    position: [0, 0, 0]
-    heading: 0
-    raos:
-      periods: [5, 15]
-      headings: [0, 180]
-      rows:
-        - [5, 0, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
-        - [5, 180, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
-        - [15, 0, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
-        - [15, 180, 0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]
-lines:
-  - name: tether
-    end_a: {type: anchored, position: [10, 0, -100]}
-    end_b: {type: vessel, vessel: ship, position: [10, 0, -5]}
-    sections: [{type: wire, length: 94.9, elements: 10}]
-dynamics: {duration: 30, time_step: 0.05, ramp_time: 10, output_interval: 0.1}
-)");
+  const fs::path dir = modelFolder(
+      "tangle_cli_vessel_offset",
+      fixedVesselWithRaos("fixed vessel surging with the waves", "0.7, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0"));
   const fs::path out = dir / "out";
   const Outcome o =
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --no-plots --no-report -q");

@@ -112,9 +112,7 @@ void ClashReport::write(const fs::path& dir) const {
           e.phaseWork, e.workMass, e.eventEq5Mass, e.massLowerBound, e.massUpperBound, e.energyWarning,
           e.meshMass, e.meshEnergy, e.meshMassBasis, e.continuumMass, e.continuumEnergy, e.continuumLengthA,
           e.continuumLengthB, e.continuumDuration, e.continuumPeakForce, e.continuumNote, e.impactPeakForce,
-          !e.impact       ? 0.0
-          : e.phaseJumped ? std::nan("")
-                          : e.phasePeakForce);
+          e.meshImpactPeakForce);
     }
     file.close();
   }

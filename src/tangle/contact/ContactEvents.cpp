@@ -406,10 +406,8 @@ void ContactEventTracker::measureImpact(ContactEvent& e) {
   e.energyMass = continuum ? e.continuumMass : e.meshMass;
   e.energyMassBasis = continuum ? "continuum" : e.meshMassBasis;
   e.impactEnergy = 0.5 * e.energyMass * v0 * v0;
-  e.impactPeakForce = !e.impact       ? 0.0
-                      : continuum     ? e.continuumPeakForce
-                      : e.phaseJumped ? std::nan("")
-                                      : e.phasePeakForce;
+  e.meshImpactPeakForce = !e.impact ? 0.0 : e.phaseJumped ? std::nan("") : e.phasePeakForce;
+  e.impactPeakForce = continuum && e.impact ? e.continuumPeakForce : e.meshImpactPeakForce;
   e.energyWarning.clear();
   if (!e.impact) return;
   if (continuum) {

@@ -100,6 +100,9 @@ struct ContactEvent {
   /// 9.10).
   double impactPeakForce = 0.0;
   double phasePeakForce = 0.0;     ///< largest total normal force over the impact phase, on the mesh [N]
+  /// The mesh's impact peak force [N]: phasePeakForce for an impact, 0 for an event that is not one, NaN
+  /// where the impulse model's velocity jump acted in the phase (events.csv's mesh_impact_peak_force_N).
+  double meshImpactPeakForce = 0.0;
   bool phaseJumped = false;        ///< the impulse model's velocity jump acted within the impact phase
   double impulse = 0.0;            ///< integral of the total force over time [N s]
   double impactVelocity = 0.0;     ///< relative normal approach speed at first contact [m/s]

@@ -351,9 +351,7 @@ void Hdf5Results::writeContactEvents(const std::vector<contact::ContactEvent>& e
          "velocity jump)",
          [](const auto& e) { return e.impactPeakForce; });
   column("mesh_impact_peak_force", "N", "the mesh's largest contact force over the impact phase",
-         [](const auto& e) { return !e.impact       ? 0.0
-                                    : e.phaseJumped ? std::nan("")
-                                                    : e.phasePeakForce; });
+         [](const auto& e) { return e.meshImpactPeakForce; });
   column("peak_force_per_length", "N/m", "largest contact force per unit length",
          [](const auto& e) { return e.peakForcePerLength; });
   column("impulse", "N s", "integral of the contact force", [](const auto& e) { return e.impulse; });

@@ -430,7 +430,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
       d["peak_force_N"] = e.peakForce;
       d["peak_force_per_length_N_per_m"] = e.peakForcePerLength;
       d["impact_peak_force_N"] = e.impactPeakForce;
-      d["mesh_impact_peak_force_N"] = !e.impact ? 0.0 : e.phaseJumped ? std::nan("") : e.phasePeakForce;
+      d["mesh_impact_peak_force_N"] = e.meshImpactPeakForce;
       d["impulse_Ns"] = e.impulse;
       d["max_penetration_m"] = e.maxPenetration;
       d["effective_mass_1_kg"] = e.effectiveMassA;

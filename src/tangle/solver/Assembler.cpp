@@ -76,11 +76,15 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
   // Submerged weight lumped on each node held in all three translations [N] (addSeabed).
   // With it, the other node's lumped submerged line weight over its tributary length [N/m]: what the seabed
   // carries under that node when it rests (Seabed::carriedFraction).
-  std::vector<double> nodeLineWeight(static_cast<std::size_t>(n), 0.0);
+  m_restingWeightPerLength.assign(static_cast<std::size_t>(n), 0.0);
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
     const model::LineElement& el = model.elements()[e];
     for (const int node : {el.node1, el.node2})
-      nodeLineWeight[static_cast<std::size_t>(node)] += m_halfWeight[e] - m_halfBuoyancy[e];
+      m_restingWeightPerLength[static_cast<std::size_t>(node)] += m_halfWeight[e] - m_halfBuoyancy[e];
+  }
+  for (std::size_t node = 0; node < m_restingWeightPerLength.size(); ++node) {
+    const double trib = model.tributaryLength()[node];
+    m_restingWeightPerLength[node] = trib > 0.0 ? m_restingWeightPerLength[node] / trib : 0.0;
   }
   m_heldNodeShares.assign(static_cast<std::size_t>(n), {});
   for (std::size_t e = 0; e < model.elements().size(); ++e) {
@@ -88,11 +92,9 @@ Assembler::Assembler(const model::Model& model) : m_model(&model), m_visco(model
     for (const int node : {el.node1, el.node2}) {
       const int d = dofs.firstDof(node);
       const int other = node == el.node1 ? el.node2 : el.node1;
-      const double trib = model.tributaryLength()[static_cast<std::size_t>(other)];
       if (dofs.equation(d) < 0 && dofs.equation(d + 1) < 0 && dofs.equation(d + 2) < 0)
         m_heldNodeShares[static_cast<std::size_t>(node)].push_back(
-            {other, m_halfWeight[e] - m_halfBuoyancy[e],
-             trib > 0.0 ? nodeLineWeight[static_cast<std::size_t>(other)] / trib : 0.0});
+            {other, m_halfWeight[e] - m_halfBuoyancy[e]});
     }
   }
   m_anchor.assign(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
@@ -544,7 +546,7 @@ void Assembler::addSeabed(const model::State& state, const AssemblyRequest& requ
           const auto other = static_cast<std::size_t>(share.other);
           force[d + 2] -= share.weight * request.loadFactor *
                           bed.carriedFraction(state.position[other], 0.5 * diameter[other],
-                                              share.weightPerLength * request.loadFactor);
+                                              m_restingWeightPerLength[other] * request.loadFactor);
         }
       return;
     }

@@ -129,6 +129,13 @@ class Assembler {
                                                                : m_restLength[e];
   }
 
+  /// A node's lumped submerged line weight over its tributary length [N/m] (its elements' halves, each
+  /// type's submerged weight): what the seabed carries under the node where it rests
+  /// (Seabed::carriedFraction; addSeabed's share of an anchor, LineResults' end slope).
+  double restingWeightPerLength(int node) const {
+    return m_restingWeightPerLength[static_cast<std::size_t>(node)];
+  }
+
   /// Lower bound on the fraction of EA a slack cable element keeps [-] (LineType::compressionFactor
   /// applies above it); 0 by default. Statics raises it temporarily (continuation in the cable law).
   void setSlackFactor(double factor) { m_slackFactor = factor; }
@@ -269,8 +276,8 @@ class Assembler {
   struct HeldShare {
     int other = -1;
     double weight = 0.0;
-    double weightPerLength = 0.0;
   };
+  std::vector<double> m_restingWeightPerLength;          // per node [N/m] (restingWeightPerLength)
   std::vector<std::vector<HeldShare>> m_heldNodeShares;  // per node: its elements' shares if held (else none)
   std::vector<double> m_axialDampingRate;  // each element's axial damping c over its L0 [N s/m]
   // Per full DOF, the node's own diagonal mass term of addOwnMass's node loop: its lumped mass [kg] at a

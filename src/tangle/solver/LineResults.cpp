@@ -38,10 +38,11 @@ bool hasAttachment(const model::Model& model, int node) {
 /// at end A, out of it at end B), extrapolated as documented in LineSnapshot::endTensionA.
 /// `end` is the end element, `inner` the one next to it (or nullptr); `endBeam`, `innerBeam` their beam
 /// section forces (nullptr for bars); `side` +1 at end A, -1 at end B.
-Vec3 endPointForce(const model::Model& model, const model::State& state, const model::LineElement& end,
-                   double endTension, const element::BeamSectionForces* endBeam,
-                   const model::LineElement* inner, double innerTension,
-                   const element::BeamSectionForces* innerBeam, int sharedNode, double side) {
+Vec3 endPointForce(const model::Model& model, const Assembler& assembler, const model::State& state,
+                   const model::LineElement& end, double endTension,
+                   const element::BeamSectionForces* endBeam, const model::LineElement* inner,
+                   double innerTension, const element::BeamSectionForces* innerBeam, int sharedNode,
+                   double side) {
   const Vec3 fEnd = elementForce(state, end, endTension, endBeam);
   if (!inner || inner->type != end.type || hasAttachment(model, sharedNode)) {
     // The end element alone (a one-element line, its neighbour parted, of another line type or beyond a point
@@ -60,18 +61,12 @@ Vec3 endPointForce(const model::Model& model, const model::State& state, const m
       return 0.5 * model.nodeContactDiameter()[static_cast<std::size_t>(node)];
     };
     const seabed::Seabed bed(env.seabed, model.sharedSeabedSurface());
-    // The other node's lumped submerged line weight over its tributary length: this element's half and the
-    // inner one's (another line type, or beyond a point load), as Assembler's held-node share takes it.
-    const auto submerged = [&](const model::LineElement& el) {
-      return el.type->submergedWeight(env.waterDensity, env.gravity);
-    };
-    const double nodeWeight =
-        inner ? (end.restLength * submerged(end) + inner->restLength * submerged(*inner)) /
-                    (end.restLength + inner->restLength)
-              : submerged(end);
+    // The other node's lumped submerged line weight over its tributary length, as Assembler's held-node
+    // share takes it.
     const double carried =
         bed.penetration(state.position[static_cast<std::size_t>(endNode)], radius(endNode)) > 0.0
-            ? bed.carriedFraction(state.position[static_cast<std::size_t>(other)], radius(other), nodeWeight)
+            ? bed.carriedFraction(state.position[static_cast<std::size_t>(other)], radius(other),
+                                  assembler.restingWeightPerLength(other))
             : 0.0;
     return fEnd + Vec3(0.0, 0.0, -side * 0.5 * end.restLength * weight * (1.0 - carried));
   }
@@ -252,11 +247,11 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const bool twoB =
           line.elementCount >= 2 && !parted.parted(static_cast<std::size_t>(last - 1), state.time);
       const auto beamOf = [&](int e) { return els[e].beam ? &beamForces[e] : nullptr; };
-      s.endTensionForceA = endPointForce(model, state, els[first], tension[first], beamOf(first),
+      s.endTensionForceA = endPointForce(model, assembler, state, els[first], tension[first], beamOf(first),
                                          twoA ? &els[first + 1] : nullptr, twoA ? tension[first + 1] : 0.0,
                                          twoA ? beamOf(first + 1) : nullptr, line.firstNode + 1, 1.0);
       // End B: the element force points from node 1 to node 2, out of the line; the line pulls end B back.
-      s.endTensionForceB = -endPointForce(model, state, els[last], tension[last], beamOf(last),
+      s.endTensionForceB = -endPointForce(model, assembler, state, els[last], tension[last], beamOf(last),
                                           twoB ? &els[last - 1] : nullptr, twoB ? tension[last - 1] : 0.0,
                                           twoB ? beamOf(last - 1) : nullptr, line.lastNode() - 1, -1.0);
       // A compressed end element (a line pushed on) gives a negative end tension.
@@ -267,12 +262,12 @@ void computeLineResults(const model::Model& model, const Assembler& assembler, c
       const bool beams = els[first].beam || els[last].beam;
       const Vec3 axialA =
           !beams ? s.endTensionForceA
-                 : endPointForce(model, state, els[first], tension[first], nullptr,
+                 : endPointForce(model, assembler, state, els[first], tension[first], nullptr,
                                  twoA ? &els[first + 1] : nullptr, twoA ? tension[first + 1] : 0.0, nullptr,
                                  line.firstNode + 1, 1.0);
       const Vec3 axialB = !beams
                               ? s.endTensionForceB
-                              : endPointForce(model, state, els[last], tension[last], nullptr,
+                              : endPointForce(model, assembler, state, els[last], tension[last], nullptr,
                                               twoB ? &els[last - 1] : nullptr, twoB ? tension[last - 1] : 0.0,
                                               nullptr, line.lastNode() - 1, -1.0);
       s.endTensionA = signA * axialA.norm();
