@@ -128,7 +128,9 @@ solver::StaticResult Simulation::solveStatics(bool progress) {
   }
   solver::StaticSolver solver(*m_assembler, m_model->spec().statics);
   solver.setProgress(m_staticsProgress);
+  if (m_contact) solver.setContactEngaged([this] { return m_contact->touched(); });
   const model::State start = m_state;
+  if (m_contact) m_contact->clearTouched();
   solver::StaticResult result = solver.solve(m_state);
   // Fallbacks, cheapest first: in a current, the tangent with the drag's follower stiffness (theory 6.4);
   // the same model on a coarser mesh; dynamic relaxation.
@@ -137,7 +139,19 @@ solver::StaticResult Simulation::solveStatics(bool progress) {
   const bool fallbacks = !result.converged && !result.noEquilibrium;
   if (fallbacks && solver::StaticSolver::debugOutput())
     std::cerr << "  first attempt: " << result.message << "\n";
-  if (fallbacks && !core::interruptRequested() && solver::StaticSolver::hasCurrent(*m_model))
+  // A path that engaged line contact and stalled: dynamic relaxation first. Contact that closes, opens and
+  // slides makes the equilibrium path non-smooth, and a contact problem may have several equilibria (a
+  // riser hooked over another or clear of it); the other fallbacks follow load paths again and stall at the
+  // same contact events (a flexible pushed across an SCR by the current: the drag-stiffness retry and the
+  // coarse mesh crawled for 36 s, then the relaxation and Newton converged in 2.5 s). The damped dynamics
+  // go through them as the lines would.
+  const bool contactOnPath = m_contact && m_contact->touched();
+  if (fallbacks && contactOnPath && !core::interruptRequested()) {
+    if (solver::StaticSolver::debugOutput()) std::cerr << "  contact on the path: dynamic relaxation first\n";
+    relaxThenSolve(result);
+  }
+  if (fallbacks && !result.converged && !core::interruptRequested() &&
+      solver::StaticSolver::hasCurrent(*m_model))
     solveWithDragStiffness(start, result);
   if (fallbacks && !result.converged && !core::interruptRequested() && m_coarseFallback)
     solveFromCoarserMesh(result);
@@ -164,6 +178,7 @@ bool Simulation::solveWithDragStiffness(const model::State& start, solver::Stati
     std::cerr << "  with the drag stiffness in the tangent: " << again.message << "\n";
   if (!again.converged) {
     result.message += "; the retry with the drag's stiffness in the tangent did not converge either";
+    result.iterations += again.iterations;  // counted in the total a later fallback reports
     return false;
   }
   again.iterations += result.iterations;
@@ -198,7 +213,7 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
   constexpr int kRounds = 4;
   constexpr double kRestSpeed = 1e-3;
   model::State relaxed = m_state;
-  const int newtonIterations = result.iterations;
+  int newtonIterations = result.iterations;  // every Newton iteration before, and of the rounds that failed
   int lastRound = 0;
   for (int round = 0; round < kRounds; ++round) {
     if (m_staticsProgress)
@@ -223,8 +238,10 @@ bool Simulation::relaxThenSolve(solver::StaticResult& result) {
       m_state = trial;
       return true;
     }
+    newtonIterations += again.iterations;
     lastRound = round + 1;
   }
+  result.iterations = newtonIterations;
   if (lastRound > 0)
     result.message += fmt::format(
         "; dynamic relaxation was tried as well ({} round(s)) and Newton did not converge "
@@ -266,6 +283,7 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
     std::cerr << "  coarse mesh (1/" << kFactor << " of the elements): " << coarseResult.message << "\n";
   if (!coarseResult.converged) {
     result.message += "; the model with a quarter of the elements did not converge either";
+    result.iterations += coarseResult.iterations;
     return false;
   }
   // Interpolate the coarse equilibrium onto this mesh: a cubic Hermite curve in unstretched arc length
@@ -324,6 +342,7 @@ bool Simulation::solveFromCoarserMesh(solver::StaticResult& result) {
     result.message +=
         "; from the equilibrium of the model with a quarter of the elements it did not "
         "converge either";
+    result.iterations += coarseResult.iterations + again.iterations;
     // The dynamic relaxation that comes next starts from there: near the equilibrium, not from where the
     // continuation stalled.
     m_state = interpolated;

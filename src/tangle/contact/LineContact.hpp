@@ -153,6 +153,13 @@ class LineContact final : public solver::LoadContributor {
     m_pendingPointAnchors.clear();
   }
 
+  /// Whether a converged static increment (commitIncrement) has carried a contact force since
+  /// clearTouched(): a static path that engaged contact, where Simulation tries dynamic relaxation first
+  /// when the path stalls (contact switches and slides make the path non-smooth; the damped dynamics
+  /// follow the physics through them).
+  bool touched() const { return m_touched; }
+  void clearTouched() { m_touched = false; }
+
   /// Gauss points of the line-to-line part at the last addForces() call.
   const std::vector<LineSample>& lineSamples() const { return m_samples; }
   /// Line-to-line friction patches at the last addForces() call.
@@ -383,6 +390,7 @@ class LineContact final : public solver::LoadContributor {
   mutable std::vector<char> m_clearanceFar;  ///< clearance()'s marks of B's blocks (work space)
   std::unique_ptr<DistributedContact> m_distributed;  // contact.formulation: distributed
   bool m_lastDynamic = false;                         // the last assembly was a dynamic one
+  bool m_touched = false;                             // touched()
   std::vector<Vec3> m_move;                           // limitIncrement's nodal moves [m] (work space)
   /// The distributed formulation's element curves (DistributedContact::curves) for centrelineDistance, or
   /// null (the point formulation: cables on their chords, the curves made per call).

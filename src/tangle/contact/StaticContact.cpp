@@ -137,7 +137,11 @@ void LineContact::commitIncrement(const model::State& state) {
   if (m_distributed) {
     if (m_reference.size() != state.position.size()) m_reference = state.position;
     m_distributed->findSamples(state, m_search, false, false, m_reference);
+    for (const ContactSample& x : m_distributed->samples()) m_touched = m_touched || x.lineForce > 0.0;
     m_distributed->commitSamples();
+  } else {
+    // The point formulation's contacts at the last assembly: the converged state's.
+    for (const ContactPoint& c : m_trial) m_touched = m_touched || c.normalForce > 0.0;
   }
   m_reference = state.position;
   commitFriction();

@@ -106,7 +106,11 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       }
     }
   }
-  if (!ok && budget > 0 && !result.noEquilibrium) {
+  // The next two variants change only the cable (bar) elements' law and start shape: a model of beams alone
+  // would repeat the path it has just failed on (a flexible and an SCR in current: 6 s of the same crawl).
+  const bool anyCable = std::any_of(model.elements().begin(), model.elements().end(),
+                                    [](const model::LineElement& el) { return el.bar; });
+  if (!ok && budget > 0 && !result.noEquilibrium && anyCable) {
     // Continuation in the cable law: solve with cables that resist compression like tension (a regular
     // tangent even where the start shape leaves them slack), then take that stiffness away in decades
     // down to the real, compression-free cable, each stage starting from the last equilibrium.
@@ -137,7 +141,7 @@ StaticResult StaticSolver::solve(model::State& state, double time) {
       keepFailedStage(result, stage);
     }
   }
-  if (!ok && budget > 0 && !result.noEquilibrium) {
+  if (!ok && budget > 0 && !result.noEquilibrium && anyCable) {
     // Last resort: the continuation again, with slack suspended cable elements starting taut.
     model::State taut = start;
     StaticResult stage = result;
@@ -391,7 +395,7 @@ bool StaticSolver::continuation(model::State& state, const model::State& start, 
     } else {
       lastFailure = step.failure;
       increment *= 0.25;
-      if (increment < 1e-5) break;
+      if (increment < 1e-5 || crawlingInContact(increment)) break;
       m_assembler->beginStatics(state);  // from the last converged state, re-laid (theory 7.1)
     }
   }
@@ -472,7 +476,7 @@ bool StaticSolver::currentContinuation(model::State& state, double time, StaticR
       lastFailure = step.failure;
       increment *= 0.5;
       // A free laid line at its friction capacity slides as a whole: no smaller increment helps (below).
-      if (increment < 1e-4 || slidingLine >= 0) break;
+      if (increment < 1e-4 || slidingLine >= 0 || crawlingInContact(increment)) break;
       m_assembler->beginStatics(still);  // from the last converged state, re-laid (theory 7.1)
     }
   }
