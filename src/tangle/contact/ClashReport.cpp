@@ -258,9 +258,19 @@ std::string ClashReport::terminalSummary() const {
       emax = std::max(emax, e.impactEnergy);
       if (std::isfinite(e.impactPeakForce)) fimpact = std::max(fimpact, e.impactPeakForce);
     }
-    double minClear = std::numeric_limits<double>::infinity();
-    for (const ClearanceSample& c : m_samples)
-      if (c.pair == p) minClear = std::min(minClear, c.clearance);
+    // The smallest clearance after the ramp, as the extremes take it (RunOutputs; the ramp's start-up is
+    // not the sea state); over the whole run when it ended within the ramp.
+    const double ramp = m_model->spec().dynamics.rampTime - 1e-9;
+    double minClear = std::numeric_limits<double>::infinity(), minClearRamp = minClear;
+    bool afterRamp = false;
+    for (const ClearanceSample& c : m_samples) {
+      if (c.pair != p) continue;
+      minClearRamp = std::min(minClearRamp, c.clearance);
+      if (c.time < ramp) continue;
+      afterRamp = true;
+      minClear = std::min(minClear, c.clearance);
+    }
+    if (!afterRamp) minClear = minClearRamp;
     // The impacts' maxima only where there were impacts, the contact force only where there was contact.
     const std::string impacts =
         count > 0 ? fmt::format(
@@ -272,9 +282,9 @@ std::string ClashReport::terminalSummary() const {
         count + sustained + brief > 0 ? fmt::format(", max contact force {:.4g} kN", fmax / 1000.0) : "";
     s += fmt::format(
         "  {} / {}: {} impact(s){}, {} sustained contact(s) without an impact, {} brief touch(es){}{}; min "
-        "clearance at the output times {}\n",
+        "clearance at the output times {} {}\n",
         lines[a].name, lines[b].name, count, stayed > 0 ? fmt::format(" ({} then sustained)", stayed) : "",
-        sustained, brief, impacts, force,
+        sustained, brief, impacts, force, afterRamp ? "after the ramp" : "(the run ended within the ramp)",
         std::isfinite(minClear) ? fmt::format("{:.3f} m", minClear) : std::string("beyond margin"));
   }
   for (const ContactEvent& e : m_contact->events())
