@@ -344,8 +344,8 @@ void Model::buildLine(int lineIndex) {
   // taut it did not converge, 163 without). Restrain the rotation component along the global axis closest
   // to the line's chord at one node of the run (the "torsion lock" of 3D frame supports): a line end of the
   // run held in translation if it has one, else the run's first node. A fixed end holds every rotation and a
-  // vessel's beam end has a torsion spring (VesselSystem), so a run reaching either is held already (with a
-  // flex joint of zero stiffness too: not handled). The lock also holds the bending rotation's component
+  // vessel's beam end has a torsion spring (VesselSystem, with or without a flex joint), so a run reaching
+  // either is held already. The lock also holds the bending rotation's component
   // along that axis at its node: nothing where the run leaves the node along the line's chord, but a run
   // that lies across the chord (a beam section rising from a cable laid along it) keeps its twist nearly free
   // and has that node's bending held: the axis should be the run's own, whose shape is not known here (not

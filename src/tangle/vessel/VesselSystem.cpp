@@ -101,12 +101,14 @@ VesselSystem::VesselSystem(const model::Model& model, const hydro::HydroLoads& h
         c.flexStiffness = e.flexJoint.enabled
                               ? e.flexJoint.stiffness
                               : kPinnedFlexFactor * el.beam->properties().bendingStiffness / el.restLength;
-        if (!e.flexJoint.enabled) {
-          const auto& props = el.beam->properties();
-          const double gj =
-              props.torsionalStiffness > 0.0 ? props.torsionalStiffness : props.bendingStiffness;
-          c.twistStiffness = gj / el.restLength;
-        }
+        // The twist about the end's axis is held with or without a flex joint: a flex joint is an
+        // elastomeric bearing that lets the line bend and holds its torque. (With the flex joint's spring
+        // alone the twist was held only by its bending stiffness: by nothing at stiffness 0, where the
+        // statics of a steel catenary riser in a cross current took 17 376 Newton iterations and 13 s
+        // through the quarter mesh, against 329 and 0.4 s with a pinned top.)
+        const auto& props = el.beam->properties();
+        const double gj = props.torsionalStiffness > 0.0 ? props.torsionalStiffness : props.bendingStiffness;
+        c.twistStiffness = gj / el.restLength;
       }
       c.endTriad0 = s0.triad[c.node];
       m_connections.push_back(c);
