@@ -100,11 +100,13 @@ std::string modelSummary(const model::Model& m) {
   }
   if (env.windSpeed > 0.0)
     out += fmt::format("wind: {:.2f} m/s towards {:.1f} deg\n", env.windSpeed, radToDeg(env.windAzimuth));
+  // The mass only where it acts (a free vessel): a fixed or prescribed one read "mass 0.0 t".
   for (const model::VesselSpec& v : spec.vessels)
-    out +=
-        fmt::format("  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg, mass {:.1f} t{}\n",
-                    v.name, model::vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(),
-                    radToDeg(v.heading), v.mass / 1000.0, v.heldInStatics ? ", held in statics" : "");
+    out += fmt::format(
+        "  vessel '{}': {}, at ({:.1f}, {:.1f}, {:.1f}) m, heading {:.1f} deg{}{}\n", v.name,
+        model::vesselModeName(v.mode), v.position.x(), v.position.y(), v.position.z(), radToDeg(v.heading),
+        v.mode == model::VesselMode::Free ? fmt::format(", mass {:.1f} t", v.mass / 1000.0) : "",
+        v.heldInStatics ? ", held in statics" : "");
   int beams = 0;
   for (const auto& el : m.elements()) beams += el.isBeam() ? 1 : 0;
   out +=
