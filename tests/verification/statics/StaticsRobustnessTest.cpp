@@ -785,7 +785,8 @@ lines:
 // about a horizontal axis, not the locked z, so this holds whatever the lock; it checks the node is free).
 // (The same line upside down, the chain's top on a vessel, was not locked before either, the vessel end
 // skipped it; it is now locked at its anchor and takes 64, 119 and 2 659 iterations at three top positions,
-// the last 1 m short of taut, where the current's continuation stalls near drag fraction 0.43.)
+// the last 1 m short of taut, where the current's continuation crawled from drag fraction 0.43: 716 since
+// 2026-12-06, TwistOfABeamSectionUpsideDown below.)
 class TwistOfABeamSection : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(TwistOfABeamSection, IsLockedWhereNoEndHoldsIt) {
@@ -837,6 +838,38 @@ lines:
 
 INSTANTIATE_TEST_SUITE_P(StaticsRobustness, TwistOfABeamSection, ::testing::Values("free", "pinned"),
                          [](const auto& param) { return std::string(param.param); });
+
+// The same hose and chain upside down (the hose anchored, the chain's top on a fixed vessel 1 m short of
+// taut) in the same current. The current's continuation converged its increments in 8-10 Newton iterations
+// (plain Newton without the drag's stiffness converges linearly, whatever the increment), and an increment
+// grew only after one that took 6 or fewer: once cut to 2.4e-4 of the drag it crawled 290 increments from
+// 0.43 to 0.50 and stalled there, 2 659 iterations in all before the load continuation from the start shape
+// converged. An increment that took 7-10 iterations now grows by a quarter: 716 iterations, the same path to
+// the equilibrium. Bound 1 500 (about twice; the old count fails it). Check: the equilibrium audit (every
+// force on the line, by source, in balance: theory 7.8).
+TEST(TwistOfABeamSectionUpsideDown, ReachesTheEquilibriumWithoutCrawling) {
+  Solved s = solveYaml(R"(
+environment:
+  water_depth: 100
+  current: [{z: 0, speed: 0.5, azimuth: 30}, {z: -100, speed: 0.2, azimuth: 30}]
+line_types:
+  - {name: chain, outer_diameter: 0.1, mass_per_length: 60, axial_stiffness: 4.0e8}
+  - {name: hose, outer_diameter: 0.3, mass_per_length: 60, axial_stiffness: 5.0e8, bending_stiffness: 5.0e4}
+vessels:
+  - {name: ship, mode: fixed, position: [0, 0, 0], heading: 0}
+lines:
+  - name: tether
+    end_a: {type: anchored, position: [0, 0, -100]}
+    end_b: {type: vessel, vessel: ship, position: [0, 0, -21]}
+    sections:
+      - {type: hose, length: 60, elements: 12}
+      - {type: chain, length: 20, elements: 4}
+)");
+  ASSERT_TRUE(s.result.converged) << s.result.message;
+  EXPECT_LT(s.result.iterations, 1500) << s.result.message;
+  const solver::EquilibriumAudit audit = analysis::auditStatics(*s.sim, s.lines);
+  EXPECT_TRUE(audit.warnings().empty()) << audit.worstRelativeResidual();
+}
 
 // ---------------------------------------------------------------------------------------------------
 // Risers: a flexible riser whose plane is off the current, and two independent top-tensioned risers.
