@@ -265,5 +265,45 @@ TEST(SeabedOnASlope, TangentsAreTheDerivativesOfTheForces) {
   }
 }
 
+// The elastic friction in dynamics (docs/theory.md 5.4): the stick spring with its dashpot c beside it, the
+// trial force -kt s - c v_t capped at mu N. Its stiffness and damping must be -dF/dx and -dF/dv (central
+// differences; the cap's N held for dv, as the tangent documents) in stick and in slip, with the velocity
+// across the slip so that the dashpot turns the force: in slip the dashpot's share was left out of both until
+// 2026-12-07 (a sliding laid node then converged linearly, about 0.66 per Newton iteration). Tolerance 1e-5
+// of the tangent's norm: central differences of a smooth function at steps of 1e-7 m and 1e-7 m/s.
+TEST(SeabedOnASlope, ElasticFrictionInDynamicsHasTheDerivativesOfItsForce) {
+  auto surface =
+      std::make_shared<const SeabedSurface>(SeabedSurface::plane(100.0, degToRad(12.0), degToRad(-110.0)));
+  const Vec3 n = surface->at(0.0, 0.0).normal;
+  const Vec3 p = Vec3(-4.0, 9.0, surface->height(-4.0, 9.0)) + (0.1 - 0.02) * n;  // 2 cm in, radius 10 cm
+  const Vec3 t = n.unitOrthogonal(), across = n.cross(t);
+  const seabed::Seabed elastic(slopeSpec(true), surface);
+  const double tributary = 1.5, dashpot = 4.0e4;
+  const Vec3 anchorPoint = p - (0.1 - 0.02) * n;
+  for (const double offset : {0.001, 0.1}) {
+    for (const double speed : {0.0, 0.01, 0.3}) {
+      const Vec2 anchor = Vec2((anchorPoint - offset * t).x(), (anchorPoint - offset * t).y());
+      const Vec3 v = speed * across;
+      const seabed::SeabedNodeReaction r = elastic.reaction(p, v, tributary, 0.1, true);
+      const auto friction = [&](const Vec3& x, const Vec3& u, double normal, double normalStiffness) {
+        return elastic.staticFriction(x, anchor, normal, normalStiffness, tributary, u, dashpot, r.normal);
+      };
+      const seabed::StaticFrictionResult f = friction(p, v, r.normalForce, r.normalStiffness);
+      const auto total = [&](const Vec3& x) {
+        const seabed::SeabedNodeReaction rx = elastic.reaction(x, v, tributary, 0.1, true);
+        return Vec3(rx.force + friction(x, v, rx.normalForce, rx.normalStiffness).force);
+      };
+      const auto ofVelocity = [&](const Vec3& u) {
+        return friction(p, u, r.normalForce, r.normalStiffness).force;
+      };
+      const Mat3 k = r.stiffness + f.stiffness;
+      EXPECT_LT((k - numericalStiffness(total, p, 1e-7)).norm(), 1e-5 * k.norm())
+          << "offset " << offset << " speed " << speed << (f.sliding ? " sliding" : " stuck");
+      EXPECT_LT((f.damping - numericalStiffness(ofVelocity, v, 1e-7)).norm(), 1e-5 * f.damping.norm())
+          << "offset " << offset << " speed " << speed << (f.sliding ? " sliding" : " stuck");
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tangle
