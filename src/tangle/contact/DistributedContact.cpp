@@ -1099,7 +1099,9 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
       }
       continue;
     }
-    const CentrelineKinematics kin = centrelineKinematics(state.position, smp.curve, 1.0, true);
+    // The slots alone, without the 24 x 24 Hessian, except in a shoulder: the blocks are assembled from its
+    // factored form below.
+    const CentrelineSlots kin = centrelineSlots(smp.curve, 1.0);
     for (int i = 0; i < 8; ++i)
       if (kin.weight[i] != 0.0) force.segment<3>(dofs.firstDof(kin.node[i])) -= kin.weight[i] * f;
     // Normal: k' grad d grad d^T - f Hess d (the Gauss point held, its projection free: envelope theorem,
@@ -1107,29 +1109,58 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
     // the velocities; friction on the displacements. (psi's change with the patch's v_s is not
     // linearised, as the patch's mass and stiffness are held.)
     const double normalSlope = smp.slope * smp.rateFactor;
-    Eigen::Matrix<double, 24, 24> block;
-    if (!shoulder) {
-      block = request.kf * smp.length *
-              (normalSlope * kin.gradient * kin.gradient.transpose() - smp.lineForce * kin.hessian);
-    } else {
+    Mat3 pointBlock = request.cf * smp.length * smp.damping * smp.normal * smp.normal.transpose();
+    pointBlock += (request.kf + smp.slipDelay * request.cf) * smp.length * smp.frictionTangent;
+    if (shoulder) {
       // Hess gap = Hess d - r_B'' grad t grad t^T - r_B' Hess t (projectionHessian).
+      const CentrelineKinematics full = centrelineKinematics(state.position, smp.curve, 1.0, true);
       Eigen::Matrix<double, 24, 1> gt, gradGap;
       for (int i = 0; i < 8; ++i) gt.segment<3>(3 * i) = gradT[i];
-      gradGap = kin.gradient - smp.radiusSlope * gt;
+      gradGap = full.gradient - smp.radiusSlope * gt;
       const Eigen::Matrix<double, 24, 24> hessT =
           projectionHessian(state.position, smp.curve,
                             centrelineThirdWeights(m_curves[static_cast<std::size_t>(smp.elementB)]), gradT);
-      block = request.kf * smp.length *
-              (normalSlope * gradGap * gradGap.transpose() - smp.lineForce * kin.hessian +
-               smp.lineForce * (smp.radiusCurvature * gt * gt.transpose() + smp.radiusSlope * hessT));
+      const Eigen::Matrix<double, 24, 24> block =
+          request.kf * smp.length *
+          (normalSlope * gradGap * gradGap.transpose() - smp.lineForce * full.hessian +
+           smp.lineForce * (smp.radiusCurvature * gt * gt.transpose() + smp.radiusSlope * hessT));
+      for (int i = 0; i < 8; ++i) {
+        if (!kin.used[i]) continue;
+        for (int j = 0; j < 8; ++j) {
+          if (!kin.used[j]) continue;
+          const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + kin.weight[i] * kin.weight[j] * pointBlock;
+          matrix->add3x3(dofs.firstDof(kin.node[i]), dofs.firstDof(kin.node[j]), bij);
+        }
+      }
+      continue;
     }
-    Mat3 pointBlock = request.cf * smp.length * smp.damping * smp.normal * smp.normal.transpose();
-    pointBlock += (request.kf + smp.slipDelay * request.cf) * smp.length * smp.frictionTangent;
+    // Block (i, j) of kf L (k' grad d grad d^T - f Hess d) + w_i w_j pointBlock, with grad d = w (x) n and
+    // Hess d in its factored form (distanceCurvature): w_i w_j C + sum_a b_ia e_ja^T, C = kf L (k' n n^T - f
+    // / d (I - n n^T)) + pointBlock and e_ja = kf L f / d sum_b Vinv_ab b_jb.
+    const Vec3& n = kin.normal;
+    const Mat3 nn = n * n.transpose();
+    const double scale = request.kf * smp.length;
+    Mat3 common = pointBlock + scale * normalSlope * nn;
+    const double dist = std::abs(kin.distance);
+    DistanceCurvature curvature;
+    std::array<std::array<Vec3, 2>, 8> e{};
+    if (dist > 0.0) {
+      const double fd = scale * smp.lineForce / dist;
+      common -= fd * (Mat3::Identity() - nn);
+      curvature = distanceCurvature(state.position, smp.curve, kin.weight);
+      for (int j = 0; j < 8; ++j)
+        for (int a = 0; a < curvature.free; ++a) {
+          Vec3 sum = curvature.inverse(a, 0) * curvature.mixed[j][0];
+          if (curvature.free == 2) sum += curvature.inverse(a, 1) * curvature.mixed[j][1];
+          e[j][a] = fd * sum;
+        }
+    }
     for (int i = 0; i < 8; ++i) {
       if (!kin.used[i]) continue;
       for (int j = 0; j < 8; ++j) {
         if (!kin.used[j]) continue;
-        const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + kin.weight[i] * kin.weight[j] * pointBlock;
+        Mat3 bij = (kin.weight[i] * kin.weight[j]) * common;
+        for (int a = 0; a < curvature.free; ++a) bij.noalias() += curvature.mixed[i][a] * e[j][a].transpose();
         matrix->add3x3(dofs.firstDof(kin.node[i]), dofs.firstDof(kin.node[j]), bij);
       }
     }

@@ -194,9 +194,47 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
   return r;
 }
 
-CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, const CentrelineDistance& d,
-                                          double sign, bool wantHessian) {
-  CentrelineKinematics k;
+DistanceCurvature distanceCurvature(const std::vector<Vec3>& position, const CentrelineDistance& d,
+                                    const std::array<double, 8>& weight) {
+  // Mixed derivatives V_xp for the free parameters: column for p is, per slot i, w_i du/dp + (dw_i/dp) u.
+  DistanceCurvature c;
+  const Vec3 u = d.pointA - d.pointB;
+  Vec3 m[2];
+  double curvatureTerm[2];
+  int nFree = 0;
+  if (d.sFree) {
+    m[nFree] = d.a.tangent(position);
+    curvatureTerm[nFree] = u.dot(d.a.secondDerivative(position));
+    for (int i = 0; i < 8; ++i) c.mixed[i][nFree] = weight[i] * m[nFree] + (i < 4 ? d.a.dN[i] : 0.0) * u;
+    ++nFree;
+  }
+  if (d.tFree) {
+    m[nFree] = -d.b.tangent(position);
+    curvatureTerm[nFree] = -u.dot(d.b.secondDerivative(position));
+    for (int i = 0; i < 8; ++i) c.mixed[i][nFree] = weight[i] * m[nFree] + (i < 4 ? 0.0 : -d.b.dN[i - 4]) * u;
+    ++nFree;
+  }
+  if (nFree == 1) {
+    const double vpp = m[0].squaredNorm() + curvatureTerm[0];
+    if (vpp > 0.0) {
+      c.free = 1;
+      c.inverse(0, 0) = 1.0 / vpp;
+    }
+  } else if (nFree == 2) {
+    Eigen::Matrix2d vpp;
+    vpp << m[0].dot(m[0]) + curvatureTerm[0], m[0].dot(m[1]), m[1].dot(m[0]),
+        m[1].dot(m[1]) + curvatureTerm[1];
+    const double det = vpp.determinant();
+    if (det > 1e-12 * std::abs(vpp(0, 0) * vpp(1, 1))) {
+      c.free = 2;
+      c.inverse = vpp.inverse();
+    }
+  }
+  return c;
+}
+
+CentrelineSlots centrelineSlots(const CentrelineDistance& d, double sign) {
+  CentrelineSlots k;
   for (int i = 0; i < 4; ++i) {
     k.node[i] = d.a.node[i];
     k.weight[i] = d.a.N[i];
@@ -209,46 +247,26 @@ CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, con
   const double dist = u.norm();
   k.distance = sign * dist;
   k.normal = dist > 0.0 ? Vec3(sign * u / dist) : Vec3(Vec3::UnitZ());
+  return k;
+}
+
+CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, const CentrelineDistance& d,
+                                          double sign, bool wantHessian) {
+  CentrelineKinematics k;
+  static_cast<CentrelineSlots&>(k) = centrelineSlots(d, sign);
+  const double dist = std::abs(k.distance);
   for (int i = 0; i < 8; ++i) k.gradient.segment<3>(3 * i) = k.weight[i] * k.normal;
   if (!wantHessian || dist <= 0.0) return k;
   using Mat24 = Eigen::Matrix<double, 24, 24>;
   Mat24 hv = Mat24::Zero();
   for (int i = 0; i < 8; ++i)
     for (int j = 0; j < 8; ++j) hv.block<3, 3>(3 * i, 3 * j) = k.weight[i] * k.weight[j] * Mat3::Identity();
-  // Mixed derivatives V_xp for the free parameters: column for p is, per slot i, w_i du/dp + (dw_i/dp) u.
-  const Vec3 ca = d.a.tangent(position), cb = d.b.tangent(position);
-  const Vec3 caa = d.a.secondDerivative(position), cbb = d.b.secondDerivative(position);
-  Eigen::Matrix<double, 24, 2> bxp = Eigen::Matrix<double, 24, 2>::Zero();
-  Vec3 m[2];
-  double curvatureTerm[2];
-  int nFree = 0;
-  if (d.sFree) {
-    m[nFree] = ca;
-    curvatureTerm[nFree] = u.dot(caa);
-    for (int i = 0; i < 8; ++i) {
-      const double dw = i < 4 ? d.a.dN[i] : 0.0;
-      bxp.block<3, 1>(3 * i, nFree) = k.weight[i] * m[nFree] + dw * u;
-    }
-    ++nFree;
-  }
-  if (d.tFree) {
-    m[nFree] = -cb;
-    curvatureTerm[nFree] = -u.dot(cbb);
-    for (int i = 0; i < 8; ++i) {
-      const double dw = i < 4 ? 0.0 : -d.b.dN[i - 4];
-      bxp.block<3, 1>(3 * i, nFree) = k.weight[i] * m[nFree] + dw * u;
-    }
-    ++nFree;
-  }
-  if (nFree == 1) {
-    const double vpp = m[0].squaredNorm() + curvatureTerm[0];
-    if (vpp > 0.0) hv -= bxp.col(0) * bxp.col(0).transpose() / vpp;
-  } else if (nFree == 2) {
-    Eigen::Matrix2d vpp;
-    vpp << m[0].dot(m[0]) + curvatureTerm[0], m[0].dot(m[1]), m[1].dot(m[0]),
-        m[1].dot(m[1]) + curvatureTerm[1];
-    const double det = vpp.determinant();
-    if (det > 1e-12 * std::abs(vpp(0, 0) * vpp(1, 1))) hv -= bxp * vpp.inverse() * bxp.transpose();
+  const DistanceCurvature c = distanceCurvature(position, d, k.weight);
+  if (c.free > 0) {
+    Eigen::Matrix<double, 24, 2> bxp = Eigen::Matrix<double, 24, 2>::Zero();
+    for (int i = 0; i < 8; ++i)
+      for (int a = 0; a < c.free; ++a) bxp.block<3, 1>(3 * i, a) = c.mixed[i][a];
+    hv -= bxp.leftCols(c.free) * c.inverse.topLeftCorner(c.free, c.free) * bxp.leftCols(c.free).transpose();
   }
   const Eigen::Matrix<double, 24, 1> g = sign * k.gradient;  // gradient of the unsigned distance
   k.hessian = sign * (hv - g * g.transpose()) / dist;

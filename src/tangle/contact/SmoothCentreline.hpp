@@ -195,17 +195,40 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
                                       bool holdT = false, bool smoothCables = false,
                                       const std::vector<ElementCurve>* curves = nullptr);
 
-/// The distance between the closest points and its exact derivatives with respect to the eight node
-/// positions of the two stencils (A's four, then B's four; a node in both gets both contributions).
-struct CentrelineKinematics {
+/// The distance between the closest points and the eight slots of the two stencils (A's four, then B's
+/// four; a node in both gets both contributions): grad d = weight_k normal per slot.
+struct CentrelineSlots {
   double distance = 0.0;           ///< sign * |pA - pB| [m]
   Vec3 normal = Vec3::UnitZ();     ///< sign * (pA - pB) / |pA - pB|
   std::array<int, 8> node{};       ///< global node of each slot
   std::array<double, 8> weight{};  ///< N_k for A's slots, -N_k for B's
   std::array<bool, 8> used{};      ///< false for a slot with N_k, dN_k and ddN_k all zero (no node there)
+};
+/// @param sign -1 to measure along the reversed direction (lines that passed each other)
+CentrelineSlots centrelineSlots(const CentrelineDistance& d, double sign);
+
+/// The distance between the closest points and its exact derivatives with respect to the eight node
+/// positions of the two stencils (CentrelineSlots).
+struct CentrelineKinematics : CentrelineSlots {
   Eigen::Matrix<double, 24, 1> gradient = Eigen::Matrix<double, 24, 1>::Zero();   ///< d distance / dx [-]
   Eigen::Matrix<double, 24, 24> hessian = Eigen::Matrix<double, 24, 24>::Zero();  ///< [1/m]
 };
+
+/// The second-order part of the distance's derivatives in factored form (centrelineKinematics' slots): with
+/// the weights w (N_k on A, -N_k on B), the unit normal n and the closest points' distance d,
+///     Hess d = (w w^T (x) (I - n n^T) - sum_ab b_a Vinv_ab b_b^T) / d,
+/// b_a (a 3-vector per slot) the mixed derivative V_xp of the free parameter a, w_i c_a' + dw_i/dp_a u (c_a'
+/// the curve's tangent, signed as in u), and Vinv the inverse of V_pp over the free parameters (none when
+/// V_pp is not positive definite: no correction). Assembling a contact's 3 x 3 blocks from it costs 9 (1 +
+/// free) multiply-adds each, where the 24 x 24 matrix costs its 576 entries several times over
+/// (DistributedContact::addForces).
+struct DistanceCurvature {
+  int free = 0;                                       ///< free parameters in the correction (0, 1 or 2)
+  std::array<std::array<Vec3, 2>, 8> mixed{};         ///< b_a per slot [m]
+  Eigen::Matrix2d inverse = Eigen::Matrix2d::Zero();  ///< Vinv [1/m^2]
+};
+DistanceCurvature distanceCurvature(const std::vector<Vec3>& position, const CentrelineDistance& d,
+                                    const std::array<double, 8>& weight);
 
 /// Value-function derivatives (envelope theorem) over the free parameters: with u = c_A(s) - c_B(t) and
 /// V = |u|^2 / 2 minimised over the free parameters p,
