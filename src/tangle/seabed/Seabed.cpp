@@ -136,10 +136,10 @@ StaticFrictionResult Seabed::staticFriction(const Vec3& position, const Vec2& an
   // dt/dv = -c P, so -dF/dx = cap kt / |t| (P - m m^T) and -dF/dv = cap c / |t| (P - m m^T) in the plane.
   // Without a dashpot |t| = kt |s|: cap / |s| (P - m m^T), written entry by entry so that a flat seabed's
   // numbers are those of before to the last bit. (Until 2026-12-07 the dashpot's share was left out: -dF/dx
-  // taken as cap / |s| and -dF/dv as 0, where the dashpot, c / dt ~ 4 kt at dt 0.05 s, dominates the trial
-  // force: a sliding node converged linearly, at about 0.66 per iteration, and a laid mooring leg's steps
-  // took three times the iterations of the same leg without friction.) The cap moves with N: dF/dx = -mu m
-  // dN/dx = mu kn m n^T, so -dF/dx gains -mu kn m n^T.
+  // taken as cap / |s| and -dF/dv as 0, where the dashpot, c gamma / (beta dt) ~ 3 kt for a chain at dt 0.05
+  // s, dominates the trial force: a sliding node converged linearly, at about 0.66 per iteration, and a laid
+  // mooring leg's steps took three times the iterations of the same leg without friction.) The cap moves with
+  // N: dF/dx = -mu m dN/dx = mu kn m n^T, so -dF/dx gains -mu kn m n^T.
   const double c = dashpot == 0.0 ? cap / std::max(distance, cap / kt) : cap * kt / std::max(trial, cap);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
