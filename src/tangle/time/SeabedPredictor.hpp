@@ -9,11 +9,12 @@
 /// undamped seabed): the predictor missed the touchdown nodes by 1-11 mm at dt 0.05 s (1e4 N out of balance
 /// against an allowance of 63 N) while every other node was within 0.2 mm.
 ///
-/// This class corrects the predicted increment of each cable node (no rotations: a beam's own bending stiffness
-/// is of the order of the seabed's) on, or predicted onto, the seabed, where the step does not resolve the
-/// node's oscillation on the seabed spring (omega dt >= 1, omega^2 = k L / m), along the
-/// seabed's normal n by the scalar e that balances the node's own inertia against the change of its seabed
-/// reaction (spring, dashpot, C1 onset; seabed::Seabed::reaction, the law the assembly uses):
+/// This class corrects the predicted increment of each cable node, and of each beam node whose bending holds
+/// it far less than the seabed does (a flexible's; a steel riser's bending is of the order of the seabed's,
+/// or stiffer: movableNodes in the .cpp), on, or predicted onto, the seabed, where the step does not resolve
+/// the node's oscillation on the seabed spring (omega dt >= 1, omega^2 = k L / m), along the seabed's normal
+/// n by the scalar e that balances the node's own inertia against the change of its seabed reaction (spring,
+/// dashpot, C1 onset; seabed::Seabed::reaction, the law the assembly uses):
 ///
 ///   (1 - alpha_m) m e / (beta dt^2) - (1 - alpha_f) [N(x_p + e n, v_p + gamma e n / (beta dt)) - N(x_n,
 ///   v_n)] = 0,
@@ -52,20 +53,21 @@ class SeabedPredictor {
   explicit SeabedPredictor(solver::Assembler& assembler);
 
   /// Corrects dq (increment over the step of every full DOF [m], as GeneralizedAlpha's predictor set it
-  /// from `start`) at the nodes free in all three translations that touch the seabed at the start or at
-  /// the predicted position. `start` holds x_n, v_n, a_n; the force of the last evaluation must be that at
-  /// `start` (its added mass is used). @param dt step [s]. @param allowed each node's allowed out-of-balance
-  /// force [N] (the Newton iteration's convergence test): a node whose reaction changes by less than a tenth
-  /// of it is left as predicted. @return the number of nodes corrected.
+  /// from `start`) at the nodes it may move (cable nodes and soft beams' nodes free in all three
+  /// translations) that touch the seabed at the start or at the predicted position. `start` holds x_n, v_n,
+  /// a_n; the force of the last evaluation must be that at `start` (its added mass is used). @param dt step
+  /// [s]. @param allowed each node's allowed out-of-balance force [N] (the Newton iteration's convergence
+  /// test): a node whose reaction changes by less than a tenth of it is left as predicted. @return the number
+  /// of nodes corrected.
   int correct(const model::State& start, const PredictorCoefficients& coefficients, double dt,
               const std::vector<double>& allowed, VecX& dq);
-  /// Whether a step of dt [s] resolves the oscillation on the seabed spring of every cable node free in its
-  /// translations (omega dt < 1, omega^2 = k L / m; true when there is none), with the masses of `start` (the
+  /// Whether a step of dt [s] resolves the oscillation on the seabed spring of every node it may move
+  /// (omega dt < 1, omega^2 = k L / m; true when there is none), with the masses of `start` (the
   /// same ones correct() uses: call it first, for the same `start`).
   bool resolves(const model::State& start, double dt);
 
  private:
-  /// Sets the mass along the seabed normal of every cable node free in its translations at `start` and the
+  /// Sets the mass along the seabed normal of every node it may move at `start` and the
   /// largest k L / m among them.
   void updateMass(const model::State& start);
   /// Steps the mass along the normal is kept for.
@@ -73,6 +75,7 @@ class SeabedPredictor {
 
   solver::Assembler* m_assembler;
   seabed::Seabed m_bed;
+  std::vector<char> m_movable;  // per node: the predictor may move it (cable or soft beam node, free)
   std::vector<int> m_nodes;    // this step's nodes on or onto the seabed
   std::vector<Vec3> m_normal;  // their seabed normals [-]
   // The mass along the normal: the normal under each node when it was computed [-], M n [kg] and the
