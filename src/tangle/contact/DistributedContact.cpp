@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "tangle/contact/CentrelineBlocks.hpp"
 #include "tangle/contact/ContactKinematics.hpp"
 #include "tangle/contact/ContinuumImpactMass.hpp"
 #include "tangle/contact/ReducedMass.hpp"
@@ -1124,14 +1125,7 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
           request.kf * smp.length *
           (normalSlope * gradGap * gradGap.transpose() - smp.lineForce * full.hessian +
            smp.lineForce * (smp.radiusCurvature * gt * gt.transpose() + smp.radiusSlope * hessT));
-      for (int i = 0; i < 8; ++i) {
-        if (!kin.used[i]) continue;
-        for (int j = 0; j < 8; ++j) {
-          if (!kin.used[j]) continue;
-          const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + kin.weight[i] * kin.weight[j] * pointBlock;
-          matrix->add3x3(dofs.firstDof(kin.node[i]), dofs.firstDof(kin.node[j]), bij);
-        }
-      }
+      addSlotBlocks(full, block, pointBlock, dofs, *matrix);
       continue;
     }
     // Block (i, j) of kf L (k' grad d grad d^T - f Hess d) + w_i w_j pointBlock, with grad d = w (x) n and

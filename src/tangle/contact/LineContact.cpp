@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "tangle/contact/CentrelineBlocks.hpp"
 #include "tangle/contact/ContactKinematics.hpp"
 #include "tangle/contact/ContactLaw.hpp"
 #include "tangle/contact/ReducedMass.hpp"
@@ -478,14 +479,7 @@ void LineContact::addForces(const model::State& state, const solver::AssemblyReq
       cBlock += request.cf * m_spec.frictionCoefficient * c.normalForce / m_spec.frictionVelocity *
                 (Mat3::Identity() - nn);
     }
-    for (int i = 0; i < 8; ++i) {
-      if (!kin.used[i]) continue;
-      for (int j = 0; j < 8; ++j) {
-        if (!kin.used[j]) continue;
-        const Mat3 bij = block.block<3, 3>(3 * i, 3 * j) + kin.weight[i] * kin.weight[j] * cBlock;
-        matrix->add3x3(dofs.firstDof(kin.node[i]), dofs.firstDof(kin.node[j]), bij);
-      }
-    }
+    addSlotBlocks(kin, block, cBlock, dofs, *matrix);
   }
   addLineToLineForces(state, request, force, matrix);
   addPointFriction(state, request, force, matrix);
