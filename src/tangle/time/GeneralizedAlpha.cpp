@@ -241,7 +241,7 @@ StepOutcome GeneralizedAlpha::attempt(model::State& state, double dt, const mode
     //   there, and in part where it would have missed by more than half as much (examples/units-collide,
     //   against the constant acceleration: 25 % more evaluations without the test);
     // - beam nodes (rotations): a steel riser's touchdown took 10 % more (examples/scr-fatigue), as with
-    //   SeabedPredictor's correction;
+    //   SeabedPredictor's correction (which moves soft beams' nodes alone);
     // - nodes near a line contact, or tied to a vessel or a free point (Assembler::loadedNodes): an impact is
     //   no smooth motion, and a predictor carried past it can start Newton on another branch of the contact
     //   problem (RandomSweepTest: a sweep that gained 19 % of its launch energy, another that stopped).

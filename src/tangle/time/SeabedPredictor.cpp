@@ -17,7 +17,7 @@ constexpr double kSoftBeamRatio = 0.1;
 ///  - a steel riser (examples/scr-fatigue: EI 2.2e7 N m^2, 2.5 m elements) has 1.7e7 N/m per node against
 ///    2.5e5 N/m of seabed: left out (with its beam nodes corrected it took 10 % more residual evaluations);
 ///  - an 8 in flexible (examples/flexibles-at-touchdown: EI 3e4 N m^2, 10 m elements) has 720 N/m against
-///    1e6 N/m: moved like a cable node (5.25 -> 4.50 residual evaluations per step over its first 30 s).
+///    1e6 N/m: moved like a cable node (6.25 -> 5.50 residual evaluations per step over its first 30 s).
 std::vector<char> movableNodes(const model::Model& model) {
   const model::DofMap& dofs = model.dofs();
   const auto count = static_cast<std::size_t>(dofs.nodeCount());
