@@ -70,6 +70,21 @@ double evaluationsPerStep(const time::DynamicResult& r) {
   return static_cast<double>(r.newtonIterations) / r.steps;
 }
 
+/// Both runs complete on the same steps, and `predicted` takes fewer residual evaluations per step than
+/// `plain` (the constant acceleration) times `bound`; the two counts are recorded as
+/// evaluations_per_step_extrapolated and evaluations_per_step_<name>.
+void expectFewerEvaluations(const time::DynamicResult& plain, const time::DynamicResult& predicted,
+                            double bound, const std::string& name) {
+  ASSERT_TRUE(plain.completed) << plain.message;
+  ASSERT_TRUE(predicted.completed) << predicted.message;
+  ASSERT_EQ(plain.steps, predicted.steps);
+  const double perStepPlain = evaluationsPerStep(plain);
+  const double perStepPredicted = evaluationsPerStep(predicted);
+  EXPECT_LT(perStepPredicted, bound * perStepPlain);
+  ::testing::Test::RecordProperty("evaluations_per_step_extrapolated", std::to_string(perStepPlain));
+  ::testing::Test::RecordProperty("evaluations_per_step_" + name, std::to_string(perStepPredicted));
+}
+
 TEST(SeabedPredictorTest, MooringLineSameResponseWithinTheConvergenceTolerance) {
   expectSameResponseAsConstantAcceleration(kLargeStep);
 }
@@ -79,14 +94,7 @@ TEST(SeabedPredictorTest, FewerResidualEvaluationsAtLargeSteps) {
   const test::FairleadRun plain =
       test::runMooringExample(40.0, test::extrapolatedPredictor(), {}, kLargeStep, kTolerance);
   const test::FairleadRun seabed = test::runMooringExample(40.0, {}, {}, kLargeStep, kTolerance);
-  ASSERT_TRUE(plain.result.completed) << plain.result.message;
-  ASSERT_TRUE(seabed.result.completed) << seabed.result.message;
-  ASSERT_EQ(plain.result.steps, seabed.result.steps);
-  const double perStepPlain = evaluationsPerStep(plain.result);
-  const double perStepSeabed = evaluationsPerStep(seabed.result);
-  EXPECT_LT(perStepSeabed, 0.95 * perStepPlain);
-  RecordProperty("evaluations_per_step_extrapolated", std::to_string(perStepPlain));
-  RecordProperty("evaluations_per_step_seabed", std::to_string(perStepSeabed));
+  expectFewerEvaluations(plain.result, seabed.result, 0.95, "seabed");
 }
 
 TEST(SeabedPredictorTest, ExtrapolatedAccelerationSameResponseWithinTheConvergenceTolerance) {
@@ -123,14 +131,7 @@ time::DynamicResult runChainDeck(double duration, const model::DynamicSolverSpec
 TEST(SeabedPredictorTest, ExtrapolatedAccelerationFewerResidualEvaluationsAtSmallSteps) {
   const time::DynamicResult plain = runChainDeck(20.0, test::extrapolatedPredictor());
   const time::DynamicResult linear = runChainDeck(20.0, {});
-  ASSERT_TRUE(plain.completed) << plain.message;
-  ASSERT_TRUE(linear.completed) << linear.message;
-  ASSERT_EQ(plain.steps, linear.steps);
-  const double perStepPlain = evaluationsPerStep(plain);
-  const double perStepLinear = evaluationsPerStep(linear);
-  EXPECT_LT(perStepLinear, 0.9 * perStepPlain);
-  RecordProperty("evaluations_per_step_extrapolated", std::to_string(perStepPlain));
-  RecordProperty("evaluations_per_step_linear", std::to_string(perStepLinear));
+  expectFewerEvaluations(plain, linear, 0.9, "linear");
 }
 
 /// An example's dynamics for `duration` s on the Newton path `solver`, at its own step and tolerance.
@@ -157,14 +158,7 @@ TEST(SeabedPredictorTest, SoftBeamsFewerResidualEvaluationsAtLargeSteps) {
   const time::DynamicResult plain =
       runExampleFor("flexibles-at-touchdown", 30.0, test::extrapolatedPredictor(), nullptr);
   const time::DynamicResult seabed = runExampleFor("flexibles-at-touchdown", 30.0, {}, nullptr);
-  ASSERT_TRUE(plain.completed) << plain.message;
-  ASSERT_TRUE(seabed.completed) << seabed.message;
-  ASSERT_EQ(plain.steps, seabed.steps);
-  const double perStepPlain = evaluationsPerStep(plain);
-  const double perStepSeabed = evaluationsPerStep(seabed);
-  EXPECT_LT(perStepSeabed, 0.95 * perStepPlain);
-  RecordProperty("evaluations_per_step_extrapolated", std::to_string(perStepPlain));
-  RecordProperty("evaluations_per_step_seabed", std::to_string(perStepSeabed));
+  expectFewerEvaluations(plain, seabed, 0.95, "seabed");
 }
 
 TEST(SeabedPredictorTest, SteelRiserLeftAsPredicted) {
