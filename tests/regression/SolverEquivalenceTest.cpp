@@ -32,12 +32,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "TestPaths.hpp"
+#include "support/DynamicRun.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/io/ModelReader.hpp"
 
@@ -147,20 +149,12 @@ ExampleRun runExample(const std::string& name, const model::DynamicSolverSpec& s
     spec.dynamics.maxCableStrainStep = 0.0;
   }
   spec.dynamics.outputInterval = std::min(spec.dynamics.outputInterval, spec.dynamics.duration);
-  spec.dynamics.solver = solver;
-  spec.output.plots = false;
-  spec.output.vtk = false;
-  analysis::Simulation sim(std::move(spec));
-  const solver::StaticResult statics = sim.solveStatics();
-  EXPECT_TRUE(statics.converged) << statics.message;
+  const std::unique_ptr<analysis::Simulation> simulation =
+      test::simulationAfterStatics(std::move(spec), solver);
+  analysis::Simulation& sim = *simulation;
   ExampleRun run;
   const auto observer = [&](const model::State&, const VecX&) {
-    std::vector<double> row;
-    for (const solver::LineSnapshot& l : sim.snapshot(true)) {
-      row.push_back(l.endTensionA);
-      row.push_back(l.endTensionB);
-    }
-    run.tension.push_back(std::move(row));
+    run.tension.push_back(test::endTensionRow(sim));
   };
   if (name.rfind("generated ", 0) != 0) {
     run.result = sim.runDynamics(observer);

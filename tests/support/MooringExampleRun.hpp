@@ -10,9 +10,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "DynamicRun.hpp"
 #include "TestPaths.hpp"
 #include "tangle/analysis/Simulation.hpp"
 #include "tangle/io/ModelReader.hpp"
@@ -81,7 +83,6 @@ inline FairleadRun runMooringExample(double duration, const model::DynamicSolver
     }
   }
   spec.dynamics.duration = duration;
-  spec.dynamics.solver = solver;
   if (timeStep > 0.0) spec.dynamics.timeStep = timeStep;
   spec.dynamics.tolerance = tolerance;
   spec.dynamics.outputInterval = spec.dynamics.timeStep;  // every step
@@ -90,17 +91,13 @@ inline FairleadRun runMooringExample(double duration, const model::DynamicSolver
     spec.dynamics.maxTimeStep = 0.05;
     spec.dynamics.outputInterval = 0.1;
   }
-  spec.output.vtk = false;
-  spec.output.plots = false;
   const std::size_t lines = spec.lines.size();
-  analysis::Simulation sim(std::move(spec));
-  const solver::StaticResult statics = sim.solveStatics();
-  EXPECT_TRUE(statics.converged) << statics.message;
+  const std::unique_ptr<analysis::Simulation> sim = simulationAfterStatics(std::move(spec), solver);
   FairleadRun run;
   run.tension.resize(lines);
-  run.result = sim.runDynamics([&](const model::State& state, const VecX&) {
+  run.result = sim->runDynamics([&](const model::State& state, const VecX&) {
     run.time.push_back(state.time);
-    const std::vector<solver::LineSnapshot> snap = sim.snapshot(true);
+    const std::vector<solver::LineSnapshot> snap = sim->snapshot(true);
     for (std::size_t l = 0; l < lines; ++l) run.tension[l].push_back(snap.at(l).endForceB.norm());
   });
   return run;

@@ -37,6 +37,7 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -119,13 +120,8 @@ time::DynamicResult runChainDeck(double duration, const model::DynamicSolverSpec
   EXPECT_EQ(moved, 1);
   spec.dynamics.duration = duration;
   spec.dynamics.rampTime = 0.0;
-  spec.dynamics.solver = solver;
-  spec.output.vtk = false;
-  spec.output.plots = false;
-  analysis::Simulation sim(std::move(spec));
-  const solver::StaticResult statics = sim.solveStatics();
-  EXPECT_TRUE(statics.converged) << statics.message;
-  return sim.runDynamics([](const model::State&, const VecX&) {});
+  return test::simulationAfterStatics(std::move(spec), solver)
+      ->runDynamics([](const model::State&, const VecX&) {});
 }
 
 TEST(SeabedPredictorTest, ExtrapolatedAccelerationFewerResidualEvaluationsAtSmallSteps) {
@@ -139,18 +135,11 @@ time::DynamicResult runExampleFor(const std::string& example, double duration,
                                   const model::DynamicSolverSpec& solver, std::vector<double>* endTensions) {
   model::ModelSpec spec = io::readModelFile(std::string(test::kExamplesDir) + "/" + example + "/model.yaml");
   spec.dynamics.duration = duration;
-  spec.dynamics.solver = solver;
-  spec.output.vtk = false;
-  spec.output.plots = false;
-  analysis::Simulation sim(std::move(spec));
-  const solver::StaticResult statics = sim.solveStatics();
-  EXPECT_TRUE(statics.converged) << statics.message;
-  return sim.runDynamics([&](const model::State&, const VecX&) {
+  const std::unique_ptr<analysis::Simulation> sim = test::simulationAfterStatics(std::move(spec), solver);
+  return sim->runDynamics([&](const model::State&, const VecX&) {
     if (!endTensions) return;
-    for (const solver::LineSnapshot& l : sim.snapshot(true)) {
-      endTensions->push_back(l.endTensionA);
-      endTensions->push_back(l.endTensionB);
-    }
+    const std::vector<double> row = test::endTensionRow(*sim);
+    endTensions->insert(endTensions->end(), row.begin(), row.end());
   });
 }
 
