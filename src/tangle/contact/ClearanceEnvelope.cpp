@@ -12,6 +12,7 @@
 #include <limits>
 #include <set>
 
+#include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/core/JsonWriter.hpp"
 #include "tangle/core/OutputFile.hpp"
@@ -30,9 +31,9 @@ constexpr double kSphereSlack = 0.05;
 /// Margin [m] of record()'s wake-up travel (Side::wake) under the room the node's own test left.
 constexpr double kWakeMargin = 1e-9;
 
-/// Distance of x from segment j of line b less the contact radius at the segment's end nearer its closest
-/// point (`clearance`), and less the segment's larger contact radius (`low`: 1-Lipschitz in x and in the
-/// segment's nodes, as the radius switches at the segment's middle) [m].
+/// Distance of x from segment j of line b less the contact radius at its closest point (`clearance`; the
+/// radius along the line, RadiusProfile), and less the segment's largest contact radius (`low`: 1-Lipschitz
+/// in x and in the segment's nodes) [m].
 struct ChordClearance {
   double clearance = kInf, low = kInf;
 };
@@ -44,13 +45,12 @@ Vec3 chordOffset(const std::vector<Vec3>& position, const model::Line& b, int j,
   s = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
   return x - (p + s * axis);
 }
-ChordClearance chordClearance(const std::vector<Vec3>& position, const std::vector<double>& diameter,
+ChordClearance chordClearance(const std::vector<Vec3>& position, const RadiusProfile& profile,
                               const model::Line& b, int j, const Vec3& x) {
-  const int m1 = b.firstNode + j, m2 = m1 + 1;
   double s = 0.0;
   const double distance = chordOffset(position, b, j, x, s).norm();
-  const double radius = 0.5 * (s < 0.5 ? diameter[m1] : diameter[m2]);
-  return {distance - radius, distance - 0.5 * std::max(diameter[m1], diameter[m2])};
+  const int element = b.firstElement + j;
+  return {distance - profile.at(element, s), distance - profile.largest(element)};
 }
 }  // namespace
 
@@ -99,7 +99,7 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
                                           int bestSegment, double best) const {
   const model::Line& a = *rule.a;
   const model::Line& b = *rule.b;
-  const auto& diameter = m_model->nodeContactDiameter();
+  const std::vector<double>& nodeRadius = m_profile->nodeRadius();
   // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
   const bool smoothCables = m_model->spec().contact.smoothCables();
   if (bestSegment < 0 || !hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables))
@@ -111,7 +111,7 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
   const int n = a.firstNode + i;
   const Vec3& x = state.position[n];
   const double bulgeBound = 0.25 * m_model->elements()[b.firstElement + bestSegment].restLength;
-  if (!(best < 0.5 * diameter[n] + bulgeBound)) return best;
+  if (!(best < nodeRadius[static_cast<std::size_t>(n)] + bulgeBound)) return best;
   const int segments = b.nodeCount - 1;
   const int element = i + 1 < a.nodeCount ? a.firstElement + i : a.firstElement + i - 1;
   const double s = i + 1 < a.nodeCount ? 0.0 : 1.0;
@@ -125,8 +125,7 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
         l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
     const CentrelineDistance c = centrelineDistance(*m_model, state.position, element, b.firstElement + j, s,
                                                     t0, true, false, smoothCables);
-    const double radius = 0.5 * (c.t < 0.5 ? diameter[b.firstNode + j] : diameter[b.firstNode + j + 1]);
-    smooth = std::min(smooth, c.distance - radius);
+    smooth = std::min(smooth, c.distance - m_profile->at(b.firstElement + j, c.t));
   }
   return std::isfinite(smooth) ? smooth : best;
 }
@@ -138,6 +137,7 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
       m_margin(std::max(model.spec().clearance.margin.value_or(model.spec().contact.clearanceMargin),
                         model.spec().clearance.required)) {
   for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
+  m_profile = std::make_unique<RadiusProfile>(model, m_radius);
   m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
   std::set<std::array<int, 2>> pairs;
   auto add = [&](int a, int b) {
@@ -187,14 +187,14 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   std::vector<double>* others = certificate ? certificate->others : nullptr;
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
-  const auto& diameter = m_model->nodeContactDiameter();
+  const std::vector<double>& nodeRadius = m_profile->nodeRadius();
   const SegmentRule rule = segmentRule(state, line, other);
   int node = 0;  // the node of line a whose clearance is being found
   // Surface distance from x to segment j of line b (the clearance before x's own radius); `low` is lowered to
   // the distance less the segment's larger contact radius, the bound record() carries from step to step.
   const auto segmentDistance = [&](const Vec3& x, int j, double& low) {
     if (!rule.assessed(node, j)) return kInf;
-    const ChordClearance c = chordClearance(state.position, diameter, b, j, x);
+    const ChordClearance c = chordClearance(state.position, *m_profile, b, j, x);
     low = std::min(low, c.low);
     return c.clearance;
   };
@@ -251,8 +251,9 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       for (int n = first; n <= last; ++n) {
         lo = lo.cwiseMin(state.position[n]);
         hi = hi.cwiseMax(state.position[n]);
-        contact = std::max(contact, 0.5 * diameter[n]);
       }
+      for (int e = first - b.firstNode; e < last - b.firstNode; ++e)
+        contact = std::max(contact, m_profile->largest(b.firstElement + e));
       const Vec3 c = 0.5 * (lo + hi);
       double r2 = 0.0;  // [m^2] (one root per block)
       for (int n = first; n <= last; ++n) r2 = std::max(r2, (state.position[n] - c).squaredNorm());
@@ -272,7 +273,7 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       const Vec3& q = state.position[m1 + 1];
       spheres.segmentMiddle[static_cast<std::size_t>(j)] = 0.5 * (p + q);
       spheres.segmentReach[static_cast<std::size_t>(j)] =
-          0.5 * (q - p).norm() + 0.5 * std::max(diameter[m1], diameter[m1 + 1]);
+          0.5 * (q - p).norm() + m_profile->largest(b.firstElement + j);
     }
     return 0.0;
   };
@@ -374,9 +375,10 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       (*others)[static_cast<std::size_t>(i)] = outside;
       hint[static_cast<std::size_t>(i)] = nearSegment;
       const double clearance = smoothClearance(state, rule, i, nearSegment, nearBest);
-      out[static_cast<std::size_t>(i)] = clearance - 0.5 * diameter[n];
+      out[static_cast<std::size_t>(i)] = clearance - nodeRadius[static_cast<std::size_t>(n)];
       if (lower)
-        (*lower)[static_cast<std::size_t>(i)] = std::min({nearLow, farther, clearance}) - 0.5 * diameter[n];
+        (*lower)[static_cast<std::size_t>(i)] =
+            std::min({nearLow, farther, clearance}) - nodeRadius[static_cast<std::size_t>(n)];
       skipNode[static_cast<std::size_t>(i)] = 1;  // settled: the blocks below leave it as it is
     }
   }
@@ -387,7 +389,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   // moves, and the node was tried again at every step, to be found not below again (187 000 of the 580 000
   // nodes tried in the first 130 s of drilling-riser-drift, the lines apart).
   const auto settleWithoutSearch = [&](int i, double bound) {
-    if (lower) (*lower)[static_cast<std::size_t>(i)] = bound - 0.5 * diameter[a.firstNode + i];
+    if (lower)
+      (*lower)[static_cast<std::size_t>(i)] = bound - nodeRadius[static_cast<std::size_t>(a.firstNode + i)];
     if (others) (*others)[static_cast<std::size_t>(i)] = bound;
   };
   std::vector<int>& near = m_work.near;
@@ -412,8 +415,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         std::any_of(skipNode.begin() + start, skipNode.begin() + stop, [](char c) { return c == 0; })) {
       double threshold = -kInf;
       for (int i = start; i < stop; ++i)
-        threshold =
-            std::max(threshold, (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[a.firstNode + i]);
+        threshold = std::max(threshold, (*onlyBelow)[static_cast<std::size_t>(i)] +
+                                            nodeRadius[static_cast<std::size_t>(a.firstNode + i)]);
       if (std::isfinite(threshold)) {
         bool reachable = false;
         double bound = kInf;  // the smallest of the blocks' bounds [m]
@@ -463,7 +466,8 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         // A node whose clearance cannot fall below its envelope so far needs no exact search: the bounds of
         // the blocks that may hold its nearest segment all reach the threshold (most nodes at most steps, as
         // the envelope settles).
-        const double threshold = (*onlyBelow)[static_cast<std::size_t>(i)] + 0.5 * diameter[n];
+        const double threshold =
+            (*onlyBelow)[static_cast<std::size_t>(i)] + nodeRadius[static_cast<std::size_t>(n)];
         bool reachable = !std::isfinite(threshold);
         for (std::size_t m = 0; m < near.size() && !reachable; ++m) {
           const std::size_t k = static_cast<std::size_t>(near[m]);
@@ -531,11 +535,12 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         (*others)[static_cast<std::size_t>(i)] = bound;
       }
       best = smoothClearance(state, rule, i, bestSegment, best);
-      out[static_cast<std::size_t>(i)] = best - 0.5 * diameter[n];
+      out[static_cast<std::size_t>(i)] = best - nodeRadius[static_cast<std::size_t>(n)];
       // Every segment that could be nearer with its larger radius was measured (each pruned one's bound
       // uses that radius and is not below best, so not below low): low is exact. With the smooth
       // centreline the clearance may be below the chords' (best replaced above).
-      if (lower) (*lower)[static_cast<std::size_t>(i)] = std::min(low, best) - 0.5 * diameter[n];
+      if (lower)
+        (*lower)[static_cast<std::size_t>(i)] = std::min(low, best) - nodeRadius[static_cast<std::size_t>(n)];
     }
   }
   return out;
@@ -568,13 +573,13 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
         std::abs(i - window.segmentA) <= kCrossingWindow && std::abs(j - window.segmentB) <= kCrossingWindow;
     if (window.segmentA >= 0 && near != inside) return;
     const int ea = a.firstElement + i, eb = b.firstElement + j;
-    const double ra = m_radius[static_cast<std::size_t>(ea)], rb = m_radius[static_cast<std::size_t>(eb)];
+    const double ra = m_profile->largest(ea), rb = m_profile->largest(eb);
     const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
     const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
     if (!(geometry::segmentBoxGap(a0, a1, b0, b1) - ra - rb < best.clearance)) return;
     if (!rule.segmentsAssessed(i, j)) return;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
-    const double clearance = d.distance - ra - rb;
+    const double clearance = d.distance - m_profile->at(ea, d.s) - m_profile->at(eb, d.t);
     if (clearance < best.clearance) best = {clearance, i, j, d.s, d.t};
   };
   if (inside && window.segmentA >= 0) {  // the window alone
@@ -601,7 +606,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
       for (int j = first; j < last; ++j) {
         lo = lo.cwiseMin(state.position[line.firstNode + j + 1]);
         hi = hi.cwiseMax(state.position[line.firstNode + j + 1]);
-        radius = std::max(radius, m_radius[static_cast<std::size_t>(line.firstElement + j)]);
+        radius = std::max(radius, m_profile->largest(line.firstElement + j));
       }
       blocks[k] = {lo.array() - radius, hi.array() + radius};
     }
@@ -660,10 +665,9 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
     const int ea = a.firstElement + i, eb = b.firstElement + j;
     const CentrelineDistance d = centrelineDistance(*m_model, state.position, ea, eb, k.chords.s, k.chords.t,
                                                     !curveA, !curveB, smoothCables);
-    k.clearance =
-        d.distance - m_radius[static_cast<std::size_t>(ea)] - m_radius[static_cast<std::size_t>(eb)];
     k.s = std::clamp(d.s, 0.0, 1.0);
     k.t = std::clamp(d.t, 0.0, 1.0);
+    k.clearance = d.distance - m_profile->at(ea, k.s) - m_profile->at(eb, k.t);
   };
   double threshold = kInf;  // the best clearance on the curves known [m]
   for (int i = firstA; i <= lastA; ++i)
@@ -675,8 +679,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
       const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
       const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
       k.chords = geometry::segmentDistance(a0, a1, b0, b1);
-      k.lower = k.chords.distance - m_radius[static_cast<std::size_t>(ea)] -
-                m_radius[static_cast<std::size_t>(eb)] -
+      k.lower = k.chords.distance - m_profile->largest(ea) - m_profile->largest(eb) -
                 searchRangeDeviationBound(m_curves[static_cast<std::size_t>(ea)], state.position) -
                 searchRangeDeviationBound(m_curves[static_cast<std::size_t>(eb)], state.position);
       if (i == c.segmentA && j == c.segmentB) {

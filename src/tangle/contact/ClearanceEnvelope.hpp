@@ -8,18 +8,19 @@
 /// Clearance at node i of line A to line B: min over the elements of B that may touch an element at node i
 /// (the contact's rules: not across a shared connection, an `exclude` pair or an exclusion zone; a node whose
 /// elements may touch none has no clearance, +inf) of the distance from x_i to the
-/// element's chord, minus the contact radii (half the contact diameters of node i and of the nearer
-/// node of the element); negative when the surfaces overlap. Where B is a beam and x_i is within a
+/// element's chord, minus the contact radii (the radius along each line, RadiusProfile: node i's own, the
+/// mean of the two sections' at a change of section, and the element's at the closest point); negative when
+/// the surfaces overlap. Where B is a beam and x_i is within a
 /// quarter element of its surface, the distance is taken to B's smooth centreline instead (on the
 /// nearest element and its neighbours), the curve contact measures (SmoothCentreline.hpp).
 /// Crossings: two lines that cross between nodes of both (a chain across a pipeline, risers crossing at an
 /// angle) are nearest at points no node is near (two 0.3 m pipes crossing 0.3 m apart mid-element on 11 m
 /// elements: 5.3 m from the nodes). So each pair's chords are also measured against each other (segment to
-/// segment, less each element's contact radius: the crossing pass), at the static state and at every step
-/// where the pair may be nearer than its minimum so far, and a crossing below that minimum is given to the
-/// node of each line nearest it: the pair's minimum (and the pass / fail) is then that of the chords
-/// everywhere, and the envelope along each line is the clearance of the node or of the half elements beside
-/// it (on chords there: a beam's curve between nodes may lie a chord deviation closer). Written to
+/// segment, less each element's contact radius at the closest points: the crossing pass), at the static state
+/// and at every step where the pair may be nearer than its minimum so far, and a crossing below that minimum
+/// is given to the node of each line nearest it: the pair's minimum (and the pass / fail) is then that of the
+/// chords everywhere, and the envelope along each line is the clearance of the node or of the half elements
+/// beside it (on chords there: a beam's curve between nodes may lie a chord deviation closer). Written to
 /// clearance/envelope.csv and clearance/summary.json; a few lines for the terminal.
 /// The dynamic envelope is kept up to the clearance margin (clearance.margin, else contact.clearance_margin,
 /// 50 m by default, as the clash report's clearances; never below clearance.required): a node whose clearance
@@ -38,6 +39,7 @@
 #include <vector>
 
 #include "tangle/contact/ContactCandidates.hpp"
+#include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/model/State.hpp"
@@ -68,7 +70,7 @@ class ClearanceEnvelope {
   /// value gets +inf instead of the exact clearance (the dynamic envelope needs only new minima).
   /// With `skip` (one flag per node), flagged nodes get +inf without any search.
   /// With `lower`, it gets per node searched its lower clearance [m] (each segment of `other` with its
-  /// larger contact radius, and the clearance where less: a bound of the clearance that is 1-Lipschitz in
+  /// largest contact radius, and the clearance where less: a bound of the clearance that is 1-Lipschitz in
   /// the positions), for a node that `onlyBelow` lets off on its bounding spheres alone (+inf) a lower bound
   /// of it (the spheres'), -inf for the nodes not searched.
   std::vector<double> nodeClearance(const model::State& state, int line, int other,
@@ -136,7 +138,7 @@ class ClearanceEnvelope {
     std::vector<Vec3> centre;   ///< per block [m]
     std::vector<double> reach;  ///< per block: sphere radius plus its largest contact radius [m]
     std::vector<Vec3> segmentMiddle;   ///< per segment [m]
-    std::vector<double> segmentReach;  ///< per segment: half its length plus its larger contact radius [m]
+    std::vector<double> segmentReach;  ///< per segment: half its length plus its largest contact radius [m]
     /// Per block: the line's m_travel when its segments' spheres were made [m] (< 0: not made).
     std::vector<double> segmentTravel;
   };
@@ -157,6 +159,9 @@ class ClearanceEnvelope {
   /// Each element's contact radius (half its line type's contact diameter) [m] (each line's largest:
   /// model::Line::contactRadius).
   std::vector<double> m_radius;
+  /// The radius along the lines, tapered at a change of section as the contact measures it (a node's own
+  /// radius is the profile's there: the mean of the two sections').
+  std::unique_ptr<RadiusProfile> m_profile;
   /// The contact's rules of which element pairs may touch (its exclusions and shared connections), for the
   /// pairs the envelope skips.
   std::unique_ptr<ContactCandidates> m_exclusions;

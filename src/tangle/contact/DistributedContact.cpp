@@ -168,28 +168,12 @@ DistributedContact::DistributedContact(const model::Model& model, const model::C
       m_spec(spec),
       m_radius(radius),
       m_hysteresis(HystereticRestitution::amplitudeFor(spec.restitution)),
-      m_curves(elementCurves(model, true)) {
+      m_curves(elementCurves(model, true)),
+      m_profile(model, radius) {
   m_lineAxialStiffness.assign(model.lines().size(), kInf);
   for (const model::LineElement& el : model.elements())
     m_lineAxialStiffness[el.line] = std::min(m_lineAxialStiffness[el.line], el.type->axialStiffness);
   const auto& elements = model.elements();
-  m_shoulders.resize(elements.size());
-  for (std::size_t e = 0; e < elements.size(); ++e) {
-    Shoulder& sh = m_shoulders[e];
-    const double r = m_radius[e];
-    sh.startRadius = sh.endRadius = sh.largest = r;
-    const double length = std::max(elements[e].restLength, 1e-12);
-    auto taper = [&](std::size_t neighbour, double& atNode, double& extent) {
-      const double other = m_radius[neighbour];
-      if (other == r) return;
-      atNode = 0.5 * (r + other);
-      extent = std::min(0.5, 0.5 * std::abs(other - r) / length);
-      sh.largest = std::max(sh.largest, atNode);
-    };
-    if (e > 0 && elements[e - 1].line == elements[e].line) taper(e - 1, sh.startRadius, sh.startLength);
-    if (e + 1 < elements.size() && elements[e + 1].line == elements[e].line)
-      taper(e + 1, sh.endRadius, sh.endLength);
-  }
   const int lines = static_cast<int>(model.lines().size());
   m_pointStiffness.resize(static_cast<std::size_t>(lines) * static_cast<std::size_t>(lines));
   const auto hasElements = [&](int l) { return model.lines()[static_cast<std::size_t>(l)].elementCount > 0; };
@@ -205,26 +189,10 @@ DistributedContact::DistributedContact(const model::Model& model, const model::C
     m_massPerLength[e] = computeMassPerLength(static_cast<int>(e));
 }
 
-double DistributedContact::radiusAt(int element, double t) const { return radiusProfile(element, t)[0]; }
+double DistributedContact::radiusAt(int element, double t) const { return m_profile.at(element, t); }
 
 std::array<double, 3> DistributedContact::radiusProfile(int element, double t) const {
-  // In a shoulder the radius follows the smootherstep S(u) = u^3 (10 - 15 u + 6 u^2) of the whole taper, u
-  // from 0 at its far end in the neighbour to 1/2 at the node and 1 where this element's own radius is
-  // reached: C2 along the line (a linear taper's kinks at its two ends were steps of the force's slope).
-  const Shoulder& sh = m_shoulders[static_cast<std::size_t>(element)];
-  const double r = m_radius[static_cast<std::size_t>(element)];
-  t = std::clamp(t, 0.0, 1.0);
-  auto shoulder = [&](double atNode, double extent, double fromNode, double sign) -> std::array<double, 3> {
-    const double other = 2.0 * atNode - r;  // the neighbour's radius
-    const double u = 0.5 + 0.5 * fromNode / extent, du = 0.5 / extent;
-    const double value = other + (r - other) * u * u * u * (10.0 + u * (6.0 * u - 15.0));
-    const double slope = (r - other) * 30.0 * u * u * (1.0 - u) * (1.0 - u) * du;
-    const double curvature = (r - other) * 60.0 * u * (1.0 - u) * (1.0 - 2.0 * u) * du * du;
-    return {value, sign * slope, curvature};
-  };
-  if (t < sh.startLength) return shoulder(sh.startRadius, sh.startLength, t, 1.0);
-  if (1.0 - t < sh.endLength) return shoulder(sh.endRadius, sh.endLength, 1.0 - t, -1.0);
-  return {r, 0.0, 0.0};
+  return m_profile.profile(element, t);
 }
 
 double DistributedContact::bentness(const model::State& state, int element, double radii) const {
@@ -406,8 +374,7 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
   const Vec3 &b0 = state.position[eb.node1], &b1 = state.position[eb.node2];
   // The largest sum of the radii on the two pieces, for the bounds below; the gap uses the radii at its
   // points.
-  const double radii = m_shoulders[static_cast<std::size_t>(slave)].largest +
-                       m_shoulders[static_cast<std::size_t>(master)].largest;
+  const double radii = m_profile.largest(slave) + m_profile.largest(master);
   // Each piece of the C1 centreline (below): first with the gap between the chords' bounding boxes, which
   // the chords' distance is at least (most candidate pairs end here, without the distance).
   const double reach = radii + chordBound(state, slave) + chordBound(state, master);
@@ -611,11 +578,9 @@ bool DistributedContact::contactIntervals(const model::State& state, int slave, 
     // points on a piece across a shoulder's end left the tangent 1.5 % off at a crossing (before 2026-12-06
     // the slave's cuts were tested against the interval before its ends were set, and none was made).
     {
-      const Shoulder& sh = m_shoulders[static_cast<std::size_t>(slave)];
-      for (const double end : {sh.startLength, 1.0 - sh.endLength})
+      for (const double end : m_profile.taperEnds(slave))
         if (end > iv.lo && end < iv.hi && end > 0.0 && end < 1.0) iv.cuts.push_back(end);
-      const Shoulder& shB = m_shoulders[static_cast<std::size_t>(master)];
-      for (const double end : {shB.startLength, 1.0 - shB.endLength}) {
+      for (const double end : m_profile.taperEnds(master)) {
         if (!(end > 0.0 && end < 1.0)) continue;
         const auto side = [&](double xi) {
           return projectPoint(state, slave, xi, master, tGuess, false).t - end;

@@ -71,6 +71,7 @@
 #include "tangle/contact/ContactCandidates.hpp"
 #include "tangle/contact/ContactEvents.hpp"
 #include "tangle/contact/ContactLaw.hpp"
+#include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/model/Model.hpp"
 #include "tangle/solver/LoadContributor.hpp"
@@ -350,21 +351,6 @@ class DistributedContact {
   const model::Model* m_model;
   model::ContactSpec m_spec;
   std::vector<double> m_radius;
-  /// Where a line changes section (a lazy wave's buoyancy: radius 0.175 -> 0.45 m) the radius runs
-  /// between the two over |r1 - r2| of arc centred on the node along a smootherstep (C2: a shoulder of
-  /// 62 degrees at the node, as a buoyancy module's end), in the elements' parameters: without it a Gauss
-  /// point whose projection crossed the node saw the sum of the radii, and the gap, jump by the
-  /// difference, a force step no time step resolves (two lazy waves relaxing into contact stopped at steps
-  /// of 1e-5 s). The master's slope dr/dt enters the gap's gradient, so the force and its tangent are
-  /// those of the law's potential (addForces).
-  struct Shoulder {
-    double startRadius = 0.0;  ///< radius at node1: the mean of the two sections' [m]
-    double startLength = 0.0;  ///< extent of the taper in the element from node1, in its parameter [-]
-    double endRadius = 0.0;    ///< radius at node2 [m]
-    double endLength = 0.0;    ///< extent from node2 [-]
-    double largest = 0.0;      ///< largest radius on the element's piece [m]
-  };
-  std::vector<Shoulder> m_shoulders;
   double m_hysteresis;                       // a of HystereticRestitution, from contact.restitution [-]
   std::vector<double> m_lineAxialStiffness;  ///< smallest EA per line [N]
   // Constants of the model, made once by the constructor (every sample asked them again: with their map
@@ -380,6 +366,12 @@ class DistributedContact {
   std::vector<double> m_bent;
   std::vector<int> m_bentElements;
   std::vector<ElementCurve> m_curves;  ///< every element's C1 centreline data (SmoothCentreline.hpp)
+  /// The radius along the lines (RadiusProfile.hpp): where a line changes section (a lazy wave's buoyancy:
+  /// 0.175 -> 0.45 m) it tapers over |r1 - r2| of arc: without it a Gauss point whose projection crossed the
+  /// node saw the sum of the radii, and the gap, jump by the difference, a force step no time step resolves
+  /// (two lazy waves relaxing into contact stopped at steps of 1e-5 s). The master's slope dr/dt enters the
+  /// gap's gradient, so the force and its tangent are those of the law's potential (addForces).
+  RadiusProfile m_profile;
   mutable std::vector<double> m_chordBound;  ///< chordBound per element [m] (NaN: not yet in this search)
   /// What the last findSamples was asked (its samples are kept while nothing else changed): a step's
   /// converged state is sampled by its last assembly, by LineContact::rejectStep and by commitDistributed

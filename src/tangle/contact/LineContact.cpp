@@ -56,6 +56,7 @@ LineContact::LineContact(const model::Model& model, const model::ContactSpec& sp
       m_timeStep(timeStep),
       m_zeta(dampingRatioForRestitution(spec.restitution)),
       m_radius(elementRadii(model)),
+      m_profile(model, m_radius),
       m_search(model, spec, m_radius),
       m_eventTracker(spec.impactVelocityThreshold, spec.eventSeparationTime),
       m_debug(std::getenv("TANGLE_DEBUG_CONTACT") != nullptr) {
@@ -947,7 +948,8 @@ double LineContact::gapBetween(const model::State& state, int lineA, int lineB, 
       const geometry::SegmentDistanceResult d =
           geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
                                     state.position[eb.node1], state.position[eb.node2]);
-      best = std::min(best, d.distance - m_radius[la.firstElement + i] - m_radius[lb.firstElement + j]);
+      best = std::min(
+          best, d.distance - m_profile.at(la.firstElement + i, d.s) - m_profile.at(lb.firstElement + j, d.t));
     }
   }
   return best;
@@ -974,7 +976,7 @@ LineContact::ClearanceBlocks LineContact::clearanceBlocks(const model::State& st
     const Vec3 hi = state.position[e.node1].cwiseMax(state.position[e.node2]);
     b.lo[k] = j % kBlock == 0 ? lo : Vec3(b.lo[k].cwiseMin(lo));
     b.hi[k] = j % kBlock == 0 ? hi : Vec3(b.hi[k].cwiseMax(hi));
-    b.radius[k] = std::max(b.radius[k], m_radius[static_cast<std::size_t>(line.firstElement + j)]);
+    b.radius[k] = std::max(b.radius[k], m_profile.largest(line.firstElement + j));
   }
   const std::size_t groups = (count + kBlock - 1) / kBlock;
   b.groupLo.resize(groups);
@@ -1037,10 +1039,11 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   if (hint.first < la.elementCount && hint.second < lb.elementCount && measured(hint.first, hint.second)) {
     const model::LineElement& ea = elements[la.firstElement + hint.first];
     const model::LineElement& eb = elements[lb.firstElement + hint.second];
-    seed = geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
-                                     state.position[eb.node1], state.position[eb.node2])
-               .distance -
-           m_radius[la.firstElement + hint.first] - m_radius[lb.firstElement + hint.second];
+    const geometry::SegmentDistanceResult d =
+        geometry::segmentDistance(state.position[ea.node1], state.position[ea.node2],
+                                  state.position[eb.node1], state.position[eb.node2]);
+    seed = d.distance - m_profile.at(la.firstElement + hint.first, d.s) -
+           m_profile.at(lb.firstElement + hint.second, d.t);
   }
   // Line B's elements in blocks (clearanceBlocks): a box and the largest radius per block, whose distance
   // bound to an element of A culls the whole block at once (a bound below each of its pairs' bounds: the same
@@ -1088,7 +1091,7 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
     const Vec3& a0 = state.position[ea.node1];
     const Vec3& a1 = state.position[ea.node2];
     const Vec3 lo = a0.cwiseMin(a1), hi = a0.cwiseMax(a1);
-    const double ra = m_radius[la.firstElement + i];
+    const double ra = m_profile.largest(la.firstElement + i);
     for (int j = 0; j < lb.elementCount; ++j) {
       if (j % kBlock == 0) {
         const std::size_t k = static_cast<std::size_t>(j / kBlock);
@@ -1102,12 +1105,15 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
       const model::LineElement& eb = elements[lb.firstElement + j];
       const Vec3& b0 = state.position[eb.node1];
       const Vec3& b1 = state.position[eb.node2];
-      const double rb = m_radius[lb.firstElement + j];
-      // Box distance lower bound: skip pairs that cannot beat the best (or the margin).
+      const double rb = m_profile.largest(lb.firstElement + j);
+      // Box distance lower bound (with the elements' largest radii): skip pairs that cannot beat the best
+      // (or the margin).
       const double bound = geometry::boxGap(lo, hi, b0.cwiseMin(b1), b0.cwiseMax(b1)) - ra - rb;
       if (bound > std::min({best[0], m_spec.clearanceMargin, seed})) continue;
       const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
-      const double gap = d.distance - ra - rb;
+      // The surfaces at the closest points (the radius along the lines, as the contact measures it).
+      const double gap =
+          d.distance - m_profile.at(la.firstElement + i, d.s) - m_profile.at(lb.firstElement + j, d.t);
       if (gap < best[0]) {
         best = {gap, la.arcLength[i] + d.s * (la.arcLength[i + 1] - la.arcLength[i]),
                 lb.arcLength[j] + d.t * (lb.arcLength[j + 1] - lb.arcLength[j])};
@@ -1141,11 +1147,12 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
               state.position[elements[eb].node1], state.position[elements[eb].node2]);
           const CentrelineDistance c = centrelineDistance(*m_model, state.position, ea, eb, d.s, d.t, false,
                                                           false, smoothCables, curves());
-          const double gap = c.distance - m_radius[ea] - m_radius[eb];
+          const double s = std::clamp(c.s, 0.0, 1.0), t = std::clamp(c.t, 0.0, 1.0);
+          const double gap = c.distance - m_profile.at(ea, s) - m_profile.at(eb, t);
           if (gap < refined) {
             refined = gap;
-            at = {gap, la.arcLength[i] + std::clamp(c.s, 0.0, 1.0) * (la.arcLength[i + 1] - la.arcLength[i]),
-                  lb.arcLength[j] + std::clamp(c.t, 0.0, 1.0) * (lb.arcLength[j + 1] - lb.arcLength[j])};
+            at = {gap, la.arcLength[i] + s * (la.arcLength[i + 1] - la.arcLength[i]),
+                  lb.arcLength[j] + t * (lb.arcLength[j + 1] - lb.arcLength[j])};
           }
         }
       }

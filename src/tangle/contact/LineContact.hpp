@@ -30,6 +30,7 @@
 #include "tangle/contact/ContactCandidates.hpp"
 #include "tangle/contact/ContactEvents.hpp"
 #include "tangle/contact/DistributedContact.hpp"
+#include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/model/Model.hpp"
@@ -254,8 +255,9 @@ class LineContact final : public solver::LoadContributor {
                                                     : m_search.nearLinePairs(state, m_spec.clearanceMargin);
   }
   /// Minimum clearance between two lines at a state: (clearance [m], arcA [m], arcB [m]). The clearance is
-  /// the gap between the surfaces (negative in contact; beams near contact on their smooth centrelines, as
-  /// contact measures them); +inf when farther than the clearance margin.
+  /// the gap between the surfaces (negative in contact; beams near contact on their smooth centrelines, and
+  /// the radius tapered at a change of section, as contact measures them: RadiusProfile); +inf when farther
+  /// than the clearance margin.
   std::array<double, 3> clearance(const model::State& state, int lineA, int lineB) const;
   /// clearance() of each pair at one state (the clash report at each output time), the same values as pair
   /// by pair: each line's boxes for the culling made once for all its pairs.
@@ -361,6 +363,9 @@ class LineContact final : public solver::LoadContributor {
   std::vector<double>
       m_lineMassWithAdded;       // structural + attachment + normal added mass per line, +inf if held [kg]
   std::vector<double> m_radius;  // contact radius per element [m]
+  /// The radius along the lines, tapered at a change of section (the clearances measure the surfaces the
+  /// distributed contact does).
+  RadiusProfile m_profile;
   ContactCandidates m_search;    // which element pairs may touch and are close
   double m_candidateTime = std::numeric_limits<double>::quiet_NaN();
   double m_margin = 0.0;

@@ -17,18 +17,27 @@
 
 #include "support/ModelFactory.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
+#include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
 #include "tangle/model/Model.hpp"
 
 namespace tangle::contact {
 namespace {
 
+/// The contact radius along the lines of `m` (RadiusProfile, tested on its own in RadiusProfileTest).
+RadiusProfile radiusProfile(const model::Model& m) {
+  std::vector<double> radius;
+  for (const model::LineElement& el : m.elements()) radius.push_back(0.5 * el.type->contactDiameter);
+  return {m, radius};
+}
+
 /// Surface-to-surface clearance of node i of `line` to `other` over all segments (the definition in
-/// ClearanceEnvelope.hpp: the segment's contact radius at its nearer end, then the node's own radius).
+/// ClearanceEnvelope.hpp: the segment's contact radius at its closest point, then the node's own radius,
+/// both the radius along the line's: RadiusProfile).
 std::vector<double> bruteForce(const model::Model& m, const model::State& s, int line, int other) {
   const model::Line& a = m.lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m.lines()[static_cast<std::size_t>(other)];
-  const auto& diameter = m.nodeContactDiameter();
+  const RadiusProfile profile = radiusProfile(m);
   std::vector<double> out;
   for (int i = 0; i < a.nodeCount; ++i) {
     const Vec3& x = s.position[a.firstNode + i];
@@ -39,27 +48,28 @@ std::vector<double> bruteForce(const model::Model& m, const model::State& s, int
       const Vec3 axis = s.position[m2] - p;
       const double l2 = axis.squaredNorm();
       const double t = l2 > 0.0 ? std::clamp((x - p).dot(axis) / l2, 0.0, 1.0) : 0.0;
-      best = std::min(best, (x - (p + t * axis)).norm() - 0.5 * (t < 0.5 ? diameter[m1] : diameter[m2]));
+      best = std::min(best, (x - (p + t * axis)).norm() - profile.at(b.firstElement + j, t));
     }
-    out.push_back(best - 0.5 * diameter[a.firstNode + i]);
+    out.push_back(best - profile.nodeRadius()[static_cast<std::size_t>(a.firstNode + i)]);
   }
   return out;
 }
 
 /// The smallest surface clearance of the two lines' chords [m] (segment to segment, less each element's
-/// contact radius: the crossing pass of ClearanceEnvelope.hpp, on chords for cables without contact).
+/// contact radius at the closest points: the crossing pass of ClearanceEnvelope.hpp, on chords for cables
+/// without contact).
 double chordMinimum(const model::Model& m, const model::State& s, int line, int other) {
   const model::Line& a = m.lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m.lines()[static_cast<std::size_t>(other)];
+  const RadiusProfile profile = radiusProfile(m);
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i + 1 < a.nodeCount; ++i)
     for (int j = 0; j + 1 < b.nodeCount; ++j) {
-      const double d = geometry::segmentDistance(s.position[a.firstNode + i], s.position[a.firstNode + i + 1],
-                                                 s.position[b.firstNode + j], s.position[b.firstNode + j + 1])
-                           .distance;
-      best = std::min(
-          best, d - 0.5 * m.elements()[static_cast<std::size_t>(a.firstElement + i)].type->contactDiameter -
-                    0.5 * m.elements()[static_cast<std::size_t>(b.firstElement + j)].type->contactDiameter);
+      const geometry::SegmentDistanceResult d =
+          geometry::segmentDistance(s.position[a.firstNode + i], s.position[a.firstNode + i + 1],
+                                    s.position[b.firstNode + j], s.position[b.firstNode + j + 1]);
+      best = std::min(best,
+                      d.distance - profile.at(a.firstElement + i, d.s) - profile.at(b.firstElement + j, d.t));
     }
   return best;
 }
