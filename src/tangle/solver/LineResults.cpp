@@ -73,7 +73,21 @@ Vec3 endPointForce(const model::Model& model, const Assembler& assembler, const 
   const Vec3 fInner = elementForce(state, *inner, innerTension, innerBeam);
   // Mid-points are 0.5 (l_end + l_inner) apart; the end point is 0.5 l_end beyond the end mid-point.
   const double gap = 0.5 * (end.restLength + inner->restLength);
-  return fEnd + (fEnd - fInner) * (0.5 * end.restLength / gap);
+  const Vec3 extrapolated = fEnd + (fEnd - fInner) * (0.5 * end.restLength / gap);
+  // A bar carries no compression: where the extrapolation turns a bar end's force against its chord, the end
+  // point is slack (its own force where that is the slack law's small compression, c EA strain). That is a
+  // tension front between the end element and its neighbour (a snap: the end element slack and the next one
+  // taut), across which a linear extrapolation does not hold: a cable's end read -74 kN with its end
+  // elements at about 0 N (slack) and 148 kN. (A bar with compressionFactor 1, a spring in compression, keeps
+  // it.)
+  if (!end.isBeam() && end.type->compressionFactor < 1.0) {
+    const Vec3 axis = (state.position[static_cast<std::size_t>(end.node2)] -
+                       state.position[static_cast<std::size_t>(end.node1)])
+                          .normalized();
+    const double floor = std::min(endTension, 0.0);  // [N]
+    if (extrapolated.dot(axis) < floor) return floor * axis;
+  }
+  return extrapolated;
 }
 
 }  // namespace

@@ -30,7 +30,9 @@ struct LineSnapshot {
   /// element next to it is used only when no point load sits between the two (same line type, no attachment).
   /// An end element without such a neighbour (a one-element line or end section, an attachment at its inner
   /// node) takes its own distributed weight as the slope: half an element of (submerged) weight beyond its
-  /// mid-point (none where it lies on the seabed); its drag and inertia are left out.
+  /// mid-point (none where it lies on the seabed); its drag and inertia are left out. A cable's end (a bar
+  /// carries no compression) whose extrapolation turns against the end element's chord is slack: 0 (a
+  /// tension front next to the end, as in a snap, across which the extrapolation does not hold).
   double endTensionA = 0.0;
   double endTensionB = 0.0;
   /// Force the line exerts on whatever is at its end (support, vessel, attached mass), global axes [N],

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -70,7 +71,7 @@ TEST(LineResults, EndsAloneAreTheWholeResultsEnds) {
     analysis::Simulation sim(spec);
     model::State state = stretched(sim);
     for (std::size_t i = 0; i < state.position.size(); ++i)
-      state.position[i].x() += 0.3 * static_cast<double>(i * i);  // bent
+      state.position[i].x() += 0.05 * static_cast<double>(i * i);  // bent
     sim.state() = state;
     const VecX force = sim.supportForce(true);
     std::vector<LineSnapshot> all, ends;
@@ -97,6 +98,38 @@ TEST(LineResults, EndsAloneAreTheWholeResultsEnds) {
     EXPECT_EQ(e.tension[1], 0.0);
     EXPECT_NE(a.tension[1], 0.0);
     EXPECT_TRUE(e.wallTension.empty());
+  }
+}
+
+// A cable whose end element is slack while the next one is taut (a snap front next to the end: a line shaken
+// at its ends, new-user model of 2026-12-07): a bar carries no compression, so the end is slack: the end
+// element's own force, the slack law's c EA strain = 1e-6 x 1e8 N x (-0.01) = -1 N. The linear extrapolation
+// of the two elements' forces (-1 N and EA / 1000 = 1e5 N, equal 10 m elements: the end point half an
+// element beyond the end's mid-point) gives -1 - 0.5 (1e5 + 1) = -5e4 N, which was reported as the end
+// tension until then (a line's end read -74 kN with its interior at -0.7 N). The other end, with both
+// elements at 1e5 N, keeps the extrapolation's 1e5 N.
+TEST(LineResults, ACableEndNextToATautElementIsSlackNotCompressed) {
+  model::ModelSpec spec;
+  spec.sourceFile = "snap front (test)";
+  spec.environment.waterDepth = 200.0;
+  spec.lineTypes["wire"] = test::cableType("wire", 0.1, 20.0, 1.0e8);
+  spec.lines.push_back(test::simpleLine("wire", "wire", 30.0, 3, model::EndKind::Pinned, Vec3(0, 0, -50),
+                                        model::EndKind::Pinned, Vec3(30, 0, -50)));
+  analysis::Simulation sim(spec);
+  model::State s = sim.state();
+  const model::Line& line = sim.model().lines()[0];
+  const std::array<double, 4> x = {0.0, 9.9, 9.9 + 10.01, 9.9 + 20.02};  // element 0 slack, 1 and 2 taut
+  for (int i = 0; i < line.nodeCount; ++i)
+    s.position[static_cast<std::size_t>(line.firstNode + i)] = Vec3(x[static_cast<std::size_t>(i)], 0, -50);
+  for (const LineResultDetail detail : {LineResultDetail::SectionForces, LineResultDetail::Ends}) {
+    std::vector<LineSnapshot> out;
+    computeLineResults(sim.model(), sim.assembler(), s, nullptr, out, detail);
+    ASSERT_EQ(out.size(), 1u);
+    const double slackLaw = 1e-6 * 1e8 * (9.9 - 10.0) / 10.0;  // [N]
+    EXPECT_NEAR(out[0].endTensionA, slackLaw, 1e-9);
+    EXPECT_NEAR(out[0].endTensionForceA.x(), slackLaw, 1e-9);  // along the end element's chord (+x)
+    EXPECT_EQ(out[0].tension.front(), out[0].endTensionA);
+    EXPECT_NEAR(out[0].endTensionB, 1e5, 1e-3);
   }
 }
 
