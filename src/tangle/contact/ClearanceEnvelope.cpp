@@ -99,7 +99,7 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
                                           int bestSegment, double best) const {
   const model::Line& a = *rule.a;
   const model::Line& b = *rule.b;
-  const std::vector<double>& nodeRadius = m_profile->nodeRadius();
+  const std::vector<double>& nodeRadius = m_profile.nodeRadius();
   // The distributed contact rounds cables as well as beams (DistributedContact.hpp).
   const bool smoothCables = m_model->spec().contact.smoothCables();
   if (bestSegment < 0 || !hasSmoothCentreline(*m_model, b.firstElement + bestSegment, smoothCables))
@@ -125,7 +125,7 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
         l2 > 0.0 ? std::clamp((x - state.position[b.firstNode + j]).dot(axis) / l2, 0.0, 1.0) : 0.0;
     const CentrelineDistance c = centrelineDistance(*m_model, state.position, element, b.firstElement + j, s,
                                                     t0, true, false, smoothCables);
-    smooth = std::min(smooth, c.distance - m_profile->at(b.firstElement + j, c.t));
+    smooth = std::min(smooth, c.distance - m_profile.at(b.firstElement + j, c.t));
   }
   return std::isfinite(smooth) ? smooth : best;
 }
@@ -133,12 +133,11 @@ double ClearanceEnvelope::smoothClearance(const model::State& state, const Segme
 ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
                                      const std::vector<std::array<int, 2>>& contactPairs)
     : m_model(&model),
+      m_profile(model),
       m_required(model.spec().clearance.required),
       m_margin(std::max(model.spec().clearance.margin.value_or(model.spec().contact.clearanceMargin),
                         model.spec().clearance.required)) {
-  for (const model::LineElement& el : model.elements()) m_radius.push_back(0.5 * el.type->contactDiameter);
-  m_profile = std::make_unique<RadiusProfile>(model, m_radius);
-  m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_radius);
+  m_exclusions = std::make_unique<ContactCandidates>(model, model.spec().contact, m_profile.sectionRadii());
   std::set<std::array<int, 2>> pairs;
   auto add = [&](int a, int b) {
     if (a < 0 || b < 0 || a == b) return;
@@ -187,14 +186,14 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
   std::vector<double>* others = certificate ? certificate->others : nullptr;
   const model::Line& a = m_model->lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m_model->lines()[static_cast<std::size_t>(other)];
-  const std::vector<double>& nodeRadius = m_profile->nodeRadius();
+  const std::vector<double>& nodeRadius = m_profile.nodeRadius();
   const SegmentRule rule = segmentRule(state, line, other);
   int node = 0;  // the node of line a whose clearance is being found
   // Surface distance from x to segment j of line b (the clearance before x's own radius); `low` is lowered to
   // the distance less the segment's larger contact radius, the bound record() carries from step to step.
   const auto segmentDistance = [&](const Vec3& x, int j, double& low) {
     if (!rule.assessed(node, j)) return kInf;
-    const ChordClearance c = chordClearance(state.position, *m_profile, b, j, x);
+    const ChordClearance c = chordClearance(state.position, m_profile, b, j, x);
     low = std::min(low, c.low);
     return c.clearance;
   };
@@ -253,7 +252,7 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
         hi = hi.cwiseMax(state.position[n]);
       }
       for (int e = first - b.firstNode; e < last - b.firstNode; ++e)
-        contact = std::max(contact, m_profile->largest(b.firstElement + e));
+        contact = std::max(contact, m_profile.largest(b.firstElement + e));
       const Vec3 c = 0.5 * (lo + hi);
       double r2 = 0.0;  // [m^2] (one root per block)
       for (int n = first; n <= last; ++n) r2 = std::max(r2, (state.position[n] - c).squaredNorm());
@@ -273,7 +272,7 @@ std::vector<double> ClearanceEnvelope::search(const model::State& state, int lin
       const Vec3& q = state.position[m1 + 1];
       spheres.segmentMiddle[static_cast<std::size_t>(j)] = 0.5 * (p + q);
       spheres.segmentReach[static_cast<std::size_t>(j)] =
-          0.5 * (q - p).norm() + m_profile->largest(b.firstElement + j);
+          0.5 * (q - p).norm() + m_profile.largest(b.firstElement + j);
     }
     return 0.0;
   };
@@ -573,13 +572,13 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
         std::abs(i - window.segmentA) <= kCrossingWindow && std::abs(j - window.segmentB) <= kCrossingWindow;
     if (window.segmentA >= 0 && near != inside) return;
     const int ea = a.firstElement + i, eb = b.firstElement + j;
-    const double ra = m_profile->largest(ea), rb = m_profile->largest(eb);
+    const double ra = m_profile.largest(ea), rb = m_profile.largest(eb);
     const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
     const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
     if (!(geometry::segmentBoxGap(a0, a1, b0, b1) - ra - rb < best.clearance)) return;
     if (!rule.segmentsAssessed(i, j)) return;
     const geometry::SegmentDistanceResult d = geometry::segmentDistance(a0, a1, b0, b1);
-    const double clearance = d.distance - m_profile->at(ea, d.s) - m_profile->at(eb, d.t);
+    const double clearance = d.distance - m_profile.at(ea, d.s) - m_profile.at(eb, d.t);
     if (clearance < best.clearance) best = {clearance, i, j, d.s, d.t};
   };
   if (inside && window.segmentA >= 0) {  // the window alone
@@ -606,7 +605,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
       for (int j = first; j < last; ++j) {
         lo = lo.cwiseMin(state.position[line.firstNode + j + 1]);
         hi = hi.cwiseMax(state.position[line.firstNode + j + 1]);
-        radius = std::max(radius, m_profile->largest(line.firstElement + j));
+        radius = std::max(radius, m_profile.largest(line.firstElement + j));
       }
       blocks[k] = {lo.array() - radius, hi.array() + radius};
     }
@@ -667,7 +666,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
                                                     !curveA, !curveB, smoothCables);
     k.s = std::clamp(d.s, 0.0, 1.0);
     k.t = std::clamp(d.t, 0.0, 1.0);
-    k.clearance = d.distance - m_profile->at(ea, k.s) - m_profile->at(eb, k.t);
+    k.clearance = d.distance - m_profile.at(ea, k.s) - m_profile.at(eb, k.t);
   };
   double threshold = kInf;  // the best clearance on the curves known [m]
   for (int i = firstA; i <= lastA; ++i)
@@ -679,7 +678,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
       const Vec3 &a0 = state.position[a.firstNode + i], &a1 = state.position[a.firstNode + i + 1];
       const Vec3 &b0 = state.position[b.firstNode + j], &b1 = state.position[b.firstNode + j + 1];
       k.chords = geometry::segmentDistance(a0, a1, b0, b1);
-      k.lower = k.chords.distance - m_profile->largest(ea) - m_profile->largest(eb) -
+      k.lower = k.chords.distance - m_profile.largest(ea) - m_profile.largest(eb) -
                 searchRangeDeviationBound(m_curves[static_cast<std::size_t>(ea)], state.position) -
                 searchRangeDeviationBound(m_curves[static_cast<std::size_t>(eb)], state.position);
       if (i == c.segmentA && j == c.segmentB) {

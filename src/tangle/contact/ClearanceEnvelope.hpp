@@ -156,12 +156,9 @@ class ClearanceEnvelope {
   mutable Workspace m_work;
 
   const model::Model* m_model;
-  /// Each element's contact radius (half its line type's contact diameter) [m] (each line's largest:
-  /// model::Line::contactRadius).
-  std::vector<double> m_radius;
   /// The radius along the lines, tapered at a change of section as the contact measures it (a node's own
   /// radius is the profile's there: the mean of the two sections').
-  std::unique_ptr<RadiusProfile> m_profile;
+  RadiusProfile m_profile;
   /// The contact's rules of which element pairs may touch (its exclusions and shared connections), for the
   /// pairs the envelope skips.
   std::unique_ptr<ContactCandidates> m_exclusions;

@@ -35,6 +35,17 @@ RadiusProfile::RadiusProfile(const model::Model& model, std::vector<double> elem
   }
 }
 
+namespace {
+std::vector<double> halfContactDiameters(const model::Model& model) {
+  std::vector<double> radius;
+  radius.reserve(model.elements().size());
+  for (const model::LineElement& el : model.elements()) radius.push_back(0.5 * el.type->contactDiameter);
+  return radius;
+}
+}  // namespace
+
+RadiusProfile::RadiusProfile(const model::Model& model) : RadiusProfile(model, halfContactDiameters(model)) {}
+
 std::array<double, 3> RadiusProfile::profile(int element, double t) const {
   // In a taper the radius follows the smootherstep S(u) = u^3 (10 - 15 u + 6 u^2) of the whole taper, u from
   // 0 at its far end in the neighbour to 1/2 at the node and 1 where this element's own radius is reached: C2

@@ -23,14 +23,21 @@ class RadiusProfile {
  public:
   /// @param elementRadius contact radius of every element of `model` (half its contact diameter) [m]
   RadiusProfile(const model::Model& model, std::vector<double> elementRadius);
+  /// With each element's section radius half its line type's contact diameter (every caller's).
+  explicit RadiusProfile(const model::Model& model);
 
   /// The radius of element e at parameter t of its piece (clamped to [0, 1]) and its first two derivatives in
   /// t: (r [m], dr/dt [m], d2r/dt2 [m]).
   std::array<double, 3> profile(int element, double t) const;
-  /// The radius of element e at parameter t [m].
-  double at(int element, double t) const { return profile(element, t)[0]; }
-  /// The element's own (its section's) radius [m].
-  double sectionRadius(int element) const { return m_radius[static_cast<std::size_t>(element)]; }
+  /// The radius of element e at parameter t [m]. Inline for an element without a taper (nearly all: the
+  /// clearance envelope asks at every segment it measures), the same value as profile()'s.
+  double at(int element, double t) const {
+    const Shoulder& sh = m_shoulders[static_cast<std::size_t>(element)];
+    if (sh.startLength == 0.0 && sh.endLength == 0.0) return m_radius[static_cast<std::size_t>(element)];
+    return profile(element, t)[0];
+  }
+  /// The elements' own (their sections') radii, by element [m].
+  const std::vector<double>& sectionRadii() const { return m_radius; }
   /// The largest radius anywhere on element e [m]: a bound for every point of it.
   double largest(int element) const { return m_shoulders[static_cast<std::size_t>(element)].largest; }
   /// Where element e's tapers end, in its parameter: (end of the taper from node1, start of the taper to

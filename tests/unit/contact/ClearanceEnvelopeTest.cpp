@@ -24,20 +24,13 @@
 namespace tangle::contact {
 namespace {
 
-/// The contact radius along the lines of `m` (RadiusProfile, tested on its own in RadiusProfileTest).
-RadiusProfile radiusProfile(const model::Model& m) {
-  std::vector<double> radius;
-  for (const model::LineElement& el : m.elements()) radius.push_back(0.5 * el.type->contactDiameter);
-  return {m, radius};
-}
-
 /// Surface-to-surface clearance of node i of `line` to `other` over all segments (the definition in
 /// ClearanceEnvelope.hpp: the segment's contact radius at its closest point, then the node's own radius,
 /// both the radius along the line's: RadiusProfile).
 std::vector<double> bruteForce(const model::Model& m, const model::State& s, int line, int other) {
   const model::Line& a = m.lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m.lines()[static_cast<std::size_t>(other)];
-  const RadiusProfile profile = radiusProfile(m);
+  const RadiusProfile profile(m);  // tested on its own in RadiusProfileTest
   std::vector<double> out;
   for (int i = 0; i < a.nodeCount; ++i) {
     const Vec3& x = s.position[a.firstNode + i];
@@ -61,7 +54,7 @@ std::vector<double> bruteForce(const model::Model& m, const model::State& s, int
 double chordMinimum(const model::Model& m, const model::State& s, int line, int other) {
   const model::Line& a = m.lines()[static_cast<std::size_t>(line)];
   const model::Line& b = m.lines()[static_cast<std::size_t>(other)];
-  const RadiusProfile profile = radiusProfile(m);
+  const RadiusProfile profile(m);  // tested on its own in RadiusProfileTest
   double best = std::numeric_limits<double>::infinity();
   for (int i = 0; i + 1 < a.nodeCount; ++i)
     for (int j = 0; j + 1 < b.nodeCount; ++j) {

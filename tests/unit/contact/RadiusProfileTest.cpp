@@ -50,9 +50,7 @@ model::ModelSpec sectionChange(double strikerY) {
 TEST(RadiusProfile, TapersOverTheDifferenceOfTheRadiiCentredOnTheNode) {
   const model::Model m(sectionChange(0.3));
   const model::Line& target = m.lines()[0];
-  std::vector<double> radius;
-  for (const model::LineElement& el : m.elements()) radius.push_back(0.5 * el.type->contactDiameter);
-  const RadiusProfile profile(m, radius);
+  const RadiusProfile profile(m);
   const int last = target.firstElement + 9, first = target.firstElement + 10;  // either side of y = 0
   // Away from the change: each section's own.
   EXPECT_EQ(profile.at(target.firstElement + 5, 0.5), kThick);
