@@ -215,6 +215,37 @@ output: {vtk: false}
   EXPECT_GT(value("peaks"), 100.0);
 }
 
+// The log's extremes name a line's end with the larger tension, whichever end the model puts the fairlead at
+// (a new user's model in the OrcaFlex convention, end A at the vessel, was quoted at its anchor end B: 26.4
+// kN against the hang-off's 80.6 kN in statistics.csv, 2026-12-07). The tether above turned round: its top
+// (end A) carries its anchor's tension plus its submerged weight (30 kg/m less the water's 5.2, over 90 m:
+// 21.9 kN more).
+TEST(Cli, TheLogsExtremesNameTheEndWithTheLargerTension) {
+  const fs::path dir = modelFolder("tangle_cli_extremes_end_a", R"(title: taut tether, end A at the buoy
+environment:
+  water_depth: 100
+line_types:
+  - {name: wire, outer_diameter: 0.08, mass_per_length: 30, axial_stiffness: 5.0e6}
+vessels:
+  - name: buoy
+    mode: prescribed
+    position: [0, 0, 0]
+    motion: {period: 10, amplitude: [0, 0, 1, 0, 0, 0]}
+lines:
+  - name: tether
+    end_a: {type: vessel, vessel: buoy, position: [0, 0, -5]}
+    end_b: {type: anchored, position: [0, 0, -100]}
+    sections: [{type: wire, length: 90, elements: 10}]
+dynamics: {duration: 40, time_step: 0.1, ramp_time: 10, output_interval: 1.0}
+output: {vtk: false}
+)");
+  const Outcome o = runCli("run " + (dir / "model.yaml").string() + " -o " + (dir / "out").string() +
+                           " --no-plots --no-report");
+  ASSERT_EQ(o.code, 0) << o.output;
+  EXPECT_NE(o.output.find("line 'tether' end A: "), std::string::npos) << o.output;
+  EXPECT_EQ(o.output.find("line 'tether' end B: "), std::string::npos) << o.output;
+}
+
 TEST(Cli, StaticRunWritesResults) {
   const fs::path out = fs::temp_directory_path() / "tangle_cli_catenary";
   fs::remove_all(out);

@@ -79,29 +79,39 @@ std::string writeExtremeStatistics(const fs::path& dir, const model::Model& mode
   {
     core::OutputFile out(dir / "dynamics" / "statistics.csv");
     out.write("line,end,samples,duration_s,storm_duration_s" + estimateHeader("", "N") + "\n");
-    for (std::size_t l = 0; l < lines.size(); ++l)
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+      const analysis::ResponseStatistics::Line& t = statistics.lines()[l];
+      const analysis::PeakTracker* trackers[2] = {&t.endA, &t.endB};
+      analysis::ExtremeEstimate estimates[2];
       for (int end = 0; end < 2; ++end) {
-        const analysis::ResponseStatistics::Line& t = statistics.lines()[l];
-        const analysis::PeakTracker& tracker = end == 0 ? t.endA : t.endB;
-        const analysis::ExtremeEstimate e = analysis::extremeEstimate(tracker, storm);
+        const analysis::PeakTracker& tracker = *trackers[end];
+        estimates[end] = analysis::extremeEstimate(tracker, storm);
         out.write(fmt::format("{},{},{},{:.6f},{:.1f}", core::csvField(lines[l].name), end == 0 ? 'A' : 'B',
                               tracker.samples(), tracker.duration(), storm) +
-                  estimateFields(e, tracker.samples()) + "\n");
-        if (end == 1 && tracker.samples() > 0) {
-          largest += fmt::format("  line '{}' end B: {:.1f} kN\n", lines[l].name, e.maximum / 1000.0);
-          transient = transient || e.transient();
-        }
-        if (end == 1 && e.credible()) {
-          anyCredible = true;
-          text += fmt::format(
-              "  line '{}' end B: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
-              "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
-              lines[l].name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
-              e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
-        } else if (end == 1 && tracker.samples() > 0)
-          text += fmt::format("  line '{}' end B: largest in the run {:.1f} kN; no storm extreme: {}\n",
-                              lines[l].name, e.maximum / 1000.0, e.doubt);
+                  estimateFields(estimates[end], tracker.samples()) + "\n");
       }
+      // The log names the end with the larger tension: the fairlead or hang-off, whichever end a model puts
+      // it at (tangle's examples at end B, OrcaFlex's convention at end A).
+      const bool endA = trackers[0]->samples() > 0 &&
+                        (trackers[1]->samples() == 0 || estimates[0].maximum > estimates[1].maximum);
+      const analysis::PeakTracker& tracker = *trackers[endA ? 0 : 1];
+      const analysis::ExtremeEstimate& e = estimates[endA ? 0 : 1];
+      const char name = endA ? 'A' : 'B';
+      if (tracker.samples() > 0) {
+        largest += fmt::format("  line '{}' end {}: {:.1f} kN\n", lines[l].name, name, e.maximum / 1000.0);
+        transient = transient || e.transient();
+      }
+      if (e.credible()) {
+        anyCredible = true;
+        text += fmt::format(
+            "  line '{}' end {}: {} peaks (Tz {:.2f} s), most probable maximum of a {:.1f} h storm "
+            "{:.1f} kN (Rayleigh) / {:.1f} kN (Weibull, shape {:.2f}); largest in the run {:.1f} kN\n",
+            lines[l].name, name, e.peaks.peaks.size(), e.peaks.upcrossingPeriod, storm / 3600.0,
+            e.rayleighMpm / 1000.0, e.weibullMpm / 1000.0, e.weibull.shape, e.maximum / 1000.0);
+      } else if (tracker.samples() > 0)
+        text += fmt::format("  line '{}' end {}: largest in the run {:.1f} kN; no storm extreme: {}\n",
+                            lines[l].name, name, e.maximum / 1000.0, e.doubt);
+    }
     out.close();
   }
   // Along every line: the range graph's statistical counterpart.
