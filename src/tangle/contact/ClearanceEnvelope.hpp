@@ -195,9 +195,19 @@ class ClearanceEnvelope {
   /// is): over the segment pairs inside `window` (inside) or outside it (or all when it is empty).
   Crossing crossingSearch(const model::State& state, std::size_t pair, double searched,
                           const CrossingWindow& window, bool inside) const;
+  /// Boxes of blocks of kSegmentBlock segments of `line` (`segments` of them) grown by their largest contact
+  /// radius: two blocks whose boxes are a distance d apart hold no pair of segments nearer than d.
+  struct SegmentBlock {
+    Vec3 lo, hi;
+  };
+  static constexpr int kSegmentBlock = 8;
+  std::vector<SegmentBlock> segmentBlocks(const model::State& state, const model::Line& line,
+                                          int segments) const;
   /// The crossing `c` (on the chords) measured on the curves the contact measures where a line has one
   /// (SmoothCentreline.hpp) and `c` is within `bulge` [m] (bulgeBound): the joint minimum on the chords'
-  /// elements and their neighbours. Otherwise `c`.
+  /// elements and their neighbours, then on every other pair of pieces whose chords less both pieces'
+  /// distance from them may come nearer (lines along each other: a rope wrapped round a bollard). Otherwise
+  /// `c`.
   Crossing onCurves(const model::State& state, std::size_t pair, const Crossing& c, double bulge) const;
   /// How far the curves of a pair's two lines lie off their chords at most, together, at a state [m] (0 on
   /// chords alone).

@@ -276,6 +276,10 @@ class LineContact final : public solver::LoadContributor {
     std::vector<double> radius;
     std::vector<Vec3> groupLo, groupHi;
     std::vector<double> groupRadius;
+    /// Each element's piece of the smooth centreline: how far it lies off its chord at most [m]
+    /// (chordDeviationBound; 0 on a chord), and the largest of the line.
+    std::vector<double> deviation;
+    double largestDeviation = 0.0;
   };
   ClearanceBlocks clearanceBlocks(const model::State& state, int line) const;
   std::array<double, 3> clearance(const model::State& state, int lineA, int lineB, const ClearanceBlocks& blocksA,
@@ -393,6 +397,9 @@ class LineContact final : public solver::LoadContributor {
   /// bound that culls most pairs; a cache, not part of the result).
   mutable std::map<std::pair<int, int>, std::pair<int, int>> m_clearanceHint;
   mutable std::vector<char> m_clearanceFar;  ///< clearance()'s marks of B's blocks (work space)
+  /// The element curves clearance() measures beams on with the point formulation (made on first use; the
+  /// distributed formulation's own otherwise: curves()).
+  mutable std::vector<ElementCurve> m_clearanceCurves;
   std::unique_ptr<DistributedContact> m_distributed;  // contact.formulation: distributed
   bool m_lastDynamic = false;                         // the last assembly was a dynamic one
   bool m_touched = false;                             // touched()

@@ -274,3 +274,14 @@ CentrelineKinematics centrelineKinematics(const std::vector<Vec3>& position, con
 }
 
 }  // namespace tangle::contact
+
+namespace tangle::contact {
+
+double ownPartsDistance(const CentrelineDistance& c, const ElementCurve& a, const ElementCurve& b,
+                        const std::vector<Vec3>& position) {
+  const double s = std::clamp(c.s, 0.0, 1.0), t = std::clamp(c.t, 0.0, 1.0);
+  if (s == c.s && t == c.t) return c.distance;
+  return (centrelinePoint(a, s, position) - centrelinePoint(b, t, position)).norm();
+}
+
+}  // namespace tangle::contact

@@ -16,9 +16,11 @@
 #include <vector>
 
 #include "support/ModelFactory.hpp"
+#include "support/WrappedRope.hpp"
 #include "tangle/contact/ClearanceEnvelope.hpp"
 #include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/geometry/SegmentDistance.hpp"
+#include "tangle/io/ModelReader.hpp"
 #include "tangle/model/Model.hpp"
 
 namespace tangle::contact {
@@ -422,6 +424,26 @@ TEST(ClearanceEnvelope, FindsACrossingBetweenTheNodesOfBothLines) {
       x.position[a.firstNode + i] += Vec3(0.0, 2.0 * (t - 1.0), -0.2 * std::cos(0.5 * M_PI * (t - 1.0)));
   });
   (void)above;
+}
+
+// The pair's minimum on the smooth centrelines where two lines lie along each other (the rope wrapped round a
+// bollard of support/WrappedRope.hpp): the nearest chords and their neighbours alone left it 0.5 mm above
+// the curves' on a new user's capstan, above the clash report's at an output time (2026-12-07).
+TEST(ClearanceEnvelope, ThePairsMinimumIsOnTheCurvesWhereLinesLieAlongEachOther) {
+  const model::ModelSpec spec = io::readModelString(test::wrappedRopeYaml(), "wrap.yaml");
+  const model::Model m(spec);
+  model::State s = m.initialState();
+  std::mt19937 random(11);
+  for (int trial = 0; trial < 10; ++trial) {
+    test::wrapRope(m, s, random);
+    ClearanceEnvelope envelope(m, {{0, 1}});
+    envelope.record(s);
+    double recorded = std::numeric_limits<double>::infinity();
+    for (const auto& side : envelope.sides())
+      recorded =
+          std::min(recorded, *std::min_element(side.dynamicClearance.begin(), side.dynamicClearance.end()));
+    EXPECT_NEAR(recorded, test::wrappedRopeClearance(m, s), 1e-9) << "trial " << trial;
+  }
 }
 
 }  // namespace
