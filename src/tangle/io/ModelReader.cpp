@@ -36,6 +36,7 @@
 #include "tangle/element/SyropeAxialLaw.hpp"
 #include "tangle/hydro/CurrentGrid.hpp"
 #include "tangle/io/MoorDynConversion.hpp"
+#include "tangle/model/PrescribedMotion.hpp"
 
 namespace tangle::io {
 
@@ -1341,6 +1342,25 @@ void readLines(const Value& v, ModelSpec& spec) {
   long long elements = 0;
   for (const Value& item : v.items(1, ItemLabel::Name)) {
     spec.lines.push_back(readLine(item, spec, names));
+    // A cubic table's spline can pass a hold and come back to it (docs/model-format.md "motion").
+    for (const auto& [key, end] :
+         {std::pair{"end_a", &spec.lines.back().endA}, {"end_b", &spec.lines.back().endB}}) {
+      if (!end->motion.enabled || !end->motion.cubic || end->motion.table.size() < 3) continue;
+      double range = 0.0;
+      for (const auto& row : end->motion.table)
+        for (std::size_t k = 1; k < 4; ++k)
+          range = std::max(range, std::abs(row[k] - end->motion.table.front()[k]));
+      const model::PrescribedMotion::Overshoot o = model::PrescribedMotion(end->motion, 0.0).tableOvershoot();
+      if (o.distance > std::max(1e-3, 0.01 * range))
+        spec.warnings.push_back(
+            item.where() +
+            fmt::format(
+                "{}.motion: the cubic spline through the table's rows goes {:.3g} m beyond them in {} at t = "
+                "{:.3g} s "
+                "(between the rows at {} s and {} s); with interpolation: linear, or a row that eases into a "
+                "hold, the end stays within them",
+                key, o.distance, "xyz"[o.axis], o.time, numberText(o.rowTimeA), numberText(o.rowTimeB)));
+    }
     for (const model::SectionSpec& section : spec.lines.back().sections) elements += section.elements;
     if (elements > kMaxElements)
       item.fail(fmt::format("the model has {} elements up to this line; they would need about {:.3g} GB of memory; "

@@ -79,6 +79,26 @@ MotionValue PrescribedMotion::tableAt(double t) const {
   return m;
 }
 
+PrescribedMotion::Overshoot PrescribedMotion::tableOvershoot() const {
+  Overshoot worst;
+  if (m_second.empty()) return worst;
+  const auto& tab = m_spec.table;
+  constexpr int kSamples = 64;  // per segment: the cubic's extremum within 1e-4 of its height
+  for (std::size_t i = 0; i + 1 < tab.size(); ++i) {
+    const Vec3 pa = rowOffset(tab[i]), pb = rowOffset(tab[i + 1]);
+    for (int k = 1; k < kSamples; ++k) {
+      const double t = tab[i][0] + (tab[i + 1][0] - tab[i][0]) * k / kSamples;
+      const Vec3 x = tableAt(t).displacement;
+      for (int axis = 0; axis < 3; ++axis) {
+        const double beyond =
+            std::max(x[axis] - std::max(pa[axis], pb[axis]), std::min(pa[axis], pb[axis]) - x[axis]);
+        if (beyond > worst.distance) worst = {beyond, t, axis, tab[i][0], tab[i + 1][0]};
+      }
+    }
+  }
+  return worst;
+}
+
 MotionValue PrescribedMotion::at(double t) const {
   MotionValue m;
   if (!m_spec.enabled) return m;

@@ -46,6 +46,16 @@ class PrescribedMotion {
   PrescribedMotion(const EndMotionSpec& spec, double rampTime);
   /// Motion at time t [s].
   MotionValue at(double t) const;
+  /// Where a cubic table's spline leaves the range of the two rows it runs between, most: a hold written as
+  /// two equal rows after a move is passed and come back to (a table (0, 0), (20, -5), (40, -5) reaches
+  /// -5.55 m at 27 s). Zero for a linear table and harmonic motion.
+  struct Overshoot {
+    double distance = 0.0;                  ///< beyond the nearer of the two rows [m]
+    double time = 0.0;                      ///< [s]
+    int axis = 0;                           ///< 0 x, 1 y, 2 z
+    double rowTimeA = 0.0, rowTimeB = 0.0;  ///< the rows' times [s]
+  };
+  Overshoot tableOvershoot() const;
 
  private:
   MotionValue tableAt(double t) const;

@@ -1775,6 +1775,44 @@ TEST(ModelReaderSeabed, ReadsABathymetryGrid) {
                   "bathymetry: {x", "environment.seabed.bathymetry.interpolation", "cubic");
 }
 
+// A cubic table's clamped spline through a move and a hold (two equal rows) passes the hold and comes back
+// to it: a new user's pipe ends lowered 5 m to a hold reached -5.55 m at 27 s, into the seabed, and the
+// contact force was 64 times the weight it carried (2026-12-07). The reader warns, naming the end and the
+// overshoot; a linear table (which cannot) is not warned on.
+TEST(ModelReader, ACubicTableThatPassesItsRowsIsWarnedOn) {
+  const std::string yaml = R"(environment:
+  water_depth: 100
+line_types:
+  - {name: wire, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8}
+lines:
+  - name: pipe
+    end_a: {type: pinned, position: [0, 0, -50]}
+    end_b:
+      type: pinned
+      position: [60, 0, -50]
+      motion:
+        interpolation: cubic
+        table: [[0, 0, 0, 0], [20, 0, 0, -5], [40, 0, 0, -5]]
+    sections: [{type: wire, length: 61, elements: 10}]
+)";
+  const ModelSpec cubic = readModelString(yaml, kSource);
+  ASSERT_EQ(cubic.warnings.size(), 1u);
+  const std::string& w = cubic.warnings.front();
+  EXPECT_NE(w.find(kSource), std::string::npos) << w;
+  EXPECT_NE(w.find("end_b.motion"), std::string::npos) << w;
+  EXPECT_NE(w.find("in z at t = "), std::string::npos) << w;
+  EXPECT_NE(w.find("between the rows at 20 s and 40 s"), std::string::npos) << w;
+  // The overshoot by hand: the clamped spline through (0, 0), (20, -5), (40, -5) with zero end slopes has the
+  // second derivatives (-0.05625, 0.0375, -0.01875) m/s^2 at the rows, and on [20, 40] its lowest point 5/9 m
+  // below -5 at t = 80/3 s (tableOvershoot samples 64 points per segment: within 1e-3 m).
+  const std::size_t at = w.find("goes ");
+  ASSERT_NE(at, std::string::npos) << w;
+  EXPECT_NEAR(std::stod(w.substr(at + 5)), 0.5556, 0.001) << w;
+  std::string linear = yaml;
+  linear.replace(linear.find("interpolation: cubic"), 20, "interpolation: linear");
+  EXPECT_TRUE(readModelString(linear, kSource).warnings.empty());
+}
+
 TEST(ModelReaderSeabed, StaticsMethodNoneSkipsTheStaticSolve) {
   EXPECT_FALSE(readModelString(kBaseModel, kSource).statics.skip);
   EXPECT_TRUE(
