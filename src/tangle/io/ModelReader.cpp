@@ -1581,6 +1581,15 @@ void readContact(const Value& v, ModelSpec& spec) {
       if (zone.from >= length)
         item.fail(fmt::format("contact.exclusion_zones: 'from' ({} m) is beyond the end of line '{}' ({} m long)",
                               zone.from, zone.line, length));
+      // Past the end: the zone runs to it, as meant, but a 'to' longer than the line may be another line's
+      // length or a typing slip, so it is said.
+      if (zone.to > length)
+        spec.warnings.push_back(
+            z.find("to")->where() +
+            fmt::format(
+                "contact.exclusion_zones: 'to' ({} m) is beyond the end of line '{}' ({} m long): the zone "
+                "runs from {} m to its end",
+                numberText(zone.to), zone.line, numberText(length), numberText(zone.from)));
       if (const std::optional<Value> with = z.find("with")) zone.other = lineName(*with);
       c.exclusionZones.push_back(zone);
     }

@@ -1813,6 +1813,46 @@ lines:
   EXPECT_TRUE(readModelString(linear, kSource).warnings.empty());
 }
 
+// contact.exclusion_zones along a line: a zone that starts past the line's end is an error naming the key;
+// one that ends past it runs to the end, with a warning (a new user's 'to: 400' on a 315 m line was taken
+// silently, 2026-12-07).
+TEST(ModelReader, AnExclusionZonePastTheLinesEndIsSaid) {
+  const std::string yaml = R"(environment:
+  water_depth: 100
+line_types:
+  - {name: wire, outer_diameter: 0.1, mass_per_length: 20, axial_stiffness: 1.0e8}
+lines:
+  - name: a
+    end_a: {type: pinned, position: [0, 0, -50]}
+    end_b: {type: pinned, position: [60, 0, -50]}
+    sections: [{type: wire, length: 61, elements: 10}]
+  - name: b
+    end_a: {type: pinned, position: [30, -30, -49]}
+    end_b: {type: pinned, position: [30, 30, -49]}
+    sections: [{type: wire, length: 61, elements: 10}]
+contact:
+  exclusion_zones: [{line: a, from: 10, to: 400}]
+)";
+  const ModelSpec spec = readModelString(yaml, kSource);
+  ASSERT_EQ(spec.contact.exclusionZones.size(), 1u);
+  ASSERT_EQ(spec.warnings.size(), 1u);
+  const std::string& w = spec.warnings.front();
+  EXPECT_NE(w.find(kSource), std::string::npos) << w;
+  EXPECT_NE(w.find("'to' (400 m) is beyond the end of line 'a' (61 m long)"), std::string::npos) << w;
+  std::string within = yaml;
+  within.replace(within.find("to: 400"), 7, "to: 40");
+  EXPECT_TRUE(readModelString(within, kSource).warnings.empty());
+  std::string past = yaml;
+  past.replace(past.find("from: 10"), 8, "from: 70");
+  try {
+    (void)readModelString(past, kSource);
+    ADD_FAILURE() << "a zone from past the line's end was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'from' (70 m) is beyond the end of line 'a'"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(ModelReaderSeabed, StaticsMethodNoneSkipsTheStaticSolve) {
   EXPECT_FALSE(readModelString(kBaseModel, kSource).statics.skip);
   EXPECT_TRUE(
