@@ -1144,9 +1144,8 @@ std::array<double, 3> LineContact::clearance(const model::State& state, int line
   // chords first; then every pair whose chords, less both pieces' distance from them (chordDeviationBound,
   // on their own parts: ownPartsDistance), may come nearer than the best on the curves so far.
   // Where lines lie along each other the nearest chords need not be near the nearest curves: a rope wrapped
-  // round a bollard on 0.1 m elements read -1.71 mm from the nearest chords and their neighbours where its
-  // curves came to
-  // -2.36 mm, 0.16 m along it (2026-12-07).
+  // round a bollard on 0.1 m elements read -1.71 mm from the nearest chords and their neighbours alone where
+  // its curves came to -2.36 mm, 0.16 m along it (2026-12-07).
   if (std::isfinite(best[0])) {
     const bool smoothCables = m_distributed != nullptr;
     const std::vector<ElementCurve>& curveSet = curves() ? *curves() : m_clearanceCurves;
