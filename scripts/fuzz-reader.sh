@@ -21,7 +21,7 @@ sources=("$root/tests/fuzz/ReaderFuzz.cpp" "$root/src/tangle/io/ModelReader.cpp"
          "$root/src/tangle/io/MoorDynConversion.cpp" "$root/src/tangle/seabed/SeabedSurface.cpp"
          "$root/src/tangle/geometry/HullShape.cpp" "$root/src/tangle/geometry/Rotation.cpp"
          "$root/src/tangle/core/WordTable.cpp" "$root/src/tangle/hydro/CurrentGrid.cpp"
-         "$root/src/tangle/element/SyropeAxialLaw.cpp")
+         "$root/src/tangle/element/SyropeAxialLaw.cpp" "$root/src/tangle/model/PrescribedMotion.cpp")
 opt=${FUZZ_OPT:--O1}
 binary="$work/reader-fuzz$opt"
 # Rebuild only when a source or header of the reader is newer than the binary.
@@ -29,7 +29,7 @@ rebuild=1
 if [ -x "$binary" ]; then
   rebuild=0
   for f in "${sources[@]}" "$root"/src/tangle/io/ModelReader.hpp "$root"/src/tangle/model/ModelSpec.hpp "$root"/src/tangle/io/MoorDyn*.hpp \
-           "$root"/src/tangle/core/*.hpp "$root"/src/tangle/section/LineType.hpp "$0"; do
+           "$root"/src/tangle/core/*.hpp "$root"/src/tangle/section/LineType.hpp "$root"/src/tangle/model/PrescribedMotion.hpp "$0"; do
     [ "$f" -nt "$binary" ] && rebuild=1
   done
 fi
