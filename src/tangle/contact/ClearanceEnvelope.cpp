@@ -597,9 +597,7 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::crossingSearch(const model::State
   const std::vector<SegmentBlock> blocksB = segmentBlocks(state, b, segmentsB);
   for (std::size_t ka = 0; ka < blocksA.size(); ++ka)
     for (std::size_t kb = 0; kb < blocksB.size(); ++kb) {
-      const Vec3 apart =
-          (blocksA[ka].lo - blocksB[kb].hi).cwiseMax(blocksB[kb].lo - blocksA[ka].hi).cwiseMax(0.0);
-      if (!(apart.norm() < best.clearance)) continue;
+      if (!(blocksA[ka].gap(blocksB[kb]) < best.clearance)) continue;
       const int firstA = static_cast<int>(ka) * kBlock, lastA = std::min(firstA + kBlock, segmentsA);
       const int firstB = static_cast<int>(kb) * kBlock, lastB = std::min(firstB + kBlock, segmentsB);
       for (int i = firstA; i < lastA; ++i)
@@ -704,17 +702,15 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
   if (!std::isfinite(best.clearance)) return c;
   // The other pairs of pieces: where the lines lie along each other the nearest chords need not be where the
   // curves are nearest (a rope wrapped round a bollard on 0.1 m elements: 0.5 mm less overlap from the
-  // neighbours alone, LineClearanceTest). Blocks whose boxes are farther apart than the best less both lines'
-  // bulge (`bulge`, each piece within it of its chord on [0, 1]) hold none below it; a pair whose chords less
-  // both pieces' bounds are not below it is not either.
+  // neighbours alone, ClearanceEnvelopeTest). Blocks whose boxes are farther apart than the best less both
+  // lines' bulge (`bulge`, each piece within it of its chord on [0, 1]) hold none below it; a pair whose
+  // chords less both pieces' bounds are not below it is not either.
   const int segmentsA = a.nodeCount - 1, segmentsB = b.nodeCount - 1;
   const std::vector<SegmentBlock> blocksA = segmentBlocks(state, a, segmentsA);
   const std::vector<SegmentBlock> blocksB = segmentBlocks(state, b, segmentsB);
   for (std::size_t ka = 0; ka < blocksA.size(); ++ka)
     for (std::size_t kb = 0; kb < blocksB.size(); ++kb) {
-      const Vec3 apart =
-          (blocksA[ka].lo - blocksB[kb].hi).cwiseMax(blocksB[kb].lo - blocksA[ka].hi).cwiseMax(0.0);
-      if (!(apart.norm() - bulge < best.clearance)) continue;
+      if (!(blocksA[ka].gap(blocksB[kb]) - bulge < best.clearance)) continue;
       const int iEnd = std::min(static_cast<int>(ka + 1) * kSegmentBlock, segmentsA);
       const int jEnd = std::min(static_cast<int>(kb + 1) * kSegmentBlock, segmentsB);
       for (int i = static_cast<int>(ka) * kSegmentBlock; i < iEnd; ++i)

@@ -199,6 +199,11 @@ class ClearanceEnvelope {
   /// radius: two blocks whose boxes are a distance d apart hold no pair of segments nearer than d.
   struct SegmentBlock {
     Vec3 lo, hi;
+    /// The distance between this box and `other` [m] (0 when they overlap): no point of one is nearer than
+    /// that to a point of the other.
+    double gap(const SegmentBlock& other) const {
+      return (lo - other.hi).cwiseMax(other.lo - hi).cwiseMax(0.0).norm();
+    }
   };
   static constexpr int kSegmentBlock = 8;
   std::vector<SegmentBlock> segmentBlocks(const model::State& state, const model::Line& line,
