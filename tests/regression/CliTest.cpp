@@ -2,6 +2,7 @@
 // files, bad input gets exit code 1 with a message naming the file, line and key, and --version works.
 
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <algorithm>
 #include <cmath>
@@ -340,6 +341,64 @@ clearance: {required: 0.5}
       runCli("run " + (dir / "model.yaml").string() + " -o " + out.string() + " --statics-only --no-plots");
   ASSERT_EQ(o.code, 0) << o.output;
   EXPECT_NE(o.output.find("a / b: static min 0.300 m: FAIL"), std::string::npos) << o.output;
+}
+
+// A pair designed to touch (examples/flexibles-at-touchdown: the riser laid across the flowline) is assessed
+// by its impacts (DNV-RP-F203 sec. 4, collision allowed), not failed for touching: the verdict follows
+// clearance.allowed_impact_energy against the largest impact energy of the pair, the one the clash report
+// gives (contact/summary.json), and without that energy the impacts are reported, not assessed. The first
+// 60 s hold the example's three impacts (47.5-49 s).
+TEST(Cli, ACollisionAllowedPairIsAssessedByItsImpacts) {
+  std::ifstream in(std::string(tangle::test::kExamplesDir) + "/flexibles-at-touchdown/model.yaml");
+  std::stringstream example;
+  example << in.rdbuf();
+  const std::string key = "collision_allowed: [[flowline, riser]]";
+  ASSERT_NE(example.str().find(key), std::string::npos) << "the example's clearance block changed";
+  ASSERT_NE(example.str().find("duration: 300"), std::string::npos);
+  const auto variant = [&](const std::string& name, const std::string& energy) {
+    std::string text = example.str();
+    text.replace(text.find("duration: 300"), 13, "duration: 60");
+    if (!energy.empty())
+      text.replace(text.find(key), key.size(), key + "\n  allowed_impact_energy: " + energy);
+    const fs::path dir = modelFolder(name, text);
+    const Outcome o = runCli("run " + (dir / "model.yaml").string() + " -o " + (dir / "out").string() +
+                             " --no-plots --no-report");
+    return std::pair(o, dir / "out");
+  };
+  const auto [reported, reportedOut] = variant("tangle_cli_collision_allowed", "");
+  ASSERT_EQ(reported.code, 0) << reported.output;
+  const YAML::Node clash = YAML::LoadFile((reportedOut / "contact" / "summary.json").string());
+  const YAML::Node pair = YAML::LoadFile((reportedOut / "clearance" / "summary.json").string())["pairs"][0];
+  const int impacts = clash["pairs"][0]["impacts"].as<int>();
+  const double largest = clash["pairs"][0]["impact_energy_J"]["max"].as<double>();
+  ASSERT_GE(impacts, 1);
+  EXPECT_EQ(pair["criterion"].as<std::string>(), "collision allowed");
+  EXPECT_EQ(pair["impacts"].as<int>(), impacts);
+  EXPECT_DOUBLE_EQ(pair["max_impact_energy_J"].as<double>(), largest);
+  EXPECT_TRUE(pair["pass"].IsNull());
+  EXPECT_LT(pair["min_clearance_m"].as<double>(), 0.0);  // they touch, and that is not a FAIL
+  EXPECT_NE(reported.output.find("collision allowed, " + std::to_string(impacts) + " impact(s)"),
+            std::string::npos)
+      << reported.output;
+  EXPECT_NE(reported.output.find("(not assessed: no clearance.allowed_impact_energy)"), std::string::npos);
+  EXPECT_EQ(reported.output.find(": FAIL"), std::string::npos) << reported.output;
+  // An allowed energy above the largest impact passes, one below it fails.
+  const auto exact = [](double v) {
+    std::ostringstream text;
+    text.precision(17);
+    text << v;
+    return text.str();
+  };
+  const auto [above, aboveOut] = variant("tangle_cli_collision_allowed_above", exact(2.0 * largest));
+  ASSERT_EQ(above.code, 0) << above.output;
+  EXPECT_TRUE(
+      YAML::LoadFile((aboveOut / "clearance" / "summary.json").string())["pairs"][0]["pass"].as<bool>());
+  EXPECT_NE(above.output.find(": PASS"), std::string::npos) << above.output;
+  const auto [below, belowOut] = variant("tangle_cli_collision_allowed_below", exact(0.5 * largest));
+  ASSERT_EQ(below.code, 0) << below.output;
+  EXPECT_FALSE(
+      YAML::LoadFile((belowOut / "clearance" / "summary.json").string())["pairs"][0]["pass"].as<bool>());
+  EXPECT_NE(below.output.find(": FAIL"), std::string::npos) << below.output;
 }
 
 // Issue 45: a transient run (examples/drilling-riser-drift: the DP unit drifts 85 m, the mooring line's

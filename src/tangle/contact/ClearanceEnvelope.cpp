@@ -152,7 +152,19 @@ ClearanceEnvelope::ClearanceEnvelope(const model::Model& model,
     for (const model::WakeSpec& w : model.spec().wakes)
       add(model.lineIndex(w.upstream), model.lineIndex(w.downstream));
   }
+  // A pair designed to touch is assessed whether or not the contact's pairs hold it (more than 2000 pairs:
+  // those within the clearance margin at the static equilibrium).
+  if (spec.pairs.empty())
+    for (const auto& [a, b] : spec.collisionAllowed) add(model.lineIndex(a), model.lineIndex(b));
   m_pairs.assign(pairs.begin(), pairs.end());
+  m_collisionAllowed.assign(m_pairs.size(), 0);
+  m_impacts.assign(m_pairs.size(), Impacts{});
+  for (const auto& [a, b] : spec.collisionAllowed) {
+    const std::array<int, 2> key{std::min(model.lineIndex(a), model.lineIndex(b)),
+                                 std::max(model.lineIndex(a), model.lineIndex(b))};
+    const auto at = std::find(m_pairs.begin(), m_pairs.end(), key);
+    if (at != m_pairs.end()) m_collisionAllowed[static_cast<std::size_t>(at - m_pairs.begin())] = 1;
+  }
   for (const auto& p : m_pairs)
     for (int k = 0; k < 2; ++k) {
       Side s;
@@ -957,7 +969,13 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
   core::OutputFile summary(out / "summary.json");
   core::JsonWriter j(summary.stream());
   j.beginObject();
-  j.field("standard", "DNV-RP-F203 (2009) no-collision criterion: minimum clearance >= required");
+  j.field(
+      "standard",
+      "DNV-RP-F203 (2009) sec. 4: no collision (minimum clearance >= required), or collision allowed (the "
+      "largest impact energy <= allowed_impact_energy)");
+  // Pairs designed to touch (clearance.collision_allowed): assessed by their impacts instead ("criterion").
+  if (m_model->spec().clearance.allowedImpactEnergy)
+    j.field("allowed_impact_energy_J", *m_model->spec().clearance.allowedImpactEnergy);
   j.field("required_clearance_m", m_required);
   // The dynamic envelope is kept up to this clearance (clearance.margin or contact.clearance_margin); a node
   // or pair never within it has min_clearance_m null (+inf in envelope.csv).
@@ -990,12 +1008,51 @@ void ClearanceEnvelope::write(const std::filesystem::path& dir) const {
       j.endObject();
     }
     j.field("min_clearance_m", overall);
-    j.field("pass", overall >= m_required);
+    j.field("criterion", m_collisionAllowed[p] ? "collision allowed" : "no collision");
+    if (m_collisionAllowed[p]) {
+      j.field("impacts", m_impacts[p].count);
+      j.field("max_impact_energy_J", m_impacts[p].maxEnergy);
+    }
+    if (const std::optional<bool> pass = passes(p, overall))
+      j.field("pass", *pass);
+    else
+      j.field("pass", std::nan(""));  // null: not assessed
     j.endObject();
   }
   j.endArray();
   j.endObject();
   summary.close();
+}
+
+void ClearanceEnvelope::assessImpacts(const std::vector<ContactEvent>& events) {
+  m_impacts.assign(m_pairs.size(), Impacts{});
+  for (const ContactEvent& e : events) {
+    if (!e.impact) continue;
+    const std::array<int, 2> key{std::min(e.lineA, e.lineB), std::max(e.lineA, e.lineB)};
+    const auto at = std::find(m_pairs.begin(), m_pairs.end(), key);
+    if (at == m_pairs.end() || !m_collisionAllowed[static_cast<std::size_t>(at - m_pairs.begin())]) continue;
+    Impacts& i = m_impacts[static_cast<std::size_t>(at - m_pairs.begin())];
+    ++i.count;
+    i.maxEnergy = std::max(i.maxEnergy, e.impactEnergy);
+  }
+}
+
+std::optional<bool> ClearanceEnvelope::passes(std::size_t pair, double overall) const {
+  if (!m_collisionAllowed[pair]) return overall >= m_required;
+  const std::optional<double> allowed = m_model->spec().clearance.allowedImpactEnergy;
+  if (!allowed) return std::nullopt;
+  return m_impacts[pair].maxEnergy <= *allowed;
+}
+
+std::string ClearanceEnvelope::verdict(std::size_t pair, double overall) const {
+  const std::optional<bool> pass = passes(pair, overall);
+  if (!m_collisionAllowed[pair]) return *pass ? ": PASS" : ": FAIL";
+  const Impacts& i = m_impacts[pair];
+  std::string s = fmt::format(": collision allowed, {} impact(s)", i.count);
+  if (i.count > 0) s += fmt::format(", largest energy {:.4g} J", i.maxEnergy);
+  if (!pass) return s + " (not assessed: no clearance.allowed_impact_energy)";
+  return s + fmt::format(" (allowed {:.4g} J): {}", *m_model->spec().clearance.allowedImpactEnergy,
+                         *pass ? "PASS" : "FAIL");
 }
 
 std::string ClearanceEnvelope::terminalSummary() const {
@@ -1015,7 +1072,7 @@ std::string ClearanceEnvelope::terminalSummary() const {
   const bool all = order.size() <= kTerminalPairs;
   if (!all) std::partial_sort(order.begin(), order.begin() + kTerminalPairs, order.end());
   std::size_t failed = 0;
-  for (const auto& [overall, p] : order) failed += overall >= m_required ? 0 : 1;
+  for (const auto& [overall, p] : order) failed += passes(p, overall) == std::optional<bool>(false) ? 1 : 0;
   for (std::size_t k = 0; k < (all ? order.size() : kTerminalPairs); ++k) {
     const auto [overall, p] = order[k];
     const Minimum st = minimum(p, false);
@@ -1030,7 +1087,7 @@ std::string ClearanceEnvelope::terminalSummary() const {
       else
         s += fmt::format(", dynamically never within the {:.3g} m clearance margin", m_margin);
     }
-    s += overall >= m_required ? ": PASS\n" : ": FAIL\n";
+    s += verdict(p, overall) + "\n";
   }
   if (!all)
     s += fmt::format(

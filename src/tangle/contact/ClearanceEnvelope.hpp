@@ -28,17 +28,22 @@
 /// "never within the margin"). A no-collision check asks for clearances of metres; the exact values hundreds
 /// of metres out were most of the envelope's cost (12 lines moored round a point with contact on all 66
 /// pairs: 10.6 of its 11.9 million node searches were of nodes 30 m or more from the other line).
+/// Pairs designed to touch (clearance.collision_allowed: DNV-RP-F203 sec. 4's "collision allowed") are
+/// measured alike but assessed by their impacts (assessImpacts: the contact's events): a pass when none
+/// carries more than clearance.allowed_impact_energy, not assessed when that is not given.
 
 #include <array>
 #include <filesystem>
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "tangle/contact/ContactCandidates.hpp"
+#include "tangle/contact/ContactEvents.hpp"
 #include "tangle/contact/RadiusProfile.hpp"
 #include "tangle/contact/SmoothCentreline.hpp"
 #include "tangle/model/Model.hpp"
@@ -61,6 +66,9 @@ class ClearanceEnvelope {
   /// min(P, M), P the pair's minimum (a node is searched again only when it may have closed by more than
   /// that: ClearanceEnvelope.cpp).
   void record(const model::State& state);
+  /// Takes the impacts of the collision-allowed pairs from the contact's events of the run (call before
+  /// write and terminalSummary; without it such a pair has none).
+  void assessImpacts(const std::vector<ContactEvent>& events);
   /// Writes clearance/envelope.csv and clearance/summary.json.
   void write(const std::filesystem::path& dir) const;
   std::string terminalSummary() const;
@@ -111,6 +119,19 @@ class ClearanceEnvelope {
     double time;       ///< [s] (NaN for the static one)
   };
   Minimum minimum(std::size_t pair, bool dynamic) const;
+  /// A collision-allowed pair's impacts (assessImpacts).
+  struct Impacts {
+    int count = 0;
+    double maxEnergy = 0.0;  ///< [J]
+  };
+  /// Per pair: designed to touch (clearance.collision_allowed), and then its impacts.
+  std::vector<char> m_collisionAllowed;
+  std::vector<Impacts> m_impacts;
+  /// Whether pair `pair` passes: the smallest clearance `overall` [m] against the required one, or (collision
+  /// allowed) its largest impact energy against the allowed one; nullopt: not assessed.
+  std::optional<bool> passes(std::size_t pair, double overall) const;
+  /// The verdict's words for the terminal (": PASS", ...).
+  std::string verdict(std::size_t pair, double overall) const;
   /// record()'s certificate of a side's nodes (ClearanceEnvelope.cpp, search()): the side's knowledge
   /// (otherSegments, knownPosition, knownTravel), and where the nodes' new otherSegments bounds go (-inf for
   /// the nodes not found).

@@ -1844,9 +1844,10 @@ void readWakes(const Value& v, ModelSpec& spec) {
   }
 }
 
-/// clearance: {required [m], pairs: [[a, b], ...]}.
+/// clearance: {required [m], pairs: [[a, b], ...], margin [m], collision_allowed: [[a, b], ...],
+/// allowed_impact_energy [J]}.
 void readClearance(const Value& v, ModelSpec& spec) {
-  const Map m(v, {"required", "pairs", "margin"});
+  const Map m(v, {"required", "pairs", "margin", "collision_allowed", "allowed_impact_energy"});
   spec.clearance.required =
       m.number("required", 0.0, nonNegative().withHint("required surface-to-surface clearance [m] (DNV-RP-F203)"));
   if (const std::optional<Value> margin = m.find("margin"))
@@ -1861,6 +1862,62 @@ void readClearance(const Value& v, ModelSpec& spec) {
       if (pair[0] == pair[1]) item.fail("clearance.pairs: a line paired with itself");
       spec.clearance.pairs.emplace_back(pair[0], pair[1]);
     }
+  }
+  // Pairs designed to touch: assessed by their impacts, which only line-to-line contact gives (without it the
+  // lines pass through each other and there are none).
+  const auto samePair = [](const std::pair<std::string, std::string>& p,
+                           const std::array<std::string, 2>& q) {
+    return (p.first == q[0] && p.second == q[1]) || (p.first == q[1] && p.second == q[0]);
+  };
+  if (const std::optional<Value> allowed = m.find("collision_allowed")) {
+    if (!spec.contact.enabled)
+      allowed->fail(
+          "clearance.collision_allowed needs a 'contact' block: without line-to-line contact the lines pass "
+          "through each other, and a collision-allowed pair is assessed by its impacts");
+    for (const Value& item : allowed->items(1)) {
+      const std::vector<Value> names = item.items(2);
+      if (names.size() != 2)
+        item.expected("a pair of line names [line_a, line_b] (clearance.collision_allowed)");
+      std::array<std::string, 2> pair;
+      for (std::size_t k = 0; k < 2; ++k) {
+        pair[k] = knownLine(names[k], spec, "clearance.collision_allowed");
+        for (const model::LineSpec& line : spec.lines)
+          if (line.name == pair[k] && !line.contact)
+            names[k].fail(
+                fmt::format("clearance.collision_allowed: line '{}' has 'contact: false' (it touches "
+                            "no line, so it has no impacts to assess)",
+                            pair[k]));
+      }
+      if (pair[0] == pair[1]) item.fail("clearance.collision_allowed: a line paired with itself");
+      const auto& touching = spec.contact.pairs;
+      if (!touching.empty() &&
+          std::none_of(touching.begin(), touching.end(), [&](const auto& p) { return samePair(p, pair); }))
+        item.fail(
+            fmt::format("clearance.collision_allowed: lines '{}' and '{}' may not touch (they are not "
+                        "among contact.pairs)",
+                        pair[0], pair[1]));
+      const auto& excluded = spec.contact.exclude;
+      if (std::any_of(excluded.begin(), excluded.end(), [&](const auto& p) { return samePair(p, pair); }))
+        item.fail(
+            fmt::format("clearance.collision_allowed: lines '{}' and '{}' never touch (contact.exclude)",
+                        pair[0], pair[1]));
+      const auto& checked = spec.clearance.pairs;
+      if (!checked.empty() &&
+          std::none_of(checked.begin(), checked.end(), [&](const auto& p) { return samePair(p, pair); }))
+        item.fail(
+            fmt::format("clearance.collision_allowed: lines '{}' and '{}' are not among clearance.pairs, "
+                        "the pairs checked: add them there",
+                        pair[0], pair[1]));
+      spec.clearance.collisionAllowed.emplace_back(pair[0], pair[1]);
+    }
+  }
+  if (const std::optional<Value> energy = m.find("allowed_impact_energy")) {
+    if (spec.clearance.collisionAllowed.empty())
+      energy->fail(
+          "clearance.allowed_impact_energy is the energy collision-allowed pairs tolerate: give the pairs in "
+          "clearance.collision_allowed");
+    spec.clearance.allowedImpactEnergy = energy->number(
+        positive().withHint("the largest impact energy a collision-allowed pair tolerates [J]"));
   }
 }
 
@@ -2100,7 +2157,9 @@ constexpr std::array kTopLevelBlocks{
     TopLevelBlock{"hull_contact", false,
                   "a map of hull contact settings {stiffness, line_stiffness, restitution, ...}",
                   readHullContact},
-    TopLevelBlock{"clearance", false, "a map {required, pairs, margin} (DNV-RP-F203 clearance check)",
+    TopLevelBlock{"clearance", false,
+                  "a map {required, pairs, margin, collision_allowed, allowed_impact_energy} (DNV-RP-F203 "
+                  "clearance check)",
                   readClearance},
     TopLevelBlock{"wake_interference", false, "a list of wake pairs {upstream, downstream, model}",
                   readWakes},

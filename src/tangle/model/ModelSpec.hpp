@@ -467,6 +467,14 @@ struct ClearanceSpec {
   /// The dynamic minima are kept up to this clearance [m]; unset: contact.clearance_margin. The envelope
   /// uses the larger of it and `required` (ClearanceEnvelope).
   std::optional<double> margin;
+  /// Pairs designed to touch (DNV-RP-F203 sec. 4, "collision allowed": a riser laid across a flowline, lines
+  /// resting on each other): their clearances are still measured and written, but they are assessed by their
+  /// impacts (the clash report's events) instead of against `required`.
+  std::vector<std::pair<std::string, std::string>> collisionAllowed;
+  /// The largest impact energy a collision-allowed pair tolerates [J] (the lines' capacity, from their
+  /// designer): a pair passes when none of its impacts carries more; unset: the impacts are reported, not
+  /// assessed.
+  std::optional<double> allowedImpactEnergy;
 };
 
 /// Contact of lines and hulls with hulls (hull_contact; vessel::HullContact): one law for all of it, the

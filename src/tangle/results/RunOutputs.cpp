@@ -800,6 +800,8 @@ void RunOutputs::finish(bool ok) {
   std::unique_ptr<contact::ClearanceEnvelope>& envelope = m_envelope;
   std::unique_ptr<io::HtmlReport>& report = m_report;
   if (envelope) {
+    // Pairs designed to touch are assessed by the run's impacts (a run that stopped: those until then).
+    if (sim.contact()) envelope->assessImpacts(sim.contact()->events());
     envelope->write(outDir);
     log.info(envelope->terminalSummary());
     if (h5) h5->writeClearance(*envelope);

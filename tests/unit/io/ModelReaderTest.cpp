@@ -1545,6 +1545,45 @@ TEST(ModelReader, RejectsBadWakeAndClearanceInput) {
                    "unknown line 'q'");
 }
 
+// Pairs designed to touch (DNV-RP-F203's collision allowed) are assessed by their impacts: only with contact,
+// between lines that may touch and are checked, with an allowed energy only for such pairs.
+TEST(ModelReader, ReadsCollisionAllowedPairsAndRefusesThoseThatCannotTouch) {
+  const ModelSpec spec =
+      readModelString(wakeModel("contact: {pairs: [[a, b], [b, c]]}\n",
+                                "clearance: {collision_allowed: [[b, a]], allowed_impact_energy: 250}\n"),
+                      kSource);
+  ASSERT_EQ(spec.clearance.collisionAllowed.size(), 1u);
+  EXPECT_EQ(spec.clearance.collisionAllowed[0].first, "b");
+  EXPECT_EQ(spec.clearance.collisionAllowed[0].second, "a");
+  EXPECT_EQ(spec.clearance.allowedImpactEnergy, 250.0);
+  EXPECT_FALSE(
+      readModelString(wakeModel("contact: {}\n", "clearance: {collision_allowed: [[a, b]]}\n"), kSource)
+          .clearance.allowedImpactEnergy);
+  expectInputError(wakeModel("", "clearance: {collision_allowed: [[a, b]]}\n"), "collision_allowed: [[a, b]]",
+                   "clearance.collision_allowed", "needs a 'contact' block");
+  expectInputError(wakeModel("contact: {pairs: [[a, b]]}\n", "clearance: {collision_allowed: [[a, c]]}\n"),
+                   "collision_allowed: [[a, c]]", "clearance.collision_allowed[0]",
+                   "not among contact.pairs");
+  expectInputError(wakeModel("contact: {exclude: [[a, c]]}\n", "clearance: {collision_allowed: [[c, a]]}\n"),
+                   "collision_allowed: [[c, a]]", "clearance.collision_allowed[0]", "never touch");
+  expectInputError(wakeModel("contact: {}\n", "clearance: {pairs: [[a, b]], collision_allowed: [[b, c]]}\n"),
+                   "collision_allowed: [[b, c]]", "clearance.collision_allowed[0]",
+                   "not among clearance.pairs");
+  expectInputError(wakeModel("contact: {}\n", "clearance: {collision_allowed: [[a, a]]}\n"),
+                   "collision_allowed: [[a, a]]", "clearance.collision_allowed[0]", "paired with itself");
+  expectInputError(wakeModel("contact: {}\n", "clearance: {collision_allowed: [[a, zz]]}\n"),
+                   "collision_allowed: [[a, zz]]", "clearance.collision_allowed[0][1]", "unknown line 'zz'");
+  std::string withoutContact = wakeModel("contact: {}\n", "clearance: {collision_allowed: [[a, c]]}\n");
+  withoutContact.replace(withoutContact.find("  - name: c\n"), 12, "  - name: c\n    contact: false\n");
+  expectInputError(withoutContact, "collision_allowed: [[a, c]]", "clearance.collision_allowed[0][1]",
+                   "has 'contact: false'");
+  expectInputError(wakeModel("contact: {}\n", "clearance: {allowed_impact_energy: 10}\n"),
+                   "allowed_impact_energy: 10", "clearance.allowed_impact_energy", "collision_allowed");
+  expectInputError(
+      wakeModel("contact: {}\n", "clearance: {collision_allowed: [[a, b]], allowed_impact_energy: 0}\n"),
+      "allowed_impact_energy: 0", "clearance.allowed_impact_energy", "> 0");
+}
+
 }  // namespace
 }  // namespace tangle::io
 
