@@ -139,6 +139,7 @@ class LineContact final : public solver::LoadContributor {
   /// them within the step.
   bool supportsParts() const override { return true; }
   bool markLoadedNodes(std::vector<char>& mark) const override;
+  bool coupledInParts() const override { return true; }
   bool updateActiveSet() override;
   double limitIncrement(const model::State& state, const VecX& fullIncrement) override;
   std::string rejectState(const model::State& state) override;

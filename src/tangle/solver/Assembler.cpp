@@ -332,11 +332,14 @@ void Assembler::addAll(const model::State& state, const AssemblyRequest& request
   addWeight(state, request, force, part ? &part->elements : nullptr, part ? &part->attachments : nullptr,
             matrix);
   addSeabed(state, request, force, matrix, part ? &part->nodes : nullptr);
+  const bool coupled = part && holdsCoupled(*part);
   for (LoadContributor* c : m_contributors) {
-    if (part)
-      c->addPartForces(state, request, *part, force, matrix);
-    else
+    if (!part)
       c->addForces(state, request, force, matrix);
+    else if (!c->coupledInParts())
+      c->addPartForces(state, request, *part, force, matrix);
+    else if (coupled)
+      c->addForces(state, request, force, matrix);  // its terms outside the part are discarded
   }
 }
 
@@ -601,10 +604,13 @@ void Assembler::addAllMass(const model::State& state, double mf, SystemMatrix* m
   // As addAll: one sequence for the whole model and for a part.
   addOwnMass(mf, matrix, acceleration, out, part ? &part->elements : nullptr, part ? &part->nodes : nullptr,
              part ? &part->attachments : nullptr);
+  const bool coupled = part && holdsCoupled(*part);
   for (LoadContributor* c : m_contributors) {
-    if (part)
+    if (!part)
+      c->addMass(state, mf, matrix, acceleration, out);
+    else if (!c->coupledInParts())
       c->addPartMass(state, *part, mf, matrix, acceleration, out);
-    else
+    else if (coupled)
       c->addMass(state, mf, matrix, acceleration, out);
   }
 }
@@ -685,7 +691,7 @@ bool Assembler::supportsParts() const {
                      [](const LoadContributor* c) { return c->supportsParts(); });
 }
 
-bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
+bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part, bool coupled) {
   const auto& elements = m_model->elements();
   const auto& attached = m_model->attachments();
   const auto nodeCount = static_cast<std::size_t>(m_model->nodeCount());
@@ -714,6 +720,19 @@ bool Assembler::selectPart(const std::vector<int>& moved, AssemblyPart& part) {
       markNode(elements[static_cast<std::size_t>(e)].node2, 1);
     }
   for (const int n : moved) markNode(n, 1);
+  part.coupledAllowed = coupled;
+  if (coupled) loadedNodes();
+  if (coupled && m_coupledCount > 0) {
+    // A coupled contributor's nodes (line contact: both lines near a crossing) all in, or none: when the
+    // part reaches one, the others join it, since their forces change with it (the other line's side of the
+    // contact), and with them their elements (below).
+    bool reached = false;
+    for (std::size_t n = nodeLo; n < nodeHi && !reached; ++n)
+      reached = m_nodeMark[n] == 1 && m_coupledMark[n];
+    if (reached)
+      for (std::size_t n = 0; n < nodeCount; ++n)
+        if (m_coupledMark[n]) markNode(static_cast<int>(n), 1);
+  }
   part.nodes.clear();
   std::size_t elementLo = elements.size(), elementHi = 0;  // marked elements lie in [elementLo, elementHi)
   for (std::size_t n = nodeLo; n < nodeHi; ++n) {
@@ -748,21 +767,43 @@ const std::vector<char>& Assembler::loadedNodes() {
   // after each.
   if (!m_loadedMarkValid) {
     m_anyLoadedMark = false;
-    m_loadedMark.assign(static_cast<std::size_t>(m_model->nodeCount()), 0);
+    const auto nodeCount = static_cast<std::size_t>(m_model->nodeCount());
+    m_strictMark.assign(nodeCount, 0);
+    m_coupledMark.assign(nodeCount, 0);
     for (const LoadContributor* c : m_contributors)
-      m_anyLoadedMark = c->markLoadedNodes(m_loadedMark) || m_anyLoadedMark;
+      m_anyLoadedMark =
+          c->markLoadedNodes(c->coupledInParts() ? m_coupledMark : m_strictMark) || m_anyLoadedMark;
+    m_loadedMark.resize(nodeCount);
+    m_coupledCount = 0;
+    for (std::size_t n = 0; n < nodeCount; ++n) {
+      m_loadedMark[n] = m_strictMark[n] || m_coupledMark[n] ? 1 : 0;
+      m_coupledCount += m_coupledMark[n] ? 1 : 0;
+    }
     m_loadedMarkValid = true;
   }
   return m_loadedMark;
 }
 
 bool Assembler::partUsable(const AssemblyPart& part) {
-  // Contributors left out of parts: none of their nodes may be in the part.
+  // Contributors left out of parts: none of their nodes may be in the part; those coupled in parts (made
+  // with `coupled`): all of them or none.
   loadedNodes();
-  if (m_anyLoadedMark)
-    for (const int n : part.nodes)
-      if (m_loadedMark[static_cast<std::size_t>(n)]) return false;
-  return true;
+  if (!m_anyLoadedMark) return true;
+  int coupled = 0;
+  for (const int n : part.nodes) {
+    const auto u = static_cast<std::size_t>(n);
+    if (m_strictMark[u] || (m_coupledMark[u] && !part.coupledAllowed)) return false;
+    coupled += m_coupledMark[u] ? 1 : 0;
+  }
+  return coupled == 0 || coupled == m_coupledCount;
+}
+
+bool Assembler::holdsCoupled(const AssemblyPart& part) {
+  loadedNodes();
+  if (m_coupledCount == 0) return false;
+  for (const int n : part.nodes)
+    if (m_coupledMark[static_cast<std::size_t>(n)]) return true;
+  return false;
 }
 
 namespace {

@@ -88,11 +88,14 @@ class Assembler {
   bool supportsParts() const;
   /// The part to re-evaluate after the nodes `moved` (ascending, each once) moved and no other did; false
   /// (part unusable: assemble the whole model) when it holds a node a contributor marks as loaded
-  /// (LoadContributor::markLoadedNodes).
-  bool selectPart(const std::vector<int>& moved, AssemblyPart& part);
-  /// Whether a part selectPart made is usable now: no contributor marks one of its nodes as loaded. (Its
-  /// nodes, elements and attachments depend on the moved nodes alone; the marks change with each whole
-  /// assembly: a caller that assembles the same part again and again asks this instead of selecting it anew.)
+  /// (LoadContributor::markLoadedNodes). With `coupled`, a part that holds a node of a contributor coupled
+  /// in parts (LoadContributor::coupledInParts: line contact) is given all of that contributor's nodes
+  /// and their elements instead (the other line at a crossing), and is refused only for the others'.
+  bool selectPart(const std::vector<int>& moved, AssemblyPart& part, bool coupled = false);
+  /// Whether a part selectPart made is usable now: no contributor marks one of its nodes as loaded, or (made
+  /// with `coupled`) the coupled contributors' marked nodes are in it all or not at all. (Its nodes, elements
+  /// and attachments depend on the moved nodes alone; the marks change with each whole assembly: a caller
+  /// that assembles the same part again and again asks this instead of selecting it anew.)
   bool partUsable(const AssemblyPart& part);
   /// Per node, 1 where a contributor left out of parts loads it or reads its state (LoadContributor::
   /// markLoadedNodes: near a line contact, the ends tied to a vessel or a free point), as of the last whole
@@ -310,6 +313,11 @@ class Assembler {
   std::vector<char> m_nodeMark;
   std::vector<char> m_elementMark;
   std::vector<char> m_loadedMark;  // nodes loaded by contributors left out of parts (markLoadedNodes)
+  std::vector<char> m_strictMark;  // of them, by those not coupled in parts (vessels, junctions)
+  std::vector<char> m_coupledMark;  // by those coupled in parts (line contact: coupledInParts)
+  int m_coupledCount = 0;           // nodes m_coupledMark marks
+  /// Whether `part` holds a node of a contributor coupled in parts (their whole terms are then the part's).
+  bool holdsCoupled(const AssemblyPart& part);
   bool m_anyLoadedMark = false;    // some contributor marked nodes
   bool m_loadedMarkValid = false;  // m_loadedMark gathered since the last whole assembly
   VecX m_partWork;

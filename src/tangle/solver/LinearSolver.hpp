@@ -71,6 +71,8 @@ class LinearSolver {
   bool usedBanded() const { return m_method == Method::Banded; }
   /// True when factorizeRows can follow: the last factorisation is on the fixed-width band.
   bool canFactorizeRows() const { return m_method == Method::Banded && m_skyline.bandWidth() > 0; }
+  /// True when factorizeRows can follow on the envelope (the rows from its `begin` to the block's end).
+  bool canFactorizeEnvelopeRows() const { return m_method == Method::Banded && m_skyline.bandWidth() == 0; }
 
  private:
   enum class Method { Banded, Ldlt, Lu };

@@ -57,6 +57,8 @@ struct AssemblyPart {
   std::vector<int> attachments;
   /// Every node of `elements` (ascending): the work space entries the part writes.
   std::vector<int> writtenNodes;
+  /// Made with the coupled contributors' nodes allowed (Assembler::selectPart's `coupled`).
+  bool coupledAllowed = false;
 };
 
 /// Kinds of load contributor (LoadContributor::source).
@@ -92,6 +94,13 @@ class LoadContributor {
   /// (its loads are zero at the part's nodes and unchanged elsewhere, since no node it reads moved). False
   /// (the default): the contributor's terms come from addPartForces / addPartMass.
   virtual bool markLoadedNodes(std::vector<char>& /*mark*/) const { return false; }
+  /// A third way, for a contributor that marks its nodes (markLoadedNodes) and whose loads at them depend on
+  /// one another's positions (line contact: the force on one line at a crossing moves with the other line's
+  /// nodes): true here, and a part that holds any of its marked nodes may hold them all instead of being
+  /// refused (Assembler::selectPart with `coupled`, which adds them), the contributor's whole addForces /
+  /// addMass then giving its terms (those landing outside the part are discarded). A part that holds none of
+  /// them leaves it out, as for the second way.
+  virtual bool coupledInParts() const { return false; }
   /// As addForces, for the elements and attachments of `part` only (Assembler::assemblePart keeps the
   /// entries of part.nodes; what lands elsewhere is discarded); `matrix` (when not null) receives their
   /// entries of H (Assembler::addPartMatrix: a refresh of independent blocks).

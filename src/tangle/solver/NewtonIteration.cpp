@@ -326,7 +326,8 @@ bool NewtonIteration::refreshBlocks(const model::State& state, const solver::Ass
   // fast: its own matrix is assembled and factorised again, the others' kept (12 independent lines: a
   // whole refresh for one line cost 12 lines' matrices; docs/performance.md). Its nodes make a part
   // (Assembler::selectPart: their elements, seabed, attachments and hydrodynamics; refused where a vessel or
-  // a contact loads a node), whose matrix terms replace the blocks' entries (SystemMatrix's patch).
+  // a contact loads a node, except for the lines of a block coupled by a contact, below), whose matrix terms
+  // replace the blocks' entries (SystemMatrix's patch).
   // When the block's out-of-balance beyond the tolerance lies in a stretch of a cable (its touchdown zone,
   // where the seabed spring switches and the kept matrix is stale), only that stretch's entries are made
   // again and only the rows of the factor that depend on them (SkylineLdlt::factorizeRows): the same for a
@@ -364,21 +365,48 @@ bool NewtonIteration::refreshBlocks(const model::State& state, const solver::Ass
       // for 5 % of CPU time.
       for (int node = low; node <= high && stretch; ++node) stretch = !dofs.hasRotations(node);
     }
-    if (!stretch && oneBlock) return false;  // the whole matrix: a replayed whole assembly is faster
-    if (!stretch) {
+    // One block of several lines on the envelope (lines coupled by a contact: a riser resting across a
+    // flowline): the lines from the one where the out-of-balance starts to the block's end, when they are at
+    // most half of it, and with them the contact's terms (a part that holds all its nodes); the rows of the
+    // factor from there on (SkylineLdlt::factorizeEnvelopeFrom).
+    bool lines = false;
+    if (!stretch && oneBlock && low <= high && m_solver.canFactorizeEnvelopeRows()) {
+      const model::Model& model = m_assembler->model();
+      // The first node out of balance that no contact couples to another line (those are out of balance
+      // with the lines they touch, and join the part with them).
+      const std::vector<char>& coupled = m_assembler->loadedNodes();
+      int own = lastNode + 1;
+      for (int i = begin; i < end && own > lastNode; ++i) {
+        const int node = dofs.nodeOf(eqDofs[i]);
+        if (!coupled[static_cast<std::size_t>(node)] && std::abs(r[i]) * m_inverseAllowed[i] > 1.0)
+          own = node;
+      }
+      const int line = own <= lastNode ? model.lineOfNode(own) : -1;
+      if (line >= 0) {
+        const int from = model.lines()[static_cast<std::size_t>(line)].firstNode;
+        lines = from > firstNode && 2 * (lastNode - from + 1) <= lastNode - firstNode + 1;
+        if (lines) {
+          low = from;
+          high = lastNode;
+        }
+      }
+    }
+    if (!stretch && !lines && oneBlock)
+      return false;  // the whole matrix: a replayed whole assembly is faster
+    if (!stretch && !lines) {
       low = firstNode;
       high = lastNode;
     }
-    const int patchBegin = stretch ? dofs.firstEquation(low) : begin;
-    const int patchEnd = stretch ? dofs.firstEquation(high + 1) : end;
+    const int patchBegin = stretch || lines ? dofs.firstEquation(low) : begin;
+    const int patchEnd = stretch || lines ? dofs.firstEquation(high + 1) : end;
     m_slowNodes.clear();
     for (int node = low; node <= high; ++node) m_slowNodes.push_back(node);
-    if (!m_assembler->selectPart(m_slowNodes, m_refreshPart) ||
+    if (!m_assembler->selectPart(m_slowNodes, m_refreshPart, lines) ||
         !m_matrix.beginPatch(patchBegin, patchEnd, begin, end))
       return false;
     m_assembler->addPartMatrix(state, matrixRequest, mf, m_refreshPart, m_matrix);
     if (!m_matrix.endPatch(m_k)) return false;
-    if (!stretch) {
+    if (!stretch && !lines) {
       m_wholeSlowBlocks.push_back(k);
       continue;
     }

@@ -518,13 +518,39 @@ bool SkylineLdlt::factorizeBandBlock(int block, double tiny) {
 }
 
 bool SkylineLdlt::factorizeRows(const SparseMatrix& k, int block, int begin, int end) {
-  if (!m_factorized || m_bandWidth == 0 || k.rows() != m_n || !k.isCompressed() || block < 0 ||
-      block >= blockCount())
+  if (!m_factorized || k.rows() != m_n || !k.isCompressed() || block < 0 || block >= blockCount())
     return false;
+  if (m_bandWidth == 0) return m_factorized = factorizeEnvelopeFrom(k, block, begin);
   m_factorized = withBandWidth(m_bandWidth, [&](auto width) {
     return factorizeBandRows<decltype(width)::value>(k, block, begin, end);
   });
   return m_factorized;
+}
+
+bool SkylineLdlt::factorizeEnvelopeFrom(const SparseMatrix& k, int block, int begin) {
+  // Rows before `begin` hold no changed entry (K's lower triangle: a changed column c >= begin has its
+  // entries in rows >= c) and depend on none: their rows of L and D stand. The rows from `begin` to the
+  // block's end are made again from K (Crout, as factorize: the same arithmetic), and with them the columns'
+  // copy of L, whose columns before `begin` hold entries of those rows too (a contact's coupling reaches back
+  // along the envelope).
+  const int b0 = blockStart(block), b1 = blockStart(block + 1);
+  if (begin < b0 || begin >= b1) return false;
+  const int* outer = k.outerIndexPtr();
+  const int* inner = k.innerIndexPtr();
+  const double* a = k.valuePtr();
+  std::fill(m_values.begin() + static_cast<std::ptrdiff_t>(m_start[begin]),
+            m_values.begin() + static_cast<std::ptrdiff_t>(m_start[b1]), 0.0);
+  std::fill(m_originalDiagonal.begin() + begin, m_originalDiagonal.begin() + b1, 0.0);
+  for (int c = b0; c < b1; ++c)
+    for (int p = outer[c]; p < outer[c + 1]; ++p)
+      if (inner[p] >= begin) scatterValue(m_map, p, a[p], m_values, m_originalDiagonal);
+  std::copy(m_originalDiagonal.begin() + begin, m_originalDiagonal.begin() + b1, m_diagonal.begin() + begin);
+  setBlockLargest(block);
+  if (!factorizeEnvelopeRows(begin, b1, blockPivotThreshold())) return false;
+  for (std::size_t q = m_columnStart[static_cast<std::size_t>(b0)];
+       q < m_columnStart[static_cast<std::size_t>(begin)]; ++q)
+    m_columnValue[q] = m_values[m_columnSource[q]];
+  return true;
 }
 
 template <int W>

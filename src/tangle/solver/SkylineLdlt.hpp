@@ -59,9 +59,10 @@ class SkylineLdlt {
   /// columns [begin, end) change (a stretch of a line: GeneralizedAlpha's refresh of its touchdown zone) from
   /// `k` (the analysed pattern; its other entries must equal the last factorised matrix's): the rows from
   /// `begin` on of a block factorised top-down, or of a twisted block the rows between the change and the
-  /// separator from either end, and the separator. The same arithmetic as factorize. Fixed-width band only;
-  /// false on the envelope, on a vanishing pivot or without a preceding successful factorize (then factorize
-  /// the whole matrix).
+  /// separator from either end, and the separator. On the envelope (no fixed-width band: lines coupled by a
+  /// contact), the rows from `begin` to the block's end (factorizeEnvelopeFrom). The same arithmetic as
+  /// factorize. False on a vanishing pivot or without a preceding successful factorize (then factorize the
+  /// whole matrix).
   bool factorizeRows(const SparseMatrix& k, int block, int begin, int end);
   /// Overwrites b with the solution x of K x = b.
   void solveInPlace(VecX& b) const;
@@ -87,6 +88,8 @@ class SkylineLdlt {
   /// One block of factorizeBandBlocks (its work space sized by it).
   template <int W>
   bool factorizeBandBlock(int block, double tiny);
+  /// factorizeRows on the envelope: rows `begin` to the end of block `block` again from k.
+  bool factorizeEnvelopeFrom(const SparseMatrix& k, int block, int begin);
   /// factorizeRows on the band of width W.
   template <int W>
   bool factorizeBandRows(const SparseMatrix& k, int block, int begin, int end);

@@ -165,6 +165,8 @@ class SystemMatrix {
   static constexpr std::size_t kKeptPatchSequences = 64;  // ranges kept (more: all dropped, made again)
   std::vector<PatchSequence> m_patchSequences;
   PatchSequence m_stretch;  // a stretch's, taken from its block's
+  std::array<int, 2> m_stretchBlock{-1, -1};  // that block's [begin, end)
+  bool m_stretchValid = false;                // m_stretch is of the current sequence
   const PatchSequence* m_patch = nullptr;
   std::size_t m_patchCursor = 0;
   bool m_patchFailed = false;

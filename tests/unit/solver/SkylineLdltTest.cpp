@@ -430,6 +430,36 @@ TEST(SkylineLdlt, StretchFactorisedAgainEqualsAWholeFactorisation) {
   }
 }
 
+TEST(SkylineLdlt, EnvelopeRowsFactorisedAgainEqualAWholeFactorisation) {
+  // NewtonIteration's refresh of the lines from one on in a block of lines coupled by a contact (a riser
+  // resting across a flowline): K changed in the rows and columns from `begin` on; the envelope's rows from
+  // there, and its columns' copy of L before it (the coupling's rows reach back along the envelope), made
+  // again solve as a whole factorisation of the changed matrix, bit for bit. Two beam lines of 30 nodes
+  // coupled node 20 to node 8 (DOF by DOF): one block, no fixed-width band. Changes from the second line's
+  // first row (the part of a refresh of that line), from the middle of the first line, and at the last node.
+  const int d = 6, nodes = 30;
+  std::vector<std::pair<int, int>> contact;
+  for (int i = 0; i < 3; ++i) contact.emplace_back((nodes + 8) * d + i, 20 * d + i);
+  const SparseMatrix k = blockDiagonal({lineMatrix(nodes, d, {}, 71), lineMatrix(nodes, d, {}, 72)}, contact);
+  const int n = static_cast<int>(k.rows());
+  solver::SkylineLdlt s;
+  s.analyzePattern(k);
+  ASSERT_EQ(s.blockCount(), 1);
+  ASSERT_EQ(s.bandWidth(), 0);
+  for (const int firstNode : {nodes, 12, 2 * nodes - 1}) {
+    const int begin = firstNode * d;
+    SparseMatrix changed = k;
+    for (int c = 0; c < n; ++c)
+      for (SparseMatrix::InnerIterator it(changed, c); it; ++it) {
+        const int r = static_cast<int>(it.row());
+        if (r >= begin || c >= begin) it.valueRef() += 0.1 * std::sin(r + c);
+      }
+    ASSERT_TRUE(s.factorize(k));
+    ASSERT_TRUE(s.factorizeRows(changed, 0, begin, n));
+    EXPECT_EQ(differenceFromWholeFactorisation(s, changed), 0.0) << "changed from node " << firstNode;
+  }
+}
+
 TEST(SkylineLdlt, VanishingPivotInABlockFactorisedAgainIsReported) {
   const SparseMatrix k = blockDiagonal({lineMatrix(10, 3, {}, 51), lineMatrix(10, 3, {}, 52)}, {});
   solver::SkylineLdlt s;
