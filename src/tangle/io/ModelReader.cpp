@@ -1853,22 +1853,22 @@ void readClearance(const Value& v, ModelSpec& spec) {
   if (const std::optional<Value> margin = m.find("margin"))
     spec.clearance.margin =
         margin->number(positive().withHint("the dynamic minima are kept up to this clearance [m]"));
+  // One pair of distinct known lines [line_a, line_b] of the list `key` (clearance.pairs, ...).
+  const auto linePair = [&](const Value& item, const std::vector<Value>& names, std::string_view key) {
+    if (names.size() != 2) item.expected(fmt::format("a pair of line names [line_a, line_b] ({})", key));
+    std::array<std::string, 2> pair;
+    for (std::size_t k = 0; k < 2; ++k) pair[k] = knownLine(names[k], spec, key);
+    if (pair[0] == pair[1]) item.fail(fmt::format("{}: a line paired with itself", key));
+    return pair;
+  };
   if (const std::optional<Value> pairs = m.find("pairs")) {
     for (const Value& item : pairs->items(1)) {
-      const std::vector<Value> names = item.items(2);
-      if (names.size() != 2) item.expected("a pair of line names [line_a, line_b] (clearance.pairs)");
-      std::array<std::string, 2> pair;
-      for (std::size_t k = 0; k < 2; ++k) pair[k] = knownLine(names[k], spec, "clearance.pairs");
-      if (pair[0] == pair[1]) item.fail("clearance.pairs: a line paired with itself");
+      const std::array<std::string, 2> pair = linePair(item, item.items(2), "clearance.pairs");
       spec.clearance.pairs.emplace_back(pair[0], pair[1]);
     }
   }
   // Pairs designed to touch: assessed by their impacts, which only line-to-line contact gives (without it the
   // lines pass through each other and there are none).
-  const auto samePair = [](const std::pair<std::string, std::string>& p,
-                           const std::array<std::string, 2>& q) {
-    return (p.first == q[0] && p.second == q[1]) || (p.first == q[1] && p.second == q[0]);
-  };
   if (const std::optional<Value> allowed = m.find("collision_allowed")) {
     if (!spec.contact.enabled)
       allowed->fail(
@@ -1876,34 +1876,30 @@ void readClearance(const Value& v, ModelSpec& spec) {
           "through each other, and a collision-allowed pair is assessed by its impacts");
     for (const Value& item : allowed->items(1)) {
       const std::vector<Value> names = item.items(2);
-      if (names.size() != 2)
-        item.expected("a pair of line names [line_a, line_b] (clearance.collision_allowed)");
-      std::array<std::string, 2> pair;
-      for (std::size_t k = 0; k < 2; ++k) {
-        pair[k] = knownLine(names[k], spec, "clearance.collision_allowed");
+      const std::array<std::string, 2> pair = linePair(item, names, "clearance.collision_allowed");
+      for (std::size_t k = 0; k < 2; ++k)
         for (const model::LineSpec& line : spec.lines)
           if (line.name == pair[k] && !line.contact)
             names[k].fail(
                 fmt::format("clearance.collision_allowed: line '{}' has 'contact: false' (it touches "
                             "no line, so it has no impacts to assess)",
                             pair[k]));
-      }
-      if (pair[0] == pair[1]) item.fail("clearance.collision_allowed: a line paired with itself");
-      const auto& touching = spec.contact.pairs;
-      if (!touching.empty() &&
-          std::none_of(touching.begin(), touching.end(), [&](const auto& p) { return samePair(p, pair); }))
+      // Whether `list` holds the pair, in either order.
+      const auto listed = [&](const std::vector<std::pair<std::string, std::string>>& list) {
+        return std::any_of(list.begin(), list.end(), [&](const auto& p) {
+          return (p.first == pair[0] && p.second == pair[1]) || (p.first == pair[1] && p.second == pair[0]);
+        });
+      };
+      if (!spec.contact.pairs.empty() && !listed(spec.contact.pairs))
         item.fail(
             fmt::format("clearance.collision_allowed: lines '{}' and '{}' may not touch (they are not "
                         "among contact.pairs)",
                         pair[0], pair[1]));
-      const auto& excluded = spec.contact.exclude;
-      if (std::any_of(excluded.begin(), excluded.end(), [&](const auto& p) { return samePair(p, pair); }))
+      if (listed(spec.contact.exclude))
         item.fail(
             fmt::format("clearance.collision_allowed: lines '{}' and '{}' never touch (contact.exclude)",
                         pair[0], pair[1]));
-      const auto& checked = spec.clearance.pairs;
-      if (!checked.empty() &&
-          std::none_of(checked.begin(), checked.end(), [&](const auto& p) { return samePair(p, pair); }))
+      if (!spec.clearance.pairs.empty() && !listed(spec.clearance.pairs))
         item.fail(
             fmt::format("clearance.collision_allowed: lines '{}' and '{}' are not among clearance.pairs, "
                         "the pairs checked: add them there",
