@@ -191,6 +191,28 @@ std::vector<double> ClearanceEnvelope::nodeClearance(const model::State& state, 
   return search(state, line, other, onlyBelow, skip, lower, nullptr, nullptr);
 }
 
+std::vector<double> ClearanceEnvelope::nearestClearance(const model::State& state, int line) const {
+  std::vector<double> nearest, below;
+  for (const Side& side : m_sides) {
+    if (side.line != line) continue;
+    if (nearest.empty()) {
+      const std::size_t nodes =
+          static_cast<std::size_t>(m_model->lines()[static_cast<std::size_t>(line)].nodeCount);
+      nearest.assign(nodes, kInf);
+      below.assign(nodes, m_margin);
+    }
+    const std::vector<double> v = search(state, line, side.other, &below, nullptr, nullptr, nullptr, nullptr);
+    for (std::size_t i = 0; i < nearest.size() && i < v.size(); ++i)
+      if (v[i] < nearest[i]) {
+        nearest[i] = v[i];
+        below[i] = std::min(below[i], v[i]);
+      }
+  }
+  for (double& c : nearest)
+    if (c > m_margin) c = kInf;
+  return nearest;
+}
+
 std::vector<double> ClearanceEnvelope::search(const model::State& state, int line, int other,
                                               const std::vector<double>* onlyBelow,
                                               const std::vector<char>* skip, std::vector<double>* lower,

@@ -181,16 +181,9 @@ std::string HtmlReport::frameJson(const std::vector<solver::LineSnapshot>& lines
     out += ",\"M\":" + sigArray(s.bendingMoment, 4, 1e-3);
     out += ",\"C\":" + sigArray(s.curvature, 3);
     if (envelope) {
-      // Clearance of each node to the nearest other line it is assessed against.
-      std::vector<double> c(s.position.size(), std::numeric_limits<double>::infinity());
-      bool any = false;
-      for (const auto& side : envelope->sides()) {
-        if (side.line != static_cast<int>(l)) continue;
-        const std::vector<double> v = envelope->nodeClearance(state, side.line, side.other);
-        for (std::size_t i = 0; i < c.size() && i < v.size(); ++i) c[i] = std::min(c[i], v[i]);
-        any = true;
-      }
-      if (any) out += ",\"c\":" + array(c.size(), [&](std::size_t i) { return fixed(c[i], 3); });
+      // Clearance of each node to the nearest other line it is assessed against (null beyond the margin).
+      const std::vector<double> c = envelope->nearestClearance(state, static_cast<int>(l));
+      if (!c.empty()) out += ",\"c\":" + array(c.size(), [&](std::size_t i) { return fixed(c[i], 3); });
     }
     out += '}';
   }
@@ -222,6 +215,7 @@ std::string HtmlReport::frameJson(const std::vector<solver::LineSnapshot>& lines
 void HtmlReport::setStatics(const std::vector<solver::LineSnapshot>& lines, const model::State& state,
                             const contact::LineContact* contact, const contact::ClearanceEnvelope* envelope) {
   m_statics = frameJson(lines, state, contact, envelope);
+  m_clearanceMargin = envelope ? envelope->margin() : std::numeric_limits<double>::quiet_NaN();
   // Static ranges (the values themselves) until the dynamics replace them.
   for (std::size_t l = 0; l < lines.size(); ++l)
     setRange(static_cast<int>(l), lines[l].tension, lines[l].tension, lines[l].bendingMoment,
@@ -527,8 +521,8 @@ std::string HtmlReport::json() const {
       array(m_rangeParts.size(),
             [&](std::size_t l) { return m_rangeParts[l].empty() ? std::string("null") : m_rangeParts[l]; }) +
       ",");
-  f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + ",\"fatigue\":" + m_fatigue +
-          ",\"clashDamage\":" + m_clashDamage +
+  f.write("\"clash\":" + m_clash + ",\"envelope\":" + m_envelope + ",\"clearanceMargin\":" +
+          fixed(m_clearanceMargin, 3) + ",\"fatigue\":" + m_fatigue + ",\"clashDamage\":" + m_clashDamage +
           ",\"impacts\":" + array(m_impacts.size(), [&](std::size_t i) { return m_impacts[i]; }) +
           ",\"peakFits\":" + array(m_peakFits.size(), [&](std::size_t i) { return m_peakFits[i]; }) + "}\n");
   return std::move(f.s);

@@ -14,6 +14,7 @@
 /// again from the folder). docs/report.md describes the page.
 
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -109,6 +110,8 @@ class HtmlReport {
   std::vector<std::vector<double>> m_vesselXY;    ///< per vessel x, y (2 per vessel), per output [m]
   std::vector<std::string> m_rangeParts;          ///< JSON range graphs per line
   std::string m_clash = "null", m_envelope = "[]", m_fatigue = "[]", m_clashDamage = "[]";
+  /// The clearance envelope's margin [m] (frames' clearances beyond it are null); NaN without an envelope.
+  double m_clearanceMargin = std::numeric_limits<double>::quiet_NaN();
   std::vector<std::string> m_peakFits;
   std::vector<std::string> m_impacts;  ///< JSON rows of the hull and seabed impacts table
 };

@@ -342,6 +342,48 @@ TEST(ClearanceEnvelope, NodesNeverWithinTheClearanceMarginKeepNoDynamicMinimum) 
   RecordProperty("nodes_within_50_m", within50);
 }
 
+TEST(ClearanceEnvelope, NearestClearanceIsTheNearestAssessedLineWithinTheMargin) {
+  // The report's frames (nearestClearance): per node of `a`, the smaller of its brute-force clearances to
+  // `b` (the V: 3-59 m) and to `c` (parallel to a, 25 m off on the other side, so nearer than b beyond
+  // x = 58 m), +inf above the 40 m margin. Exact: the searches it skips are those that cannot lower it.
+  model::ModelSpec spec = veeSpec(40.0);
+  spec.lines.push_back(test::simpleLine("c", "thin", 150.0, 75, model::EndKind::Pinned, Vec3(0, -25, -50),
+                                        model::EndKind::Pinned, Vec3(150, -25, -50)));
+  const model::Model m(std::move(spec));
+  model::State s = m.initialState();
+  for (int n = 0; n < static_cast<int>(s.position.size()); ++n)  // off the straight lines by 0.3 m
+    s.position[n] += Vec3(0.0, 0.3 * std::sin(0.37 * n), 0.3 * std::cos(0.23 * n));
+  ClearanceEnvelope envelope(m, {{0, 1}, {0, 2}});
+  const std::vector<double> toB = bruteForce(m, s, 0, 1), toC = bruteForce(m, s, 0, 2);
+  const std::vector<double> nearest = envelope.nearestClearance(s, 0);
+  ASSERT_EQ(nearest.size(), toB.size());
+  int byB = 0, byC = 0, beyond = 0;
+  for (std::size_t i = 0; i < nearest.size(); ++i) {
+    const double expected = std::min(toB[i], toC[i]);
+    if (expected > 40.0) {
+      EXPECT_EQ(nearest[i], std::numeric_limits<double>::infinity()) << "node " << i;
+      ++beyond;
+    } else {
+      EXPECT_EQ(nearest[i], expected) << "node " << i;
+      (toB[i] < toC[i] ? byB : byC) += 1;
+    }
+  }
+  EXPECT_GT(byB, 10);
+  EXPECT_GT(byC, 10);
+  EXPECT_EQ(beyond, 0);  // c is 25 m from every node of a
+  // b and c are assessed against a alone: b's nodes beyond 40 m of a are +inf.
+  const std::vector<double> fromB = envelope.nearestClearance(s, 1), bToA = bruteForce(m, s, 1, 0);
+  int bBeyond = 0;
+  for (std::size_t i = 0; i < fromB.size(); ++i) {
+    EXPECT_EQ(fromB[i], bToA[i] > 40.0 ? std::numeric_limits<double>::infinity() : bToA[i]) << "node " << i;
+    bBeyond += bToA[i] > 40.0 ? 1 : 0;
+  }
+  EXPECT_GT(bBeyond, 10);
+  // A line assessed against none gets no values.
+  ClearanceEnvelope onlyAB(m, {{0, 1}});
+  EXPECT_TRUE(onlyAB.nearestClearance(s, 2).empty());
+}
+
 TEST(ClearanceEnvelope, MarginIsTheClearanceBlocksAndNeverBelowTheRequiredClearance) {
   // clearance.margin overrides contact.clearance_margin for the envelope; a required clearance above the
   // margin widens it (a node within the requirement is always measured: otherwise the check would pass nodes
