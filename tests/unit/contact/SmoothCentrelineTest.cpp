@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -155,6 +156,51 @@ TEST(SmoothCentreline, ClosestPointsAreStationaryAndTheDistanceDerivativesAreExa
 // kinked nodes on unequal elements, the curve's distance from its chord stays within
 // searchRangeDeviationBound and sum_k |N_k| within centrelineWeightBound. Both are bounds, not estimates:
 // checked at 441 points per piece without tolerance beyond round-off (1e-12).
+TEST(SmoothCentreline, NearlyParallelPiecesConvergeToTheValleyFloorNearTheStart) {
+  // Two beams side by side: a straight along x, b bent towards it, y_b = 0.3 - 0.002 (x - 0.7)^2, both on
+  // 5 m elements from x = -12.5 m. Along the valley (s and t together) the distance falls away from
+  // x = 0.7 m: V's Hessian is indefinite, the search's non-convex branch. Its answer is the valley's floor
+  // near the start, where the gradient across the valley (along the Hessian's eigenvector of the largest
+  // eigenvalue, s and t nearly opposite) vanishes: the distance there is y_b(x), to 1e-4 m along this
+  // valley's shallow slope. Tolerance: 1e-9 of |u| |c'| (round-off of 1e-13 on coordinates of 10 m, relative
+  // to 1.5). (The former step, scaled by each parameter's |c'|^2 alone, overshot the valley twofold and
+  // bounced between its walls.)
+  model::ModelSpec spec;
+  spec.sourceFile = "centreline (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["c"] = test::solidRodType("c", 0.1, 2.1e11, 7850.0);
+  for (const char* name : {"a", "b"})
+    spec.lines.push_back(test::simpleLine(name, "c", 25.0, 5, model::EndKind::Pinned, Vec3(-12.5, 0, 0),
+                                          model::EndKind::Pinned, Vec3(12.5, 0, 0)));
+  const model::Model m(spec);
+  const model::Line& la = m.lines()[0];
+  const model::Line& lb = m.lines()[1];
+  std::vector<Vec3> x(m.nodeCount(), Vec3::Zero());
+  const auto yb = [](double at) { return 0.3 - 0.002 * (at - 0.7) * (at - 0.7); };
+  for (int i = 0; i < la.nodeCount; ++i) {
+    const double at = -12.5 + 5.0 * i;
+    x[la.firstNode + i] = Vec3(at, 0.0, 0.0);
+    x[lb.firstNode + i] = Vec3(at, yb(at), 0.0);
+  }
+  const int ea = la.firstElement + 2, eb = lb.firstElement + 2;  // x from -2.5 to 2.5 m (interior)
+  for (const auto& [s0, t0] : std::vector<std::pair<double, double>>{{0.4, 0.9}, {0.9, 0.4}, {0.2, 0.3}}) {
+    const contact::CentrelineDistance d = contact::centrelineDistance(m, x, ea, eb, s0, t0);
+    const Vec3 u = d.pointA - d.pointB;
+    const Vec3 ca = d.a.tangent(x), cb = d.b.tangent(x);
+    Eigen::Matrix2d h;  // V's Hessian in (s, t)
+    h << ca.dot(ca) + u.dot(d.a.secondDerivative(x)), -ca.dot(cb), -ca.dot(cb),
+        cb.dot(cb) - u.dot(d.b.secondDerivative(x));
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(h);
+    ASSERT_LT(eigen.eigenvalues()(0), 0.0);                      // the indefinite case
+    const Eigen::Vector2d across = eigen.eigenvectors().col(1);  // the largest eigenvalue's
+    EXPECT_LT(std::abs(across(0) * u.dot(ca) - across(1) * u.dot(cb)), 1e-9 * u.norm() * ca.norm())
+        << "start " << s0 << ", " << t0;
+    EXPECT_TRUE(d.sFree && d.tFree);
+    EXPECT_LT(std::abs(0.5 * (d.s + d.t) - 0.5 * (s0 + t0)), 0.1);  // near the start along the valley
+    EXPECT_NEAR(d.distance, yb(d.pointA.x()), 1e-4);
+  }
+}
+
 TEST(SmoothCentreline, TheCurveStaysWithinItsBoundsOverTheWholeSearchRange) {
   const model::Model m = twoLines();
   std::mt19937 rng(7);
