@@ -127,5 +127,37 @@ TEST(ContactCandidates, NearLinePairsAreExactlyThePairsWhoseGrownBoxesOverlap) {
   }
 }
 
+TEST(ContactCandidates, PairsWithinFromTheKeptListAreThoseOfAFreshSearch) {
+  // pairsWithin keeps the broad phase's pairs within a larger margin (the skin) and serves later calls from
+  // them while no segment end has moved far enough to bring in a pair the list lacks. Contract: at every
+  // call the same pairs, in the same order, as a search made afresh (a new object, no list) at that state.
+  // The lines drift towards and through one another, 0.05-1.5 m per call, with jumps of 20 m that defeat
+  // the list; margins 0.5-3 m.
+  const model::Model m(scatter());
+  const std::vector<double> radius(m.elements().size(), kRadius);
+  ContactCandidates kept(m, m.spec().contact, radius);
+  model::State state = m.initialState();
+  int nonEmpty = 0;
+  for (int call = 0; call < 120; ++call) {
+    const double margin = 0.5 + 2.5 * std::fmod(0.618 * call, 1.0);
+    const double step = call % 40 == 39 ? 20.0 : 0.05 + 1.45 * std::fmod(0.754 * call, 1.0);  // [m]
+    for (int n = 0; n < m.nodeCount(); ++n) {
+      const double phase = 0.37 * n + 0.11 * call;
+      state.position[static_cast<std::size_t>(n)] +=
+          step * Vec3(std::cos(phase), std::sin(1.3 * phase), 0.2 * std::sin(phase)).normalized();
+    }
+    ContactCandidates fresh(m, m.spec().contact, radius);
+    const std::vector<CandidatePair> expected = fresh.pairsWithin(state, margin);
+    const std::vector<CandidatePair> got = kept.pairsWithin(state, margin);
+    ASSERT_EQ(got.size(), expected.size()) << "call " << call;
+    for (std::size_t k = 0; k < got.size(); ++k) {
+      EXPECT_EQ(got[k].first, expected[k].first) << "call " << call;
+      EXPECT_EQ(got[k].second, expected[k].second) << "call " << call;
+    }
+    nonEmpty += expected.empty() ? 0 : 1;
+  }
+  EXPECT_GT(nonEmpty, 20);  // the test sees pairs
+}
+
 }  // namespace
 }  // namespace tangle::contact
