@@ -469,13 +469,12 @@
     node = Math.min(node, line.arc.length - 1);
     var parts = [line.name + ", s = " + fmt(line.arc[node], 6) + " m",
                  "z = " + fmt(fl.p[3 * node + 2] / 1000, 5) + " m"];
-    quantities.forEach(function(q) {
-      if (q.key === 'line' || !fl[q.key]) return;
+    quantities.forEach(function (q) {
+      if (q.key === "line" || !fl[q.key]) return;
       var v = fl[q.key][node];
       if (q.clearance && v === null && isFinite(data.clearanceMargin))
-        parts.push(q.label + ' > ' + fmt(data.clearanceMargin, 4) + ' ' + q.unit + ' (beyond the margin)');
-      else
-        parts.push(q.label + ' ' + fmt(v, 4) + ' ' + q.unit);
+        parts.push(q.label + " > " + fmt(data.clearanceMargin, 4) + " " + q.unit + " (beyond the margin)");
+      else parts.push(q.label + " " + fmt(v, 4) + " " + q.unit);
     });
     hoverBox.textContent = parts.join(" \u00b7 ");
   });
@@ -507,11 +506,9 @@
       ticks.appendChild(el("span", null, fmt(0.5 * (quantity.min + quantity.max), 4)));
       ticks.appendChild(el("span", null, (quantity.capped ? "\u2265 " : "") + fmt(quantity.max, 4)));
       L.appendChild(ticks);
-      if (quantity.key === 'c')
-        L.appendChild(
-            el('div', null,
-               'grey: not assessed / beyond the margin' +
-                   (isFinite(data.clearanceMargin) ? ' (' + fmt(data.clearanceMargin, 4) + ' m)' : '')));
+      if (quantity.key === "c")
+        L.appendChild(el("div", null, "grey: not assessed / beyond the margin" +
+            (isFinite(data.clearanceMargin) ? " (" + fmt(data.clearanceMargin, 4) + " m)" : "")));
     }
     L.appendChild(el("div", null, exaggeration > 1 ? "tubes: contact diameter \u00d7" + exaggeration + ", at least " +
         fmt(2 * minRadius, 2) + " m" : "tubes: contact diameter to scale"));
