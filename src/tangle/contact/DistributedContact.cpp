@@ -1044,20 +1044,13 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
   // from one assembly to the next while samples come and go within it, so the matrix replays them.
   struct {
     bool open = false;
-    std::array<int, 8> node{};
-    std::array<bool, 8> used{};
-    std::array<Mat3, 64> block;  // slot pair (i, j) at 8 i + j
+    CentrelineSlots slots;  // the group's nodes and used slots
+    Eigen::Matrix<double, 24, 24> block;
   } pending;
   const auto flush = [&] {
     if (!pending.open) return;
     pending.open = false;
-    for (int i = 0; i < 8; ++i) {
-      if (!pending.used[i]) continue;
-      for (int j = 0; j < 8; ++j)
-        if (pending.used[j])
-          matrix->add3x3(dofs.firstDof(pending.node[i]), dofs.firstDof(pending.node[j]),
-                         pending.block[static_cast<std::size_t>(8 * i + j)]);
-    }
+    addSlotBlocks(pending.slots, pending.block, Mat3::Zero(), dofs, *matrix);
   };
   for (const ContactSample& smp : m_samples) {
     if (smp.lineForce <= 0.0) continue;
@@ -1137,24 +1130,23 @@ void DistributedContact::addForces(const model::State& state, const solver::Asse
           e[j][a] = fd * sum;
         }
     }
-    if (!pending.open || pending.node != kin.node || pending.used != kin.used) {
+    if (!pending.open || pending.slots.node != kin.node || pending.slots.used != kin.used) {
       flush();
       pending.open = true;
-      pending.node = kin.node;
-      pending.used = kin.used;
-      for (Mat3& b : pending.block) b.setZero();
+      pending.slots = kin;
+      pending.block.setZero();
     }
     for (int i = 0; i < 8; ++i) {
       if (!kin.used[i]) continue;
       for (int j = 0; j < 8; ++j) {
         if (!kin.used[j]) continue;
-        Mat3& bij = pending.block[static_cast<std::size_t>(8 * i + j)];
+        auto bij = pending.block.block<3, 3>(3 * i, 3 * j);
         bij.noalias() += (kin.weight[i] * kin.weight[j]) * common;
         for (int a = 0; a < curvature.free; ++a) bij.noalias() += curvature.mixed[i][a] * e[j][a].transpose();
       }
     }
   }
-  if (matrix) flush();
+  flush();  // (a group is open only when a matrix is assembled)
 }
 
 double DistributedContact::limitIncrement(const model::State& state, const std::vector<Vec3>& move,
