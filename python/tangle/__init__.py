@@ -135,7 +135,7 @@ class DynamicResults:
     output times) as ``<quantity>_min/_max/_mean_<unit>`` [node], means time-weighted, and
     ``seabed_clearance_min_m`` [node] (the smallest clearance to the seabed over the run, 0 on it).
     newton_iterations_on_parts, matrix_refreshes, block_refreshes, matrix_step_length_changes, fallback_steps,
-    converged_blocks_left_out: solver counters,
+    unload_rejections, converged_blocks_left_out: solver counters,
     as the dynamics summary.json (theory manual 8.2).
     vessels: per vessel name, ``motion`` [time, (x_m, y_m, z_m, rx_deg, ry_deg, rz_deg)] (reference point and
     rotation vector from the initial attitude). contact_events: one dict per contact event (the clash
@@ -173,6 +173,7 @@ class DynamicResults:
     block_refreshes: int = 0
     matrix_step_length_changes: int = 0
     fallback_steps: int = 0
+    unload_rejections: int = 0
     converged_blocks_left_out: int = 0
     line_failures: list[dict[str, Any]] = field(default_factory=list)
     seabed_impacts: list[dict[str, Any]] = field(default_factory=list)

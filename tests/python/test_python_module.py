@@ -136,7 +136,7 @@ def test_statics_and_dynamics_equal_the_cli(mooring: tangle.Model, tmp_path: Pat
     # The solver counters, as the CLI's dynamics/summary.json (the same iterations: the same results).
     summary = json.loads((out / "dynamics" / "summary.json").read_text())
     for key in ("newton_iterations", "newton_iterations_on_parts", "matrix_refreshes", "block_refreshes",
-                "fallback_steps", "converged_blocks_left_out"):
+                "fallback_steps", "unload_rejections", "converged_blocks_left_out"):
         assert getattr(run, key) == summary[key], key
     assert run.matrix_refreshes > 0
 

@@ -272,6 +272,7 @@ py::dict PySimulation::dynamics(const py::object& progress) {
   out["block_refreshes"] = result.blockRefreshes;
   out["matrix_step_length_changes"] = result.matrixStepLengthChanges;
   out["fallback_steps"] = result.fallbackSteps;
+  out["unload_rejections"] = result.unloadRejections;
   out["converged_blocks_left_out"] = result.blocksLeft;
   out["wall_time_s"] = result.wallSeconds;
   out["message"] = result.message;

@@ -99,6 +99,7 @@ void writeDynamicSummary(const fs::path& dir, const time::DynamicResult& r, cons
   j.field("block_refreshes", static_cast<double>(r.blockRefreshes));
   j.field("matrix_step_length_changes", static_cast<double>(r.matrixStepLengthChanges));
   j.field("fallback_steps", static_cast<double>(r.fallbackSteps));
+  j.field("unload_rejections", r.unloadRejections);
   {
     const model::DynamicSolverSpec& c = m.spec().dynamics.solver;
     j.key("solver");

@@ -1,6 +1,7 @@
 #include "tangle/time/CableSnapLimit.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace tangle::time {
@@ -52,6 +53,27 @@ double cableSnapStepLimit(const model::Model& model, const model::State& state, 
     limit = std::min(limit, (maxStrainStep + std::max(-strain, 0.0)) / rate);
   }
   return limit;
+}
+
+double cableUnloadStepFraction(const model::Model& model, const model::State& before,
+                               const model::State& after, double maxStrainStep) {
+  double fraction = 1.0;
+  if (maxStrainStep <= 0.0) return fraction;
+  for (const model::LineElement& el : model.elements()) {
+    if (!el.bar) continue;
+    // On squared lengths first: most bars are not at their kink at the step's end.
+    const double rest2 = el.restLength * el.restLength;
+    const double slackBelow = (1.0 - maxStrainStep) * el.restLength;
+    const double after2 = (after.position[el.node2] - after.position[el.node1]).squaredNorm();
+    if (after2 >= slackBelow * slackBelow) continue;
+    const double tautAbove = (1.0 + maxStrainStep) * el.restLength;
+    const double before2 = (before.position[el.node2] - before.position[el.node1]).squaredNorm();
+    if (before2 <= tautAbove * tautAbove || !(rest2 > 0.0)) continue;
+    const double start = std::sqrt(before2) / el.restLength - 1.0;  // [-]
+    const double end = std::sqrt(after2) / el.restLength - 1.0;     // [-]
+    fraction = std::min(fraction, (start - 0.5 * maxStrainStep) / (start - end));
+  }
+  return fraction;
 }
 
 }  // namespace tangle::time

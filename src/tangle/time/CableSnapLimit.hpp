@@ -32,4 +32,16 @@ namespace tangle::time {
 double cableSnapStepLimit(const model::Model& model, const model::State& state, double maxStrainStep,
                           double horizon);
 
+/// The check after a converged step of what cableSnapStepLimit predicts: the fraction [-] of the step
+/// `before`
+/// -> `after` at which, interpolated linearly in strain, the first bar that went from a strain above
+/// `maxStrainStep` to one below -maxStrainStep (from tension across its kink into slack in one step) reaches
+/// maxStrainStep / 2; 1 when no bar did. A step with a fraction below 1 is to be taken again that much
+/// shorter. The prediction from the rate at the step's start does not see a bar unload from its largest
+/// length (rate 0) within a quarter of its axial period; with the accelerations too it saw unloads that do
+/// not happen in a mooring line at dt = 0.05 s (the generalized-alpha accelerations of its unresolved axial
+/// modes), and cut steps there. This check sees only the unloads that happened.
+double cableUnloadStepFraction(const model::Model& model, const model::State& before,
+                               const model::State& after, double maxStrainStep);
+
 }  // namespace tangle::time

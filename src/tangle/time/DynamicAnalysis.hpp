@@ -23,6 +23,9 @@ struct DynamicResult {
   int steps = 0;            ///< accepted steps
   int cutbacks = 0;         ///< step cuts after Newton failures
   int errorRejections = 0;  ///< steps redone because the local error estimate exceeded the tolerance
+  /// Steps redone shorter because a cable element went from tension into slack within them
+  /// (cableUnloadStepFraction, CableSnapLimit.hpp).
+  int unloadRejections = 0;
   long newtonIterations = 0;
   long partIterations = 0;   ///< Newton iterations evaluated on a part of the model (theory manual 8.2)
   long blocksLeft = 0;       ///< converged independent blocks left out of a Newton correction (8.2)

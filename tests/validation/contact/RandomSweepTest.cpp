@@ -258,10 +258,33 @@ std::string caseName(const ::testing::TestParamInfo<SweepCase>& p) {
 // Newton iterate only: DistributedContact::contactIntervals. Seeds 16 and 19, with friction, stopped at
 // t = 2.01 and 3.19 s until the stick's dashpot delay stopped following clipped normal forces:
 // DistributedContact::finishSamples.)
+// Seeds 33 to 72 and seeds 1 to 20 with their launch speeds 1e-9 faster (a test-only variant, not kept), run
+// once outside CI on 2026-12-07: 50, 51, 63 and 67 failed. 50 and 51 created energy (peak kinetic energy
+// 1.58 and 1.068 of the launch's) with no contact acting: a wire tumbling alone went from a strain of 1e-3
+// or more into slack in one step (its rate was about 0 at its longest, so the snap limit's prediction from
+// the rate never saw the unload), and the step released more work than the strain energy held (one unload
+// of 26.8 J: +23 J). Since a converged step in which a bar did that is taken again shorter
+// (time/CableSnapLimit.hpp, cableUnloadStepFraction) they pass (1.0020 and 1.0010). 63 and 67 are known
+// failures (below).
 INSTANTIATE_TEST_SUITE_P(Distributed, RandomSweep,
                          ::testing::Values(SweepCase{1}, SweepCase{2}, SweepCase{3}, SweepCase{4},
-                                           SweepCase{5}, SweepCase{6}, SweepCase{16}, SweepCase{19}),
+                                           SweepCase{5}, SweepCase{6}, SweepCase{16}, SweepCase{19},
+                                           SweepCase{50}, SweepCase{51}),
                          caseName);
+
+// Known failures (run by ctest as expected to fail: validation.random_sweep_seed63_expected_fail and
+// validation.random_sweep_seed67_expected_fail, tests/CMakeLists.txt), measured 2026-12-07. Seed 63 (e = 0,
+// friction 0.3) stops at t = 2.636 s: "Newton did not converge even with the minimum time step 1e-05 s and
+// full Newton; largest out-of-balance force 78.96 N at line 'line1' node 8". Seed 67 (e = 1, no friction)
+// peaks at 1.0496 of the launch's kinetic energy (115.16 against 109.71 J) inside an impact of two wires
+// resolved at the minimum step of 1e-5 s (36 Gauss points in contact, 3.5e7-4.0e7 N/m summed over them): the
+// barrier's stiffness outgrows what the minimum step resolves, and the step gains energy as a penalty step
+// that swallows an impact does. Round-off changes move both: with the closest-point search ending at the
+// least distance of nearly parallel pieces in the step limit, 63 and 67 passed and seeds 39, 43 and 9 (1e-9
+// faster) stopped the same way as 63 (docs/performance.md): knife edges of the contact that issue 43 asks to
+// remove.
+INSTANTIATE_TEST_SUITE_P(RandomSweepKnownFailures, RandomSweep,
+                         ::testing::Values(SweepCase{63}, SweepCase{67}), caseName);
 
 }  // namespace
 }  // namespace tangle
