@@ -694,8 +694,12 @@ ClearanceEnvelope::Crossing ClearanceEnvelope::onCurves(const model::State& stat
   };
   const auto curveClearance = [&](int i, int j, Candidate& k) {
     const int ea = a.firstElement + i, eb = b.firstElement + j;
-    const CentrelineDistance d = centrelineDistance(*m_model, state.position, ea, eb, k.chords.s, k.chords.t,
-                                                    !curveA, !curveB, smoothCables);
+    // Both on curves: their least distance (nearly parallel pieces: along the valley's floor).
+    const CentrelineDistance d =
+        curveA && curveB ? centrelineMinimum(*m_model, state.position, ea, eb, k.chords.s, k.chords.t,
+                                             smoothCables, &m_curves)
+                         : centrelineDistance(*m_model, state.position, ea, eb, k.chords.s, k.chords.t,
+                                              !curveA, !curveB, smoothCables, &m_curves);
     k.s = std::clamp(d.s, 0.0, 1.0);
     k.t = std::clamp(d.t, 0.0, 1.0);
     k.clearance = ownPartsDistance(d, m_curves[static_cast<std::size_t>(ea)],

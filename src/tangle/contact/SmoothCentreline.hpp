@@ -195,6 +195,19 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
                                       bool holdT = false, bool smoothCables = false,
                                       const std::vector<ElementCurve>* curves = nullptr);
 
+/// The smallest distance of two pieces over their search ranges, for a caller that needs the least gap (the
+/// clearances of the envelope and the clash report) rather than a local minimum near the start:
+/// centrelineDistance, except where the pieces are nearly parallel (V's Hessian not positive definite, flat
+/// or falling along its valley, where centrelineDistance descends by small scaled steps and ends where its
+/// iteration cap stops it): there the minimum along the valley's floor, f(s) = min over t of V(s, t), from
+/// samples of s's range refined by Brent's method. No parameter is held; the same arguments as
+/// centrelineDistance's otherwise. Not for the contact's forces or step limit: where Brent's method stops
+/// within its tolerance moves from one state to the next, and runs that passed stopped (docs/performance.md).
+CentrelineDistance centrelineMinimum(const model::Model& model, const std::vector<Vec3>& position,
+                                     int elementA, int elementB, double s0, double t0,
+                                     bool smoothCables = false,
+                                     const std::vector<ElementCurve>* curves = nullptr);
+
 /// The surfaces' distance [m] of a pair of pieces as a clearance measures it: centrelineDistance's `c` where
 /// its closest points lie on the pieces' own parts (s and t in [0, 1]), else the distance of the points at s
 /// and t clamped there (a pair of points of the two lines: never below the lines' distance; the neighbouring

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -198,6 +200,63 @@ TEST(SmoothCentreline, NearlyParallelPiecesConvergeToTheValleyFloorNearTheStart)
     EXPECT_TRUE(d.sFree && d.tFree);
     EXPECT_LT(std::abs(0.5 * (d.s + d.t) - 0.5 * (s0 + t0)), 0.1);  // near the start along the valley
     EXPECT_NEAR(d.distance, yb(d.pointA.x()), 1e-4);
+  }
+}
+
+// centrelineMinimum: the least distance of two nearly parallel pieces over their whole search ranges. A is
+// straight along x, B's nodes lie on y = f(x) (z = 0), both on 5 m elements from x = -12.5 m; the pieces
+// from x = -2.5 to 2.5 m (interior, so both ranges are [-0.05, 1.05]). B's nodes are evenly spaced in x, so
+// its Catmull-Rom piece has x linear in t and x_B(t) runs over A's range: every point of B's piece has its
+// foot on A's (straight) piece, and the least distance is min over t of |y_B(t)|, found by a scan of 220 001
+// points of B's piece (its error, y'' (dt / 2)^2 / 2 < 1e-11 m here, is below the tolerance). Tolerance
+// 1e-9 m: Brent's method on the valley's floor to 1e-9 in s (5e-9 m along the pieces) moves the distance by
+// its square at an interior minimum, and not at all at a range's end. Three shapes: bent towards A (the
+// minimum at the range's end, where centrelineDistance stops on the valley's floor near its start, 2.5 m
+// away); a cubic whose piece dips inside the range; and straight and parallel (flat along the valley: any
+// point of the overlap is a minimum).
+TEST(SmoothCentreline, CentrelineMinimumIsTheLeastDistanceOverTheWholeRanges) {
+  model::ModelSpec spec;
+  spec.sourceFile = "centreline (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["c"] = test::solidRodType("c", 0.1, 2.1e11, 7850.0);
+  for (const char* name : {"a", "b"})
+    spec.lines.push_back(test::simpleLine(name, "c", 25.0, 5, model::EndKind::Pinned, Vec3(-12.5, 0, 0),
+                                          model::EndKind::Pinned, Vec3(12.5, 0, 0)));
+  const model::Model m(spec);
+  const model::Line& la = m.lines()[0];
+  const model::Line& lb = m.lines()[1];
+  const int ea = la.firstElement + 2, eb = lb.firstElement + 2;
+  const std::vector<std::function<double(double)>> shapes{
+      [](double x) { return 0.3 - 0.002 * (x - 0.7) * (x - 0.7); },
+      [](double x) {
+        return 0.3 + 0.004 * (x - 0.4) * (x - 0.4) - 0.0012 * (x - 0.4) * (x - 0.4) * (x - 0.4);
+      },
+      [](double) { return 0.3; }};
+  for (std::size_t shape = 0; shape < shapes.size(); ++shape) {
+    std::vector<Vec3> x(m.nodeCount(), Vec3::Zero());
+    for (int i = 0; i < la.nodeCount; ++i) {
+      const double at = -12.5 + 5.0 * i;
+      x[la.firstNode + i] = Vec3(at, 0.0, 0.0);
+      x[lb.firstNode + i] = Vec3(at, shapes[shape](at), 0.0);
+    }
+    const contact::ElementCurve curveB = contact::elementCurve(m, eb);
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k <= 220000; ++k) {
+      const Vec3 p = contact::centrelinePoint(curveB, -0.05 + 1.1 * k / 220000.0, x);
+      ASSERT_GE(p.x(), -2.75 - 1e-12);
+      ASSERT_LE(p.x(), 2.75 + 1e-12);
+      least = std::min(least, std::hypot(p.y(), p.z()));
+    }
+    for (const auto& [s0, t0] :
+         std::vector<std::pair<double, double>>{{0.4, 0.9}, {0.9, 0.4}, {0.2, 0.3}, {1.0, 0.0}, {0.5, 0.5}}) {
+      const contact::CentrelineDistance d = contact::centrelineMinimum(m, x, ea, eb, s0, t0);
+      EXPECT_NEAR(d.distance, least, 1e-9) << "shape " << shape << ", start " << s0 << ", " << t0;
+      EXPECT_NEAR(d.distance, (d.pointA - d.pointB).norm(), 1e-15);
+      EXPECT_GE(d.s, -0.05);
+      EXPECT_LE(d.s, 1.05);
+      EXPECT_GE(d.t, -0.05);
+      EXPECT_LE(d.t, 1.05);
+    }
   }
 }
 
