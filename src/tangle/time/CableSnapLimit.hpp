@@ -32,9 +32,8 @@ namespace tangle::time {
 double cableSnapStepLimit(const model::Model& model, const model::State& state, double maxStrainStep,
                           double horizon);
 
-/// The check after a converged step of what cableSnapStepLimit predicts: the fraction [-] of the step
-/// `before`
-/// -> `after` at which, interpolated linearly in strain, the first bar that went from a strain above
+/// The check after a converged step of what cableSnapStepLimit predicts: the fraction [-] of the step from
+/// `before` to `after` at which, interpolated linearly in strain, the first bar that went from a strain above
 /// `maxStrainStep` to one below -maxStrainStep (from tension across its kink into slack in one step) reaches
 /// maxStrainStep / 2; 1 when no bar did. A step with a fraction below 1 is to be taken again that much
 /// shorter. The prediction from the rate at the step's start does not see a bar unload from its largest
