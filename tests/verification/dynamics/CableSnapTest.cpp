@@ -70,9 +70,10 @@ TEST(CableSnap, GroundedChainSnapsWithoutGainingEnergy) {
 // centre of mass never exceeds it. Tolerance 1 %: the integrator's own energy error (rho_inf = 0.8
 // dissipates). Each bar unloads from its largest length, where its rate is 0: predicted from the rate alone
 // the snap limit never shortened a step there, and each unload released more work than was stored: 6.1e6 J
-// of kinetic energy from 160 J in 0.5 s (measured 2026-12-07, before time/CableSnapLimit.cpp predicted the
-// length from the accelerations; now 1.0013 of the stored energy). A wire tumbling in RandomSweepTest, seed
-// 50, went from 33 J to 15 000 J that way in 1 s.
+// of kinetic energy from 160 J in 0.5 s (measured 2026-12-07, before a step in which a bar went from tension
+// into slack was taken again shorter: DynamicAnalysis, cableUnloadStepFraction; now 1.0011 of the stored
+// energy). A wire tumbling in RandomSweepTest, seed 50 (with a variant of the closest-point search, not
+// kept), went from 33 J to 15 000 J that way in 1 s.
 TEST(CableSnap, AWireReleasedFromTensionInAirGainsNoEnergy) {
   constexpr double kStrain = 2e-3, kLength = 4.0, kEA = 2.0e7, kMassPerLength = 1.6;
   model::ModelSpec spec;
