@@ -264,24 +264,9 @@ double DistributedContact::nearestParameter(const model::State& state, const Vec
   // and three sums over the four nodes: 1.42 G instructions of drilling-riser-drift's run went here, 600 per
   // call). The iterate differs from the weights' by round-off; the stop (a move below 1e-13) is the same.
   const ElementCurve& curve = m_curves[static_cast<std::size_t>(master)];
-  const Vec3& x1 = state.position[curve.node[1]];
-  const auto [q1, q2, q3] = centrelinePowerBasis(curve, state.position);
   // x relative to the piece's first node: the point's offset is then O(element) and not O(coordinates).
-  const Vec3 offset = x - x1;
-  double t = std::clamp(t0, 0.0, 1.0);
-  for (int iteration = 0; iteration < 30; ++iteration) {
-    const Vec3 c2 = 2.0 * q2 + (6.0 * t) * q3;
-    const Vec3 c1 = q1 + t * (2.0 * q2 + (3.0 * t) * q3);
-    const Vec3 u = offset - t * (q1 + t * (q2 + t * q3));
-    const double g = -u.dot(c1), h = c1.squaredNorm() - u.dot(c2);
-    if ((t <= 0.0 && g > 0.0) || (t >= 1.0 && g < 0.0)) break;  // held at a bound
-    const double step = h > 0.0 ? -g / h : -g / std::max(c1.squaredNorm(), 1e-300);
-    const double next = std::clamp(t + step, 0.0, 1.0);
-    const double moved = std::abs(next - t);
-    t = next;
-    if (moved < 1e-13) break;
-  }
-  return t;
+  return nearestOnPiece(centrelinePowerBasis(curve, state.position), x - state.position[curve.node[1]], t0,
+                        0.0, 1.0);
 }
 
 DistributedContact::Projection DistributedContact::projectPoint(const model::State& state, int slave,

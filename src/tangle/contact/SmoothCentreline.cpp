@@ -276,16 +276,20 @@ CentrelineDistance distanceAt(const ElementCurve& curveA, const ElementCurve& cu
   r.distance = (r.pointA - r.pointB).norm();
   return r;
 }
+
+/// An element's piece: from the given curves if there are, else made from the model.
+ElementCurve curveOf(const model::Model& model, int element, bool smoothCables,
+                     const std::vector<ElementCurve>* curves) {
+  return curves ? (*curves)[static_cast<std::size_t>(element)] : elementCurve(model, element, smoothCables);
+}
 }  // namespace
 
 CentrelineDistance centrelineDistance(const model::Model& model, const std::vector<Vec3>& position,
                                       int elementA, int elementB, double s0, double t0, bool holdS,
                                       bool holdT, bool smoothCables,
                                       const std::vector<ElementCurve>* curves) {
-  const ElementCurve curveA =
-      curves ? (*curves)[static_cast<std::size_t>(elementA)] : elementCurve(model, elementA, smoothCables);
-  const ElementCurve curveB =
-      curves ? (*curves)[static_cast<std::size_t>(elementB)] : elementCurve(model, elementB, smoothCables);
+  const ElementCurve curveA = curveOf(model, elementA, smoothCables, curves);
+  const ElementCurve curveB = curveOf(model, elementB, smoothCables, curves);
   const PieceSearch found = searchPieces(curveA, curveB, position, s0, t0, holdS, holdT, false);
   return distanceAt(curveA, curveB, position, found.s, found.t, holdS, holdT);
 }
@@ -293,10 +297,8 @@ CentrelineDistance centrelineDistance(const model::Model& model, const std::vect
 CentrelineDistance centrelineMinimum(const model::Model& model, const std::vector<Vec3>& position,
                                      int elementA, int elementB, double s0, double t0, bool smoothCables,
                                      const std::vector<ElementCurve>* curves) {
-  const ElementCurve curveA =
-      curves ? (*curves)[static_cast<std::size_t>(elementA)] : elementCurve(model, elementA, smoothCables);
-  const ElementCurve curveB =
-      curves ? (*curves)[static_cast<std::size_t>(elementB)] : elementCurve(model, elementB, smoothCables);
+  const ElementCurve curveA = curveOf(model, elementA, smoothCables, curves);
+  const ElementCurve curveB = curveOf(model, elementB, smoothCables, curves);
   const PieceSearch found = searchPieces(curveA, curveB, position, s0, t0, false, false, true);
   if (!found.valley) return distanceAt(curveA, curveB, position, found.s, found.t, false, false);
   // Nearly parallel pieces: V is flat or falls along a valley in which s and t move together, and its
@@ -315,19 +317,7 @@ CentrelineDistance centrelineMinimum(const model::Model& model, const std::vecto
   double t = found.t;  // the projections' start: the last projection's result
   const auto floor = [&](double s) {
     const Vec3 x = offset + s * (pa.q1 + s * (pa.q2 + s * pa.q3));
-    // Projected Newton on |x - c_B(t)|^2 / 2 over t's range (DistributedContact::nearestParameter's).
-    for (int iteration = 0; iteration < 30; ++iteration) {
-      const Vec3 c2 = 2.0 * pb.q2 + (6.0 * t) * pb.q3;
-      const Vec3 c1 = pb.q1 + t * (2.0 * pb.q2 + (3.0 * t) * pb.q3);
-      const Vec3 u = x - t * (pb.q1 + t * (pb.q2 + t * pb.q3));
-      const double g = -u.dot(c1), h = c1.squaredNorm() - u.dot(c2);
-      if ((t <= tLo && g > 0.0) || (t >= tHi && g < 0.0)) break;
-      const double step = h > 0.0 ? -g / h : -g / std::max(c1.squaredNorm(), 1e-300);
-      const double next = std::clamp(t + step, tLo, tHi);
-      const double moved = std::abs(next - t);
-      t = next;
-      if (moved < 1e-13) break;
-    }
+    t = nearestOnPiece(pb, x, t, tLo, tHi);
     return 0.5 * (x - t * (pb.q1 + t * (pb.q2 + t * pb.q3))).squaredNorm();
   };
   constexpr int kSamples = 5;

@@ -29,7 +29,9 @@
 /// the catenary, 0.12 % with the contact at the node); LineContact moves such contacts to the node.
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "tangle/core/Types.hpp"
@@ -120,6 +122,30 @@ inline CentrelinePowerBasis centrelinePowerBasis(const ElementCurve& c, const st
   const Vec3 m2 = c.b1 * x1 + c.b2 * x2 + c.b3 * x[c.node[3]];
   const Vec3 rise = x2 - x1;
   return {m1, 3.0 * rise - 2.0 * m1 - m2, m1 + m2 - 2.0 * rise};
+}
+
+/// The parameter t in [lo, hi] [-] of the point of a piece (in the power basis about its first node, `b`)
+/// nearest a point `offset` [m] given relative to that first node, from the start t0 [-]: projected Newton on
+/// V(t) = |offset - c(t)|^2 / 2, held at a bound where V still falls outward, a gradient step where V is not
+/// convex, stopped when t moves less than 1e-13 or after 30 iterations. Each iteration is a Horner
+/// evaluation of c and its two derivatives. Used by the distributed contact's projections (range [0, 1]) and
+/// by centrelineMinimum's valley floor (the piece's own parameter range).
+inline double nearestOnPiece(const CentrelinePowerBasis& b, const Vec3& offset, double t0, double lo,
+                             double hi) {
+  double t = std::clamp(t0, lo, hi);
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const Vec3 c2 = 2.0 * b.q2 + (6.0 * t) * b.q3;
+    const Vec3 c1 = b.q1 + t * (2.0 * b.q2 + (3.0 * t) * b.q3);
+    const Vec3 u = offset - t * (b.q1 + t * (b.q2 + t * b.q3));
+    const double g = -u.dot(c1), h = c1.squaredNorm() - u.dot(c2);
+    if ((t <= lo && g > 0.0) || (t >= hi && g < 0.0)) break;  // held at a bound
+    const double step = h > 0.0 ? -g / h : -g / std::max(c1.squaredNorm(), 1e-300);
+    const double next = std::clamp(t + step, lo, hi);
+    const double moved = std::abs(next - t);
+    t = next;
+    if (moved < 1e-13) break;
+  }
+  return t;
 }
 
 /// sum_k w_k x_k over a piece's four nodes [m], in CentrelineStencil's order of operations (the same bits).

@@ -42,6 +42,18 @@ model::Model twoLines() {
   return model::Model(spec);
 }
 
+/// Two beams of 25 m on 5 m elements from x = -12.5 to 12.5 m (pinned ends; the tests place the nodes).
+model::Model twoStraightBeams() {
+  model::ModelSpec spec;
+  spec.sourceFile = "centreline (test)";
+  spec.environment.waterDepth = 100.0;
+  spec.lineTypes["c"] = test::solidRodType("c", 0.1, 2.1e11, 7850.0);
+  for (const char* name : {"a", "b"})
+    spec.lines.push_back(test::simpleLine(name, "c", 25.0, 5, model::EndKind::Pinned, Vec3(-12.5, 0, 0),
+                                          model::EndKind::Pinned, Vec3(12.5, 0, 0)));
+  return model::Model(spec);
+}
+
 Vec3 parabola(double sigma) { return Vec3(0.9 * sigma, 0.3 + 0.05 * sigma * sigma, -0.02 * sigma * sigma + 0.1 * sigma); }
 
 TEST(SmoothCentreline, ACableKeepsItsPolyline) {
@@ -167,14 +179,7 @@ TEST(SmoothCentreline, NearlyParallelPiecesConvergeToTheValleyFloorNearTheStart)
   // valley's shallow slope. Tolerance: 1e-9 of |u| |c'| (round-off of 1e-13 on coordinates of 10 m, relative
   // to 1.5). (The former step, scaled by each parameter's |c'|^2 alone, overshot the valley twofold and
   // bounced between its walls.)
-  model::ModelSpec spec;
-  spec.sourceFile = "centreline (test)";
-  spec.environment.waterDepth = 100.0;
-  spec.lineTypes["c"] = test::solidRodType("c", 0.1, 2.1e11, 7850.0);
-  for (const char* name : {"a", "b"})
-    spec.lines.push_back(test::simpleLine(name, "c", 25.0, 5, model::EndKind::Pinned, Vec3(-12.5, 0, 0),
-                                          model::EndKind::Pinned, Vec3(12.5, 0, 0)));
-  const model::Model m(spec);
+  const model::Model m = twoStraightBeams();
   const model::Line& la = m.lines()[0];
   const model::Line& lb = m.lines()[1];
   std::vector<Vec3> x(m.nodeCount(), Vec3::Zero());
@@ -215,14 +220,7 @@ TEST(SmoothCentreline, NearlyParallelPiecesConvergeToTheValleyFloorNearTheStart)
 // away); a cubic whose piece dips inside the range; and straight and parallel (flat along the valley: any
 // point of the overlap is a minimum).
 TEST(SmoothCentreline, CentrelineMinimumIsTheLeastDistanceOverTheWholeRanges) {
-  model::ModelSpec spec;
-  spec.sourceFile = "centreline (test)";
-  spec.environment.waterDepth = 100.0;
-  spec.lineTypes["c"] = test::solidRodType("c", 0.1, 2.1e11, 7850.0);
-  for (const char* name : {"a", "b"})
-    spec.lines.push_back(test::simpleLine(name, "c", 25.0, 5, model::EndKind::Pinned, Vec3(-12.5, 0, 0),
-                                          model::EndKind::Pinned, Vec3(12.5, 0, 0)));
-  const model::Model m(spec);
+  const model::Model m = twoStraightBeams();
   const model::Line& la = m.lines()[0];
   const model::Line& lb = m.lines()[1];
   const int ea = la.firstElement + 2, eb = lb.firstElement + 2;
