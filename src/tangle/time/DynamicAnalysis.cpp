@@ -196,6 +196,15 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
       }
       continue;
     }
+    // A converged step taken again from its start, `factor` of its length [-] (not below the minimum step),
+    // counted in `count`. (The growth count restarts; it acts only with fixed steps.)
+    const auto redoShorter = [&](int& count, double factor) {
+      stepper.restore(before);
+      state = before;
+      ++count;
+      dt = std::max(m_settings.minTimeStep, h * factor);
+      successes = 0;
+    };
     // A cable element carried from tension across its kink into slack within the step releases the work of
     // its start force over the whole shortening, more than it stored (CableSnapLimit.hpp): the step again,
     // ending before the kink. (A 4 m wire released from a strain of 2e-3 in air, unloaded bar by bar from
@@ -203,12 +212,8 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
     if (m_settings.maxCableStrainStep > 0.0 && h > m_settings.minTimeStep * (1.0 + 1e-9)) {
       const double fraction = cableUnloadStepFraction(model, before, state, m_settings.maxCableStrainStep);
       if (fraction < 1.0) {
-        stepper.restore(before);
-        state = before;
-        ++result.unloadRejections;
         // The linear interpolation in strain is short of an unload that accelerates; not below a tenth.
-        dt = std::max(m_settings.minTimeStep, h * std::max(fraction, 0.1));
-        successes = 0;
+        redoShorter(result.unloadRejections, std::max(fraction, 0.1));
         continue;
       }
     }
@@ -217,10 +222,7 @@ bool DynamicAnalysis::advance(model::State& state, double until) {
       const double factor = std::clamp(0.9 * std::cbrt(tolerance / std::max(eta, 1e-300)), 0.2, 2.0);
       if (eta > 2.0 * tolerance && h > m_settings.minTimeStep * (1.0 + 1e-9)) {
         // Too inaccurate: redo the step shorter (h factor, factor <= 0.9 (1/2)^(1/3) here).
-        stepper.restore(before);
-        state = before;
-        ++result.errorRejections;
-        dt = std::max(m_settings.minTimeStep, h * factor);
+        redoShorter(result.errorRejections, factor);
         continue;
       }
       // A step shortened to land on an output time says little about the step the error allows: accurate,
