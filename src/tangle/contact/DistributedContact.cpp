@@ -603,7 +603,7 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   smp.share = std::clamp(
       0.5 + 0.5 * (bentnessAt(state, slave, xi, radii) - bentnessAt(state, bestMaster, best.t, radii)), 0.0,
       1.0);
-  if (smp.share <= 0.0) return;
+  smp.fullLength = weight;
   smp.length = smp.share * weight;
   const Vec3 va = best.a.value(m_model->dofs(), state.velocity),
              vb = best.b.value(m_model->dofs(), state.velocity);
@@ -625,7 +625,55 @@ void DistributedContact::addSample(const model::State& state, int slave, double 
   smp.slipRate = va - vb;
   smp.relative = committedSlip(smp.lineA, smp.lineB, smp.arcA, elements[slave].restLength) +
                  (best.pointA - best.a.point(reference)) - (best.pointB - best.b.point(reference));
-  m_samples.push_back(smp);
+  (smp.share > 0.0 ? m_samples : m_unshared).push_back(smp);
+}
+
+void DistributedContact::coverUnseen() {
+  const auto lowered = [](const ContactSample& x) { return x.share < 0.5; };
+  if (std::none_of(m_samples.begin(), m_samples.end(), lowered) && m_unshared.empty()) return;
+  // The law's force integral of each pass (without the shares) near the sample's two elements: its own
+  // pass's on the same elements (+-1) and the reverse pass's on the same elements seen from the other line.
+  const auto near = [](int e, int f) { return e >= f - 1 && e <= f + 1; };
+  const auto integrals = [&](const ContactSample& x) {
+    double own = 0.0, reverse = 0.0;
+    for (const std::vector<ContactSample>* set : {&m_samples, &m_unshared})
+      for (const ContactSample& y : *set) {
+        if (y.lineA == x.lineA && y.lineB == x.lineB && near(y.elementA, x.elementA) &&
+            near(y.elementB, x.elementB))
+          own += y.spring * y.fullLength;
+        else if (y.lineA == x.lineB && y.lineB == x.lineA && near(y.elementA, x.elementB) &&
+                 near(y.elementB, x.elementA))
+          reverse += y.spring * y.fullLength;
+      }
+    return std::pair(own, reverse);
+  };
+  // The weight given back is (1 - s) d (1 - c), c = min(1, F_rev / F_own): where the favoured pass sees less
+  // than this one, the pair carries this pass's integral, F_rev + (F_own - F_rev); where it sees as much or
+  // more, what it did before. (A smoothstep S(r) on (1 - r), 1 up to r = 1/2 and 0 from 0.8, to leave the
+  // passes' few per cent of disagreement alone, did worse: RandomSweepTest's seeds 19 and 42 stalled.)
+  const auto cover = [&](const ContactSample& x) {
+    const double deficit = std::clamp(1.0 - 2.0 * x.share, 0.0, 1.0);
+    const auto [own, reverse] = integrals(x);
+    const double coverage = own > 0.0 ? std::min(1.0, reverse / own) : 1.0;
+    return x.share + (1.0 - x.share) * deficit * (1.0 - coverage);
+  };
+  // Decided from the shares and forces as found (every sample's coverage before any share changes).
+  std::vector<double> shares(m_samples.size() + m_unshared.size());
+  for (std::size_t i = 0; i < m_samples.size(); ++i)
+    shares[i] = lowered(m_samples[i]) ? cover(m_samples[i]) : m_samples[i].share;
+  for (std::size_t i = 0; i < m_unshared.size(); ++i) shares[m_samples.size() + i] = cover(m_unshared[i]);
+  const std::size_t seen = m_samples.size();
+  for (std::size_t i = 0; i < seen; ++i) {
+    m_samples[i].share = shares[i];
+    m_samples[i].length = shares[i] * m_samples[i].fullLength;
+  }
+  for (std::size_t i = 0; i < m_unshared.size(); ++i) {
+    ContactSample& x = m_unshared[i];
+    if (!(shares[seen + i] > 0.0)) continue;
+    x.share = shares[seen + i];
+    x.length = x.share * x.fullLength;
+    m_samples.push_back(x);
+  }
 }
 
 void DistributedContact::findSamples(const model::State& state, const ContactCandidates& search, bool dynamic,
@@ -635,6 +683,7 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
   if (search.candidates().empty()) {
     // No pair is near: no samples, whatever the state (the lines apart: no copies of the state kept).
     m_samples.clear();
+    m_unshared.clear();
     ++m_samplesVersion;
     m_found.valid = false;
     return;
@@ -649,6 +698,7 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
     return;
   m_found.valid = false;
   m_samples.clear();
+  m_unshared.clear();
   ++m_samplesVersion;
   const auto& elements = m_model->elements();
   m_chordBound.assign(elements.size(), std::numeric_limits<double>::quiet_NaN());
@@ -740,6 +790,7 @@ void DistributedContact::findSamples(const model::State& state, const ContactCan
       }
     }
   }
+  coverUnseen();
   finishSamples(dynamic && !relaxation);
   m_found.valid = true;
   m_found.dynamic = dynamic;

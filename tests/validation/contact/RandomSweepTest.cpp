@@ -264,30 +264,31 @@ std::string caseName(const ::testing::TestParamInfo<SweepCase>& p) {
 // or more into slack in one step (its rate was about 0 at its longest, so the snap limit's prediction from
 // the rate never saw the unload), and the step released more work than the strain energy held (one unload
 // of 26.8 J: +23 J). Since a converged step in which a bar did that is taken again shorter
-// (time/CableSnapLimit.hpp, cableUnloadStepFraction) they pass (1.0020 and 1.0010). 63 and 67 are known
-// failures (below).
+// (time/CableSnapLimit.hpp, cableUnloadStepFraction) they pass (1.0020 and 1.0010).
+// Seed 67 (e = 1, no friction) peaked at 1.0496 of the launch's kinetic energy (115.16 against 109.71 J): two
+// wires sank 7.5 mm into each other over 20 steps with 40 N between them, because the pass along the folded
+// one, to which the shares give the contact, had not found the dip (its cubic runs fast round the fold:
+// samples 4.3 mm and 176 mm either side of it), while the other pass had it with a share of 1e-5; when the
+// dip was found, 64 kN pushed them apart (traced 2026-12-07). Seed 63 (e = 0, friction 0.3) stopped at t =
+// 2.636 s (Newton at the minimum step, 78.96 N at line1 node 8). Both pass since the share the bentness takes
+// from a pass comes back to it for what the favoured pass misses (DistributedContact::coverUnseen; seeds 1 to
+// 80 run outside CI on 2026-12-08: 79 pass, 64 is a known failure below).
 INSTANTIATE_TEST_SUITE_P(Distributed, RandomSweep,
                          ::testing::Values(SweepCase{1}, SweepCase{2}, SweepCase{3}, SweepCase{4},
                                            SweepCase{5}, SweepCase{6}, SweepCase{16}, SweepCase{19},
-                                           SweepCase{50}, SweepCase{51}),
+                                           SweepCase{50}, SweepCase{51}, SweepCase{63}, SweepCase{67}),
                          caseName);
 
-// Known failures (run by ctest as expected to fail: validation.random_sweep_seed63_expected_fail and
-// validation.random_sweep_seed67_expected_fail, tests/CMakeLists.txt), measured 2026-12-07. Seed 63 (e = 0,
-// friction 0.3) stops at t = 2.636 s: "Newton did not converge even with the minimum time step 1e-05 s and
-// full Newton; largest out-of-balance force 78.96 N at line 'line1' node 8". Seed 67 (e = 1, no friction)
-// peaks at 1.0496 of the launch's kinetic energy (115.16 against 109.71 J): two wires sank 7.5 mm into each
-// other over 20 steps with 40 N between them, because the pass along the folded one, to which the shares
-// give the contact, had not found the dip (its cubic runs fast round the fold: samples 4.3 mm and 176 mm
-// either side of it), while the other pass had it with a share of 1e-5; when the dip was found, 64 kN pushed
-// them apart (traced 2026-12-07; the earlier diagnosis, a barrier too stiff for the minimum step, was wrong).
-// Giving such a pass's samples the whole weight makes seeds 1 to 80 pass but the force jump where the other
-// pass comes in (docs/performance.md, "a contact no pass carried"). Round-off changes move both: with the
-// closest-point search ending at the least distance of nearly parallel pieces in the step limit, 63 and 67
-// passed and seeds 39, 43 and 9 (1e-9 faster) stopped the same way as 63 (docs/performance.md): knife edges
-// of the contact that issue 43 asks to remove.
-INSTANTIATE_TEST_SUITE_P(RandomSweepKnownFailures, RandomSweep,
-                         ::testing::Values(SweepCase{63}, SweepCase{67}), caseName);
+// Known failure (run by ctest as expected to fail: validation.random_sweep_seed64_expected_fail,
+// tests/CMakeLists.txt), measured 2026-12-08. Seed 64 stops at t = 2.329 s: "Newton did not converge even
+// with the minimum time step 1e-05 s and full Newton; largest out-of-balance force 747.8 N at line 'line0'
+// node 3". It passed before coverUnseen (at d97c510, where 63 and 67 failed). A residual that does not fall
+// at a step of 1e-5 s, where the inertia dwarfs the contact's stiffness, is a force that jumps between
+// iterates: the knife edges of the contact's searches (where Brent's refinements find a dip in one iterate
+// and not the next) that issue 43 asks to remove; each change of the formulation moves which seeds meet one
+// (coverage held through a step: 37 and 45 stalled; coverage gated by a smoothstep: 19 and 42;
+// docs/performance.md).
+INSTANTIATE_TEST_SUITE_P(RandomSweepKnownFailures, RandomSweep, ::testing::Values(SweepCase{64}), caseName);
 
 }  // namespace
 }  // namespace tangle
