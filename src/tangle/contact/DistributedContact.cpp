@@ -651,10 +651,18 @@ void DistributedContact::coverUnseen() {
   // than this one, the pair carries this pass's integral, F_rev + (F_own - F_rev); where it sees as much or
   // more, what it did before. (A smoothstep S(r) on (1 - r), 1 up to r = 1/2 and 0 from 0.8, to leave the
   // passes' few per cent of disagreement alone, did worse: RandomSweepTest's seeds 19 and 42 stalled.)
+  // The integrals depend only on the sample's two elements, and the samples of one pair of elements come
+  // one after another (findSamples visits slave by slave): found once per run of them, not per sample.
+  int lastA = -1, lastB = -1;
+  double coverage = 1.0;
   const auto cover = [&](const ContactSample& x) {
+    if (x.elementA != lastA || x.elementB != lastB) {
+      lastA = x.elementA;
+      lastB = x.elementB;
+      const auto [own, reverse] = integrals(x);
+      coverage = own > 0.0 ? std::min(1.0, reverse / own) : 1.0;
+    }
     const double deficit = std::clamp(1.0 - 2.0 * x.share, 0.0, 1.0);
-    const auto [own, reverse] = integrals(x);
-    const double coverage = own > 0.0 ? std::min(1.0, reverse / own) : 1.0;
     return x.share + (1.0 - x.share) * deficit * (1.0 - coverage);
   };
   // Decided from the shares and forces as found (every sample's coverage before any share changes).
